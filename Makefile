@@ -1,0 +1,35 @@
+# Top-level wrapper. `make` installs missing Debian packages, builds,
+# regenerates every chapter and writes build/report/study.html.
+# `make test` builds and runs the CTest suite (unit + chapter + report).
+BUILD ?= build
+JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
+CTEST_ARGS ?=
+
+.PHONY: all deps configure build study report test test-full clean
+
+all: report
+
+deps:
+	@bash scripts/install-deps.sh
+
+configure: deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+
+build: configure
+	@cmake --build $(BUILD) -j $(JOBS)
+
+study: build
+	@cmake --build $(BUILD) --target study
+
+report: study
+	@cmake --build $(BUILD) --target report
+	@echo "report: $(BUILD)/report/study.html"
+
+test: build
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE full $(CTEST_ARGS)
+
+test-full: build
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+
+clean:
+	@rm -rf $(BUILD)

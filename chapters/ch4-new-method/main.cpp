@@ -1,0 +1,95 @@
+// Chapter 4: the new method.  This part needs no finite-element solver: it
+// re-derives the derived columns of Tables 4.1 and 4.2 (bending force F_B,
+// friction force F_T, pressure ratio c), the back-tension stress of Sec. 4.2,
+// and the conventional friction coefficients of Fig. 4.9 (Eq. 2.3) with the
+// average pressures of Eq. (2.2) used as the x axis of Fig. 4.10.
+// Forces are half-model simulation forces in N (the thesis models the top half
+// of the 25.4 mm wide, 1.04 mm thick strip).
+//
+// Recipe:
+//   1. Load Tables 4.1, 4.2 and the strip geometry.
+//   2. Re-derive F_B = F_Y' - F_X' (Table 4.1).
+//   3. Re-derive F_T = F_Y - F_X - F_B and c = (F_X+F_Y)/(F_X'+F_Y') (Table 4.2).
+//   4. Back-tension stress F_X'/(t w/2) against the printed 57 MPa.
+//   5. Conventional mu (Eq. 2.3) and average pressure (Eq. 2.2), Fig. 4.9.
+#include <cmath>
+
+#include "analysis/pressure_ratio.hpp"
+#include "analysis/rope.hpp"
+#include "study/chapter.hpp"
+#include "study/thesis_data.hpp"
+
+using namespace drawbend;
+using namespace drawbend::analysis;
+
+namespace {
+
+void body(study::Chapter& c) {
+  // 1. Inputs.
+  const CsvTable t41 = read_csv(c.data("thesis/table_4_1.csv"));
+  const CsvTable t42 = read_csv(c.data("thesis/table_4_2.csv"));
+  const std::string sc = c.data("thesis/scalars.csv");
+  const auto t = study::scalar(sc, "ch5_strip_thickness");
+  const auto w = study::scalar(sc, "ch5_strip_width");
+  const auto sigma_bt = study::scalar(sc, "ch4_back_tension_stress");
+  if (t41.rows.size() != t42.rows.size()) throw InputError("Tables 4.1 and 4.2 list different pins");
+
+  auto out = c.table({"pin_mm", "F_B_N", "F_T_N", "c", "P_avg_rotating_MPa", "P_avg_fixed_MPa", "mu_conventional"},
+                     "Tables 4.1/4.2 re-derived and the conventional method (half-model forces, N; pressures MPa)");
+  auto minus = [](const std::vector<double>& x) { return x[0] - x[1]; };
+  for (std::size_t i = 0; i < t41.rows.size(); ++i) {
+    const auto& a = t41.rows[i];
+    const auto& b = t42.rows[i];
+    const double pin = t41.number(a, "pin_diameter_mm");
+    if (!study::same(pin, t42.number(b, "pin_diameter_mm"))) throw InputError(t42.where(b, "pin_diameter_mm") + ": pin order differs from Table 4.1");
+    const auto FXp = study::printed(t41, a, "FX_prime_N"), FYp = study::printed(t41, a, "FY_prime_N");
+    const auto FB = study::printed(t41, a, "FB_N");
+    const auto FX = study::printed(t42, b, "FX_N"), FY = study::printed(t42, b, "FY_N");
+    const auto FT = study::printed(t42, b, "FT_N"), cc = study::printed(t42, b, "c");
+    const std::string id = "ch4.d" + fmt(pin);
+    const std::string why = "rounding of the printed forces (0.1 N)";
+    // 2. Bending force.
+    const double FB_ours = FYp.value - FXp.value;
+    c.checks().rederive(id + ".T4.1.FB", "T4.1 F_B = F_Y' - F_X'", FB.value, FB_ours,
+                        rounding_tolerance(minus, {FYp, FXp}, FB.half_ulp), "N", why);
+    // 3. Friction force and pressure ratio.
+    const double FT_ours = FY.value - FX.value - FB.value;
+    c.checks().rederive(id + ".T4.2.FT", "T4.2 F_T = F_Y - F_X - F_B", FT.value, FT_ours,
+                        rounding_tolerance([](const std::vector<double>& x) { return x[0] - x[1] - x[2]; },
+                                           {FY, FX, FB}, FT.half_ulp),
+                        "N", why);
+    const double c_ours = pressure_ratio(FX.value, FY.value, FXp.value, FYp.value);
+    c.checks().rederive(id + ".T4.2.c", "T4.2 c = (F_X+F_Y)/(F_X'+F_Y')", cc.value, c_ours,
+                        rounding_tolerance(
+                            [](const std::vector<double>& x) { return pressure_ratio(x[0], x[1], x[2], x[3]); },
+                            {FX, FY, FXp, FYp}, cc.half_ulp),
+                        "-", why + " and of c (0.001)");
+    // 5. Conventional method on the simulated forces.
+    const double r = pin / 2.0;
+    const double mu = mu_rope(FX.value, FY.value, FB.value, M_PI / 2);
+    const double P_rot = average_pressure(FXp.value, FYp.value, r, w.value, ForceBasis::half_model);
+    const double P_fix = average_pressure(FX.value, FY.value, r, w.value, ForceBasis::half_model);
+    out.row({fmt(pin), fmt_fixed(FB_ours, 1), fmt_fixed(FT_ours, 1), fmt_fixed(c_ours, 4), fmt_fixed(P_rot, 2),
+             fmt_fixed(P_fix, 2), fmt_fixed(mu, 4)});
+    c.value("mu_d" + fmt(pin), fmt_fixed(mu, 4));
+    c.value("P_d" + fmt(pin), fmt_fixed(P_fix, 1), "MPa");
+    // 4. Back-tension stress on the half-model section t x w/2.
+    if (i == 0) {
+      const auto f = [](const std::vector<double>& x) { return x[0] / (x[1] * x[2] / 2.0); };
+      const double s = f({FXp.value, t.value, w.value});
+      c.checks().rederive("ch4.back_tension_stress", "back-tension stress F_X'/(t w/2) (Sec. 4.2)", sigma_bt.value, s,
+                          rounding_tolerance(f, {FXp, t, w}, sigma_bt.half_ulp), "MPa",
+                          "57 printed to 1 MPa; t = 1.04 mm, w = 25.4 mm assumed from Sec. 5.2");
+      c.value("sigma_bt", fmt_fixed(s, 2), "MPa");
+    }
+  }
+  c.save(out, "table_4_rederived");
+  c.plot("fig_4_9", "fig_4_9", {{"datafile", c.out("tables/table_4_rederived.csv")}});
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  study::Chapter ch("ch4-new-method", "Chapter 4: the new method (table re-derivations; no FE part)");
+  return study::run_chapter(ch, argc, argv, body);
+}

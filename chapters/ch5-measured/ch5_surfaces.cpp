@@ -1,0 +1,76 @@
+// Chapter 5 step 7: the friction-coefficient lines mu(p) of Table 5.16
+// (Figs. 5.26/5.27) and the surfaces mu(p, v) built from them with the
+// nine-node interpolation of Chapter 6 (Figs. 5.28/5.29).  These use the
+// printed Table 5.16; a later chapter replaces it with our own pressure maps.
+#include <cmath>
+
+#include "analysis/friction_surface.hpp"
+#include "ch5_steps.hpp"
+
+namespace ch5 {
+
+using namespace drawbend;
+using namespace drawbend::analysis;
+
+namespace {
+std::vector<SpeedLine> lines_of(const Inputs& in, const std::string& dir) {
+  std::vector<SpeedLine> out;
+  for (const auto& l : in.lines)
+    if (l.direction == dir) out.push_back({l.speed_mm_s, Polynomial{{l.a0.value, l.a1.value}}});
+  if (out.size() != 3) throw InputError("Table 5.16: expected three speeds for " + dir);
+  return out;
+}
+}  // namespace
+
+void friction_lines_and_surfaces(Chapter& c, const Inputs& in) {
+  const double p_max = 80.0;  // MPa, Sec. 6.3
+  for (const char* dir : kDirs) {
+    const auto lines = lines_of(in, dir);
+    auto w = c.table({"p_MPa", "v6.35", "v25.4", "v101.6"},
+                     std::string("mu(p) of Table 5.16, ") + dir + " strips, diluted lubricant (p in MPa)");
+    for (double p = 0; p <= p_max + 1e-9; p += 2.0)
+      w.row({fmt(p), fmt(lines[0].mu(p), 5), fmt(lines[1].mu(p), 5), fmt(lines[2].mu(p), 5)});
+    c.save(w, std::string("mu_lines_") + dir);
+    const bool rd = std::string(dir) == "RD";
+    c.plot("mu_lines", rd ? "fig_5_26" : "fig_5_27",
+           {{"dir", dir}, {"datafile", c.out(std::string("tables/mu_lines_") + dir + ".csv")}});
+
+    const FrictionSurface S = surface_from_lines(lines, 0.0, p_max);
+    std::vector<double> ps, vs;
+    for (int i = 0; i <= 20; ++i) ps.push_back(p_max * i / 20.0);
+    for (int j = 0; j <= 20; ++j) vs.push_back(S.v_min + (S.v_max - S.v_min) * j / 20.0);
+    c.save_grid(std::string("mu_surface_") + dir, std::string("mu(p [MPa], v [mm/s]) nine-node surface, ") + dir, ps,
+                vs, [&S](double p, double v) { return S(p, v); });
+    c.plot("mu_surface", rd ? "fig_5_28" : "fig_5_29",
+           {{"dir", dir},
+            {"gridfile", c.out(std::string("tables/mu_surface_") + dir + ".dat")},
+            {"linesfile", c.out(std::string("tables/mu_lines_") + dir + ".csv")}});
+
+    // Sec. 5.9.1: "At higher sliding speeds the friction coefficients become
+    // more pressure independent": the slope a1 falls with speed.
+    c.checks().claim(std::string("ch5.T5.16.") + dir + ".slope_falls_with_speed",
+                     std::string("a1 decreases with speed, ") + dir + " (Sec. 5.9.1)",
+                     lines[0].mu.a[1] > lines[1].mu.a[1] && lines[1].mu.a[1] > lines[2].mu.a[1],
+                     "order of printed slopes");
+  }
+  // "... and the difference between RD and TD strips is also reduced" -- |RD-TD|
+  // at the mid pressure 40 MPa falls with speed; "RD strips show higher friction
+  // coefficient values than TD strips in general" -- tested at the two lower speeds.
+  const auto rd = lines_of(in, "RD"), td = lines_of(in, "TD");
+  double gap[3];
+  for (int k = 0; k < 3; ++k) gap[k] = std::abs(rd[k].mu(40) - td[k].mu(40));
+  c.checks().claim("ch5.T5.16.RD_TD_gap_falls_with_speed", "|mu_RD - mu_TD| at 40 MPa falls with speed (Sec. 5.9.1)",
+                   gap[0] > gap[1] && gap[1] > gap[2], "values of Table 5.16 lines at 40 MPa");
+  for (int k = 0; k < 2; ++k) {
+    bool above = true;
+    for (double p = 0; p <= p_max; p += 1.0) above = above && rd[k].mu(p) > td[k].mu(p);
+    c.checks().claim("ch5.T5.16.RD_above_TD.v" + fmt(rd[k].v_mm_s),
+                     "mu_RD > mu_TD over 0-80 MPa at " + fmt(rd[k].v_mm_s) + " mm/s (Sec. 5.9.1)", above,
+                     "Table 5.16 lines on a 1 MPa grid");
+  }
+  // At the highest speed the lines cross: TD is higher below this pressure.
+  const double p_cross = (td[2].mu.a[0] - rd[2].mu.a[0]) / (rd[2].mu.a[1] - td[2].mu.a[1]);
+  c.value("t516_cross_101", fmt_fixed(p_cross, 0), "MPa");
+}
+
+}  // namespace ch5

@@ -1,0 +1,123 @@
+// Chapter 6: the new friction model mu(p, v) (thesis Eqs. 6.1-6.3, Table 6.1).
+// This part needs no finite-element solver: it re-derives all 18 nodal values
+// of Table 6.1 from the lines of Table 5.16, tests the printed shape functions
+// and natural-coordinate map, and draws the RD surface with its nodes (Fig. 6.2).
+// Units: p MPa, v mm/s; domain p 0-80 MPa, v 6.35-101.6 mm/s (Sec. 6.3).
+//
+// Recipe:
+//   1. Load Tables 5.16 and 6.1 and the domain (Sec. 6.3).
+//   2. Build the nine nodal values per direction (Sec. 6.2, Fig. 6.2).
+//   3. Check them against Table 6.1 with printed-digit tolerances.
+//   4. Errata checks: printed Eq. (6.1) and Eq. (6.3).
+//   5. Figure 6.2: the surface, its lines and its nodes.
+#include <cmath>
+
+#include "analysis/friction_surface.hpp"
+#include "study/chapter.hpp"
+#include "study/thesis_data.hpp"
+
+using namespace drawbend;
+using namespace drawbend::analysis;
+
+namespace {
+
+struct Lines {
+  std::vector<double> v;
+  std::vector<Printed> a0, a1;
+  std::vector<SpeedLine> build(const std::vector<double>& x) const {  // x = a0..., a1...
+    std::vector<SpeedLine> s;
+    for (std::size_t k = 0; k < v.size(); ++k) s.push_back({v[k], Polynomial{{x[k], x[v.size() + k]}}});
+    return s;
+  }
+  std::vector<Printed> printed() const {
+    auto p = a0;
+    p.insert(p.end(), a1.begin(), a1.end());
+    return p;
+  }
+};
+
+void body(study::Chapter& c) {
+  // 1. Inputs.
+  const CsvTable t516 = read_csv(c.data("thesis/table_5_16.csv"));
+  const CsvTable t61 = read_csv(c.data("thesis/table_6_1.csv"));
+  const std::string sc = c.data("thesis/scalars.csv");
+  const double p_min = study::scalar(sc, "ch6_p_min").value, p_max = study::scalar(sc, "ch6_p_max").value;
+  if (t61.rows.size() != 9) throw InputError(t61.path + ": expected 9 nodes");
+
+  auto nodes = c.table({"node", "p_MPa", "v_mm_s", "mu_RD_thesis", "mu_RD_ours", "mu_TD_thesis", "mu_TD_ours"},
+                       "Table 6.1 re-derived from Table 5.16 (Sec. 6.2)");
+  std::vector<std::vector<std::string>> rows(9);
+  for (const std::string dir : {"RD", "TD"}) {
+    Lines L;
+    for (const auto& r : t516.rows)
+      if (t516.text(r, "direction") == dir) {
+        L.v.push_back(t516.number(r, "speed_mm_s"));
+        L.a0.push_back(study::printed(t516, r, "a0"));
+        L.a1.push_back(study::printed(t516, r, "a1_per_MPa"));
+      }
+    std::vector<double> x;
+    for (const auto& p : L.printed()) x.push_back(p.value);
+    // 2. Nodal values.
+    const FrictionSurface S = surface_from_lines(L.build(x), p_min, p_max);
+    // 3. Against Table 6.1.
+    for (int k = 0; k < 9; ++k) {
+      const auto& row = t61.rows[static_cast<std::size_t>(k)];
+      const Printed thesis = study::printed(t61, row, "mu_" + dir);
+      const double tol = rounding_tolerance(
+          [&](const std::vector<double>& y) { return surface_from_lines(L.build(y), p_min, p_max).mu[k]; },
+          L.printed(), thesis.half_ulp);
+      c.checks().rederive("ch6.T6.1." + dir + ".node" + std::to_string(k + 1),
+                          "T6.1 mu at node " + std::to_string(k + 1) + ", " + dir, thesis.value, S.mu[k], tol, "-",
+                          "rounding of Table 5.16 coefficients and of Table 6.1 (4 decimals)");
+      const double p = p_min + (p_max - p_min) * (k / 3) / 2.0;
+      const double v = S.v_min + (S.v_max - S.v_min) * (k % 3) / 2.0;
+      if (dir == "RD") rows[k] = {std::to_string(k + 1), fmt(p), fmt(v, 6), thesis.text, fmt_fixed(S.mu[k], 4)};
+      else {
+        rows[k].push_back(thesis.text);
+        rows[k].push_back(fmt_fixed(S.mu[k], 4));
+      }
+    }
+    // 4. The printed Eq. (6.3) maps the middle speed elsewhere; does it give Table 6.1?
+    const FrictionSurface P = surface_from_lines(L.build(x), p_min, p_max, /*use_printed_eta=*/true);
+    bool printed_reproduces = true;
+    for (int k = 0; k < 9; ++k)
+      printed_reproduces = printed_reproduces && std::abs(P.mu[k] - study::printed(t61, t61.rows[k], "mu_" + dir).value) <= 1e-4;
+    c.checks().claim("ch6.eq6_3_as_printed_reproduces_T6.1." + dir,
+                     "Table 6.1 follows from Eq. (6.3) as printed, eta = 2v/(v_max - v_min) - 1, " + dir,
+                     printed_reproduces, "all nine nodes within 1e-4");
+    c.value("node2_printed_" + dir, fmt_fixed(P.mu[1], 4));
+    // 5. Figure 6.2 (and its TD companion).
+    std::vector<double> ps, vs;
+    for (int i = 0; i <= 20; ++i) ps.push_back(p_min + (p_max - p_min) * i / 20.0);
+    for (int j = 0; j <= 20; ++j) vs.push_back(S.v_min + (S.v_max - S.v_min) * j / 20.0);
+    c.save_grid("surface_" + dir, "mu(p [MPa], v [mm/s]) nine-node surface from Table 6.1 nodes, " + dir, ps, vs,
+                [&S](double p, double v) { return S(p, v); });
+    auto lines = c.table({"p_MPa", "v6.35", "v25.4", "v101.6"}, "Table 5.16 lines, " + dir);
+    const auto sl = L.build(x);
+    for (double p = p_min; p <= p_max + 1e-9; p += 2.0)
+      lines.row({fmt(p), fmt(sl[0].mu(p), 5), fmt(sl[1].mu(p), 5), fmt(sl[2].mu(p), 5)});
+    c.save(lines, "lines_" + dir);
+    c.plot("mu_surface", dir == "RD" ? "fig_6_2" : "fig_6_2_TD",
+           {{"dir", dir}, {"gridfile", c.out("tables/surface_" + dir + ".dat")},
+            {"linesfile", c.out("tables/lines_" + dir + ".csv")}});
+  }
+  for (auto& r : rows) nodes.row(r);
+  c.save(nodes, "table_6_1");
+
+  // 4. Eq. (6.1): the corrected set is a partition of unity; the printed set (N5 = N4) is not.
+  double sum_c = 0, sum_p = 0;
+  for (double n : nine_node_shape(0.0, 0.0)) sum_c += n;
+  for (double n : nine_node_shape_as_printed(0.0, 0.0)) sum_p += n;
+  c.checks().rederive("ch6.eq6_1.partition_of_unity", "sum of the corrected Eq. (6.1) at the centre", 1.0, sum_c,
+                      1e-12, "-", "exact arithmetic identity");
+  c.checks().rederive("ch6.eq6_1_as_printed.partition_of_unity", "sum of Eq. (6.1) as printed at the centre", 1.0,
+                      sum_p, 1e-12, "-", "exact arithmetic identity");
+  c.value("sum_printed_centre", fmt(sum_p));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  study::Chapter ch("ch6-friction-model", "Chapter 6: the mu(p, v) friction model (no FE part)");
+  return study::run_chapter(ch, argc, argv, body);
+}

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Check that the report holds every chapter's checks table and every figure
+# each chapter produced, and that the summary counts every chapter.
+# Usage: check_report.sh study.html chapters_src chapters_out
+set -euo pipefail
+html=$1; src=$2; out=$3
+fail=0
+[ -s "$html" ] || { echo "report missing or empty: $html"; exit 1; }
+grep -q 'id="summary"' "$html" || { echo "no checks summary in $html"; fail=1; }
+for dir in "$src"/*/; do
+  id=$(basename "$dir")
+  [ -f "$dir/intro.md" ] || continue
+  grep -q "id=\"checks-$id\"" "$html" || { echo "missing checks table of chapter $id"; fail=1; }
+  grep -q "href=\"#checks-$id\"" "$html" || { echo "summary does not link chapter $id"; fail=1; }
+  for svg in "$out/$id"/figures/*.svg; do
+    [ -e "$svg" ] || continue
+    stem=$(basename "$svg" .svg)
+    grep -q "id=\"fig-$id-$stem\"" "$html" || { echo "figure $id/$stem.svg is not in the report"; fail=1; }
+  done
+done
+# Figures must be embedded (self-contained), not linked to build paths.
+if grep -q 'src="/' "$html"; then echo "report links a local file instead of embedding it"; fail=1; fi
+[ $fail -eq 0 ] && echo "report ok: $(grep -c 'id="checks-' "$html") checks tables, $(grep -o 'id="fig-' "$html" | wc -l) figures"
+exit $fail

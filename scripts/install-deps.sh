@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Install the Debian packages drawbend needs, only those missing.
+# Idempotent and non-interactive; safe to run on every `make`.
+set -euo pipefail
+PKGS=(cmake g++ make libeigen3-dev libboost-test-dev gnuplot-nox pandoc)
+missing=()
+for p in "${PKGS[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all packages present"
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

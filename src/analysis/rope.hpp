@@ -1,0 +1,35 @@
+#pragma once
+// The conventional (rope-formula) analysis of the draw-bend test, thesis Chapter 2.
+// Units: forces N, lengths mm, stresses and pressures MPa (= N/mm^2), angles rad.
+//
+// Full strip or half model?  The thesis measures forces on the whole 25.4 mm
+// strip (Chapter 5) but simulates the top half by symmetry (Chapters 2-4), so
+// its simulated forces are half-model forces.  Eq. (2.2) gives the same
+// pressure either way provided force and width describe the same extent; the
+// functions below take the force basis explicitly so that the width used is
+// never ambiguous.
+namespace drawbend::analysis {
+
+enum class ForceBasis { full_strip, half_model };
+
+/// Width that matches the force basis: full width, or half of it.
+double basis_width(double full_width_mm, ForceBasis basis);
+
+/// Eq. (2.1), Swift (1948): bending force
+///   F_B = sigma_y t^2 w / (2 r) * tan(Theta/2)
+/// w is the width that matches the force basis.
+double swift_bending_force(double sigma_y_MPa, double t_mm, double full_width_mm, double r_mm,
+                           double theta_rad, ForceBasis basis);
+
+/// Eq. (2.2): average contact pressure P = (F_x + F_y) / (2 r w).
+double average_pressure(double Fx_N, double Fy_N, double r_mm, double full_width_mm, ForceBasis basis);
+
+/// Eq. (2.3): mu = (1/Theta) ln((F_y - F_B) / F_x).
+/// Throws std::domain_error when the argument of ln is not positive.
+double mu_rope(double Fx_N, double Fy_N, double FB_N, double theta_rad);
+
+/// Eq. (5.1) generalised to any wrap: mu = (1/Theta) ln((F_fric + F_back) / F_back),
+/// where F_fric = F_y - F_x - F_B is the pure friction force.  Theta = pi/2 gives Eq. (5.1).
+double mu_from_friction(double Ffric_N, double Fback_N, double theta_rad);
+
+}  // namespace drawbend::analysis

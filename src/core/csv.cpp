@@ -1,0 +1,189 @@
+#include "core/csv.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace drawbend {
+
+namespace {
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+}  // namespace
+
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cur;
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char ch = line[i];
+    if (quoted) {
+      if (ch == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cur += '"';
+        ++i;
+      } else if (ch == '"') {
+        quoted = false;
+      } else {
+        cur += ch;
+      }
+    } else if (ch == '"') {
+      quoted = true;
+    } else if (ch == ',') {
+      cells.push_back(trim(cur));
+      cur.clear();
+    } else {
+      cur += ch;
+    }
+  }
+  cells.push_back(trim(cur));
+  return cells;
+}
+
+CsvTable read_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open file for reading");
+  CsvTable t;
+  t.path = path;
+  std::string line;
+  int lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    const std::string s = trim(line);
+    if (s.empty()) continue;
+    if (s[0] == '#') {
+      t.comments.push_back(trim(s.substr(1)));
+      continue;
+    }
+    auto cells = split_csv_line(s);
+    if (t.header.empty()) {
+      t.header = std::move(cells);
+      continue;
+    }
+    if (cells.size() != t.header.size()) {
+      throw InputError(path + ":" + std::to_string(lineno) + ": expected " +
+                       std::to_string(t.header.size()) + " cells (as in the header), found " +
+                       std::to_string(cells.size()));
+    }
+    t.rows.push_back({lineno, std::move(cells)});
+  }
+  if (t.header.empty()) throw InputError(path + ": no header row");
+  return t;
+}
+
+bool CsvTable::has_column(const std::string& name) const {
+  for (const auto& h : header)
+    if (h == name) return true;
+  return false;
+}
+
+int CsvTable::column(const std::string& name) const {
+  for (std::size_t i = 0; i < header.size(); ++i)
+    if (header[i] == name) return static_cast<int>(i);
+  throw InputError(path + ": missing required column '" + name + "'");
+}
+
+const std::string& CsvTable::text(const CsvRow& r, const std::string& name) const {
+  return r.cells[static_cast<std::size_t>(column(name))];
+}
+
+std::string CsvTable::where(const CsvRow& r, const std::string& name) const {
+  return path + ":" + std::to_string(r.line) + ": column '" + name + "'";
+}
+
+double CsvTable::number(const CsvRow& r, const std::string& name) const {
+  const std::string& s = text(r, name);
+  std::size_t used = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(s, &used);
+  } catch (const std::exception&) {
+    throw InputError(where(r, name) + ": expected a number, found '" + s + "'");
+  }
+  if (used != s.size()) throw InputError(where(r, name) + ": expected a number, found '" + s + "'");
+  if (!std::isfinite(v)) throw InputError(where(r, name) + ": expected a finite number, found '" + s + "'");
+  return v;
+}
+
+std::string csv_quote(const std::string& cell) {
+  if (cell.find_first_of(",\"\n") == std::string::npos) return cell;
+  std::string out = "\"";
+  for (char c : cell) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+CsvWriter::CsvWriter(std::vector<std::string> header) : header_(std::move(header)) {}
+void CsvWriter::comment(const std::string& line) { comments_.push_back(line); }
+void CsvWriter::row(const std::vector<std::string>& cells) {
+  if (cells.size() != header_.size())
+    throw std::logic_error("CsvWriter: row has " + std::to_string(cells.size()) + " cells, header has " +
+                           std::to_string(header_.size()));
+  rows_.push_back(cells);
+}
+
+void CsvWriter::save(const std::string& path) const {
+  std::ostringstream os;
+  for (const auto& c : comments_) os << "# " << c << "\n";
+  for (std::size_t i = 0; i < header_.size(); ++i) os << (i ? "," : "") << csv_quote(header_[i]);
+  os << "\n";
+  for (const auto& r : rows_) {
+    for (std::size_t i = 0; i < r.size(); ++i) os << (i ? "," : "") << csv_quote(r[i]);
+    os << "\n";
+  }
+  write_file_atomic(path, os.str());
+}
+
+std::string fmt(double v, int significant) {
+  if (std::isnan(v)) return "nan";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", significant, v);
+  return buf;
+}
+
+std::string fmt_fixed(double v, int decimals) {
+  if (std::isnan(v)) return "nan";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::string s = buf;
+  if (s == "-0" || s.rfind("-0.", 0) == 0) {
+    // Avoid printing "-0.000" for values that round to zero.
+    bool all_zero = true;
+    for (char c : s.substr(1))
+      if (c != '0' && c != '.') all_zero = false;
+    if (all_zero) s = s.substr(1);
+  }
+  return s;
+}
+
+void write_file_atomic(const std::string& path, const std::string& text) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  if (target.has_parent_path()) fs::create_directories(target.parent_path());
+  const fs::path tmp = target.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(tmp.string() + ": cannot open file for writing");
+    out << text;
+    out.flush();
+    if (!out) throw InputError(tmp.string() + ": write failed");
+  }
+  fs::rename(tmp, target);
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open file for reading");
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+}  // namespace drawbend

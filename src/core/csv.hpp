@@ -1,0 +1,73 @@
+#pragma once
+// CSV reading and writing shared by every part of drawbend.
+//
+// Files may start with comment lines beginning with '#' (provenance, units,
+// configuration echo).  Cells are separated by commas; a cell may be quoted
+// with double quotes (doubled quotes inside).  Every cell remembers its file,
+// line and column so that errors can name them.
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace drawbend {
+
+/// An error in an input file, with the location it refers to.
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct CsvRow {
+  int line = 0;                     ///< 1-based line number in the file
+  std::vector<std::string> cells;
+};
+
+struct CsvTable {
+  std::string path;
+  std::vector<std::string> comments;  ///< comment lines without the leading '#'
+  std::vector<std::string> header;
+  std::vector<CsvRow> rows;
+
+  /// Index of a column; throws InputError naming the file if it is missing.
+  int column(const std::string& name) const;
+  bool has_column(const std::string& name) const;
+  /// Cell text of row r, column name.
+  const std::string& text(const CsvRow& r, const std::string& name) const;
+  /// Cell parsed as a finite number; throws InputError naming file:line:column.
+  double number(const CsvRow& r, const std::string& name) const;
+  /// "file:line: column 'name'" for messages.
+  std::string where(const CsvRow& r, const std::string& name) const;
+};
+
+/// Split one CSV line into cells (handles quotes).
+std::vector<std::string> split_csv_line(const std::string& line);
+/// Read a CSV file; throws InputError if it cannot be read or rows are ragged.
+CsvTable read_csv(const std::string& path);
+/// Quote a cell if it contains a comma, quote or newline.
+std::string csv_quote(const std::string& cell);
+
+/// Writes a CSV file atomically (temporary file, then rename) with a comment
+/// header that echoes provenance and configuration.
+class CsvWriter {
+ public:
+  explicit CsvWriter(std::vector<std::string> header);
+  void comment(const std::string& line);
+  void row(const std::vector<std::string>& cells);
+  void save(const std::string& path) const;
+
+ private:
+  std::vector<std::string> comments_;
+  std::vector<std::string> header_;
+  std::vector<std::vector<std::string>> rows_;
+};
+
+/// Format a number with a fixed count of significant digits (no trailing noise).
+std::string fmt(double v, int significant = 6);
+/// Format with a fixed count of decimals.
+std::string fmt_fixed(double v, int decimals);
+
+/// Write text to a file atomically (temporary file, then rename).
+void write_file_atomic(const std::string& path, const std::string& text);
+std::string read_file(const std::string& path);
+
+}  // namespace drawbend

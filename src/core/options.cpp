@@ -1,0 +1,101 @@
+#include "core/options.hpp"
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/csv.hpp"
+
+namespace drawbend {
+
+Options::Options(std::string program, std::string description)
+    : program_(std::move(program)), description_(std::move(description)) {}
+
+void Options::add(std::string& var, const std::string& name, const std::string& help) {
+  opts_.push_back({name, help, false, [&var](const std::string& s) { var = s; }, [&var] { return var; }});
+}
+
+void Options::add(double& var, const std::string& name, const std::string& help) {
+  opts_.push_back({name, help, false,
+                   [&var, name](const std::string& s) {
+                     std::size_t used = 0;
+                     double v = 0;
+                     try {
+                       v = std::stod(s, &used);
+                     } catch (const std::exception&) {
+                       used = 0;
+                     }
+                     if (used != s.size() || !std::isfinite(v))
+                       throw std::invalid_argument("--" + name + ": expected a number, found '" + s + "'");
+                     var = v;
+                   },
+                   [&var] { return fmt(var, 10); }});
+}
+
+void Options::add(int& var, const std::string& name, const std::string& help) {
+  opts_.push_back({name, help, false,
+                   [&var, name](const std::string& s) {
+                     std::size_t used = 0;
+                     int v = 0;
+                     try {
+                       v = std::stoi(s, &used);
+                     } catch (const std::exception&) {
+                       used = 0;
+                     }
+                     if (used != s.size() || s.empty())
+                       throw std::invalid_argument("--" + name + ": expected an integer, found '" + s + "'");
+                     var = v;
+                   },
+                   [&var] { return std::to_string(var); }});
+}
+
+void Options::add_flag(bool& var, const std::string& name, const std::string& help) {
+  opts_.push_back({name, help, true, [&var](const std::string&) { var = true; },
+                   [&var] { return std::string(var ? "true" : "false"); }});
+}
+
+std::string Options::usage() const {
+  std::ostringstream os;
+  os << "Usage: " << program_ << " [options]\n" << description_ << "\n\nOptions:\n";
+  for (const auto& o : opts_)
+    os << "  --" << o.name << (o.flag ? "" : " VALUE") << "\n      " << o.help << " (default: " << o.get()
+       << ")\n";
+  os << "  --help\n      Print this message.\n";
+  return os.str();
+}
+
+bool Options::parse(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
+      std::cout << usage();
+      return false;
+    }
+    if (a.rfind("--", 0) != 0) throw std::invalid_argument("unexpected argument '" + a + "' (see --help)");
+    std::string name = a.substr(2), value;
+    const auto eq = name.find('=');
+    if (eq != std::string::npos) {
+      value = name.substr(eq + 1);
+      name = name.substr(0, eq);
+    }
+    Opt* opt = nullptr;
+    for (auto& o : opts_)
+      if (o.name == name) opt = &o;
+    if (!opt) throw std::invalid_argument("unknown option '--" + name + "' (see --help)");
+    if (!opt->flag && eq == std::string::npos) {
+      if (i + 1 >= argc) throw std::invalid_argument("option '--" + name + "' needs a value");
+      value = argv[++i];
+    }
+    opt->set(value);
+  }
+  return true;
+}
+
+std::vector<std::string> Options::echo() const {
+  std::vector<std::string> lines;
+  for (const auto& o : opts_) lines.push_back(o.name + " = " + o.get());
+  return lines;
+}
+
+}  // namespace drawbend

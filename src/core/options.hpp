@@ -1,0 +1,36 @@
+#pragma once
+// Command-line options in the style of the MFEM examples: every parameter has
+// a default and a help text, `--help` lists them, unknown options are an error,
+// and `echo()` returns "name = value" lines for output-file headers.
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace drawbend {
+
+class Options {
+ public:
+  Options(std::string program, std::string description);
+  void add(std::string& var, const std::string& name, const std::string& help);
+  void add(double& var, const std::string& name, const std::string& help);
+  void add(int& var, const std::string& name, const std::string& help);
+  void add_flag(bool& var, const std::string& name, const std::string& help);
+
+  /// Parse argv. Returns false (after printing usage) on --help; throws
+  /// std::invalid_argument with a clear message on bad input.
+  bool parse(int argc, char** argv);
+  std::vector<std::string> echo() const;
+  std::string usage() const;
+
+ private:
+  struct Opt {
+    std::string name, help;
+    bool flag = false;
+    std::function<void(const std::string&)> set;
+    std::function<std::string()> get;
+  };
+  std::string program_, description_;
+  std::vector<Opt> opts_;
+};
+
+}  // namespace drawbend

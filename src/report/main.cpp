@@ -1,0 +1,43 @@
+// drawbend-report: assemble the chapters into build/report/study.md and run
+// Pandoc to write one self-contained HTML file (math as MathML, figures as
+// embedded SVG).
+//
+// 1. Read options.  2. Find the chapters.  3. Expand their Markdown.
+// 4. Run Pandoc.
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "core/csv.hpp"
+#include "core/options.hpp"
+#include "study/report_assembler.hpp"
+
+int main(int argc, char** argv) {
+  using namespace drawbend;
+  std::string chapters_src = "chapters", chapters_out = "build/chapters", out = "build/report/study.html";
+  std::string pandoc = "pandoc", css = "report/style.css", title = "drawbend: a reproduction of the draw-bend friction study";
+  Options opt("drawbend-report", "Assemble the chapter pages into one HTML report with Pandoc.");
+  opt.add(chapters_src, "chapters-src", "directory with chapters/<id>/{intro,results}.md");
+  opt.add(chapters_out, "chapters-out", "directory with the chapters' generated outputs");
+  opt.add(out, "out", "HTML file to write (the Markdown is written beside it)");
+  opt.add(pandoc, "pandoc", "pandoc executable");
+  opt.add(css, "css", "style sheet embedded in the HTML");
+  opt.add(title, "title", "report title");
+  try {
+    if (!opt.parse(argc, argv)) return 0;
+    const auto chapters = study::discover_chapters(chapters_src, chapters_out);
+    if (chapters.empty()) throw InputError(chapters_src + ": no chapters (directories with intro.md)");
+    const std::string md = std::filesystem::path(out).replace_extension(".md").string();
+    write_file_atomic(md, study::assemble_report(chapters, title));
+    const std::string tmp = out + ".tmp.html";
+    const std::string cmd = pandoc + " '" + md + "' --from markdown --to html5 --standalone --self-contained" +
+                            " --mathml --toc --toc-depth=2 --number-sections --css '" + css + "' -o '" + tmp + "'";
+    if (std::system(cmd.c_str()) != 0) throw std::runtime_error("pandoc failed: " + cmd);
+    std::filesystem::rename(tmp, out);
+    std::cout << "report: " << out << " (" << chapters.size() << " chapters)\n";
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "drawbend-report: " << e.what() << "\n";
+    return 2;
+  }
+}

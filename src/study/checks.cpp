@@ -1,0 +1,106 @@
+#include "study/checks.hpp"
+
+#include <cmath>
+#include <iostream>
+#include <stdexcept>
+
+#include "core/csv.hpp"
+
+namespace drawbend::study {
+
+std::string to_string(Status s) {
+  switch (s) {
+    case Status::pass: return "pass";
+    case Status::fail: return "fail";
+    case Status::erratum: return "erratum";
+  }
+  return "?";
+}
+
+Errata Errata::load(const std::string& path) {
+  Errata e;
+  const CsvTable t = read_csv(path);
+  for (const auto& r : t.rows) {
+    const std::string id = t.text(r, "id");
+    const std::string ex = t.text(r, "explanation");
+    if (ex.empty()) throw InputError(t.where(r, "explanation") + ": empty explanation");
+    if (!id.empty() && id.back() == '*')
+      e.prefix_[id.substr(0, id.size() - 1)] = ex;
+    else
+      e.exact_[id] = ex;
+  }
+  return e;
+}
+
+std::string Errata::explain(const std::string& id) const {
+  if (auto it = exact_.find(id); it != exact_.end()) return it->second;
+  std::string best;
+  std::size_t best_len = 0;
+  for (const auto& [p, ex] : prefix_)
+    if (id.rfind(p, 0) == 0 && p.size() >= best_len) {
+      best = ex;
+      best_len = p.size();
+    }
+  return best;
+}
+
+Checks::Checks(std::string chapter, Errata errata) : chapter_(std::move(chapter)), errata_(std::move(errata)) {}
+
+const Check& Checks::add(Check c, bool erratum_allowed, const std::string& reason) {
+  for (const auto& o : checks_)
+    if (o.id == c.id) throw std::logic_error("duplicate check id " + c.id);
+  const bool within = std::isfinite(c.ours) && std::abs(c.ours - c.thesis) <= c.tolerance;
+  const std::string why = erratum_allowed ? errata_.explain(c.id) : "";
+  if (within) {
+    c.status = why.empty() ? Status::pass : Status::fail;
+    c.note = why.empty() ? reason : "documented erratum no longer reproduces (stale): " + why;
+  } else if (!why.empty()) {
+    c.status = Status::erratum;
+    c.note = why;
+  } else {
+    c.status = Status::fail;
+    c.note = "outside tolerance (" + reason + ")";
+  }
+  checks_.push_back(std::move(c));
+  return checks_.back();
+}
+
+const Check& Checks::agree(const std::string& id, const std::string& q, double thesis, double ours, double tol,
+                           const std::string& unit, const std::string& reason) {
+  return add({id, q, thesis, ours, tol, unit, "", Status::pass}, false, reason);
+}
+
+const Check& Checks::rederive(const std::string& id, const std::string& q, double thesis, double ours,
+                              double tol, const std::string& unit, const std::string& reason) {
+  return add({id, q, thesis, ours, tol, unit, "", Status::pass}, true, reason);
+}
+
+const Check& Checks::claim(const std::string& id, const std::string& q, bool ours, const std::string& reason) {
+  return add({id, q, 1.0, ours ? 1.0 : 0.0, 0.0, "true=1", "", Status::pass}, true, reason);
+}
+
+int Checks::count(Status s) const {
+  int n = 0;
+  for (const auto& c : checks_) n += c.status == s;
+  return n;
+}
+
+void Checks::write(const std::string& path) const {
+  CsvWriter w({"id", "quantity", "thesis", "ours", "tolerance", "unit", "status", "note"});
+  w.comment("checks of chapter " + chapter_ + " against the thesis (drawbend " DRAWBEND_VERSION ")");
+  for (const auto& c : checks_)
+    w.row({c.id, c.quantity, fmt(c.thesis, 8), fmt(c.ours, 8), fmt(c.tolerance, 3), c.unit, to_string(c.status),
+           c.note});
+  w.save(path);
+}
+
+void Checks::print_summary() const {
+  std::cout << "checks[" << chapter_ << "]: " << count(Status::pass) << " pass, " << count(Status::fail)
+            << " fail, " << count(Status::erratum) << " erratum\n";
+  for (const auto& c : checks_)
+    if (c.status == Status::fail)
+      std::cout << "  FAIL " << c.id << ": thesis " << fmt(c.thesis) << ", ours " << fmt(c.ours) << " (tol "
+                << fmt(c.tolerance, 3) << " " << c.unit << ") " << c.note << "\n";
+}
+
+}  // namespace drawbend::study

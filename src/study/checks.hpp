@@ -1,0 +1,62 @@
+#pragma once
+// Checks against the thesis.  Each check has an id, a quantity, the thesis
+// value, our value, a tolerance with a one-line reason, a unit and a status:
+//   pass     |ours - thesis| <= tolerance
+//   fail     outside tolerance where agreement was expected
+//   erratum  a re-derivation of a thesis value from the thesis's own inputs
+//            disagrees, and data/thesis/errata.csv documents why.
+// A documented erratum whose check passes is reported as a failure (the
+// explanation is stale), so the errata list can never hide a real change.
+#include <map>
+#include <string>
+#include <vector>
+
+namespace drawbend::study {
+
+enum class Status { pass, fail, erratum };
+std::string to_string(Status s);
+
+struct Check {
+  std::string id, quantity;
+  double thesis = 0, ours = 0, tolerance = 0;
+  std::string unit, note;
+  Status status = Status::pass;
+};
+
+/// Documented thesis errata: id or id prefix (ending in '*') -> explanation.
+class Errata {
+ public:
+  static Errata load(const std::string& csv_path);
+  /// Explanation for an id, or empty when none is documented.
+  std::string explain(const std::string& id) const;
+
+ private:
+  std::map<std::string, std::string> exact_, prefix_;
+};
+
+class Checks {
+ public:
+  Checks(std::string chapter, Errata errata);
+
+  /// Agreement with a published value (e.g. our simulation vs the thesis).
+  const Check& agree(const std::string& id, const std::string& quantity, double thesis, double ours,
+                     double tolerance, const std::string& unit, const std::string& reason);
+  /// Re-derivation of a printed value from other printed values.
+  const Check& rederive(const std::string& id, const std::string& quantity, double thesis, double ours,
+                        double tolerance, const std::string& unit, const std::string& reason);
+  /// A yes/no claim of the thesis tested on numbers (1 = true, 0 = false).
+  const Check& claim(const std::string& id, const std::string& quantity, bool ours, const std::string& reason);
+
+  const std::vector<Check>& all() const { return checks_; }
+  int count(Status s) const;
+  void write(const std::string& path) const;  ///< checks.csv
+  void print_summary() const;
+
+ private:
+  const Check& add(Check c, bool erratum_allowed, const std::string& reason);
+  std::string chapter_;
+  Errata errata_;
+  std::vector<Check> checks_;
+};
+
+}  // namespace drawbend::study

@@ -1,0 +1,211 @@
+#include "study/report_assembler.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+namespace drawbend::study {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string escape_cell(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    if (c == '|') o += "\\|";
+    else if (c == '\n') o += ' ';
+    else o += c;
+  }
+  return o.empty() ? " " : o;
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+}
+
+// "path | caption" -> {path, caption}
+std::pair<std::string, std::string> split_directive(const std::string& rest) {
+  const auto bar = rest.find('|');
+  if (bar == std::string::npos) return {trim(rest), ""};
+  return {trim(rest.substr(0, bar)), trim(rest.substr(bar + 1))};
+}
+
+std::string stem_of(const std::string& path) { return fs::path(path).stem().string(); }
+
+std::string checks_table(const ChapterSource& ch) {
+  const CsvTable t = read_csv(ch.out_dir + "/checks.csv");
+  const int status = t.column("status");
+  std::ostringstream os;
+  os << "::: {#checks-" << ch.id << " .checks}\n\n";
+  os << "| ";
+  for (const auto& h : t.header) os << escape_cell(h) << " | ";
+  os << "\n|";
+  for (std::size_t i = 0; i < t.header.size(); ++i) os << "---|";
+  os << "\n";
+  for (const auto& r : t.rows) {
+    os << "| ";
+    for (std::size_t i = 0; i < r.cells.size(); ++i) {
+      if (static_cast<int>(i) == status)
+        os << "[" << r.cells[i] << "]{.status-" << r.cells[i] << "} | ";
+      else
+        os << escape_cell(r.cells[i]) << " | ";
+    }
+    os << "\n";
+  }
+  os << "\n: Checks of " << ch.id << " against the thesis (" << t.rows.size() << " checks).\n\n:::\n";
+  return os.str();
+}
+
+std::map<std::string, std::string> load_values(const ChapterSource& ch) {
+  std::map<std::string, std::string> v;
+  const std::string path = ch.out_dir + "/values.csv";
+  if (!fs::exists(path)) return v;
+  const CsvTable t = read_csv(path);
+  for (const auto& r : t.rows) {
+    const std::string unit = t.text(r, "unit");
+    v[t.text(r, "key")] = t.text(r, "value") + (unit.empty() ? "" : "\u00a0" + unit);
+  }
+  return v;
+}
+
+}  // namespace
+
+std::string markdown_table(const CsvTable& t, const std::string& caption) {
+  std::ostringstream os;
+  os << "| ";
+  for (const auto& h : t.header) os << escape_cell(h) << " | ";
+  os << "\n|";
+  for (std::size_t i = 0; i < t.header.size(); ++i) os << "---|";
+  os << "\n";
+  for (const auto& r : t.rows) {
+    os << "| ";
+    for (const auto& c : r.cells) os << escape_cell(c) << " | ";
+    os << "\n";
+  }
+  if (!caption.empty()) os << "\n: " << caption << "\n";
+  return os.str();
+}
+
+std::string expand_chapter(const std::string& markdown, const ChapterSource& ch) {
+  const auto values = load_values(ch);
+  std::istringstream in(markdown);
+  std::ostringstream out;
+  std::string line;
+  int lineno = 0;
+  const std::string where = ch.src_dir;
+  while (std::getline(in, line)) {
+    ++lineno;
+    const std::string loc = where + ":" + std::to_string(lineno);
+    if (line.rfind("@table ", 0) == 0) {
+      auto [path, caption] = split_directive(line.substr(7));
+      out << "\n" << markdown_table(read_csv(ch.out_dir + "/" + path), caption) << "\n";
+      continue;
+    }
+    if (line.rfind("@figure ", 0) == 0) {
+      auto [path, caption] = split_directive(line.substr(8));
+      const std::string abs = ch.out_dir + "/" + path;
+      if (!fs::exists(abs)) throw InputError(loc + ": figure " + abs + " does not exist");
+      out << "\n![" << caption << "](" << abs << "){#fig-" << ch.id << "-" << stem_of(path)
+          << " width=\"100%\"}\n\n";
+      continue;
+    }
+    if (trim(line) == "@checks") {
+      out << "\n" << checks_table(ch) << "\n";
+      continue;
+    }
+    // Inline {{key}} values.
+    std::string expanded;
+    std::size_t pos = 0;
+    while (true) {
+      const auto open = line.find("{{", pos);
+      if (open == std::string::npos) {
+        expanded += line.substr(pos);
+        break;
+      }
+      const auto close = line.find("}}", open);
+      if (close == std::string::npos) throw InputError(loc + ": unclosed '{{'");
+      const std::string key = trim(line.substr(open + 2, close - open - 2));
+      const auto it = values.find(key);
+      if (it == values.end()) throw InputError(loc + ": unknown value key '" + key + "' (not in values.csv)");
+      expanded += line.substr(pos, open - pos) + it->second;
+      pos = close + 2;
+    }
+    out << expanded << "\n";
+  }
+  return out.str();
+}
+
+std::string checks_summary(const std::vector<ChapterSource>& chapters) {
+  std::ostringstream os;
+  os << "# Summary of checks {#summary .unnumbered}\n\n"
+     << "Every chapter compares its numbers with the thesis. *pass*: within the stated tolerance; "
+     << "*fail*: outside it; *erratum*: the thesis disagrees with its own inputs, explained in the "
+     << "chapter's checks table.\n\n";
+  os << "| Chapter | pass | fail | erratum | checks table |\n|---|---:|---:|---:|---|\n";
+  int tp = 0, tf = 0, te = 0;
+  std::ostringstream errata;
+  for (const auto& ch : chapters) {
+    const std::string path = ch.out_dir + "/checks.csv";
+    if (!fs::exists(path)) {
+      os << "| " << ch.id << " | - | - | - | not run |\n";
+      continue;
+    }
+    const CsvTable t = read_csv(path);
+    int p = 0, f = 0, e = 0;
+    for (const auto& r : t.rows) {
+      const std::string& s = t.text(r, "status");
+      p += s == "pass";
+      f += s == "fail";
+      e += s == "erratum";
+      if (s == "erratum")
+        errata << "| [" << t.text(r, "id") << "](#checks-" << ch.id << ") | " << escape_cell(t.text(r, "thesis"))
+               << " | " << escape_cell(t.text(r, "ours")) << " | " << escape_cell(t.text(r, "unit")) << " |\n";
+    }
+    tp += p;
+    tf += f;
+    te += e;
+    os << "| " << ch.id << " | " << p << " | " << (f ? "[" + std::to_string(f) + "]{.status-fail}" : "0")
+       << " | " << e << " | [checks](#checks-" << ch.id << ") |\n";
+  }
+  os << "| **all** | **" << tp << "** | **" << tf << "** | **" << te << "** | |\n\n";
+  if (!errata.str().empty())
+    os << "## Errata at a glance {.unnumbered}\n\n| check | thesis | ours | unit |\n|---|---:|---:|---|\n"
+       << errata.str() << "\n: Thesis values that its own inputs do not reproduce; the explanation of each is "
+       << "in the chapter's checks table.\n\n";
+  return os.str();
+}
+
+std::string assemble_report(const std::vector<ChapterSource>& chapters, const std::string& title) {
+  std::ostringstream os;
+  os << "---\ntitle: \"" << title << "\"\nlang: en\n---\n\n";
+  os << checks_summary(chapters);
+  for (const auto& ch : chapters) {
+    os << "\n::: {.chapter #chapter-" << ch.id << "}\n\n";
+    for (const char* part : {"intro.md", "results.md"}) {
+      const std::string p = ch.src_dir + "/" + part;
+      if (!fs::exists(p)) throw InputError(p + ": missing");
+      ChapterSource located = ch;
+      located.src_dir = p;
+      os << expand_chapter(read_file(p), located) << "\n";
+    }
+    os << "\n:::\n";
+  }
+  return os.str();
+}
+
+std::vector<ChapterSource> discover_chapters(const std::string& src_root, const std::string& out_root) {
+  std::vector<ChapterSource> v;
+  for (const auto& e : fs::directory_iterator(src_root))
+    if (e.is_directory() && fs::exists(e.path() / "intro.md")) {
+      const std::string id = e.path().filename().string();
+      v.push_back({id, e.path().string(), out_root + "/" + id});
+    }
+  std::sort(v.begin(), v.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+  return v;
+}
+
+}  // namespace drawbend::study

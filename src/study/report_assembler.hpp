@@ -1,0 +1,40 @@
+#pragma once
+// Assembles the chapters into one Pandoc Markdown document.
+//
+// A chapter's intro.md and results.md are plain Pandoc Markdown plus three
+// line directives and one inline form, all resolved against the chapter's
+// output directory so that the prose never copies a number by hand:
+//   @table tables/x.csv | caption     the CSV as a table
+//   @figure figures/x.svg | caption   a figure (id fig-<chapter>-<stem>)
+//   @checks                            the chapter's checks table (id checks-<chapter>)
+//   {{key}}                            a value from the chapter's values.csv
+// Unknown keys and missing files are errors: the report never shows a hole.
+#include <string>
+#include <vector>
+
+#include "core/csv.hpp"
+
+namespace drawbend::study {
+
+struct ChapterSource {
+  std::string id;       ///< directory name, e.g. "ch5-measured"
+  std::string src_dir;  ///< chapters/<id> (intro.md, results.md)
+  std::string out_dir;  ///< build/chapters/<id> (checks.csv, values.csv, tables/, figures/)
+};
+
+/// CSV as a Pandoc pipe table (comment lines dropped).
+std::string markdown_table(const CsvTable& t, const std::string& caption);
+
+/// Expand directives and {{key}} values in one chapter's Markdown.
+std::string expand_chapter(const std::string& markdown, const ChapterSource& ch);
+
+/// The summary of all checks by chapter (first page of the report).
+std::string checks_summary(const std::vector<ChapterSource>& chapters);
+
+/// The whole report: title block, summary, then each chapter.
+std::string assemble_report(const std::vector<ChapterSource>& chapters, const std::string& title);
+
+/// Chapters found under src_root (directories with intro.md), sorted by name.
+std::vector<ChapterSource> discover_chapters(const std::string& src_root, const std::string& out_root);
+
+}  // namespace drawbend::study

@@ -1,0 +1,100 @@
+#include "study/thesis_data.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace drawbend::study {
+
+bool same(double a, double b) { return std::abs(a - b) < 1e-9 * (1.0 + std::abs(a)); }
+
+Printed printed(const CsvTable& t, const CsvRow& r, const std::string& col) {
+  const std::string& s = t.text(r, col);
+  try {
+    return analysis::parse_printed(s);
+  } catch (const std::exception&) {
+    throw InputError(t.where(r, col) + ": expected a number, found '" + s + "'");
+  }
+}
+
+analysis::LinearFit FitEntry::fit() const {
+  analysis::LinearFit f;
+  f.slope = slope.value;
+  f.intercept = intercept.value;
+  f.range = range;
+  f.label = source + " " + direction + (speed_mm_s > 0 ? " " + fmt(speed_mm_s) + " mm/s" : "") + " " +
+            fmt(pin_mm) + " mm pin";
+  return f;
+}
+
+std::vector<FitEntry> load_fits(const std::string& path, const std::string& source) {
+  const CsvTable t = read_csv(path);
+  std::vector<FitEntry> out;
+  for (const auto& r : t.rows) {
+    FitEntry e;
+    e.direction = t.has_column("direction") ? t.text(r, "direction") : "RD";
+    e.speed_mm_s = t.has_column("speed_mm_s") ? t.number(r, "speed_mm_s") : 0.0;
+    e.pin_mm = t.number(r, "pin_diameter_mm");
+    e.slope = printed(t, r, "slope");
+    e.intercept = printed(t, r, "intercept_N");
+    if (t.has_column("fback_min_N")) {
+      e.range = analysis::Range{t.number(r, "fback_min_N"), t.number(r, "fback_max_N")};
+      if (e.range->empty()) throw InputError(t.where(r, "fback_max_N") + ": range maximum below minimum");
+    }
+    e.source = source;
+    out.push_back(e);
+  }
+  return out;
+}
+
+const FitEntry& find_fit(const std::vector<FitEntry>& fits, const std::string& dir, double speed, double pin) {
+  for (const auto& f : fits)
+    if (f.direction == dir && same(f.speed_mm_s, speed) && same(f.pin_mm, pin)) return f;
+  throw std::out_of_range("no fit for " + dir + " " + fmt(speed) + " mm/s, " + fmt(pin) + " mm pin");
+}
+
+analysis::StribeckParams load_stribeck(const std::string& path) {
+  const CsvTable t = read_csv(path);
+  analysis::StribeckParams s;
+  int seen = 0;
+  for (const auto& r : t.rows) {
+    const std::string& name = t.text(r, "parameter");
+    const double v = t.number(r, "value");
+    if (name == "mu_BL") s.mu_BL = v;
+    else if (name == "mu_EHL") s.mu_EHL = v;
+    else if (name == "L_BL") s.L_BL = v;
+    else if (name == "L_EHL") s.L_EHL = v;
+    else if (name == "Ra") s.Ra_um = v;
+    else if (name == "eta") s.eta_Pa_s = v;
+    else throw InputError(t.where(r, "parameter") + ": unknown Stribeck parameter '" + name + "'");
+    ++seen;
+  }
+  if (seen != 6) throw InputError(path + ": expected the 6 Stribeck parameters, found " + std::to_string(seen));
+  s.validate(path);
+  return s;
+}
+
+std::vector<CaseValue> load_cases(const std::string& path, const std::string& value_column) {
+  const CsvTable t = read_csv(path);
+  std::vector<CaseValue> out;
+  for (const auto& r : t.rows)
+    out.push_back({t.text(r, "direction"), t.number(r, "speed_mm_s"), t.number(r, "pin_diameter_mm"),
+                   printed(t, r, value_column)});
+  return out;
+}
+
+const CaseValue& find_case(const std::vector<CaseValue>& v, const std::string& dir, double speed, double pin) {
+  for (const auto& c : v)
+    if (c.direction == dir && same(c.speed_mm_s, speed) && same(c.pin_mm, pin)) return c;
+  throw std::out_of_range("no case " + dir + " " + fmt(speed) + " mm/s, " + fmt(pin) + " mm pin");
+}
+
+}  // namespace drawbend::study
+
+namespace drawbend::study {
+Printed scalar(const std::string& path, const std::string& id) {
+  const CsvTable t = read_csv(path);
+  for (const auto& r : t.rows)
+    if (t.text(r, "id") == id) return printed(t, r, "value");
+  throw InputError(path + ": no scalar with id '" + id + "'");
+}
+}  // namespace drawbend::study

@@ -1,0 +1,58 @@
+// CSV reading/writing and the report's Markdown expansion.
+// Closed-form answers:
+//  - split_csv_line("a,\"b,c\",d") = {a, "b,c", d}.
+//  - A ragged row is an InputError naming file:line; a non-number names file:line:column.
+//  - markdown_table escapes '|'; {{key}} expands to "value unit"; an unknown key
+//    is an InputError naming the source line.
+#define BOOST_TEST_MODULE csv_and_report
+#include <boost/test/unit_test.hpp>
+#include <filesystem>
+
+#include "core/csv.hpp"
+#include "study/report_assembler.hpp"
+
+using namespace drawbend;
+
+static std::string tmpdir() {
+  auto d = std::filesystem::temp_directory_path() / "drawbend_csv_test";
+  std::filesystem::create_directories(d / "tables");
+  return d.string();
+}
+
+BOOST_AUTO_TEST_CASE(split_and_read) {
+  const auto v = split_csv_line("a,\"b,c\",d");
+  BOOST_TEST(v.size() == 3u);
+  BOOST_TEST(v[1] == "b,c");
+  const std::string p = tmpdir() + "/t.csv";
+  write_file_atomic(p, "# comment\nx,y\n1,2\n3,abc\n");
+  const auto t = read_csv(p);
+  BOOST_TEST(t.comments.size() == 1u);
+  BOOST_TEST(t.number(t.rows[0], "y") == 2.0);
+  try {
+    t.number(t.rows[1], "y");
+    BOOST_FAIL("expected InputError");
+  } catch (const InputError& e) {
+    BOOST_TEST(std::string(e.what()).find("t.csv:4: column 'y'") != std::string::npos);
+  }
+  BOOST_CHECK_THROW(t.column("z"), InputError);
+  write_file_atomic(p, "x,y\n1,2,3\n");
+  try {
+    read_csv(p);
+    BOOST_FAIL("expected InputError");
+  } catch (const InputError& e) {
+    BOOST_TEST(std::string(e.what()).find(":2:") != std::string::npos);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(markdown_expansion) {
+  const std::string d = tmpdir();
+  write_file_atomic(d + "/values.csv", "key,value,unit\nmu,0.096,\nF,107,N\n");
+  write_file_atomic(d + "/tables/a.csv", "# c\nh1,h2\nx|y,2\n");
+  study::ChapterSource ch{"chx", d + "/results.md", d};
+  const std::string md = study::expand_chapter("mu is {{mu}}, F is {{ F }}.\n@table tables/a.csv | Cap\n", ch);
+  BOOST_TEST(md.find("mu is 0.096, F is 107\u00a0N.") != std::string::npos);
+  BOOST_TEST(md.find("x\\|y") != std::string::npos);
+  BOOST_TEST(md.find(": Cap") != std::string::npos);
+  BOOST_CHECK_THROW(study::expand_chapter("{{nope}}\n", ch), InputError);
+  BOOST_CHECK_THROW(study::expand_chapter("@figure figures/none.svg | x\n", ch), InputError);
+}

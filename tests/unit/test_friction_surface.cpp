@@ -1,0 +1,60 @@
+// Nine-node friction surface, thesis Eqs. (6.1)-(6.3).
+// Closed-form answers:
+//  - The shape functions sum to one everywhere and N_k(node_l) = delta_kl.
+//  - The printed Eq. (6.1) (N5 = N4) sums to 0 at the centre (xi = eta = 0),
+//    so it is not a partition of unity.
+//  - A biquadratic mu(p,v) is reproduced exactly by its nodal values.
+//  - surface_from_lines with lines linear in p reproduces each line exactly at
+//    its own speed, for every p (the nodal values stay linear in p).
+//  - Corrected Eq. (6.3): v_min -> eta = -1, v_max -> +1; the printed map gives
+//    eta(v_min) = 2*6.35/95.25 - 1 = -0.8667.
+#define BOOST_TEST_MODULE friction_surface
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+
+#include "analysis/friction_surface.hpp"
+
+using namespace drawbend::analysis;
+namespace tt = boost::test_tools;
+
+BOOST_AUTO_TEST_CASE(partition_of_unity_and_kronecker) {
+  for (double xi = -1.5; xi <= 1.5; xi += 0.25)
+    for (double eta = -1.5; eta <= 1.5; eta += 0.25) {
+      double s = 0;
+      for (double n : nine_node_shape(xi, eta)) s += n;
+      BOOST_TEST(s == 1.0, tt::tolerance(1e-13));
+    }
+  const double c[3] = {-1, 0, 1};
+  for (int k = 0; k < 9; ++k) {
+    const auto N = nine_node_shape(c[k / 3], c[k % 3]);
+    for (int l = 0; l < 9; ++l) BOOST_TEST(N[l] == (k == l ? 1.0 : 0.0), tt::tolerance(1e-15));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(printed_shape_functions_are_not_a_partition) {
+  double s = 0;
+  for (double n : nine_node_shape_as_printed(0, 0)) s += n;
+  BOOST_TEST(s == 0.0, tt::tolerance(1e-15));
+}
+
+BOOST_AUTO_TEST_CASE(biquadratic_exact) {
+  FrictionSurface S;
+  auto f = [](double p, double v) { return 0.02 + 0.001 * p - 2e-6 * p * p + 3e-4 * v - 1e-6 * v * v + 1e-6 * p * v; };
+  const double P[3] = {S.p_min, 0.5 * (S.p_min + S.p_max), S.p_max};
+  const double V[3] = {S.v_min, 0.5 * (S.v_min + S.v_max), S.v_max};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) S.mu[3 * i + j] = f(P[i], V[j]);
+  for (double p : {0.0, 13.0, 55.5, 80.0})
+    for (double v : {6.35, 25.4, 70.0, 101.6}) BOOST_TEST(S(p, v) == f(p, v), tt::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(surface_from_lines_reproduces_lines) {
+  const std::vector<SpeedLine> lines = {{6.35, {{0.0142, 0.0025}}}, {25.4, {{0.0279, 0.0015}}}, {101.6, {{0.0234, 0.0003}}}};
+  const auto S = surface_from_lines(lines, 0, 80);
+  for (const auto& l : lines)
+    for (double p : {0.0, 10.0, 40.0, 77.0}) BOOST_TEST(S(p, l.v_mm_s) == l.mu(p), tt::tolerance(1e-12));
+  BOOST_TEST(S.eta(6.35) == -1.0, tt::tolerance(1e-14));
+  BOOST_TEST(S.eta(101.6) == 1.0, tt::tolerance(1e-14));
+  BOOST_TEST(S.eta_as_printed(6.35) == 2 * 6.35 / 95.25 - 1, tt::tolerance(1e-14));
+  BOOST_CHECK_THROW(surface_from_lines({lines[0], lines[1]}, 0, 80), std::invalid_argument);
+}

@@ -1,0 +1,54 @@
+// Printed-digit values and the checks framework.
+// Closed-form answers:
+//  - "106.76" has half unit 0.005; "4.5e-4" has 0.5e-5; "1,450" is 1450 with 0.5.
+//  - f(x) = x1 - x2 with both inputs printed to 0.01, compared with a value
+//    printed to 0.01: tolerance = 0.005 + 0.005 + 0.005 = 0.015.
+//  - Checks: within tolerance -> pass; outside -> fail; outside with a
+//    documented erratum -> erratum; a documented erratum that passes -> fail.
+#define BOOST_TEST_MODULE printed_and_checks
+#include <boost/test/unit_test.hpp>
+#include <filesystem>
+
+#include "analysis/printed.hpp"
+#include "core/csv.hpp"
+#include "study/checks.hpp"
+
+using namespace drawbend;
+namespace tt = boost::test_tools;
+
+BOOST_AUTO_TEST_CASE(printed_digits) {
+  auto a = analysis::parse_printed("106.76");
+  BOOST_TEST(a.value == 106.76);
+  BOOST_TEST(a.half_ulp == 0.005, tt::tolerance(1e-12));
+  BOOST_TEST(analysis::parse_printed("4.5e-4").half_ulp == 0.5e-5, tt::tolerance(1e-12));
+  auto c = analysis::parse_printed("1,450");
+  BOOST_TEST(c.value == 1450.0);
+  BOOST_TEST(c.half_ulp == 0.5);
+  BOOST_CHECK_THROW(analysis::parse_printed("abc"), std::invalid_argument);
+  const double tol = analysis::rounding_tolerance([](const std::vector<double>& x) { return x[0] - x[1]; },
+                                                  {analysis::parse_printed("503.60"), analysis::parse_printed("396.84")},
+                                                  0.005);
+  BOOST_TEST(tol == 0.015, tt::tolerance(1e-9));
+}
+
+BOOST_AUTO_TEST_CASE(check_statuses) {
+  const auto dir = std::filesystem::temp_directory_path() / "drawbend_checks_test";
+  std::filesystem::create_directories(dir);
+  const std::string errata = (dir / "errata.csv").string();
+  write_file_atomic(errata, "id,explanation\nx.known,typo in the thesis\nx.family.*,all of these\nx.stale,was wrong\n");
+  study::Checks c("test", study::Errata::load(errata));
+  BOOST_TEST(study::to_string(c.agree("x.ok", "q", 1.0, 1.01, 0.02, "N", "r").status) == "pass");
+  BOOST_TEST(study::to_string(c.agree("x.bad", "q", 1.0, 1.1, 0.02, "N", "r").status) == "fail");
+  BOOST_TEST(study::to_string(c.rederive("x.known", "q", 1.0, 2.0, 0.02, "N", "r").status) == "erratum");
+  BOOST_TEST(study::to_string(c.rederive("x.family.a", "q", 1.0, 2.0, 0.02, "N", "r").status) == "erratum");
+  BOOST_TEST(study::to_string(c.rederive("x.unknown", "q", 1.0, 2.0, 0.02, "N", "r").status) == "fail");
+  BOOST_TEST(study::to_string(c.rederive("x.stale", "q", 1.0, 1.0, 0.02, "N", "r").status) == "fail");
+  // An agreement check is never excused by the errata list.
+  BOOST_TEST(study::to_string(c.agree("x.known2", "q", 1.0, 2.0, 0.02, "N", "r").status) == "fail");
+  BOOST_TEST(c.count(study::Status::fail) == 4);
+  BOOST_CHECK_THROW(c.agree("x.ok", "q", 1, 1, 0, "", ""), std::logic_error);
+  c.write((dir / "checks.csv").string());
+  const auto t = read_csv((dir / "checks.csv").string());
+  BOOST_TEST(t.header.size() == 8u);
+  BOOST_TEST(t.rows.size() == 8u);
+}
