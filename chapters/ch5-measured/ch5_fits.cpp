@@ -60,6 +60,7 @@ void rederive_pure_friction(Chapter& c, const Inputs& in) {
                     "intercept_ours_N", "valid_from_N", "valid_to_N"},
                    "Tables 5.11/5.12 re-derived: Tables 5.5-5.10 minus Table 5.3 (full-strip forces, N)");
   auto minus = [](const std::vector<double>& x) { return x[0] - x[1]; };
+  int agree = 0, total = 0;
   for (const char* dir : kDirs)
     for (double v : kSpeeds)
       for (double pin : kPins) {
@@ -70,18 +71,23 @@ void rederive_pure_friction(Chapter& c, const Inputs& in) {
         const std::string table = std::string(dir) == "RD" ? "T5.11" : "T5.12";
         const std::string id = "ch5." + table + "." + key(dir, v, pin);
         const std::string why = "rounding of the printed digits of " + fb.source + " and Table 5.3";
-        c.checks().rederive(id + ".slope", table + " slope " + dir + " " + fmt(v) + " mm/s " + fmt(pin) + " mm",
+        agree += c.checks().rederive(id + ".slope", table + " slope " + dir + " " + fmt(v) + " mm/s " + fmt(pin) + " mm",
                             printed.slope.value, d.slope,
-                            rounding_tolerance(minus, {fb.slope, b.slope}, printed.slope.half_ulp), "-", why);
-        c.checks().rederive(id + ".intercept",
+                            rounding_tolerance(minus, {fb.slope, b.slope}, printed.slope.half_ulp), "-", why)
+                     .status == study::Status::pass;
+        agree += c.checks().rederive(id + ".intercept",
                             table + " intercept " + dir + " " + fmt(v) + " mm/s " + fmt(pin) + " mm",
                             printed.intercept.value, d.intercept,
                             rounding_tolerance(minus, {fb.intercept, b.intercept}, printed.intercept.half_ulp), "N",
-                            why);
+                            why)
+                     .status == study::Status::pass;
+        total += 2;
         w.row({dir, fmt(v), fmt(pin), printed.slope.text, fmt(d.slope, 6), printed.intercept.text,
                fmt(d.intercept, 8), fmt(d.range->lo), fmt(d.range->hi)});
       }
   c.save(w, "table_5_11_12");
+  c.value("t511_agree", std::to_string(agree));
+  c.value("t511_total", std::to_string(total));
 }
 
 // Step 3.  Table 5.14: the printed pure-friction fits at the Table 5.13 back
@@ -148,9 +154,12 @@ void conventional_mu(Chapter& c, const Inputs& in) {
   // Sec. 5.6: "Except for the case with the 42 mm diameter pin, the obtained
   // friction coefficients show ... that the friction coefficient decreases as
   // the pin diameter increases."
+  int dec = 0, brk = 0, rdtd = 0;
   for (const char* dir : kDirs)
     for (double v : kSpeeds) {
       const std::string k = std::string(dir) + ".v" + fmt(v);
+      dec += mu[key(dir, v, 12.7)] > mu[key(dir, v, 25.4)];
+      brk += mu[key(dir, v, 42)] > mu[key(dir, v, 25.4)];
       c.checks().claim("ch5.conv.decreases_12.7_to_25.4." + k,
                        std::string("mu(12.7 mm) > mu(25.4 mm), ") + dir + " " + fmt(v) + " mm/s (Sec. 5.6)",
                        mu[key(dir, v, 12.7)] > mu[key(dir, v, 25.4)], "sign of a difference of Eq. (5.1) values");
@@ -161,10 +170,15 @@ void conventional_mu(Chapter& c, const Inputs& in) {
   // Sec. 5.9.1: "the friction coefficient is higher in rolling direction than
   // transverse direction" -- tested pin by pin on the conventional values.
   for (double v : kSpeeds)
-    for (double pin : kPins)
+    for (double pin : kPins) {
+      rdtd += mu[key("RD", v, pin)] > mu[key("TD", v, pin)];
       c.checks().claim("ch5.conv.RD_above_TD.v" + fmt(v) + ".d" + fmt(pin),
                        "mu_RD > mu_TD at " + fmt(v) + " mm/s, " + fmt(pin) + " mm pin (Sec. 5.9.1)",
                        mu[key("RD", v, pin)] > mu[key("TD", v, pin)], "sign of a difference of Eq. (5.1) values");
+    }
+  c.value("claim_decreasing", std::to_string(dec));
+  c.value("claim_42_breaks", std::to_string(brk));
+  c.value("claim_rd_above_td", std::to_string(rdtd));
 }
 
 }  // namespace ch5
