@@ -147,7 +147,8 @@ std::string checks_summary(const std::vector<ChapterSource>& chapters) {
      << "chapter's checks table.\n\n";
   os << "| Chapter | pass | fail | erratum | checks table |\n|---|---:|---:|---:|---|\n";
   int tp = 0, tf = 0, te = 0;
-  std::ostringstream errata;
+  // Errata grouped by explanation: one row per cause, not per check.
+  std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>> causes;
   for (const auto& ch : chapters) {
     const std::string path = ch.out_dir + "/checks.csv";
     if (!fs::exists(path)) {
@@ -161,9 +162,12 @@ std::string checks_summary(const std::vector<ChapterSource>& chapters) {
       p += s == "pass";
       f += s == "fail";
       e += s == "erratum";
-      if (s == "erratum")
-        errata << "| [" << t.text(r, "id") << "](#checks-" << ch.id << ") | " << escape_cell(t.text(r, "thesis"))
-               << " | " << escape_cell(t.text(r, "ours")) << " | " << escape_cell(t.text(r, "unit")) << " |\n";
+      if (s == "erratum") {
+        const std::string& note = t.text(r, "note");
+        auto it = std::find_if(causes.begin(), causes.end(), [&](const auto& c) { return c.first == note; });
+        if (it == causes.end()) it = causes.insert(causes.end(), {note, {}});
+        it->second.push_back({t.text(r, "id"), ch.id});
+      }
     }
     tp += p;
     tf += f;
@@ -172,10 +176,15 @@ std::string checks_summary(const std::vector<ChapterSource>& chapters) {
        << " | " << e << " | [checks](#checks-" << ch.id << ") |\n";
   }
   os << "| **all** | **" << tp << "** | **" << tf << "** | **" << te << "** | |\n\n";
-  if (!errata.str().empty())
-    os << "## Errata at a glance {.unnumbered}\n\n| check | thesis | ours | unit |\n|---|---:|---:|---|\n"
-       << errata.str() << "\n: Thesis values that its own inputs do not reproduce; the explanation of each is "
-       << "in the chapter's checks table.\n\n";
+  if (!causes.empty()) {
+    os << "## Errata at a glance {.unnumbered}\n\n| checks | most likely explanation |\n|---|---|\n";
+    for (const auto& [note, ids] : causes) {
+      os << "| [" << ids.front().first << "](#checks-" << ids.front().second << ")";
+      if (ids.size() > 1) os << " and " << ids.size() - 1 << " more";
+      os << " | " << escape_cell(note) << " |\n";
+    }
+    os << "\n: Thesis statements and values that the thesis's own inputs do not reproduce, one row per cause.\n\n";
+  }
   return os.str();
 }
 
@@ -184,7 +193,7 @@ std::string assemble_report(const std::vector<ChapterSource>& chapters, const st
   os << "---\ntitle: \"" << title << "\"\nlang: en\n---\n\n";
   os << checks_summary(chapters);
   for (const auto& ch : chapters) {
-    os << "\n::: {.chapter #chapter-" << ch.id << "}\n\n";
+    os << "\n";
     for (const char* part : {"intro.md", "results.md"}) {
       const std::string p = ch.src_dir + "/" + part;
       if (!fs::exists(p)) throw InputError(p + ": missing");
@@ -192,7 +201,6 @@ std::string assemble_report(const std::vector<ChapterSource>& chapters, const st
       located.src_dir = p;
       os << expand_chapter(read_file(p), located) << "\n";
     }
-    os << "\n:::\n";
   }
   return os.str();
 }
