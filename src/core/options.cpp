@@ -4,6 +4,7 @@
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 #include "core/csv.hpp"
 
@@ -16,37 +17,32 @@ void Options::add(std::string& var, const std::string& name, const std::string& 
   opts_.push_back({name, help, false, [&var](const std::string& s) { var = s; }, [&var] { return var; }});
 }
 
+namespace {
+// Setter for a numeric option: the whole text must parse and be finite.
+template <class T>
+std::function<void(const std::string&)> numeric_setter(T& var, const std::string& name, const char* what) {
+  return [&var, name, what](const std::string& s) {
+    std::size_t used = 0;
+    T v{};
+    try {
+      if constexpr (std::is_integral_v<T>) v = std::stoi(s, &used);
+      else v = std::stod(s, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (s.empty() || used != s.size() || !std::isfinite(static_cast<double>(v)))
+      throw std::invalid_argument("--" + name + ": expected " + what + ", found '" + s + "'");
+    var = v;
+  };
+}
+}  // namespace
+
 void Options::add(double& var, const std::string& name, const std::string& help) {
-  opts_.push_back({name, help, false,
-                   [&var, name](const std::string& s) {
-                     std::size_t used = 0;
-                     double v = 0;
-                     try {
-                       v = std::stod(s, &used);
-                     } catch (const std::exception&) {
-                       used = 0;
-                     }
-                     if (used != s.size() || !std::isfinite(v))
-                       throw std::invalid_argument("--" + name + ": expected a number, found '" + s + "'");
-                     var = v;
-                   },
-                   [&var] { return fmt(var, 10); }});
+  opts_.push_back({name, help, false, numeric_setter(var, name, "a number"), [&var] { return fmt(var, 10); }});
 }
 
 void Options::add(int& var, const std::string& name, const std::string& help) {
-  opts_.push_back({name, help, false,
-                   [&var, name](const std::string& s) {
-                     std::size_t used = 0;
-                     int v = 0;
-                     try {
-                       v = std::stoi(s, &used);
-                     } catch (const std::exception&) {
-                       used = 0;
-                     }
-                     if (used != s.size() || s.empty())
-                       throw std::invalid_argument("--" + name + ": expected an integer, found '" + s + "'");
-                     var = v;
-                   },
+  opts_.push_back({name, help, false, numeric_setter(var, name, "an integer"),
                    [&var] { return std::to_string(var); }});
 }
 

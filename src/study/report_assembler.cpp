@@ -38,26 +38,10 @@ std::string stem_of(const std::string& path) { return fs::path(path).stem().stri
 
 std::string checks_table(const ChapterSource& ch) {
   const CsvTable t = read_csv(ch.out_dir + "/checks.csv");
-  const int status = t.column("status");
-  std::ostringstream os;
-  os << "::: {#checks-" << ch.id << " .checks}\n\n";
-  os << "| ";
-  for (const auto& h : t.header) os << escape_cell(h) << " | ";
-  os << "\n|";
-  for (std::size_t i = 0; i < t.header.size(); ++i) os << "---|";
-  os << "\n";
-  for (const auto& r : t.rows) {
-    os << "| ";
-    for (std::size_t i = 0; i < r.cells.size(); ++i) {
-      if (static_cast<int>(i) == status)
-        os << "[" << r.cells[i] << "]{.status-" << r.cells[i] << "} | ";
-      else
-        os << escape_cell(r.cells[i]) << " | ";
-    }
-    os << "\n";
-  }
-  os << "\n: Checks of " << ch.id << " against the thesis (" << t.rows.size() << " checks).\n\n:::\n";
-  return os.str();
+  return "::: {#checks-" + ch.id + " .checks}\n\n" +
+         markdown_table(t, "Checks of " + ch.id + " against the thesis (" + std::to_string(t.rows.size()) +
+                               " checks).", t.column("status")) +
+         "\n:::\n";
 }
 
 std::map<std::string, std::string> load_values(const ChapterSource& ch) {
@@ -74,7 +58,7 @@ std::map<std::string, std::string> load_values(const ChapterSource& ch) {
 
 }  // namespace
 
-std::string markdown_table(const CsvTable& t, const std::string& caption) {
+std::string markdown_table(const CsvTable& t, const std::string& caption, int status_column) {
   std::ostringstream os;
   os << "| ";
   for (const auto& h : t.header) os << escape_cell(h) << " | ";
@@ -83,7 +67,12 @@ std::string markdown_table(const CsvTable& t, const std::string& caption) {
   os << "\n";
   for (const auto& r : t.rows) {
     os << "| ";
-    for (const auto& c : r.cells) os << escape_cell(c) << " | ";
+    for (std::size_t i = 0; i < r.cells.size(); ++i) {
+      if (static_cast<int>(i) == status_column)
+        os << "[" << r.cells[i] << "]{.status-" << r.cells[i] << "} | ";
+      else
+        os << escape_cell(r.cells[i]) << " | ";
+    }
     os << "\n";
   }
   if (!caption.empty()) os << "\n: " << caption << "\n";

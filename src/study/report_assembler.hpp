@@ -22,8 +22,9 @@ struct ChapterSource {
   std::string out_dir;  ///< build/chapters/<id> (checks.csv, values.csv, tables/, figures/)
 };
 
-/// CSV as a Pandoc pipe table (comment lines dropped).
-std::string markdown_table(const CsvTable& t, const std::string& caption);
+/// CSV as a Pandoc pipe table (comment lines dropped).  The cells of
+/// `status_column` (if >= 0) become styled spans: [pass]{.status-pass}.
+std::string markdown_table(const CsvTable& t, const std::string& caption, int status_column = -1);
 
 /// Expand directives and {{key}} values in one chapter's Markdown.
 std::string expand_chapter(const std::string& markdown, const ChapterSource& ch);
