@@ -113,6 +113,27 @@ void body(study::Chapter& c) {
   c.checks().rederive("ch6.eq6_1_as_printed.partition_of_unity", "sum of Eq. (6.1) as printed at the centre", 1.0,
                       sum_p, 1e-12, "-", "exact arithmetic identity");
   c.value("sum_printed_centre", fmt(sum_p));
+
+  // 6. Statements of Secs. 6.6.2-6.6.3 derived from other printed numbers.
+  using V = std::vector<double>;
+  c.rederive_scalar("ch6.force_drop_sim", "simulated max punch force change, case 1 to 9 (Sec. 6.6.2)",
+                    "ch6_force_drop_sim", {"ch6_punch_force_sim_case9", "ch6_punch_force_sim_case1"},
+                    [](const V& x) { return x[0] - x[1]; }, "kN");
+  c.rederive_scalar("ch6.force_drop_exp", "measured max punch force change, case 1 to 9 (Sec. 6.6.2)",
+                    "ch6_force_drop_exp", {"ch6_punch_force_exp_case9", "ch6_punch_force_exp_case1"},
+                    [](const V& x) { return x[0] - x[1]; }, "kN");
+  const auto excess = [](const V& x) { return 100.0 * (x[0] / x[1] - 1.0); };
+  c.rederive_scalar("ch6.force_excess_case1", "simulated over measured max punch force, case 1 (Sec. 6.6.3)",
+                    "ch6_force_excess_case1", {"ch6_punch_force_sim_case1", "ch6_punch_force_exp_case1"}, excess, "%");
+  c.rederive_scalar("ch6.force_excess_case9", "simulated over measured max punch force, case 9 (Sec. 6.6.3)",
+                    "ch6_force_excess_case9", {"ch6_punch_force_sim_case9", "ch6_punch_force_exp_case9"}, excess, "%");
+  // The text's case-9 speed against Table 6.5.
+  const CsvTable t65 = read_csv(c.data("thesis/table_6_5.csv"));
+  const auto text_speed = study::scalar(sc, "ch6_case9_speed_text");
+  const auto table_speed = study::printed(t65, t65.rows.back(), "punch_speed_mm_s");
+  c.checks().rederive("ch6.case9_speed", "case 9 punch speed: Sec. 6.6.2 text against Table 6.5", text_speed.value,
+                      table_speed.value, 0.0, "mm/s",
+                      "the same quantity printed twice to 0.1 mm/s must read the same");
 }
 
 }  // namespace

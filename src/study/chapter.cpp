@@ -1,5 +1,8 @@
 #include "study/chapter.hpp"
 
+#include "analysis/printed.hpp"
+#include "study/thesis_data.hpp"
+
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -65,6 +68,25 @@ void Chapter::plot(const std::string& script, const std::string& stem,
   const std::string cmd = gnuplot_ + " -e \"" + e + "\" '" + gp + "'";
   if (std::system(cmd.c_str()) != 0) throw std::runtime_error("gnuplot failed: " + cmd);
   fs::rename(tmp_svg, final_svg);  // atomic: a figure is complete or absent
+}
+
+double Chapter::rederive_scalar(const std::string& check_id, const std::string& quantity, const std::string& target,
+                                const std::vector<std::string>& inputs,
+                                const std::function<double(const std::vector<double>&)>& f, const std::string& unit) {
+  const std::string path = data("thesis/scalars.csv");
+  const analysis::Printed t = scalar(path, target);
+  std::vector<analysis::Printed> in;
+  std::vector<double> x;
+  std::string names;
+  for (const auto& id : inputs) {
+    in.push_back(scalar(path, id));
+    x.push_back(in.back().value);
+    names += (names.empty() ? "" : ", ") + id;
+  }
+  const double ours = f(x);
+  checks_->rederive(check_id, quantity, t.value, ours, analysis::rounding_tolerance(f, in, t.half_ulp), unit,
+                    "printed-digit rounding of " + names + " and of the printed result");
+  return ours;
 }
 
 void Chapter::value(const std::string& key, const std::string& text, const std::string& unit) {

@@ -52,6 +52,13 @@ class Chapter {
 
   Checks& checks() { return *checks_; }
 
+  /// Re-derive the published scalar `target` of data/thesis/scalars.csv from
+  /// the published scalars `inputs` through f; the tolerance is the
+  /// printed-digit rounding of inputs and target.  Returns our value.
+  double rederive_scalar(const std::string& check_id, const std::string& quantity, const std::string& target,
+                         const std::vector<std::string>& inputs,
+                         const std::function<double(const std::vector<double>&)>& f, const std::string& unit);
+
   /// Write checks.csv and values.csv, print the summary; returns the exit code
   /// (non-zero when a check that should pass fails).
   int finish();
