@@ -56,12 +56,8 @@ void analyse_ratio_table(Chapter& ch, const std::vector<RatioCase>& cases, const
     const double u = (2 * k.Fb + k.Fbend + k.Ffric) / (k.c.value * k.c.value) * k.c.half_ulp;
     excess[k.pin].push_back({x, u});
     bending[k.pin] = k.Fbend;
-    const double Fb = k.Fb;
-    const double tol = rounding_tolerance(
-        [Fb](const std::vector<double>& x) { return pressure_ratio_from_fits(Fb, x[0], x[1] * Fb + x[2]); },
-        {k.ffric_printed, k.slope, k.intercept}, k.c.half_ulp);
     ch.checks().rederive("ch5." + name + ".c_eq22." + key(k.dir, k.v, k.pin), table + " c by Eq. (2.2), measured bending",
-                         k.c.value, cA, tol, "-", "rounding of printed forces, fits and c");
+                         k.c.value, cA, k.c.half_ulp, "-", kFromPrinted);
     w.row({k.dir, fmt(k.v), fmt(k.pin), fmt(k.Fb), fmt_fixed(k.Ffric, 2), fmt_fixed(k.Fbend, 2), k.c.text,
            fmt_fixed(cA, 4), fmt_fixed(cB, 4), fmt_fixed(cC, 4), fmt_fixed(x, 1), fmt_fixed(u, 1)});
   }

@@ -17,6 +17,11 @@ inline const double kSpeeds[3] = {6.35, 25.4, 101.6};  // mm/s, Table 5.4
 inline const double kPins[3] = {12.7, 25.4, 42.0};     // mm
 inline const char* kDirs[2] = {"RD", "TD"};
 
+/// Tolerance reason of table re-derivations: the thesis evidently computed its
+/// derived tables from its own printed inputs (e.g. 188.78 - 70.133 = 118.647,
+/// printed 118.65), so only the rounding of the printed result is allowed.
+inline const char* kFromPrinted = "thesis computed from its printed inputs: half a unit in the last printed place";
+
 struct Line516 {
   std::string direction;
   double speed_mm_s;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <Eigen/Dense>
+
 namespace drawbend::analysis {
 
 namespace {
@@ -44,16 +46,22 @@ FrictionSurface surface_from_lines(const std::vector<SpeedLine>& lines, double p
   s.p_max = p_max;
   s.v_min = lines[0].v_mm_s;
   s.v_max = lines[2].v_mm_s;
-  const double e_mid = use_printed_eta ? s.eta_as_printed(lines[1].v_mm_s) : s.eta(lines[1].v_mm_s);
-  const auto L = lagrange3(e_mid);
+  // Each line sits at some eta (the corrected map puts the outer lines at -1
+  // and +1; the printed map does not).  At each pressure node the quadratic in
+  // eta through the nodal values must pass through the three measured values:
+  // a 3 x 3 Lagrange system.
+  Eigen::Matrix3d A;
+  for (int r = 0; r < 3; ++r) {
+    const double e = use_printed_eta ? s.eta_as_printed(lines[r].v_mm_s) : s.eta(lines[r].v_mm_s);
+    const auto L = lagrange3(e);
+    A.row(r) << L[0], L[1], L[2];
+  }
+  const Eigen::FullPivLU<Eigen::Matrix3d> lu(A);
   const double p_nodes[3] = {p_min, 0.5 * (p_min + p_max), p_max};
   for (int i = 0; i < 3; ++i) {
-    const double lo = lines[0].mu(p_nodes[i]), hi = lines[2].mu(p_nodes[i]);
-    const double mid_measured = lines[1].mu(p_nodes[i]);
-    s.mu[3 * i + 0] = lo;
-    s.mu[3 * i + 2] = hi;
-    // Solve L0*lo + L1*x + L2*hi = mid_measured for the mid-speed node x.
-    s.mu[3 * i + 1] = (mid_measured - L[0] * lo - L[2] * hi) / L[1];
+    const Eigen::Vector3d measured(lines[0].mu(p_nodes[i]), lines[1].mu(p_nodes[i]), lines[2].mu(p_nodes[i]));
+    const Eigen::Vector3d nodal = lu.solve(measured);
+    for (int j = 0; j < 3; ++j) s.mu[3 * i + j] = nodal(j);
   }
   return s;
 }

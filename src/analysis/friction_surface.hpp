@@ -52,11 +52,12 @@ struct FrictionSurface {
 };
 
 /// Build the nine nodal values from three speed lines (Section 6.2, Fig. 6.2):
-/// lines at v_min and v_max give nodes 1,4,7 and 3,6,9 directly; the middle
-/// line at any v between them fixes nodes 2,5,8 so that the quadratic in eta
-/// through (v_min, v_mid_node, v_max) passes through the middle line's value.
-/// Lines are ordered by speed; the first and last must be at v_min and v_max.
-/// `use_printed_eta` maps the middle speed with the printed Eq. (6.3).
+/// at each pressure node the quadratic in eta through the nodal values passes
+/// through the three lines' values.  With the corrected map the slowest and
+/// fastest lines fall on eta = -1 and +1 and give nodes 1,4,7 and 3,6,9
+/// directly, and the middle line fixes nodes 2,5,8.  Lines are ordered by speed;
+/// the first and last define v_min and v_max.  `use_printed_eta` places all
+/// three lines with the printed Eq. (6.3) instead.
 FrictionSurface surface_from_lines(const std::vector<SpeedLine>& lines, double p_min, double p_max,
                                    bool use_printed_eta = false);
 

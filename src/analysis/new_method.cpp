@@ -39,6 +39,7 @@ void PressureMap::validate() const {
 }
 
 double predicted_friction_force(const PressureMap& map, double c, const Polynomial& mu) {
+  map.validate();
   double F = 0.0;
   for (std::size_t i = 0; i < map.p_MPa.size(); ++i) {
     const double p = c * map.p_MPa[i];
@@ -74,7 +75,9 @@ NewMethodResult solve_new_method(const std::vector<PinTest>& pins, int order) {
     if (!lu.isInvertible()) throw std::runtime_error("new method: the pin maps are linearly dependent");
     a = lu.solve(r.rhs);
   } else {
-    a = Ms.colPivHouseholderQr().solve(r.rhs);
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Ms);
+    if (qr.rank() < n) throw std::runtime_error("new method: the pin maps are linearly dependent (rank-deficient)");
+    a = qr.solve(r.rhs);
     r.least_squares = true;
   }
   a = a.cwiseQuotient(scale);

@@ -50,10 +50,10 @@ struct NewMethodResult {
   Eigen::VectorXd rhs;    ///< measured friction forces
   bool least_squares = false;
   double residual_N = 0;  ///< || M a - F || (zero for an exact solve)
-  double condition = 0;   ///< 2-norm condition number of M
+  double condition = 0;   ///< 2-norm condition number of M after scaling its columns to unit norm
 };
 
-/// Eq. (4.2): friction force of one pin for a given mu(p).
+/// Eq. (4.2): friction force of one pin for a given mu(p); validates the map.
 double predicted_friction_force(const PressureMap& map, double c, const Polynomial& mu);
 
 /// Identify mu(p) of the given polynomial order (0 = constant, 1 = linear, ...).

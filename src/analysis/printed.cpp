@@ -1,14 +1,23 @@
 #include "analysis/printed.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <regex>
 #include <stdexcept>
 
 namespace drawbend::analysis {
 
 Printed parse_printed(const std::string& raw) {
+  // Thousands separators only in the form 1,450 or 12,345,678; any other comma
+  // (a decimal comma, a stray one) is an error rather than a silent 100x.
+  static const std::regex thousands(R"(^[+-]?\d{1,3}(,\d{3})+(\.\d*)?$)");
   std::string s;
   for (char c : raw)
-    if (c != ',' && c != ' ') s += c;
+    if (c != ' ') s += c;
+  if (s.find(',') != std::string::npos) {
+    if (!std::regex_match(s, thousands)) throw std::invalid_argument("not a number: '" + raw + "'");
+    s.erase(std::remove(s.begin(), s.end(), ','), s.end());
+  }
   if (s.empty()) throw std::invalid_argument("empty number");
   std::size_t used = 0;
   const double v = std::stod(s, &used);

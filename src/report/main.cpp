@@ -10,6 +10,7 @@
 
 #include "core/csv.hpp"
 #include "core/options.hpp"
+#include "study/checks.hpp"
 #include "study/report_assembler.hpp"
 
 int main(int argc, char** argv) {
@@ -23,10 +24,22 @@ int main(int argc, char** argv) {
   opt.add(pandoc, "pandoc", "pandoc executable");
   opt.add(css, "css", "style sheet embedded in the HTML");
   opt.add(title, "title", "report title");
+  std::string errata;
+  opt.add(errata, "errata", "errata list to audit: every entry must match a check (empty: skip)");
   try {
     if (!opt.parse(argc, argv)) return 0;
     const auto chapters = study::discover_chapters(chapters_src, chapters_out);
     if (chapters.empty()) throw InputError(chapters_src + ": no chapters (directories with intro.md)");
+    if (!errata.empty()) {
+      std::vector<std::string> ids;
+      for (const auto& ch : chapters) {
+        const CsvTable t = read_csv(ch.out_dir + "/checks.csv");
+        for (const auto& r : t.rows) ids.push_back(t.text(r, "id"));
+      }
+      const auto dead = study::Errata::load(errata).unused(ids);
+      for (const auto& d : dead) std::cerr << errata << ": entry '" << d << "' matches no check\n";
+      if (!dead.empty()) throw InputError(errata + ": " + std::to_string(dead.size()) + " unused erratum entries");
+    }
     const std::string md = std::filesystem::path(out).replace_extension(".md").string();
     write_file_atomic(md, study::assemble_report(chapters, title));
     const std::string tmp = out + ".tmp.html";

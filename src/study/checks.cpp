@@ -1,5 +1,6 @@
 #include "study/checks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <stdexcept>
@@ -24,6 +25,7 @@ Errata Errata::load(const std::string& path) {
     const std::string id = t.text(r, "id");
     const std::string ex = t.text(r, "explanation");
     if (ex.empty()) throw InputError(t.where(r, "explanation") + ": empty explanation");
+    if (id.empty() || id == "*") throw InputError(t.where(r, "id") + ": an erratum must name a check id or an id prefix");
     if (!id.empty() && id.back() == '*')
       e.prefix_[id.substr(0, id.size() - 1)] = ex;
     else
@@ -44,17 +46,30 @@ std::string Errata::explain(const std::string& id) const {
   return best;
 }
 
+std::vector<std::string> Errata::unused(const std::vector<std::string>& ids) const {
+  std::vector<std::string> out;
+  for (const auto& [id, ex] : exact_)
+    if (std::find(ids.begin(), ids.end(), id) == ids.end()) out.push_back(id);
+  for (const auto& [p, ex] : prefix_)
+    if (std::none_of(ids.begin(), ids.end(), [&](const std::string& i) { return i.rfind(p, 0) == 0; }))
+      out.push_back(p + "*");
+  return out;
+}
+
 Checks::Checks(std::string chapter, Errata errata) : chapter_(std::move(chapter)), errata_(std::move(errata)) {}
 
 const Check& Checks::add(Check c, bool erratum_allowed, const std::string& reason) {
   for (const auto& o : checks_)
     if (o.id == c.id) throw std::logic_error("duplicate check id " + c.id);
-  const bool within = std::isfinite(c.ours) && std::abs(c.ours - c.thesis) <= c.tolerance;
+  // Allow floating-point round-off (1e-9 relative) on top of the stated tolerance.
+  const double roundoff = 1e-9 * std::max(std::abs(c.thesis), std::abs(c.ours));
+  const bool finite = std::isfinite(c.ours);
+  const bool within = finite && std::abs(c.ours - c.thesis) <= c.tolerance + roundoff;
   const std::string why = erratum_allowed ? errata_.explain(c.id) : "";
   if (within) {
     c.status = why.empty() ? Status::pass : Status::fail;
     c.note = why.empty() ? reason : "documented erratum no longer reproduces (stale): " + why;
-  } else if (!why.empty()) {
+  } else if (!why.empty() && finite) {
     c.status = Status::erratum;
     c.note = why;
   } else {

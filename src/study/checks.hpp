@@ -29,6 +29,8 @@ class Errata {
   static Errata load(const std::string& csv_path);
   /// Explanation for an id, or empty when none is documented.
   std::string explain(const std::string& id) const;
+  /// Entries (ids or "prefix*") that match none of the given check ids.
+  std::vector<std::string> unused(const std::vector<std::string>& ids) const;
 
  private:
   std::map<std::string, std::string> exact_, prefix_;

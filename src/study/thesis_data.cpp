@@ -1,5 +1,6 @@
 #include "study/thesis_data.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -7,7 +8,8 @@ namespace drawbend::study {
 
 bool same(double a, double b) { return std::abs(a - b) < 1e-9 * (1.0 + std::abs(a)); }
 
-Printed printed(const CsvTable& t, const CsvRow& r, const std::string& col) {
+namespace {
+Printed parse_cell(const CsvTable& t, const CsvRow& r, const std::string& col) {
   const std::string& s = t.text(r, col);
   try {
     return analysis::parse_printed(s);
@@ -15,7 +17,23 @@ Printed printed(const CsvTable& t, const CsvRow& r, const std::string& col) {
     throw InputError(t.where(r, col) + ": expected a number, found '" + s + "'");
   }
 }
+}  // namespace
 
+Printed printed(const CsvTable& t, const CsvRow& r, const std::string& col) {
+  // The thesis drops trailing zeros ("0.091" in a column of 4-decimal slopes,
+  // where 0.0285 + 0.0625 = 0.0910), so a cell's precision is the column's:
+  // the finest half unit printed anywhere in the column.
+  Printed p = parse_cell(t, r, col);
+  for (const auto& other : t.rows) p.half_ulp = std::min(p.half_ulp, parse_cell(t, other, col).half_ulp);
+  return p;
+}
+
+Printed scalar(const std::string& path, const std::string& id) {
+  const CsvTable t = read_csv(path);
+  for (const auto& r : t.rows)
+    if (t.text(r, "id") == id) return parse_cell(t, r, "value");  // own precision: the column mixes quantities
+  throw InputError(path + ": no scalar with id '" + id + "'");
+}
 analysis::LinearFit FitEntry::fit() const {
   analysis::LinearFit f;
   f.slope = slope.value;
@@ -90,11 +108,3 @@ const CaseValue& find_case(const std::vector<CaseValue>& v, const std::string& d
 
 }  // namespace drawbend::study
 
-namespace drawbend::study {
-Printed scalar(const std::string& path, const std::string& id) {
-  const CsvTable t = read_csv(path);
-  for (const auto& r : t.rows)
-    if (t.text(r, "id") == id) return printed(t, r, "value");
-  throw InputError(path + ": no scalar with id '" + id + "'");
-}
-}  // namespace drawbend::study

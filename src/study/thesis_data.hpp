@@ -15,7 +15,9 @@ namespace drawbend::study {
 
 using analysis::Printed;
 
-/// A printed number in a CSV cell; errors name file, line and column.
+/// A printed number in a CSV cell; errors name file, line and column.  Its
+/// half unit is the finest one printed in that column (trailing zeros dropped
+/// by the thesis do not widen a tolerance).
 Printed printed(const CsvTable& t, const CsvRow& r, const std::string& col);
 
 /// A row of a force-fit table: Tables 5.3, 5.5-5.12.
