@@ -5,7 +5,7 @@ BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_ARGS ?=
 
-.PHONY: all deps configure build study report test test-full clean
+.PHONY: all deps configure build study report test test-full gold clean
 
 all: report
 
@@ -30,6 +30,10 @@ test: build
 
 test-full: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+
+# Rewrite the regression gold files from the current code (review the diff!).
+gold: build
+	@cmake --build $(BUILD) --target gold
 
 clean:
 	@rm -rf $(BUILD)
