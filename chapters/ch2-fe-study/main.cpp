@@ -19,6 +19,8 @@ using namespace drawbend::analysis;
 
 namespace {
 
+double swift_pin_mm = 12.7;  // assumption for Eq. (2.1); --swift-pin-diameter
+
 void body(study::Chapter& c) {
   // 1. Statements that follow from other printed numbers.
   using V = std::vector<double>;
@@ -51,14 +53,16 @@ void body(study::Chapter& c) {
   const std::string sc = c.data("thesis/scalars.csv");
   const double t = study::scalar(sc, "ch5_strip_thickness").value, w = study::scalar(sc, "ch5_strip_width").value;
   const double theta = study::scalar(sc, "ch2_wrap_angle").value * M_PI / 180.0;
-  const double r = 12.7 / 2;
+  const double r = swift_pin_mm / 2;
   const double F_rd = swift_bending_force(ys_rd, t, w, r, theta, ForceBasis::half_model);
   const double F_td = swift_bending_force(ys_td, t, w, r, theta, ForceBasis::half_model);
   const auto swift = study::scalar(sc, "ch2_swift_bending_force");
-  c.checks().agree("ch2.swift_bending_force", "Swift bending force, Eq. (2.1), half model, 12.7 mm pin assumed",
+  c.checks().agree("ch2.swift_bending_force", "Swift bending force, Eq. (2.1), half model, assumed pin",
                    swift.value, F_rd, std::abs(F_rd - F_td) + swift.half_ulp, "N",
                    "inputs not stated in Ch. 2: RD/TD yield-stress spread plus rounding to 1 N");
   c.value("swift_thesis", swift.text, "N");
+  c.value("swift_pin", fmt(swift_pin_mm), "mm");
+  c.value("strip", fmt(t) + "\u00a0mm \u00d7 " + fmt(w) + "\u00a0mm");
   c.value("swift_rd", fmt_fixed(F_rd, 1), "N");
   c.value("swift_td", fmt_fixed(F_td, 1), "N");
   c.value("ys_rd", fmt(ys_rd), "MPa");
@@ -80,5 +84,7 @@ void body(study::Chapter& c) {
 
 int main(int argc, char** argv) {
   study::Chapter ch("ch2-fe-study", "Chapter 2: the draw-bend FE study (statements re-derived; no FE part)");
+  ch.options().add(swift_pin_mm, "swift-pin-diameter",
+                   "pin diameter [mm] assumed for Swift's Eq. (2.1); Chapter 2 does not state it");
   return study::run_chapter(ch, argc, argv, body);
 }

@@ -49,7 +49,8 @@ Inputs load_inputs(Chapter& c) {
     in.lines.push_back({t516.text(r, "direction"), t516.number(r, "speed_mm_s"), study::printed(t516, r, "a0"),
                         study::printed(t516, r, "a1_per_MPa")});
   in.fback_conventional = study::scalar(c.data("thesis/scalars.csv"), "ch5_conventional_fback");
-  in.theta = M_PI / 2;  // 90 deg wrap (Sec. 5.6)
+  in.theta = study::scalar(c.data("thesis/scalars.csv"), "ch2_wrap_angle").value * M_PI / 180.0;  // 90 deg (Sec. 5.6)
+  for (const auto& [pin, f] : in.fback) c.value("fback_d" + fmt(pin), f.text, "N");
   return in;
 }
 
@@ -141,6 +142,7 @@ void conventional_mu(Chapter& c, const Inputs& in) {
   c.save(w, "conventional_mu_1700N");
   c.value("conv_extrapolations", std::to_string(extrapolations));
   c.value("conv_fback", fmt(Fb), "N");
+  c.value("conv_total", std::to_string(mu.size()));
   // Wide table for the figure: one row per pin, one column per speed.
   for (const char* dir : kDirs) {
     auto fig = c.table({"pin_mm", "v6.35", "v25.4", "v101.6"}, std::string("mu by Eq. (5.1), ") + dir + " strips");
@@ -177,6 +179,8 @@ void conventional_mu(Chapter& c, const Inputs& in) {
                        mu[key("RD", v, pin)] > mu[key("TD", v, pin)], "sign of a difference of Eq. (5.1) values");
     }
   c.value("claim_decreasing", std::to_string(dec));
+  c.value("claim_combinations", std::to_string(std::size(kDirs) * std::size(kSpeeds)));
+  c.value("claim_cases", std::to_string(std::size(kSpeeds) * std::size(kPins)));
   c.value("claim_42_breaks", std::to_string(brk));
   c.value("claim_rd_above_td", std::to_string(rdtd));
 }

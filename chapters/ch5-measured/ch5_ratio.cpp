@@ -37,19 +37,26 @@ struct RatioCase {
 };
 
 // Compare the candidate definitions on one table's cases; returns per-pin excess stats.
-void analyse_ratio_table(Chapter& ch, const std::vector<RatioCase>& cases, const std::string& table,
-                         const std::string& name) {
+struct Excess {
+  double mean = 0, bound = 0;  ///< per pin: mean implied excess, largest rounding bound
+};
+
+std::map<double, Excess> analyse_ratio_table(Chapter& ch, const std::vector<RatioCase>& cases,
+                                             const std::string& table, const std::string& name) {
+  std::map<double, Excess> result;
   auto w = ch.table({"direction", "speed_mm_s", "pin_mm", "F_back_N", "F_fric_N", "F_bend_N", "c_thesis", "c_A_eq22",
                      "c_B_outlet", "c_C_no_bending", "implied_excess_N", "excess_rounding_N"},
                     table + ": candidate definitions of c (full-strip forces, N)");
   std::map<double, std::vector<std::pair<double, double>>> excess;  // pin -> (excess, rounding bound)
   std::map<double, double> bending;                                 // pin -> measured F_bend at F_back
   double ss[3] = {0, 0, 0};
+  int a_over = 0;
   for (const auto& k : cases) {
     const double cA = pressure_ratio_from_fits(k.Fb, k.Ffric, k.Fbend);
     const double cB = (k.Fb + k.Fbend + k.Ffric) / (k.Fb + k.Fbend);
     const double cC = (2 * k.Fb + k.Ffric) / (2 * k.Fb);
     ss[0] += std::pow(cA - k.c.value, 2);
+    a_over += cA > k.c.value;
     ss[1] += std::pow(cB - k.c.value, 2);
     ss[2] += std::pow(cC - k.c.value, 2);
     const double x = implied_rotating_bending(k.Fb, k.Ffric, k.Fbend, k.c.value) - k.Fbend;
@@ -64,6 +71,9 @@ void analyse_ratio_table(Chapter& ch, const std::vector<RatioCase>& cases, const
   ch.save(w, name + "_c_candidates");
   const double n = static_cast<double>(cases.size());
   ch.value(name + "_rms_A", fmt_fixed(std::sqrt(ss[0] / n), 4));
+  ch.value(name + "_A_over", std::to_string(a_over));
+  ch.value(name + "_cases", std::to_string(cases.size()));
+  ch.value(name + "_c_step", fmt(2 * cases.front().c.half_ulp));
   ch.value(name + "_rms_B", fmt_fixed(std::sqrt(ss[1] / n), 4));
   ch.value(name + "_rms_C", fmt_fixed(std::sqrt(ss[2] / n), 4));
   auto s = ch.table({"pin_mm", "mean_excess_N", "max_deviation_N", "rounding_bound_N", "consistent"},
@@ -81,12 +91,14 @@ void analyse_ratio_table(Chapter& ch, const std::vector<RatioCase>& cases, const
                           " mm pin",
                       consistent, "spread of implied excess within the rounding of c to 0.001");
     s.row({fmt(pin), fmt_fixed(mean, 1), fmt_fixed(dev, 1), fmt_fixed(bound, 1), consistent ? "yes" : "no"});
+    result[pin] = {mean, bound};
     ch.value(name + "_excess_d" + fmt(pin), fmt_fixed(mean, 1), "N");
     // Implied simulated rotating-pin bending force on the half model, to set
     // beside the simulated bending forces of Table 4.1.
     ch.value(name + "_fbsim_half_d" + fmt(pin), fmt_fixed((bending[pin] + mean) / 2, 1), "N");
   }
   ch.save(s, name + "_implied_excess");
+  return result;
 }
 
 }  // namespace
@@ -114,8 +126,19 @@ void pressure_ratio_definitions(Chapter& c, const Inputs& in) {
   const CsvTable t41 = read_csv(c.data("thesis/table_4_1.csv"));
   for (const auto& r : t41.rows)
     c.value("T4.1_FB_d" + fmt(t41.number(r, "pin_diameter_mm")), t41.text(r, "FB_N"), "N");
-  analyse_ratio_table(c, dil, "Table 5.15", "T5.15");
-  analyse_ratio_table(c, und, "Table 5.18", "T5.18");
+  c.value("T4.1_FX", t41.text(t41.rows.front(), "FX_prime_N"), "N");
+  const auto e15 = analyse_ratio_table(c, dil, "Table 5.15", "T5.15");
+  const auto e18 = analyse_ratio_table(c, und, "Table 5.18", "T5.18");
+  // Do the two tables (different tests and lubricants, but the same bending
+  // fits and back tensions) imply the same excess per pin?
+  for (const auto& [pin, a] : e15) {
+    const auto it = e18.find(pin);
+    if (it == e18.end()) continue;
+    c.checks().claim("ch5.c_excess_same_in_T5.15_T5.18.d" + fmt(pin),
+                     "Tables 5.15 and 5.18 imply the same rotating-pin force excess, " + fmt(pin) + " mm pin",
+                     std::abs(a.mean - it->second.mean) <= a.bound + it->second.bound,
+                     "difference of the mean excesses within the sum of their rounding bounds");
+  }
 }
 
 // Step 6.  Fig. 5.30: Eq. (5.1) with the undiluted friction forces of Table 5.17

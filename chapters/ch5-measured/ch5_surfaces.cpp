@@ -23,7 +23,7 @@ std::vector<SpeedLine> lines_of(const Inputs& in, const std::string& dir) {
 }  // namespace
 
 void friction_lines_and_surfaces(Chapter& c, const Inputs& in) {
-  const double p_max = 80.0;  // MPa, Sec. 6.3
+  const double p_max = study::scalar(c.data("thesis/scalars.csv"), "ch6_p_max").value;  // MPa, Sec. 6.3
   for (const char* dir : kDirs) {
     const auto lines = lines_of(in, dir);
     auto w = c.table({"p_MPa", "v6.35", "v25.4", "v101.6"},
@@ -73,13 +73,36 @@ void friction_lines_and_surfaces(Chapter& c, const Inputs& in) {
   c.checks().claim("ch5.T5.16.RD_above_TD_in_general", "mu_RD > mu_TD over most of the (p, v) domain (Sec. 5.9.1)",
                    fraction > 0.5, "share of an 81 x 81 grid of the surfaces where RD > TD");
   c.value("rd_above_td_percent", fmt_fixed(100.0 * fraction, 0), "%");
-  for (int k = 0; k < 2; ++k) {
-    const double pc = (td[k].mu.a[0] - rd[k].mu.a[0]) / (rd[k].mu.a[1] - td[k].mu.a[1]);
-    c.value("t516_cross_v" + fmt(rd[k].v_mm_s), fmt_fixed(pc, 1), "MPa");
+  // Where the RD and TD lines cross, and how well the printed digits fix it:
+  // the crossing p = (a0_TD - a0_RD)/(a1_RD - a1_TD) over every rounding of
+  // the four printed coefficients.
+  auto line = [&in](const std::string& dir, double v) -> const Line516& {
+    for (const auto& l : in.lines)
+      if (l.direction == dir && study::same(l.speed_mm_s, v)) return l;
+    throw InputError("Table 5.16: no line for " + dir + " at " + fmt(v) + " mm/s");
+  };
+  for (double v : kSpeeds) {
+    const Line516& R = line("RD", v);
+    const Line516& T = line("TD", v);
+    double lo = INFINITY, hi = -INFINITY;
+    bool undetermined = false;
+    for (int m = 0; m < 16; ++m) {
+      const double r0 = R.a0.value + ((m & 1) ? 1 : -1) * R.a0.half_ulp;
+      const double r1 = R.a1.value + ((m & 2) ? 1 : -1) * R.a1.half_ulp;
+      const double t0 = T.a0.value + ((m & 4) ? 1 : -1) * T.a0.half_ulp;
+      const double t1 = T.a1.value + ((m & 8) ? 1 : -1) * T.a1.half_ulp;
+      if (r1 - t1 <= 0) undetermined = true;  // slopes may be equal: no crossing guaranteed
+      else {
+        lo = std::min(lo, (t0 - r0) / (r1 - t1));
+        hi = std::max(hi, (t0 - r0) / (r1 - t1));
+      }
+    }
+    const double pc = (T.a0.value - R.a0.value) / (R.a1.value - T.a1.value);
+    c.value("t516_cross_v" + fmt(R.speed_mm_s), fmt_fixed(pc, 1), "MPa");
+    c.value("t516_cross_range_v" + fmt(R.speed_mm_s),
+            undetermined ? "above " + fmt_fixed(lo, 0) + "\u00a0MPa, or nowhere: the printed slopes differ by no more than their rounding"
+                         : fmt_fixed(lo, 1) + "\u2013" + fmt_fixed(hi, 1) + "\u00a0MPa");
   }
-  // At the highest speed the lines cross: TD is higher below this pressure.
-  const double p_cross = (td[2].mu.a[0] - rd[2].mu.a[0]) / (rd[2].mu.a[1] - td[2].mu.a[1]);
-  c.value("t516_cross_101", fmt_fixed(p_cross, 0), "MPa");
 }
 
 }  // namespace ch5

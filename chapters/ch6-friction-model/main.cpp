@@ -84,6 +84,7 @@ void body(study::Chapter& c) {
                      "Table 6.1 follows from Eq. (6.3) as printed, eta = 2v/(v_max - v_min) - 1, " + dir,
                      printed_reproduces, "all nine nodes within 1e-4");
     c.value("node2_printed_" + dir, fmt_fixed(P.mu[1], 4));
+    if (dir == "RD") c.value("eta_vmin_printed", fmt_fixed(P.eta_as_printed(P.v_min), 3));
     // 5. Figure 6.2 (and its TD companion).
     std::vector<double> ps, vs;
     for (int i = 0; i <= 20; ++i) ps.push_back(p_min + (p_max - p_min) * i / 20.0);

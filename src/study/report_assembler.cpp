@@ -89,6 +89,24 @@ std::string expand_chapter(const std::string& markdown, const ChapterSource& ch)
   while (std::getline(in, line)) {
     ++lineno;
     const std::string loc = where + ":" + std::to_string(lineno);
+    // Inline {{key}} values first, so that captions can quote them too.
+    std::string expanded;
+    std::size_t pos = 0;
+    while (true) {
+      const auto open = line.find("{{", pos);
+      if (open == std::string::npos) {
+        expanded += line.substr(pos);
+        break;
+      }
+      const auto close = line.find("}}", open);
+      if (close == std::string::npos) throw InputError(loc + ": unclosed '{{'");
+      const std::string key = trim(line.substr(open + 2, close - open - 2));
+      const auto it = values.find(key);
+      if (it == values.end()) throw InputError(loc + ": unknown value key '" + key + "' (not in values.csv)");
+      expanded += line.substr(pos, open - pos) + it->second;
+      pos = close + 2;
+    }
+    line = expanded;
     if (line.rfind("@table ", 0) == 0) {
       auto [path, caption] = split_directive(line.substr(7));
       out << "\n" << markdown_table(read_csv(ch.out_dir + "/" + path), caption) << "\n";
@@ -105,23 +123,6 @@ std::string expand_chapter(const std::string& markdown, const ChapterSource& ch)
     if (trim(line) == "@checks") {
       out << "\n" << checks_table(ch) << "\n";
       continue;
-    }
-    // Inline {{key}} values.
-    std::string expanded;
-    std::size_t pos = 0;
-    while (true) {
-      const auto open = line.find("{{", pos);
-      if (open == std::string::npos) {
-        expanded += line.substr(pos);
-        break;
-      }
-      const auto close = line.find("}}", open);
-      if (close == std::string::npos) throw InputError(loc + ": unclosed '{{'");
-      const std::string key = trim(line.substr(open + 2, close - open - 2));
-      const auto it = values.find(key);
-      if (it == values.end()) throw InputError(loc + ": unknown value key '" + key + "' (not in values.csv)");
-      expanded += line.substr(pos, open - pos) + it->second;
-      pos = close + 2;
     }
     out << expanded << "\n";
   }
