@@ -7,7 +7,10 @@
 //  - surface_from_lines with lines linear in p reproduces each line exactly at
 //    its own speed, for every p (the nodal values stay linear in p).
 //  - Corrected Eq. (6.3): v_min -> eta = -1, v_max -> +1; the printed map gives
-//    eta(v_min) = 2*6.35/95.25 - 1 = -0.8667.
+//    eta(v_min) = 2*6.35/95.25 - 1 = -0.8667 (13/15 below zero: 12.7/95.25 = 2/15).
+//  - Built with the printed map, the surface evaluated through the printed map
+//    again reproduces all three lines (the 3 x 3 Lagrange solve is exact), and
+//    node 1 is no longer the slow line's p = 0 value.
 #define BOOST_TEST_MODULE friction_surface
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -55,6 +58,19 @@ BOOST_AUTO_TEST_CASE(surface_from_lines_reproduces_lines) {
     for (double p : {0.0, 10.0, 40.0, 77.0}) BOOST_TEST(S(p, l.v_mm_s) == l.mu(p), tt::tolerance(1e-12));
   BOOST_TEST(S.eta(6.35) == -1.0, tt::tolerance(1e-14));
   BOOST_TEST(S.eta(101.6) == 1.0, tt::tolerance(1e-14));
-  BOOST_TEST(S.eta_as_printed(6.35) == 2 * 6.35 / 95.25 - 1, tt::tolerance(1e-14));
+  BOOST_TEST(S.eta_as_printed(6.35) == -13.0 / 15.0, tt::tolerance(1e-14));
   BOOST_CHECK_THROW(surface_from_lines({lines[0], lines[1]}, 0, 80), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(printed_map_surface_is_consistent) {
+  const std::vector<SpeedLine> lines = {{6.35, {{0.0142, 0.0025}}}, {25.4, {{0.0279, 0.0015}}}, {101.6, {{0.0234, 0.0003}}}};
+  const auto P = surface_from_lines(lines, 0, 80, /*use_printed_eta=*/true);
+  for (const auto& l : lines)
+    for (double p : {0.0, 40.0, 80.0}) {
+      const auto N = nine_node_shape(P.xi(p), P.eta_as_printed(l.v_mm_s));
+      double m = 0;
+      for (int k = 0; k < 9; ++k) m += N[k] * P.mu[k];
+      BOOST_TEST(m == l.mu(p), tt::tolerance(1e-10));
+    }
+  BOOST_TEST(std::abs(P.mu[0] - 0.0142) > 1e-3);
 }

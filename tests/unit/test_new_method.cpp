@@ -47,12 +47,31 @@ BOOST_AUTO_TEST_CASE(single_node_force) {
 }
 
 BOOST_AUTO_TEST_CASE(matrix_entries) {
-  const Polynomial mu{{0.03, 0.001}};
-  const auto pins = pins_for(mu, 2);
+  // Two hand-made maps: pin 1 nodes (10 MPa, 1 mm^2), (20 MPa, 2 mm^2), c = 1.1;
+  // pin 2 node (5 MPa, 4 mm^2), c = 1.2.  By hand:
+  //   M = [1.1*(10+40)        1.21*(100+800) ]   = [55   1089]
+  //       [1.2*(20)           1.44*(100)     ]     [24    144]
+  std::vector<PinTest> pins(2);
+  pins[0].map = {"a", {10, 20}, {1, 2}};
+  pins[0].c = 1.1;
+  pins[0].friction_force_N = 1;
+  pins[1].map = {"b", {5}, {4}};
+  pins[1].c = 1.2;
+  pins[1].friction_force_N = 1;
   const auto r = solve_new_method(pins, 1);
-  for (int j = 0; j < 2; ++j)
-    for (int k = 0; k < 2; ++k)
-      BOOST_TEST(r.M(j, k) == std::pow(pins[j].c, k + 1) * pins[j].map.moment(k + 1), tt::tolerance(1e-14));
+  BOOST_TEST(r.M(0, 0) == 55.0, tt::tolerance(1e-12));
+  BOOST_TEST(r.M(0, 1) == 1089.0, tt::tolerance(1e-12));
+  BOOST_TEST(r.M(1, 0) == 24.0, tt::tolerance(1e-12));
+  BOOST_TEST(r.M(1, 1) == 144.0, tt::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(rank_deficient_least_squares_is_an_error) {
+  // Three pins with the same map and c carry one equation's information: rank 1 < 2.
+  const Polynomial mu{{0.025, 0.0009}};
+  auto pins = pins_for(mu, 3);
+  pins[1] = pins[0];
+  pins[2] = pins[0];
+  BOOST_CHECK_THROW(solve_new_method(pins, 1), std::runtime_error);
 }
 
 BOOST_AUTO_TEST_CASE(exact_recovery_square) {

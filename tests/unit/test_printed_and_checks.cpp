@@ -5,8 +5,14 @@
 //    printed to 0.01: tolerance = 0.005 + 0.005 + 0.005 = 0.015.
 //  - Checks: within tolerance -> pass; outside -> fail; outside with a
 //    documented erratum -> erratum; a documented erratum that passes -> fail.
+//  - Claims: true -> pass; false -> fail unless documented (erratum).
+//  - The longest matching prefix explains; a wildcard entry whose check passes
+//    is stale (fail); a NaN is never excused; a bare '*' entry is rejected;
+//    entries matching no check are listed as unused.
+//  - "1,45" (decimal comma) is rejected rather than read as 145.
 #define BOOST_TEST_MODULE printed_and_checks
 #include <boost/test/unit_test.hpp>
+#include <cmath>
 #include <filesystem>
 
 #include "analysis/printed.hpp"
@@ -25,6 +31,8 @@ BOOST_AUTO_TEST_CASE(printed_digits) {
   BOOST_TEST(c.value == 1450.0);
   BOOST_TEST(c.half_ulp == 0.5);
   BOOST_CHECK_THROW(analysis::parse_printed("abc"), std::invalid_argument);
+  BOOST_CHECK_THROW(analysis::parse_printed("1,45"), std::invalid_argument);
+  BOOST_TEST(analysis::parse_printed("12,345,678.5").value == 12345678.5);
   const double tol = analysis::rounding_tolerance([](const std::vector<double>& x) { return x[0] - x[1]; },
                                                   {analysis::parse_printed("503.60"), analysis::parse_printed("396.84")},
                                                   0.005);
@@ -51,4 +59,27 @@ BOOST_AUTO_TEST_CASE(check_statuses) {
   const auto t = read_csv((dir / "checks.csv").string());
   BOOST_TEST(t.header.size() == 8u);
   BOOST_TEST(t.rows.size() == 7u);  // the duplicate was rejected
+}
+
+BOOST_AUTO_TEST_CASE(claims_prefixes_nan_and_audit) {
+  const auto dir = std::filesystem::temp_directory_path() / "drawbend_checks_test2";
+  std::filesystem::create_directories(dir);
+  const std::string errata = (dir / "errata.csv").string();
+  write_file_atomic(errata,
+                    "id,explanation\na.*,short prefix\na.b.*,long prefix\nc.claim,claim contradicted\n"
+                    "w.*,wildcard\nnever.used,dead entry\n");
+  const auto e = study::Errata::load(errata);
+  BOOST_TEST(e.explain("a.b.x") == "long prefix");
+  BOOST_TEST(e.explain("a.x") == "short prefix");
+  study::Checks c("test", e);
+  BOOST_TEST(study::to_string(c.claim("c.ok", "q", true, "r").status) == "pass");
+  BOOST_TEST(study::to_string(c.claim("c.false", "q", false, "r").status) == "fail");
+  BOOST_TEST(study::to_string(c.claim("c.claim", "q", false, "r").status) == "erratum");
+  BOOST_TEST(study::to_string(c.rederive("w.passes", "q", 1.0, 1.0, 0.1, "", "r").status) == "fail");
+  BOOST_TEST(study::to_string(c.rederive("a.b.nan", "q", 1.0, NAN, 0.1, "", "r").status) == "fail");
+  const auto dead = e.unused({"a.b.x", "c.claim", "w.passes"});
+  BOOST_TEST(dead.size() == 1u);
+  BOOST_TEST(dead.front() == "never.used");
+  write_file_atomic(errata, "id,explanation\n*,everything\n");
+  BOOST_CHECK_THROW(study::Errata::load(errata), InputError);
 }
