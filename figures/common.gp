@@ -1,4 +1,5 @@
 # Shared gnuplot settings for drawbend figures: SVG, readable fonts, CSV input.
+set encoding utf8
 set terminal svg size 720,480 dynamic enhanced font "Helvetica,14" background rgb "white"
 set output outfile
 set datafile separator ","

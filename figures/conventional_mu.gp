@@ -4,9 +4,10 @@
 load figdir."/common.gp"
 set title "Conventional friction coefficient, ".dir." strips"
 set xlabel "Pin diameter (mm)"
-set ylabel "{/Symbol m} by Eq. (5.1)"
+set ylabel "μ by Eq. (5.1)"
 set xrange [8:46]
-set key top right
+set key below horizontal
+set yrange [0:*]
 plot datafile using 1:2 with linespoints ls 1 title "6.35 mm/s", \
      ''       using 1:3 with linespoints ls 2 title "25.4 mm/s", \
      ''       using 1:4 with linespoints ls 3 title "101.6 mm/s"

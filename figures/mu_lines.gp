@@ -3,7 +3,7 @@
 load figdir."/common.gp"
 set title "Friction coefficient mu(p), ".dir." strips (Table 5.16)"
 set xlabel "Contact pressure p (MPa)"
-set ylabel "{/Symbol m}"
+set ylabel "μ"
 set key top left
 plot datafile using 1:2 with lines ls 1 title "6.35 mm/s", \
      ''       using 1:3 with lines ls 2 title "25.4 mm/s", \

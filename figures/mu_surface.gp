@@ -3,10 +3,10 @@
 # Variables: outfile, gridfile (x,y,z blocks separated by blank lines), linesfile (p_MPa,v6.35,v25.4,v101.6), dir.
 load figdir."/common.gp"
 set key noautotitle
-set title "Friction surface {/Symbol m}(p, v), ".dir." strips"
+set title "Friction surface μ(p, v), ".dir." strips"
 set xlabel "p (MPa)" offset 0,-1
 set ylabel "v (mm/s)" offset 1,-1
-set zlabel "{/Symbol m}" rotate by 90
+set zlabel "μ" rotate by 90
 set view 60, 35
 set pm3d depthorder hidden3d
 set palette defined (0 "#2166ac", 1 "#f7f7f7", 2 "#b2182b")

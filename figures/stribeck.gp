@@ -5,8 +5,8 @@ load figdir."/common.gp"
 set title "Stribeck curve, Eq. (3.2)"
 set logscale x
 set format x "10^{%L}"
-set xlabel "Lubricant number L = v{/Symbol h}/(p R_a)"
-set ylabel "{/Symbol m}"
+set xlabel "Lubricant number L = vη/(p R_a)"
+set ylabel "μ"
 set yrange [0:0.14]
 set key top right
 plot curvefile using 1:2 with lines ls 1 title "Table 3.1 (strip draw)", \
