@@ -46,9 +46,6 @@ struct FrictionSurface {
   /// Eq. (6.2) at (p, v); extrapolates outside the domain (callers decide
   /// whether to clamp; the solver's friction law does that).
   double operator()(double p, double v) const;
-  bool in_domain(double p, double v) const {
-    return p >= p_min && p <= p_max && v >= v_min && v <= v_max;
-  }
 };
 
 /// Build the nine nodal values from three speed lines (Section 6.2, Fig. 6.2):

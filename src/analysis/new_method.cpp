@@ -11,13 +11,6 @@ double PressureMap::moment(int n) const {
   return s;
 }
 
-double PressureMap::contact_area() const {
-  double s = 0.0;
-  for (std::size_t i = 0; i < p_MPa.size(); ++i)
-    if (p_MPa[i] > 0.0) s += area_mm2[i];
-  return s;
-}
-
 PressureMap PressureMap::scaled_areas(double factor) const {
   PressureMap m = *this;
   for (auto& a : m.area_mm2) a *= factor;

@@ -33,7 +33,6 @@ struct PressureMap {
   /// S_n = sum_i P_i^n A_i [N when n = 1].
   double moment(int n) const;
   double normal_force() const { return moment(1); }
-  double contact_area() const;  ///< sum of A_i where P_i > 0
   PressureMap scaled_areas(double factor) const;
   void validate() const;  ///< equal lengths, finite, P >= 0, A >= 0
 };

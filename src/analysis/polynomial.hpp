@@ -1,6 +1,5 @@
 #pragma once
 // A polynomial mu(p) = a_0 + a_1 p + ... + a_m p^m (thesis Eqs. 4.4, 5.2); p in MPa.
-#include <string>
 #include <vector>
 
 namespace drawbend::analysis {
@@ -14,7 +13,6 @@ struct Polynomial {
     return v;
   }
   int order() const { return static_cast<int>(a.size()) - 1; }
-  std::string str(int digits = 4) const;  ///< "0.0142 + 0.0025 p"
 };
 
 }  // namespace drawbend::analysis

@@ -44,6 +44,8 @@ static std::vector<PinTest> pins_for(const Polynomial& mu, int count) {
 BOOST_AUTO_TEST_CASE(single_node_force) {
   PressureMap m{"one", {10.0}, {2.0}};
   BOOST_TEST(predicted_friction_force(m, 1.1, Polynomial{{0.1}}) == 2.2, tt::tolerance(1e-14));
+  // A half-model map mirrored to the full strip carries twice the force: 4.4 N.
+  BOOST_TEST(predicted_friction_force(m.scaled_areas(2.0), 1.1, Polynomial{{0.1}}) == 4.4, tt::tolerance(1e-14));
 }
 
 BOOST_AUTO_TEST_CASE(matrix_entries) {
