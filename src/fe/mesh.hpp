@@ -1,0 +1,51 @@
+#pragma once
+// Hexahedral meshes in structure-of-arrays form (LULESH style).  Units: mm.
+//
+// Node numbering inside an element follows VTK_HEXAHEDRON: nodes 0-3 the
+// bottom face counter-clockwise seen from +zeta, nodes 4-7 the top face.
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace drawbend::fe {
+
+using Quad = std::array<int, 4>;  ///< a boundary face, outward normal by the right-hand rule
+
+struct Mesh {
+  std::vector<double> x, y, z;           ///< reference coordinates [mm]
+  std::vector<std::array<int, 8>> hex;   ///< element connectivity
+  std::map<std::string, std::vector<int>> node_sets;
+  std::map<std::string, std::vector<Quad>> face_sets;
+  std::vector<int> element_block;        ///< block id per element (0 for generated meshes)
+
+  int num_nodes() const { return static_cast<int>(x.size()); }
+  int num_elements() const { return static_cast<int>(hex.size()); }
+  const std::vector<int>& node_set(const std::string& name) const;
+  const std::vector<Quad>& face_set(const std::string& name) const;
+  void validate() const;  ///< indices in range, positive volumes; throws std::invalid_argument
+};
+
+/// Node-to-element-corner adjacency in CSR form, sorted by (element, corner),
+/// so that nodal sums run in a fixed order whatever the thread count.
+struct NodeCorners {
+  std::vector<int> start;   ///< size num_nodes + 1
+  std::vector<int> corner;  ///< 8 * element + corner
+  static NodeCorners build(const Mesh& m);
+};
+
+/// A structured block on the coordinate lines xs x ys x zs (each strictly
+/// increasing).  Node sets: xmin, xmax, ymin, ymax, zmin, zmax, all.  Face
+/// sets with outward normals: xmin, xmax, ymin, ymax, zmin, zmax.
+Mesh structured_block(const std::vector<double>& xs, const std::vector<double>& ys, const std::vector<double>& zs);
+
+/// Coordinate lines: n equal intervals from a to b.
+std::vector<double> uniform_lines(double a, double b, int n);
+/// Coordinate lines with refined zones: the segment [a, b] is split at the
+/// given breakpoints, each piece with its own count of equal intervals.
+std::vector<double> piecewise_lines(const std::vector<double>& breakpoints, const std::vector<int>& counts);
+
+/// Exact volume of a trilinear hexahedron (2 x 2 x 2 Gauss is exact).
+double hex_volume(const double x[8], const double y[8], const double z[8]);
+
+}  // namespace drawbend::fe

@@ -1,0 +1,282 @@
+#include "fe/solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "fe/hex8.hpp"
+
+namespace drawbend::fe {
+
+double Energies::balance_error() const {
+  // The contact work on the sheet is part of external_work; friction and the
+  // stored penalty energy are diagnostics of how that work splits.
+  const double lhs = kinetic + internal + hourglass + damping;
+  const double scale = std::max({std::abs(external_work), std::abs(kinetic) + std::abs(internal) + std::abs(hourglass), 1e-30});
+  return std::abs(lhs - external_work) / scale;
+}
+
+Solver::Solver(Model& model) : m_(model) {
+  m_.validate();
+  const Mesh& mesh = m_.mesh;
+  const int n = mesh.num_nodes(), ne = mesh.num_elements();
+  nc_ = NodeCorners::build(mesh);
+  x_ = mesh.x;
+  y_ = mesh.y;
+  z_ = mesh.z;
+  for (auto* v : {&vx_, &vy_, &vz_, &fx_, &fy_, &fz_, &mass_}) v->assign(n, 0.0);
+  const auto& mat = *m_.material;
+  sig_.assign(6 * ne, 0.0);
+  state_.assign(static_cast<std::size_t>(ne) * mat.state_size(), 0.0);
+  for (int e = 0; e < ne && mat.state_size() > 0; ++e) mat.init_state(&state_[static_cast<std::size_t>(e) * mat.state_size()]);
+  hgq_.assign(12 * ne, 0.0);
+  corner_.assign(24 * ne, 0.0);
+  ie_inc_.assign(ne, 0.0);
+  hg_inc_.assign(ne, 0.0);
+  dt_elem_.assign(ne, 0.0);
+  elem_mass_factor_.assign(ne, m_.mass_scaling);
+  wave_speed_ = mat.wave_speed();
+  // Lumped masses with mass scaling (uniform factor, then per element up to the target step).
+  for (int e = 0; e < ne; ++e) {
+    double ex[8], ey[8], ez[8];
+    for (int a = 0; a < 8; ++a) {
+      ex[a] = x_[mesh.hex[e][a]];
+      ey[a] = y_[mesh.hex[e][a]];
+      ez[a] = z_[mesh.hex[e][a]];
+    }
+    const double V = hex_volume(ex, ey, ez);
+    const double dt_e = hex_characteristic_length(ex, ey, ez, V) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
+    if (m_.target_dt > 0 && m_.dt_safety * dt_e < m_.target_dt)
+      elem_mass_factor_[e] *= std::pow(m_.target_dt / (m_.dt_safety * dt_e), 2);
+    const double me = mat.density() * V;
+    phys_mass_ += me;
+    added_mass_ += me * (elem_mass_factor_[e] - 1.0);
+    for (int a = 0; a < 8; ++a) mass_[mesh.hex[e][a]] += me * elem_mass_factor_[e] / 8.0;
+  }
+  // Contact pairs: unique slave nodes, tributary faces, penalty length scale.
+  for (const auto& cp : m_.contacts) {
+    const auto& faces = mesh.face_set(cp.faces);
+    std::vector<int> nodes;
+    for (const auto& f : faces) nodes.insert(nodes.end(), f.begin(), f.end());
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    std::vector<ContactNode> cn(nodes.size());
+    for (std::size_t k = 0; k < nodes.size(); ++k) cn[k].node = nodes[k];
+    // Element size normal to the face: V / A of the element owning each face.
+    std::vector<double> len(nodes.size(), 1e30);
+    for (const auto& f : faces) {
+      int owner = -1;
+      for (int c = nc_.start[f[0]]; c < nc_.start[f[0] + 1] && owner < 0; ++c) {
+        const int e = nc_.corner[c] / 8;
+        int hits = 0;
+        for (int a = 0; a < 8; ++a)
+          for (int q = 0; q < 4; ++q) hits += mesh.hex[e][a] == f[q];
+        if (hits == 4) owner = e;
+      }
+      if (owner < 0) throw std::invalid_argument("contact: face set '" + cp.faces + "' has a face on no element");
+      double ex[8], ey[8], ez[8];
+      for (int a = 0; a < 8; ++a) {
+        ex[a] = x_[mesh.hex[owner][a]];
+        ey[a] = y_[mesh.hex[owner][a]];
+        ez[a] = z_[mesh.hex[owner][a]];
+      }
+      const double V = hex_volume(ex, ey, ez);
+      const double d1[3] = {x_[f[2]] - x_[f[0]], y_[f[2]] - y_[f[0]], z_[f[2]] - z_[f[0]]};
+      const double d2[3] = {x_[f[3]] - x_[f[1]], y_[f[3]] - y_[f[1]], z_[f[3]] - z_[f[1]]};
+      const double A = 0.5 * std::sqrt(std::pow(d1[1] * d2[2] - d1[2] * d2[1], 2) +
+                                       std::pow(d1[2] * d2[0] - d1[0] * d2[2], 2) +
+                                       std::pow(d1[0] * d2[1] - d1[1] * d2[0], 2));
+      for (int q = 0; q < 4; ++q) {
+        const auto k = std::lower_bound(nodes.begin(), nodes.end(), f[q]) - nodes.begin();
+        len[k] = std::min(len[k], V / A);
+      }
+    }
+    contact_.push_back(std::move(cn));
+    contact_stiffness_len_.push_back(std::move(len));
+    contact_force_.emplace_back(nodes.size(), Vec3{0, 0, 0});
+    const int ss = cp.friction ? cp.friction->state_size() : 0;
+    friction_state_.emplace_back(nodes.size() * ss, 0.0);
+  }
+  tool_offset_.assign(m_.tools.size(), Vec3{0, 0, 0});
+  tool_vel_.assign(m_.tools.size(), Vec3{0, 0, 0});
+  tool_force_.assign(m_.tools.size(), Vec3{0, 0, 0});
+  compute_dt();
+  dt0_ = dt_;
+}
+
+void Solver::set_velocity(int node, const Vec3& v) {
+  vx_.at(node) = v[0];
+  vy_.at(node) = v[1];
+  vz_.at(node) = v[2];
+}
+
+void Solver::set_stress(int element, const double s[6]) {
+  for (int k = 0; k < 6; ++k) sig_.at(6 * element + k) = s[k];
+}
+
+double Solver::plastic_strain(int e) const {
+  return m_.material->plastic_strain(state_.data() + static_cast<std::size_t>(e) * m_.material->state_size());
+}
+
+void Solver::compute_dt() {
+  const Mesh& mesh = m_.mesh;
+  double dtmin = 1e30;
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    double ex[8], ey[8], ez[8];
+    for (int a = 0; a < 8; ++a) {
+      ex[a] = x_[mesh.hex[e][a]];
+      ey[a] = y_[mesh.hex[e][a]];
+      ez[a] = z_[mesh.hex[e][a]];
+    }
+    const double V = hex_volume(ex, ey, ez);
+    dt_elem_[e] = hex_characteristic_length(ex, ey, ez, V) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
+    dtmin = std::min(dtmin, dt_elem_[e]);
+  }
+  dt_ = m_.dt_safety * dtmin;
+}
+
+double Solver::stable_dt() const { return dt_; }
+
+void Solver::element_forces(double dt) {
+  const Mesh& mesh = m_.mesh;
+  const int ne = mesh.num_elements();
+  const material::Material& mat = *m_.material;
+  const int ns = mat.state_size();
+  const double E0 = mat.youngs_modulus(), G0 = mat.shear_modulus(), hg = m_.hourglass;
+  int inverted = -1;
+#pragma omp parallel for schedule(static)
+  for (int e = 0; e < ne; ++e) {
+    // Gather.
+    double x[8], y[8], z[8], v[8][3];
+    for (int a = 0; a < 8; ++a) {
+      const int i = mesh.hex[e][a];
+      x[a] = x_[i];
+      y[a] = y_[i];
+      z[a] = z_[i];
+      v[a][0] = vx_[i];
+      v[a][1] = vy_[i];
+      v[a][2] = vz_[i];
+    }
+    HexGeometry g;
+    if (!hex_geometry(x, y, z, g)) {
+#pragma omp critical
+      inverted = inverted < 0 ? e : std::min(inverted, e);
+      continue;
+    }
+    const double V = g.volume;
+    // Velocity gradient L_ij = sum_a v_ai B_ja.
+    double L[3][3] = {{0}};
+    for (int a = 0; a < 8; ++a)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) L[i][j] += v[a][i] * g.B[j][a];
+    // Jaumann rotation of the stress: sigma += dt (W sigma - sigma W).
+    double* s = &sig_[6 * e];
+    const double w01 = 0.5 * (L[0][1] - L[1][0]), w12 = 0.5 * (L[1][2] - L[2][1]), w20 = 0.5 * (L[2][0] - L[0][2]);
+    const double S[3][3] = {{s[0], s[3], s[5]}, {s[3], s[1], s[4]}, {s[5], s[4], s[2]}};
+    const double W[3][3] = {{0, w01, -w20}, {-w01, 0, w12}, {w20, -w12, 0}};
+    double WS[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) WS[i][j] = W[i][0] * S[0][j] + W[i][1] * S[1][j] + W[i][2] * S[2][j];
+    // W S - S W = WS + (WS)^T since W is skew and S symmetric.
+    s[0] += dt * 2 * WS[0][0];
+    s[1] += dt * 2 * WS[1][1];
+    s[2] += dt * 2 * WS[2][2];
+    s[3] += dt * (WS[0][1] + WS[1][0]);
+    s[4] += dt * (WS[1][2] + WS[2][1]);
+    s[5] += dt * (WS[2][0] + WS[0][2]);
+    // Material update with the strain increment (engineering shear).
+    const double deps[6] = {L[0][0] * dt, L[1][1] * dt, L[2][2] * dt, (L[0][1] + L[1][0]) * dt,
+                            (L[1][2] + L[2][1]) * dt, (L[2][0] + L[0][2]) * dt};
+    double before[6];
+    for (int k = 0; k < 6; ++k) before[k] = s[k];
+    double* st = ns ? &state_[static_cast<std::size_t>(e) * ns] : nullptr;
+    mat.update(deps, s, st);
+    double w = 0;
+    for (int k = 0; k < 6; ++k) w += 0.5 * (before[k] + s[k]) * deps[k];
+    ie_inc_[e] = w * V;
+    // Internal force of node a: V sigma B_a.
+    double f[8][3];
+    for (int a = 0; a < 8; ++a) {
+      const double b0 = g.B[0][a], b1 = g.B[1][a], b2 = g.B[2][a];
+      f[a][0] = V * (s[0] * b0 + s[3] * b1 + s[5] * b2);
+      f[a][1] = V * (s[3] * b0 + s[1] * b1 + s[4] * b2);
+      f[a][2] = V * (s[5] * b0 + s[4] * b1 + s[2] * b2);
+    }
+    // Hourglass: gamma_alpha,a = h_alpha,a - (h_alpha . x) . B_a (orthogonal to linear fields).
+    double gam[4][8];
+    for (int al = 0; al < 4; ++al) {
+      double hx = 0, hy = 0, hz = 0;
+      for (int b = 0; b < 8; ++b) {
+        hx += kHg[al][b] * x[b];
+        hy += kHg[al][b] * y[b];
+        hz += kHg[al][b] * z[b];
+      }
+      for (int a = 0; a < 8; ++a) gam[al][a] = kHg[al][a] - (hx * g.B[0][a] + hy * g.B[1][a] + hz * g.B[2][a]);
+    }
+    // Hourglass rates in the corotational frame: q_i,alpha = sum_a (R^T v_a)_i gamma_alpha,a.
+    double q[4][3] = {{0}};
+    for (int a = 0; a < 8; ++a) {
+      const double vl[3] = {g.R[0][0] * v[a][0] + g.R[1][0] * v[a][1] + g.R[2][0] * v[a][2],
+                            g.R[0][1] * v[a][0] + g.R[1][1] * v[a][1] + g.R[2][1] * v[a][2],
+                            g.R[0][2] * v[a][0] + g.R[1][2] * v[a][1] + g.R[2][2] * v[a][2]};
+      for (int al = 0; al < 4; ++al)
+        for (int i = 0; i < 3; ++i) q[al][i] += vl[i] * gam[al][a];
+    }
+    // Physical mode stiffnesses (see hex8.hpp), scaled by the material tangent.
+    // Floor: a perfectly plastic layer keeps 1 % of the elastic stabilisation so
+    // that hourglass modes stay controlled (costs < 2 % of the plastic moment).
+    const double ratio = std::max(mat.tangent_ratio(s, st), 0.01);
+    const double E = E0 * ratio, G = G0 * ratio;
+    const double ih2[3] = {1.0 / (g.h[0] * g.h[0]), 1.0 / (g.h[1] * g.h[1]), 1.0 / (g.h[2] * g.h[2])};
+    static constexpr int kModeCoords[3][2] = {{1, 2}, {2, 0}, {0, 1}};
+    double* Q = &hgq_[12 * e];
+    for (int al = 0; al < 4; ++al)
+      for (int i = 0; i < 3; ++i) {
+        double K;
+        if (al == 3) K = E * V * ih2[i] / 9.0;
+        else if (kModeCoords[al][0] == i || kModeCoords[al][1] == i) K = E * V * ih2[i] / 3.0;
+        else K = G * V * (ih2[kModeCoords[al][0]] + ih2[kModeCoords[al][1]]) / 3.0;
+        Q[3 * al + i] += dt * hg * K / 64.0 * q[al][i];
+      }
+    double ehg = 0;
+    double* c = &corner_[24 * e];
+    for (int a = 0; a < 8; ++a) {
+      double fl[3] = {0, 0, 0};
+      for (int al = 0; al < 4; ++al)
+        for (int i = 0; i < 3; ++i) fl[i] += Q[3 * al + i] * gam[al][a];
+      const double fh[3] = {g.R[0][0] * fl[0] + g.R[0][1] * fl[1] + g.R[0][2] * fl[2],
+                            g.R[1][0] * fl[0] + g.R[1][1] * fl[1] + g.R[1][2] * fl[2],
+                            g.R[2][0] * fl[0] + g.R[2][1] * fl[1] + g.R[2][2] * fl[2]};
+      ehg += (fh[0] * v[a][0] + fh[1] * v[a][1] + fh[2] * v[a][2]) * dt;
+      c[3 * a + 0] = -(f[a][0] + fh[0]);
+      c[3 * a + 1] = -(f[a][1] + fh[1]);
+      c[3 * a + 2] = -(f[a][2] + fh[2]);
+    }
+    hg_inc_[e] = ehg;
+    dt_elem_[e] = hex_characteristic_length(x, y, z, V) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
+  }
+  if (inverted >= 0) {
+    std::ostringstream os;
+    os << "element " << inverted << " inverted (non-positive volume) at t = " << t_ << " s";
+    throw std::runtime_error(os.str());
+  }
+  // Nodal sums in a fixed order (the corners are sorted by element and corner).
+  const int n = mesh.num_nodes();
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    double sx = 0, sy = 0, sz = 0;
+    for (int k = nc_.start[i]; k < nc_.start[i + 1]; ++k) {
+      const double* c = &corner_[3 * nc_.corner[k]];
+      sx += c[0];
+      sy += c[1];
+      sz += c[2];
+    }
+    fx_[i] = sx;
+    fy_[i] = sy;
+    fz_[i] = sz;
+  }
+}
+
+}  // namespace drawbend::fe

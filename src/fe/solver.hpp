@@ -1,0 +1,122 @@
+#pragma once
+// The explicit solver: central differences with lumped mass.
+//
+// One cycle (time t_n -> t_n+1), LULESH-style:
+//   1. element loop (OpenMP): gather nodes -> uniform gradient, Jaumann rate,
+//      material update, hourglass -> per-element corner forces;
+//   2. node loop (OpenMP): sum the corners of each node in a fixed order, add
+//      loads and contact forces -> accelerations;
+//   3. velocities at t_n+1/2 (with dynamic-relaxation damping in damped steps),
+//      boundary conditions (their reactions are recorded), positions at t_n+1.
+// Forces are summed in a fixed order, so the result does not depend on the
+// thread count.  Units: mm, N, MPa, s, t/mm^3.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "fe/model.hpp"
+#include "fe/mesh.hpp"
+
+namespace drawbend::fe {
+
+struct Energies {
+  double kinetic = 0, internal = 0, hourglass = 0;
+  double external_work = 0;  ///< work of loads, boundary reactions and tools on the sheet
+  double friction = 0;       ///< frictional dissipation (part of the tools' work)
+  double contact_stored = 0; ///< penalty spring energy now stored (part of the tools' work)
+  double damping = 0;        ///< energy removed by dynamic-relaxation damping
+  /// |KE + IE + HG + damping - W| relative to the largest term, where W is the
+  /// work done on the sheet by loads, boundary reactions and contact forces.
+  double balance_error() const;
+};
+
+/// Per contact node, the state the contact maps report.
+struct ContactNode {
+  int node = -1;
+  double area = 0;          ///< tributary area [mm^2]
+  double normal_force = 0;  ///< [N]
+  double pressure = 0;      ///< [MPa]
+  double depth = 0;         ///< penetration [mm]
+  Vec3 normal{0, 0, 0}, ft{0, 0, 0};  ///< tool normal; tangential force on the sheet [N]
+  double slip_speed = 0;    ///< [mm/s]
+  int surface = -1;         ///< index of the tool surface in contact (-1: none)
+  Vec3 foot{0, 0, 0};       ///< closest point on the tool [mm]
+};
+
+struct Progress {
+  int step_index;
+  const Step* step;
+  double time, step_time, dt;
+  long cycle;
+};
+
+class Solver {
+ public:
+  explicit Solver(Model& model);
+
+  /// Run all steps.  on_cycle is called every cycle (cheap checks); outputs
+  /// are the caller's business through the accessors.
+  void run(const std::function<void(const Progress&)>& on_cycle = {});
+  /// Run one step of the model (index into model.steps).
+  void run_step(int index, const std::function<void(const Progress&)>& on_cycle = {});
+
+  /// Initial conditions (before run): nodal velocity [mm/s], element stress [MPa].
+  void set_velocity(int node, const Vec3& v);
+  void set_stress(int element, const double s[6]);
+
+  // State (structure of arrays).
+  const Model& model() const { return m_; }
+  double time() const { return t_; }
+  double dt() const { return dt_; }
+  long cycles() const { return cycle_; }
+  const std::vector<double>& x() const { return x_; }
+  const std::vector<double>& y() const { return y_; }
+  const std::vector<double>& z() const { return z_; }
+  const std::vector<double>& vx() const { return vx_; }
+  const std::vector<double>& vy() const { return vy_; }
+  const std::vector<double>& vz() const { return vz_; }
+  const std::vector<double>& mass() const { return mass_; }
+  const std::vector<double>& stress() const { return sig_; }        ///< 6 per element (Voigt)
+  const std::vector<double>& material_state() const { return state_; }
+  double plastic_strain(int e) const;
+  const Energies& energies() const { return en_; }
+  double added_mass() const { return added_mass_; }   ///< mass added by scaling [t]
+  double physical_mass() const { return phys_mass_; }
+  /// Reaction force [N] of the boundary conditions on node set `set` in the
+  /// last cycle (sum over the set; x, y, z).
+  Vec3 reaction(const std::string& set) const;
+  /// Reaction force [N] at one node in the last cycle.
+  Vec3 node_reaction(int node) const { return {rx_[node], ry_[node], rz_[node]}; }
+  /// Sum of the loads applied on `set` in the last cycle [N].
+  Vec3 applied(const std::string& set) const;
+  /// Contact force of the sheet on tool `tool` in the last cycle [N] (x, y, z).
+  Vec3 tool_force(const std::string& tool) const;
+  Vec3 tool_offset(const std::string& tool) const;  ///< displacement of a tool [mm]
+  const std::vector<ContactNode>& contact_nodes(int pair) const { return contact_[pair]; }
+  int num_contact_pairs() const { return static_cast<int>(contact_.size()); }
+  double stable_dt() const;  ///< current critical step times the safety factor [s]
+  double max_penetration() const;
+
+ private:
+  void element_forces(double dt);
+  void contact_forces(double dt, bool friction);
+  void compute_dt();
+
+  Model& m_;
+  NodeCorners nc_;
+  std::vector<double> x_, y_, z_, vx_, vy_, vz_, fx_, fy_, fz_, mass_;  // nodes
+  std::vector<double> sig_, state_, hgq_, corner_, elem_mass_factor_, dt_elem_, ie_inc_, hg_inc_;  // elements
+  std::vector<Vec3> tool_offset_, tool_vel_, tool_force_;
+  std::vector<std::vector<ContactNode>> contact_;
+  std::vector<std::vector<double>> contact_stiffness_len_;  // per pair, per node: adjacent element size V/A [mm]
+  std::vector<std::vector<double>> friction_state_;
+  std::vector<std::vector<Vec3>> contact_force_;  // per pair, per contact node, force on sheet
+  std::vector<std::pair<std::string, Vec3>> reactions_, applied_;
+  std::vector<double> energy_scratch_[2];
+  std::vector<double> rx_, ry_, rz_;  // per-node reactions of the last cycle
+  Energies en_;
+  double t_ = 0, dt_ = 0, dt0_ = 0, added_mass_ = 0, phys_mass_ = 0, wave_speed_ = 0;
+  long cycle_ = 0;
+};
+
+}  // namespace drawbend::fe

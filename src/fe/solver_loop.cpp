@@ -1,0 +1,260 @@
+// The time loop of the explicit solver: loads, contact, velocity update with
+// dynamic-relaxation damping, boundary conditions and their reactions, energy
+// bookkeeping, tool motion.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "fe/solver.hpp"
+
+namespace drawbend::fe {
+
+namespace {
+int tool_index(const Model& m, const std::string& name) {
+  for (std::size_t i = 0; i < m.tools.size(); ++i)
+    if (m.tools[i].name == name) return static_cast<int>(i);
+  throw std::invalid_argument("no tool named '" + name + "'");
+}
+}  // namespace
+
+void Solver::run(const std::function<void(const Progress&)>& on_cycle) {
+  for (int s = 0; s < static_cast<int>(m_.steps.size()); ++s) run_step(s, on_cycle);
+}
+
+void Solver::run_step(int index, const std::function<void(const Progress&)>& on_cycle) {
+  const Step& step = m_.steps.at(index);
+  const Mesh& mesh = m_.mesh;
+  const int n = mesh.num_nodes();
+  // Tool drives for this step.
+  std::vector<Tool::Drive> drive;
+  for (const auto& t : m_.tools) drive.push_back(t.drive);
+  for (const auto& [name, d] : step.tool_drive) drive[tool_index(m_, name)] = d;
+  // Per-node load weights (mass-proportional) for each force load.
+  std::vector<std::vector<double>> load_w;
+  for (const auto& fl : step.forces) {
+    const auto& set = mesh.node_set(fl.set);
+    double mt = 0;
+    for (int i : set) mt += mass_[i];
+    std::vector<double> w;
+    for (int i : set) w.push_back(mass_[i] / mt);
+    load_w.push_back(std::move(w));
+  }
+  std::vector<double> v0x(n), v0y(n), v0z(n), ex(n), ey(n), ez(n);
+  rx_.assign(n, 0.0);
+  ry_.assign(n, 0.0);
+  rz_.assign(n, 0.0);
+  std::vector<double>& rx = rx_;
+  std::vector<double>& ry = ry_;
+  std::vector<double>& rz = rz_;
+  const double t_start = t_;
+  double step_time = 0.0;
+  while (step_time < step.duration * (1 - 1e-12)) {
+    const double dt = std::min(dt_, step.duration - step_time);
+    if (dt < 1e-3 * dt0_) {
+      if (step.duration - step_time > 1e-3 * dt0_) {
+        std::ostringstream os;
+        os << "time step collapsed to " << dt << " s (initial " << dt0_ << " s) at t = " << t_ << " s";
+        throw std::runtime_error(os.str());
+      }
+      break;  // only round-off left in this step
+    }
+    // 1-2. Internal forces (element loop + fixed-order nodal sums).
+    element_forces(dt);
+    // External loads at t_n.
+    std::fill(ex.begin(), ex.end(), 0.0);
+    std::fill(ey.begin(), ey.end(), 0.0);
+    std::fill(ez.begin(), ez.end(), 0.0);
+    applied_.clear();
+    for (std::size_t l = 0; l < step.forces.size(); ++l) {
+      const auto& fl = step.forces[l];
+      const auto& set = mesh.node_set(fl.set);
+      const double F = fl.magnitude(t_ - t_start);
+      for (std::size_t k = 0; k < set.size(); ++k) {
+        const int i = set[k];
+        ex[i] += F * load_w[l][k] * fl.direction[0];
+        ey[i] += F * load_w[l][k] * fl.direction[1];
+        ez[i] += F * load_w[l][k] * fl.direction[2];
+      }
+      applied_.push_back({fl.set, {F * fl.direction[0], F * fl.direction[1], F * fl.direction[2]}});
+    }
+    if (m_.gravity != Vec3{0, 0, 0})
+      for (int i = 0; i < n; ++i) {
+        ex[i] += mass_[i] * m_.gravity[0];
+        ey[i] += mass_[i] * m_.gravity[1];
+        ez[i] += mass_[i] * m_.gravity[2];
+      }
+    // Contact forces (added to ex, ey, ez through contact_force_).
+    contact_forces(dt, step.friction);
+    for (std::size_t p = 0; p < contact_.size(); ++p)
+      for (std::size_t k = 0; k < contact_[p].size(); ++k) {
+        const int i = contact_[p][k].node;
+        ex[i] += contact_force_[p][k][0];
+        ey[i] += contact_force_[p][k][1];
+        ez[i] += contact_force_[p][k][2];
+      }
+    // 3. Velocities at t_n+1/2, with damping in dynamic-relaxation steps.
+    const double c = step.damping;
+    const double a1 = (1 - 0.5 * c * dt) / (1 + 0.5 * c * dt), a2 = dt / (1 + 0.5 * c * dt);
+    double damp = 0;
+    for (int i = 0; i < n; ++i) {
+      v0x[i] = vx_[i];
+      v0y[i] = vy_[i];
+      v0z[i] = vz_[i];
+      const double im = 1.0 / mass_[i];
+      vx_[i] = a1 * vx_[i] + a2 * (fx_[i] + ex[i]) * im;
+      vy_[i] = a1 * vy_[i] + a2 * (fy_[i] + ey[i]) * im;
+      vz_[i] = a1 * vz_[i] + a2 * (fz_[i] + ez[i]) * im;
+      if (!(std::isfinite(vx_[i]) && std::isfinite(vy_[i]) && std::isfinite(vz_[i]))) {
+        std::ostringstream os;
+        os << "non-finite velocity at node " << i << " at t = " << t_ << " s (diverged?)";
+        throw std::runtime_error(os.str());
+      }
+      if (c > 0) {
+        // Damping force -c m v_mid does work -c m |v_mid|^2 dt.
+        const double mx = 0.5 * (vx_[i] + v0x[i]), my = 0.5 * (vy_[i] + v0y[i]), mz = 0.5 * (vz_[i] + v0z[i]);
+        damp += c * mass_[i] * (mx * mx + my * my + mz * mz) * dt;
+      }
+    }
+    en_.damping += damp;
+    // Boundary conditions; a reaction is the force that enforces them.
+    std::fill(rx.begin(), rx.end(), 0.0);
+    std::fill(ry.begin(), ry.end(), 0.0);
+    std::fill(rz.begin(), rz.end(), 0.0);
+    reactions_.clear();
+    const double th = t_ - t_start + 0.5 * dt;  // mid-interval step time
+    auto enforce = [&](const std::string& set_name, auto&& set_velocity) {
+      Vec3 R{0, 0, 0};
+      for (int i : mesh.node_set(set_name)) {
+        const double bx = vx_[i], by = vy_[i], bz = vz_[i];
+        set_velocity(i);
+        const double f[3] = {mass_[i] * (vx_[i] - bx) / dt, mass_[i] * (vy_[i] - by) / dt,
+                             mass_[i] * (vz_[i] - bz) / dt};
+        rx[i] += f[0];
+        ry[i] += f[1];
+        rz[i] += f[2];
+        R[0] += f[0];
+        R[1] += f[1];
+        R[2] += f[2];
+      }
+      bool merged = false;
+      for (auto& [name, r] : reactions_)
+        if (name == set_name) {
+          for (int k = 0; k < 3; ++k) r[k] += R[k];
+          merged = true;
+        }
+      if (!merged) reactions_.push_back({set_name, R});
+    };
+    for (const auto& rb : step.rotations) {
+      const double w = rb.omega(th);
+      enforce(rb.set, [&](int i) {
+        // Rotate about the axis at the mid-interval position.
+        const double px = x_[i] + 0.5 * dt * vx_[i] - rb.centre[0], py = y_[i] + 0.5 * dt * vy_[i] - rb.centre[1],
+                     pz = z_[i] + 0.5 * dt * vz_[i] - rb.centre[2];
+        vx_[i] = w * (rb.axis[1] * pz - rb.axis[2] * py);
+        vy_[i] = w * (rb.axis[2] * px - rb.axis[0] * pz);
+        vz_[i] = w * (rb.axis[0] * py - rb.axis[1] * px);
+      });
+    }
+    for (const auto& ab : step.affine) {
+      const double sc = ab.scale(th);
+      enforce(ab.set, [&](int i) {
+        const double d[3] = {mesh.x[i] - ab.centre[0], mesh.y[i] - ab.centre[1], mesh.z[i] - ab.centre[2]};
+        vx_[i] = sc * (ab.G[0][0] * d[0] + ab.G[0][1] * d[1] + ab.G[0][2] * d[2]);
+        vy_[i] = sc * (ab.G[1][0] * d[0] + ab.G[1][1] * d[1] + ab.G[1][2] * d[2]);
+        vz_[i] = sc * (ab.G[2][0] * d[0] + ab.G[2][1] * d[1] + ab.G[2][2] * d[2]);
+      });
+    }
+    for (const auto& vb : step.velocities) {
+      const double sp = vb.speed(th);
+      const auto& d = vb.direction;
+      enforce(vb.set, [&](int i) {
+        const double along = vx_[i] * d[0] + vy_[i] * d[1] + vz_[i] * d[2];
+        vx_[i] += (sp - along) * d[0];
+        vy_[i] += (sp - along) * d[1];
+        vz_[i] += (sp - along) * d[2];
+      });
+    }
+    for (const auto& fb : step.fixed)
+      enforce(fb.set, [&](int i) {
+        if (fb.dof[0]) vx_[i] = 0;
+        if (fb.dof[1]) vy_[i] = 0;
+        if (fb.dof[2]) vz_[i] = 0;
+      });
+    // Work of loads, contact and reactions over the interval, kinetic energy.
+    double work = 0, ke = 0;
+    for (int i = 0; i < n; ++i) {
+      const double mx = 0.5 * (vx_[i] + v0x[i]), my = 0.5 * (vy_[i] + v0y[i]), mz = 0.5 * (vz_[i] + v0z[i]);
+      work += ((ex[i] + rx[i]) * mx + (ey[i] + ry[i]) * my + (ez[i] + rz[i]) * mz) * dt;
+      ke += 0.5 * mass_[i] * (vx_[i] * vx_[i] + vy_[i] * vy_[i] + vz_[i] * vz_[i]);
+    }
+    en_.external_work += work;
+    en_.kinetic = ke;
+    double ie = 0, eh = 0;
+    for (int e = 0; e < mesh.num_elements(); ++e) {
+      ie += ie_inc_[e];
+      eh += hg_inc_[e];
+    }
+    en_.internal += ie;
+    en_.hourglass += eh;
+    // Positions at t_n+1.
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      x_[i] += dt * vx_[i];
+      y_[i] += dt * vy_[i];
+      z_[i] += dt * vz_[i];
+    }
+    // Tools.
+    for (std::size_t k = 0; k < m_.tools.size(); ++k) {
+      const Tool& tool = m_.tools[k];
+      const auto& d = tool.direction;
+      if (drive[k] == Tool::Drive::velocity) {
+        const double sp = tool.speed(th);
+        tool_vel_[k] = {sp * d[0], sp * d[1], sp * d[2]};
+      } else if (drive[k] == Tool::Drive::force) {
+        // Rigid body along `direction`: m a = F(t) - (force of the sheet on the tool) . d
+        const double Fs = -(tool_force_[k][0] * d[0] + tool_force_[k][1] * d[1] + tool_force_[k][2] * d[2]);
+        const double a = (tool.force(t_ - t_start) + Fs) / tool.mass;
+        const double along = tool_vel_[k][0] * d[0] + tool_vel_[k][1] * d[1] + tool_vel_[k][2] * d[2];
+        const double vnew = (along * a1 + a * a2);
+        tool_vel_[k] = {vnew * d[0], vnew * d[1], vnew * d[2]};
+      } else {
+        tool_vel_[k] = {0, 0, 0};
+      }
+      for (int j = 0; j < 3; ++j) tool_offset_[k][j] += dt * tool_vel_[k][j];
+    }
+    t_ += dt;
+    step_time += dt;
+    ++cycle_;
+    double dtmin = 1e30;
+    for (double d : dt_elem_) dtmin = std::min(dtmin, d);
+    dt_ = m_.dt_safety * dtmin;
+    if (on_cycle) on_cycle({index, &step, t_, step_time, dt, cycle_});
+  }
+}
+
+Vec3 Solver::reaction(const std::string& set) const {
+  for (const auto& [name, r] : reactions_)
+    if (name == set) return r;
+  return {0, 0, 0};
+}
+
+Vec3 Solver::applied(const std::string& set) const {
+  Vec3 s{0, 0, 0};
+  for (const auto& [name, f] : applied_)
+    if (name == set)
+      for (int k = 0; k < 3; ++k) s[k] += f[k];
+  return s;
+}
+
+Vec3 Solver::tool_force(const std::string& tool) const { return tool_force_[tool_index(m_, tool)]; }
+Vec3 Solver::tool_offset(const std::string& tool) const { return tool_offset_[tool_index(m_, tool)]; }
+
+double Solver::max_penetration() const {
+  double d = 0;
+  for (const auto& pair : contact_)
+    for (const auto& c : pair) d = std::max(d, c.depth);
+  return d;
+}
+
+}  // namespace drawbend::fe

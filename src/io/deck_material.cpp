@@ -1,0 +1,84 @@
+#include "io/deck_material.hpp"
+
+#include <filesystem>
+#include <set>
+
+#include "core/csv.hpp"
+#include "material/j2_isotropic.hpp"
+#include "material/linear_elastic.hpp"
+
+namespace drawbend::io {
+
+namespace {
+std::string at(const toml::node& n, const std::string& deck) { return deck + ":" + std::to_string(n.source().begin.line); }
+
+void check_keys(const toml::table& t, const std::string& deck, const std::string& what, const std::set<std::string>& keys) {
+  for (const auto& [k, v] : t)
+    if (!keys.count(std::string(k.str()))) {
+      std::string list;
+      for (const auto& a : keys) list += (list.empty() ? "" : ", ") + a;
+      throw InputError(at(v, deck) + ": " + what + "." + std::string(k.str()) + ": unknown key (expected one of: " + list + ")");
+    }
+}
+
+double positive(const toml::table& t, const std::string& key, const std::string& deck, const std::string& what) {
+  const auto* n = t.get(key);
+  if (!n) throw InputError(at(t, deck) + ": " + what + ": missing required key '" + key + "'");
+  const auto v = n->value<double>();
+  if (!v) throw InputError(at(*n, deck) + ": " + what + "." + key + ": expected a number");
+  if (!(*v > 0)) throw InputError(at(*n, deck) + ": " + what + "." + key + ": must be > 0, found " + fmt(*v));
+  return *v;
+}
+}  // namespace
+
+std::shared_ptr<const material::Material> make_material(const toml::table& t, const std::string& deck,
+                                                        const std::string& dir) {
+  const auto* type = t.get("type");
+  const std::string ty = type && type->value<std::string>() ? *type->value<std::string>() : "";
+  if (ty != "elastic" && ty != "j2")
+    throw InputError(at(type ? *type : static_cast<const toml::node&>(t), deck) +
+                     ": material.type: expected \"elastic\" or \"j2\"");
+  const double E = positive(t, "E", deck, "material"), rho = positive(t, "density", deck, "material");
+  const auto* nun = t.get("nu");
+  if (!nun || !nun->value<double>()) throw InputError(at(t, deck) + ": material: missing number 'nu'");
+  const double nu = *nun->value<double>();
+  if (!(nu > -1.0 && nu < 0.5)) throw InputError(at(*nun, deck) + ": material.nu: must lie in (-1, 0.5), found " + fmt(nu));
+  if (ty == "elastic") {
+    check_keys(t, deck, "material", {"type", "E", "nu", "density"});
+    return std::make_shared<material::LinearElastic>(E, nu, rho);
+  }
+  check_keys(t, deck, "material", {"type", "E", "nu", "density", "hardening", "yield", "tangent"});
+  if (const auto* h = t.get("hardening")) {
+    const auto file = h->value<std::string>();
+    if (!file) throw InputError(at(*h, deck) + ": material.hardening: expected a file name");
+    std::filesystem::path p(*file);
+    if (p.is_relative()) p = std::filesystem::path(dir) / p;
+    return std::make_shared<material::J2Isotropic>(E, nu, rho, material::HardeningCurve::load(p.string()));
+  }
+  const double sy = positive(t, "yield", deck, "material");
+  double H = 0;
+  if (const auto* tn = t.get("tangent")) {
+    if (!tn->value<double>() || *tn->value<double>() < 0)
+      throw InputError(at(*tn, deck) + ": material.tangent: expected a hardening modulus >= 0 MPa");
+    H = *tn->value<double>();
+  }
+  // Linear hardening as a two-point table (constant extrapolation of the slope).
+  return std::make_shared<material::J2Isotropic>(E, nu, rho,
+                                                 material::HardeningCurve({0.0, 1.0}, {sy, sy + H}, at(t, deck)));
+}
+
+std::shared_ptr<friction::FrictionLaw> make_friction(const toml::table& t, const std::string& deck) {
+  const auto* law = t.get("law");
+  const std::string l = law && law->value<std::string>() ? *law->value<std::string>() : "";
+  if (l == "coulomb") {
+    check_keys(t, deck, "contact.friction", {"law", "mu"});
+    const auto* mu = t.get("mu");
+    if (!mu || !mu->value<double>()) throw InputError(at(t, deck) + ": contact.friction: missing number 'mu'");
+    if (*mu->value<double>() < 0) throw InputError(at(*mu, deck) + ": contact.friction.mu: must be >= 0");
+    return std::make_shared<friction::Coulomb>(*mu->value<double>());
+  }
+  throw InputError(at(law ? *law : static_cast<const toml::node&>(t), deck) +
+                   ": contact.friction.law: expected \"coulomb\" (found \"" + l + "\")");
+}
+
+}  // namespace drawbend::io

@@ -1,0 +1,24 @@
+#pragma once
+// Deck sections that build objects behind interfaces: the material and the
+// friction law.  Kept apart from deck.cpp so that new materials and laws are
+// added here only.
+#include <memory>
+#include <string>
+
+#include <toml++/toml.h>
+
+#include "friction/friction_law.hpp"
+#include "material/material.hpp"
+
+namespace drawbend::io {
+
+/// [material]: type = "elastic" | "j2"; E [MPa], nu, density [t/mm^3];
+/// j2: hardening = "path.csv" (plastic_strain,true_stress_MPa; relative to the
+/// deck's directory) or yield [MPa] with optional tangent [MPa] (linear hardening).
+std::shared_ptr<const material::Material> make_material(const toml::table& t, const std::string& deck,
+                                                        const std::string& deck_dir);
+
+/// friction = { law = "coulomb", mu = 0.1 }
+std::shared_ptr<friction::FrictionLaw> make_friction(const toml::table& t, const std::string& deck);
+
+}  // namespace drawbend::io

@@ -1,0 +1,205 @@
+#include "io/run_case.hpp"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "core/csv.hpp"
+#include "io/vtu.hpp"
+
+namespace drawbend::io {
+
+namespace {
+
+double signal(const fe::Solver& s, const HistorySignal& h) {
+  fe::Vec3 v{0, 0, 0};
+  if (h.kind == "reaction") v = s.reaction(h.target);
+  else if (h.kind == "applied") v = s.applied(h.target);
+  else if (h.kind == "tool_force") v = s.tool_force(h.target);
+  else if (h.kind == "tool_offset") v = s.tool_offset(h.target);
+  return v[h.component];
+}
+
+}  // namespace
+
+void write_contact_maps(const fe::Solver& s, const std::string& prefix) {
+  const fe::Model& m = s.model();
+  for (int p = 0; p < s.num_contact_pairs(); ++p) {
+    const auto& cp = m.contacts[p];
+    const fe::Tool* tool = nullptr;
+    for (const auto& t : m.tools)
+      if (t.name == cp.tool) tool = &t;
+    const fe::Vec3 off = s.tool_offset(cp.tool);
+    CsvWriter w({"node", "x_mm", "y_mm", "z_mm", "surface", "u_tool", "v_tool_mm", "pressure_MPa", "area_mm2",
+                 "normal_force_N", "tangential_force_N", "slip_speed_mm_s", "penetration_mm"});
+    w.comment("contact map: faces '" + cp.faces + "' on tool '" + cp.tool + "' at t = " + fmt(s.time()) + " s");
+    w.comment("u_tool: angle about the surface axis [deg] (cylinder, torus) or in-plane coordinate [mm] (plane); "
+              "v_tool: position along the axis [mm] (cylinder, torus) or second in-plane coordinate (plane)");
+    for (const auto& c : s.contact_nodes(p)) {
+      const int i = c.node;
+      double u = 0, v = 0;
+      if (c.surface >= 0) {
+        const auto& sf = tool->surfaces[c.surface];
+        const double d[3] = {c.foot[0] - sf.origin[0] - off[0], c.foot[1] - sf.origin[1] - off[1],
+                             c.foot[2] - sf.origin[2] - off[2]};
+        const auto& a = sf.axis;
+        const double along = d[0] * a[0] + d[1] * a[1] + d[2] * a[2];
+        // A reference direction perpendicular to the axis.
+        fe::Vec3 r1 = std::abs(a[2]) < 0.9 ? fe::Vec3{-a[1], a[0], 0} : fe::Vec3{0, -a[2], a[1]};
+        const double rn = std::sqrt(r1[0] * r1[0] + r1[1] * r1[1] + r1[2] * r1[2]);
+        for (double& q : r1) q /= rn;
+        const fe::Vec3 r2{a[1] * r1[2] - a[2] * r1[1], a[2] * r1[0] - a[0] * r1[2], a[0] * r1[1] - a[1] * r1[0]};
+        const double p1 = d[0] * r1[0] + d[1] * r1[1] + d[2] * r1[2], p2 = d[0] * r2[0] + d[1] * r2[1] + d[2] * r2[2];
+        if (sf.kind == contact::Surface::Kind::plane) {
+          u = p1;
+          v = p2;
+        } else {
+          u = std::atan2(p2, p1) * 180.0 / M_PI;
+          v = along;
+        }
+      }
+      const double ft = std::sqrt(c.ft[0] * c.ft[0] + c.ft[1] * c.ft[1] + c.ft[2] * c.ft[2]);
+      w.row({std::to_string(i), fmt(s.x()[i], 9), fmt(s.y()[i], 9), fmt(s.z()[i], 9), std::to_string(c.surface),
+             fmt(u, 9), fmt(v, 9), fmt(c.pressure, 8), fmt(c.area, 8), fmt(c.normal_force, 8), fmt(ft, 8),
+             fmt(c.slip_speed, 8), fmt(c.depth, 6)});
+    }
+    w.save(prefix + "_" + std::to_string(p) + ".csv");
+  }
+}
+
+void write_fields(const fe::Solver& s, const std::string& path) {
+  const fe::Model& m = s.model();
+  const int n = m.mesh.num_nodes(), ne = m.mesh.num_elements();
+  std::vector<double> disp(3 * n), vel(3 * n), pres(n, 0.0), vm(ne), ep(ne);
+  for (int i = 0; i < n; ++i) {
+    disp[3 * i] = s.x()[i] - m.mesh.x[i];
+    disp[3 * i + 1] = s.y()[i] - m.mesh.y[i];
+    disp[3 * i + 2] = s.z()[i] - m.mesh.z[i];
+    vel[3 * i] = s.vx()[i];
+    vel[3 * i + 1] = s.vy()[i];
+    vel[3 * i + 2] = s.vz()[i];
+  }
+  for (int p = 0; p < s.num_contact_pairs(); ++p)
+    for (const auto& c : s.contact_nodes(p)) pres[c.node] = std::max(pres[c.node], c.pressure);
+  const auto& sg = s.stress();
+  for (int e = 0; e < ne; ++e) {
+    const double* t = &sg[6 * e];
+    vm[e] = std::sqrt(0.5 * ((t[0] - t[1]) * (t[0] - t[1]) + (t[1] - t[2]) * (t[1] - t[2]) + (t[2] - t[0]) * (t[2] - t[0])) +
+                      3 * (t[3] * t[3] + t[4] * t[4] + t[5] * t[5]));
+    ep[e] = s.plastic_strain(e);
+  }
+  std::vector<int> hex(8 * ne);
+  for (int e = 0; e < ne; ++e)
+    for (int a = 0; a < 8; ++a) hex[8 * e + a] = m.mesh.hex[e][a];
+  VtuMesh vm_{static_cast<std::size_t>(n), s.x().data(), s.y().data(), s.z().data(), static_cast<std::size_t>(ne),
+              hex.data()};
+  write_vtu(path, vm_,
+            {{"displacement_mm", 3, disp.data()}, {"velocity_mm_s", 3, vel.data()}, {"contact_pressure_MPa", 1, pres.data()}},
+            {{"stress_MPa", 6, sg.data()}, {"von_mises_MPa", 1, vm.data()}, {"plastic_strain", 1, ep.data()}}, s.time());
+}
+
+RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
+  namespace fs = std::filesystem;
+  fs::create_directories(opt.out_dir);
+  const int threads = opt.threads > 0 ? opt.threads : deck.threads;
+  if (threads > 0) omp_set_num_threads(threads);
+  const auto wall0 = std::chrono::steady_clock::now();
+  fe::Solver solver(deck.model);
+  const fe::Model& m = deck.model;
+  double total = 0;
+  for (const auto& s : m.steps) total += s.duration;
+  log << "case " << m.name << ": " << m.mesh.num_elements() << " elements, " << m.mesh.num_nodes() << " nodes, "
+      << m.steps.size() << " steps, " << total << " s simulated; dt = " << solver.stable_dt() << " s; added mass "
+      << fmt(100 * solver.added_mass() / solver.physical_mass(), 4) << " % (units: mm, N, MPa, s)\n";
+  // History file.
+  std::vector<std::string> header{"time_s", "step", "dt_s", "kinetic_mJ", "internal_mJ", "hourglass_mJ",
+                                  "external_work_mJ", "friction_mJ", "damping_mJ", "balance_error"};
+  for (const auto& h : deck.output.history) header.push_back(h.name);
+  CsvWriter hist(header);
+  hist.comment("time histories of " + deck.path + " (energies in mJ = N mm)");
+  std::vector<std::pair<double, std::string>> snapshots;
+  int snap = 0;
+  auto snapshot = [&]() {
+    const std::string name = "fields_" + std::to_string(snap) + ".vtu";
+    write_fields(solver, (fs::path(opt.out_dir) / name).string());
+    write_contact_maps(solver, (fs::path(opt.out_dir) / ("contact_" + std::to_string(snap))).string());
+    snapshots.push_back({solver.time(), name});
+    ++snap;
+  };
+  snapshot();
+  double next_hist = 0, next_field = 0, last_print = -1;
+  int current_step = -1;
+  auto wall_last = std::chrono::steady_clock::now();
+  solver.run([&](const fe::Progress& p) {
+    const double interval =
+        deck.output.history_interval > 0 ? deck.output.history_interval : p.step->duration / 200.0;
+    if (p.step_index != current_step) {
+      current_step = p.step_index;
+      next_hist = p.time - p.step_time;
+      next_field = next_hist + p.step->duration / std::max(1, deck.output.fields_per_step);
+    }
+    const auto& e = solver.energies();
+    if (p.time >= next_hist - 1e-15) {
+      std::vector<std::string> row{fmt(p.time, 10), p.step->name, fmt(p.dt, 6), fmt(e.kinetic, 8), fmt(e.internal, 8),
+                                   fmt(e.hourglass, 8), fmt(e.external_work, 8), fmt(e.friction, 8),
+                                   fmt(e.damping, 8), fmt(e.balance_error(), 4)};
+      for (const auto& h : deck.output.history) row.push_back(fmt(signal(solver, h), 8));
+      hist.row(row);
+      next_hist += interval;
+    }
+    if (p.step_time >= p.step->duration * (1 - 1e-12) || p.time >= next_field - 1e-15) {
+      snapshot();
+      next_field += p.step->duration / std::max(1, deck.output.fields_per_step);
+    }
+    const auto now = std::chrono::steady_clock::now();
+    if (!opt.quiet && std::chrono::duration<double>(now - wall_last).count() > 1.0) {
+      wall_last = now;
+      const double el = std::chrono::duration<double>(now - wall0).count();
+      const double frac = p.time / total;
+      log << "\r  " << std::fixed << std::setprecision(1) << 100 * frac << " %  t = " << std::scientific
+          << std::setprecision(3) << p.time << " s  dt = " << p.dt << " s  step " << p.step->name << "  left ~"
+          << std::fixed << std::setprecision(0) << el * (1 - frac) / std::max(frac, 1e-9) << " s   " << std::flush;
+      last_print = p.time;
+    }
+  });
+  if (last_print >= 0) log << "\n";
+  hist.save((fs::path(opt.out_dir) / "history.csv").string());
+  write_pvd((fs::path(opt.out_dir) / "fields.pvd").string(), snapshots);
+  RunSummary r;
+  const auto& e = solver.energies();
+  r.time = solver.time();
+  r.cycles = solver.cycles();
+  r.energy_balance_error = e.balance_error();
+  r.hourglass_ratio = e.internal > 0 ? e.hourglass / e.internal : 0;
+  r.kinetic_ratio = e.internal > 0 ? e.kinetic / e.internal : 0;
+  r.added_mass_ratio = solver.added_mass() / solver.physical_mass();
+  r.max_penetration = solver.max_penetration();
+  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  CsvWriter sum({"quantity", "value", "unit"});
+  sum.comment("end-of-run summary of " + deck.path);
+  sum.row({"time", fmt(r.time), "s"});
+  sum.row({"cycles", std::to_string(r.cycles), "-"});
+  sum.row({"energy_balance_error", fmt(r.energy_balance_error, 4), "-"});
+  sum.row({"hourglass_over_internal", fmt(r.hourglass_ratio, 4), "-"});
+  sum.row({"kinetic_over_internal", fmt(r.kinetic_ratio, 4), "-"});
+  sum.row({"added_mass_ratio", fmt(r.added_mass_ratio, 4), "-"});
+  sum.row({"max_penetration", fmt(r.max_penetration, 4), "mm"});
+  sum.row({"wall_time", fmt(r.wall_seconds, 4), "s"});
+  sum.save((fs::path(opt.out_dir) / "summary.csv").string());
+  log << "summary: " << r.cycles << " cycles in " << fmt(r.wall_seconds, 3) << " s wall\n"
+      << "  energy: kinetic " << fmt(e.kinetic, 5) << " mJ, internal " << fmt(e.internal, 5) << " mJ, hourglass "
+      << fmt(e.hourglass, 5) << " mJ, external work " << fmt(e.external_work, 5) << " mJ, damping " << fmt(e.damping, 5)
+      << " mJ, friction " << fmt(e.friction, 5) << " mJ\n"
+      << "  energy balance error " << fmt(100 * r.energy_balance_error, 3) << " %; hourglass/internal "
+      << fmt(100 * r.hourglass_ratio, 3) << " %; kinetic/internal " << fmt(100 * r.kinetic_ratio, 3)
+      << " %; added mass " << fmt(100 * r.added_mass_ratio, 3) << " %; max penetration "
+      << fmt(r.max_penetration, 3) << " mm\n";
+  return r;
+}
+
+}  // namespace drawbend::io

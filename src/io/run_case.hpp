@@ -1,0 +1,42 @@
+#pragma once
+// Running a case deck: the solver plus its outputs and the console display.
+//   <out>/history.csv          time, step, energies, dt, and the deck's signals
+//   <out>/contact_<pair>_<k>.csv  contact map per slave node at each snapshot
+//   <out>/fields_<k>.vtu, <out>/fields.pvd   ParaView snapshots
+//   <out>/summary.csv           end-of-run invariants (energy balance, ratios, added mass)
+#include <iosfwd>
+#include <string>
+
+#include "fe/solver.hpp"
+#include "io/deck.hpp"
+
+namespace drawbend::io {
+
+struct RunOptions {
+  std::string out_dir = "out";
+  bool quiet = false;      ///< no progress line
+  int threads = 0;         ///< 0: the deck's or OpenMP's default
+};
+
+struct RunSummary {
+  double time = 0;
+  long cycles = 0;
+  double energy_balance_error = 0;  ///< |KE + IE + HG + damping - W| / largest term
+  double hourglass_ratio = 0;       ///< HG / IE
+  double kinetic_ratio = 0;         ///< KE / IE at the end
+  double added_mass_ratio = 0;      ///< added / physical mass
+  double max_penetration = 0;       ///< [mm]
+  double wall_seconds = 0;
+};
+
+/// Write the contact map of every pair: position in global and tool
+/// coordinates (cylinder/torus: angle about the axis [deg] and axial position;
+/// plane: in-plane coordinates), pressure, area, forces, slip speed.
+void write_contact_maps(const fe::Solver& s, const std::string& prefix);
+/// Write a VTU snapshot: displacement, velocity (points); stress, plastic strain,
+/// von Mises stress (cells); contact pressure (points).
+void write_fields(const fe::Solver& s, const std::string& path);
+
+RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log);
+
+}  // namespace drawbend::io
