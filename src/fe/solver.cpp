@@ -139,7 +139,11 @@ void Solver::compute_dt() {
 
 double Solver::stable_dt() const { return dt_; }
 
-void Solver::element_forces(double dt) {
+void Solver::element_forces() {
+  // The velocities v_n-1/2 act over the previous interval [t_n-1, t_n]: the
+  // strain, spin and hourglass increments use its length (zero before the
+  // first cycle, so initial velocities do not pre-strain the mesh).
+  const double dt_prev = last_dt_;
   const Mesh& mesh = m_.mesh;
   const int ne = mesh.num_elements();
   const material::Material& mat = *m_.material;
@@ -159,18 +163,33 @@ void Solver::element_forces(double dt) {
       v[a][1] = vy_[i];
       v[a][2] = vz_[i];
     }
+    // Strain increment over the last interval on the mid-interval geometry
+    // x_n-1/2 = x_n - dt/2 v_n-1/2: a rigid rotation then gives an exactly skew
+    // velocity gradient (Cayley transform), i.e. no spurious strain.
+    double xm[8], ym[8], zm[8], dvx[8], dvy[8], dvz[8];
+    for (int a = 0; a < 8; ++a) {
+      xm[a] = x[a] - 0.5 * dt_prev * v[a][0];
+      ym[a] = y[a] - 0.5 * dt_prev * v[a][1];
+      zm[a] = z[a] - 0.5 * dt_prev * v[a][2];
+    }
+    volume_derivatives(xm, ym, zm, dvx, dvy, dvz);
+    double vm = 0;
+    for (int a = 0; a < 8; ++a) vm += xm[a] * dvx[a] + ym[a] * dvy[a] + zm[a] * dvz[a];
+    const double ivm = 3.0 / vm;
     HexGeometry g;
-    if (!hex_geometry(x, y, z, g)) {
+    if (!hex_geometry(x, y, z, g) || !(vm > 0)) {
 #pragma omp critical
       inverted = inverted < 0 ? e : std::min(inverted, e);
       continue;
     }
     const double V = g.volume;
-    // Velocity gradient L_ij = sum_a v_ai B_ja.
+    // Velocity gradient L_ij = sum_a v_ai B_ja (mid-interval B).
     double L[3][3] = {{0}};
-    for (int a = 0; a < 8; ++a)
+    for (int a = 0; a < 8; ++a) {
+      const double bm[3] = {dvx[a] * ivm, dvy[a] * ivm, dvz[a] * ivm};
       for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) L[i][j] += v[a][i] * g.B[j][a];
+        for (int j = 0; j < 3; ++j) L[i][j] += v[a][i] * bm[j];
+    }
     // Jaumann rotation of the stress: sigma += dt (W sigma - sigma W).
     double* s = &sig_[6 * e];
     const double w01 = 0.5 * (L[0][1] - L[1][0]), w12 = 0.5 * (L[1][2] - L[2][1]), w20 = 0.5 * (L[2][0] - L[0][2]);
@@ -180,15 +199,15 @@ void Solver::element_forces(double dt) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) WS[i][j] = W[i][0] * S[0][j] + W[i][1] * S[1][j] + W[i][2] * S[2][j];
     // W S - S W = WS + (WS)^T since W is skew and S symmetric.
-    s[0] += dt * 2 * WS[0][0];
-    s[1] += dt * 2 * WS[1][1];
-    s[2] += dt * 2 * WS[2][2];
-    s[3] += dt * (WS[0][1] + WS[1][0]);
-    s[4] += dt * (WS[1][2] + WS[2][1]);
-    s[5] += dt * (WS[2][0] + WS[0][2]);
+    s[0] += dt_prev * 2 * WS[0][0];
+    s[1] += dt_prev * 2 * WS[1][1];
+    s[2] += dt_prev * 2 * WS[2][2];
+    s[3] += dt_prev * (WS[0][1] + WS[1][0]);
+    s[4] += dt_prev * (WS[1][2] + WS[2][1]);
+    s[5] += dt_prev * (WS[2][0] + WS[0][2]);
     // Material update with the strain increment (engineering shear).
-    const double deps[6] = {L[0][0] * dt, L[1][1] * dt, L[2][2] * dt, (L[0][1] + L[1][0]) * dt,
-                            (L[1][2] + L[2][1]) * dt, (L[2][0] + L[0][2]) * dt};
+    const double deps[6] = {L[0][0] * dt_prev, L[1][1] * dt_prev, L[2][2] * dt_prev, (L[0][1] + L[1][0]) * dt_prev,
+                            (L[1][2] + L[2][1]) * dt_prev, (L[2][0] + L[0][2]) * dt_prev};
     double before[6];
     for (int k = 0; k < 6; ++k) before[k] = s[k];
     double* st = ns ? &state_[static_cast<std::size_t>(e) * ns] : nullptr;
@@ -238,7 +257,7 @@ void Solver::element_forces(double dt) {
         if (al == 3) K = E * V * ih2[i] / 9.0;
         else if (kModeCoords[al][0] == i || kModeCoords[al][1] == i) K = E * V * ih2[i] / 3.0;
         else K = G * V * (ih2[kModeCoords[al][0]] + ih2[kModeCoords[al][1]]) / 3.0;
-        Q[3 * al + i] += dt * hg * K / 64.0 * q[al][i];
+        Q[3 * al + i] += dt_prev * hg * K / 64.0 * q[al][i];
       }
     double ehg = 0;
     double* c = &corner_[24 * e];
@@ -249,7 +268,7 @@ void Solver::element_forces(double dt) {
       const double fh[3] = {g.R[0][0] * fl[0] + g.R[0][1] * fl[1] + g.R[0][2] * fl[2],
                             g.R[1][0] * fl[0] + g.R[1][1] * fl[1] + g.R[1][2] * fl[2],
                             g.R[2][0] * fl[0] + g.R[2][1] * fl[1] + g.R[2][2] * fl[2]};
-      ehg += (fh[0] * v[a][0] + fh[1] * v[a][1] + fh[2] * v[a][2]) * dt;
+      ehg += (fh[0] * v[a][0] + fh[1] * v[a][1] + fh[2] * v[a][2]) * dt_prev;
       c[3 * a + 0] = -(f[a][0] + fh[0]);
       c[3 * a + 1] = -(f[a][1] + fh[1]);
       c[3 * a + 2] = -(f[a][2] + fh[2]);

@@ -98,7 +98,7 @@ class Solver {
   double max_penetration() const;
 
  private:
-  void element_forces(double dt);
+  void element_forces();
   void contact_forces(double dt, bool friction);
   void compute_dt();
 
@@ -115,6 +115,7 @@ class Solver {
   std::vector<double> energy_scratch_[2];
   std::vector<double> rx_, ry_, rz_;  // per-node reactions of the last cycle
   Energies en_;
+  double last_dt_ = 0;  // length of the interval that produced the current velocities
   double t_ = 0, dt_ = 0, dt0_ = 0, added_mass_ = 0, phys_mass_ = 0, wave_speed_ = 0;
   long cycle_ = 0;
 };

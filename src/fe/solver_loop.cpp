@@ -60,7 +60,7 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
       break;  // only round-off left in this step
     }
     // 1-2. Internal forces (element loop + fixed-order nodal sums).
-    element_forces(dt);
+    element_forces();
     // External loads at t_n.
     std::fill(ex.begin(), ex.end(), 0.0);
     std::fill(ey.begin(), ey.end(), 0.0);
@@ -146,14 +146,19 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
       if (!merged) reactions_.push_back({set_name, R});
     };
     for (const auto& rb : step.rotations) {
-      const double w = rb.omega(th);
+      // Exact rigid rotation over the interval: x_new = c + Rot(omega dt) (x - c),
+      // v = (x_new - x)/dt, which keeps all distances (Rodrigues' formula).
+      const double th_ = rb.omega(th) * dt, cs = std::cos(th_), sn = std::sin(th_);
+      const auto& k = rb.axis;
       enforce(rb.set, [&](int i) {
-        // Rotate about the axis at the mid-interval position.
-        const double px = x_[i] + 0.5 * dt * vx_[i] - rb.centre[0], py = y_[i] + 0.5 * dt * vy_[i] - rb.centre[1],
-                     pz = z_[i] + 0.5 * dt * vz_[i] - rb.centre[2];
-        vx_[i] = w * (rb.axis[1] * pz - rb.axis[2] * py);
-        vy_[i] = w * (rb.axis[2] * px - rb.axis[0] * pz);
-        vz_[i] = w * (rb.axis[0] * py - rb.axis[1] * px);
+        const double d[3] = {x_[i] - rb.centre[0], y_[i] - rb.centre[1], z_[i] - rb.centre[2]};
+        const double kd = k[0] * d[0] + k[1] * d[1] + k[2] * d[2];
+        const double kxd[3] = {k[1] * d[2] - k[2] * d[1], k[2] * d[0] - k[0] * d[2], k[0] * d[1] - k[1] * d[0]};
+        double r[3];
+        for (int j = 0; j < 3; ++j) r[j] = d[j] * cs + kxd[j] * sn + k[j] * kd * (1 - cs);
+        vx_[i] = (r[0] - d[0]) / dt;
+        vy_[i] = (r[1] - d[1]) / dt;
+        vz_[i] = (r[2] - d[2]) / dt;
       });
     }
     for (const auto& ab : step.affine) {
@@ -224,6 +229,7 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
       for (int j = 0; j < 3; ++j) tool_offset_[k][j] += dt * tool_vel_[k][j];
     }
     t_ += dt;
+    last_dt_ = dt;
     step_time += dt;
     ++cycle_;
     double dtmin = 1e30;
