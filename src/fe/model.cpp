@@ -47,6 +47,7 @@ void Model::validate() const {
     for (const auto& b : s.rotations) {
       mesh.node_set(b.set);
       unit(b.axis, w + " rotation axis");
+      if (b.slide != Vec3{0, 0, 0}) unit(b.slide, w + " rotation slide direction");
       b.omega.validate(w.c_str());
     }
     for (const auto& b : s.affine) {

@@ -37,6 +37,10 @@ struct RotationBC {
   Vec3 centre{0, 0, 0};
   Vec3 axis{0, 0, 1};
   History omega;
+  /// Optional unit direction along which the set (and the centre) slides freely
+  /// as a rigid body, with no net reaction: pure bending of a strip whose other
+  /// end is a symmetry plane.  Zero vector: no sliding.
+  Vec3 slide{0, 0, 0};
 };
 
 /// A velocity field linear in the reference coordinates X:

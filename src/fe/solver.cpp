@@ -10,6 +10,11 @@
 
 namespace drawbend::fe {
 
+namespace {
+constexpr double kTangentFloor = 0.01;
+constexpr double kRelax = 0.01;
+}  // namespace
+
 double Energies::balance_error() const {
   // The contact work on the sheet is part of external_work; friction and the
   // stored penalty energy are diagnostics of how that work splits.
@@ -32,6 +37,7 @@ Solver::Solver(Model& model) : m_(model) {
   state_.assign(static_cast<std::size_t>(ne) * mat.state_size(), 0.0);
   for (int e = 0; e < ne && mat.state_size() > 0; ++e) mat.init_state(&state_[static_cast<std::size_t>(e) * mat.state_size()]);
   hgq_.assign(12 * ne, 0.0);
+  hg_modulus_.assign(3 * ne, mat.youngs_modulus());
   corner_.assign(24 * ne, 0.0);
   ie_inc_.assign(ne, 0.0);
   hg_inc_.assign(ne, 0.0);
@@ -163,33 +169,37 @@ void Solver::element_forces() {
       v[a][1] = vy_[i];
       v[a][2] = vz_[i];
     }
-    // Strain increment over the last interval on the mid-interval geometry
-    // x_n-1/2 = x_n - dt/2 v_n-1/2: a rigid rotation then gives an exactly skew
-    // velocity gradient (Cayley transform), i.e. no spurious strain.
-    double xm[8], ym[8], zm[8], dvx[8], dvy[8], dvz[8];
-    for (int a = 0; a < 8; ++a) {
-      xm[a] = x[a] - 0.5 * dt_prev * v[a][0];
-      ym[a] = y[a] - 0.5 * dt_prev * v[a][1];
-      zm[a] = z[a] - 0.5 * dt_prev * v[a][2];
-    }
-    volume_derivatives(xm, ym, zm, dvx, dvy, dvz);
-    double vm = 0;
-    for (int a = 0; a < 8; ++a) vm += xm[a] * dvx[a] + ym[a] * dvy[a] + zm[a] * dvz[a];
-    const double ivm = 3.0 / vm;
     HexGeometry g;
-    if (!hex_geometry(x, y, z, g) || !(vm > 0)) {
+    if (!hex_geometry(x, y, z, g)) {
 #pragma omp critical
       inverted = inverted < 0 ? e : std::min(inverted, e);
       continue;
     }
     const double V = g.volume;
-    // Velocity gradient L_ij = sum_a v_ai B_ja (mid-interval B).
-    double L[3][3] = {{0}};
-    for (int a = 0; a < 8; ++a) {
-      const double bm[3] = {dvx[a] * ivm, dvy[a] * ivm, dvz[a] * ivm};
+    // Velocity gradient on the current geometry, L_n = sum_a v_a (x) B_a, then
+    // brought to the mid-interval geometry x_n-1/2 = x_n - dt/2 v:
+    //   L_mid = L_n (I - dt/2 L_n)^-1,
+    // exact for homogeneous increments.  For a rigid rotation R it gives the
+    // Cayley transform (R - I)(R + I)^-1 / dt, which is skew: no spurious strain.
+    double Ln[3][3] = {{0}};
+    for (int a = 0; a < 8; ++a)
       for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) L[i][j] += v[a][i] * bm[j];
-    }
+        for (int j = 0; j < 3; ++j) Ln[i][j] += v[a][i] * g.B[j][a];
+    double M[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) M[i][j] = (i == j ? 1.0 : 0.0) - 0.5 * dt_prev * Ln[i][j];
+    const double det = M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+                       M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
+    const double id = 1.0 / det;
+    const double Mi[3][3] = {{(M[1][1] * M[2][2] - M[1][2] * M[2][1]) * id, (M[0][2] * M[2][1] - M[0][1] * M[2][2]) * id,
+                              (M[0][1] * M[1][2] - M[0][2] * M[1][1]) * id},
+                             {(M[1][2] * M[2][0] - M[1][0] * M[2][2]) * id, (M[0][0] * M[2][2] - M[0][2] * M[2][0]) * id,
+                              (M[0][2] * M[1][0] - M[0][0] * M[1][2]) * id},
+                             {(M[1][0] * M[2][1] - M[1][1] * M[2][0]) * id, (M[0][1] * M[2][0] - M[0][0] * M[2][1]) * id,
+                              (M[0][0] * M[1][1] - M[0][1] * M[1][0]) * id}};
+    double L[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) L[i][j] = Ln[i][0] * Mi[0][j] + Ln[i][1] * Mi[1][j] + Ln[i][2] * Mi[2][j];
     // Jaumann rotation of the stress: sigma += dt (W sigma - sigma W).
     double* s = &sig_[6 * e];
     const double w01 = 0.5 * (L[0][1] - L[1][0]), w12 = 0.5 * (L[1][2] - L[2][1]), w20 = 0.5 * (L[2][0] - L[0][2]);
@@ -246,16 +256,48 @@ void Solver::element_forces() {
     // Physical mode stiffnesses (see hex8.hpp), scaled by the material tangent.
     // Floor: a perfectly plastic layer keeps 1 % of the elastic stabilisation so
     // that hourglass modes stay controlled (costs < 2 % of the plastic moment).
-    const double ratio = std::max(mat.tangent_ratio(s, st), 0.01);
-    const double E = E0 * ratio, G = G0 * ratio;
+    // Plastic flow softens each normal-strain (bending, warping) mode by the J2
+    // tangent projected on that mode's normal strain e_i (x) e_i:
+    //   r_i = 1 - (1 - ratio) (3/2) n_ii^2,  n = s/|s| the unit flow direction,
+    // where ratio = H/(E+H) is the uniaxial tangent ratio.  Uniaxial flow along
+    // x gives r_x = ratio and r_y = r_z = 1 - 3/4 (1 - ratio): the thickness and
+    // width modes stay stiff, as J2 plasticity has them.  Pure-shear modes keep
+    // the elastic shear modulus.  The floor keeps perfectly plastic modes controlled.
+    // The moduli relax towards their targets over ~1/kRelax cycles: an element
+    // hovering at the yield surface would otherwise flip between elastic and
+    // plastic every cycle, and a chattering incremental spring pumps energy
+    // into the hourglass modes.
+    const double ratio = mat.tangent_ratio(s, st);
+    double Ei[3] = {E0, E0, E0};
+    if (ratio < 1.0) {
+      const double p = (s[0] + s[1] + s[2]) / 3.0;
+      const double dev[3][3] = {{s[0] - p, s[3], s[5]}, {s[3], s[1] - p, s[4]}, {s[5], s[4], s[2] - p}};
+      double nrm = 0;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) nrm += dev[i][j] * dev[i][j];
+      nrm = std::sqrt(nrm);
+      for (int i = 0; i < 3 && nrm > 0; ++i) {
+        double nii = 0;
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) nii += g.R[a][i] * dev[a][b] * g.R[b][i];
+        nii /= nrm;
+        Ei[i] = E0 * std::max(1.0 - (1.0 - ratio) * 1.5 * nii * nii, kTangentFloor);
+      }
+    }
+    double* er = &hg_modulus_[3 * e];
+    for (int i = 0; i < 3; ++i) {
+      er[i] += kRelax * (Ei[i] - er[i]);
+      Ei[i] = er[i];
+    }
+    const double G = G0;
     const double ih2[3] = {1.0 / (g.h[0] * g.h[0]), 1.0 / (g.h[1] * g.h[1]), 1.0 / (g.h[2] * g.h[2])};
     static constexpr int kModeCoords[3][2] = {{1, 2}, {2, 0}, {0, 1}};
     double* Q = &hgq_[12 * e];
     for (int al = 0; al < 4; ++al)
       for (int i = 0; i < 3; ++i) {
         double K;
-        if (al == 3) K = E * V * ih2[i] / 9.0;
-        else if (kModeCoords[al][0] == i || kModeCoords[al][1] == i) K = E * V * ih2[i] / 3.0;
+        if (al == 3) K = Ei[i] * V * ih2[i] / 9.0;
+        else if (kModeCoords[al][0] == i || kModeCoords[al][1] == i) K = Ei[i] * V * ih2[i] / 3.0;
         else K = G * V * (ih2[kModeCoords[al][0]] + ih2[kModeCoords[al][1]]) / 3.0;
         Q[3 * al + i] += dt_prev * hg * K / 64.0 * q[al][i];
       }
@@ -274,7 +316,8 @@ void Solver::element_forces() {
       c[3 * a + 2] = -(f[a][2] + fh[2]);
     }
     hg_inc_[e] = ehg;
-    dt_elem_[e] = hex_characteristic_length(x, y, z, V) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
+    // Characteristic length 2 min(h) (= V / largest face area for a parallelepiped).
+    dt_elem_[e] = 2.0 * std::min({g.h[0], g.h[1], g.h[2]}) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
   }
   if (inverted >= 0) {
     std::ostringstream os;

@@ -114,6 +114,8 @@ class Solver {
   std::vector<std::pair<std::string, Vec3>> reactions_, applied_;
   std::vector<double> energy_scratch_[2];
   std::vector<double> rx_, ry_, rz_;  // per-node reactions of the last cycle
+  std::vector<Vec3> slide_offset_;    // per rotation BC of the current step: slid distance [mm]
+  std::vector<double> hg_modulus_;    // per element, 3 relaxed hourglass moduli [MPa]
   Energies en_;
   double last_dt_ = 0;  // length of the interval that produced the current velocities
   double t_ = 0, dt_ = 0, dt0_ = 0, added_mass_ = 0, phys_mass_ = 0, wave_speed_ = 0;

@@ -41,6 +41,7 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
     load_w.push_back(std::move(w));
   }
   std::vector<double> v0x(n), v0y(n), v0z(n), ex(n), ey(n), ez(n);
+  slide_offset_.assign(step.rotations.size(), Vec3{0, 0, 0});
   rx_.assign(n, 0.0);
   ry_.assign(n, 0.0);
   rz_.assign(n, 0.0);
@@ -145,20 +146,35 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
         }
       if (!merged) reactions_.push_back({set_name, R});
     };
-    for (const auto& rb : step.rotations) {
+    for (std::size_t r = 0; r < step.rotations.size(); ++r) {
+      const auto& rb = step.rotations[r];
       // Exact rigid rotation over the interval: x_new = c + Rot(omega dt) (x - c),
       // v = (x_new - x)/dt, which keeps all distances (Rodrigues' formula).
       const double th_ = rb.omega(th) * dt, cs = std::cos(th_), sn = std::sin(th_);
       const auto& k = rb.axis;
+      // Free rigid sliding along rb.slide: the mass-weighted mean of the
+      // unconstrained velocities (momentum conserving, no net reaction).
+      double us = 0;
+      if (rb.slide != Vec3{0, 0, 0}) {
+        double mv = 0, ms = 0;
+        for (int i : mesh.node_set(rb.set)) {
+          mv += mass_[i] * (vx_[i] * rb.slide[0] + vy_[i] * rb.slide[1] + vz_[i] * rb.slide[2]);
+          ms += mass_[i];
+        }
+        us = mv / ms;
+      }
+      const Vec3 c{rb.centre[0] + slide_offset_[r][0], rb.centre[1] + slide_offset_[r][1],
+                   rb.centre[2] + slide_offset_[r][2]};
+      for (int j = 0; j < 3; ++j) slide_offset_[r][j] += dt * us * rb.slide[j];
       enforce(rb.set, [&](int i) {
-        const double d[3] = {x_[i] - rb.centre[0], y_[i] - rb.centre[1], z_[i] - rb.centre[2]};
+        const double d[3] = {x_[i] - c[0], y_[i] - c[1], z_[i] - c[2]};
         const double kd = k[0] * d[0] + k[1] * d[1] + k[2] * d[2];
         const double kxd[3] = {k[1] * d[2] - k[2] * d[1], k[2] * d[0] - k[0] * d[2], k[0] * d[1] - k[1] * d[0]};
         double r[3];
         for (int j = 0; j < 3; ++j) r[j] = d[j] * cs + kxd[j] * sn + k[j] * kd * (1 - cs);
-        vx_[i] = (r[0] - d[0]) / dt;
-        vy_[i] = (r[1] - d[1]) / dt;
-        vz_[i] = (r[2] - d[2]) / dt;
+        vx_[i] = (r[0] - d[0]) / dt + us * rb.slide[0];
+        vy_[i] = (r[1] - d[1]) / dt + us * rb.slide[1];
+        vz_[i] = (r[2] - d[2]) / dt + us * rb.slide[2];
       });
     }
     for (const auto& ab : step.affine) {
