@@ -46,20 +46,12 @@ fe::Model strip_on_pin() {
                                 fe::uniform_lines(0, 1.04, 4));
   m.material = std::make_shared<material::J2Isotropic>(70000.0, 0.33, 2.7e-9,
                                                        material::HardeningCurve({0.0, 1.0}, {100.0, 600.0}));
-  fe::Tool pin;
-  pin.name = "pin";
   contact::Surface c;
   c.kind = contact::Surface::Kind::cylinder;
   c.origin = {0, 0, -6.35};
   c.axis = {0, 1, 0};
   c.R = 6.35;
-  pin.surfaces.push_back(c);
-  m.tools.push_back(pin);
-  fe::ContactPair cp;
-  cp.faces = "zmin";
-  cp.tool = "pin";
-  cp.friction = std::make_shared<friction::Coulomb>(0.1);
-  m.contacts.push_back(cp);
+  m.add_rigid_contact("pin", c, "zmin", std::make_shared<friction::Coulomb>(0.1));
   fe::Step s;
   s.duration = 1.0;
   s.fixed = {{"ymin", {false, true, false}}};

@@ -62,4 +62,18 @@ void Model::validate() const {
   }
 }
 
+ContactPair& Model::add_rigid_contact(const std::string& tool, const contact::Surface& surface, const std::string& faces,
+                                      std::shared_ptr<friction::FrictionLaw> friction) {
+  Tool t;
+  t.name = tool;
+  t.surfaces.push_back(surface);
+  tools.push_back(t);
+  ContactPair cp;
+  cp.faces = faces;
+  cp.tool = tool;
+  cp.friction = std::move(friction);
+  contacts.push_back(cp);
+  return contacts.back();
+}
+
 }  // namespace drawbend::fe

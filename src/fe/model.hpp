@@ -111,6 +111,11 @@ struct Model {
   Vec3 gravity{0, 0, 0};       ///< [mm/s^2]
 
   void validate() const;  ///< throws std::invalid_argument naming what is wrong
+
+  /// A fixed rigid tool with one surface, in contact with face set `faces`
+  /// (frictionless when `friction` is null).  Returns the contact pair.
+  ContactPair& add_rigid_contact(const std::string& tool, const contact::Surface& surface, const std::string& faces,
+                                 std::shared_ptr<friction::FrictionLaw> friction = nullptr);
 };
 
 }  // namespace drawbend::fe
