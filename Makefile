@@ -5,7 +5,7 @@ BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_ARGS ?=
 
-.PHONY: all deps configure build study report test test-full gold clean
+.PHONY: all deps configure build study report test test-full gold bench clean
 
 all: report
 
@@ -30,6 +30,10 @@ test: build
 
 test-full: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+
+# Solver cost per element-cycle at 1 and 2 threads -> build/bench/results.csv
+bench: build
+	@cmake --build $(BUILD) --target bench
 
 # Rewrite the regression gold files from the current code (review the diff!).
 gold: build
