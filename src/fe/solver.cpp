@@ -10,11 +10,6 @@
 
 namespace drawbend::fe {
 
-namespace {
-constexpr double kTangentFloor = 0.01;
-constexpr double kRelax = 0.01;
-}  // namespace
-
 double Energies::balance_error() const {
   // The contact work on the sheet is part of external_work; friction and the
   // stored penalty energy are diagnostics of how that work splits.
@@ -33,11 +28,14 @@ Solver::Solver(Model& model) : m_(model) {
   z_ = mesh.z;
   for (auto* v : {&vx_, &vy_, &vz_, &fx_, &fy_, &fz_, &mass_}) v->assign(n, 0.0);
   const auto& mat = *m_.material;
-  sig_.assign(6 * ne, 0.0);
-  state_.assign(static_cast<std::size_t>(ne) * mat.state_size(), 0.0);
-  for (int e = 0; e < ne && mat.state_size() > 0; ++e) mat.init_state(&state_[static_cast<std::size_t>(e) * mat.state_size()]);
+  // Two integration points per element (through the thickness): 12 stresses
+  // and 2 material states each.
+  sig_.assign(12 * ne, 0.0);
+  state_.assign(static_cast<std::size_t>(ne) * 2 * mat.state_size(), 0.0);
+  for (int k = 0; k < 2 * ne && mat.state_size() > 0; ++k)
+    mat.init_state(&state_[static_cast<std::size_t>(k) * mat.state_size()]);
   hgq_.assign(12 * ne, 0.0);
-  hg_modulus_.assign(3 * ne, mat.youngs_modulus());
+  hg_ratio_.assign(ne, 1.0);
   corner_.assign(24 * ne, 0.0);
   ie_inc_.assign(ne, 0.0);
   hg_inc_.assign(ne, 0.0);
@@ -119,11 +117,21 @@ void Solver::set_velocity(int node, const Vec3& v) {
 }
 
 void Solver::set_stress(int element, const double s[6]) {
-  for (int k = 0; k < 6; ++k) sig_.at(6 * element + k) = s[k];
+  for (int k = 0; k < 6; ++k) sig_.at(12 * element + k) = sig_.at(12 * element + 6 + k) = s[k];
+}
+
+std::vector<double> Solver::stress() const {
+  const int ne = m_.mesh.num_elements();
+  std::vector<double> s(6 * ne);
+  for (int e = 0; e < ne; ++e)
+    for (int k = 0; k < 6; ++k) s[6 * e + k] = 0.5 * (sig_[12 * e + k] + sig_[12 * e + 6 + k]);
+  return s;
 }
 
 double Solver::plastic_strain(int e) const {
-  return m_.material->plastic_strain(state_.data() + static_cast<std::size_t>(e) * m_.material->state_size());
+  const int ns = m_.material->state_size();
+  const double* st = state_.data() + static_cast<std::size_t>(e) * 2 * ns;
+  return 0.5 * (m_.material->plastic_strain(st) + m_.material->plastic_strain(st + ns));
 }
 
 void Solver::compute_dt() {
@@ -144,201 +152,5 @@ void Solver::compute_dt() {
 }
 
 double Solver::stable_dt() const { return dt_; }
-
-void Solver::element_forces() {
-  // The velocities v_n-1/2 act over the previous interval [t_n-1, t_n]: the
-  // strain, spin and hourglass increments use its length (zero before the
-  // first cycle, so initial velocities do not pre-strain the mesh).
-  const double dt_prev = last_dt_;
-  const Mesh& mesh = m_.mesh;
-  const int ne = mesh.num_elements();
-  const material::Material& mat = *m_.material;
-  const int ns = mat.state_size();
-  const double E0 = mat.youngs_modulus(), G0 = mat.shear_modulus(), hg = m_.hourglass;
-  int inverted = -1;
-#pragma omp parallel for schedule(static)
-  for (int e = 0; e < ne; ++e) {
-    // Gather.
-    double x[8], y[8], z[8], v[8][3];
-    for (int a = 0; a < 8; ++a) {
-      const int i = mesh.hex[e][a];
-      x[a] = x_[i];
-      y[a] = y_[i];
-      z[a] = z_[i];
-      v[a][0] = vx_[i];
-      v[a][1] = vy_[i];
-      v[a][2] = vz_[i];
-    }
-    HexGeometry g;
-    if (!hex_geometry(x, y, z, g)) {
-#pragma omp critical
-      inverted = inverted < 0 ? e : std::min(inverted, e);
-      continue;
-    }
-    const double V = g.volume;
-    // Velocity gradient on the current geometry, L_n = sum_a v_a (x) B_a, then
-    // brought to the mid-interval geometry x_n-1/2 = x_n - dt/2 v:
-    //   L_mid = L_n (I - dt/2 L_n)^-1,
-    // exact for homogeneous increments.  For a rigid rotation R it gives the
-    // Cayley transform (R - I)(R + I)^-1 / dt, which is skew: no spurious strain.
-    double Ln[3][3] = {{0}};
-    for (int a = 0; a < 8; ++a)
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) Ln[i][j] += v[a][i] * g.B[j][a];
-    double M[3][3];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) M[i][j] = (i == j ? 1.0 : 0.0) - 0.5 * dt_prev * Ln[i][j];
-    const double det = M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
-                       M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
-    const double id = 1.0 / det;
-    const double Mi[3][3] = {{(M[1][1] * M[2][2] - M[1][2] * M[2][1]) * id, (M[0][2] * M[2][1] - M[0][1] * M[2][2]) * id,
-                              (M[0][1] * M[1][2] - M[0][2] * M[1][1]) * id},
-                             {(M[1][2] * M[2][0] - M[1][0] * M[2][2]) * id, (M[0][0] * M[2][2] - M[0][2] * M[2][0]) * id,
-                              (M[0][2] * M[1][0] - M[0][0] * M[1][2]) * id},
-                             {(M[1][0] * M[2][1] - M[1][1] * M[2][0]) * id, (M[0][1] * M[2][0] - M[0][0] * M[2][1]) * id,
-                              (M[0][0] * M[1][1] - M[0][1] * M[1][0]) * id}};
-    double L[3][3];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) L[i][j] = Ln[i][0] * Mi[0][j] + Ln[i][1] * Mi[1][j] + Ln[i][2] * Mi[2][j];
-    // Jaumann rotation of the stress: sigma += dt (W sigma - sigma W).
-    double* s = &sig_[6 * e];
-    const double w01 = 0.5 * (L[0][1] - L[1][0]), w12 = 0.5 * (L[1][2] - L[2][1]), w20 = 0.5 * (L[2][0] - L[0][2]);
-    const double S[3][3] = {{s[0], s[3], s[5]}, {s[3], s[1], s[4]}, {s[5], s[4], s[2]}};
-    const double W[3][3] = {{0, w01, -w20}, {-w01, 0, w12}, {w20, -w12, 0}};
-    double WS[3][3];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) WS[i][j] = W[i][0] * S[0][j] + W[i][1] * S[1][j] + W[i][2] * S[2][j];
-    // W S - S W = WS + (WS)^T since W is skew and S symmetric.
-    s[0] += dt_prev * 2 * WS[0][0];
-    s[1] += dt_prev * 2 * WS[1][1];
-    s[2] += dt_prev * 2 * WS[2][2];
-    s[3] += dt_prev * (WS[0][1] + WS[1][0]);
-    s[4] += dt_prev * (WS[1][2] + WS[2][1]);
-    s[5] += dt_prev * (WS[2][0] + WS[0][2]);
-    // Material update with the strain increment (engineering shear).
-    const double deps[6] = {L[0][0] * dt_prev, L[1][1] * dt_prev, L[2][2] * dt_prev, (L[0][1] + L[1][0]) * dt_prev,
-                            (L[1][2] + L[2][1]) * dt_prev, (L[2][0] + L[0][2]) * dt_prev};
-    double before[6];
-    for (int k = 0; k < 6; ++k) before[k] = s[k];
-    double* st = ns ? &state_[static_cast<std::size_t>(e) * ns] : nullptr;
-    mat.update(deps, s, st);
-    double w = 0;
-    for (int k = 0; k < 6; ++k) w += 0.5 * (before[k] + s[k]) * deps[k];
-    ie_inc_[e] = w * V;
-    // Internal force of node a: V sigma B_a.
-    double f[8][3];
-    for (int a = 0; a < 8; ++a) {
-      const double b0 = g.B[0][a], b1 = g.B[1][a], b2 = g.B[2][a];
-      f[a][0] = V * (s[0] * b0 + s[3] * b1 + s[5] * b2);
-      f[a][1] = V * (s[3] * b0 + s[1] * b1 + s[4] * b2);
-      f[a][2] = V * (s[5] * b0 + s[4] * b1 + s[2] * b2);
-    }
-    // Hourglass: gamma_alpha,a = h_alpha,a - (h_alpha . x) . B_a (orthogonal to linear fields).
-    double gam[4][8];
-    for (int al = 0; al < 4; ++al) {
-      double hx = 0, hy = 0, hz = 0;
-      for (int b = 0; b < 8; ++b) {
-        hx += kHg[al][b] * x[b];
-        hy += kHg[al][b] * y[b];
-        hz += kHg[al][b] * z[b];
-      }
-      for (int a = 0; a < 8; ++a) gam[al][a] = kHg[al][a] - (hx * g.B[0][a] + hy * g.B[1][a] + hz * g.B[2][a]);
-    }
-    // Hourglass rates in the corotational frame: q_i,alpha = sum_a (R^T v_a)_i gamma_alpha,a.
-    double q[4][3] = {{0}};
-    for (int a = 0; a < 8; ++a) {
-      const double vl[3] = {g.R[0][0] * v[a][0] + g.R[1][0] * v[a][1] + g.R[2][0] * v[a][2],
-                            g.R[0][1] * v[a][0] + g.R[1][1] * v[a][1] + g.R[2][1] * v[a][2],
-                            g.R[0][2] * v[a][0] + g.R[1][2] * v[a][1] + g.R[2][2] * v[a][2]};
-      for (int al = 0; al < 4; ++al)
-        for (int i = 0; i < 3; ++i) q[al][i] += vl[i] * gam[al][a];
-    }
-    // Physical mode stiffnesses (see hex8.hpp), scaled by the material tangent.
-    // Floor: a perfectly plastic layer keeps 1 % of the elastic stabilisation so
-    // that hourglass modes stay controlled (costs < 2 % of the plastic moment).
-    // Plastic flow softens each normal-strain (bending, warping) mode by the J2
-    // tangent projected on that mode's normal strain e_i (x) e_i:
-    //   r_i = 1 - (1 - ratio) (3/2) n_ii^2,  n = s/|s| the unit flow direction,
-    // where ratio = H/(E+H) is the uniaxial tangent ratio.  Uniaxial flow along
-    // x gives r_x = ratio and r_y = r_z = 1 - 3/4 (1 - ratio): the thickness and
-    // width modes stay stiff, as J2 plasticity has them.  Pure-shear modes keep
-    // the elastic shear modulus.  The floor keeps perfectly plastic modes controlled.
-    // The moduli relax towards their targets over ~1/kRelax cycles: an element
-    // hovering at the yield surface would otherwise flip between elastic and
-    // plastic every cycle, and a chattering incremental spring pumps energy
-    // into the hourglass modes.
-    const double ratio = mat.tangent_ratio(s, st);
-    double Ei[3] = {E0, E0, E0};
-    if (ratio < 1.0) {
-      const double p = (s[0] + s[1] + s[2]) / 3.0;
-      const double dev[3][3] = {{s[0] - p, s[3], s[5]}, {s[3], s[1] - p, s[4]}, {s[5], s[4], s[2] - p}};
-      double nrm = 0;
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) nrm += dev[i][j] * dev[i][j];
-      nrm = std::sqrt(nrm);
-      for (int i = 0; i < 3 && nrm > 0; ++i) {
-        double nii = 0;
-        for (int a = 0; a < 3; ++a)
-          for (int b = 0; b < 3; ++b) nii += g.R[a][i] * dev[a][b] * g.R[b][i];
-        nii /= nrm;
-        Ei[i] = E0 * std::max(1.0 - (1.0 - ratio) * 1.5 * nii * nii, kTangentFloor);
-      }
-    }
-    double* er = &hg_modulus_[3 * e];
-    for (int i = 0; i < 3; ++i) {
-      er[i] += kRelax * (Ei[i] - er[i]);
-      Ei[i] = er[i];
-    }
-    const double G = G0;
-    const double ih2[3] = {1.0 / (g.h[0] * g.h[0]), 1.0 / (g.h[1] * g.h[1]), 1.0 / (g.h[2] * g.h[2])};
-    static constexpr int kModeCoords[3][2] = {{1, 2}, {2, 0}, {0, 1}};
-    double* Q = &hgq_[12 * e];
-    for (int al = 0; al < 4; ++al)
-      for (int i = 0; i < 3; ++i) {
-        double K;
-        if (al == 3) K = Ei[i] * V * ih2[i] / 9.0;
-        else if (kModeCoords[al][0] == i || kModeCoords[al][1] == i) K = Ei[i] * V * ih2[i] / 3.0;
-        else K = G * V * (ih2[kModeCoords[al][0]] + ih2[kModeCoords[al][1]]) / 3.0;
-        Q[3 * al + i] += dt_prev * hg * K / 64.0 * q[al][i];
-      }
-    double ehg = 0;
-    double* c = &corner_[24 * e];
-    for (int a = 0; a < 8; ++a) {
-      double fl[3] = {0, 0, 0};
-      for (int al = 0; al < 4; ++al)
-        for (int i = 0; i < 3; ++i) fl[i] += Q[3 * al + i] * gam[al][a];
-      const double fh[3] = {g.R[0][0] * fl[0] + g.R[0][1] * fl[1] + g.R[0][2] * fl[2],
-                            g.R[1][0] * fl[0] + g.R[1][1] * fl[1] + g.R[1][2] * fl[2],
-                            g.R[2][0] * fl[0] + g.R[2][1] * fl[1] + g.R[2][2] * fl[2]};
-      ehg += (fh[0] * v[a][0] + fh[1] * v[a][1] + fh[2] * v[a][2]) * dt_prev;
-      c[3 * a + 0] = -(f[a][0] + fh[0]);
-      c[3 * a + 1] = -(f[a][1] + fh[1]);
-      c[3 * a + 2] = -(f[a][2] + fh[2]);
-    }
-    hg_inc_[e] = ehg;
-    // Characteristic length 2 min(h) (= V / largest face area for a parallelepiped).
-    dt_elem_[e] = 2.0 * std::min({g.h[0], g.h[1], g.h[2]}) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
-  }
-  if (inverted >= 0) {
-    std::ostringstream os;
-    os << "element " << inverted << " inverted (non-positive volume) at t = " << t_ << " s";
-    throw std::runtime_error(os.str());
-  }
-  // Nodal sums in a fixed order (the corners are sorted by element and corner).
-  const int n = mesh.num_nodes();
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) {
-    double sx = 0, sy = 0, sz = 0;
-    for (int k = nc_.start[i]; k < nc_.start[i + 1]; ++k) {
-      const double* c = &corner_[3 * nc_.corner[k]];
-      sx += c[0];
-      sy += c[1];
-      sz += c[2];
-    }
-    fx_[i] = sx;
-    fy_[i] = sy;
-    fz_[i] = sz;
-  }
-}
 
 }  // namespace drawbend::fe

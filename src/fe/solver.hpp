@@ -76,10 +76,18 @@ class Solver {
   const std::vector<double>& vy() const { return vy_; }
   const std::vector<double>& vz() const { return vz_; }
   const std::vector<double>& mass() const { return mass_; }
-  const std::vector<double>& stress() const { return sig_; }        ///< 6 per element (Voigt)
+  /// Element stress (mean of the two integration points), 6 per element (Voigt) [MPa].
+  std::vector<double> stress() const;
+  /// Both integration points: 12 per element (point +, point -) [MPa].
+  const std::vector<double>& point_stress() const { return sig_; }
   const std::vector<double>& material_state() const { return state_; }
-  double plastic_strain(int e) const;
+  double plastic_strain(int e) const;  ///< mean of the two integration points
   const Energies& energies() const { return en_; }
+  /// Hourglass state per element: 6 generalised forces of the xi*eta and
+  /// xi*eta*zeta modes (local components; 12 stored) and the relaxed tangent
+  /// ratio; for diagnostics and tests.
+  const std::vector<double>& hourglass_forces() const { return hgq_; }
+  const std::vector<double>& hourglass_ratio() const { return hg_ratio_; }
   double added_mass() const { return added_mass_; }   ///< mass added by scaling [t]
   double physical_mass() const { return phys_mass_; }
   /// Reaction force [N] of the boundary conditions on node set `set` in the
@@ -115,7 +123,7 @@ class Solver {
   std::vector<double> energy_scratch_[2];
   std::vector<double> rx_, ry_, rz_;  // per-node reactions of the last cycle
   std::vector<Vec3> slide_offset_;    // per rotation BC of the current step: slid distance [mm]
-  std::vector<double> hg_modulus_;    // per element, 3 relaxed hourglass moduli [MPa]
+  std::vector<double> hg_ratio_;      // per element, relaxed tangent ratio (stabilisation, thickness strain)
   Energies en_;
   double last_dt_ = 0;  // length of the interval that produced the current velocities
   double t_ = 0, dt_ = 0, dt0_ = 0, added_mass_ = 0, phys_mass_ = 0, wave_speed_ = 0;

@@ -86,7 +86,7 @@ void write_fields(const fe::Solver& s, const std::string& path) {
   }
   for (int p = 0; p < s.num_contact_pairs(); ++p)
     for (const auto& c : s.contact_nodes(p)) pres[c.node] = std::max(pres[c.node], c.pressure);
-  const auto& sg = s.stress();
+  const std::vector<double> sg = s.stress();
   for (int e = 0; e < ne; ++e) {
     const double* t = &sg[6 * e];
     vm[e] = std::sqrt(0.5 * ((t[0] - t[1]) * (t[0] - t[1]) + (t[1] - t[2]) * (t[1] - t[2]) + (t[2] - t[0]) * (t[2] - t[0])) +
