@@ -24,7 +24,7 @@
 //
 // Stabilisation.  The two modes linear in zeta now have stiffness from the
 // integration points; the remaining hourglass modes (xi*eta, xi*eta*zeta) keep
-// the physical corotational stiffness of hex8.hpp, scaled by the tangent ratio.
+// the physical corotational stiffness of hex8.hpp with the elastic moduli.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -36,7 +36,6 @@
 namespace drawbend::fe {
 
 namespace {
-constexpr double kTangentFloor = 0.01;  // stabilisation kept for perfectly plastic elements
 constexpr double kRelax = 0.01;         // tangent ratio relaxes over ~100 cycles (no chatter)
 constexpr double kZg = 0.57735026918962576;  // 1/sqrt(3)
 
@@ -195,7 +194,11 @@ void Solver::element_forces() {
     const double ratio = 0.5 * (mat.tangent_ratio(sp, stp) + mat.tangent_ratio(sm, stm));
     const double rnew = rbar + kRelax * (ratio - rbar);
     hg_ratio_[e] = rnew;
-    const double Er = E0 * std::max(rnew, kTangentFloor);
+    // The remaining modes keep the elastic modulus: bending is carried by the
+    // integration points, and a stiffness that follows yielding would pump
+    // energy into these modes as material streams through a bend (elastic ->
+    // plastic -> elastic), which a draw-bend strip does.
+    const double Er = E0;
     const double ih2[3] = {1.0 / (g.h[0] * g.h[0]), 1.0 / (g.h[1] * g.h[1]), 1.0 / (g.h[2] * g.h[2])};
     double q[2][3] = {{0}};
     for (int a = 0; a < 8; ++a)

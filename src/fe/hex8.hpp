@@ -16,8 +16,9 @@
 //    plastic moment of a 4-layer strip by 59 %; this one is within 1 %.
 //  - The remaining hourglass modes (xi*eta, xi*eta*zeta) get the stiffness of
 //    their physical strain fields on a rectangular element (Belytschko-Bindeman
-//    spirit), in the corotational frame, scaled by the material's tangent ratio
-//    (relaxed over ~100 cycles so that yielding does not make it chatter).
+//    spirit), in the corotational frame, with the elastic moduli: a stiffness
+//    that followed yielding pumped energy into them as material streamed
+//    through a bend.
 //  - Objective stress rate: Jaumann, with strain increments on the
 //    mid-interval geometry (exact for rigid rotation).
 #include <cmath>

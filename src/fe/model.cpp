@@ -33,6 +33,7 @@ void Model::validate() const {
     for (const auto& t : tools) found = found || t.name == c.tool;
     if (!found) throw std::invalid_argument("contact refers to unknown tool '" + c.tool + "'");
     if (!(c.penalty > 0)) throw std::invalid_argument("contact penalty factor must be > 0");
+    if (!(c.damping >= 0 && c.damping <= 1)) throw std::invalid_argument("contact damping must lie in [0, 1] (fraction of critical)");
   }
   for (const auto& s : steps) {
     const std::string w = "step '" + s.name + "'";

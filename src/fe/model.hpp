@@ -76,7 +76,8 @@ struct Tool {
 struct ContactPair {
   std::string faces;  ///< face set of the sheet (slave side)
   std::string tool;
-  double penalty = 0.1;  ///< penalty factor alpha: k = alpha K A / L (see contact.hpp)
+  double penalty = 0.1;  ///< penalty factor alpha: k = alpha K A / L (see contact.cpp)
+  double damping = 0.2;  ///< normal contact damping, fraction of critical 2 sqrt(k m) (see contact.cpp)
   std::shared_ptr<friction::FrictionLaw> friction;  ///< nullptr: frictionless
   Vec3 texture_axis{1, 0, 0};  ///< rolling direction of the sheet (global, before projection)
 };

@@ -259,11 +259,13 @@ Deck parse_deck(const std::string& text, const std::string& path) {
   if (const auto* cps = c.array_of_tables(root, "contact", "deck"))
     for (const auto& cn : *cps) {
       const auto& t = *cn.as_table();
-      c.allowed(t, "contact", {"faces", "tool", "penalty", "friction", "texture_axis"});
+      c.allowed(t, "contact", {"faces", "tool", "penalty", "damping", "friction", "texture_axis"});
       fe::ContactPair cp;
       cp.faces = c.str(t, "faces", "contact");
       cp.tool = c.str(t, "tool", "contact");
       cp.penalty = c.positive(t, "penalty", "contact", 0.1);
+      cp.damping = c.num(t, "damping", "contact", 0.2);
+      if (!(cp.damping >= 0 && cp.damping <= 1)) c.fail(t, "contact.damping", "must lie in [0, 1] (fraction of critical)");
       cp.texture_axis = c.vec(t, "texture_axis", "contact", Vec3{1, 0, 0}, true);
       if (const auto* f = t.get("friction")) {
         if (!f->is_table()) c.fail(*f, "contact.friction", "expected a table, e.g. { law = \"coulomb\", mu = 0.1 }");
