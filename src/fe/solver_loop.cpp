@@ -233,8 +233,9 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
         const double sp = tool.speed(th);
         tool_vel_[k] = {sp * d[0], sp * d[1], sp * d[2]};
       } else if (drive[k] == Tool::Drive::force) {
-        // Rigid body along `direction`: m a = F(t) - (force of the sheet on the tool) . d
-        const double Fs = -(tool_force_[k][0] * d[0] + tool_force_[k][1] * d[1] + tool_force_[k][2] * d[2]);
+        // Rigid body along `direction`: m a = F(t) + (force of the sheet on the tool) . d;
+        // the sheet pushes back against the motion, so that term is negative in contact.
+        const double Fs = tool_force_[k][0] * d[0] + tool_force_[k][1] * d[1] + tool_force_[k][2] * d[2];
         const double a = (tool.force(t_ - t_start) + Fs) / tool.mass;
         const double along = tool_vel_[k][0] * d[0] + tool_vel_[k][1] * d[1] + tool_vel_[k][2] * d[2];
         const double vnew = (along * a1 + a * a2);
