@@ -55,11 +55,7 @@ void Solver::contact_forces(double dt, bool friction_on) {
     // Tributary areas on the current configuration (sequential: fixed order).
     for (auto& c : nodes) c.area = 0;
     for (const auto& f : mesh.face_set(cp.faces)) {
-      const double d1[3] = {x_[f[2]] - x_[f[0]], y_[f[2]] - y_[f[0]], z_[f[2]] - z_[f[0]]};
-      const double d2[3] = {x_[f[3]] - x_[f[1]], y_[f[3]] - y_[f[1]], z_[f[3]] - z_[f[1]]};
-      const double A = 0.5 * std::sqrt(std::pow(d1[1] * d2[2] - d1[2] * d2[1], 2) +
-                                       std::pow(d1[2] * d2[0] - d1[0] * d2[2], 2) +
-                                       std::pow(d1[0] * d2[1] - d1[1] * d2[0], 2));
+      const double A = quad_area(x_, y_, z_, f);
       for (int q = 0; q < 4; ++q) {
         auto it = std::lower_bound(nodes.begin(), nodes.end(), f[q],
                                    [](const ContactNode& c, int v) { return c.node < v; });

@@ -24,6 +24,14 @@ const std::vector<Quad>& Mesh::face_set(const std::string& name) const {
   return it->second;
 }
 
+double quad_area(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z,
+                 const Quad& f) {
+  const double d1[3] = {x[f[2]] - x[f[0]], y[f[2]] - y[f[0]], z[f[2]] - z[f[0]]};
+  const double d2[3] = {x[f[3]] - x[f[1]], y[f[3]] - y[f[1]], z[f[3]] - z[f[1]]};
+  const double n[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]};
+  return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
 double hex_volume(const double x[8], const double y[8], const double z[8]) {
   const double g = 1.0 / std::sqrt(3.0);
   double v = 0.0;

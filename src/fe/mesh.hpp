@@ -45,6 +45,20 @@ std::vector<double> uniform_lines(double a, double b, int n);
 /// given breakpoints, each piece with its own count of equal intervals.
 std::vector<double> piecewise_lines(const std::vector<double>& breakpoints, const std::vector<int>& counts);
 
+/// Coordinates of one element's 8 nodes from structure-of-arrays positions.
+inline void gather(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z,
+                   const std::array<int, 8>& h, double ex[8], double ey[8], double ez[8]) {
+  for (int a = 0; a < 8; ++a) {
+    ex[a] = x[h[a]];
+    ey[a] = y[h[a]];
+    ez[a] = z[h[a]];
+  }
+}
+
+/// Area of a (possibly warped) quadrilateral face: half the cross product of its diagonals.
+double quad_area(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z,
+                 const Quad& f);
+
 /// Exact volume of a trilinear hexahedron (2 x 2 x 2 Gauss is exact).
 double hex_volume(const double x[8], const double y[8], const double z[8]);
 

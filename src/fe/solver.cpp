@@ -45,11 +45,7 @@ Solver::Solver(Model& model) : m_(model) {
   // Lumped masses with mass scaling (uniform factor, then per element up to the target step).
   for (int e = 0; e < ne; ++e) {
     double ex[8], ey[8], ez[8];
-    for (int a = 0; a < 8; ++a) {
-      ex[a] = x_[mesh.hex[e][a]];
-      ey[a] = y_[mesh.hex[e][a]];
-      ez[a] = z_[mesh.hex[e][a]];
-    }
+    gather(x_, y_, z_, mesh.hex[e], ex, ey, ez);
     const double V = hex_volume(ex, ey, ez);
     const double dt_e = hex_characteristic_length(ex, ey, ez, V) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
     if (m_.target_dt > 0 && m_.dt_safety * dt_e < m_.target_dt)
@@ -81,17 +77,9 @@ Solver::Solver(Model& model) : m_(model) {
       }
       if (owner < 0) throw std::invalid_argument("contact: face set '" + cp.faces + "' has a face on no element");
       double ex[8], ey[8], ez[8];
-      for (int a = 0; a < 8; ++a) {
-        ex[a] = x_[mesh.hex[owner][a]];
-        ey[a] = y_[mesh.hex[owner][a]];
-        ez[a] = z_[mesh.hex[owner][a]];
-      }
+      gather(x_, y_, z_, mesh.hex[owner], ex, ey, ez);
       const double V = hex_volume(ex, ey, ez);
-      const double d1[3] = {x_[f[2]] - x_[f[0]], y_[f[2]] - y_[f[0]], z_[f[2]] - z_[f[0]]};
-      const double d2[3] = {x_[f[3]] - x_[f[1]], y_[f[3]] - y_[f[1]], z_[f[3]] - z_[f[1]]};
-      const double A = 0.5 * std::sqrt(std::pow(d1[1] * d2[2] - d1[2] * d2[1], 2) +
-                                       std::pow(d1[2] * d2[0] - d1[0] * d2[2], 2) +
-                                       std::pow(d1[0] * d2[1] - d1[1] * d2[0], 2));
+      const double A = quad_area(x_, y_, z_, f);
       for (int q = 0; q < 4; ++q) {
         const auto k = std::lower_bound(nodes.begin(), nodes.end(), f[q]) - nodes.begin();
         len[k] = std::min(len[k], V / A);
@@ -139,11 +127,7 @@ void Solver::compute_dt() {
   double dtmin = 1e30;
   for (int e = 0; e < mesh.num_elements(); ++e) {
     double ex[8], ey[8], ez[8];
-    for (int a = 0; a < 8; ++a) {
-      ex[a] = x_[mesh.hex[e][a]];
-      ey[a] = y_[mesh.hex[e][a]];
-      ez[a] = z_[mesh.hex[e][a]];
-    }
+    gather(x_, y_, z_, mesh.hex[e], ex, ey, ez);
     const double V = hex_volume(ex, ey, ez);
     dt_elem_[e] = hex_characteristic_length(ex, ey, ez, V) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
     dtmin = std::min(dtmin, dt_elem_[e]);
