@@ -10,9 +10,12 @@
 //   3. Table 3.2 cases: L (Eq. 3.1) and the input mu the solver must reproduce.
 //   4. The draw-bend condition of Sec. 3.5 (10 MPa, 50 mm/s).
 //   5. Checks of the text's statements.
+//   6. The strip-draw verification in our solver (Table 3.2, Fig. 3.8) and the
+//      update interval (Figs. 3.5-3.7), from data/cases/strip_draw.toml.
 #include <cmath>
 
 #include "analysis/stribeck.hpp"
+#include "ch3_steps.hpp"
 #include "study/chapter.hpp"
 #include "study/thesis_data.hpp"
 
@@ -86,11 +89,14 @@ void body(study::Chapter& c) {
                    s31.mu_EHL == s33.mu_EHL && s31.L_BL == s33.L_BL && s31.L_EHL == s33.L_EHL &&
                        s31.Ra_um == s33.Ra_um && s31.eta_Pa_s == s33.eta_Pa_s && s31.mu_BL != s33.mu_BL,
                    "parameter by parameter comparison");
+
+  // 6. The solver.
+  ch3::strip_draw(c, s31, t32);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  study::Chapter ch("ch3-stribeck", "Chapter 3: the Stribeck friction curve (no FE part)");
+  study::Chapter ch("ch3-stribeck", "Chapter 3: the Stribeck friction curve and its strip-draw verification");
   return study::run_chapter(ch, argc, argv, body);
 }

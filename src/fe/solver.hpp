@@ -25,8 +25,9 @@ struct Energies {
   double friction = 0;       ///< frictional dissipation (part of the tools' work)
   double contact_stored = 0; ///< penalty spring energy now stored (part of the tools' work)
   double damping = 0;        ///< energy removed by dynamic-relaxation damping
-  /// |KE + IE + HG + damping - W| relative to the largest term, where W is the
-  /// work done on the sheet by loads, boundary reactions and contact forces.
+  /// |KE + IE + HG + damping - W| relative to the largest energy flow (W,
+  /// KE + IE + HG, friction or damping), where W is the work done on the sheet
+  /// by loads, boundary reactions and contact forces.
   double balance_error() const;
 };
 

@@ -269,7 +269,7 @@ Deck parse_deck(const std::string& text, const std::string& path) {
       cp.texture_axis = c.vec(t, "texture_axis", "contact", Vec3{1, 0, 0}, true);
       if (const auto* f = t.get("friction")) {
         if (!f->is_table()) c.fail(*f, "contact.friction", "expected a table, e.g. { law = \"coulomb\", mu = 0.1 }");
-        cp.friction = make_friction(*f->as_table(), path);
+        cp.friction = make_friction(*f->as_table(), path, dir);
       }
       if (!m.mesh.face_sets.count(cp.faces)) c.fail(t, "contact.faces", "no face set '" + cp.faces + "' (xmin, xmax, ymin, ymax, zmin, zmax)");
       m.contacts.push_back(std::move(cp));

@@ -6,6 +6,8 @@
 #include "core/csv.hpp"
 #include "material/j2_isotropic.hpp"
 #include "material/linear_elastic.hpp"
+#include "friction/stribeck_law.hpp"
+#include "study/thesis_data.hpp"
 
 namespace drawbend::io {
 
@@ -67,7 +69,8 @@ std::shared_ptr<const material::Material> make_material(const toml::table& t, co
                                                  material::HardeningCurve({0.0, 1.0}, {sy, sy + H}, at(t, deck)));
 }
 
-std::shared_ptr<friction::FrictionLaw> make_friction(const toml::table& t, const std::string& deck) {
+std::shared_ptr<friction::FrictionLaw> make_friction(const toml::table& t, const std::string& deck,
+                                                     const std::string& dir) {
   const auto* law = t.get("law");
   const std::string l = law && law->value<std::string>() ? *law->value<std::string>() : "";
   if (l == "coulomb") {
@@ -77,8 +80,38 @@ std::shared_ptr<friction::FrictionLaw> make_friction(const toml::table& t, const
     if (*mu->value<double>() < 0) throw InputError(at(*mu, deck) + ": contact.friction.mu: must be >= 0");
     return std::make_shared<friction::Coulomb>(*mu->value<double>());
   }
+  if (l == "stribeck") {
+    check_keys(t, deck, "contact.friction",
+               {"law", "table", "interval", "mu_BL", "mu_EHL", "L_BL", "L_EHL", "Ra_um", "eta_Pa_s"});
+    int interval = 100;
+    if (const auto* n = t.get("interval")) {
+      const auto v = n->value<int64_t>();
+      if (!v || *v < 1) throw InputError(at(*n, deck) + ": contact.friction.interval: expected a whole number of cycles >= 1");
+      interval = static_cast<int>(*v);
+    }
+    analysis::StribeckParams p;
+    if (const auto* tab = t.get("table")) {
+      const auto file = tab->value<std::string>();
+      if (!file) throw InputError(at(*tab, deck) + ": contact.friction.table: expected a file name");
+      std::filesystem::path fp(*file);
+      if (fp.is_relative()) fp = std::filesystem::path(dir) / fp;
+      p = study::load_stribeck(fp.string());
+    } else {
+      p.mu_BL = positive(t, "mu_BL", deck, "contact.friction");
+      p.mu_EHL = positive(t, "mu_EHL", deck, "contact.friction");
+      p.L_BL = positive(t, "L_BL", deck, "contact.friction");
+      p.L_EHL = positive(t, "L_EHL", deck, "contact.friction");
+      p.Ra_um = positive(t, "Ra_um", deck, "contact.friction");
+      p.eta_Pa_s = positive(t, "eta_Pa_s", deck, "contact.friction");
+    }
+    try {
+      return std::make_shared<friction::Stribeck>(p, interval);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(at(t, deck) + ": contact.friction: " + e.what());
+    }
+  }
   throw InputError(at(law ? *law : static_cast<const toml::node&>(t), deck) +
-                   ": contact.friction.law: expected \"coulomb\" (found \"" + l + "\")");
+                   ": contact.friction.law: expected \"coulomb\" or \"stribeck\" (found \"" + l + "\")");
 }
 
 }  // namespace drawbend::io

@@ -18,7 +18,10 @@ namespace drawbend::io {
 std::shared_ptr<const material::Material> make_material(const toml::table& t, const std::string& deck,
                                                         const std::string& deck_dir);
 
-/// friction = { law = "coulomb", mu = 0.1 }
-std::shared_ptr<friction::FrictionLaw> make_friction(const toml::table& t, const std::string& deck);
+/// friction = { law = "coulomb", mu = 0.1 }, or
+/// friction = { law = "stribeck", table = "table_3_1.csv" | mu_BL, mu_EHL, L_BL, L_EHL, Ra_um, eta_Pa_s,
+///              interval = 100 }  (cycles over which the sliding speed is averaged, Sec. 3.3.2)
+std::shared_ptr<friction::FrictionLaw> make_friction(const toml::table& t, const std::string& deck,
+                                                     const std::string& deck_dir);
 
 }  // namespace drawbend::io

@@ -1,0 +1,11 @@
+#pragma once
+// Steps of the Chapter 3 driver that run the solver (see main.cpp).
+#include "analysis/stribeck.hpp"
+#include "core/csv.hpp"
+#include "study/chapter.hpp"
+
+namespace ch3 {
+/// Sec. 3.3: strip-draw verification (Table 3.2, Fig. 3.8) and the update interval (Figs. 3.5-3.7).
+void strip_draw(drawbend::study::Chapter& c, const drawbend::analysis::StribeckParams& s31,
+                const drawbend::CsvTable& t32);
+}  // namespace ch3
