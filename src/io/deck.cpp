@@ -1,5 +1,6 @@
 #include "io/deck.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <set>
 #include <sstream>
@@ -7,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "core/csv.hpp"
+#include "fe/strip.hpp"
 #include "io/deck_material.hpp"
 
 namespace drawbend::io {
@@ -219,8 +221,35 @@ Deck parse_deck(const std::string& text, const std::string& path) {
   }
   // Mesh: a structured block.
   const auto& mesh = c.table(root, "mesh", "deck");
-  c.allowed(mesh, "mesh", {"x", "y", "z"});
-  m.mesh = fe::structured_block(lines(c, mesh, "x"), lines(c, mesh, "y"), lines(c, mesh, "z"));
+  const std::string kind = c.str(mesh, "kind", "mesh", std::string("block"));
+  if (kind == "block") {
+    c.allowed(mesh, "mesh", {"kind", "x", "y", "z"});
+    m.mesh = fe::structured_block(lines(c, mesh, "x"), lines(c, mesh, "y"), lines(c, mesh, "z"));
+  } else if (kind == "wrapped_strip") {
+    // A strip already wrapped round a pin on the y axis (fe/strip.hpp); node and
+    // face sets as for a block: xmin inlet end, xmax outlet end, zmin contact face.
+    c.allowed(mesh, "mesh", {"kind", "pin_radius", "wrap_deg", "thickness", "width", "inlet_length", "outlet_length",
+                             "element_length", "across", "through"});
+    fe::StripSpec sp;
+    sp.pin_radius = c.positive(mesh, "pin_radius", "mesh");
+    const double wrap = c.positive(mesh, "wrap_deg", "mesh", 90.0);
+    if (!(wrap < 180.0)) c.fail(mesh, "mesh.wrap_deg", "wrap angle must lie in (0, 180) deg");
+    sp.wrap = wrap * M_PI / 180.0;
+    sp.thickness = c.positive(mesh, "thickness", "mesh");
+    sp.width = c.positive(mesh, "width", "mesh");
+    sp.inlet_length = c.num(mesh, "inlet_length", "mesh", 25.0);
+    sp.outlet_length = c.num(mesh, "outlet_length", "mesh", 10.0);
+    sp.element_length = c.positive(mesh, "element_length", "mesh", 0.5);
+    sp.across = static_cast<int>(c.positive(mesh, "across", "mesh", 4.0));
+    sp.through = static_cast<int>(c.positive(mesh, "through", "mesh", 4.0));
+    try {
+      m.mesh = fe::wrapped_strip(sp);
+    } catch (const std::invalid_argument& e) {
+      c.fail(mesh, "mesh", e.what());
+    }
+  } else {
+    c.fail(*mesh.get("kind"), "mesh.kind", "expected \"block\" or \"wrapped_strip\", found \"" + kind + "\"");
+  }
   // Material.
   m.material = make_material(c.table(root, "material", "deck"), path, dir);
   // Numerics.

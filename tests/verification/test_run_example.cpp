@@ -47,3 +47,21 @@ BOOST_AUTO_TEST_CASE(block_slide_deck) {
     }
   BOOST_TEST(files >= 3);
 }
+
+// The wrapped-strip mesh of a deck (no run).
+// Closed-form answers: drawbend_12p7_wrapped.toml has 22/0.5 = 44 inlet, round(
+// (6.35 + 0.52) pi/2 / 0.5) = 22 wrapped and 6/0.5 = 12 outlet elements along,
+// 2 across, 4 through: 78 x 2 x 4 = 624 elements; every node of the contact
+// face (zmin) on the wrapped part lies on the pin, at radius 6.35 mm.
+BOOST_AUTO_TEST_CASE(wrapped_strip_deck_mesh) {
+  io::Deck deck = io::read_deck(std::string(DRAWBEND_DATA_DIR) + "/cases/drawbend_12p7_wrapped.toml");
+  const auto& m = deck.model.mesh;
+  BOOST_TEST(m.num_elements() == 624);
+  int on_pin = 0;
+  for (int i : m.node_set("zmin"))
+    if (m.x[i] >= 0 && m.z[i] >= 0) {
+      BOOST_TEST(std::abs(std::hypot(m.x[i], m.z[i]) - 6.35) < 1e-9);
+      ++on_pin;
+    }
+  BOOST_TEST(on_pin > 0);
+}
