@@ -8,6 +8,7 @@
 //    NumberOfCells = 64 (a 4 x 4 x 4 block), and the .pvd lists each snapshot.
 #define BOOST_TEST_MODULE run_example
 #include <boost/test/unit_test.hpp>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
