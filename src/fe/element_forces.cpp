@@ -92,7 +92,7 @@ void Solver::element_forces() {
   // spin and hourglass increments use its length (zero before the first cycle).
   const double dtp = last_dt_;
   int inverted = -1;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (ne >= kParallelMin)
   for (int e = 0; e < ne; ++e) {
     // Gather.
     double x[8], y[8], z[8], v[8][3];
@@ -240,7 +240,7 @@ void Solver::element_forces() {
   }
   // Nodal sums in a fixed order (the corners are sorted by element and corner).
   const int n = mesh.num_nodes();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (int i = 0; i < n; ++i) {
     double sx = 0, sy = 0, sz = 0;
     for (int k = nc_.start[i]; k < nc_.start[i + 1]; ++k) {

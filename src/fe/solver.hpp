@@ -19,6 +19,10 @@
 
 namespace drawbend::fe {
 
+/// Loops shorter than this run serially: for small models the fork/join of a
+/// parallel region costs more than the work (the same result either way).
+inline constexpr int kParallelMin = 512;
+
 struct Energies {
   double kinetic = 0, internal = 0, hourglass = 0;
   double external_work = 0;  ///< work of loads, boundary reactions and tools on the sheet

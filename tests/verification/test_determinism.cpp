@@ -1,6 +1,7 @@
 // Determinism across thread counts.
 // Closed-form answer: the same contact-with-friction run on 1 and on 2 OpenMP
-// threads gives bit-identical positions, stresses and tool forces, because
+// threads (a model large enough for every loop to run in parallel) gives
+// bit-identical positions, stresses and tool forces, because
 // element forces are written to per-element corner buffers and summed per node
 // in a fixed order, and every energy or force total is summed sequentially.
 #define BOOST_TEST_MODULE determinism
@@ -12,11 +13,13 @@
 using namespace verify;
 
 static fe::Model model() {
-  fe::Model m = block(2, 1, 0.5, 8, 4, 2, j2_linear(100, 500));
+  // Large enough that every parallel loop runs in parallel (fe::kParallelMin):
+  // 1,024 elements, 1,683 nodes, 561 contact nodes.
+  fe::Model m = block(4, 2, 0.5, 32, 16, 2, j2_linear(100, 500));
   m.mass_scaling = 100;
   contact::Surface c;
   c.kind = contact::Surface::Kind::cylinder;
-  c.origin = {1, 0, -3};
+  c.origin = {2, 0, -3};
   c.axis = {0, 1, 0};
   c.R = 3.0;
   m.add_rigid_contact("pin", c, "zmin", std::make_shared<friction::Coulomb>(0.1));
@@ -31,6 +34,9 @@ static fe::Model model() {
 BOOST_AUTO_TEST_CASE(one_and_two_threads_identical) {
   omp_set_num_threads(1);
   fe::Model m1 = model();
+  BOOST_REQUIRE(m1.mesh.num_elements() >= fe::kParallelMin);
+  BOOST_REQUIRE(m1.mesh.num_nodes() >= fe::kParallelMin);
+  BOOST_REQUIRE(static_cast<int>(m1.mesh.node_set("zmin").size()) >= fe::kParallelMin);
   fe::Solver a(m1);
   a.run();
   omp_set_num_threads(2);
