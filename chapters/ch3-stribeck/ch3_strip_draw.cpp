@@ -141,11 +141,15 @@ void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const Cs
   c.plot("stribeck_sim", "fig_3_8",
          {{"curvefile", c.out("tables/stribeck_curves.csv")}, {"simfile", c.out("tables/strip_draw.csv")}});
 
-  // Figs. 3.5-3.7: the update interval.  Case 1 (10 MPa, 8 mm/s).
-  const double p = 10, v = 8, mu_in = analysis::stribeck_mu(v, p, s31);
+  // Figs. 3.5-3.7: the update interval, on the first case of Table 3.2.
+  const double p = t32.number(t32.rows.front(), "pressure_MPa"), v = t32.number(t32.rows.front(), "velocity_mm_s");
+  const double mu_in = analysis::stribeck_mu(v, p, s31);
+  c.value("iv_speed", fmt(v), "mm/s");
+  c.value("iv_case", "case " + t32.text(t32.rows.front(), "case") + ", " + fmt(p) + "\u00a0MPa, " + fmt(v) + "\u00a0mm/s");
   auto iv = c.table({"interval_cycles", "mu_simulated", "mu_error_pct", "probe_speed_mean_mm_s",
                      "probe_speed_std_mm_s", "probe_speed_min_mm_s", "probe_speed_max_mm_s"},
-                    "Stribeck update interval: case 1 (10 MPa, 8 mm/s), probe node under the die centre");
+                    "Stribeck update interval: Table 3.2 case " + t32.text(t32.rows.front(), "case") + " (" + fmt(p) +
+                        " MPa, " + fmt(v) + " mm/s), probe node under the die centre");
   std::vector<std::vector<std::pair<double, double>>> traces;
   for (int interval : {1, 10, 100, 1000}) {
     const DrawResult r = draw(deck, p, v, interval);

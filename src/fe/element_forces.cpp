@@ -206,7 +206,7 @@ void Solver::element_forces() {
         q[0][i] += vl[a][i] * gam[2][a];
         q[1][i] += vl[a][i] * gam[3][a];
       }
-    double* Q = &hgq_[12 * e];  // [mode xi*eta: 3][mode xi*eta*zeta: 3]
+    double* Q = &hgq_[6 * e];  // [mode xi*eta: 3][mode xi*eta*zeta: 3]
     for (int i = 0; i < 3; ++i) {
       const double K2 = i < 2 ? Er * V * ih2[i] / 3.0 : G0 * V * (ih2[0] + ih2[1]) / 3.0;
       const double K3 = Er * V * ih2[i] / 9.0;
@@ -230,8 +230,7 @@ void Solver::element_forces() {
       for (int i = 0; i < 3; ++i) cbuf[3 * a + i] = -(f[a][i] + fg[i] + hgg[i]);
     }
     hg_inc_[e] = ehg;
-    // Characteristic length 2 min(h) (= V / largest face area for a parallelepiped).
-    dt_elem_[e] = 2.0 * std::min({g.h[0], g.h[1], g.h[2]}) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
+    dt_elem_[e] = hex_stable_length(g) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
   }
   if (inverted >= 0) {
     std::ostringstream os;

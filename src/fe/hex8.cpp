@@ -20,13 +20,6 @@ inline void volu_der(double x0, double x1, double x2, double x3, double x4, doub
   *dvdz *= twelfth;
 }
 
-inline double face_area(const double x[8], const double y[8], const double z[8], int a, int b, int c, int d) {
-  // Half the cross product of the diagonals.
-  const double d1[3] = {x[c] - x[a], y[c] - y[a], z[c] - z[a]};
-  const double d2[3] = {x[d] - x[b], y[d] - y[b], z[d] - z[b]};
-  const double n[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]};
-  return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-}
 }  // namespace
 
 void volume_derivatives(const double x[8], const double y[8], const double z[8], double dvdx[8], double dvdy[8],
@@ -83,11 +76,5 @@ bool hex_geometry(const double x[8], const double y[8], const double z[8], HexGe
   return true;
 }
 
-double hex_characteristic_length(const double x[8], const double y[8], const double z[8], double volume) {
-  const double amax = std::max({face_area(x, y, z, 0, 1, 2, 3), face_area(x, y, z, 4, 5, 6, 7),
-                                face_area(x, y, z, 0, 1, 5, 4), face_area(x, y, z, 1, 2, 6, 5),
-                                face_area(x, y, z, 2, 3, 7, 6), face_area(x, y, z, 3, 0, 4, 7)});
-  return volume / amax;
-}
 
 }  // namespace drawbend::fe

@@ -21,6 +21,7 @@
 //    through a bend.
 //  - Objective stress rate: Jaumann, with strain increments on the
 //    mid-interval geometry (exact for rigid rotation).
+#include <algorithm>
 #include <cmath>
 
 namespace drawbend::fe {
@@ -52,7 +53,11 @@ struct HexGeometry {
 /// volume is not positive (inverted element).
 bool hex_geometry(const double x[8], const double y[8], const double z[8], HexGeometry& g);
 
-/// Smallest element dimension for the critical time step: V / (largest face area).
-double hex_characteristic_length(const double x[8], const double y[8], const double z[8], double volume);
+/// Element size for the critical time step: 2 min(h), twice the smallest
+/// half-length (equal to V / largest face area for a parallelepiped).  The
+/// one definition used by the mass scaling and by every cycle's time step.
+inline double hex_stable_length(const HexGeometry& g) {
+  return 2.0 * std::min({g.h[0], g.h[1], g.h[2]});
+}
 
 }  // namespace drawbend::fe

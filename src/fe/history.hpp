@@ -18,8 +18,6 @@ struct History {
     const double s = (time - t[i - 1]) / (t[i] - t[i - 1]);
     return v[i - 1] + s * (v[i] - v[i - 1]);
   }
-  /// Integral from 0 to time (displacement of a velocity history, ...).
-  double integral(double time) const;
   void validate(const char* what) const {
     if (t.empty() || t.size() != v.size()) throw std::invalid_argument(std::string(what) + ": history needs equal, non-empty t and v lists");
     for (std::size_t i = 1; i < t.size(); ++i)
@@ -27,19 +25,5 @@ struct History {
   }
 };
 
-inline double History::integral(double time) const {
-  double s = 0.0, prev_t = 0.0, prev_v = (*this)(0.0);
-  std::vector<double> knots;
-  for (double k : t)
-    if (k > 0.0 && k < time) knots.push_back(k);
-  knots.push_back(time);
-  for (double k : knots) {
-    const double vk = (*this)(k);
-    s += 0.5 * (prev_v + vk) * (k - prev_t);
-    prev_t = k;
-    prev_v = vk;
-  }
-  return s;
-}
 
 }  // namespace drawbend::fe

@@ -93,8 +93,6 @@ struct Step {
   std::vector<AffineBC> affine;
   std::vector<ForceLoad> forces;
   std::vector<std::pair<std::string, Tool::Drive>> tool_drive;  ///< override a tool's drive for this step
-  double history_interval = 0;  ///< [s] time-history output interval (0: 200 samples per step)
-  double field_interval = 0;    ///< [s] VTU snapshot interval (0: one at the end)
 };
 
 struct Model {

@@ -37,7 +37,7 @@ Solver::Solver(Model& model) : m_(model) {
   state_.assign(static_cast<std::size_t>(ne) * 2 * mat.state_size(), 0.0);
   for (int k = 0; k < 2 * ne && mat.state_size() > 0; ++k)
     mat.init_state(&state_[static_cast<std::size_t>(k) * mat.state_size()]);
-  hgq_.assign(12 * ne, 0.0);
+  hgq_.assign(6 * ne, 0.0);
   hg_ratio_.assign(ne, 1.0);
   corner_.assign(24 * ne, 0.0);
   ie_inc_.assign(ne, 0.0);
@@ -50,7 +50,9 @@ Solver::Solver(Model& model) : m_(model) {
     double ex[8], ey[8], ez[8];
     gather(x_, y_, z_, mesh.hex[e], ex, ey, ez);
     const double V = hex_volume(ex, ey, ez);
-    const double dt_e = hex_characteristic_length(ex, ey, ez, V) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
+    HexGeometry g;
+    if (!hex_geometry(ex, ey, ez, g)) throw std::invalid_argument("element " + std::to_string(e) + " is inverted");
+    const double dt_e = hex_stable_length(g) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
     if (m_.target_dt > 0 && m_.dt_safety * dt_e < m_.target_dt)
       elem_mass_factor_[e] *= std::pow(m_.target_dt / (m_.dt_safety * dt_e), 2);
     const double me = mat.density() * V;
@@ -131,8 +133,9 @@ void Solver::compute_dt() {
   for (int e = 0; e < mesh.num_elements(); ++e) {
     double ex[8], ey[8], ez[8];
     gather(x_, y_, z_, mesh.hex[e], ex, ey, ez);
-    const double V = hex_volume(ex, ey, ez);
-    dt_elem_[e] = hex_characteristic_length(ex, ey, ez, V) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
+    HexGeometry g;
+    hex_geometry(ex, ey, ez, g);
+    dt_elem_[e] = hex_stable_length(g) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
     dtmin = std::min(dtmin, dt_elem_[e]);
   }
   dt_ = m_.dt_safety * dtmin;

@@ -83,14 +83,12 @@ class Solver {
   const std::vector<double>& mass() const { return mass_; }
   /// Element stress (mean of the two integration points), 6 per element (Voigt) [MPa].
   std::vector<double> stress() const;
-  /// Both integration points: 12 per element (point +, point -) [MPa].
-  const std::vector<double>& point_stress() const { return sig_; }
   const std::vector<double>& material_state() const { return state_; }
   double plastic_strain(int e) const;  ///< mean of the two integration points
   const Energies& energies() const { return en_; }
   /// Hourglass state per element: 6 generalised forces of the xi*eta and
-  /// xi*eta*zeta modes (local components; 12 stored) and the relaxed tangent
-  /// ratio; for diagnostics and tests.
+  /// xi*eta*zeta modes (local components) and the relaxed tangent ratio; for
+  /// diagnostics and tests.
   const std::vector<double>& hourglass_forces() const { return hgq_; }
   const std::vector<double>& hourglass_ratio() const { return hg_ratio_; }
   double added_mass() const { return added_mass_; }   ///< mass added by scaling [t]

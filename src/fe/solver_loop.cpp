@@ -30,6 +30,32 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
   std::vector<Tool::Drive> drive;
   for (const auto& t : m_.tools) drive.push_back(t.drive);
   for (const auto& [name, d] : step.tool_drive) drive[tool_index(m_, name)] = d;
+  // A force-driven tool is a rigid mass on its contact springs; explicit
+  // integration is stable only if omega dt <= 2 (with the element safety factor).
+  for (std::size_t k = 0; k < m_.tools.size(); ++k)
+    if (drive[k] == Tool::Drive::force) {
+      double stiffness = 0;
+      for (std::size_t p = 0; p < m_.contacts.size(); ++p) {
+        if (m_.contacts[p].tool != m_.tools[k].name) continue;
+        std::vector<double> area(contact_[p].size(), 0.0);
+        for (const auto& f : mesh.face_set(m_.contacts[p].faces))
+          for (int q = 0; q < 4; ++q) {
+            const auto it = std::lower_bound(contact_[p].begin(), contact_[p].end(), f[q],
+                                             [](const ContactNode& c, int v) { return c.node < v; });
+            area[it - contact_[p].begin()] += 0.25 * quad_area(x_, y_, z_, f);
+          }
+        for (std::size_t i = 0; i < area.size(); ++i)
+          stiffness += m_.contacts[p].penalty * m_.material->bulk_modulus() * area[i] / contact_stiffness_len_[p][i];
+      }
+      const double limit = 2.0 * m_.dt_safety;
+      if (stiffness > 0 && std::sqrt(stiffness / m_.tools[k].mass) * dt_ > limit) {
+        std::ostringstream os;
+        os << "tool '" << m_.tools[k].name << "': mass " << m_.tools[k].mass << " t is too small for a stable time step "
+           << dt_ << " s on its contact stiffness " << stiffness << " N/mm; it needs at least "
+           << stiffness * (dt_ / limit) * (dt_ / limit) << " t";
+        throw std::invalid_argument(os.str());
+      }
+    }
   // Per-node load weights (mass-proportional) for each force load.
   std::vector<std::vector<double>> load_w;
   for (const auto& fl : step.forces) {

@@ -5,7 +5,7 @@
 //  - Consistency: sum_a B_a = 0 and sum_a x_a (x) B_a = I (linear fields are
 //    differentiated exactly), for any shape.
 //  - A unit cube has B_a = (xi_a, eta_a, zeta_a)/4, half-lengths 0.5, and
-//    characteristic length V / A_max = 1.
+//    stable length 2 min(h) = 1 (= V / A_max).
 #define BOOST_TEST_MODULE hex8
 #include <boost/test/unit_test.hpp>
 
@@ -77,5 +77,5 @@ BOOST_AUTO_TEST_CASE(unit_cube) {
     BOOST_TEST(g.B[2][a] == kZetaN[a] / 4, tt::tolerance(1e-14));
   }
   BOOST_TEST(g.h[0] == 0.5, tt::tolerance(1e-14));
-  BOOST_TEST(hex_characteristic_length(x, y, z, g.volume) == 1.0, tt::tolerance(1e-14));
+  BOOST_TEST(hex_stable_length(g) == 1.0, tt::tolerance(1e-14));
 }
