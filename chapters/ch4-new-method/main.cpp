@@ -1,8 +1,9 @@
-// Chapter 4: the new method.  This part needs no finite-element solver: it
-// re-derives the derived columns of Tables 4.1 and 4.2 (bending force F_B,
+// Chapter 4: the new method.  Steps 1-5 need no finite-element solver: they
+// re-derive the derived columns of Tables 4.1 and 4.2 (bending force F_B,
 // friction force F_T, pressure ratio c), the back-tension stress of Sec. 4.2,
 // and the conventional friction coefficients of Fig. 4.9 (Eq. 2.3) with the
-// average pressures of Eq. (2.2) used as the x axis of Fig. 4.10.
+// average pressures of Eq. (2.2) used as the x axis of Fig. 4.10.  Steps 6-10
+// (ch4_fe.cpp) run our own draw-bend simulations and the new method on them.
 // Forces are half-model simulation forces in N (the thesis models the top half
 // of the 25.4 mm wide, 1.04 mm thick strip).
 //
@@ -12,10 +13,12 @@
 //   3. Re-derive F_T = F_Y - F_X - F_B and c = (F_X+F_Y)/(F_X'+F_Y') (Table 4.2).
 //   4. Back-tension stress F_X'/(t w/2) against the printed 57 MPa.
 //   5. Conventional mu (Eq. 2.3) and average pressure (Eq. 2.2), Fig. 4.9.
+//   6-10. Finite-element part (ch4_fe.cpp).
 #include <cmath>
 
 #include "analysis/pressure_ratio.hpp"
 #include "analysis/rope.hpp"
+#include "ch4_steps.hpp"
 #include "study/chapter.hpp"
 #include "study/thesis_data.hpp"
 
@@ -23,6 +26,9 @@ using namespace drawbend;
 using namespace drawbend::analysis;
 
 namespace {
+
+ch4::FeOptions fe;
+int run_fe = 1, reuse_runs = 0;  // options (ints: the option parser's flags take no value)
 
 void body(study::Chapter& c) {
   // 1. Inputs.
@@ -84,11 +90,27 @@ void body(study::Chapter& c) {
   c.value("t", t.text, "mm");
   c.value("w_half", fmt(w.value / 2), "mm");
   c.plot("fig_4_9", "fig_4_9", {{"datafile", c.out("tables/table_4_rederived.csv")}});
+
+  // 6-10. Our own simulations.
+  fe.run = run_fe != 0;
+  fe.reuse = reuse_runs != 0;
+  c.value("fe_ran", fe.run ? "yes" : "no");
+  if (fe.run) ch4::fe_study(c, fe);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  study::Chapter ch("ch4-new-method", "Chapter 4: the new method (table re-derivations; no FE part)");
+  study::Chapter ch("ch4-new-method", "Chapter 4: the new method, re-derived and with our own simulations");
+  auto& o = ch.options();
+  fe.base.element_length = 1.0;
+  fe.base.through = 4;
+  fe.base.across = 2;
+  o.add(run_fe, "fe", "run the finite-element part (1) or not (0)");
+  o.add(reuse_runs, "reuse-runs", "reuse runs whose deck is unchanged (1), for development only");
+  o.add(fe.base.element_length, "fe-element-length", "element length along the strip in the bend zone [mm]");
+  o.add(fe.base.across, "fe-across", "elements across the half width");
+  o.add(fe.base.through, "fe-through", "elements through the thickness");
+  o.add(fe.base.mass_scaling, "fe-mass-scaling", "mass scaling at 100 mm/s (scaled by (100/v)^2 at speed v)");
   return study::run_chapter(ch, argc, argv, body);
 }

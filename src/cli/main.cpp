@@ -11,14 +11,31 @@
 #include "io/deck.hpp"
 #include "io/run_case.hpp"
 
+namespace drawbend::cli {
+int drawbend_deck_command(int argc, char** argv);
+}
+
 int main(int argc, char** argv) {
   using namespace drawbend;
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::cout << "usage: drawbend run CASE.toml [--out DIR] [--threads N] [--quiet]\n"
-                 "  Runs an explicit finite-element case deck (format: data/cases/README.md).\n";
+                 "  Runs an explicit finite-element case deck (format: data/cases/README.md).\n"
+                 "       drawbend drawbend-deck [--pin-diameter D ...] [--run DIR]\n"
+                 "  Writes (or runs) the draw-bend deck of the chapters' builder; --help lists its options.\n";
     return argc < 2 ? 2 : 0;
   }
   const std::string cmd = argv[1];
+  if (cmd == "drawbend-deck") {
+    try {
+      return cli::drawbend_deck_command(argc - 1, argv + 1);
+    } catch (const InputError& e) {
+      std::cerr << "input error: " << e.what() << "\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      return 3;
+    }
+  }
   if (cmd != "run") {
     std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run)\n";
     return 2;

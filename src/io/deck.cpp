@@ -375,8 +375,9 @@ Deck parse_deck(const std::string& text, const std::string& path) {
         HistorySignal sig{c.str(ht, "name", "output.history"), c.str(ht, "kind", "output.history"),
                           c.str(ht, "target", "output.history"),
                           static_cast<int>(c.num(ht, "component", "output.history", 0.0))};
-        if (sig.kind != "reaction" && sig.kind != "applied" && sig.kind != "tool_force" && sig.kind != "tool_offset")
-          c.fail(ht, "output.history.kind", "expected reaction, applied, tool_force or tool_offset");
+        if (sig.kind != "reaction" && sig.kind != "applied" && sig.kind != "tool_force" && sig.kind != "tool_offset" &&
+            sig.kind != "displacement")
+          c.fail(ht, "output.history.kind", "expected reaction, applied, displacement, tool_force or tool_offset");
         if (sig.component < 0 || sig.component > 2) c.fail(ht, "output.history.component", "expected 0, 1 or 2");
         d.output.history.push_back(sig);
       }

@@ -22,6 +22,15 @@ double signal(const fe::Solver& s, const HistorySignal& h) {
   else if (h.kind == "applied") v = s.applied(h.target);
   else if (h.kind == "tool_force") v = s.tool_force(h.target);
   else if (h.kind == "tool_offset") v = s.tool_offset(h.target);
+  else if (h.kind == "displacement") {  // mean displacement of the node set [mm]
+    const auto& mesh = s.model().mesh;
+    const auto& set = mesh.node_set(h.target);
+    const std::vector<double>* cur[3] = {&s.x(), &s.y(), &s.z()};
+    const std::vector<double>* ref[3] = {&mesh.x, &mesh.y, &mesh.z};
+    double sum = 0;
+    for (int n : set) sum += (*cur[h.component])[n] - (*ref[h.component])[n];
+    return set.empty() ? 0.0 : sum / static_cast<double>(set.size());
+  }
   return v[h.component];
 }
 

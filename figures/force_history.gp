@@ -1,0 +1,10 @@
+# Tension-force histories in the draw step (thesis Figs. 2.19-2.20, 4.6-4.8):
+# outlet tension of the frictionless and friction runs and the back tension.
+# Variables: outfile, datafile (time_s, F_back_N, then one column per run), title_text.
+load figdir."/common.gp"
+set title title_text
+set xlabel "Time in the draw step (s)"
+set ylabel "Force, half model (N)"
+set key below horizontal
+n = system("grep -v '^#' ".datafile." | head -1 | tr ',' '\\n' | wc -l") + 0
+plot for [k=2:n] datafile using 1:k with lines ls (k-1)

@@ -1,0 +1,235 @@
+// The draw-bend builder: deck text, run, reduction.  See drawbend_case.hpp.
+#include "sim/drawbend_case.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "io/deck.hpp"
+#include "io/run_case.hpp"
+
+namespace drawbend::sim {
+
+namespace fs = std::filesystem;
+
+double wrap_length(const DrawBendSpec& s) { return (s.pin_diameter / 2 + s.thickness / 2) * M_PI / 2; }
+
+double draw_length(const DrawBendSpec& s) {
+  return s.draw_length > 0 ? s.draw_length : 1.5 * wrap_length(s) + 6.0;
+}
+
+namespace {
+
+void check_spec(const DrawBendSpec& s) {
+  auto positive = [](double v, const char* what) {
+    if (!(v > 0) || !std::isfinite(v)) throw InputError(std::string("draw-bend spec: ") + what + " must be > 0, found " + fmt(v));
+  };
+  positive(s.pin_diameter, "pin_diameter [mm]");
+  positive(s.thickness, "thickness [mm]");
+  positive(s.width, "width [mm]");
+  positive(s.back_tension, "back_tension [N]");
+  positive(s.speed, "speed [mm/s]");
+  positive(s.element_length, "element_length [mm]");
+  positive(s.mass_scaling, "mass_scaling");
+  if (s.across < 1 || s.through < 1) throw InputError("draw-bend spec: across and through must be >= 1");
+  if (s.hardening.empty()) throw InputError("draw-bend spec: no hardening curve");
+}
+
+std::string num(double v) {
+  std::ostringstream o;
+  o.precision(10);
+  o << v;
+  std::string t = o.str();
+  if (t.find_first_of(".e") == std::string::npos) t += ".0";
+  return t;
+}
+
+}  // namespace
+
+std::string deck_text(const DrawBendSpec& s) {
+  check_spec(s);
+  const double R = s.pin_diameter / 2, t = s.thickness, Lw = wrap_length(s), d = draw_length(s);
+  const double h = s.element_length, coarse = std::max(2.0, 2 * h);
+  // Refined zone: all the strip that is in the bend during the draw, plus a
+  // margin.  After step 1 the bend holds the strip from x = 0 to Lw; at the
+  // end of step 3 from x = -d to Lw - d.
+  const int n_in = static_cast<int>(std::ceil((d + 4.0) / h));
+  const int n_out = static_cast<int>(std::ceil((Lw + 4.0) / h));
+  const double x_in = -n_in * h, x_out = n_out * h;
+  const int c_in = 4, c_out = 4;
+  const double x0 = x_in - c_in * coarse, x1 = x_out + c_out * coarse;
+  const double ramp = 0.005, t1 = 0.05;
+  const double omega = (M_PI / 2) / (t1 - ramp);
+  const double t3 = d / s.speed + 0.005;  // the 0.01 s speed ramp loses speed * 0.005
+  std::ostringstream o;
+  o << "# Draw-bend case written by drawbend's builder (src/sim/drawbend_case.cpp).\n"
+    << "# Pin " << num(s.pin_diameter) << " mm, 90 deg wrap, back tension " << num(s.back_tension)
+    << " N on the half model, outlet speed " << num(s.speed) << " mm/s, slide " << num(d) << " mm.\n"
+    << "# Units: mm, N, MPa, s, t/mm^3.  Rerun with: drawbend run deck.toml --out DIR\n"
+    << "[case]\nname = \"" << s.name << "\"\ndescription = \"draw-bend, pin " << num(s.pin_diameter) << " mm, "
+    << (s.friction.empty() ? std::string("frictionless") : "friction " + s.friction) << "\"\n\n"
+    << "[mesh]\nx = { breaks = [" << num(x0) << ", " << num(x_in) << ", " << num(x_out) << ", " << num(x1)
+    << "], counts = [" << c_in << ", " << n_in + n_out << ", " << c_out << "] }\n"
+    << "y = { from = 0.0, to = " << num(s.width) << ", n = " << s.across << " }\n"
+    << "z = { from = " << num(R) << ", to = " << num(R + t) << ", n = " << s.through << " }\n\n"
+    << "[material]\ntype = \"j2\"\nE = 70000.0\nnu = 0.33\ndensity = 2.7e-9\nhardening = \"" << s.hardening
+    << "\"\n\n[numerics]\ndt_safety = 0.8\nmass_scaling = " << num(s.mass_scaling) << "\n\n"
+    << "[[tool]]\nname = \"pin\"\ndrive = \"fixed\"\n[[tool.surface]]\nkind = \"cylinder\"\n"
+    << "origin = [0.0, 0.0, 0.0]\naxis = [0.0, 1.0, 0.0]\nradius = " << num(R) << "\n\n"
+    << "[[contact]]\nfaces = \"zmin\"\ntool = \"pin\"\npenalty = " << num(s.penalty) << "\n";
+  if (!s.friction.empty()) o << "friction = " << s.friction << "\n";
+  // Step 1 (Sec. 4.2: "while fixing the inlet end, the outlet end was loosely
+  // bent around the pin by applying a circular motion"): the outlet end turns
+  // 90 deg about the centre (a, a) in the x-z plane, a = Rm pi/4 with Rm the
+  // mid-surface radius, which carries the mid-surface end point (x1, Rm) to
+  // (Rm, -(x1 - Rm pi/2)): the strip's length is kept, wrapped round the pin.
+  // (Turning about the pin axis instead stretches the strip by R pi/2, some
+  // 40 %, and hardens it before the test.)
+  const double a = (R + t / 2) * M_PI / 4;
+  o << "\n[[step]]\nname = \"bend\"\nduration = " << num(t1) << "\ndamping = 50.0\nfriction = false\n"
+    << "fixed = [ { set = \"ymin\", dof = [false, true, false] }, { set = \"xmin\", dof = [true, true, true] } ]\n"
+    << "rotation = [ { set = \"xmax\", centre = [" << num(a) << ", 0.0, " << num(a)
+    << "], axis = [0.0, 1.0, 0.0], omega = { t = [0.0, "
+    << num(ramp) << ", " << num(t1 - ramp) << ", " << num(t1) << "], v = [0.0, " << num(omega) << ", " << num(omega)
+    << ", 0.0] } } ]\n\n"
+    << "[[step]]\nname = \"tension\"\nduration = 0.04\ndamping = 150.0\nfriction = false\n"
+    << "fixed = [ { set = \"ymin\", dof = [false, true, false] }, { set = \"xmax\", dof = [true, true, true] }, "
+       "{ set = \"xmin\", dof = [false, false, true] } ]\n"
+    << "force = [ { set = \"xmin\", direction = [-1.0, 0.0, 0.0], magnitude = { t = [0.0, 0.02], v = [0.0, "
+    << num(s.back_tension) << "] } } ]\n\n"
+    << "[[step]]\nname = \"draw\"\nduration = " << num(t3) << "\n"
+    << "fixed = [ { set = \"ymin\", dof = [false, true, false] }, { set = \"xmax\", dof = [true, true, false] }, "
+       "{ set = \"xmin\", dof = [false, false, true] } ]\n"
+    << "force = [ { set = \"xmin\", direction = [-1.0, 0.0, 0.0], magnitude = " << num(s.back_tension) << " } ]\n"
+    << "velocity = [ { set = \"xmax\", direction = [0.0, 0.0, -1.0], speed = { t = [0.0, 0.01], v = [0.0, "
+    << num(s.speed) << "] } } ]\n\n"
+    << "[output]\nfields_per_step = " << std::max(1, s.snapshots) << "\nhistory = [\n"
+    << "  { name = \"outlet_force_N\", kind = \"reaction\", target = \"xmax\", component = 2 },\n"
+    << "  { name = \"back_tension_N\", kind = \"applied\", target = \"xmin\", component = 0 },\n"
+    << "  { name = \"inlet_x_mm\", kind = \"displacement\", target = \"xmin\", component = 0 },\n"
+    << "  { name = \"pin_force_x_N\", kind = \"tool_force\", target = \"pin\", component = 0 },\n"
+    << "  { name = \"pin_force_z_N\", kind = \"tool_force\", target = \"pin\", component = 2 },\n"
+    << "]\n";
+  return o.str();
+}
+
+namespace {
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+/// The last contact map of pair 0 written by run_case (contact_<k>_0.csv).
+fs::path last_map(const fs::path& dir) {
+  int best = -1;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string n = e.path().filename().string();
+    if (n.rfind("contact_", 0) == 0 && n.size() > 14 && n.substr(n.size() - 6) == "_0.csv") {
+      const int k = std::stoi(n.substr(8, n.size() - 14));
+      best = std::max(best, k);
+    }
+  }
+  if (best < 0) throw InputError(dir.string() + ": no contact map");
+  return dir / ("contact_" + std::to_string(best) + "_0.csv");
+}
+
+void reduce(DrawBendResult& r) {
+  const fs::path dir(r.dir);
+  r.history = read_csv((dir / "history.csv").string());
+  const CsvTable& h = r.history;
+  std::vector<double> t, fy;
+  for (const auto& row : h.rows)
+    if (h.text(row, "step") == "draw") {
+      t.push_back(h.number(row, "time_s"));
+      fy.push_back(-h.number(row, "outlet_force_N"));  // the outlet grip pulls along -z
+      r.F_back = -h.number(row, "back_tension_N");
+    }
+  if (t.size() < 12) throw InputError(r.dir + ": too few draw-step samples in history.csv");
+  // Chapters 3-4: mean of the last third of step 3.
+  const size_t n = t.size(), i3 = n - n / 3;
+  double s = 0, s2 = 0;
+  for (size_t i = i3; i < n; ++i) s += fy[i];
+  r.F_out = s / static_cast<double>(n - i3);
+  for (size_t i = i3; i < n; ++i) s2 += (fy[i] - r.F_out) * (fy[i] - r.F_out);
+  r.F_out_std = std::sqrt(s2 / static_cast<double>(n - i3));
+  // Chapter 2: linear regression of the last 25 %, read at the end of the step.
+  const size_t i4 = n - n / 4;
+  double st = 0, sf = 0, stt = 0, stf = 0;
+  const double m = static_cast<double>(n - i4);
+  for (size_t i = i4; i < n; ++i) st += t[i], sf += fy[i], stt += t[i] * t[i], stf += t[i] * fy[i];
+  const double slope = (m * stf - st * sf) / (m * stt - st * st);
+  r.F_out_regression = sf / m + slope * (t.back() - st / m);
+  // Contact map at the end of the draw, as angle round the pin from the inlet
+  // tangent point (top of the pin) and position across the width.
+  const CsvTable cm = read_csv(last_map(dir).string());
+  for (const auto& row : cm.rows) {
+    MapNode q;
+    q.angle_deg = std::atan2(cm.number(row, "x_mm"), cm.number(row, "z_mm")) * 180.0 / M_PI;
+    q.y = cm.number(row, "y_mm");
+    q.pressure = cm.number(row, "pressure_MPa");
+    q.area = cm.number(row, "area_mm2");
+    r.map.push_back(q);
+  }
+  const CsvTable sum = read_csv((dir / "summary.csv").string());
+  for (const auto& row : sum.rows) {
+    const std::string& q = sum.text(row, "quantity");
+    const double v = sum.number(row, "value");
+    if (q == "energy_balance_error") r.balance_error = v;
+    else if (q == "hourglass_over_internal") r.hourglass_ratio = v;
+    else if (q == "kinetic_over_internal") r.kinetic_ratio = v;
+    else if (q == "max_penetration") r.max_penetration = v;
+    else if (q == "wall_time") r.wall_seconds = v;
+    else if (q == "cycles") r.cycles = static_cast<long>(v);
+  }
+}
+
+}  // namespace
+
+analysis::PressureMap DrawBendResult::pressure_map(const std::string& label) const {
+  analysis::PressureMap m;
+  m.label = label;
+  for (const auto& q : map) {
+    m.p_MPa.push_back(q.pressure);
+    m.area_mm2.push_back(q.area);
+  }
+  return m;
+}
+
+double DrawBendResult::mean_pressure() const {
+  double f = 0, a = 0;
+  for (const auto& q : map)
+    if (q.pressure > 0) f += q.pressure * q.area, a += q.area;
+  return a > 0 ? f / a : 0.0;
+}
+
+DrawBendResult run_drawbend(const DrawBendSpec& s, const std::string& dir, bool reuse, bool quiet) {
+  const std::string text = deck_text(s);
+  fs::create_directories(dir);
+  const fs::path deck_path = fs::path(dir) / "deck.toml";
+  DrawBendResult r;
+  r.spec = s;
+  r.dir = dir;
+  const bool cached = reuse && fs::exists(deck_path) && read_text(deck_path) == text &&
+                      fs::exists(fs::path(dir) / "summary.csv");
+  if (!cached) {
+    fs::remove(fs::path(dir) / "summary.csv");
+    write_file_atomic(deck_path.string(), text);
+    io::Deck deck = io::parse_deck(text, deck_path.string());
+    io::RunOptions ro;
+    ro.out_dir = dir;
+    ro.quiet = quiet;
+    std::ostringstream log;
+    io::run_case(deck, ro, quiet ? static_cast<std::ostream&>(log) : std::cout);
+    write_file_atomic((fs::path(dir) / "run.log").string(), log.str());
+  }
+  reduce(r);
+  return r;
+}
+
+}  // namespace drawbend::sim

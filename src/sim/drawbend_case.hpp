@@ -1,0 +1,88 @@
+#pragma once
+// The draw-bend model of Chapters 2-5: a builder that writes a case deck from a
+// few physical parameters, runs it with the solver, and reduces the run to the
+// thesis's quantities.  The deck is written next to the results, so a reader
+// can rerun or edit it with `drawbend run` without recompiling.
+//
+// The model (Secs. 2.2, 3.4, 4.2): the top half of the strip by symmetry
+// (y = 0 plane), thickness 1.04 mm, a pin of diameter D with a 90 deg wrap,
+// and the thesis's three steps:
+//   1. "bend":    the outlet end moves on a circle about the pin axis and bends
+//                 the straight strip loosely round the pin; the inlet end may
+//                 slide along the strip so that the strip is not stretched;
+//   2. "tension": back tension ramped on the inlet end, outlet held, with
+//                 dynamic relaxation so that step 3 starts quiet;
+//   3. "draw":    the outlet end moves at `speed` while the inlet end follows
+//                 under constant back tension, over `draw_length`.
+// Forces are half-model forces [N]; lengths mm, pressure MPa, time s.
+#include <string>
+#include <vector>
+
+#include "analysis/new_method.hpp"
+#include "core/csv.hpp"
+
+namespace drawbend::sim {
+
+struct DrawBendSpec {
+  std::string name = "drawbend";
+  double pin_diameter = 12.7;   ///< D [mm]
+  double thickness = 1.04;      ///< t [mm]
+  double width = 12.7;          ///< modelled (half) width [mm]
+  double back_tension = 756.2;  ///< F_X on the half model [N]
+  double speed = 100.0;         ///< outlet speed in step 3 [mm/s]
+  double draw_length = 0;       ///< slide in step 3 [mm]; 0: 1.5 wrap lengths + 6 mm (Sec. 2.3.2)
+  /// Friction of the pin contact as a TOML inline table, e.g.
+  /// `{ law = "coulomb", mu = 0.1 }`; empty: frictionless (the rotating pin).
+  std::string friction;
+  double element_length = 0.5;  ///< along the strip in the refined zone [mm]
+  int across = 2;               ///< elements across the half width
+  int through = 4;              ///< elements through the thickness
+  double mass_scaling = 1e4;    ///< uniform density factor
+  double penalty = 0.1;         ///< contact penalty scale
+  std::string hardening;        ///< hardening-curve CSV (plastic strain, true stress)
+  int snapshots = 4;            ///< contact maps / VTU snapshots in the draw step
+};
+
+/// Mid-surface wrap length (D/2 + t/2) * pi/2 [mm].
+double wrap_length(const DrawBendSpec& s);
+/// The slide of step 3 [mm].
+double draw_length(const DrawBendSpec& s);
+
+/// The case deck (TOML) for the spec.
+std::string deck_text(const DrawBendSpec& s);
+
+/// One node of the pin contact map [MPa, mm, mm^2].
+struct MapNode {
+  double angle_deg = 0;  ///< position round the pin from the inlet tangent point (0) to the outlet one (90)
+  double y = 0;          ///< across the width, 0 = strip centre (symmetry plane)
+  double pressure = 0;
+  double area = 0;
+};
+
+struct DrawBendResult {
+  DrawBendSpec spec;
+  std::string dir;                      ///< run directory (deck, history, maps, VTU)
+  double F_back = 0;                    ///< F_X: applied back tension [N]
+  double F_out = 0;                     ///< F_Y: outlet tension, mean of the last third of step 3 [N]
+  double F_out_regression = 0;          ///< F_Y from a linear regression of the last 25 % at its end [N]
+  double F_out_std = 0;                 ///< standard deviation over the last third [N]
+  std::vector<MapNode> map;             ///< contact map at the end of step 3
+  double balance_error = 0, hourglass_ratio = 0, kinetic_ratio = 0, max_penetration = 0;
+  double wall_seconds = 0;
+  long cycles = 0;
+  CsvTable history;                     ///< the run's history.csv
+
+  /// F_Y - F_X [N]: the bending force on a frictionless pin.
+  double tension_rise() const { return F_out - F_back; }
+  /// The map as the new method needs it (nodal pressure and area, half model).
+  analysis::PressureMap pressure_map(const std::string& label) const;
+  /// Average contact pressure over the nodes in contact [MPa] (area weighted).
+  double mean_pressure() const;
+};
+
+/// Write the deck to `dir`/deck.toml, run it (one line of progress per step
+/// unless quiet) and reduce it.  With `reuse`, a run whose directory already
+/// holds the identical deck and a complete summary is read, not rerun.
+DrawBendResult run_drawbend(const DrawBendSpec& s, const std::string& dir, bool reuse = false, bool quiet = true);
+
+}  // namespace drawbend::sim

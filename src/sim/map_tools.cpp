@@ -1,0 +1,106 @@
+// Contact-map reductions for the draw-bend chapters.  See map_tools.hpp.
+#include "sim/map_tools.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace drawbend::sim {
+
+std::vector<Row> rows_of(const std::vector<MapNode>& map) {
+  std::map<long long, Row> by_y;  // keyed by y in nm: rows of a structured strip share y exactly
+  for (const auto& q : map) {
+    auto& r = by_y[std::llround(q.y * 1e6)];
+    r.y = q.y;
+    r.nodes.push_back(q);
+  }
+  std::vector<Row> out;
+  for (auto& [k, r] : by_y) {
+    std::sort(r.nodes.begin(), r.nodes.end(), [](const MapNode& a, const MapNode& b) { return a.angle_deg < b.angle_deg; });
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+ContactArc contact_arc(const Row& r, double threshold) {
+  const auto& n = r.nodes;
+  int first = -1, last = -1;
+  for (int i = 0; i < static_cast<int>(n.size()); ++i)
+    if (n[i].pressure > threshold) {
+      if (first < 0) first = i;
+      last = i;
+    }
+  if (first < 0) return {};
+  auto cross = [&](int a, int b) {  // angle where p crosses the threshold between nodes a (below) and b (above)
+    const double pa = n[a].pressure, pb = n[b].pressure;
+    return n[a].angle_deg + (threshold - pa) / (pb - pa) * (n[b].angle_deg - n[a].angle_deg);
+  };
+  ContactArc arc;
+  arc.start_deg = first > 0 ? cross(first - 1, first) : n[first].angle_deg;
+  arc.end_deg = last + 1 < static_cast<int>(n.size()) ? cross(last + 1, last) : n[last].angle_deg;
+  return arc;
+}
+
+Peaks peaks(const Row& r) {
+  Peaks p;
+  for (const auto& q : r.nodes) {
+    if (q.angle_deg < 45.0 && q.pressure > p.entry) p.entry = q.pressure, p.entry_deg = q.angle_deg;
+    if (q.angle_deg >= 45.0 && q.pressure > p.exit) p.exit = q.pressure, p.exit_deg = q.angle_deg;
+  }
+  const auto& n = r.nodes;
+  for (std::size_t i = 0; i + 1 < n.size(); ++i)
+    if (n[i].angle_deg <= 45.0 && n[i + 1].angle_deg > 45.0) {
+      const double f = (45.0 - n[i].angle_deg) / (n[i + 1].angle_deg - n[i].angle_deg);
+      p.middle = n[i].pressure + f * (n[i + 1].pressure - n[i].pressure);
+    }
+  return p;
+}
+
+double max_pressure(const Row& r) {
+  double m = 0;
+  for (const auto& q : r.nodes) m = std::max(m, q.pressure);
+  return m;
+}
+
+std::vector<double> area_by_pressure(const std::vector<MapNode>& map, const std::vector<double>& edges) {
+  std::vector<double> a(edges.size(), 0.0);
+  for (const auto& q : map) {
+    if (!(q.pressure > 0)) continue;
+    int k = static_cast<int>(std::upper_bound(edges.begin(), edges.end(), q.pressure) - edges.begin()) - 1;
+    if (k < 0) continue;
+    a[k] += q.area;
+  }
+  return a;
+}
+
+void save_map_grid(const std::vector<MapNode>& map, const std::string& path, const std::string& what, double lo,
+                   double hi) {
+  std::string text = "# " + what + "\n# angle_deg,y_mm,pressure_MPa (gnuplot grid: one block per row)\n";
+  for (const auto& r : rows_of(map)) {
+    for (const auto& q : r.nodes)
+      if (q.angle_deg >= lo && q.angle_deg <= hi)
+        text += fmt(q.angle_deg, 6) + "," + fmt(q.y, 6) + "," + fmt(q.pressure, 6) + "\n";
+    text += "\n";
+  }
+  write_file_atomic(path, text);
+}
+
+void save_row_profiles(const std::vector<MapNode>& map, const std::string& path, const std::string& what) {
+  const auto rows = rows_of(map);
+  std::vector<std::string> header{"angle_deg"};
+  for (const auto& r : rows) header.push_back("p_y" + fmt(r.y, 4));
+  CsvWriter w(header);
+  w.comment(what);
+  w.comment("pressure [MPa] along each row of nodes (y [mm] from the strip centre); angle from the inlet tangent point");
+  const std::size_t n = rows.empty() ? 0 : rows.front().nodes.size();
+  for (const auto& r : rows)
+    if (r.nodes.size() != n) throw InputError(path + ": rows of the map differ in length");
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<std::string> row{fmt(rows.front().nodes[i].angle_deg, 6)};
+    for (const auto& r : rows) row.push_back(fmt(r.nodes[i].pressure, 6));
+    w.row(row);
+  }
+  w.save(path);
+}
+
+}  // namespace drawbend::sim
