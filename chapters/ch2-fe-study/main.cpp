@@ -1,5 +1,5 @@
-// Chapter 2: the finite-element study of the draw-bend test.  This part needs
-// no finite-element solver: it checks the arithmetic the text states between
+// Chapter 2: the finite-element study of the draw-bend test.  Steps 1-3 need
+// no finite-element solver: they check the arithmetic the text states between
 // its own numbers (contact angle, wrap deficit, steady-state ratio, sliding
 // distance, mass-scaling speed-up, retrieved friction) and Swift's bending
 // force estimate, Eq. (2.1).  Forces are half-model forces in N.
@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "analysis/rope.hpp"
+#include "ch2_steps.hpp"
 #include "study/chapter.hpp"
 #include "study/thesis_data.hpp"
 
@@ -20,6 +21,8 @@ using namespace drawbend::analysis;
 namespace {
 
 double swift_pin_mm = 12.7;  // assumption for Eq. (2.1); --swift-pin-diameter
+ch2::FeOptions fe;
+int run_fe = 1, reuse_runs = 0;
 
 void body(study::Chapter& c) {
   // 1. Statements that follow from other printed numbers.
@@ -78,13 +81,26 @@ void body(study::Chapter& c) {
   c.value("t_step3_start", fmt(t0), "s");
   c.value("t_steady", study::scalar(sc, "ch2_steady_time").text, "s");
   c.value("d_steady", study::scalar(sc, "ch2_steady_sliding_distance").text, "mm");
+
+  // 4-8. Our simulations.
+  fe.reuse = reuse_runs != 0;
+  if (run_fe) ch2::fe_study(c, fe);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  study::Chapter ch("ch2-fe-study", "Chapter 2: the draw-bend FE study (statements re-derived; no FE part)");
-  ch.options().add(swift_pin_mm, "swift-pin-diameter",
-                   "pin diameter [mm] assumed for Swift's Eq. (2.1); Chapter 2 does not state it");
+  study::Chapter ch("ch2-fe-study", "Chapter 2: the draw-bend FE study, re-derived and with our own simulations");
+  auto& o = ch.options();
+  o.add(swift_pin_mm, "swift-pin-diameter", "pin diameter [mm] assumed for Swift's Eq. (2.1); Chapter 2 does not state it");
+  fe.base.element_length = 1.0;
+  o.add(run_fe, "fe", "run the finite-element part (1) or not (0)");
+  o.add(reuse_runs, "reuse-runs", "reuse runs whose deck is unchanged (1), for development only");
+  o.add(fe.base.element_length, "fe-element-length", "element length along the strip in the bend zone [mm]");
+  o.add(fe.base.across, "fe-across", "elements across the half width");
+  o.add(fe.base.through, "fe-through", "elements through the thickness");
+  o.add(fe.base.mass_scaling, "fe-mass-scaling", "mass scaling of the chapter's runs (at 100 mm/s)");
+  o.add(fe.low_mass_scaling, "fe-low-mass-scaling", "mass scaling of the comparison run");
+  o.add(fe.fine_element_length, "fe-fine-element-length", "element length of the convergence runs [mm]");
   return study::run_chapter(ch, argc, argv, body);
 }

@@ -12,6 +12,8 @@
 //   5. Checks of the text's statements.
 //   6. The strip-draw verification in our solver (Table 3.2, Fig. 3.8) and the
 //      update interval (Figs. 3.5-3.7), from data/cases/strip_draw.toml.
+//   7. Draw-bend on three pins at 10 MPa (Sec. 3.5, Figs. 3.10-3.18),
+//      ch3_drawbend.cpp.
 #include <cmath>
 
 #include "analysis/stribeck.hpp"
@@ -23,6 +25,9 @@ using namespace drawbend;
 using namespace drawbend::analysis;
 
 namespace {
+
+sim::DrawBendSpec fe;            // mesh and numerics of the draw-bend runs
+int run_fe = 1, reuse_runs = 0;  // options
 
 void body(study::Chapter& c) {
   // 1. Inputs.
@@ -92,11 +97,26 @@ void body(study::Chapter& c) {
 
   // 6. The solver.
   ch3::strip_draw(c, s31, t32);
+
+  // 7. Draw-bend on three pins.
+  c.value("db_ran", run_fe ? "yes" : "no");
+  c.value("db_h", fmt(fe.element_length), "mm");
+  c.value("db_across", std::to_string(fe.across));
+  c.value("db_through", std::to_string(fe.through));
+  if (run_fe) ch3::drawbend_pins(c, s33, fe, reuse_runs != 0);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  study::Chapter ch("ch3-stribeck", "Chapter 3: the Stribeck friction curve and its strip-draw verification");
+  study::Chapter ch("ch3-stribeck", "Chapter 3: the Stribeck friction curve, its strip-draw verification and draw-bend");
+  auto& o = ch.options();
+  fe.element_length = 1.0;
+  o.add(run_fe, "fe", "run the draw-bend simulations (1) or not (0)");
+  o.add(reuse_runs, "reuse-runs", "reuse runs whose deck is unchanged (1), for development only");
+  o.add(fe.element_length, "fe-element-length", "element length along the strip in the bend zone [mm]");
+  o.add(fe.across, "fe-across", "elements across the half width");
+  o.add(fe.through, "fe-through", "elements through the thickness");
+  o.add(fe.mass_scaling, "fe-mass-scaling", "mass scaling at 100 mm/s (scaled by (100/v)^2 at speed v)");
   return study::run_chapter(ch, argc, argv, body);
 }

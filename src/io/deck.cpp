@@ -371,13 +371,15 @@ Deck parse_deck(const std::string& text, const std::string& path) {
     if (const auto* hs = c.array_of_tables(t, "history", "output"))
       for (const auto& h : *hs) {
         const auto& ht = *h.as_table();
-        c.allowed(ht, "output.history", {"name", "kind", "target", "component"});
-        HistorySignal sig{c.str(ht, "name", "output.history"), c.str(ht, "kind", "output.history"),
-                          c.str(ht, "target", "output.history"),
+        c.allowed(ht, "output.history", {"name", "kind", "target", "component", "point"});
+        const std::string kind = c.str(ht, "kind", "output.history");
+        HistorySignal sig{c.str(ht, "name", "output.history"), kind,
+                          kind == "strain" ? std::string() : c.str(ht, "target", "output.history"),
                           static_cast<int>(c.num(ht, "component", "output.history", 0.0))};
+        if (kind == "strain") sig.point = c.vec(ht, "point", "output.history");
         if (sig.kind != "reaction" && sig.kind != "applied" && sig.kind != "tool_force" && sig.kind != "tool_offset" &&
-            sig.kind != "displacement")
-          c.fail(ht, "output.history.kind", "expected reaction, applied, displacement, tool_force or tool_offset");
+            sig.kind != "displacement" && sig.kind != "strain")
+          c.fail(ht, "output.history.kind", "expected reaction, applied, displacement, strain, tool_force or tool_offset");
         if (sig.component < 0 || sig.component > 2) c.fail(ht, "output.history.component", "expected 0, 1 or 2");
         d.output.history.push_back(sig);
       }

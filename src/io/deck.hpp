@@ -16,6 +16,10 @@ struct HistorySignal {
   std::string kind;     ///< "reaction", "applied" (node set) or "tool_force", "tool_offset" (tool)
   std::string target;   ///< node set or tool name
   int component = 0;    ///< 0, 1, 2 = x, y, z
+  /// kind "strain": the element whose reference centroid is nearest `point`
+  /// [mm]; component 0 = logarithmic strain along the element's reference x
+  /// edges, 1 = equivalent plastic strain.
+  fe::Vec3 point{0, 0, 0};
 };
 
 struct OutputSpec {

@@ -16,7 +16,36 @@ namespace drawbend::io {
 
 namespace {
 
-double signal(const fe::Solver& s, const HistorySignal& h) {
+/// The element whose reference centroid is nearest p (lowest index on ties).
+int nearest_element(const fe::Mesh& m, const fe::Vec3& p) {
+  int best = 0;
+  double bd = INFINITY;
+  for (int e = 0; e < m.num_elements(); ++e) {
+    double c[3] = {0, 0, 0};
+    for (int a : m.hex[e]) c[0] += m.x[a] / 8, c[1] += m.y[a] / 8, c[2] += m.z[a] / 8;
+    const double d = (c[0] - p[0]) * (c[0] - p[0]) + (c[1] - p[1]) * (c[1] - p[1]) + (c[2] - p[2]) * (c[2] - p[2]);
+    if (d < bd) bd = d, best = e;
+  }
+  return best;
+}
+
+/// Log strain along the element's reference x edges: ln of the mean current
+/// length of its four x-edges (node pairs 0-1, 3-2, 4-5, 7-6) over the reference.
+double edge_strain(const fe::Solver& s, int e) {
+  const auto& m = s.model().mesh;
+  const auto& h = m.hex[e];
+  const int pairs[4][2] = {{0, 1}, {3, 2}, {4, 5}, {7, 6}};
+  double L = 0, L0 = 0;
+  for (const auto& pr : pairs) {
+    const int a = h[pr[0]], b = h[pr[1]];
+    L += std::hypot(s.x()[b] - s.x()[a], s.y()[b] - s.y()[a], s.z()[b] - s.z()[a]);
+    L0 += std::hypot(m.x[b] - m.x[a], m.y[b] - m.y[a], m.z[b] - m.z[a]);
+  }
+  return std::log(L / L0);
+}
+
+double signal(const fe::Solver& s, const HistorySignal& h, int element) {
+  if (h.kind == "strain") return h.component == 0 ? edge_strain(s, element) : s.plastic_strain(element);
   fe::Vec3 v{0, 0, 0};
   if (h.kind == "reaction") v = s.reaction(h.target);
   else if (h.kind == "applied") v = s.applied(h.target);
@@ -128,7 +157,11 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   // History file.
   std::vector<std::string> header{"time_s", "step", "dt_s", "kinetic_mJ", "internal_mJ", "hourglass_mJ",
                                   "external_work_mJ", "friction_mJ", "damping_mJ", "balance_error"};
-  for (const auto& h : deck.output.history) header.push_back(h.name);
+  std::vector<int> elements;  // per signal: the tracked element of a "strain" signal
+  for (const auto& h : deck.output.history) {
+    header.push_back(h.name);
+    elements.push_back(h.kind == "strain" ? nearest_element(m.mesh, h.point) : -1);
+  }
   CsvWriter hist(header);
   hist.comment("time histories of " + deck.path + " (energies in mJ = N mm)");
   std::vector<std::pair<double, std::string>> snapshots;
@@ -157,7 +190,8 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
       std::vector<std::string> row{fmt(p.time, 10), p.step->name, fmt(p.dt, 6), fmt(e.kinetic, 8), fmt(e.internal, 8),
                                    fmt(e.hourglass, 8), fmt(e.external_work, 8), fmt(e.friction, 8),
                                    fmt(e.damping, 8), fmt(e.balance_error(), 4)};
-      for (const auto& h : deck.output.history) row.push_back(fmt(signal(solver, h), 8));
+      for (std::size_t k = 0; k < deck.output.history.size(); ++k)
+        row.push_back(fmt(signal(solver, deck.output.history[k], elements[k]), 8));
       hist.row(row);
       next_hist += interval;
     }

@@ -47,6 +47,13 @@ std::string num(double v) {
   return t;
 }
 
+/// Text safe inside a TOML basic string: double quotes become single quotes.
+std::string quoted_free(std::string t) {
+  for (char& ch : t)
+    if (ch == '"' || ch == '\\') ch = '\'';
+  return t;
+}
+
 }  // namespace
 
 std::string deck_text(const DrawBendSpec& s) {
@@ -70,7 +77,7 @@ std::string deck_text(const DrawBendSpec& s) {
     << " N on the half model, outlet speed " << num(s.speed) << " mm/s, slide " << num(d) << " mm.\n"
     << "# Units: mm, N, MPa, s, t/mm^3.  Rerun with: drawbend run deck.toml --out DIR\n"
     << "[case]\nname = \"" << s.name << "\"\ndescription = \"draw-bend, pin " << num(s.pin_diameter) << " mm, "
-    << (s.friction.empty() ? std::string("frictionless") : "friction " + s.friction) << "\"\n\n"
+    << (s.friction.empty() ? std::string("frictionless") : "friction " + quoted_free(s.friction)) << "\"\n\n"
     << "[mesh]\nx = { breaks = [" << num(x0) << ", " << num(x_in) << ", " << num(x_out) << ", " << num(x1)
     << "], counts = [" << c_in << ", " << n_in + n_out << ", " << c_out << "] }\n"
     << "y = { from = 0.0, to = " << num(s.width) << ", n = " << s.across << " }\n"
@@ -111,8 +118,20 @@ std::string deck_text(const DrawBendSpec& s) {
     << "  { name = \"back_tension_N\", kind = \"applied\", target = \"xmin\", component = 0 },\n"
     << "  { name = \"inlet_x_mm\", kind = \"displacement\", target = \"xmin\", component = 0 },\n"
     << "  { name = \"pin_force_x_N\", kind = \"tool_force\", target = \"pin\", component = 0 },\n"
-    << "  { name = \"pin_force_z_N\", kind = \"tool_force\", target = \"pin\", component = 2 },\n"
-    << "]\n";
+    << "  { name = \"pin_force_z_N\", kind = \"tool_force\", target = \"pin\", component = 2 },\n";
+  // Strain spots (Sec. 2.3.2): the centre-row elements on the contact side
+  // ("inside") and the free side ("outside") at a section that passes the
+  // whole wrap during the draw: it enters at a slide of d - Lw - 2 mm.
+  const double xs = -(d - Lw - 2.0), ys = s.width / (2.0 * s.across), dz = t / (2.0 * s.through);
+  for (int k = 0; k < 2; ++k) {
+    const char* side = k == 0 ? "inside" : "outside";
+    const double zs = k == 0 ? R + dz : R + t - dz;
+    o << "  { name = \"strain_" << side << "\", kind = \"strain\", point = [" << num(xs) << ", " << num(ys) << ", "
+      << num(zs) << "], component = 0 },\n"
+      << "  { name = \"plastic_strain_" << side << "\", kind = \"strain\", point = [" << num(xs) << ", " << num(ys)
+      << ", " << num(zs) << "], component = 1 },\n";
+  }
+  o << "]\n";
   return o.str();
 }
 

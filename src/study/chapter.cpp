@@ -96,6 +96,8 @@ void Chapter::value(const std::string& key, const std::string& text, const std::
 }
 
 int Chapter::finish() {
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  value("chapter_wall", wall < 120 ? fmt_fixed(wall, 1) + "\u00a0s" : fmt_fixed(wall / 60, 1) + "\u00a0min");
   checks_->write(out("checks.csv"));
   CsvWriter w({"key", "value", "unit"});
   w.comment("numbers quoted by chapter " + id_ + "'s results.md as {{key}}");

@@ -9,6 +9,7 @@
 //   tables/*.csv    generated tables
 //   figures/*.svg   gnuplot figures
 #include <array>
+#include <chrono>
 #include <functional>
 #include <map>
 #include <memory>
@@ -59,7 +60,8 @@ class Chapter {
                          const std::vector<std::string>& inputs,
                          const std::function<double(const std::vector<double>&)>& f, const std::string& unit);
 
-  /// Write checks.csv and values.csv, print the summary; returns the exit code
+  /// Write checks.csv and values.csv (with the chapter's wall time as
+  /// {{chapter_wall}}), print the summary; returns the exit code
   /// (non-zero when a check that should pass fails).
   int finish();
 
@@ -69,6 +71,7 @@ class Chapter {
   Options options_;
   std::unique_ptr<Checks> checks_;
   std::vector<std::array<std::string, 3>> values_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 /// Run a chapter's body with uniform error handling: input errors print one

@@ -1,0 +1,130 @@
+// Chapter 3, Sec. 3.5: draw-bend simulations on three pins (12.7, 25.4 and
+// 38.1 mm) at the same 10 MPa average contact pressure, with Coulomb (mu = 0.1),
+// Stribeck (Table 3.3) and frictionless contact, drawn at 50 mm/s.  The
+// conventional method (Eq. 2.3, forces averaged over the last third of step 3)
+// retrieves mu; the pressure profiles explain why the Stribeck mu falls with
+// the pin diameter (Figs. 3.10-3.18).  Forces: half model, N; MPa; mm; mm/s.
+//
+// Back tension per pin: Eq. (2.2) with the rope estimate F_Y = F_X e^(0.1 pi/2)
+// + F_B (F_B by Swift's Eq. 2.1 with the 0.2 % yield stress of Table 5.1)
+// solved for F_X at 10 MPa; the same F_X for the three friction cases, as in
+// the thesis.  The average pressures the runs reach are reported.
+#include <chrono>
+#include <cmath>
+#include <iostream>
+
+#include "analysis/rope.hpp"
+#include "ch3_steps.hpp"
+#include "sim/drawbend_case.hpp"
+#include "sim/map_tools.hpp"
+#include "study/thesis_data.hpp"
+
+namespace ch3 {
+
+using namespace drawbend;
+using namespace drawbend::analysis;
+
+void drawbend_pins(study::Chapter& c, const StribeckParams& s33, const sim::DrawBendSpec& base, bool reuse) {
+  const std::string sc = c.data("thesis/scalars.csv");
+  const double p_target = study::scalar(sc, "ch3_target_pressure").value;
+  const double v = study::scalar(sc, "ch3_outlet_speed").value;
+  const double mu_c = study::scalar(sc, "ch3_coulomb_mu_input").value;
+  const double w_half = study::scalar(sc, "ch5_strip_width").value / 2;
+  const double t = study::scalar(sc, "ch5_strip_thickness").value;
+  const CsvTable t51 = read_csv(c.data("thesis/table_5_1.csv"));
+  const double ys = t51.number(t51.rows.front(), "YS02_MPa");  // RD
+  const std::vector<double> pins{study::scalar(sc, "ch3_pin_diameter_small").value,
+                                 study::scalar(sc, "ch3_pin_diameter_mid").value,
+                                 study::scalar(sc, "ch3_pin_diameter_large").value};
+  const std::string laws[3] = {"frictionless", "coulomb", "stribeck"};
+
+  const auto wall0 = std::chrono::steady_clock::now();
+  auto tab = c.table({"pin_mm", "F_X_N", "F_B_N", "F_Y_coulomb_N", "F_Y_stribeck_N", "P_avg_coulomb_MPa",
+                      "P_avg_stribeck_MPa", "mu_coulomb", "mu_stribeck", "mu_stribeck_curve_at_P_avg",
+                      "contact_deg_centre_row", "p_max_over_mean"},
+                     "draw-bend at 10 MPa average pressure (Sec. 3.5): forces on the half model [N], Eq. (2.3) mu");
+  std::vector<double> mu_c_ret, mu_s_ret, arc, peak_ratio;
+  for (const double D : pins) {
+    const double FB_est = swift_bending_force(ys, t, 2 * w_half, D / 2, M_PI / 2, ForceBasis::half_model);
+    const double FX = (p_target * D * w_half - FB_est) / (1 + std::exp(mu_c * M_PI / 2));
+    sim::DrawBendResult res[3];
+    for (int k = 0; k < 3; ++k) {
+      sim::DrawBendSpec s = base;
+      s.pin_diameter = D;
+      s.thickness = t;
+      s.width = w_half;
+      s.back_tension = FX;
+      s.speed = v;
+      s.mass_scaling = base.mass_scaling * (100.0 / v) * (100.0 / v);  // same rho v^2 as the reference
+      s.hardening = c.data("materials/aa5754_o_rd.csv");
+      s.name = "ch3_d" + fmt(D) + "_" + laws[k];
+      if (k == 1) s.friction = "{ law = \"coulomb\", mu = " + fmt(mu_c) + " }";
+      if (k == 2) s.friction = "{ law = \"stribeck\", table = \"" + c.data("thesis/table_3_3.csv") + "\", interval = 100 }";
+      std::cout << "  FE: " << s.name << " ...\n" << std::flush;
+      res[k] = sim::run_drawbend(s, c.out("runs/" + s.name), reuse);
+      const std::string rid = "ch3.fe.d" + fmt(D) + "." + laws[k];
+      c.checks().claim(rid + ".energy", "energy balance error < 1 %, " + s.name, res[k].balance_error < 0.01,
+                       "balance error " + fmt(res[k].balance_error, 3));
+      c.checks().claim(rid + ".quasistatic", "kinetic/internal energy < 5 % (quasi-static), " + s.name,
+                       res[k].kinetic_ratio < 0.05, "KE/IE " + fmt(res[k].kinetic_ratio, 3));
+    }
+    const double FB = res[0].tension_rise();
+    const double mu_cc = mu_rope(FX, res[1].F_out, FB, M_PI / 2), mu_ss = mu_rope(FX, res[2].F_out, FB, M_PI / 2);
+    const double Pc = average_pressure(FX, res[1].F_out, D / 2, 2 * w_half, ForceBasis::half_model);
+    const double Ps = average_pressure(FX, res[2].F_out, D / 2, 2 * w_half, ForceBasis::half_model);
+    const auto rows = sim::rows_of(res[2].map);
+    const auto a = sim::contact_arc(rows.front(), 0.5);
+    const double ratio = sim::max_pressure(rows.front()) / std::max(res[2].mean_pressure(), 1e-12);
+    mu_c_ret.push_back(mu_cc);
+    mu_s_ret.push_back(mu_ss);
+    arc.push_back(a.angle());
+    peak_ratio.push_back(ratio);
+    const double mu_curve = stribeck_mu(v, Ps, s33);
+    tab.row({fmt(D), fmt_fixed(FX, 1), fmt_fixed(FB, 1), fmt_fixed(res[1].F_out, 1), fmt_fixed(res[2].F_out, 1),
+             fmt_fixed(Pc, 2), fmt_fixed(Ps, 2), fmt_fixed(mu_cc, 4), fmt_fixed(mu_ss, 4), fmt_fixed(mu_curve, 4),
+             fmt_fixed(a.angle(), 1), fmt_fixed(ratio, 2)});
+    const std::string d = fmt(D);
+    c.value("db_FX_d" + d, fmt_fixed(FX, 1), "N");
+    c.value("db_P_d" + d, fmt_fixed(Ps, 1), "MPa");
+    c.value("db_muc_d" + d, fmt_fixed(mu_cc, 4));
+    c.value("db_mus_d" + d, fmt_fixed(mu_ss, 4));
+    c.value("db_retrieved_d" + d, fmt_fixed(100 * mu_cc / mu_c, 1), "%");
+    // Sec. 3.5.2: "the input friction coefficient of 0.1 was well retrieved (95 to 97%)".
+    c.checks().agree("ch3.fe.d" + d + ".coulomb_retrieved", "Coulomb mu retrieved by Eq. (2.3), percent of input, pin " + d + " mm",
+                     96.0, 100 * mu_cc / mu_c, 5.0, "%",
+                     "thesis 95-97 %; +-5 points: the bending reactions at entry and exit add normal force the rope "
+                     "formula ignores, and depend on mesh and contact stiffness");
+    // Fig. 3.14: the retrieved Stribeck mu "comes close to the coefficient based
+    // on the Stribeck curve" at the test's average pressure and speed.
+    c.checks().agree("ch3.fe.d" + d + ".stribeck_vs_curve", "Stribeck mu by Eq. (2.3) vs the input curve at P_avg, pin " + d + " mm",
+                     mu_curve, mu_ss, 0.15 * mu_curve, "-",
+                     "15 %: Fig. 3.14 shows the retrieved values near, not on, the curve; the pressure peaks raise them");
+    for (int k = 0; k < 3; ++k) {
+      const std::string stem = "ch3_map_d" + d + "_" + laws[k];
+      sim::save_row_profiles(res[k].map, c.out("tables/" + stem + ".csv"), "row profiles, " + stem);
+    }
+    sim::save_map_grid(res[2].map, c.out("tables/ch3_grid_d" + d + "_stribeck.dat"),
+                       "contact pressure [MPa], pin " + d + " mm, Stribeck, 10 MPa average");
+    c.plot("row_profiles", "fig_3_profiles_d" + d,
+           {{"datafile", c.out("tables/ch3_map_d" + d + "_stribeck.csv")},
+            {"title_text", "Row pressure profiles, " + d + " mm pin, Stribeck, 10 MPa average"}});
+    if (D == pins.front())
+      c.plot("pressure_map", "fig_3_15",
+             {{"gridfile", c.out("tables/ch3_grid_d" + d + "_stribeck.dat")},
+              {"title_text", "Pressure map, " + d + " mm pin, Stribeck (Fig. 3.15)"}});
+  }
+  c.save(tab, "drawbend_10mpa");
+  c.plot("mu_vs_pin", "fig_3_13", {{"datafile", c.out("tables/drawbend_10mpa.csv")}});
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  c.value("db_wall", fmt_fixed(wall / 60.0, 1), "min");
+  auto falls = [](const std::vector<double>& x) { return x[0] > x[1] && x[1] > x[2]; };
+  auto rises = [](const std::vector<double>& x) { return x[0] < x[1] && x[1] < x[2]; };
+  c.checks().claim("ch3.fe.stribeck_mu_falls", "Stribeck mu by Eq. (2.3) falls with pin diameter (Fig. 3.13)",
+                   falls(mu_s_ret), fmt(mu_s_ret[0], 4) + ", " + fmt(mu_s_ret[1], 4) + ", " + fmt(mu_s_ret[2], 4));
+  c.checks().claim("ch3.fe.contact_arc_grows", "real contact angle grows with pin diameter (Sec. 3.5.3)", rises(arc),
+                   fmt(arc[0], 3) + ", " + fmt(arc[1], 3) + ", " + fmt(arc[2], 3) + " deg");
+  c.checks().claim("ch3.fe.pressure_evens_out", "peak/mean pressure falls with pin diameter (Sec. 3.5.3)",
+                   falls(peak_ratio), fmt(peak_ratio[0], 3) + ", " + fmt(peak_ratio[1], 3) + ", " + fmt(peak_ratio[2], 3));
+}
+
+}  // namespace ch3
