@@ -43,7 +43,7 @@ double steady_distance(const sim::DrawBendResult& r, double band) {
   double last_out = 0;
   for (const auto& [t, f] : s)
     if (std::abs(f - r.F_out) > band * r.F_out) last_out = t;
-  return last_out * r.spec.speed;  // after the 0.01 s ramp the outlet moves at `speed`
+  return last_out * r.spec.speed;  // the speed ramp is short: slide ~ speed x time
 }
 
 }  // namespace

@@ -68,9 +68,15 @@ std::string deck_text(const DrawBendSpec& s) {
   const double x_in = -n_in * h, x_out = n_out * h;
   const int c_in = 4, c_out = 4;
   const double x0 = x_in - c_in * coarse, x1 = x_out + c_out * coarse;
-  const double ramp = 0.005, t1 = 0.05;
+  // Steps 1-2 last 0.05 s and 0.04 s at mass scaling 1e4; a larger scaling
+  // slows the strip's dynamics by ts = sqrt(scaling / 1e4), so their times
+  // (and the relaxation's time constants) stretch by ts to stay as
+  // quasi-static.  Without this, a 50 mm/s draw at 4e4 (the inertia of 100 mm/s
+  // at 1e4) started from a less settled strip and gave a 3.5 % higher F_B.
+  const double ts = std::max(1.0, std::sqrt(s.mass_scaling / 1e4));
+  const double ramp = 0.005 * ts, t1 = 0.05 * ts, t2 = 0.04 * ts, ramp3 = 0.01 * ts;
   const double omega = (M_PI / 2) / (t1 - ramp);
-  const double t3 = d / s.speed + 0.005;  // the 0.01 s speed ramp loses speed * 0.005
+  const double t3 = d / s.speed + ramp3 / 2;  // the speed ramp loses speed * ramp3 / 2
   std::ostringstream o;
   o << "# Draw-bend case written by drawbend's builder (src/sim/drawbend_case.cpp).\n"
     << "# Pin " << num(s.pin_diameter) << " mm, 90 deg wrap, back tension " << num(s.back_tension)
@@ -96,23 +102,25 @@ std::string deck_text(const DrawBendSpec& s) {
   // (Turning about the pin axis instead stretches the strip by R pi/2, some
   // 40 %, and hardens it before the test.)
   const double a = (R + t / 2) * M_PI / 4;
-  o << "\n[[step]]\nname = \"bend\"\nduration = " << num(t1) << "\ndamping = 50.0\nfriction = false\n"
+  o << "\n[[step]]\nname = \"bend\"\nduration = " << num(t1) << "\ndamping = " << num(50.0 / ts)
+    << "\nfriction = false\n"
     << "fixed = [ { set = \"ymin\", dof = [false, true, false] }, { set = \"xmin\", dof = [true, true, true] } ]\n"
     << "rotation = [ { set = \"xmax\", centre = [" << num(a) << ", 0.0, " << num(a)
     << "], axis = [0.0, 1.0, 0.0], omega = { t = [0.0, "
     << num(ramp) << ", " << num(t1 - ramp) << ", " << num(t1) << "], v = [0.0, " << num(omega) << ", " << num(omega)
     << ", 0.0] } } ]\n\n"
-    << "[[step]]\nname = \"tension\"\nduration = 0.04\ndamping = 150.0\nfriction = false\n"
+    << "[[step]]\nname = \"tension\"\nduration = " << num(t2) << "\ndamping = " << num(150.0 / ts)
+    << "\nfriction = false\n"
     << "fixed = [ { set = \"ymin\", dof = [false, true, false] }, { set = \"xmax\", dof = [true, true, true] }, "
        "{ set = \"xmin\", dof = [false, false, true] } ]\n"
-    << "force = [ { set = \"xmin\", direction = [-1.0, 0.0, 0.0], magnitude = { t = [0.0, 0.02], v = [0.0, "
-    << num(s.back_tension) << "] } } ]\n\n"
+    << "force = [ { set = \"xmin\", direction = [-1.0, 0.0, 0.0], magnitude = { t = [0.0, "
+    << num(t2 / 2) << "], v = [0.0, " << num(s.back_tension) << "] } } ]\n\n"
     << "[[step]]\nname = \"draw\"\nduration = " << num(t3) << "\n"
     << "fixed = [ { set = \"ymin\", dof = [false, true, false] }, { set = \"xmax\", dof = [true, true, false] }, "
        "{ set = \"xmin\", dof = [false, false, true] } ]\n"
     << "force = [ { set = \"xmin\", direction = [-1.0, 0.0, 0.0], magnitude = " << num(s.back_tension) << " } ]\n"
-    << "velocity = [ { set = \"xmax\", direction = [0.0, 0.0, -1.0], speed = { t = [0.0, 0.01], v = [0.0, "
-    << num(s.speed) << "] } } ]\n\n"
+    << "velocity = [ { set = \"xmax\", direction = [0.0, 0.0, -1.0], speed = { t = [0.0, "
+    << num(ramp3) << "], v = [0.0, " << num(s.speed) << "] } } ]\n\n"
     << "[output]\nfields_per_step = " << std::max(1, s.snapshots) << "\nhistory = [\n"
     << "  { name = \"outlet_force_N\", kind = \"reaction\", target = \"xmax\", component = 2 },\n"
     << "  { name = \"back_tension_N\", kind = \"applied\", target = \"xmin\", component = 0 },\n"
