@@ -5,15 +5,17 @@ BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_ARGS ?=
 
-.PHONY: all deps configure build study report test test-full gold bench clean
+.PHONY: all deps configure build study report test test-full full gold bench clean
 
 all: report
 
 deps:
 	@bash scripts/install-deps.sh
 
+FIDELITY ?= quick
+
 configure: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DDRAWBEND_FIDELITY=$(FIDELITY) >/dev/null
 
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
@@ -30,6 +32,11 @@ test: build
 
 test-full: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+
+# The report at paper fidelity (finer draw-bend meshes; hours on 2 cores) in
+# its own build folder: build-full/report/study.html.
+full:
+	@$(MAKE) --no-print-directory report BUILD=build-full FIDELITY=full
 
 # Solver cost per element-cycle at 1 and 2 threads -> build/bench/results.csv
 bench: build

@@ -174,16 +174,28 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("eps_bend", fmt_fixed(100 * eb, 2), "%");
   c.checks().claim("ch2.fe.outside_strain_above_bending", "peak outside strain above pure bending ln(1+t/(2R+t))",
                    eo_max > eb, fmt(100 * eo_max, 3) + " % vs " + fmt(100 * eb, 3) + " %");
+  // The steady state, two ways: the thesis's (Sec. 2.3.2, the strain of the
+  // strip passing mid-wrap stops changing: within 2 % of its final value) and
+  // the outlet force's (within 2 % of its final level).
   const double Lw = sim::wrap_length(s);
-  const double d_ss = steady_distance(fr, 0.02);
+  const double d_force = steady_distance(fr, 0.02), d_strain = fr.steady_strain_slide(0.02);
+  auto mw = c.table({"slide_mm", "outside_strain_at_mid_wrap"},
+                    "outside log strain of the section at mid-wrap against the slide in the draw (mu = 0.1)");
+  for (const auto& [sl, e] : fr.mid_wrap_strain()) mw.row({fmt(sl, 5), fmt(e, 6)});
+  c.save(mw, "mid_wrap_strain");
+  c.plot("mid_wrap_strain", "fig_2_steady", {{"datafile", c.out("tables/mid_wrap_strain.csv")}});
   c.value("wrap_length", fmt_fixed(Lw, 1), "mm");
-  c.value("d_steady_ours", fmt_fixed(d_ss, 1), "mm");
-  c.value("ratio_steady_ours", fmt_fixed(d_ss / Lw, 2));
-  c.checks().agree("ch2.fe.steady_ratio", "slide to steady state / wrap length (Sec. 2.3.2)",
-                   study::scalar(sc, "ch2_steady_ratio").value, d_ss / Lw, 0.5, "-",
-                   "0.5: our criterion is the outlet force within 2 % of its final level, the thesis's the strain");
-  c.checks().claim("ch2.fe.steady_before_window", "steady before the last third that is averaged",
-                   d_ss < (2.0 / 3.0) * sim::draw_length(s), fmt(d_ss, 3) + " mm of " + fmt(sim::draw_length(s), 3));
+  c.value("d_steady_force", fmt_fixed(d_force, 1), "mm");
+  c.value("d_steady_strain", fmt_fixed(d_strain, 1), "mm");
+  c.value("ratio_steady_strain", fmt_fixed(d_strain / Lw, 2));
+  c.value("ratio_steady_force", fmt_fixed(d_force / Lw, 2));
+  c.checks().agree("ch2.fe.steady_ratio", "slide to steady strain / wrap length (Sec. 2.3.2)",
+                   study::scalar(sc, "ch2_steady_ratio").value, d_strain / Lw, 0.3, "-",
+                   "0.3: sections one element length apart (0.09 of the wrap at 1 mm) and the 2 % band, "
+                   "where the thesis read its plots");
+  c.checks().claim("ch2.fe.steady_before_window", "outlet force steady before the last third that is averaged",
+                   d_force < (2.0 / 3.0) * sim::draw_length(s),
+                   fmt(d_force, 3) + " mm of " + fmt(sim::draw_length(s), 3));
 
   // 4. Forces.
   const double FB = ff.tension_rise();

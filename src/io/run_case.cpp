@@ -73,9 +73,11 @@ void write_contact_maps(const fe::Solver& s, const std::string& prefix) {
     for (const auto& t : m.tools)
       if (t.name == cp.tool) tool = &t;
     const fe::Vec3 off = s.tool_offset(cp.tool);
-    CsvWriter w({"node", "x_mm", "y_mm", "z_mm", "surface", "u_tool", "v_tool_mm", "pressure_MPa", "area_mm2",
-                 "normal_force_N", "tangential_force_N", "slip_speed_mm_s", "penetration_mm"});
+    CsvWriter w({"node", "x_mm", "y_mm", "z_mm", "x0_mm", "y0_mm", "z0_mm", "surface", "u_tool", "v_tool_mm",
+                 "pressure_MPa", "area_mm2", "normal_force_N", "tangential_force_N", "slip_speed_mm_s",
+                 "penetration_mm"});
     w.comment("contact map: faces '" + cp.faces + "' on tool '" + cp.tool + "' at t = " + fmt(s.time()) + " s");
+    w.comment("x, y, z: current position; x0, y0, z0: reference (undeformed) position [mm]");
     w.comment("u_tool: angle about the surface axis [deg] (cylinder, torus) or in-plane coordinate [mm] (plane); "
               "v_tool: position along the axis [mm] (cylinder, torus) or second in-plane coordinate (plane)");
     for (const auto& c : s.contact_nodes(p)) {
@@ -102,7 +104,8 @@ void write_contact_maps(const fe::Solver& s, const std::string& prefix) {
         }
       }
       const double ft = std::sqrt(c.ft[0] * c.ft[0] + c.ft[1] * c.ft[1] + c.ft[2] * c.ft[2]);
-      w.row({std::to_string(i), fmt(s.x()[i], 9), fmt(s.y()[i], 9), fmt(s.z()[i], 9), std::to_string(c.surface),
+      w.row({std::to_string(i), fmt(s.x()[i], 9), fmt(s.y()[i], 9), fmt(s.z()[i], 9), fmt(m.mesh.x[i], 9),
+             fmt(m.mesh.y[i], 9), fmt(m.mesh.z[i], 9), std::to_string(c.surface),
              fmt(u, 9), fmt(v, 9), fmt(c.pressure, 8), fmt(c.area, 8), fmt(c.normal_force, 8), fmt(ft, 8),
              fmt(c.slip_speed, 8), fmt(c.depth, 6)});
     }

@@ -36,9 +36,15 @@ int main(int argc, char** argv) {
         const CsvTable t = read_csv(ch.out_dir + "/checks.csv");
         for (const auto& r : t.rows) ids.push_back(t.text(r, "id"));
       }
-      const auto dead = study::Errata::load(errata).unused(ids);
-      for (const auto& d : dead) std::cerr << errata << ": entry '" << d << "' matches no check\n";
-      if (!dead.empty()) throw InputError(errata + ": " + std::to_string(dead.size()) + " unused erratum entries");
+      // The disagreements list sits beside the errata list and is audited the same way.
+      const std::string disagreements =
+          (std::filesystem::path(errata).parent_path() / "disagreements.csv").string();
+      for (const std::string& list : {errata, disagreements}) {
+        if (!std::filesystem::exists(list)) continue;
+        const auto dead = study::Errata::load(list).unused(ids);
+        for (const auto& d : dead) std::cerr << list << ": entry '" << d << "' matches no check\n";
+        if (!dead.empty()) throw InputError(list + ": " + std::to_string(dead.size()) + " unused entries");
+      }
     }
     const std::string md = std::filesystem::path(out).replace_extension(".md").string();
     write_file_atomic(md, study::assemble_report(chapters, title));

@@ -139,6 +139,14 @@ std::string deck_text(const DrawBendSpec& s) {
       << "  { name = \"plastic_strain_" << side << "\", kind = \"strain\", point = [" << num(xs) << ", " << num(ys)
       << ", " << num(zs) << "], component = 1 },\n";
   }
+  // Mid-wrap sections (Sec. 2.3.2, "steady strain condition"): the section
+  // that starts at x = Lw/2 - s sits at mid-wrap after a slide s; its outside
+  // strain there, against s, shows when the strip passing the pin stops
+  // changing.  One section per element length along the refined zone.
+  const double step = std::max(h, 0.5);
+  for (int k = 0; k * step <= d - 1.0; ++k)
+    o << "  { name = \"eps_mid_" << k << "\", kind = \"strain\", point = [" << num(Lw / 2 - k * step) << ", "
+      << num(ys) << ", " << num(R + t - dz) << "], component = 0 },\n";
   o << "]\n";
   return o.str();
 }
@@ -198,7 +206,7 @@ void reduce(DrawBendResult& r) {
   for (const auto& row : cm.rows) {
     MapNode q;
     q.angle_deg = std::atan2(cm.number(row, "x_mm"), cm.number(row, "z_mm")) * 180.0 / M_PI;
-    q.y = cm.number(row, "y_mm");
+    q.y = cm.number(row, "y0_mm");  // rows are rows of the mesh: the reference y
     q.pressure = cm.number(row, "pressure_MPa");
     q.area = cm.number(row, "area_mm2");
     r.map.push_back(q);
@@ -226,6 +234,45 @@ analysis::PressureMap DrawBendResult::pressure_map(const std::string& label) con
     m.area_mm2.push_back(q.area);
   }
   return m;
+}
+
+std::vector<std::pair<double, double>> DrawBendResult::mid_wrap_strain() const {
+  const auto& h = history;
+  const double step = std::max(spec.element_length, 0.5);
+  std::vector<std::pair<double, double>> out;
+  // The slide of the upstream strip is the inlet end's travel in the draw.
+  double x0 = NAN;
+  std::vector<std::pair<double, const CsvRow*>> draw;  // (slide, row)
+  for (const auto& row : h.rows)
+    if (h.text(row, "step") == "draw") {
+      const double x = h.number(row, "inlet_x_mm");
+      if (std::isnan(x0)) x0 = x;
+      draw.push_back({x - x0, &row});
+    }
+  for (int k = 0;; ++k) {
+    const std::string col = "eps_mid_" + std::to_string(k);
+    if (std::find(h.header.begin(), h.header.end(), col) == h.header.end()) break;
+    const double s = k * step;
+    // The section's strain when the slide reaches s (linear between samples).
+    for (std::size_t i = 0; i + 1 < draw.size(); ++i)
+      if (draw[i].first <= s && s <= draw[i + 1].first) {
+        const double f = (s - draw[i].first) / std::max(draw[i + 1].first - draw[i].first, 1e-12);
+        const double a = h.number(*draw[i].second, col), b = h.number(*draw[i + 1].second, col);
+        out.push_back({s, a + f * (b - a)});
+        break;
+      }
+  }
+  return out;
+}
+
+double DrawBendResult::steady_strain_slide(double band) const {
+  const auto e = mid_wrap_strain();
+  if (e.size() < 3) return NAN;
+  const double final = e.back().second;
+  double s_ss = e.front().first;
+  for (const auto& [s, v] : e)
+    if (std::abs(v - final) > band * std::abs(final)) s_ss = s;
+  return s_ss;
 }
 
 double DrawBendResult::mean_pressure() const {

@@ -54,7 +54,7 @@ std::string deck_text(const DrawBendSpec& s);
 /// One node of the pin contact map [MPa, mm, mm^2].
 struct MapNode {
   double angle_deg = 0;  ///< position round the pin from the inlet tangent point (0) to the outlet one (90)
-  double y = 0;          ///< across the width, 0 = strip centre (symmetry plane)
+  double y = 0;          ///< reference position across the width, 0 = strip centre (symmetry plane)
   double pressure = 0;
   double area = 0;
 };
@@ -78,6 +78,13 @@ struct DrawBendResult {
   analysis::PressureMap pressure_map(const std::string& label) const;
   /// Average contact pressure over the nodes in contact [MPa] (area weighted).
   double mean_pressure() const;
+  /// Outside-surface strain at mid-wrap against the slide in the draw [mm]:
+  /// the section that is at mid-wrap after each slide s (Sec. 2.3.2).
+  std::vector<std::pair<double, double>> mid_wrap_strain() const;
+  /// Slide [mm] after which the mid-wrap strain stays within `band`
+  /// (relative) of its value at the end of the draw: the "steady strain
+  /// condition" of Sec. 2.3.2.  NaN without strain sections.
+  double steady_strain_slide(double band) const;
 };
 
 /// Write the deck to `dir`/deck.toml, run it (one line of progress per step

@@ -85,19 +85,43 @@ void save_map_grid(const std::vector<MapNode>& map, const std::string& path, con
   write_file_atomic(path, text);
 }
 
+namespace {
+/// Pressure of a row at angle a: linear between its nodes, zero outside them.
+double row_pressure(const Row& r, double a) {
+  const auto& n = r.nodes;
+  for (std::size_t i = 0; i + 1 < n.size(); ++i)
+    if (n[i].angle_deg <= a && a <= n[i + 1].angle_deg) {
+      const double h = n[i + 1].angle_deg - n[i].angle_deg;
+      const double f = h > 0 ? (a - n[i].angle_deg) / h : 0.0;
+      return n[i].pressure + f * (n[i + 1].pressure - n[i].pressure);
+    }
+  return 0.0;
+}
+}  // namespace
+
 void save_row_profiles(const std::vector<MapNode>& map, const std::string& path, const std::string& what) {
   const auto rows = rows_of(map);
   std::vector<std::string> header{"angle_deg"};
   for (const auto& r : rows) header.push_back("p_y" + fmt(r.y, 4));
   CsvWriter w(header);
   w.comment(what);
-  w.comment("pressure [MPa] along each row of nodes (y [mm] from the strip centre); angle from the inlet tangent point");
-  const std::size_t n = rows.empty() ? 0 : rows.front().nodes.size();
+  w.comment("pressure [MPa] along each row of nodes (y [mm] from the strip centre), interpolated linearly between "
+            "the row's nodes onto a common angle grid (half the nodes' spacing; zero beyond a row's ends); angle "
+            "from the inlet tangent point");
+  if (rows.empty() || rows.front().nodes.size() < 2) throw InputError(path + ": empty contact map");
+  double lo = INFINITY, hi = -INFINITY;
   for (const auto& r : rows)
-    if (r.nodes.size() != n) throw InputError(path + ": rows of the map differ in length");
-  for (std::size_t i = 0; i < n; ++i) {
-    std::vector<std::string> row{fmt(rows.front().nodes[i].angle_deg, 6)};
-    for (const auto& r : rows) row.push_back(fmt(r.nodes[i].pressure, 6));
+    for (const auto& q : r.nodes) lo = std::min(lo, q.angle_deg), hi = std::max(hi, q.angle_deg);
+  const auto& c = rows.front().nodes;
+  std::vector<double> gaps;
+  for (std::size_t i = 0; i + 1 < c.size(); ++i) gaps.push_back(c[i + 1].angle_deg - c[i].angle_deg);
+  std::nth_element(gaps.begin(), gaps.begin() + gaps.size() / 2, gaps.end());
+  const double step = std::max(gaps[gaps.size() / 2] / 2, 1e-3);
+  lo = std::max(lo, -20.0);
+  hi = std::min(hi, 110.0);
+  for (double a = lo; a <= hi + 1e-9; a += step) {
+    std::vector<std::string> row{fmt(a, 6)};
+    for (const auto& r : rows) row.push_back(fmt(row_pressure(r, a), 6));
     w.row(row);
   }
   w.save(path);

@@ -30,7 +30,8 @@ bool Chapter::parse(int argc, char** argv) {
   if (!options_.parse(argc, argv)) return false;
   fs::create_directories(out_dir_ + "/tables");
   fs::create_directories(out_dir_ + "/figures");
-  checks_ = std::make_unique<Checks>(id_, Errata::load(data("thesis/errata.csv")));
+  checks_ = std::make_unique<Checks>(id_, Errata::load(data("thesis/errata.csv")),
+                                     Errata::load(data("thesis/disagreements.csv")));
   return true;
 }
 

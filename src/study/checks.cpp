@@ -14,6 +14,7 @@ std::string to_string(Status s) {
     case Status::pass: return "pass";
     case Status::fail: return "fail";
     case Status::erratum: return "erratum";
+    case Status::disagree: return "disagree";
   }
   return "?";
 }
@@ -56,21 +57,23 @@ std::vector<std::string> Errata::unused(const std::vector<std::string>& ids) con
   return out;
 }
 
-Checks::Checks(std::string chapter, Errata errata) : chapter_(std::move(chapter)), errata_(std::move(errata)) {}
+Checks::Checks(std::string chapter, Errata errata, Errata disagreements)
+    : chapter_(std::move(chapter)), errata_(std::move(errata)), disagreements_(std::move(disagreements)) {}
 
-const Check& Checks::add(Check c, bool erratum_allowed, const std::string& reason) {
+const Check& Checks::add(Check c, const Errata& excuse, Status excused, const std::string& reason) {
   for (const auto& o : checks_)
     if (o.id == c.id) throw std::logic_error("duplicate check id " + c.id);
   // Allow floating-point round-off (1e-9 relative) on top of the stated tolerance.
   const double roundoff = 1e-9 * std::max(std::abs(c.thesis), std::abs(c.ours));
   const bool finite = std::isfinite(c.ours);
   const bool within = finite && std::abs(c.ours - c.thesis) <= c.tolerance + roundoff;
-  const std::string why = erratum_allowed ? errata_.explain(c.id) : "";
+  const std::string why = excuse.explain(c.id);
   if (within) {
     c.status = why.empty() ? Status::pass : Status::fail;
-    c.note = why.empty() ? reason : "documented erratum no longer reproduces (stale): " + why;
+    c.note = why.empty() ? reason
+                         : "documented " + to_string(excused) + " no longer reproduces (stale): " + why;
   } else if (!why.empty() && finite) {
-    c.status = Status::erratum;
+    c.status = excused;
     c.note = why;
   } else {
     c.status = Status::fail;
@@ -82,16 +85,16 @@ const Check& Checks::add(Check c, bool erratum_allowed, const std::string& reaso
 
 const Check& Checks::agree(const std::string& id, const std::string& q, double thesis, double ours, double tol,
                            const std::string& unit, const std::string& reason) {
-  return add({id, q, thesis, ours, tol, unit, "", Status::pass}, false, reason);
+  return add({id, q, thesis, ours, tol, unit, "", Status::pass}, disagreements_, Status::disagree, reason);
 }
 
 const Check& Checks::rederive(const std::string& id, const std::string& q, double thesis, double ours,
                               double tol, const std::string& unit, const std::string& reason) {
-  return add({id, q, thesis, ours, tol, unit, "", Status::pass}, true, reason);
+  return add({id, q, thesis, ours, tol, unit, "", Status::pass}, errata_, Status::erratum, reason);
 }
 
 const Check& Checks::claim(const std::string& id, const std::string& q, bool ours, const std::string& reason) {
-  return add({id, q, 1.0, ours ? 1.0 : 0.0, 0.0, "true=1", "", Status::pass}, true, reason);
+  return add({id, q, 1.0, ours ? 1.0 : 0.0, 0.0, "true=1", "", Status::pass}, errata_, Status::erratum, reason);
 }
 
 int Checks::count(Status s) const {
@@ -111,7 +114,7 @@ void Checks::write(const std::string& path) const {
 
 void Checks::print_summary() const {
   std::cout << "checks[" << chapter_ << "]: " << count(Status::pass) << " pass, " << count(Status::fail)
-            << " fail, " << count(Status::erratum) << " erratum\n";
+            << " fail, " << count(Status::erratum) << " erratum, " << count(Status::disagree) << " disagree\n";
   for (const auto& c : checks_)
     if (c.status == Status::fail)
       std::cout << "  FAIL " << c.id << ": thesis " << fmt(c.thesis) << ", ours " << fmt(c.ours) << " (tol "

@@ -5,15 +5,20 @@
 //   fail     outside tolerance where agreement was expected
 //   erratum  a re-derivation of a thesis value from the thesis's own inputs
 //            disagrees, and data/thesis/errata.csv documents why.
-// A documented erratum whose check passes is reported as a failure (the
-// explanation is stale), so the errata list can never hide a real change.
+//   disagree our simulation does not reproduce a published value within the
+//            tolerance, and data/thesis/disagreements.csv records what the
+//            investigation found (the report lists these as "not reproduced").
+//            Only `agree` checks (ours vs published) can be disagreements;
+//            the tolerance is never widened to hide them.
+// A documented erratum or disagreement whose check passes is reported as a
+// failure (the explanation is stale), so neither list can hide a real change.
 #include <map>
 #include <string>
 #include <vector>
 
 namespace drawbend::study {
 
-enum class Status { pass, fail, erratum };
+enum class Status { pass, fail, erratum, disagree };
 std::string to_string(Status s);
 
 struct Check {
@@ -38,7 +43,7 @@ class Errata {
 
 class Checks {
  public:
-  Checks(std::string chapter, Errata errata);
+  Checks(std::string chapter, Errata errata, Errata disagreements = {});
 
   /// Agreement with a published value (e.g. our simulation vs the thesis).
   const Check& agree(const std::string& id, const std::string& quantity, double thesis, double ours,
@@ -55,9 +60,11 @@ class Checks {
   void print_summary() const;
 
  private:
-  const Check& add(Check c, bool erratum_allowed, const std::string& reason);
+  /// `excuse`: the documented-explanation list that may apply (errata for
+  /// re-derivations and claims, disagreements for agreement checks).
+  const Check& add(Check c, const Errata& excuse, Status excused, const std::string& reason);
   std::string chapter_;
-  Errata errata_;
+  Errata errata_, disagreements_;
   std::vector<Check> checks_;
 };
 

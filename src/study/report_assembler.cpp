@@ -1,6 +1,7 @@
 #include "study/report_assembler.hpp"
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <map>
 #include <sstream>
@@ -134,24 +135,30 @@ std::string checks_summary(const std::vector<ChapterSource>& chapters) {
   os << "# Summary of checks {#summary .unnumbered}\n\n"
      << "Every chapter compares its numbers with the thesis. *pass*: within the stated tolerance; "
      << "*fail*: outside it; *erratum*: the thesis disagrees with its own inputs, explained in the "
-     << "chapter's checks table.\n\n";
-  os << "| Chapter | pass | fail | erratum | checks table |\n|---|---:|---:|---:|---|\n";
-  int tp = 0, tf = 0, te = 0;
+     << "chapter's checks table; *disagree*: our simulation does not reproduce the published value, and "
+     << "the investigation's finding is stated (the tolerance is not widened).\n\n";
+  os << "| Chapter | pass | fail | erratum | disagree | checks table |\n|---|---:|---:|---:|---:|---|\n";
+  int tp = 0, tf = 0, te = 0, td = 0;
+  std::vector<std::array<std::string, 5>> disagreements;  // id, chapter, thesis, ours, note
   // Errata grouped by explanation: one row per cause, not per check.
   std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>> causes;
   for (const auto& ch : chapters) {
     const std::string path = ch.out_dir + "/checks.csv";
     if (!fs::exists(path)) {
-      os << "| " << ch.id << " | - | - | - | not run |\n";
+      os << "| " << ch.id << " | - | - | - | - | not run |\n";
       continue;
     }
     const CsvTable t = read_csv(path);
-    int p = 0, f = 0, e = 0;
+    int p = 0, f = 0, e = 0, d = 0;
     for (const auto& r : t.rows) {
       const std::string& s = t.text(r, "status");
       p += s == "pass";
       f += s == "fail";
       e += s == "erratum";
+      d += s == "disagree";
+      if (s == "disagree")
+        disagreements.push_back({t.text(r, "id"), ch.id, t.text(r, "thesis") + " " + t.text(r, "unit"),
+                                 t.text(r, "ours") + " " + t.text(r, "unit"), t.text(r, "note")});
       if (s == "erratum") {
         const std::string& note = t.text(r, "note");
         auto it = std::find_if(causes.begin(), causes.end(), [&](const auto& c) { return c.first == note; });
@@ -162,10 +169,19 @@ std::string checks_summary(const std::vector<ChapterSource>& chapters) {
     tp += p;
     tf += f;
     te += e;
+    td += d;
     os << "| " << ch.id << " | " << p << " | " << (f ? "[" + std::to_string(f) + "]{.status-fail}" : "0")
-       << " | " << e << " | [checks](#checks-" << ch.id << ") |\n";
+       << " | " << e << " | " << d << " | [checks](#checks-" << ch.id << ") |\n";
   }
-  os << "| **all** | **" << tp << "** | **" << tf << "** | **" << te << "** | |\n\n";
+  os << "| **all** | **" << tp << "** | **" << tf << "** | **" << te << "** | **" << td << "** | |\n\n";
+  if (!disagreements.empty()) {
+    os << "## Not reproduced {.unnumbered}\n\n| check | thesis | ours | what the investigation found |\n"
+       << "|---|---:|---:|---|\n";
+    for (const auto& [id, ch, th, ours, note] : disagreements)
+      os << "| [" << id << "](#checks-" << ch << ") | " << th << " | " << ours << " | " << escape_cell(note) << " |\n";
+    os << "\n: Published values our simulations do not reproduce within the stated tolerance, with the most "
+          "likely reason.\n\n";
+  }
   if (!causes.empty()) {
     os << "## Errata at a glance {.unnumbered}\n\n| checks | most likely explanation |\n|---|---|\n";
     for (const auto& [note, ids] : causes) {
