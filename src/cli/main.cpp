@@ -6,6 +6,7 @@
 #include <iostream>
 #include <string>
 
+#include "cli/loop_cmd.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
 #include "io/deck.hpp"
@@ -15,12 +16,16 @@ int main(int argc, char** argv) {
   using namespace drawbend;
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::cout << "usage: drawbend run CASE.toml [--out DIR] [--threads N] [--quiet]\n"
+                 "       drawbend loop DATA.csv --out DIR [options]  (see drawbend loop --help)\n"
+                 "       drawbend synth --effect E | --from-thesis --out DIR  (see drawbend synth --help)\n"
                  "  Runs an explicit finite-element case deck (format: data/cases/README.md).\n";
     return argc < 2 ? 2 : 0;
   }
   const std::string cmd = argv[1];
+  if (cmd == "loop") return cli::loop_main(argc - 1, argv + 1);    // loop_cmd.cpp
+  if (cmd == "synth") return cli::synth_main(argc - 1, argv + 1);  // loop_cmd.cpp
   if (cmd != "run") {
-    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run)\n";
+    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, loop, synth)\n";
     return 2;
   }
   if (argc < 3) {

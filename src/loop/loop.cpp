@@ -1,0 +1,184 @@
+// The loop; see loop.hpp.
+#include "loop/loop.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/csv.hpp"
+
+namespace drawbend::loop {
+
+std::string base_model_text(bool bending_linear) {
+  return std::string("constant mu per cell (rope formula Eq. 5.1, RD/TD ellipse), bending force ") +
+         (bending_linear ? "F_B = b0 + b1 F_back" : "F_B constant (Swift Eq. 2.1 form)") +
+         " per pin from the rotating-pin rows";
+}
+
+namespace {
+
+// Parameters belonging to the effect just added (names the base does not have).
+std::vector<Param> new_params(const Fit& before, const Fit& after) {
+  std::vector<Param> out;
+  for (const auto& p : after.params) {
+    bool old = false;
+    for (const auto& q : before.params) old = old || q.name == p.name;
+    if (!old) out.push_back(p);
+  }
+  return out;
+}
+
+ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const std::string& variable) {
+  ModelSpec t = s;
+  Effect e{k, variable, 0};
+  if (k == EffectKind::bending_tension) t.bending_linear = true;
+  if (k == EffectKind::depletion) {  // lambda on a grid, by the full-data fit
+    double best = INFINITY;
+    for (double lam : {10.0, 25.0, 50.0, 100.0, 200.0, 400.0, 800.0}) {
+      ModelSpec u = s;
+      u.effects.push_back({k, variable, lam});
+      const double rss = fit_model(d, u).rss;
+      if (rss < best) best = rss, e.lambda_mm = lam;
+    }
+  }
+  t.effects.push_back(e);
+  return t;
+}
+
+bool applicable(const Design& d, const ModelSpec& s, EffectKind k) {
+  if (s.has(k) && k != EffectKind::drift) return false;
+  if (k == EffectKind::bending_tension && s.bending_linear) return false;
+  if (k == EffectKind::pin_surface && d.pins.size() < 2) return false;
+  if (k == EffectKind::depletion && !d.data->has_sliding) return false;
+  return true;
+}
+
+}  // namespace
+
+LoopResult run_loop(const Design& d, const LoopOptions& o) {
+  LoopResult res;
+  res.base_model = base_model_text(o.bending_linear);
+  res.maps = d.maps->label();
+  res.folds = make_folds(d, o.cv, o.folds);
+  res.cv_mode = res.folds.mode;
+  ModelSpec spec;
+  spec.bending_linear = o.bending_linear;
+  CvResult cur = cross_validate(d, spec, res.folds);
+  res.cv.push_back(cur);
+  Fit cur_fit = fit_model(d, spec);
+  std::vector<std::string> used_vars;
+  for (int step = 0; step < o.max_steps; ++step) {
+    const auto cands = make_candidates(d, cur.pred);
+    if (step == 0) res.candidates = cands;
+    const auto rank = rank_candidates(cands, cur.resid, res.folds, o.permutations, o.seed + 1000003ULL * step, o.alpha);
+    res.rankings.push_back(rank);
+    const double thr = o.alpha / std::max<size_t>(1, rank.size());
+    bool accepted = false;
+    std::vector<std::string> unexplained_now;
+    for (const auto& c : rank) {
+      if (!c.significant) break;
+      std::vector<EffectKind> kinds;
+      for (EffectKind k : effects_for(c.name))
+        if (applicable(d, spec, k) &&
+            !(k == EffectKind::drift && std::find(used_vars.begin(), used_vars.end(), c.name) != used_vars.end()))
+          kinds.push_back(k);
+      if (kinds.empty()) {
+        unexplained_now.push_back(c.name);
+        continue;
+      }
+      Step s;
+      s.variable = c.name;
+      s.p_value = c.p_value;
+      s.threshold = thr;
+      s.rms_before = cur.rms;
+      s.max_before = cur.max_abs;
+      double best = INFINITY;
+      ModelSpec best_spec;
+      CvResult best_cv;
+      for (EffectKind k : kinds) {
+        const ModelSpec t = with_effect(d, spec, k, c.name);
+        CvResult cv = cross_validate(d, t, res.folds);
+        s.tried.push_back({effect_name(k), cv.rms});
+        if (cv.rms < best) best = cv.rms, best_spec = t, best_cv = cv, s.effect = effect_name(k),
+                                          s.meaning = effect_meaning(k);
+      }
+      if (!(best < cur.rms)) {
+        unexplained_now.push_back(c.name + " (library effects tried did not lower the held-out error)");
+        continue;
+      }
+      const Fit f = fit_model(d, best_spec);
+      s.params = new_params(cur_fit, f);
+      s.rms_after = best_cv.rms;
+      s.max_after = best_cv.max_abs;
+      res.steps.push_back(s);
+      used_vars.push_back(c.name);
+      spec = best_spec;
+      cur = best_cv;
+      cur_fit = f;
+      res.cv.push_back(cur);
+      accepted = true;
+      break;
+    }
+    for (const auto& u : unexplained_now)
+      if (std::find(res.unexplained.begin(), res.unexplained.end(), u) == res.unexplained.end())
+        res.unexplained.push_back(u);
+    if (accepted) continue;
+    bool any_sig = false;
+    for (const auto& c : rank) any_sig = any_sig || c.significant;
+    if (!any_sig) {
+      std::ostringstream m;
+      m << "no candidate significant at the Bonferroni threshold p <= " << fmt(thr, 3) << " (alpha " << fmt(o.alpha)
+        << " / " << rank.size() << " candidates) with a positive cross-validated error reduction";
+      if (!rank.empty()) m << "; smallest p: " << rank.front().name << " p = " << fmt(rank.front().p_value, 3);
+      res.stopped_because = m.str();
+    } else {
+      std::string v;
+      for (const auto& u : unexplained_now) v += (v.empty() ? "" : "; ") + u;
+      res.stopped_because = "significant candidates that no library effect explains: " + v;
+    }
+    break;
+  }
+  if (res.stopped_because.empty()) res.stopped_because = "maximum number of steps (" + std::to_string(o.max_steps) + ")";
+  res.final_fit = cur_fit;
+  return res;
+}
+
+namespace {
+std::string jstr(const std::string& s) {
+  std::string o = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') o += '\\';
+    if (c == '\n') {
+      o += "\\n";
+      continue;
+    }
+    o += c;
+  }
+  return o + "\"";
+}
+std::string jnum(double v) { return std::isfinite(v) ? fmt(v, 8) : "null"; }
+}  // namespace
+
+std::string summary_json(const LoopResult& r) {
+  std::ostringstream o;
+  o << "{\n  \"base_model\": " << jstr(r.base_model) << ",\n  \"maps\": " << jstr(r.maps)
+    << ",\n  \"cv\": " << jstr(r.cv_mode) << ",\n  \"steps\": [";
+  for (size_t i = 0; i < r.steps.size(); ++i) {
+    const Step& s = r.steps[i];
+    o << (i ? "," : "") << "\n    {\"variable\": " << jstr(s.variable) << ", \"effect\": " << jstr(s.effect)
+      << ", \"p_value\": " << jnum(s.p_value) << ", \"threshold\": " << jnum(s.threshold)
+      << ", \"rms_before\": " << jnum(s.rms_before) << ", \"rms_after\": " << jnum(s.rms_after)
+      << ", \"max_before\": " << jnum(s.max_before) << ", \"max_after\": " << jnum(s.max_after)
+      << ", \"parameters\": {";
+    for (size_t k = 0; k < s.params.size(); ++k)
+      o << (k ? ", " : "") << jstr(s.params[k].name) << ": {\"value\": " << jnum(s.params[k].value)
+        << ", \"se\": " << jnum(s.params[k].se) << "}";
+    o << "}}";
+  }
+  o << (r.steps.empty() ? "" : "\n  ") << "],\n  \"unexplained\": [";
+  for (size_t i = 0; i < r.unexplained.size(); ++i) o << (i ? ", " : "") << jstr(r.unexplained[i]);
+  o << "],\n  \"stopped_because\": " << jstr(r.stopped_because) << "\n}\n";
+  return o.str();
+}
+
+}  // namespace drawbend::loop
