@@ -5,6 +5,8 @@
 #include <cmath>
 #include <sstream>
 
+#include <boost/math/distributions/fisher_f.hpp>
+
 #include "core/csv.hpp"
 
 namespace drawbend::loop {
@@ -53,6 +55,15 @@ bool applicable(const Design& d, const ModelSpec& s, EffectKind k) {
   return true;
 }
 
+// Nested-model F test on the joint fits (bending and friction together).
+double f_test(const JointFit& a, const JointFit& b) {
+  const int q = b.p - a.p, dof = b.n - b.p;
+  if (q <= 0 || dof <= 0 || !(b.rss > 0)) return b.rss < a.rss ? 0.0 : 1.0;
+  const double F = ((a.rss - b.rss) / q) / (b.rss / dof);
+  if (!(F > 0)) return 1.0;
+  return boost::math::cdf(boost::math::complement(boost::math::fisher_f_distribution<double>(q, dof), F));
+}
+
 }  // namespace
 
 LoopResult run_loop(const Design& d, const LoopOptions& o) {
@@ -66,6 +77,7 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
   CvResult cur = cross_validate(d, spec, res.folds);
   res.cv.push_back(cur);
   Fit cur_fit = fit_model(d, spec);
+  JointFit cur_joint = fit_joint(d, spec);
   std::vector<std::string> used_vars;
   for (int step = 0; step < o.max_steps; ++step) {
     const auto cands = make_candidates(d, cur.pred);
@@ -88,22 +100,26 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
       }
       Step s;
       s.variable = c.name;
-      s.p_value = c.p_value;
+      s.p_permutation = c.p_value;
       s.threshold = thr;
       s.rms_before = cur.rms;
       s.max_before = cur.max_abs;
       double best = INFINITY;
       ModelSpec best_spec;
       CvResult best_cv;
+      JointFit best_joint;
       for (EffectKind k : kinds) {
         const ModelSpec t = with_effect(d, spec, k, c.name);
         CvResult cv = cross_validate(d, t, res.folds);
-        s.tried.push_back({effect_name(k), cv.rms});
-        if (cv.rms < best) best = cv.rms, best_spec = t, best_cv = cv, s.effect = effect_name(k),
-                                          s.meaning = effect_meaning(k);
+        const JointFit jf = fit_joint(d, t);
+        const double pf = f_test(cur_joint, jf);
+        s.tried.push_back({effect_name(k) + " (F-test p " + fmt(pf, 3) + ")", cv.rms});
+        if (pf <= thr && cv.rms < best) best = cv.rms, best_spec = t, best_cv = cv, best_joint = jf,
+                                                   s.effect = effect_name(k), s.meaning = effect_meaning(k),
+                                                   s.p_value = pf;
       }
       if (!(best < cur.rms)) {
-        unexplained_now.push_back(c.name + " (library effects tried did not lower the held-out error)");
+        unexplained_now.push_back(c.name + " (no library effect passed the F test and lowered the held-out error)");
         continue;
       }
       const Fit f = fit_model(d, best_spec);
@@ -115,6 +131,7 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
       spec = best_spec;
       cur = best_cv;
       cur_fit = f;
+      cur_joint = best_joint;
       res.cv.push_back(cur);
       accepted = true;
       break;
@@ -166,7 +183,8 @@ std::string summary_json(const LoopResult& r) {
   for (size_t i = 0; i < r.steps.size(); ++i) {
     const Step& s = r.steps[i];
     o << (i ? "," : "") << "\n    {\"variable\": " << jstr(s.variable) << ", \"effect\": " << jstr(s.effect)
-      << ", \"p_value\": " << jnum(s.p_value) << ", \"threshold\": " << jnum(s.threshold)
+      << ", \"p_value\": " << jnum(s.p_value) << ", \"p_permutation\": " << jnum(s.p_permutation)
+      << ", \"threshold\": " << jnum(s.threshold)
       << ", \"rms_before\": " << jnum(s.rms_before) << ", \"rms_after\": " << jnum(s.rms_after)
       << ", \"max_before\": " << jnum(s.max_before) << ", \"max_after\": " << jnum(s.max_after)
       << ", \"parameters\": {";

@@ -1,8 +1,10 @@
 #pragma once
 // The loop: fit the base model, predict every sample, analyse the held-out
 // residuals against every candidate variable, trace the top significant
-// candidate to a library effect, add it if it lowers the held-out error, and
-// iterate until no candidate is significant at the Bonferroni threshold
+// candidate to a library effect, add it if the effect passes a nested-model F
+// test (bending and friction refitted jointly, so the uncertainty of the
+// bending lines is part of the null) and lowers the held-out error, and iterate
+// until no candidate is significant at the Bonferroni threshold
 // alpha / (number of candidates), or no library effect explains it.
 #include <cstdint>
 #include <string>
@@ -25,7 +27,9 @@ struct LoopOptions {
 
 struct Step {
   std::string variable, effect, meaning;
-  double p_value = 1, threshold = 0;
+  double p_value = 1;        ///< nested-model F test of the added effect (joint fit)
+  double p_permutation = 1;  ///< the candidate's blocked permutation test
+  double threshold = 0;      ///< alpha / number of candidates (Bonferroni), for both
   double rms_before = 0, rms_after = 0, max_before = 0, max_after = 0;
   std::vector<Param> params;                 ///< of the effect, from the full-data refit
   std::vector<std::pair<std::string, double>> tried;  ///< effect -> held-out RMS

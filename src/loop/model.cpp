@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <functional>
 #include <set>
 
 #include "analysis/rope.hpp"
@@ -250,6 +251,55 @@ std::vector<std::string> friction_names(const Design& d, const ModelSpec& spec, 
   return n;
 }
 
+// Levenberg-Marquardt on residual function r(theta) (numerical Jacobian of the
+// prediction); returns the final SSE and leaves J at the solution.
+double levenberg_marquardt(Eigen::VectorXd& th, const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& resid,
+                           Eigen::MatrixXd& J, bool& converged) {
+  const int p = static_cast<int>(th.size());
+  Eigen::VectorXd r = resid(th);
+  double sse = r.squaredNorm(), lambda = 1e-3;
+  J.resize(r.size(), p);
+  auto jacobian = [&]() {
+    for (int j = 0; j < p; ++j) {
+      Eigen::VectorXd t2 = th;
+      const double h = 1e-7 * std::max(1.0, std::abs(th[j]));
+      t2[j] += h;
+      J.col(j) = (r - resid(t2)) / h;  // d(prediction)/d(theta)
+    }
+  };
+  converged = false;
+  for (int it = 0; it < 100; ++it) {
+    jacobian();
+    const Eigen::MatrixXd A = J.transpose() * J;
+    const Eigen::VectorXd g = J.transpose() * r;
+    bool improved = false;
+    for (int tries = 0; tries < 20; ++tries) {
+      Eigen::MatrixXd Ad = A;
+      for (int j = 0; j < p; ++j) Ad(j, j) += lambda * std::max(A(j, j), 1e-12);
+      const Eigen::VectorXd t2 = th + Ad.ldlt().solve(g);
+      const Eigen::VectorXd r2 = resid(t2);
+      const double s2 = r2.squaredNorm();
+      if (std::isfinite(s2) && s2 < sse) {
+        const double rel = (sse - s2) / std::max(sse, 1e-300);
+        th = t2;
+        r = r2;
+        sse = s2;
+        lambda = std::max(lambda / 10, 1e-12);
+        improved = true;
+        if (rel < 1e-12) converged = true;
+        break;
+      }
+      lambda *= 10;
+    }
+    if (!improved || converged) {
+      converged = true;
+      break;
+    }
+  }
+  jacobian();
+  return sse;
+}
+
 }  // namespace
 
 Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& train_in) {
@@ -290,59 +340,58 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
     for (int k = 0; k < n; ++k) r[k] = d.rows[rows[k]].y - predict_row(d, f, L, t, rows[k], nullptr);
     return r;
   };
-  Eigen::VectorXd r = resid(th);
-  double sse = r.squaredNorm(), lambda = 1e-3;
-  Eigen::MatrixXd J(n, p);
-  auto jacobian = [&](const Eigen::VectorXd& t, const Eigen::VectorXd& r0) {
-    for (int j = 0; j < p; ++j) {
-      Eigen::VectorXd t2 = t;
-      const double h = 1e-7 * std::max(1.0, std::abs(t[j]));
-      t2[j] += h;
-      J.col(j) = (r0 - resid(t2)) / h;  // d(prediction)/d(theta)
-    }
-  };
-  for (int it = 0; it < 100 && n > 0; ++it) {
-    jacobian(th, r);
-    const Eigen::MatrixXd A = J.transpose() * J;
-    const Eigen::VectorXd g = J.transpose() * r;
-    bool improved = false;
-    for (int tries = 0; tries < 20; ++tries) {
-      Eigen::MatrixXd Ad = A;
-      for (int j = 0; j < p; ++j) Ad(j, j) += lambda * std::max(A(j, j), 1e-12);
-      const Eigen::VectorXd step = Ad.ldlt().solve(g);
-      const Eigen::VectorXd t2 = th + step;
-      const Eigen::VectorXd r2 = resid(t2);
-      const double s2 = r2.squaredNorm();
-      if (std::isfinite(s2) && s2 < sse) {
-        const double rel = (sse - s2) / std::max(sse, 1e-300);
-        th = t2;
-        r = r2;
-        sse = s2;
-        lambda = std::max(lambda / 10, 1e-12);
-        improved = true;
-        if (rel < 1e-12) f.converged = true;
-        break;
-      }
-      lambda *= 10;
-    }
-    if (!improved || f.converged) {
-      f.converged = true;
-      break;
-    }
-  }
+  Eigen::MatrixXd J;
+  double sse = 0;
+  if (n > 0) sse = levenberg_marquardt(th, resid, J, f.converged);
   f.theta = th;
   f.rss = sse;
   f.n_fixed = n;
   f.n_friction_params = p;
   // Standard errors: s^2 (J^T J)^-1 at the solution.
   if (n > 0 && p > 0) {
-    jacobian(th, r);
     const double s2 = n > p ? sse / (n - p) : 0.0;
     const Eigen::MatrixXd cov = (J.transpose() * J).completeOrthogonalDecomposition().pseudoInverse() * s2;
     const auto names = friction_names(d, spec, L);
     for (int j = 0; j < p; ++j) f.params.push_back({names[j], th[j], std::sqrt(std::max(0.0, cov(j, j))), "-"});
   }
   return f;
+}
+
+JointFit fit_joint(const Design& d, const ModelSpec& spec) {
+  Fit f = fit_model(d, spec);
+  const Layout L = layout(d, spec);
+  const bool linear = spec.bending_linear || spec.has(EffectKind::bending_tension);
+  std::vector<int> pins;  // pins with a bending line
+  for (size_t p = 0; p < d.pins.size(); ++p)
+    if (!std::isnan(f.b0[p])) pins.push_back(static_cast<int>(p));
+  const int nb = static_cast<int>(pins.size()) * (linear ? 2 : 1);
+  Eigen::VectorXd th(nb + L.n);
+  for (size_t k = 0; k < pins.size(); ++k) {
+    th[k] = f.b0[pins[k]];
+    if (linear) th[pins.size() + k] = f.b1[pins[k]];
+  }
+  th.tail(L.n) = f.theta;
+  std::vector<int> rows;
+  for (size_t i = 0; i < d.rows.size(); ++i)
+    if (!std::isnan(f.b0[d.rows[i].pin])) rows.push_back(static_cast<int>(i));
+  auto resid = [&](const Eigen::VectorXd& t) {
+    Fit g = f;
+    for (size_t k = 0; k < pins.size(); ++k) {
+      g.b0[pins[k]] = t[k];
+      if (linear) g.b1[pins[k]] = t[pins.size() + k];
+    }
+    const Eigen::VectorXd tf = t.tail(L.n);
+    Eigen::VectorXd r(rows.size());
+    for (size_t k = 0; k < rows.size(); ++k) r[k] = d.rows[rows[k]].y - predict_row(d, g, L, tf, rows[k], nullptr);
+    return r;
+  };
+  Eigen::MatrixXd J;
+  bool conv = false;
+  JointFit j;
+  j.rss = levenberg_marquardt(th, resid, J, conv);
+  j.n = static_cast<int>(rows.size());
+  j.p = static_cast<int>(th.size());
+  return j;
 }
 
 double predict(const Design& d, const Fit& f, int i) {

@@ -87,6 +87,15 @@ struct Fit {
 
 /// Fit on the rows whose index is in `train` (all rows when empty).
 Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& train = {});
+/// Bending and friction fitted together on all rows (rotating and fixed), so
+/// that the residual sum of squares of nested models can be compared by an F
+/// test that accounts for the uncertainty of the bending lines.
+struct JointFit {
+  double rss = 0;
+  int n = 0, p = 0;
+};
+JointFit fit_joint(const Design& d, const ModelSpec& spec);
+
 /// Predicted outlet force of row i [N] (NaN when its pin has no bending line).
 double predict(const Design& d, const Fit& f, int i);
 /// Predicted friction coefficient (mean over the map) of fixed row i.
