@@ -64,6 +64,20 @@ double f_test(const JointFit& a, const JointFit& b) {
   return boost::math::cdf(boost::math::complement(boost::math::fisher_f_distribution<double>(q, dof), F));
 }
 
+// A significant candidate without a library effect: confirm it by a generic,
+// non-physical linear term mu (1 + beta z(x)) in the joint fit (F test).  NaN
+// when the variable has no numeric value per row (categorical, or derived from
+// the prediction).
+double confirm_generic(const Design& d, const ModelSpec& spec, const JointFit& cur, const std::string& name) {
+  ModelSpec t = spec;
+  t.effects.push_back({EffectKind::drift, name, 0});
+  try {
+    return f_test(cur, fit_joint(d, t));
+  } catch (const InputError&) {
+    return std::nan("");
+  }
+}
+
 }  // namespace
 
 LoopResult run_loop(const Design& d, const LoopOptions& o) {
@@ -95,7 +109,11 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
             !(k == EffectKind::drift && std::find(used_vars.begin(), used_vars.end(), c.name) != used_vars.end()))
           kinds.push_back(k);
       if (kinds.empty()) {
-        unexplained_now.push_back(c.name);
+        const double pg = confirm_generic(d, spec, cur_joint, c.name);
+        if (std::isnan(pg)) res.screened.push_back(c.name + " (round " + std::to_string(step + 1) + ", p_perm " +
+                                                  fmt(c.p_value, 3) + "; categorical or derived: no model test)");
+        else if (pg <= thr) unexplained_now.push_back(c.name + " (no library effect; generic linear term F-test p " +
+                                                      fmt(pg, 3) + ")");
         continue;
       }
       Step s;
@@ -119,7 +137,13 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
                                                    s.p_value = pf;
       }
       if (!(best < cur.rms)) {
-        unexplained_now.push_back(c.name + " (no library effect passed the F test and lowered the held-out error)");
+        const double pg = confirm_generic(d, spec, cur_joint, c.name);
+        if (!std::isnan(pg) && pg <= thr)
+          unexplained_now.push_back(c.name + " (library effects failed; generic linear term F-test p " + fmt(pg, 3) +
+                                    ")");
+        else
+          res.screened.push_back(c.name + " (round " + std::to_string(step + 1) + ", p_perm " + fmt(c.p_value, 3) +
+                                 "; not confirmed by a model F test)");
         continue;
       }
       const Fit f = fit_model(d, best_spec);
@@ -148,10 +172,13 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
         << " / " << rank.size() << " candidates) with a positive cross-validated error reduction";
       if (!rank.empty()) m << "; smallest p: " << rank.front().name << " p = " << fmt(rank.front().p_value, 3);
       res.stopped_because = m.str();
-    } else {
+    } else if (!unexplained_now.empty()) {
       std::string v;
       for (const auto& u : unexplained_now) v += (v.empty() ? "" : "; ") + u;
       res.stopped_because = "significant candidates that no library effect explains: " + v;
+    } else {
+      res.stopped_because = "candidates passed the permutation screen but none was confirmed by a model F test at p <= " +
+                            fmt(thr, 3) + " (see screened)";
     }
     break;
   }
@@ -195,6 +222,8 @@ std::string summary_json(const LoopResult& r) {
   }
   o << (r.steps.empty() ? "" : "\n  ") << "],\n  \"unexplained\": [";
   for (size_t i = 0; i < r.unexplained.size(); ++i) o << (i ? ", " : "") << jstr(r.unexplained[i]);
+  o << "],\n  \"screened_not_confirmed\": [";
+  for (size_t i = 0; i < r.screened.size(); ++i) o << (i ? ", " : "") << jstr(r.screened[i]);
   o << "],\n  \"stopped_because\": " << jstr(r.stopped_because) << "\n}\n";
   return o.str();
 }

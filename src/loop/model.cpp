@@ -24,10 +24,19 @@ std::vector<double> Design::zscore(const std::string& column) const {
     double v;
     if (column == "time_s") v = s.time_s;
     else if (column == "sliding_distance_mm") v = s.sliding_mm;
+    else if (column == "back_tension_N") v = s.back_tension_N;
+    else if (column == "speed_mm_s") v = s.speed_mm_s;
+    else if (column == "direction_deg") v = s.direction_deg;
+    else if (column == "pin_diameter_mm") v = s.pin_d_mm;
+    else if (column == "inv_R_per_mm") v = 2 / s.pin_d_mm;
     else {
       const int k = data->extra_index(column);
-      if (k < 0) throw InputError("no column '" + column + "' for a drift effect");
-      v = std::stod(s.extra[k]);
+      if (k < 0) throw InputError("no numeric column '" + column + "' for a linear term");
+      try {
+        v = std::stod(s.extra[k]);
+      } catch (const std::exception&) {
+        throw InputError("column '" + column + "' is not numeric: no linear term");
+      }
     }
     x[i] = v;
   }

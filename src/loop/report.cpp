@@ -110,6 +110,10 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
     m << "\nSignificant variables that no library effect explains:\n\n";
     for (const auto& u : r.unexplained) m << "- " << u << "\n";
   }
+  if (!r.screened.empty()) {
+    m << "\nPassed the permutation screen but not confirmed by a model F test (not effects):\n\n";
+    for (const auto& u : r.screened) m << "- " << u << "\n";
+  }
   m << "\n## Added effects\n\n| step | effect | meaning | parameter | value ± se |\n|---|---|---|---|---|\n";
   for (size_t k = 0; k < r.steps.size(); ++k)
     for (const auto& p : r.steps[k].params)
