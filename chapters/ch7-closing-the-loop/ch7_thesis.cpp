@@ -184,6 +184,8 @@ void automatic_loop(Chapter& c, const Thesis& t, const Config& cfg) {
   c.save(residuals_table(d, r), "auto_residuals");
   write_file_atomic(c.out("tables/auto_loop_summary.json"), summary_json(r));
   c.value("auto_cv", r.cv_mode);
+  c.value("auto_n_pred", std::to_string(r.cv.front().n));
+  c.value("auto_n_rows", std::to_string(d.rows.size()));
   c.value("auto_steps", std::to_string(r.steps.size()));
   c.value("auto_first", r.steps.empty() ? "none" : r.steps[0].variable + " → " + r.steps[0].effect);
   c.value("auto_rms_base", fmt(r.cv.front().rms, 4), "N");
@@ -236,6 +238,27 @@ void pin_42_anomaly(Chapter& c, const Thesis& t) {
   c.value("d2_rel_undiluted", fmt(100 * rel_und, 3), "%");
   c.value("d2_cells_diluted", std::to_string(n_dil));
   c.value("d2_cells_undiluted", std::to_string(n_und));
+  // The fitted mu(p) from the two smaller pins against the printed Table 5.16.
+  const CsvTable t516 = read_csv(c.data("thesis/table_5_16.csv"));
+  auto cmp = c.table({"cell", "mu0_ours", "a1_ours_per_MPa", "a1_se", "a0_table_5_16", "a1_table_5_16_per_MPa"},
+                     "mu(p) = mu0 + a1 p from the 12.7 and 25.4 mm pins (all back tensions; maps: " + t.maps.label() +
+                         ") against the printed Table 5.16 (FE maps of the thesis, Table 5.13 back tensions)");
+  for (size_t k = 0; k < d.cells.size(); ++k) {
+    const std::string& cell = d.cells[k];
+    std::string mu0 = "-", a1 = "-", se = "-", a0t = "-", a1t = "-";
+    for (const auto& p : f.params) {
+      if (p.name == "mu_RD [" + cell + "]" || p.name == "mu_TD [" + cell + "]") mu0 = fmt(p.value, 4);
+      if (p.name == "a1 [" + cell + "] (1/MPa)") a1 = fmt(p.value, 3), se = fmt(p.se, 2);
+    }
+    for (const auto& r : t516.rows) {
+      const std::string dir = t516.text(r, "direction");
+      if (cell.find("diluted") != std::string::npos && cell.find("undiluted") == std::string::npos &&
+          cell.find("| " + fmt(t516.number(r, "speed_mm_s")) + " mm/s | " + dir) != std::string::npos)
+        a0t = t516.text(r, "a0"), a1t = t516.text(r, "a1_per_MPa");
+    }
+    cmp.row({cell, mu0, a1, se, a0t, a1t});
+  }
+  c.save(cmp, "demo2_mu_p_vs_table_5_16");
   // The loop's per-pin surface factor on all data, with mu(p).
   ModelSpec s = with(EffectKind::pressure_mu);
   s.effects.push_back({EffectKind::pin_surface, "", 0});
