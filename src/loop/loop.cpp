@@ -34,14 +34,28 @@ ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const s
   ModelSpec t = s;
   Effect e{k, variable, 0};
   if (k == EffectKind::bending_tension) t.bending_linear = true;
-  if (k == EffectKind::depletion) {  // lambda on a grid, by the full-data fit
-    double best = INFINITY;
-    for (double lam : {10.0, 25.0, 50.0, 100.0, 200.0, 400.0, 800.0}) {
+  if (k == EffectKind::depletion) {  // lambda: grid, then golden section in log(lambda), by the full-data fit
+    auto rss = [&](double lam) {
       ModelSpec u = s;
       u.effects.push_back({k, variable, lam});
-      const double rss = fit_model(d, u).rss;
-      if (rss < best) best = rss, e.lambda_mm = lam;
+      return fit_model(d, u).rss;
+    };
+    const std::vector<double> grid = {10.0, 25.0, 50.0, 100.0, 200.0, 400.0, 800.0};
+    size_t bi = 0;
+    double best = INFINITY;
+    for (size_t i = 0; i < grid.size(); ++i) {
+      const double r = rss(grid[i]);
+      if (r < best) best = r, bi = i;
     }
+    double a = std::log(grid[bi > 0 ? bi - 1 : 0]), b = std::log(grid[std::min(bi + 1, grid.size() - 1)]);
+    const double g = 0.5 * (std::sqrt(5.0) - 1);
+    double x1 = b - g * (b - a), x2 = a + g * (b - a), f1 = rss(std::exp(x1)), f2 = rss(std::exp(x2));
+    for (int it = 0; it < 20; ++it) {
+      if (f1 < f2) b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = rss(std::exp(x1));
+      else a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = rss(std::exp(x2));
+    }
+    e.lambda_mm = std::exp(0.5 * (a + b));
+    if (rss(e.lambda_mm) > best) e.lambda_mm = grid[bi];
   }
   t.effects.push_back(e);
   return t;
