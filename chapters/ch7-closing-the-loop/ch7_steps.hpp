@@ -29,6 +29,7 @@ void thesis_loop_pressure(Chapter& c, const Thesis& t);          // 3 (demonstra
 void automatic_loop(Chapter& c, const Thesis& t, const Config& cfg);  // 4
 void pin_42_anomaly(Chapter& c, const Thesis& t);                // 5 (demonstration 2)
 void bending_vs_swift(Chapter& c, const Thesis& t, const Config& cfg);  // 6 (demonstration 2)
-void synthetic_detection(Chapter& c, const Config& cfg);         // 7 (demonstration 3)
+void rd_td_crossover(Chapter& c, const Thesis& t);               // 7 (demonstration 2)
+void synthetic_detection(Chapter& c, const Config& cfg);         // 8 (demonstration 3)
 
 }  // namespace ch7

@@ -16,7 +16,8 @@
 //   4. The automatic loop on the thesis data (all candidates, no hints).
 //   5. Demonstration 2a: the 42 mm pin predicted from the 12.7/25.4 mm pins.
 //   6. Demonstration 2b: bending force against back tension vs Swift Eq. 2.1.
-//   7. Demonstration 3: synthetic data with hidden effects and null data.
+//   7. Demonstration 2c: the RD/TD crossover at high speed against pin scatter.
+//   8. Demonstration 3: synthetic data with hidden effects and null data.
 #include "ch7_steps.hpp"
 
 int main(int argc, char** argv) {
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
     automatic_loop(c, t, cfg);                  // 4
     pin_42_anomaly(c, t);                       // 5
     bending_vs_swift(c, t, cfg);                // 6
-    synthetic_detection(c, cfg);                // 7
+    rd_td_crossover(c, t);                      // 7
+    synthetic_detection(c, cfg);                // 8
   });
 }
