@@ -90,6 +90,8 @@ int loop_main(int argc, char** argv) {
     for (const auto& s : data.rows) pins.insert(s.pin_d_mm);
     const MapLibrary maps = maps_for(maps_dir, {pins.begin(), pins.end()});
     const Design d = make_design(data, maps);
+    for (const auto& n : d.notes)
+      if (n.rfind("WARNING", 0) == 0) std::cerr << n << "\n";
     const LoopResult r = run_loop(d, lo);
     write_loop_outputs(d, r, out, figures, gnuplot);
     std::cout << "base held-out RMS " << fmt(r.cv.front().rms, 4) << " N; " << r.steps.size() << " step(s)";

@@ -112,6 +112,14 @@ Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_
   }
   for (auto& r : d.rows)
     if (!r.rotating) r.lgL -= lg_sum / std::max(1, n_fixed);
+  for (size_t p = 0; p < d.pins.size(); ++p) {
+    bool rot = false, fixed = false;
+    for (const auto& r : d.rows)
+      if (r.pin == static_cast<int>(p)) (r.rotating ? rot : fixed) = true;
+    if (fixed && !rot)
+      d.notes.push_back("WARNING: no rotating-pin rows for the " + fmt(d.pins[p]) +
+                        " mm pin: no bending line, so its fixed-pin rows cannot be predicted");
+  }
   d.notes.push_back("pressure maps: " + maps.label());
   return d;
 }
