@@ -14,6 +14,9 @@
 //   4. The new method on our maps and forces, orders 1 and 2 (Fig. 4.10).
 //   5. Areas per pressure range (Fig. 4.11).
 #include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <cmath>
 #include <iostream>
 
@@ -165,9 +168,20 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.checks().claim("ch4.fe.mu_conv_falls", "conventional mu falls with pin diameter (Fig. 4.9)", falls(mu_conv),
                    "ours: " + fmt(mu_conv[0], 4) + ", " + fmt(mu_conv[1], 4) + ", " + fmt(mu_conv[2], 4));
 
-  // 3. Maps, profiles, histories.
+  // 3. Maps, profiles, histories.  The frictionless maps are also exported in
+  // the format of `drawbend loop --maps` (Chapter 7): maps/pin_<D>mm.csv, the
+  // solver's contact map with the full-strip reference back tension stated.
+  std::filesystem::create_directories(c.out("maps"));
   for (const auto& r : runs) {
     const std::string d = fmt(r.D);
+    {
+      std::ifstream in(r.free.map_file);
+      std::stringstream text;
+      text << "# reference_back_tension_N: " << fmt(2 * r.free.F_back, 8)
+           << " (full strip; the map is the half model's, frictionless, pin " << d << " mm)\n"
+           << in.rdbuf();
+      write_file_atomic(c.out("maps/pin_" + d + "mm.csv"), text.str());
+    }
     for (const auto* x : {&r.free, &r.strib}) {
       const bool fr = x == &r.free;
       const std::string stem = "map_d" + d + (fr ? "_frictionless" : "_stribeck");

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <string>
 
+#include "cli/loop_cmd.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
 #include "io/deck.hpp"
@@ -21,7 +22,9 @@ int main(int argc, char** argv) {
     std::cout << "usage: drawbend run CASE.toml [--out DIR] [--threads N] [--quiet]\n"
                  "  Runs an explicit finite-element case deck (format: data/cases/README.md).\n"
                  "       drawbend drawbend-deck [--pin-diameter D ...] [--run DIR]\n"
-                 "  Writes (or runs) the draw-bend deck of the chapters' builder; --help lists its options.\n";
+                 "  Writes (or runs) the draw-bend deck of the chapters' builder; --help lists its options.\n"
+                 "       drawbend loop DATA.csv --out DIR [options]  (see drawbend loop --help)\n"
+                 "       drawbend synth --effect E | --from-thesis --out DIR  (see drawbend synth --help)\n";
     return argc < 2 ? 2 : 0;
   }
   const std::string cmd = argv[1];
@@ -36,8 +39,10 @@ int main(int argc, char** argv) {
       return 3;
     }
   }
+  if (cmd == "loop") return cli::loop_main(argc - 1, argv + 1);    // loop_cmd.cpp
+  if (cmd == "synth") return cli::synth_main(argc - 1, argv + 1);  // loop_cmd.cpp
   if (cmd != "run") {
-    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run)\n";
+    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, loop, synth)\n";
     return 2;
   }
   if (argc < 3) {

@@ -202,7 +202,8 @@ void reduce(DrawBendResult& r) {
   r.F_out_regression = sf / m + slope * (t.back() - st / m);
   // Contact map at the end of the draw, as angle round the pin from the inlet
   // tangent point (top of the pin) and position across the width.
-  const CsvTable cm = read_csv(last_map(dir).string());
+  r.map_file = last_map(dir).string();
+  const CsvTable cm = read_csv(r.map_file);
   for (const auto& row : cm.rows) {
     MapNode q;
     q.angle_deg = std::atan2(cm.number(row, "x_mm"), cm.number(row, "z_mm")) * 180.0 / M_PI;

@@ -67,6 +67,7 @@ struct DrawBendResult {
   double F_out_regression = 0;          ///< F_Y from a linear regression of the last 25 % at its end [N]
   double F_out_std = 0;                 ///< standard deviation over the last third [N]
   std::vector<MapNode> map;             ///< contact map at the end of step 3
+  std::string map_file;                 ///< the solver's contact-map CSV it was read from
   double balance_error = 0, hourglass_ratio = 0, kinetic_ratio = 0, max_penetration = 0;
   double wall_seconds = 0;
   long cycles = 0;

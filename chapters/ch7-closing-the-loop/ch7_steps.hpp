@@ -1,0 +1,35 @@
+#pragma once
+// Steps of the Chapter 7 driver (see main.cpp for the recipe).
+#include <string>
+
+#include "loop/loop.hpp"
+#include "loop/maps.hpp"
+#include "loop/measured.hpp"
+#include "study/chapter.hpp"
+
+namespace ch7 {
+
+using drawbend::study::Chapter;
+
+struct Config {
+  std::string maps_dir;   ///< FE maps (empty: analytic stand-in, not FE)
+  int null_seeds = 5;     ///< null data sets per noise level
+  int effect_seeds = 1;   ///< data sets per hidden effect and noise level
+  int permutations = 999;
+};
+
+struct Thesis {
+  drawbend::loop::Dataset data;
+  drawbend::loop::MapLibrary maps;
+};
+
+Thesis load_thesis_data(Chapter& c, const Config& cfg);         // 1
+void map_table(Chapter& c, const drawbend::loop::MapLibrary& m);  // 2
+void thesis_loop_pressure(Chapter& c, const Thesis& t);          // 3 (demonstration 1)
+void automatic_loop(Chapter& c, const Thesis& t, const Config& cfg);  // 4
+void pin_42_anomaly(Chapter& c, const Thesis& t);                // 5 (demonstration 2)
+void bending_vs_swift(Chapter& c, const Thesis& t, const Config& cfg);  // 6 (demonstration 2)
+void rd_td_crossover(Chapter& c, const Thesis& t);               // 7 (demonstration 2)
+void synthetic_detection(Chapter& c, const Config& cfg);         // 8 (demonstration 3)
+
+}  // namespace ch7

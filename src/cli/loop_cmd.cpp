@@ -1,0 +1,144 @@
+// drawbend loop DATA.csv --out DIR [--maps DIR] [...]
+//   Closes the loop on measured data (format: README.md): base model, held-out
+//   residuals, candidate ranking, library effects, iterate; writes loop.md,
+//   loop_summary.json, tables/ and figures/ under DIR.  Data problems are
+//   reported (file:line: column) and the usable rows analysed.
+// drawbend synth --effect E --noise N --seed S --out DIR [--maps DIR]
+//   Synthetic data with a hidden law: DIR/data.csv and DIR/truth.json.
+// drawbend synth --from-thesis --out DIR [--data DIR] [--points 7]
+//   The thesis fits sampled into the sample format: DIR/thesis_drawbend.csv.
+// Exit codes: 0 ok, 2 bad input, 3 numerical failure.
+#include "cli/loop_cmd.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <set>
+
+#include "core/csv.hpp"
+#include "core/options.hpp"
+#include "loop/loop.hpp"
+#include "loop/report.hpp"
+#include "loop/synth.hpp"
+#include "loop/thesis_rows.hpp"
+
+namespace drawbend::cli {
+
+namespace fs = std::filesystem;
+using namespace drawbend::loop;
+
+namespace {
+MapLibrary maps_for(const std::string& dir, const std::vector<double>& pins) {
+  if (!dir.empty()) return MapLibrary::load_dir(dir);
+  return MapLibrary::stand_in(pins);
+}
+
+template <class F>
+int guarded(F f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    std::cerr << "input error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "input error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 3;
+  }
+}
+}  // namespace
+
+int loop_main(int argc, char** argv) {
+  if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
+    if (argc >= 2 && std::string(argv[1]) == "--help") {
+      std::cout << "usage: drawbend loop DATA.csv --out DIR [--maps DIR] [--cv auto|test|bt-block] [--folds 5]\n"
+                   "  [--permutations 999] [--seed N] [--alpha 0.05] [--bending linear|constant] [--figures DIR]\n";
+      return 0;
+    }
+    std::cerr << "drawbend loop: missing DATA.csv\n";
+    return 2;
+  }
+  const std::string data_path = argv[1];
+  LoopOptions lo;
+  std::string out = "loop-out", maps_dir, bending = "linear", figures = DRAWBEND_FIGURES_DIR, gnuplot = "gnuplot";
+  int seed = static_cast<int>(lo.seed);
+  Options opt("drawbend loop DATA.csv", "Close the loop on measured draw-bend data.");
+  opt.add(out, "out", "output directory");
+  opt.add(maps_dir, "maps", "directory of FE maps pin_<d>mm.csv (empty: analytic stand-in, not FE)");
+  opt.add(lo.cv, "cv", "cross-validation folds: auto, test, bt-block");
+  opt.add(lo.folds, "folds", "number of folds");
+  opt.add(lo.permutations, "permutations", "permutations per candidate");
+  opt.add(seed, "seed", "random seed of the permutation test");
+  opt.add(lo.alpha, "alpha", "family-wise significance level (Bonferroni over candidates)");
+  opt.add(lo.max_steps, "max-steps", "maximum number of effects to add");
+  opt.add(bending, "bending", "base bending force: linear (b0 + b1 F_back) or constant (Swift form)");
+  opt.add(figures, "figures", "directory of the gnuplot scripts (empty: no figures)");
+  opt.add(gnuplot, "gnuplot", "gnuplot executable");
+  return guarded([&] {
+    if (!opt.parse(argc - 1, argv + 1)) return 0;
+    if (bending != "linear" && bending != "constant")
+      throw std::invalid_argument("--bending must be linear or constant, not '" + bending + "'");
+    lo.bending_linear = bending == "linear";
+    lo.seed = static_cast<std::uint64_t>(seed);
+    const Dataset data = read_measured(data_path);
+    for (const auto& p : data.problems) std::cerr << "data problem: " << p.str() << "\n";
+    std::cout << data_path << ": " << data.rows_read << " rows read, " << data.rows.size() << " used, "
+              << data.rows_dropped << " dropped, " << data.problems.size() << " problems\n";
+    if (data.rows.empty()) throw InputError(data_path + ": no usable rows");
+    std::set<double> pins;
+    for (const auto& s : data.rows) pins.insert(s.pin_d_mm);
+    const MapLibrary maps = maps_for(maps_dir, {pins.begin(), pins.end()});
+    const Design d = make_design(data, maps);
+    for (const auto& n : d.notes)
+      if (n.rfind("WARNING", 0) == 0) std::cerr << n << "\n";
+    const LoopResult r = run_loop(d, lo);
+    write_loop_outputs(d, r, out, figures, gnuplot);
+    std::cout << "base held-out RMS " << fmt(r.cv.front().rms, 4) << " N; " << r.steps.size() << " step(s)";
+    for (const auto& s : r.steps)
+      std::cout << "; " << s.variable << " -> " << s.effect << " (p " << fmt(s.p_value, 3) << ", RMS "
+                << fmt(s.rms_before, 4) << " -> " << fmt(s.rms_after, 4) << " N)";
+    std::cout << "\nstopped: " << r.stopped_because << "\nwrote " << out << "/loop.md, " << out
+              << "/loop_summary.json\n";
+    return 0;
+  });
+}
+
+int synth_main(int argc, char** argv) {
+  SynthOptions so;
+  std::string out = "synth-out", maps_dir, data_dir = DRAWBEND_DATA_DIR, pins_text = "12.7,25.4,42";
+  int seed = 1, points = 7;
+  bool from_thesis = false;
+  Options opt("drawbend synth", "Write synthetic draw-bend data with a hidden law, or the thesis data set.");
+  opt.add(out, "out", "output directory");
+  opt.add(so.effect, "effect", "hidden law: none, depletion, pin_surface, speed, drift, direction, pressure");
+  opt.add(so.noise_N, "noise", "measurement noise sd on the outlet force [N]");
+  opt.add(seed, "seed", "random seed");
+  opt.add(so.amplitude, "amplitude", "amplitude of the hidden law (negative: its default)");
+  opt.add(so.tests_per_pin, "tests-per-pin", "fixed-pin tests per pin");
+  opt.add(so.rows_per_test, "rows-per-test", "rows per test");
+  opt.add(maps_dir, "maps", "directory of FE maps pin_<d>mm.csv (empty: analytic stand-in, not FE)");
+  opt.add_flag(from_thesis, "from-thesis", "write the thesis fits as sample rows (thesis_drawbend.csv)");
+  opt.add(data_dir, "data", "data directory (with thesis/) for --from-thesis");
+  opt.add(points, "points", "rows per thesis fit for --from-thesis");
+  return guarded([&] {
+    if (!opt.parse(argc, argv)) return 0;
+    fs::create_directories(out);
+    if (from_thesis) {
+      const Dataset d = thesis_dataset(data_dir + "/thesis", points);
+      write_measured(out + "/thesis_drawbend.csv", d);
+      std::cout << "wrote " << out << "/thesis_drawbend.csv (" << d.rows.size() << " rows)\n";
+      return 0;
+    }
+    so.seed = static_cast<std::uint64_t>(seed);
+    const MapLibrary maps = maps_for(maps_dir, {12.7, 25.4, 42.0});
+    SynthTruth truth;
+    const Dataset d = synthesize(so, maps, truth);
+    write_measured(out + "/data.csv", d);
+    write_file_atomic(out + "/truth.json", truth_json(truth));
+    std::cout << "wrote " << out << "/data.csv (" << d.rows.size() << " rows) and " << out << "/truth.json\n";
+    return 0;
+  });
+}
+
+}  // namespace drawbend::cli

@@ -1,0 +1,341 @@
+// Folds, candidates and their ranking; see candidates.hpp.
+#include "loop/candidates.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <random>
+#include <set>
+
+#include "core/csv.hpp"
+
+namespace drawbend::loop {
+
+Folds make_folds(const Design& d, const std::string& mode_in, int k) {
+  Folds f;
+  f.k = k;
+  const auto& rows = d.data->rows;
+  const size_t n = rows.size();
+  std::map<std::string, int> test_ix;
+  f.block.resize(n);
+  f.test.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    f.block[i] = d.rows[i].rotating ? 0 : 1 + d.rows[i].cell;
+    f.test[i] = test_ix.emplace(rows[i].test_id, static_cast<int>(test_ix.size())).first->second;
+  }
+  // tests per (block, pin), in order of first appearance
+  std::map<std::pair<int, int>, std::vector<int>> bp;
+  std::vector<int> seen(test_ix.size(), 0);
+  for (size_t i = 0; i < n; ++i)
+    if (!seen[f.test[i]]++) bp[{f.block[i], d.rows[i].pin}].push_back(f.test[i]);
+  std::string mode = mode_in;
+  if (mode == "auto") {
+    mode = "test";
+    for (const auto& [key, tests] : bp)
+      if (tests.size() < 2) mode = "bt-block";
+  }
+  f.mode = mode;
+  f.fold.assign(n, 0);
+  if (mode == "test") {
+    std::vector<int> tf(test_ix.size(), 0);
+    for (const auto& [key, tests] : bp)
+      for (size_t j = 0; j < tests.size(); ++j) tf[tests[j]] = static_cast<int>((j + key.second) % k);
+    for (size_t i = 0; i < n; ++i) f.fold[i] = tf[f.test[i]];
+  } else if (mode == "bt-block") {
+    std::map<int, std::vector<int>> by_test;
+    for (size_t i = 0; i < n; ++i) by_test[f.test[i]].push_back(static_cast<int>(i));
+    for (auto& [t, ix] : by_test) {
+      std::stable_sort(ix.begin(), ix.end(), [&](int a, int b) { return d.rows[a].fback < d.rows[b].fback; });
+      for (size_t j = 0; j < ix.size(); ++j) f.fold[ix[j]] = static_cast<int>(j * k / ix.size());
+    }
+  } else {
+    throw std::invalid_argument("unknown cross-validation mode '" + mode_in + "' (auto, test, bt-block)");
+  }
+  return f;
+}
+
+CvResult cross_validate(const Design& d, const ModelSpec& spec, const Folds& f) {
+  const size_t n = d.rows.size();
+  CvResult r;
+  r.pred.assign(n, std::nan(""));
+  r.resid.assign(n, std::nan(""));
+  for (int k = 0; k < f.k; ++k) {
+    std::vector<int> train;
+    for (size_t i = 0; i < n; ++i)
+      if (f.fold[i] != k) train.push_back(static_cast<int>(i));
+    if (train.size() == n) continue;
+    const Fit fit = fit_model(d, spec, train);
+    for (size_t i = 0; i < n; ++i)
+      if (f.fold[i] == k) {
+        r.pred[i] = predict(d, fit, static_cast<int>(i));
+        r.resid[i] = d.rows[i].y - r.pred[i];
+      }
+  }
+  double ss = 0;
+  for (double e : r.resid)
+    if (std::isfinite(e)) {
+      ss += e * e;
+      r.max_abs = std::max(r.max_abs, std::abs(e));
+      ++r.n;
+    }
+  r.rms = r.n ? std::sqrt(ss / r.n) : std::nan("");
+  return r;
+}
+
+std::vector<Candidate> make_candidates(const Design& d, const std::vector<double>& pred) {
+  const auto& data = *d.data;
+  const size_t n = data.rows.size();
+  std::vector<Candidate> c;
+  auto numeric = [&](const std::string& name, const std::string& kind, auto get) {
+    Candidate k{name, kind, false, false, std::vector<double>(n), {}};
+    for (size_t i = 0; i < n; ++i) k.x[i] = get(i);
+    c.push_back(std::move(k));
+  };
+  auto categorical = [&](const std::string& name, const std::string& kind, auto get) {
+    Candidate k{name, kind, true, false, std::vector<double>(n), {}};
+    std::map<std::string, int> ix;
+    for (size_t i = 0; i < n; ++i) {
+      auto [it, fresh] = ix.emplace(get(i), static_cast<int>(k.levels.size()));
+      if (fresh) k.levels.push_back(it->first);
+      k.x[i] = it->second;
+    }
+    c.push_back(std::move(k));
+  };
+  const auto& R = data.rows;
+  // Columns beyond the model's inputs.
+  if (data.has_sliding) numeric("sliding_distance_mm", "column", [&](size_t i) { return R[i].sliding_mm; });
+  if (data.has_time) numeric("time_s", "column", [&](size_t i) { return R[i].time_s; });
+  for (size_t e = 0; e < data.extra_columns.size(); ++e) {
+    bool num = true;
+    for (const auto& s : R) {
+      try {
+        size_t used = 0;
+        const double v = std::stod(s.extra[e], &used);
+        if (used != s.extra[e].size() || !std::isfinite(v)) num = false;
+      } catch (...) {
+        if (!s.extra[e].empty()) num = false;
+      }
+    }
+    if (num)
+      numeric(data.extra_columns[e], "column", [&](size_t i) {
+        return R[i].extra[e].empty() ? std::nan("") : std::stod(R[i].extra[e]);
+      });
+    else
+      categorical(data.extra_columns[e], "column", [&](size_t i) { return R[i].extra[e]; });
+  }
+  // Derived quantities.
+  numeric("avg_pressure_MPa", "derived", [&](size_t i) {  // Eq. (2.2) at the predicted outlet force
+    return (R[i].back_tension_N + pred[i]) / (R[i].pin_d_mm * kStripWidthMm);
+  });
+  numeric("inv_R_per_mm", "derived", [&](size_t i) { return 2.0 / R[i].pin_d_mm; });
+  // The model's inputs.
+  numeric("pin_diameter_mm", "input", [&](size_t i) { return R[i].pin_d_mm; });
+  numeric("back_tension_N", "input", [&](size_t i) { return R[i].back_tension_N; });
+  numeric("speed_mm_s", "input", [&](size_t i) { return R[i].speed_mm_s; });
+  numeric("direction_deg", "input", [&](size_t i) { return R[i].direction_deg; });
+  categorical("lubricant", "input", [&](size_t i) { return R[i].lubricant; });
+  // Group identities.
+  categorical("pin", "group", [&](size_t i) { return fmt(R[i].pin_d_mm) + " mm"; });
+  categorical("test_id", "group", [&](size_t i) { return R[i].test_id; });
+  // Level of each candidate: constant within every test?
+  std::map<std::string, std::vector<size_t>> by_test;
+  for (size_t i = 0; i < n; ++i) by_test[R[i].test_id].push_back(i);
+  for (auto& k : c) {
+    k.test_level = true;
+    for (const auto& [t, ix] : by_test)
+      for (size_t j : ix)
+        if (!(k.x[j] == k.x[ix[0]] || (std::isnan(k.x[j]) && std::isnan(k.x[ix[0]])))) k.test_level = false;
+  }
+  return c;
+}
+
+namespace {
+
+// A probe on one candidate: the rows it uses and its features.
+struct Probe {
+  std::vector<int> rows;
+  bool categorical = false;
+  int dof = 0;
+};
+
+// Explained sum of squares of residual r by x over the probe rows, block-centred.
+double probe_ess(const Probe& p, const std::vector<double>& x, const std::vector<double>& r, const std::vector<int>& block,
+                 std::vector<double>& scratch_z) {
+  if (p.categorical) {  // SS between (block, level) cells minus SS between blocks
+    std::map<std::pair<int, int>, std::pair<double, int>> cl;
+    std::map<int, std::pair<double, int>> bl;
+    for (int i : p.rows) {
+      auto& a = cl[{block[i], static_cast<int>(x[i])}];
+      a.first += r[i], a.second++;
+      auto& b = bl[block[i]];
+      b.first += r[i], b.second++;
+    }
+    double s = 0;
+    for (auto& [k, v] : cl) s += v.first * v.first / v.second;
+    for (auto& [k, v] : bl) s -= v.first * v.first / v.second;
+    return std::max(0.0, s);
+  }
+  // numeric: features z (and z^2), centred per block, least squares
+  const int q = p.dof;
+  std::map<int, std::array<double, 4>> m;  // block -> sum r, sum f1, sum f2, count
+  scratch_z.resize(x.size());
+  for (int i : p.rows) {
+    auto& a = m[block[i]];
+    a[0] += r[i], a[1] += x[i], a[2] += x[i] * x[i], a[3] += 1;
+  }
+  double A11 = 0, A12 = 0, A22 = 0, b1 = 0, b2 = 0;
+  for (int i : p.rows) {
+    const auto& a = m[block[i]];
+    const double rc = r[i] - a[0] / a[3], f1 = x[i] - a[1] / a[3], f2 = x[i] * x[i] - a[2] / a[3];
+    A11 += f1 * f1, b1 += f1 * rc;
+    if (q == 2) A12 += f1 * f2, A22 += f2 * f2, b2 += f2 * rc;
+  }
+  if (q == 1) return A11 > 1e-12 ? b1 * b1 / A11 : 0.0;
+  const double det = A11 * A22 - A12 * A12;
+  if (det <= 1e-12 * std::max(1.0, A11 * A22)) return A11 > 1e-12 ? b1 * b1 / A11 : 0.0;
+  const double c1 = (A22 * b1 - A12 * b2) / det, c2 = (A11 * b2 - A12 * b1) / det;
+  return c1 * b1 + c2 * b2;
+}
+
+// Cross-validated fractional reduction of the residual SSE by the probe.
+double probe_cv(const Probe& p, const std::vector<double>& x, const std::vector<double>& r, const Folds& f) {
+  double sse0 = 0, sse1 = 0;
+  for (int k = 0; k < f.k; ++k) {
+    std::map<int, std::array<double, 4>> bm;
+    std::map<std::pair<int, int>, std::pair<double, int>> lm;
+    for (int i : p.rows)
+      if (f.fold[i] != k) {
+        auto& a = bm[f.block[i]];
+        a[0] += r[i], a[1] += x[i], a[2] += x[i] * x[i], a[3] += 1;
+        if (p.categorical) {
+          auto& l = lm[{f.block[i], static_cast<int>(x[i])}];
+          l.first += r[i], l.second++;
+        }
+      }
+    double A11 = 0, A12 = 0, A22 = 0, b1 = 0, b2 = 0;
+    if (!p.categorical)
+      for (int i : p.rows)
+        if (f.fold[i] != k) {
+          const auto& a = bm[f.block[i]];
+          const double rc = r[i] - a[0] / a[3], f1 = x[i] - a[1] / a[3], f2 = x[i] * x[i] - a[2] / a[3];
+          A11 += f1 * f1, b1 += f1 * rc, A12 += f1 * f2, A22 += f2 * f2, b2 += f2 * rc;
+        }
+    double c1 = 0, c2 = 0;
+    if (!p.categorical) {
+      const double det = A11 * A22 - A12 * A12;
+      if (p.dof == 2 && det > 1e-12 * std::max(1.0, A11 * A22)) {
+        c1 = (A22 * b1 - A12 * b2) / det;
+        c2 = (A11 * b2 - A12 * b1) / det;
+      } else if (A11 > 1e-12) {
+        c1 = b1 / A11;
+      }
+    }
+    for (int i : p.rows)
+      if (f.fold[i] == k) {
+        auto it = bm.find(f.block[i]);
+        if (it == bm.end()) continue;
+        const auto& a = it->second;
+        const double base = a[0] / a[3];
+        double pr = base;
+        if (p.categorical) {
+          auto l = lm.find({f.block[i], static_cast<int>(x[i])});
+          if (l != lm.end()) pr = l->second.first / l->second.second;
+        } else {
+          pr = base + c1 * (x[i] - a[1] / a[3]) + c2 * (x[i] * x[i] - a[2] / a[3]);
+        }
+        sse0 += (r[i] - base) * (r[i] - base);
+        sse1 += (r[i] - pr) * (r[i] - pr);
+      }
+  }
+  return sse0 > 0 ? 1 - sse1 / sse0 : 0.0;
+}
+
+}  // namespace
+
+std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands, const std::vector<double>& resid,
+                                             const Folds& f, int permutations, std::uint64_t seed, double alpha) {
+  std::vector<CandidateResult> out;
+  std::vector<double> scratch;
+  for (size_t ci = 0; ci < cands.size(); ++ci) {
+    const Candidate& c = cands[ci];
+    Probe p;
+    p.categorical = c.categorical;
+    std::vector<double> x = c.x;
+    std::set<double> distinct;
+    for (size_t i = 0; i < x.size(); ++i)
+      if (std::isfinite(x[i]) && std::isfinite(resid[i])) {
+        p.rows.push_back(static_cast<int>(i));
+        distinct.insert(x[i]);
+      }
+    CandidateResult res;
+    res.name = c.name;
+    res.kind = c.kind;
+    res.permuted = c.test_level ? "between tests" : "within tests";
+    if (distinct.size() < 2) {
+      res.p_value = 1;
+      out.push_back(res);
+      continue;
+    }
+    if (!c.categorical) {  // standardise for conditioning
+      double m = 0, q = 0;
+      for (int i : p.rows) m += x[i];
+      m /= p.rows.size();
+      for (int i : p.rows) q += (x[i] - m) * (x[i] - m);
+      const double sd = std::sqrt(q / p.rows.size());
+      for (int i : p.rows) x[i] = sd > 0 ? (x[i] - m) / sd : 0;
+      p.dof = distinct.size() >= 4 ? 2 : 1;
+    } else {
+      p.dof = static_cast<int>(distinct.size()) - 1;
+    }
+    res.dof = p.dof;
+    res.stat = probe_ess(p, x, resid, f.block, scratch);
+    res.cv_reduction = probe_cv(p, x, resid, f);
+    // Permutation groups: tests within blocks (test-level) or rows within tests.
+    std::map<int, std::vector<int>> groups;  // group -> units
+    std::vector<int> unit_of(x.size(), -1);
+    std::vector<std::vector<int>> unit_rows;
+    {
+      std::map<int, int> unit_ix;  // test -> unit (test-level) ; row -> unit otherwise
+      for (int i : p.rows) {
+        const int key = c.test_level ? f.test[i] : i;
+        auto [it, fresh] = unit_ix.emplace(key, static_cast<int>(unit_rows.size()));
+        if (fresh) {
+          unit_rows.push_back({});
+          groups[c.test_level ? f.block[i] : f.test[i]].push_back(it->second);
+        }
+        unit_rows[it->second].push_back(i);
+        unit_of[i] = it->second;
+      }
+    }
+    std::vector<double> unit_val(unit_rows.size());
+    for (size_t u = 0; u < unit_rows.size(); ++u) unit_val[u] = x[unit_rows[u][0]];
+    std::mt19937_64 rng(seed + 7919 * ci);
+    int ge = 0;
+    std::vector<double> xp = x;
+    std::vector<int> perm(unit_rows.size());
+    for (int b = 0; b < permutations; ++b) {
+      for (size_t u = 0; u < perm.size(); ++u) perm[u] = static_cast<int>(u);
+      for (auto& [g, units] : groups)  // Fisher-Yates within the group
+        for (size_t j = units.size(); j > 1; --j) {
+          const size_t r = rng() % j;
+          std::swap(perm[units[j - 1]], perm[units[r]]);
+        }
+      for (size_t u = 0; u < unit_rows.size(); ++u)
+        for (int i : unit_rows[u]) xp[i] = c.test_level ? unit_val[perm[u]] : x[unit_rows[perm[u]][0]];
+      if (probe_ess(p, xp, resid, f.block, scratch) >= res.stat * (1 - 1e-12)) ++ge;
+    }
+    res.p_value = (1.0 + ge) / (1.0 + permutations);
+    out.push_back(res);
+  }
+  const double thr = alpha / std::max<size_t>(1, out.size());
+  for (auto& r : out) r.significant = r.p_value <= thr && r.cv_reduction > 0;
+  std::stable_sort(out.begin(), out.end(), [](const CandidateResult& a, const CandidateResult& b) {
+    if (a.significant != b.significant) return a.significant;
+    if (a.significant) return a.cv_reduction > b.cv_reduction;
+    return a.p_value < b.p_value;
+  });
+  return out;
+}
+
+}  // namespace drawbend::loop

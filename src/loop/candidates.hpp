@@ -1,0 +1,74 @@
+#pragma once
+// Residual analysis: grouped cross-validation folds, candidate variables, and
+// their ranking by cross-validated error reduction and a blocked permutation
+// test.
+//
+// Folds ("whole tests or back-tension blocks held out"):
+//   test      every test goes whole into one of K folds (index of the test
+//             within its block, mod K), so no held-out row shares a test with
+//             the training rows;
+//   bt-block  within every test the rows are ranked by back tension and cut
+//             into K blocks; fold k holds out block k of every test (used when
+//             a block has a single test per pin, as the thesis data do);
+//   auto      test when every block has at least 2 tests per pin, else bt-block.
+// Blocks: the rotating-pin rows form one block, the fixed-pin rows of each
+// model cell another.  Residuals and probe features are centred per block.
+//
+// A candidate's probe is a small regression of the residual on the variable
+// (categorical: one mean per level; numeric: z, plus z^2 with 4+ distinct
+// values).  Its statistic is the explained sum of squares; the permutation
+// test permutes the variable within blocks: test-level variables (constant
+// within each test) are permuted between the tests of a block, row-level
+// variables between the rows of a test.  p = (1 + #{T* >= T}) / (1 + B).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "loop/model.hpp"
+
+namespace drawbend::loop {
+
+struct Folds {
+  std::string mode;
+  int k = 5;
+  std::vector<int> fold;   ///< per row
+  std::vector<int> block;  ///< per row
+  std::vector<int> test;   ///< per row: test index
+};
+
+Folds make_folds(const Design& d, const std::string& mode, int k);
+
+struct CvResult {
+  std::vector<double> pred, resid;  ///< held-out prediction and residual per row (NaN: not predictable)
+  double rms = 0, max_abs = 0;
+  int n = 0;
+};
+
+CvResult cross_validate(const Design& d, const ModelSpec& spec, const Folds& f);
+
+struct Candidate {
+  std::string name, kind;  ///< kind: column, derived, group
+  bool categorical = false, test_level = false;
+  std::vector<double> x;       ///< numeric value or level index per row; NaN = missing
+  std::vector<std::string> levels;  ///< level names (categorical)
+};
+
+/// Every candidate: extra columns, optional columns, derived quantities
+/// (average pressure Eq. 2.2 at the predicted outlet force, 1/R), the model's
+/// own inputs and group identities (pin, test).
+std::vector<Candidate> make_candidates(const Design& d, const std::vector<double>& pred);
+
+struct CandidateResult {
+  std::string name, kind;
+  int dof = 0;
+  double stat = 0, p_value = 1, cv_reduction = 0;
+  bool significant = false;
+  std::string permuted;  ///< "between tests" or "within tests"
+};
+
+/// Rank candidates; results sorted: significant first by CV reduction, then the
+/// rest by p-value.  Significance: p <= alpha / (number of candidates).
+std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands, const std::vector<double>& resid,
+                                             const Folds& f, int permutations, std::uint64_t seed, double alpha);
+
+}  // namespace drawbend::loop

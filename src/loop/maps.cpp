@@ -1,0 +1,110 @@
+// Pressure-map sources for the loop; see maps.hpp.
+#include "loop/maps.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "core/csv.hpp"
+
+namespace drawbend::loop {
+
+namespace fs = std::filesystem;
+
+namespace {
+void finish(PinMap& m) {
+  m.map.validate();
+  m.S1 = m.map.moment(1);
+  m.S2 = m.map.moment(2);
+  if (!(m.S1 > 0)) throw InputError(m.provenance + ": map carries no normal force");
+}
+}  // namespace
+
+PinMap stand_in_map(double d, const StandInParams& p) {
+  PinMap m;
+  m.pin_d_mm = d;
+  m.fref_N = p.fref_N;
+  const double R = d / 2, arc = R * p.wrap_rad, ds = arc / p.nodes;
+  const double belt = p.fref_N / (R * p.width_mm);  // Eq. (2.2), F_x = F_y = F_ref
+  const double delta = std::sqrt(R * p.thickness_mm);
+  const double Mp = p.sigma_y_MPa * p.thickness_mm * p.thickness_mm * p.width_mm / 4;
+  const double peak = (Mp / delta) / (delta * p.width_mm);  // edge force M_p/delta spread over delta
+  for (int i = 0; i < p.nodes; ++i) {
+    const double s = (i + 0.5) * ds;
+    m.map.p_MPa.push_back(belt + peak * (std::exp(-s / delta) + std::exp(-(arc - s) / delta)));
+    m.map.area_mm2.push_back(ds * p.width_mm);
+  }
+  m.map.label = "pin " + fmt(d) + " mm, analytic stand-in, not FE";
+  m.provenance = "analytic stand-in, not FE (uniform belt pressure + edge peaks, delta = sqrt(R t))";
+  finish(m);
+  return m;
+}
+
+MapLibrary MapLibrary::stand_in(const std::vector<double>& pins, const StandInParams& p) {
+  MapLibrary lib;
+  lib.stand_in_ = true;
+  lib.source_ = "analytic stand-in, not FE";
+  for (double d : pins)
+    if (!lib.has(d)) lib.maps_.push_back(stand_in_map(d, p));
+  std::sort(lib.maps_.begin(), lib.maps_.end(), [](auto& a, auto& b) { return a.pin_d_mm < b.pin_d_mm; });
+  return lib;
+}
+
+MapLibrary MapLibrary::load_dir(const std::string& dir) {
+  if (!fs::is_directory(dir)) throw InputError(dir + ": maps directory not found");
+  MapLibrary lib;
+  lib.source_ = "FE maps from " + dir;
+  const std::regex name(R"(pin_([0-9]+(\.[0-9]+)?)mm\.csv)");
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir)) files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) {
+    std::smatch m;
+    const std::string fn = f.filename().string();
+    if (!std::regex_match(fn, m, name)) continue;
+    PinMap pm;
+    pm.pin_d_mm = std::stod(m[1].str());
+    const CsvTable t = read_csv(f.string());
+    for (const auto& c : t.comments) {
+      const auto k = c.find("reference_back_tension_N:");
+      if (k != std::string::npos) pm.fref_N = std::stod(c.substr(k + 25));
+    }
+    fs::path side = f;
+    side.replace_extension(".ref");
+    if (pm.fref_N <= 0 && fs::exists(side)) pm.fref_N = std::stod(read_file(side.string()));
+    if (!(pm.fref_N > 0))
+      throw InputError(f.string() + ": no reference back tension (comment '# reference_back_tension_N: N' or " +
+                       side.filename().string() + ")");
+    for (const auto& r : t.rows) {
+      const double p = t.number(r, "pressure_MPa");
+      if (p <= 0) continue;  // out of contact
+      pm.map.p_MPa.push_back(p);
+      pm.map.area_mm2.push_back(2.0 * t.number(r, "area_mm2"));  // half model -> full strip
+    }
+    pm.map.label = "pin " + fmt(pm.pin_d_mm) + " mm, FE " + fn;
+    pm.provenance = "FE contact map " + f.string() + " (half model, areas doubled)";
+    finish(pm);
+    lib.maps_.push_back(std::move(pm));
+  }
+  if (lib.maps_.empty()) throw InputError(dir + ": no pin_<diameter>mm.csv map files");
+  std::sort(lib.maps_.begin(), lib.maps_.end(), [](auto& a, auto& b) { return a.pin_d_mm < b.pin_d_mm; });
+  return lib;
+}
+
+bool MapLibrary::has(double d) const {
+  for (const auto& m : maps_)
+    if (std::abs(m.pin_d_mm - d) < 0.05) return true;
+  return false;
+}
+
+const PinMap& MapLibrary::at(double d) const {
+  for (const auto& m : maps_)
+    if (std::abs(m.pin_d_mm - d) < 0.05) return m;
+  throw InputError("no pressure map for the " + fmt(d) + " mm pin (" + label() + ")");
+}
+
+std::string MapLibrary::label() const { return source_; }
+
+}  // namespace drawbend::loop

@@ -1,0 +1,195 @@
+// Reading and writing the measured-data format; see measured.hpp.
+#include "loop/measured.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/csv.hpp"
+
+namespace drawbend::loop {
+
+const std::vector<std::string> kRequiredColumns = {"test_id",   "pin_diameter_mm", "pin",
+                                                   "direction_deg", "speed_mm_s", "lubricant",
+                                                   "back_tension_N", "outlet_force_N"};
+
+std::string Problem::str() const {
+  std::string s = file;
+  if (line > 0) s += ":" + std::to_string(line);
+  s += ": ";
+  if (!column.empty()) s += "column '" + column + "': ";
+  return s + message;
+}
+
+int Dataset::extra_index(const std::string& name) const {
+  for (size_t i = 0; i < extra_columns.size(); ++i)
+    if (extra_columns[i] == name) return static_cast<int>(i);
+  return -1;
+}
+
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+// Parse a finite number; false (with a reason) otherwise.
+bool parse_number(const std::string& text, double& v, std::string& why) {
+  const std::string t = trim(text);
+  if (t.empty()) {
+    why = "empty value";
+    return false;
+  }
+  try {
+    size_t used = 0;
+    v = std::stod(t, &used);
+    if (used != t.size()) {
+      why = "'" + t + "' is not a number";
+      return false;
+    }
+  } catch (const std::exception&) {
+    why = "'" + t + "' is not a number";
+    return false;
+  }
+  if (!std::isfinite(v)) {
+    why = "'" + t + "' is not a finite number (NaN or infinity)";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+Dataset read_measured(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open");
+  Dataset d;
+  d.path = path;
+  std::string line;
+  int lineno = 0;
+  std::vector<std::string> header;
+  int header_line = 0;
+  std::map<std::string, int> col;
+  std::map<std::string, int> seen;  // row text -> first line
+  bool header_ok = false;
+  auto problem = [&](int l, const std::string& c, const std::string& m) { d.problems.push_back({path, l, c, m}); };
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (trim(line).empty()) continue;
+    if (line[0] == '#') {
+      if (header.empty()) d.comments.push_back(line.substr(1));
+      else problem(lineno, "", "comment line after the header ignored");
+      continue;
+    }
+    if (header.empty()) {
+      header = split_csv_line(line);
+      header_line = lineno;
+      for (auto& h : header) h = trim(h);
+      for (size_t i = 0; i < header.size(); ++i) {
+        if (col.count(header[i])) problem(lineno, header[i], "duplicate column name");
+        col[header[i]] = static_cast<int>(i);
+      }
+      header_ok = true;
+      for (const auto& r : kRequiredColumns)
+        if (!col.count(r)) {
+          problem(lineno, r, "required column missing");
+          header_ok = false;
+        }
+      d.has_sliding = col.count("sliding_distance_mm") > 0;
+      d.has_time = col.count("time_s") > 0;
+      for (const auto& h : header) {
+        bool known = h == "sliding_distance_mm" || h == "time_s";
+        for (const auto& r : kRequiredColumns) known = known || h == r;
+        if (!known) d.extra_columns.push_back(h);
+      }
+      continue;
+    }
+    ++d.rows_read;
+    auto cells = split_csv_line(line);
+    if (cells.size() != header.size()) {
+      problem(lineno, "", "has " + std::to_string(cells.size()) + " cells, the header (line " +
+                              std::to_string(header_line) + ") has " + std::to_string(header.size()));
+      ++d.rows_dropped;
+      continue;
+    }
+    if (!header_ok) {  // required columns missing: no row is usable
+      ++d.rows_dropped;
+      continue;
+    }
+    const size_t before = d.problems.size();
+    auto cell = [&](const std::string& c) { return trim(cells[col.at(c)]); };
+    auto num = [&](const std::string& c, double& v) {
+      std::string why;
+      if (!parse_number(cells[col.at(c)], v, why)) problem(lineno, c, why);
+    };
+    Sample s;
+    s.line = lineno;
+    s.test_id = cell("test_id");
+    if (s.test_id.empty()) problem(lineno, "test_id", "empty value");
+    s.lubricant = cell("lubricant");
+    num("pin_diameter_mm", s.pin_d_mm);
+    num("direction_deg", s.direction_deg);
+    num("speed_mm_s", s.speed_mm_s);
+    num("back_tension_N", s.back_tension_N);
+    num("outlet_force_N", s.outlet_force_N);
+    const std::string pin = cell("pin");
+    if (pin == "rotating") s.rotating = true;
+    else if (pin != "fixed") problem(lineno, "pin", "'" + pin + "' is neither 'fixed' nor 'rotating'");
+    s.sliding_mm = s.time_s = std::nan("");
+    if (d.has_sliding) num("sliding_distance_mm", s.sliding_mm);
+    if (d.has_time) num("time_s", s.time_s);
+    for (const auto& e : d.extra_columns) s.extra.push_back(cell(e));
+    if (d.problems.size() == before) {  // physical plausibility of parsed values
+      if (s.pin_d_mm <= 0) problem(lineno, "pin_diameter_mm", "pin diameter must be positive");
+      if (s.speed_mm_s < 0) problem(lineno, "speed_mm_s", "negative sliding speed");
+      if (s.direction_deg < 0 || s.direction_deg > 90)
+        problem(lineno, "direction_deg", "direction must lie in 0..90 deg (0 = RD, 90 = TD)");
+      if (s.back_tension_N < 0) problem(lineno, "back_tension_N", "negative force");
+      else if (s.back_tension_N == 0) problem(lineno, "back_tension_N", "zero back tension (Eq. 5.1 undefined)");
+      if (s.outlet_force_N < 0) problem(lineno, "outlet_force_N", "negative force");
+      else if (s.back_tension_N > 0 && s.outlet_force_N < s.back_tension_N)
+        problem(lineno, "outlet_force_N",
+                "outlet force " + fmt(s.outlet_force_N) + " N below back tension " + fmt(s.back_tension_N) +
+                    " N on a " + pin + " pin: friction and bending can only add to the back tension");
+      if (d.has_sliding && s.sliding_mm < 0) problem(lineno, "sliding_distance_mm", "negative sliding distance");
+    }
+    if (d.problems.size() == before) {
+      std::string key;
+      for (const auto& c : cells) key += trim(c) + "\x1f";
+      auto [it, fresh] = seen.emplace(key, lineno);
+      if (!fresh) problem(lineno, "", "duplicate of line " + std::to_string(it->second) + " (dropped)");
+    }
+    if (d.problems.size() != before) ++d.rows_dropped;
+    else d.rows.push_back(std::move(s));
+  }
+  if (header.empty()) problem(0, "", "no header row (file empty or only comments)");
+  return d;
+}
+
+void write_measured(const std::string& path, const Dataset& d) {
+  std::ostringstream o;
+  for (const auto& c : d.comments) o << "#" << c << "\n";
+  std::vector<std::string> h = kRequiredColumns;
+  if (d.has_sliding) h.push_back("sliding_distance_mm");
+  if (d.has_time) h.push_back("time_s");
+  for (const auto& e : d.extra_columns) h.push_back(e);
+  for (size_t i = 0; i < h.size(); ++i) o << (i ? "," : "") << csv_quote(h[i]);
+  o << "\n";
+  for (const auto& s : d.rows) {
+    std::vector<std::string> c = {s.test_id, fmt(s.pin_d_mm, 8), s.rotating ? "rotating" : "fixed",
+                                  fmt(s.direction_deg, 8), fmt(s.speed_mm_s, 8), s.lubricant,
+                                  fmt(s.back_tension_N, 8), fmt(s.outlet_force_N, 8)};
+    if (d.has_sliding) c.push_back(fmt(s.sliding_mm, 8));
+    if (d.has_time) c.push_back(fmt(s.time_s, 8));
+    for (const auto& e : s.extra) c.push_back(e);
+    for (size_t i = 0; i < c.size(); ++i) o << (i ? "," : "") << csv_quote(c[i]);
+    o << "\n";
+  }
+  write_file_atomic(path, o.str());
+}
+
+}  // namespace drawbend::loop

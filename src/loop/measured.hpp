@@ -1,0 +1,64 @@
+#pragma once
+// Measured draw-bend data in the drawbend sample format (README.md, data/README.md):
+// one CSV row per sample.  Required columns
+//   test_id, pin_diameter_mm, pin (fixed|rotating), direction_deg (0 = RD, 90 = TD),
+//   speed_mm_s, lubricant, back_tension_N, outlet_force_N
+// optional sliding_distance_mm, time_s, and any other columns (kept as
+// candidate explanations).  Units: mm, N, mm/s, s, deg.
+//
+// Bad data is reported, never crashed on: every problem (missing required
+// column, unparseable number, NaN, ragged row, duplicate row, impossible value)
+// is collected in one pass with file, line and column; rows with a problem are
+// dropped and counted, the others kept.
+#include <string>
+#include <vector>
+
+namespace drawbend::loop {
+
+struct Problem {
+  std::string file;
+  int line = 0;          ///< 1-based file line (0: whole file)
+  std::string column;    ///< column name, or empty
+  std::string message;
+  std::string str() const;  ///< "file:line: column 'c': message"
+};
+
+struct Sample {
+  int line = 0;  ///< file line it came from
+  std::string test_id;
+  double pin_d_mm = 0;
+  bool rotating = false;
+  double direction_deg = 0;
+  double speed_mm_s = 0;
+  std::string lubricant;
+  double back_tension_N = 0;
+  double outlet_force_N = 0;
+  double sliding_mm = 0;  ///< NaN when the column is absent
+  double time_s = 0;      ///< NaN when the column is absent
+  std::vector<std::string> extra;  ///< one cell per Dataset::extra_columns
+};
+
+struct Dataset {
+  std::string path;
+  std::vector<std::string> comments;       ///< '#' lines without the '#'
+  std::vector<std::string> extra_columns;  ///< columns beyond the required/optional ones
+  bool has_sliding = false, has_time = false;
+  std::vector<Sample> rows;                ///< usable rows
+  std::vector<Problem> problems;
+  int rows_read = 0;     ///< data rows in the file
+  int rows_dropped = 0;  ///< rows with at least one problem
+
+  /// Column index of an extra column, -1 if absent.
+  int extra_index(const std::string& name) const;
+};
+
+extern const std::vector<std::string> kRequiredColumns;
+
+/// Read a data file.  Only an unreadable file throws (InputError); everything
+/// else becomes a Problem.
+Dataset read_measured(const std::string& path);
+
+/// Write rows in the same format (comments first, then header, then rows).
+void write_measured(const std::string& path, const Dataset& d);
+
+}  // namespace drawbend::loop

@@ -1,0 +1,138 @@
+// Loop outputs; see report.hpp.
+#include "loop/report.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+namespace drawbend::loop {
+
+namespace fs = std::filesystem;
+
+CsvWriter candidates_table(const LoopResult& r) {
+  CsvWriter w({"round", "rank", "candidate", "kind", "dof", "permuted", "ess_N2", "p_value", "cv_reduction",
+               "significant"});
+  w.comment(" candidates ranked on held-out residuals (N); p from the blocked permutation test; cv_reduction = "
+            "fractional SSE reduction of the probe under grouped cross-validation (" + r.cv_mode + ")");
+  for (size_t k = 0; k < r.rankings.size(); ++k)
+    for (size_t i = 0; i < r.rankings[k].size(); ++i) {
+      const auto& c = r.rankings[k][i];
+      w.row({std::to_string(k + 1), std::to_string(i + 1), c.name, c.kind, std::to_string(c.dof), c.permuted,
+             fmt(c.stat, 6), fmt(c.p_value, 4), fmt(c.cv_reduction, 4), c.significant ? "yes" : "no"});
+    }
+  return w;
+}
+
+CsvWriter effects_table(const LoopResult& r) {
+  CsvWriter w({"step", "variable", "effect", "parameter", "value", "se"});
+  w.comment(" effects added by the loop; value +- one standard error from s^2 (J^T J)^-1 of the full-data refit");
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    for (const auto& p : r.steps[k].params)
+      w.row({std::to_string(k + 1), r.steps[k].variable, r.steps[k].effect, p.name, fmt(p.value, 5), fmt(p.se, 3)});
+  return w;
+}
+
+CsvWriter steps_table(const LoopResult& r) {
+  CsvWriter w({"step", "variable", "effect", "p_value", "threshold", "rms_before_N", "rms_after_N", "max_before_N",
+               "max_after_N"});
+  w.comment(" held-out (grouped cross-validation: " + r.cv_mode + ") error of the outlet force before and after each step");
+  for (size_t k = 0; k < r.steps.size(); ++k) {
+    const Step& s = r.steps[k];
+    w.row({std::to_string(k + 1), s.variable, s.effect, fmt(s.p_value, 4), fmt(s.threshold, 3), fmt(s.rms_before, 5),
+           fmt(s.rms_after, 5), fmt(s.max_before, 5), fmt(s.max_after, 5)});
+  }
+  return w;
+}
+
+CsvWriter residuals_table(const Design& d, const LoopResult& r) {
+  std::vector<std::string> h = {"line", "test_id", "pin", "resid_before_N", "resid_after_N"};
+  for (const auto& c : r.candidates) h.push_back(c.name);
+  CsvWriter w(h);
+  w.comment(" held-out residual (measured - predicted outlet force, N) of the base model and of the final model;"
+            " categorical candidates as level index");
+  for (size_t i = 0; i < d.rows.size(); ++i) {
+    const Sample& s = d.data->rows[i];
+    std::vector<std::string> row = {std::to_string(s.line), s.test_id, s.rotating ? "rotating" : "fixed",
+                                    fmt(r.cv.front().resid[i], 6), fmt(r.cv.back().resid[i], 6)};
+    for (const auto& c : r.candidates) row.push_back(fmt(c.x[i], 8));
+    w.row(row);
+  }
+  return w;
+}
+
+CsvWriter problems_table(const Dataset& d) {
+  CsvWriter w({"file", "line", "column", "problem"});
+  w.comment(" data problems found in one pass; " + std::to_string(d.rows_read) + " rows read, " +
+            std::to_string(d.rows.size()) + " kept, " + std::to_string(d.rows_dropped) + " dropped");
+  for (const auto& p : d.problems) w.row({p.file, std::to_string(p.line), p.column, p.message});
+  return w;
+}
+
+std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::string& out,
+                               const std::string& figdir, const std::string& gnuplot) {
+  fs::create_directories(out + "/tables");
+  fs::create_directories(out + "/figures");
+  candidates_table(r).save(out + "/tables/candidates.csv");
+  effects_table(r).save(out + "/tables/effects.csv");
+  steps_table(r).save(out + "/tables/steps.csv");
+  residuals_table(d, r).save(out + "/tables/residuals.csv");
+  problems_table(*d.data).save(out + "/tables/problems.csv");
+  write_file_atomic(out + "/loop_summary.json", summary_json(r));
+  std::vector<std::string> figs;
+  if (!figdir.empty()) {
+    for (size_t k = 0; k < r.candidates.size(); ++k) {
+      const auto& c = r.candidates[k];
+      const std::string svg = out + "/figures/resid_" + c.name + ".svg";
+      std::string e = "outfile='" + svg + "'; datafile='" + out + "/tables/residuals.csv'; figdir='" + figdir +
+                      "'; xcol='" + std::to_string(6 + k) + "'; xname='" + c.name + "'";
+      const std::string cmd = gnuplot + " -e \"" + e + "\" '" + figdir + "/loop_residual.gp'";
+      if (std::system(cmd.c_str()) == 0) figs.push_back("figures/resid_" + c.name + ".svg");
+    }
+  }
+  std::ostringstream m;
+  m << "# Closing the loop: " << d.data->path << "\n\n";
+  m << "- Rows: " << d.data->rows_read << " read, " << d.data->rows.size() << " used, " << d.data->rows_dropped
+    << " dropped (" << d.data->problems.size() << " problems, `tables/problems.csv`).\n";
+  m << "- Base model: " << r.base_model << ".\n- Pressure maps: " << r.maps << ".\n";
+  m << "- Held-out errors by grouped cross-validation (" << r.cv_mode << ", " << r.folds.k << " folds).\n";
+  for (const auto& n : d.notes) m << "- " << n << ".\n";
+  m << "\n## Steps\n\n| step | variable | effect | p | threshold | RMS before (N) | RMS after (N) | max before (N) | max "
+       "after (N) |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (size_t k = 0; k < r.steps.size(); ++k) {
+    const Step& s = r.steps[k];
+    m << "| " << k + 1 << " | " << s.variable << " | " << s.effect << " | " << fmt(s.p_value, 3) << " | "
+      << fmt(s.threshold, 3) << " | " << fmt(s.rms_before, 4) << " | " << fmt(s.rms_after, 4) << " | "
+      << fmt(s.max_before, 4) << " | " << fmt(s.max_after, 4) << " |\n";
+  }
+  if (r.steps.empty()) m << "| – | no effect found | | | | " << fmt(r.cv.front().rms, 4) << " | | " << fmt(r.cv.front().max_abs, 4) << " | |\n";
+  m << "\nStopped because: " << r.stopped_because << ".\n";
+  if (!r.unexplained.empty()) {
+    m << "\nSignificant variables that no library effect explains:\n\n";
+    for (const auto& u : r.unexplained) m << "- " << u << "\n";
+  }
+  if (!r.screened.empty()) {
+    m << "\nPassed the permutation screen but not confirmed by a model F test (not effects):\n\n";
+    for (const auto& u : r.screened) m << "- " << u << "\n";
+  }
+  m << "\n## Added effects\n\n| step | effect | meaning | parameter | value ± se |\n|---|---|---|---|---|\n";
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    for (const auto& p : r.steps[k].params)
+      m << "| " << k + 1 << " | " << r.steps[k].effect << " | " << r.steps[k].meaning << " | " << p.name << " | "
+        << fmt(p.value, 4) << " ± " << fmt(p.se, 2) << " |\n";
+  m << "\n## Candidates, first round\n\n| rank | candidate | kind | dof | permuted | p | CV reduction | significant "
+       "|\n|---|---|---|---|---|---|---|---|\n";
+  if (!r.rankings.empty())
+    for (size_t i = 0; i < r.rankings[0].size(); ++i) {
+      const auto& c = r.rankings[0][i];
+      m << "| " << i + 1 << " | " << c.name << " | " << c.kind << " | " << c.dof << " | " << c.permuted << " | "
+        << fmt(c.p_value, 3) << " | " << fmt(c.cv_reduction, 3) << " | " << (c.significant ? "yes" : "no") << " |\n";
+    }
+  if (!figs.empty()) {
+    m << "\n## Residuals against each candidate (before: base model; after: final model)\n\n";
+    for (const auto& f : figs) m << "![" << f << "](" << f << ")\n\n";
+  }
+  write_file_atomic(out + "/loop.md", m.str());
+  return m.str();
+}
+
+}  // namespace drawbend::loop

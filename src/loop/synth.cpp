@@ -1,0 +1,153 @@
+// Synthetic data with a hidden law; see synth.hpp.
+#include "loop/synth.hpp"
+
+#include <cmath>
+#include <algorithm>
+#include <map>
+#include <random>
+#include <sstream>
+
+#include "core/csv.hpp"
+
+namespace drawbend::loop {
+
+const std::vector<std::string>& synth_effects() {
+  static const std::vector<std::string> e = {"none", "depletion", "pin_surface", "speed", "drift", "direction", "pressure"};
+  return e;
+}
+
+namespace {
+struct PinSpec {
+  double d, lo, hi, b1, b0, ra;
+};
+// Bending lines: Table 5.3; back-tension ranges: Table 5.3.
+const PinSpec kPins[3] = {{12.7, 1450, 1800, -0.0625, 396.84, 0.10},
+                          {25.4, 1650, 2050, -0.0123, 129.39, 0.12},
+                          {42.0, 1500, 2100, -0.0118, 70.133, 0.30}};
+const double kMuRD = 0.09, kMuTD = 0.075, kWrap = 1.5707963267948966;
+
+double ellipse(double a, double b, double phi) {
+  const double c = std::cos(phi), s = std::sin(phi);
+  return a * b / std::sqrt(b * b * c * c + a * a * s * s);
+}
+}  // namespace
+
+Dataset synthesize(const SynthOptions& o, const MapLibrary& maps, SynthTruth& t) {
+  const auto& names = synth_effects();
+  if (std::find(names.begin(), names.end(), o.effect) == names.end())
+    throw std::invalid_argument("unknown hidden effect '" + o.effect + "'");
+  std::mt19937_64 rng(o.seed);
+  std::normal_distribution<double> noise(0.0, o.noise_N);
+  std::uniform_real_distribution<double> unif(0.0, 1.0);
+  t = {};
+  t.effect = o.effect;
+  t.noise_N = o.noise_N;
+  t.seed = o.seed;
+  t.maps = maps.label();
+  const std::map<std::string, double> defaults = {{"none", 0},  {"depletion", 0.25}, {"pin_surface", 0.2},
+                                                  {"speed", 0.1}, {"drift", 0.15},   {"direction", 0.2},
+                                                  {"pressure", 0.002}};
+  t.amplitude = o.amplitude >= 0 ? o.amplitude : defaults.at(o.effect);
+  const double A = t.amplitude;
+  if (o.effect == "none") t.law = "no hidden effect", t.variable = "";
+  if (o.effect == "depletion")
+    t.law = "mu (1 - A (1 - exp(-s/60 mm))), s = sliding distance", t.variable = "sliding_distance_mm",
+    t.aliases = {"sliding_distance_mm", "time_s"};
+  if (o.effect == "pin_surface")
+    t.law = "mu (1 + A) on the 42 mm pin only", t.variable = "pin",
+    t.aliases = {"pin", "pin_diameter_mm", "inv_R_per_mm", "pin_Ra_um"};
+  if (o.effect == "speed") t.law = "mu (1 - A log10(v / 25.4 mm/s))", t.variable = "speed_mm_s", t.aliases = {"speed_mm_s"};
+  if (o.effect == "drift")
+    t.law = "mu (1 + A (order - mean) / N), order = test_order", t.variable = "test_order", t.aliases = {"test_order"};
+  if (o.effect == "direction")
+    t.law = "mu (1 + A sin^2(2 phi)) on top of the RD/TD ellipse", t.variable = "direction_deg",
+    t.aliases = {"direction_deg"};
+  if (o.effect == "pressure")
+    t.law = "mu(p) = mu0 + A p over the pressure map (mu0 = 0.7 mu)", t.variable = "avg_pressure_MPa",
+    t.aliases = {"avg_pressure_MPa", "pin", "pin_diameter_mm", "inv_R_per_mm", "back_tension_N"};
+
+  Dataset d;
+  d.path = "synthetic";
+  d.has_sliding = d.has_time = true;
+  d.extra_columns = {"test_order", "pin_Ra_um", "temperature_C"};
+  d.comments = {" synthetic draw-bend data (drawbend synth), seed " + std::to_string(o.seed) + ", noise sd " +
+                    fmt(o.noise_N) + " N; the hidden law is in truth.json, not here",
+                " pressure maps: " + maps.label(),
+                " units: mm, N, mm/s, s, deg, um, C"};
+  const int T = o.tests_per_pin, n = o.rows_per_test;
+  struct TestSpec {
+    int pin;
+    bool rotating;
+    double dir, speed;
+  };
+  std::vector<TestSpec> tests;
+  for (int p = 0; p < 3; ++p) {
+    for (int j = 0; j < T; ++j) {
+      const double dir = 22.5 * (j % 5);
+      const double frac = T > 1 ? static_cast<double>((j * 5 + p) % T) / (T - 1) : 0.5;
+      tests.push_back({p, false, dir, 6.35 * std::pow(16.0, frac)});
+    }
+    for (int j = 0; j < 3; ++j) tests.push_back({p, true, 0.0, 25.4});
+  }
+  std::vector<int> order(tests.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i) + 1;
+  for (size_t j = order.size(); j > 1; --j) std::swap(order[j - 1], order[rng() % j]);
+  const double N = static_cast<double>(tests.size());
+  for (size_t ti = 0; ti < tests.size(); ++ti) {
+    const TestSpec& ts = tests[ti];
+    const PinSpec& ps = kPins[ts.pin];
+    const std::string id = std::string(ts.rotating ? "rot" : "fix") + "-d" + fmt(ps.d) + "-" + std::to_string(ti);
+    const double temp = 19.5 + 3 * unif(rng);
+    std::vector<int> slot(n);
+    for (int k = 0; k < n; ++k) slot[k] = k;
+    for (int j = n; j > 1; --j) std::swap(slot[j - 1], slot[rng() % j]);
+    for (int k = 0; k < n; ++k) {
+      Sample s;
+      s.test_id = id;
+      s.pin_d_mm = ps.d;
+      s.rotating = ts.rotating;
+      s.direction_deg = ts.dir;
+      s.speed_mm_s = std::round(ts.speed * 100) / 100;
+      s.lubricant = "MP404";
+      s.back_tension_N = ps.lo + (ps.hi - ps.lo) * slot[k] / std::max(1, n - 1);
+      s.sliding_mm = 20 + 180.0 * k / std::max(1, n - 1);
+      s.time_s = s.sliding_mm / s.speed_mm_s;
+      const double F = s.back_tension_N, bend = ps.b0 + ps.b1 * F;
+      double y = F + bend;
+      if (!ts.rotating) {
+        const double phi = ts.dir * M_PI / 180;
+        double mu = ellipse(kMuRD, kMuTD, phi);
+        if (o.effect == "depletion") mu *= 1 - A * (1 - std::exp(-s.sliding_mm / 60));
+        if (o.effect == "pin_surface" && ts.pin == 2) mu *= 1 + A;
+        if (o.effect == "speed") mu *= 1 - A * std::log10(s.speed_mm_s / 25.4);
+        if (o.effect == "drift") mu *= 1 + A * (order[ti] - (N + 1) / 2) / N;
+        if (o.effect == "direction") mu *= 1 + A * std::pow(std::sin(2 * phi), 2);
+        double ff = F * (std::exp(mu * kWrap) - 1);
+        if (o.effect == "pressure") {  // mu(p) over the map, c by fixed point (as the loop's model)
+          const double pw = maps.at(ps.d).weighted_pressure(F);
+          double c = 1;
+          for (int it = 0; it < 6; ++it) {
+            ff = F * (std::exp((0.7 * mu + A * c * pw) * kWrap) - 1);
+            c = (2 * F + bend + ff) / (2 * F + bend);
+          }
+        }
+        y += ff;
+      }
+      s.outlet_force_N = y + noise(rng);
+      s.extra = {std::to_string(order[ti]), fmt(ps.ra), fmt(temp, 4)};
+      d.rows.push_back(s);
+    }
+  }
+  return d;
+}
+
+std::string truth_json(const SynthTruth& t) {
+  std::ostringstream o;
+  o << "{\n  \"effect\": \"" << t.effect << "\",\n  \"variable\": \"" << t.variable << "\",\n  \"aliases\": [";
+  for (size_t i = 0; i < t.aliases.size(); ++i) o << (i ? ", " : "") << "\"" << t.aliases[i] << "\"";
+  o << "],\n  \"law\": \"" << t.law << "\",\n  \"amplitude\": " << fmt(t.amplitude) << ",\n  \"noise_N\": "
+    << fmt(t.noise_N) << ",\n  \"seed\": " << t.seed << ",\n  \"maps\": \"" << t.maps << "\"\n}\n";
+  return o.str();
+}
+
+}  // namespace drawbend::loop
