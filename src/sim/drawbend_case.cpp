@@ -237,9 +237,9 @@ analysis::PressureMap DrawBendResult::pressure_map(const std::string& label) con
   return m;
 }
 
-std::vector<std::pair<double, double>> DrawBendResult::mid_wrap_strain() const {
+std::vector<std::pair<double, double>> DrawBendResult::wrap_strain(double fraction) const {
   const auto& h = history;
-  const double step = std::max(spec.element_length, 0.5);
+  const double step = std::max(spec.element_length, 0.5), shift = (fraction - 0.5) * wrap_length(spec);
   std::vector<std::pair<double, double>> out;
   // The slide of the upstream strip is the inlet end's travel in the draw.
   double x0 = NAN;
@@ -253,7 +253,7 @@ std::vector<std::pair<double, double>> DrawBendResult::mid_wrap_strain() const {
   for (int k = 0;; ++k) {
     const std::string col = "eps_mid_" + std::to_string(k);
     if (std::find(h.header.begin(), h.header.end(), col) == h.header.end()) break;
-    const double s = k * step;
+    const double s = k * step + shift;
     // The section's strain when the slide reaches s (linear between samples).
     for (std::size_t i = 0; i + 1 < draw.size(); ++i)
       if (draw[i].first <= s && s <= draw[i + 1].first) {
@@ -266,8 +266,8 @@ std::vector<std::pair<double, double>> DrawBendResult::mid_wrap_strain() const {
   return out;
 }
 
-double DrawBendResult::steady_strain_slide(double band) const {
-  const auto e = mid_wrap_strain();
+double DrawBendResult::steady_strain_slide(double band, double fraction) const {
+  const auto e = wrap_strain(fraction);
   if (e.size() < 3) return NAN;
   const double final = e.back().second;
   double s_ss = e.front().first;

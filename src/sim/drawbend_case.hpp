@@ -79,13 +79,17 @@ struct DrawBendResult {
   analysis::PressureMap pressure_map(const std::string& label) const;
   /// Average contact pressure over the nodes in contact [MPa] (area weighted).
   double mean_pressure() const;
-  /// Outside-surface strain at mid-wrap against the slide in the draw [mm]:
-  /// the section that is at mid-wrap after each slide s (Sec. 2.3.2).
-  std::vector<std::pair<double, double>> mid_wrap_strain() const;
-  /// Slide [mm] after which the mid-wrap strain stays within `band`
-  /// (relative) of its value at the end of the draw: the "steady strain
-  /// condition" of Sec. 2.3.2.  NaN without strain sections.
-  double steady_strain_slide(double band) const;
+  /// Outside-surface strain at a point of the wrap against the slide in the
+  /// draw [mm]: for each slide s, the strain of the section that is at
+  /// `fraction` of the wrap then (0.5 = mid-wrap, 1 = the exit tangent).
+  /// Sections start at x = Lw/2 - k h after step 1, where the wrap holds
+  /// x = 0 (entry) to Lw (exit), so section k is at fraction f after a slide
+  /// k h + (f - 1/2) Lw (Sec. 2.3.2).
+  std::vector<std::pair<double, double>> wrap_strain(double fraction) const;
+  /// Slide [mm] after which that strain stays within `band` (relative) of
+  /// its last value: the "steady strain condition" of Sec. 2.3.2.  NaN
+  /// without strain sections.
+  double steady_strain_slide(double band, double fraction) const;
 };
 
 /// Write the deck to `dir`/deck.toml, run it (one line of progress per step
