@@ -66,14 +66,15 @@ struct FeOptions {
   double fine_element_length = 0;     ///< "finer map" variant: element length [mm]; 0 = base
   int fine_across = 0;                ///< "finer map" variant: elements across; 0 = 2 x base
   double stiff_penalty = 0.3;         ///< "penalty" variant: contact penalty scale
-  int sensitivity_pins = 2;           ///< variants on the 12.7/25.4 mm pins (2) or all three (3)
+  bool fine_variant = false;          ///< run the finer-map variant (the `full` label does)
 };
 
 /// The map variants of the sensitivity study; "base" is the chapter's map.
 inline const char* kVariants[4] = {"base", "penalty", "td_curve", "fine"};
 
 struct FeMaps {
-  /// variant -> pin [mm] -> run (base has all three pins).
+  /// variant -> pin [mm] -> run (base has all three pins, variants the 12.7
+  /// and 25.4 mm pins; "fine" only when FeOptions::fine_variant).
   std::map<std::string, std::map<double, drawbend::sim::DrawBendResult>> runs;
   double wall_s = 0;  ///< wall time of all runs [s]
 
@@ -103,6 +104,6 @@ drawbend::analysis::NewMethodResult identify(const Inputs& in, const FeMaps& m, 
 FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o);  // 8
 void diluted_new_method(Chapter& c, const Inputs& in, const FeMaps& m);  // 9
 void undiluted_new_method(Chapter& c, const Inputs& in, const FeMaps& m);  // 10
-void map_sensitivity(Chapter& c, const Inputs& in, const FeMaps& m, const FeOptions& o);  // 11
+void map_sensitivity(Chapter& c, const Inputs& in, const FeMaps& m);  // 11
 
 }  // namespace ch5
