@@ -95,10 +95,9 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
     s.hardening = c.data("materials/aa5754_o_rd.csv");
     if (variant == "penalty") s.penalty = o.stiff_penalty;
     if (variant == "td_curve") s.hardening = c.data("materials/aa5754_o_td.csv");
-    if (variant == "fine") {
-      s.across = o.fine_across > 0 ? o.fine_across : 2 * o.base.across;
-      if (o.fine_element_length > 0) s.element_length = o.fine_element_length;
-    }
+    if (variant == "fine_along")
+      s.element_length = o.fine_element_length > 0 ? o.fine_element_length : o.base.element_length / 2;
+    if (variant == "fine_across") s.across = o.fine_across > 0 ? o.fine_across : 2 * o.base.across;
     s.name = "ch5_d" + fmt(pin) + "_" + variant;
     return s;
   };
@@ -109,7 +108,7 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
     const bool base = std::string(variant) == "base";
     for (double pin : kPins) {
       if (!base && pin > 25.4 + 1e-9) continue;  // variants: the pins of Table 5.16
-      if (std::string(variant) == "fine" && !o.fine_variant) continue;
+      if (std::string(variant) == "fine_across" && !o.across_variant) continue;
       const sim::DrawBendSpec s = spec_for(variant, pin);
       std::cout << "  FE: " << s.name << " ...\n" << std::flush;
       m.runs[variant].emplace(pin, sim::run_drawbend(s, c.out("runs/" + s.name), o.reuse));
@@ -165,11 +164,10 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
   c.value("fe_h", fmt(o.base.element_length), "mm");
   c.value("fe_across", std::to_string(o.base.across));
   c.value("fe_through", std::to_string(o.base.through));
-  const sim::DrawBendSpec fine = spec_for("fine", 12.7);
-  c.value("fe_fine_across", std::to_string(fine.across));
-  c.value("fe_fine_h", fmt(fine.element_length), "mm");
-  c.value("fe_fine_ran", o.fine_variant ? "was run" : "was not run in this (quick) variant of the chapter; the "
-                                                        "full variant (`--fe-fine-variant 1`, CTest label `full`) runs it");
+  c.value("fe_fine_h", fmt(spec_for("fine_along", 12.7).element_length), "mm");
+  c.value("fe_fine_across", std::to_string(spec_for("fine_across", 12.7).across));
+  c.value("fe_across_ran", o.across_variant ? "was run" : "was not run in this (quick) variant of the chapter; the "
+                                                          "full variant (`--fe-across-variant 1`, CTest label `full`) runs it");
   c.value("fe_penalty", fmt(o.base.penalty));
   c.value("fe_stiff_penalty", fmt(o.stiff_penalty));
 

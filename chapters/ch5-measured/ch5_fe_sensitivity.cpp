@@ -2,7 +2,9 @@
 // Table 5.16 each modelling choice can explain.
 //
 // Sources, each changed alone from our baseline (base map, printed c):
-//   mesh      the finer map (more elements across, where the edge peaks are);
+//   mesh      finer maps: half the element length along the strip (where the
+//             entry and exit peaks are); twice the elements across (the edge
+//             peaks; `full` label only);
 //   penalty   a stiffer contact penalty;
 //   hardening the TD instead of the RD hardening curve;
 //   c (Eq. 2.2)      c recomputed by Eq. (2.2) from the measured forces;
@@ -31,7 +33,8 @@ struct Source {
   CDef cdef;
 };
 
-const std::vector<Source> kSources{{"mesh", "finer map (mesh)", "fine", CDef::printed},
+const std::vector<Source> kSources{{"mesh_along", "finer map along the strip", "fine_along", CDef::printed},
+                                   {"mesh_across", "finer map across the width", "fine_across", CDef::printed},
                                    {"penalty", "stiffer contact penalty", "penalty", CDef::printed},
                                    {"hardening", "TD hardening curve", "td_curve", CDef::printed},
                                    {"c_eq22", "c by Eq. (2.2), measured forces", "base", CDef::eq22},

@@ -63,18 +63,18 @@ struct FeOptions {
   bool run = true;                    ///< run the finite-element part
   bool reuse = false;                 ///< reuse runs whose deck is unchanged (development)
   drawbend::sim::DrawBendSpec base;   ///< mesh and numerics of the baseline maps
-  double fine_element_length = 0;     ///< "finer map" variant: element length [mm]; 0 = base
-  int fine_across = 0;                ///< "finer map" variant: elements across; 0 = 2 x base
+  double fine_element_length = 0;     ///< "fine_along" variant: element length [mm]; 0 = half the base
+  int fine_across = 0;                ///< "fine_across" variant: elements across; 0 = twice the base
   double stiff_penalty = 0.3;         ///< "penalty" variant: contact penalty scale
-  bool fine_variant = false;          ///< run the finer-map variant (the `full` label does)
+  bool across_variant = false;        ///< run the fine_across variant too (the `full` label does)
 };
 
 /// The map variants of the sensitivity study; "base" is the chapter's map.
-inline const char* kVariants[4] = {"base", "penalty", "td_curve", "fine"};
+inline const char* kVariants[5] = {"base", "penalty", "td_curve", "fine_along", "fine_across"};
 
 struct FeMaps {
   /// variant -> pin [mm] -> run (base has all three pins, variants the 12.7
-  /// and 25.4 mm pins; "fine" only when FeOptions::fine_variant).
+  /// and 25.4 mm pins; "fine_across" only when FeOptions::across_variant).
   std::map<std::string, std::map<double, drawbend::sim::DrawBendResult>> runs;
   double wall_s = 0;  ///< wall time of all runs [s]
 

@@ -26,7 +26,7 @@
 
 namespace {
 ch5::FeOptions fe;
-int run_fe = 1, reuse_runs = 0, fine_variant = 0;  // ints: the option parser's flags take no value
+int run_fe = 1, reuse_runs = 0, across_variant = 0;  // ints: the option parser's flags take no value
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -41,10 +41,10 @@ int main(int argc, char** argv) {
   o.add(fe.base.across, "fe-across", "elements across the half width");
   o.add(fe.base.through, "fe-through", "elements through the thickness");
   o.add(fe.base.mass_scaling, "fe-mass-scaling", "mass scaling at 100 mm/s (scaled by (100/v)^2 at speed v)");
-  o.add(fe.fine_element_length, "fe-fine-element-length", "finer-map variant: element length [mm] (0: as the base)");
-  o.add(fe.fine_across, "fe-fine-across", "finer-map variant: elements across the half width (0: twice the base)");
+  o.add(fe.fine_element_length, "fe-fine-element-length", "finer-map variant along the strip: element length [mm] (0: half the base)");
+  o.add(fe.fine_across, "fe-fine-across", "finer-map variant across: elements across the half width (0: twice the base)");
   o.add(fe.stiff_penalty, "fe-stiff-penalty", "penalty variant: contact penalty scale (base 0.1)");
-  o.add(fine_variant, "fe-fine-variant", "run the finer-map variant of the sensitivity study (1) or not (0)");
+  o.add(across_variant, "fe-across-variant", "run the finer-across-the-width map variant too (1) or not (0)");
   return drawbend::study::run_chapter(ch, argc, argv, [](drawbend::study::Chapter& c) {
     using namespace ch5;
     const Inputs in = load_inputs(c);  // 1
@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
     friction_lines_and_surfaces(c, in);// 7
     fe.run = run_fe != 0;
     fe.reuse = reuse_runs != 0;
-    fe.fine_variant = fine_variant != 0;
+    fe.across_variant = across_variant != 0;
     c.value("fe_ran", fe.run ? "yes" : "no");
     if (!fe.run) return;
     const FeMaps maps = run_fe_maps(c, in, fe);  // 8
