@@ -14,13 +14,37 @@
 //   5. The pressure ratio c (Tables 5.15, 5.18): which definition reproduces it.
 //   6. Undiluted lubricant: conventional mu (Fig. 5.30).
 //   7. mu(p) lines and surfaces from the printed Table 5.16 (Figs. 5.26-5.29).
+//   8. Our frictionless pressure maps for the three pins (Sec. 5.7.1, Figs. 5.23-5.25).
+//   9. Diluted lubricant: the new method on our maps (Table 5.16 ours, Figs. 5.26-5.29 ours).
+//  10. Undiluted lubricant: second-order mu(p) from three pins (Figs. 5.31, 5.32).
+//  11. Sensitivity of a0, a1 to the map (mesh, penalty, hardening) and to c.
+// Steps 8-11 run our finite-element solver (--fe 0 skips them).
 #include <cmath>
 #include <iostream>
 
 #include "ch5_steps.hpp"
 
+namespace {
+ch5::FeOptions fe;
+int run_fe = 1, reuse_runs = 0, across_variant = 0;  // ints: the option parser's flags take no value
+}  // namespace
+
 int main(int argc, char** argv) {
   drawbend::study::Chapter ch("ch5-measured", "Chapter 5: friction measurement on AA5754-O (measured data)");
+  auto& o = ch.options();
+  fe.base.element_length = 1.0;
+  fe.base.across = 2;
+  fe.base.through = 4;
+  o.add(run_fe, "fe", "run the finite-element part (1) or not (0)");
+  o.add(reuse_runs, "reuse-runs", "reuse runs whose deck is unchanged (1), for development only");
+  o.add(fe.base.element_length, "fe-element-length", "element length along the strip in the bend zone [mm]");
+  o.add(fe.base.across, "fe-across", "elements across the half width");
+  o.add(fe.base.through, "fe-through", "elements through the thickness");
+  o.add(fe.base.mass_scaling, "fe-mass-scaling", "mass scaling at 100 mm/s (scaled by (100/v)^2 at speed v)");
+  o.add(fe.fine_element_length, "fe-fine-element-length", "finer-map variant along the strip: element length [mm] (0: half the base)");
+  o.add(fe.fine_across, "fe-fine-across", "finer-map variant across: elements across the half width (0: twice the base)");
+  o.add(fe.stiff_penalty, "fe-stiff-penalty", "penalty variant: contact penalty scale (base 0.1)");
+  o.add(across_variant, "fe-across-variant", "run the finer-across-the-width map variant too (1) or not (0)");
   return drawbend::study::run_chapter(ch, argc, argv, [](drawbend::study::Chapter& c) {
     using namespace ch5;
     const Inputs in = load_inputs(c);  // 1
@@ -30,5 +54,14 @@ int main(int argc, char** argv) {
     pressure_ratio_definitions(c, in); // 5
     undiluted(c, in);                  // 6
     friction_lines_and_surfaces(c, in);// 7
+    fe.run = run_fe != 0;
+    fe.reuse = reuse_runs != 0;
+    fe.across_variant = across_variant != 0;
+    c.value("fe_ran", fe.run ? "yes" : "no");
+    if (!fe.run) return;
+    const FeMaps maps = run_fe_maps(c, in, fe);  // 8
+    diluted_new_method(c, in, maps);            // 9
+    undiluted_new_method(c, in, maps);          // 10
+    map_sensitivity(c, in, maps);           // 11
   });
 }
