@@ -79,7 +79,7 @@ Vec3 texture_axis(const TextureRef& r, const std::vector<double>& x, const std::
   double G[2][2];
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j) G[i][j] = F.A[i][0] * r.inv[0][j] + F.A[i][1] * r.inv[1][j];
-  const double cw = G[0][0] + G[1][1], sw = G[1][0] - G[0][1], l = std::hypot(cw, sw);
+  const double cw = G[0][0] + G[1][1], sw = G[1][0] - G[0][1], l = std::sqrt(cw * cw + sw * sw);
   const double c = cw / l, s = sw / l;
   const double e1 = r.c1 * c - r.c2 * s, e2 = r.c1 * s + r.c2 * c;
   return {e1 * F.g1[0] + e2 * F.g2[0], e1 * F.g1[1] + e2 * F.g2[1], e1 * F.g1[2] + e2 * F.g2[2]};

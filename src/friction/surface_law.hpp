@@ -38,6 +38,7 @@
 // none yet), evaluations, clamped pressure, clamped low speed, clamped high speed.
 // Units: MPa, mm/s.
 #include <array>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -90,5 +91,17 @@ std::pair<analysis::FrictionSurface, analysis::FrictionSurface> load_surface_nod
 /// file, line and column of a bad cell.
 std::pair<analysis::FrictionSurface, analysis::FrictionSurface> load_surface_lines(const std::string& csv,
                                                                                    double p_min, double p_max);
+
+}  // namespace drawbend::friction
+
+namespace drawbend::friction {
+
+/// Steady sliding at angle phi [rad] from e1 under the radial return of
+/// contact.cpp: the friction force is antiparallel to the slip and lies on the
+/// ellipse, so |F_t|/F_n = mu1 mu2 / sqrt(mu2^2 cos^2 phi + mu1^2 sin^2 phi).
+inline double ellipse_mu(const Limit& l, double phi) {
+  const double c = std::cos(phi), s = std::sin(phi);
+  return l.mu1 * l.mu2 / std::sqrt(l.mu2 * l.mu2 * c * c + l.mu1 * l.mu1 * s * s);
+}
 
 }  // namespace drawbend::friction

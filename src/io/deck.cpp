@@ -247,8 +247,10 @@ Deck parse_deck(const std::string& text, const std::string& path) {
     } catch (const std::invalid_argument& e) {
       c.fail(mesh, "mesh", e.what());
     }
+  } else if (kind == "quarter_disk") {
+    m.mesh = make_quarter_disk(mesh, path);  // deck_material.cpp
   } else {
-    c.fail(*mesh.get("kind"), "mesh.kind", "expected \"block\" or \"wrapped_strip\", found \"" + kind + "\"");
+    c.fail(*mesh.get("kind"), "mesh.kind", "expected \"block\", \"wrapped_strip\" or \"quarter_disk\", found \"" + kind + "\"");
   }
   // Material.
   m.material = make_material(c.table(root, "material", "deck"), path, dir);

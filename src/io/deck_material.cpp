@@ -4,6 +4,7 @@
 #include <set>
 
 #include "core/csv.hpp"
+#include "fe/disk.hpp"
 #include "material/j2_isotropic.hpp"
 #include "material/linear_elastic.hpp"
 #include "friction/stribeck_law.hpp"
@@ -160,6 +161,25 @@ std::shared_ptr<friction::FrictionLaw> make_friction(const toml::table& t, const
   if (l == "surface") return make_surface_friction(t, deck, dir);
   throw InputError(at(law ? *law : static_cast<const toml::node&>(t), deck) +
                    ": contact.friction.law: expected \"coulomb\", \"stribeck\" or \"surface\" (found \"" + l + "\")");
+}
+
+fe::Mesh make_quarter_disk(const toml::table& t, const std::string& deck) {
+  check_keys(t, deck, "mesh", {"kind", "radius", "thickness", "core_fraction", "core", "ring", "through"});
+  fe::QuarterDiskSpec s;
+  s.radius = positive(t, "radius", deck, "mesh");
+  s.thickness = positive(t, "thickness", deck, "mesh");
+  if (t.get("core_fraction")) s.core_fraction = positive(t, "core_fraction", deck, "mesh");
+  for (const auto& [key, ptr] : {std::pair{"core", &s.core}, std::pair{"ring", &s.ring}, std::pair{"through", &s.through}})
+    if (const auto* n = t.get(key)) {
+      const auto v = n->value<int64_t>();
+      if (!v || *v < 1) throw InputError(at(*n, deck) + ": mesh." + key + ": expected a whole number of elements >= 1");
+      *ptr = static_cast<int>(*v);
+    }
+  try {
+    return fe::quarter_disk(s);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(at(t, deck) + ": mesh: " + e.what());
+  }
 }
 
 }  // namespace drawbend::io

@@ -7,6 +7,7 @@
 
 #include <toml++/toml.h>
 
+#include "fe/mesh.hpp"
 #include "friction/friction_law.hpp"
 #include "material/material.hpp"
 
@@ -26,5 +27,9 @@ std::shared_ptr<const material::Material> make_material(const toml::table& t, co
 ///              v_min/v_max only with nodes: with lines they are the outer lines' speeds)
 std::shared_ptr<friction::FrictionLaw> make_friction(const toml::table& t, const std::string& deck,
                                                      const std::string& deck_dir);
+
+/// [mesh] kind = "quarter_disk": radius, thickness [mm], core, ring, through
+/// (element counts), core_fraction (fe/disk.hpp).
+fe::Mesh make_quarter_disk(const toml::table& t, const std::string& deck);
 
 }  // namespace drawbend::io
