@@ -169,7 +169,7 @@ void block_sliding(study::Chapter& c) {
   c.value("dir_mu_rd", fmt_fixed(l64.mu1, 4));
   c.value("dir_mu_td", fmt_fixed(l64.mu2, 4));
   c.value("dir_worst_pct", fmt_fixed(100 * worst_d, 3), "%");
-  c.value("dir_worst_angle", fmt(worst_angle, 2), "deg");
+  c.value("dir_worst_angle", fmt_fixed(worst_angle, 3), "deg");
   c.value("cost_thesis", fmt(study::scalar(c.data("thesis/scalars.csv"), "ch6_cost_increase").value), "%");
 }
 

@@ -20,7 +20,7 @@ struct CupResult {
   double size_rd = 0, size_td = 0;               ///< flange outer diameter along RD (x) and TD (y)
   double max_strain = 0, max_strain_r = 0, max_strain_z = 0;  ///< largest plastic strain and where
   double die_lift = 0;                           ///< lower-die displacement at the end
-  double kinetic_ratio = 0, added_mass_ratio = 0;
+  double kinetic_ratio = 0, hourglass_ratio = 0, added_mass_ratio = 0;  ///< over internal energy; added/physical mass
   long cycles = 0;
 };
 /// Draw a cup from `deck_path` at punch speed [mm/s] over `stroke` [mm] in `cycles`
