@@ -15,6 +15,7 @@
 #include <iostream>
 #include <memory>
 
+#include "bench_friction.hpp"
 #include "core/csv.hpp"
 #include "fe/solver.hpp"
 #include "material/j2_isotropic.hpp"
@@ -83,6 +84,7 @@ double seconds(fe::Model m, long cycles) {
 int main(int argc, char** argv) {
   const std::string out = argc > 1 ? argv[1] : "build/bench/results.csv";
   const bool quick = argc > 2 && std::string(argv[2]) == "--quick";
+  const bool friction_only = argc > 2 && std::string(argv[2]) == "--friction";  // only the friction-law cost
   struct Case {
     std::string name;
     fe::Model model;
@@ -92,6 +94,7 @@ int main(int argc, char** argv) {
   CsvWriter w({"case", "elements", "threads", "ns_per_element_cycle"});
   w.comment("explicit solver cost; machine: see README (performance section)");
   const int maxt = omp_get_num_procs();
+  if (friction_only) cases.clear();
   for (auto& c : cases) {
     const long ne = c.model.mesh.num_elements();
     const long base = std::max(20L, 2000000L / ne), extra = std::max(50L, (quick ? 4000000L : 20000000L) / ne);
@@ -106,6 +109,8 @@ int main(int argc, char** argv) {
     }
   }
   std::filesystem::create_directories(std::filesystem::path(out).parent_path());
+  bench_friction(std::string(DRAWBEND_DATA_DIR) + "/cases/block_surface.toml",
+                 (std::filesystem::path(out).parent_path() / "friction_cost.csv").string(), w, quick);
   w.save(out);
   std::cout << "written " << out << "\n";
   return 0;

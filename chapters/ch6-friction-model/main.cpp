@@ -1,7 +1,8 @@
 // Chapter 6: the new friction model mu(p, v) (thesis Eqs. 6.1-6.3, Table 6.1).
-// This part needs no finite-element solver: it re-derives all 18 nodal values
-// of Table 6.1 from the lines of Table 5.16, tests the printed shape functions
-// and natural-coordinate map, and draws the RD surface with its nodes (Fig. 6.2).
+// It re-derives all 18 nodal values of Table 6.1 from the lines of Table 5.16,
+// tests the printed shape functions and natural-coordinate map, and draws the
+// RD surface with its nodes (Fig. 6.2); then it verifies the law in our solver
+// by block sliding (Sec. 6.5, Tables 6.2-6.4, Figs. 6.8-6.10).
 // Units: p MPa, v mm/s; domain p 0-80 MPa, v 6.35-101.6 mm/s (Sec. 6.3).
 //
 // Recipe:
@@ -10,9 +11,13 @@
 //   3. Check them against Table 6.1 with printed-digit tolerances.
 //   4. Errata checks: printed Eq. (6.1) and Eq. (6.3).
 //   5. Figure 6.2: the surface, its lines and its nodes.
+//   6. Statements of Secs. 6.6.2-6.6.3 re-derived from other printed numbers.
+//   7. Block sliding with the law in our solver (ch6_block.cpp).
+//   8. Cup drawing (ch6_cup.cpp): coarse cases 1 and 9; --full: all nine, refined.
 #include <cmath>
 
 #include "analysis/friction_surface.hpp"
+#include "ch6_steps.hpp"
 #include "study/chapter.hpp"
 #include "study/thesis_data.hpp"
 
@@ -20,6 +25,8 @@ using namespace drawbend;
 using namespace drawbend::analysis;
 
 namespace {
+
+bool g_full = false;  // --full: the paper-fidelity cup-drawing runs (CTest label `full`)
 
 struct Lines {
   std::vector<double> v;
@@ -133,11 +140,17 @@ void body(study::Chapter& c) {
   c.checks().rederive("ch6.case9_speed", "case 9 punch speed: Sec. 6.6.2 text against Table 6.5", text_speed.value,
                       table_speed.value, 0.0, "mm/s",
                       "the same quantity printed twice to 0.1 mm/s must read the same");
+
+  // 7. Block sliding (Sec. 6.5).
+  ch6::block_sliding(c);
+  // 8. Cup drawing (Sec. 6.6): coarse cases 1 and 9; all nine on a finer mesh with --full.
+  ch6::cup_drawing(c, g_full);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  study::Chapter ch("ch6-friction-model", "Chapter 6: the mu(p, v) friction model (no FE part)");
+  study::Chapter ch("ch6-friction-model", "Chapter 6: the mu(p, v) friction model, block sliding and cup drawing");
+  ch.options().add_flag(g_full, "full", "cup drawing: all nine cases of Table 6.5 on the refined mesh (slow)");
   return study::run_chapter(ch, argc, argv, body);
 }

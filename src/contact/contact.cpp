@@ -28,7 +28,8 @@
 // the friction law returns the limit (mu_1, mu_2) on the texture axes, and a
 // trial force outside the ellipse (f_1/mu_1)^2 + (f_2/mu_2)^2 <= F_n^2 is
 // scaled back onto it (radial return; for mu_1 = mu_2 this is the classical
-// Coulomb return mapping).
+// Coulomb return mapping).  The texture axis is the pair's fixed global axis,
+// or the node's corotational axis (contact/texture.hpp).
 #include <algorithm>
 #include <cmath>
 
@@ -63,6 +64,13 @@ void Solver::contact_forces(double dt, bool friction_on) {
       }
     }
     const friction::FrictionLaw* law = friction_on ? cp.friction.get() : nullptr;
+    if (texture_ref_.size() <= p) texture_ref_.resize(contact_.size());
+    const bool corot = law && cp.texture == ContactPair::Texture::corotational;
+    if (corot && texture_ref_[p].empty()) {
+      std::vector<int> ids;
+      for (const auto& c : nodes) ids.push_back(c.node);
+      texture_ref_[p] = contact::texture_refs(mesh, cp.faces, ids, cp.texture_axis);
+    }
     const int ss = cp.friction ? cp.friction->state_size() : 0;
     const Vec3 off = tool_offset_[tool], vt = tool_vel_[tool];
     const int nn = static_cast<int>(nodes.size());
@@ -120,7 +128,7 @@ void Solver::contact_forces(double dt, bool friction_on) {
         if (m2 > 0) for (double& v : fo) v *= mag / m2;
         ft = {fo[0] - kn * vtan[0] * dt, fo[1] - kn * vtan[1] * dt, fo[2] - kn * vtan[2] * dt};
         // Texture axes in the tangent plane.
-        const Vec3& ax = cp.texture_axis;
+        const Vec3 ax = corot ? contact::texture_axis(texture_ref_[p][k], x_, y_, z_) : cp.texture_axis;
         const double an = dot(ax, n);
         Vec3 e1{ax[0] - an * n[0], ax[1] - an * n[1], ax[2] - an * n[2]};
         const double e1n = std::sqrt(dot(e1, e1));

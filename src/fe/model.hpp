@@ -80,6 +80,10 @@ struct ContactPair {
   double damping = 0.2;  ///< normal contact damping, fraction of critical 2 sqrt(k m) (see contact.cpp)
   std::shared_ptr<friction::FrictionLaw> friction;  ///< nullptr: frictionless
   Vec3 texture_axis{1, 0, 0};  ///< rolling direction of the sheet (global, before projection)
+  /// fixed: RD = texture_axis projected on the tool (thesis Sec. 6.4); corotational:
+  /// RD follows the polar rotation of the sheet face at each node (contact/texture.hpp).
+  enum class Texture { fixed, corotational };
+  Texture texture = Texture::fixed;
 };
 
 struct Step {

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/texture.hpp"
 #include "fe/model.hpp"
 #include "fe/mesh.hpp"
 
@@ -105,6 +106,8 @@ class Solver {
   Vec3 tool_offset(const std::string& tool) const;  ///< displacement of a tool [mm]
   const std::vector<ContactNode>& contact_nodes(int pair) const { return contact_[pair]; }
   int num_contact_pairs() const { return static_cast<int>(contact_.size()); }
+  /// Friction-law state of a contact pair (state_size() doubles per contact node).
+  const std::vector<double>& friction_state(int pair) const { return friction_state_[pair]; }
   double stable_dt() const;  ///< current critical step times the safety factor [s]
   double max_penetration() const;
 
@@ -121,6 +124,7 @@ class Solver {
   std::vector<std::vector<ContactNode>> contact_;
   std::vector<std::vector<double>> contact_stiffness_len_;  // per pair, per node: adjacent element size V/A [mm]
   std::vector<std::vector<double>> friction_state_;
+  std::vector<std::vector<contact::TextureRef>> texture_ref_;  // per pair (corotational texture only), per node
   std::vector<std::vector<Vec3>> contact_force_;  // per pair, per contact node, force on sheet
   std::vector<std::pair<std::string, Vec3>> reactions_, applied_;
   std::vector<double> energy_scratch_[2];

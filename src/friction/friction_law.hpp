@@ -15,6 +15,8 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace drawbend::friction {
 
@@ -39,6 +41,12 @@ class FrictionLaw {
   virtual Limit limit(const ContactState& s) const = 0;
   virtual int state_size() const { return 0; }
   virtual std::string describe() const = 0;
+  /// Named event counts summed over the per-node states of one contact pair
+  /// (`state`: state_size() doubles per node), e.g. evaluations clamped to the
+  /// law's input domain; reported once at the end of a run.  Empty: none.
+  virtual std::vector<std::pair<std::string, double>> counters(const std::vector<double>& /*state*/) const {
+    return {};
+  }
 };
 
 /// Coulomb friction, mu constant (>= 0).

@@ -247,8 +247,10 @@ Deck parse_deck(const std::string& text, const std::string& path) {
     } catch (const std::invalid_argument& e) {
       c.fail(mesh, "mesh", e.what());
     }
+  } else if (kind == "quarter_disk") {
+    m.mesh = make_quarter_disk(mesh, path);  // deck_material.cpp
   } else {
-    c.fail(*mesh.get("kind"), "mesh.kind", "expected \"block\" or \"wrapped_strip\", found \"" + kind + "\"");
+    c.fail(*mesh.get("kind"), "mesh.kind", "expected \"block\", \"wrapped_strip\" or \"quarter_disk\", found \"" + kind + "\"");
   }
   // Material.
   m.material = make_material(c.table(root, "material", "deck"), path, dir);
@@ -288,7 +290,7 @@ Deck parse_deck(const std::string& text, const std::string& path) {
   if (const auto* cps = c.array_of_tables(root, "contact", "deck"))
     for (const auto& cn : *cps) {
       const auto& t = *cn.as_table();
-      c.allowed(t, "contact", {"faces", "tool", "penalty", "damping", "friction", "texture_axis"});
+      c.allowed(t, "contact", {"faces", "tool", "penalty", "damping", "friction", "texture_axis", "texture"});
       fe::ContactPair cp;
       cp.faces = c.str(t, "faces", "contact");
       cp.tool = c.str(t, "tool", "contact");
@@ -296,6 +298,10 @@ Deck parse_deck(const std::string& text, const std::string& path) {
       cp.damping = c.num(t, "damping", "contact", 0.2);
       if (!(cp.damping >= 0 && cp.damping <= 1)) c.fail(t, "contact.damping", "must lie in [0, 1] (fraction of critical)");
       cp.texture_axis = c.vec(t, "texture_axis", "contact", Vec3{1, 0, 0}, true);
+      const std::string tex = c.str(t, "texture", "contact", std::string("fixed"));
+      if (tex != "fixed" && tex != "corotational")
+        c.fail(*t.get("texture"), "contact.texture", "expected \"fixed\" or \"corotational\" (found \"" + tex + "\")");
+      if (tex == "corotational") cp.texture = fe::ContactPair::Texture::corotational;
       if (const auto* f = t.get("friction")) {
         if (!f->is_table()) c.fail(*f, "contact.friction", "expected a table, e.g. { law = \"coulomb\", mu = 0.1 }");
         cp.friction = make_friction(*f->as_table(), path, dir);

@@ -7,6 +7,7 @@
 
 #include <toml++/toml.h>
 
+#include "fe/mesh.hpp"
 #include "friction/friction_law.hpp"
 #include "material/material.hpp"
 
@@ -20,8 +21,15 @@ std::shared_ptr<const material::Material> make_material(const toml::table& t, co
 
 /// friction = { law = "coulomb", mu = 0.1 }, or
 /// friction = { law = "stribeck", table = "table_3_1.csv" | mu_BL, mu_EHL, L_BL, L_EHL, Ra_um, eta_Pa_s,
-///              interval = 100 }  (cycles over which the sliding speed is averaged, Sec. 3.3.2)
+///              interval = 100 }  (cycles over which the sliding speed is averaged, Sec. 3.3.2), or
+/// friction = { law = "surface", nodes = "table_6_1.csv" | lines = "table_5_16.csv", interval = 100,
+///              p_min = 0, p_max = 80, v_min = 6.35, v_max = 101.6 }  (the mu(p, v) law of Ch. 6;
+///              v_min/v_max only with nodes: with lines they are the outer lines' speeds)
 std::shared_ptr<friction::FrictionLaw> make_friction(const toml::table& t, const std::string& deck,
                                                      const std::string& deck_dir);
+
+/// [mesh] kind = "quarter_disk": radius, thickness [mm], core, ring, through
+/// (element counts), core_fraction (fe/disk.hpp).
+fe::Mesh make_quarter_disk(const toml::table& t, const std::string& deck);
 
 }  // namespace drawbend::io

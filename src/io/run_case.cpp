@@ -236,6 +236,16 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   sum.row({"added_mass_ratio", fmt(r.added_mass_ratio, 4), "-"});
   sum.row({"max_penetration", fmt(r.max_penetration, 4), "mm"});
   sum.row({"wall_time", fmt(r.wall_seconds, 4), "s"});
+  // Friction-law event counts (e.g. evaluations clamped to the mu(p, v) domain), once per run.
+  std::string flog;
+  for (int p = 0; p < solver.num_contact_pairs(); ++p)
+    if (const auto& law = m.contacts[p].friction)
+      for (const auto& [name, n] : law->counters(solver.friction_state(p))) {
+        sum.row({"contact" + std::to_string(p) + "_" + name, fmt(n, 12), "evaluations"});
+        if (n > 0 && name.rfind("clamped", 0) == 0)
+          flog += "  warning: contact " + std::to_string(p) + " (" + m.contacts[p].tool + "): " + fmt(n, 12) + " " +
+                  name + " (friction evaluated at the domain edge)\n";
+      }
   sum.save((fs::path(opt.out_dir) / "summary.csv").string());
   log << "summary: " << r.cycles << " cycles in " << fmt(r.wall_seconds, 3) << " s wall\n"
       << "  energy: kinetic " << fmt(e.kinetic, 5) << " mJ, internal " << fmt(e.internal, 5) << " mJ, hourglass "
@@ -244,7 +254,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
       << "  energy balance error " << fmt(100 * r.energy_balance_error, 3) << " %; hourglass/internal "
       << fmt(100 * r.hourglass_ratio, 3) << " %; kinetic/internal " << fmt(100 * r.kinetic_ratio, 3)
       << " %; added mass " << fmt(100 * r.added_mass_ratio, 3) << " %; max penetration "
-      << fmt(r.max_penetration, 3) << " mm\n";
+      << fmt(r.max_penetration, 3) << " mm\n" << flog;
   return r;
 }
 
