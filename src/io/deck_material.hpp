@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "friction/friction_law.hpp"
+#include "io/deck_context.hpp"
 #include "material/material.hpp"
 
 namespace drawbend::io {
@@ -15,13 +16,15 @@ namespace drawbend::io {
 /// [material]: type = "elastic" | "j2"; E [MPa], nu, density [t/mm^3];
 /// j2: hardening = "path.csv" (plastic_strain,true_stress_MPa; relative to the
 /// deck's directory) or yield [MPa] with optional tangent [MPa] (linear hardening).
-std::shared_ptr<const material::Material> make_material(const toml::table& t, const std::string& deck,
+/// Value problems are recorded in c's collector; returns nullptr if the
+/// material could not be built.
+std::shared_ptr<const material::Material> make_material(const DeckContext& c, const toml::table& t,
                                                         const std::string& deck_dir);
 
 /// friction = { law = "coulomb", mu = 0.1 }, or
 /// friction = { law = "stribeck", table = "table_3_1.csv" | mu_BL, mu_EHL, L_BL, L_EHL, Ra_um, eta_Pa_s,
 ///              interval = 100 }  (cycles over which the sliding speed is averaged, Sec. 3.3.2)
-std::shared_ptr<friction::FrictionLaw> make_friction(const toml::table& t, const std::string& deck,
+std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const toml::table& t,
                                                      const std::string& deck_dir);
 
 }  // namespace drawbend::io

@@ -1,6 +1,7 @@
 #include "study/chapter.hpp"
 
 #include "analysis/printed.hpp"
+#include "core/provenance.hpp"
 #include "study/thesis_data.hpp"
 
 #include <cstdlib>
@@ -61,6 +62,7 @@ void Chapter::plot(const std::string& script, const std::string& stem,
                    const std::map<std::string, std::string>& vars) const {
   const std::string gp = figures_dir_ + "/" + script + ".gp";
   if (!fs::exists(gp)) throw InputError(gp + ": gnuplot script not found");
+  note_input(gp);
   const std::string final_svg = out("figures/" + stem + ".svg");
   const std::string tmp_svg = final_svg + ".tmp";
   std::string e = "outfile='" + tmp_svg + "'; tables='" + out("tables") + "'; figdir='" + figures_dir_ + "'";
@@ -101,6 +103,7 @@ int Chapter::finish() {
   w.comment("numbers quoted by chapter " + id_ + "'s results.md as {{key}}");
   for (const auto& v : values_) w.row({v[0], v[1], v[2]});
   w.save(out("values.csv"));
+  write_provenance(out("provenance.csv"), DRAWBEND_GIT_DESCRIBE);
   checks_->print_summary();
   const int failed = checks_->count(Status::fail);
   if (failed > 0 && allow_failures_) std::cout << "warning: " << failed << " check(s) failed (--allow-failures)\n";
