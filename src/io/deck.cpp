@@ -14,6 +14,7 @@
 #include "io/deck_context.hpp"
 #include "io/deck_material.hpp"
 #include "io/deck_sections.hpp"
+#include "io/toml_precheck.hpp"
 
 namespace drawbend::io {
 
@@ -157,6 +158,7 @@ void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out) {
 Deck read_deck(const std::string& path) { return parse_deck(read_file(path), path); }
 
 Deck parse_deck(const std::string& text, const std::string& path) {
+  precheck_table_headers(text, path);
   toml::table root;
   try {
     root = toml::parse(text, path);

@@ -8,6 +8,8 @@
 //    "4 problems" with each line number and key.
 //  - A deck whose [numerics] is not a table, or whose mesh breaks are not an
 //    array, gives a located error instead of a crash (found by fuzzing).
+//  - A table header with no name after '[' ("[\nx]", "[[[1]]]") is a located
+//    TOML syntax error, not a toml++ assertion (found by fuzzing).
 //  - stale_inputs is empty right after write_provenance, and names the file
 //    once its contents change (FNV-1a 64 of "a" = af63dc4c8601ec8c).
 #define BOOST_TEST_MODULE input_safety
@@ -83,6 +85,18 @@ BOOST_AUTO_TEST_CASE(wrong_shapes_are_located_not_crashes) {
   BOOST_TEST(b.find("b.toml:2: mesh.x: expected both 'breaks'") != std::string::npos);
   const std::string c = message_of([] { io::parse_deck("output = [1]\n", "c.toml"); });
   BOOST_TEST(c.find("c.toml:1: output: expected a table, found an array") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(bad_table_headers_are_syntax_errors) {
+  const std::string a = message_of([] { io::parse_deck("x = 1\n[\nmaterial]\n", "h.toml"); });
+  BOOST_TEST(a.find("h.toml:2:1: TOML syntax error: expected a table name after '['") != std::string::npos);
+  const std::string b = message_of([] { io::parse_deck("[[[1]]]\n", "h.toml"); });
+  BOOST_TEST(b.find("h.toml:1:1: TOML syntax error: expected a table name after '[['") != std::string::npos);
+  const std::string d = message_of([] { io::parse_deck("fixed = [}}]\n", "h.toml"); });
+  BOOST_TEST(d.find("h.toml:1:10: TOML syntax error: expected ']' to close the '[', found '}'") != std::string::npos);
+  // Arrays whose lines start with '[' are values, not headers.
+  const std::string c = message_of([] { io::parse_deck("a = [\n[ ],\n[\n1]]\n", "h.toml"); });
+  BOOST_TEST(c.find("TOML syntax error") == std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(provenance_marks_changed_inputs) {
