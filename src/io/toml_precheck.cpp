@@ -1,6 +1,7 @@
 #include "io/toml_precheck.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "core/csv.hpp"
 
@@ -20,8 +21,20 @@ void precheck_table_headers(const std::string& text, const std::string& path) {
   const std::size_t n = text.size();
   int line = 1;
   std::string open;  // brackets of the values being read, innermost last
-  bool line_start = true;
   std::size_t col0 = 0;
+  // TOML allows non-ASCII text only in strings and comments; toml++ 3.3.0
+  // classifies other non-ASCII characters with a table that reaches
+  // __builtin_unreachable for many of them (undefined behaviour).
+  auto non_ascii = [&](std::size_t k) {
+    throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(k - col0 + 1) +
+                     ": TOML syntax error: expected ASCII outside strings and comments, found the byte 0x" +
+                     [&] {
+                       char b[3];
+                       std::snprintf(b, sizeof b, "%02x", static_cast<unsigned char>(text[k]));
+                       return std::string(b);
+                     }());
+  };
+  bool line_start = true;
   for (std::size_t i = 0; i < n; ++i) {
     const char c = text[i];
     if (c == '\n') {
@@ -31,6 +44,7 @@ void precheck_table_headers(const std::string& text, const std::string& path) {
       continue;
     }
     if (c == ' ' || c == '\t' || c == '\r') continue;
+    if (static_cast<unsigned char>(c) >= 0x80) non_ascii(i);
     const bool at_start = line_start;
     line_start = false;
     if (c == '#') {
@@ -42,6 +56,14 @@ void precheck_table_headers(const std::string& text, const std::string& path) {
       const std::string close = multi ? std::string(3, c) : std::string(1, c);
       std::size_t j = i + (multi ? 3 : 1);
       while (j < n) {
+        if (c == '"' && multi && text[j] == '\\') {
+          // A line-ending backslash: toml++ 3.3.0 tests each following
+          // character with a whitespace table that is undefined behaviour
+          // for many non-ASCII code points, so the run must end in ASCII.
+          std::size_t k = j + 1;
+          while (k < n && (text[k] == ' ' || text[k] == '\t' || text[k] == '\r' || text[k] == '\n')) ++k;
+          if (k > j + 1 && k < n && static_cast<unsigned char>(text[k]) >= 0x80) non_ascii(k);
+        }
         if (c == '"' && text[j] == '\\') {
           j += 2;
           continue;
