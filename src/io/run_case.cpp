@@ -209,6 +209,12 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
       if (opt.halt_after_cycles > 0 && p.cycle >= opt.halt_after_cycles) throw Halt{};
     }
   });
+  } catch (const fe::NumericalFault&) {
+    // Keep what was recorded up to the fault: it shows how the run got there.
+    if (last_print >= 0) log << "\n";
+    hist.save((fs::path(opt.out_dir) / "history.csv").string());
+    log << "history up to the fault: " << (fs::path(opt.out_dir) / "history.csv").string() << "\n";
+    throw;
   } catch (const Halt&) {
     if (last_print >= 0) log << "\n";
     log << "halted after cycle " << solver.cycles() << " (t = " << solver.time() << " s); continue with --restart "

@@ -40,6 +40,9 @@ int main(int argc, char** argv) {
       for (const auto& d : dead) std::cerr << errata << ": entry '" << d << "' matches no check\n";
       if (!dead.empty()) throw InputError(errata + ": " + std::to_string(dead.size()) + " unused erratum entries");
     }
+    for (const auto& ch : chapters)
+      for (const auto& s : study::chapter_staleness(ch))
+        std::cerr << "drawbend-report: warning: chapter " << ch.id << " is STALE: " << s << "\n";
     const std::string md = std::filesystem::path(out).replace_extension(".md").string();
     write_file_atomic(md, study::assemble_report(chapters, title));
     const std::string tmp = out + ".tmp.html";
