@@ -84,7 +84,8 @@ void precheck_table_headers(const std::string& text, const std::string& path) {
         throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(i - col0 + 1) +
                          ": TOML syntax error: expected a table name after '" + text.substr(i, j - i) +
                          "', found " + (j >= n ? std::string("the end of the file") : text[j] == '\n' ? std::string("the end of the line") : "'" + std::string(1, text[j]) + "'"));
-      while (i + 1 < n && text[i + 1] != '\n' && text[i + 1] != '#') ++i;  // rest of the header line
+      // The rest of the header is scanned like any text (its second '[' and
+      // closing brackets balance out), so a non-ASCII byte in it is caught too.
       continue;
     }
     if (c == '[' || c == '{') {

@@ -96,6 +96,8 @@ BOOST_AUTO_TEST_CASE(bad_table_headers_are_syntax_errors) {
   BOOST_TEST(d.find("h.toml:1:10: TOML syntax error: expected ']' to close the '[', found '}'") != std::string::npos);
   const std::string e = message_of([] { io::parse_deck("x = 0.\xd1\xb5\n", "h.toml"); });
   BOOST_TEST(e.find("h.toml:1:7: TOML syntax error: expected ASCII outside strings and comments, found the byte 0xd1") != std::string::npos);
+  const std::string g = message_of([] { io::parse_deck("[[tool\xd2\x88urface]]\n", "h.toml"); });
+  BOOST_TEST(g.find("h.toml:1:7: TOML syntax error: expected ASCII outside strings and comments") != std::string::npos);
   // Non-ASCII text in comments and strings is fine.
   const std::string f = message_of([] { io::parse_deck("# \xce\xbc = 0.1\n[case]\nname = \"\xce\xbc\"\n", "h.toml"); });
   BOOST_TEST(f.find("TOML syntax error") == std::string::npos);
