@@ -28,7 +28,9 @@ constexpr const char* kMagic = "drawbend-solver-state 1\n";
 
 struct Writer {
   std::string& out;
-  void raw(const void* p, std::size_t n) { out.append(static_cast<const char*>(p), n); }
+  void raw(const void* p, std::size_t n) {
+    if (n > 0) out.append(static_cast<const char*>(p), n);  // p may be null for an empty block
+  }
   void count(std::uint64_t n) { raw(&n, 8); }
   void doubles(const double* p, std::size_t n) {
     count(n);
@@ -44,6 +46,7 @@ struct Reader {
   std::size_t pos = 0;
   void raw(void* p, std::size_t n) {
     if (n > in.size() - pos) throw InputError(source + ": checkpoint is truncated (at byte " + std::to_string(pos) + ")");
+    if (n == 0) return;  // p may be null for an empty block (memcpy must not get it)
     std::memcpy(p, in.data() + pos, n);
     pos += n;
   }
