@@ -47,4 +47,4 @@ gold: build
 	@cmake --build $(BUILD) --target gold
 
 clean:
-	@rm -rf $(BUILD)
+	@rm -rf $(BUILD) build-asan build-fuzz

@@ -18,6 +18,12 @@ for dir in "$src"/*/; do
     grep -q "id=\"fig-$id-$stem\"" "$html" || { echo "figure $id/$stem.svg is not in the report"; fail=1; }
   done
 done
+# Every chapter shows its provenance, and none may be stale (results computed
+# from inputs that have changed since).
+np=$(grep -c 'class="unnumbered provenance"' "$html" || true)
+nc=$(ls "$src"/*/intro.md | wc -l)
+[ "$np" -eq "$nc" ] || { echo "provenance sections: $np, chapters: $nc"; fail=1; }
+if grep -q 'class="stale"' "$html"; then echo "report marks stale results (see their Provenance sections)"; fail=1; fi
 # Figures must be embedded (self-contained), not linked to build paths.
 if grep -q 'src="/' "$html"; then echo "report links a local file instead of embedding it"; fail=1; fi
 [ $fail -eq 0 ] && echo "report ok: $(grep -c 'id="checks-' "$html") checks tables, $(grep -o 'id="fig-' "$html" | wc -l) figures"

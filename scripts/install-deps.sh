@@ -2,7 +2,8 @@
 # Install the Debian packages drawbend needs, only those missing.
 # Idempotent and non-interactive; safe to run on every `make`.
 set -euo pipefail
-PKGS=(cmake g++ make libeigen3-dev libboost-test-dev libtomlplusplus-dev gnuplot-nox pandoc)
+# clang and libclang-rt-dev: libFuzzer for the parser fuzzers (tests/fuzz).
+PKGS=(cmake g++ make libeigen3-dev libboost-test-dev libtomlplusplus-dev gnuplot-nox pandoc clang libclang-rt-dev)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

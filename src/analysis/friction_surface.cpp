@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <Eigen/Dense>
 
@@ -35,6 +36,18 @@ double FrictionSurface::operator()(double p, double v) const {
   return m;
 }
 
+void FrictionSurface::validate() const {
+  auto bad = [](const std::string& what) { throw std::invalid_argument("friction surface: " + what); };
+  if (!(std::isfinite(p_min) && std::isfinite(p_max) && p_min < p_max))
+    bad("expected pressure nodes in increasing order (p_min < p_max), found p_min = " + std::to_string(p_min) +
+        " MPa, p_max = " + std::to_string(p_max) + " MPa");
+  if (!(std::isfinite(v_max) && v_min > 0 && v_min < v_max))
+    bad("expected speed nodes in increasing order (0 < v_min < v_max), found v_min = " + std::to_string(v_min) +
+        " mm/s, v_max = " + std::to_string(v_max) + " mm/s");
+  for (int k = 0; k < 9; ++k)
+    if (!std::isfinite(mu[k])) bad("expected finite nodal values, found mu_" + std::to_string(k + 1) + " = " + std::to_string(mu[k]));
+}
+
 FrictionSurface surface_from_lines(const std::vector<SpeedLine>& lines, double p_min, double p_max,
                                    bool use_printed_eta) {
   if (lines.size() != 3) throw std::invalid_argument("surface_from_lines: need exactly three speed lines");
@@ -63,6 +76,7 @@ FrictionSurface surface_from_lines(const std::vector<SpeedLine>& lines, double p
     const Eigen::Vector3d nodal = lu.solve(measured);
     for (int j = 0; j < 3; ++j) s.mu[3 * i + j] = nodal(j);
   }
+  s.validate();
   return s;
 }
 

@@ -43,6 +43,10 @@ struct FrictionSurface {
   /// The thesis's printed speed map, eta = 2 v/(v_max - v_min) - 1.
   double eta_as_printed(double v) const { return 2.0 * v / (v_max - v_min) - 1.0; }
 
+  /// Throws std::invalid_argument unless the node coordinates are ordered
+  /// (p_min < p_max, 0 < v_min < v_max) and the nodal values are finite.
+  void validate() const;
+
   /// Eq. (6.2) at (p, v); extrapolates outside the domain (callers decide
   /// whether to clamp; the solver's friction law does that).
   double operator()(double p, double v) const;

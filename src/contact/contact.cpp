@@ -32,6 +32,7 @@
 // or the node's corotational axis (contact/texture.hpp).
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "fe/solver.hpp"
 
@@ -157,9 +158,18 @@ void Solver::contact_forces(double dt, bool friction_on) {
       stored[k] += 0.5 * kn * best * best;
       F = {Fn * n[0] + ft[0], Fn * n[1] + ft[1], Fn * n[2] + ft[2]};
     }
+    const Guard& pen = m_.guards.penetration;
     for (int k = 0; k < nn; ++k) {
       en_.friction += diss[k];
       en_.contact_stored += stored[k];
+      if (nodes[k].depth > pen.limit * contact_stiffness_len_[p][k]) {
+        std::ostringstream os;
+        os << "contact penetration " << nodes[k].depth << " mm at node " << nodes[k].node << " (faces '" << cp.faces
+           << "' on tool '" << cp.tool << "') is " << nodes[k].depth / contact_stiffness_len_[p][k]
+           << " x the element size " << contact_stiffness_len_[p][k] << " mm normal to the face at t = " << t_
+           << " s (cycle " << cycle_ << "), above [guards] penetration = " << pen.limit << " (raise the contact penalty)";
+        guard_fired(pen, 4, os.str());
+      }
     }
     // Force on the tool: the opposite of the sum on the sheet (fixed order).
     for (const auto& F : contact_force_[p])

@@ -1,10 +1,16 @@
 #include "core/csv.hpp"
 
+#include "core/input_problems.hpp"
+#include "core/provenance.hpp"
+
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <unistd.h>
 
 namespace drawbend {
 
@@ -46,10 +52,15 @@ std::vector<std::string> split_csv_line(const std::string& line) {
 }
 
 CsvTable read_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open file for reading");
+  return parse_csv(read_file(path), path);
+}
+
+CsvTable parse_csv(const std::string& text, const std::string& path) {
+  // Every ragged row and every bad header cell is reported, in one message.
+  InputProblems problems(path);
   CsvTable t;
   t.path = path;
+  std::istringstream in(text);
   std::string line;
   int lineno = 0;
   while (std::getline(in, line)) {
@@ -63,16 +74,26 @@ CsvTable read_csv(const std::string& path) {
     auto cells = split_csv_line(s);
     if (t.header.empty()) {
       t.header = std::move(cells);
+      for (std::size_t i = 0; i < t.header.size(); ++i) {
+        const std::string col = "header cell " + std::to_string(i + 1);
+        if (t.header[i].empty())
+          problems.add(path + ":" + std::to_string(lineno) + ": " + col + ": expected a column name, found an empty cell");
+        for (std::size_t j = 0; j < i; ++j)
+          if (!t.header[i].empty() && t.header[j] == t.header[i])
+            problems.add(path + ":" + std::to_string(lineno) + ": " + col + ": expected unique column names, found '" +
+                         t.header[i] + "' twice");
+      }
       continue;
     }
     if (cells.size() != t.header.size()) {
-      throw InputError(path + ":" + std::to_string(lineno) + ": expected " +
-                       std::to_string(t.header.size()) + " cells (as in the header), found " +
-                       std::to_string(cells.size()));
+      problems.add(path + ":" + std::to_string(lineno) + ": expected " + std::to_string(t.header.size()) +
+                   " cells (as in the header), found " + std::to_string(cells.size()));
+      continue;
     }
     t.rows.push_back({lineno, std::move(cells)});
   }
-  if (t.header.empty()) throw InputError(path + ": no header row");
+  if (t.header.empty()) problems.add(path + ": expected a header row, found none");
+  problems.throw_if_any();
   return t;
 }
 
@@ -148,6 +169,12 @@ std::string fmt(double v, int significant) {
   return buf;
 }
 
+std::string fmt_shortest(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
 std::string fmt_fixed(double v, int decimals) {
   if (std::isnan(v)) return "nan";
   char buf[64];
@@ -167,22 +194,32 @@ void write_file_atomic(const std::string& path, const std::string& text) {
   namespace fs = std::filesystem;
   const fs::path target(path);
   if (target.has_parent_path()) fs::create_directories(target.parent_path());
-  const fs::path tmp = target.string() + ".tmp";
+  // The temporary name carries the process id: two programs writing the same
+  // output (a chapter test and `make`) cannot clobber each other's half-file.
+  const fs::path tmp = target.string() + ".tmp" + std::to_string(::getpid());
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw InputError(tmp.string() + ": cannot open file for writing");
     out << text;
     out.flush();
-    if (!out) throw InputError(tmp.string() + ": write failed");
+    if (!out) {
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      throw InputError(tmp.string() + ": write failed (disk full?)");
+    }
   }
   fs::rename(tmp, target);
 }
 
 std::string read_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": expected a file, found a directory");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open file for reading");
   std::ostringstream os;
   os << in.rdbuf();
+  if (in.bad()) throw InputError(path + ": read failed");
+  note_input(path);
   return os.str();
 }
 

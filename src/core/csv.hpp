@@ -43,6 +43,9 @@ struct CsvTable {
 std::vector<std::string> split_csv_line(const std::string& line);
 /// Read a CSV file; throws InputError if it cannot be read or rows are ragged.
 CsvTable read_csv(const std::string& path);
+/// The same from text already read (`path` names it in messages); every
+/// ragged row and bad header cell is reported in one InputError.
+CsvTable parse_csv(const std::string& text, const std::string& path);
 /// Quote a cell if it contains a comma, quote or newline.
 std::string csv_quote(const std::string& cell);
 
@@ -54,6 +57,7 @@ class CsvWriter {
   void comment(const std::string& line);
   void row(const std::vector<std::string>& cells);
   void save(const std::string& path) const;
+  const std::vector<std::vector<std::string>>& rows() const { return rows_; }
 
  private:
   std::vector<std::string> comments_;
@@ -63,6 +67,8 @@ class CsvWriter {
 
 /// Format a number with a fixed count of significant digits (no trailing noise).
 std::string fmt(double v, int significant = 6);
+/// The shortest text that reads back as the same double (for messages: 0.1, not 0.10000000000000001).
+std::string fmt_shortest(double v);
 /// Format with a fixed count of decimals.
 std::string fmt_fixed(double v, int decimals);
 

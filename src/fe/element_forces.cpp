@@ -234,8 +234,11 @@ void Solver::element_forces() {
   }
   if (inverted >= 0) {
     std::ostringstream os;
-    os << "element " << inverted << " inverted (non-positive volume) at t = " << t_ << " s";
-    throw std::runtime_error(os.str());
+    os << "element " << inverted << " inverted (non-positive volume or Jacobian) at t = " << t_ << " s (cycle "
+       << cycle_ << "), nodes";
+    for (int a = 0; a < 8; ++a) os << " " << mesh.hex[inverted][a];
+    os << ": it was crushed or turned inside out (loads too fast or too large, or a time step too large)";
+    throw NumericalFault(os.str());
   }
   // Nodal sums in a fixed order (the corners are sorted by element and corner).
   const int n = mesh.num_nodes();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contact/surface.hpp"
+#include "fe/guards.hpp"
 #include "fe/history.hpp"
 #include "fe/mesh.hpp"
 #include "friction/friction_law.hpp"
@@ -91,6 +92,7 @@ struct Step {
   double duration = 1.0;        ///< [s]
   double damping = 0.0;         ///< dynamic relaxation: velocity damping rate [1/s] (0 = none)
   bool friction = true;         ///< false: contact is frictionless during this step
+  bool quasi_static = false;    ///< the kinetic-energy guard applies (fe/guards.hpp)
   std::vector<FixedBC> fixed;
   std::vector<VelocityBC> velocities;
   std::vector<RotationBC> rotations;
@@ -112,6 +114,7 @@ struct Model {
   double target_dt = 0.0;      ///< > 0: scale element masses so that each element's stable step >= target [s]
   double hourglass = 1.0;      ///< factor on the physical hourglass stiffness
   Vec3 gravity{0, 0, 0};       ///< [mm/s^2]
+  Guards guards;               ///< numerical fault detection (fe/guards.hpp)
 
   void validate() const;  ///< throws std::invalid_argument naming what is wrong
 

@@ -17,8 +17,8 @@ double Energies::balance_error() const {
   // Relative to the largest energy flow: where drawing work and frictional loss
   // nearly cancel, the net work is small and would exaggerate the error.
   const double scale = std::max({std::abs(external_work), std::abs(kinetic) + std::abs(internal) + std::abs(hourglass),
-                                 std::abs(friction), std::abs(damping), 1e-30});
-  return std::abs(lhs - external_work) / scale;
+                                 std::abs(friction), std::abs(damping), initial_kinetic, 1e-30});
+  return std::abs(lhs - external_work - initial_kinetic) / scale;
 }
 
 Solver::Solver(Model& model) : m_(model) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "contact/texture.hpp"
+#include "fe/guards.hpp"
 #include "fe/model.hpp"
 #include "fe/mesh.hpp"
 
@@ -30,9 +31,11 @@ struct Energies {
   double friction = 0;       ///< frictional dissipation (part of the tools' work)
   double contact_stored = 0; ///< penalty spring energy now stored (part of the tools' work)
   double damping = 0;        ///< energy removed by dynamic-relaxation damping
-  /// |KE + IE + HG + damping - W| relative to the largest energy flow (W,
-  /// KE + IE + HG, friction or damping), where W is the work done on the sheet
-  /// by loads, boundary reactions and contact forces.
+  double initial_kinetic = 0;  ///< kinetic energy of the initial velocities (set_velocity)
+  /// |KE + IE + HG + damping - W - KE0| relative to the largest energy flow (W,
+  /// KE + IE + HG, KE0, friction or damping), where W is the work done on the
+  /// sheet by loads, boundary reactions and contact forces and KE0 the initial
+  /// kinetic energy.
   double balance_error() const;
 };
 
@@ -111,10 +114,26 @@ class Solver {
   double stable_dt() const;  ///< current critical step times the safety factor [s]
   double max_penetration() const;
 
+  /// Guards set to "warn" report here (default: kept in warnings()).
+  void set_warning_handler(std::function<void(const std::string&)> h) { on_warning_ = std::move(h); }
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
+  /// Checkpoint/restart (fe/checkpoint.cpp): the complete state at the end of
+  /// a cycle, so that a restarted run continues bit for bit.  load_state
+  /// expects a solver built from the same model; run() then continues from
+  /// the saved step and step time.
+  void save_state(std::string& out) const;
+  void load_state(const std::string& in, const std::string& source);
+
  private:
   void element_forces();
   void contact_forces(double dt, bool friction);
   void compute_dt();
+  /// A guard fired: throw NumericalFault (action "error") or warn once per step.
+  void guard_fired(const Guard& g, int id, const std::string& what);
+  /// The element with a non-finite stress or corner force (-1: none), for messages.
+  int nonfinite_element() const;
+  void check_step_energies(const Step& step);
 
   Model& m_;
   NodeCorners nc_;
@@ -135,6 +154,13 @@ class Solver {
   double last_dt_ = 0;  // length of the interval that produced the current velocities
   double t_ = 0, dt_ = 0, dt0_ = 0, added_mass_ = 0, phys_mass_ = 0, wave_speed_ = 0;
   long cycle_ = 0;
+  // Where the run is: step index, time into it, its start time (restart point).
+  int step_index_ = 0;
+  double step_time_ = 0, step_t_start_ = 0;
+  std::function<void(const std::string&)> on_warning_;
+  std::vector<std::string> warnings_;
+  static constexpr int kGuardIds = 8;
+  bool warned_[kGuardIds] = {};
 };
 
 }  // namespace drawbend::fe

@@ -19,7 +19,7 @@ int tool_index(const Model& m, const std::string& name) {
 }  // namespace
 
 void Solver::run(const std::function<void(const Progress&)>& on_cycle) {
-  for (int s = 0; s < static_cast<int>(m_.steps.size()); ++s) run_step(s, on_cycle);
+  for (int s = step_index_; s < static_cast<int>(m_.steps.size()); ++s) run_step(s, on_cycle);
 }
 
 void Solver::run_step(int index, const std::function<void(const Progress&)>& on_cycle) {
@@ -67,24 +67,37 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
     load_w.push_back(std::move(w));
   }
   std::vector<double> v0x(n), v0y(n), v0z(n), ex(n), ey(n), ez(n);
-  slide_offset_.assign(step.rotations.size(), Vec3{0, 0, 0});
+  // A step starts afresh, or continues from a checkpoint (load_state) where it was.
+  const bool resume = index == step_index_ && step_time_ > 0;
+  if (!resume) {
+    slide_offset_.assign(step.rotations.size(), Vec3{0, 0, 0});
+    step_t_start_ = t_;
+    step_time_ = 0;
+    for (bool& w : warned_) w = false;
+  }
+  step_index_ = index;
+  if (cycle_ == 0) {
+    double ke0 = 0;
+    for (int i = 0; i < n; ++i) ke0 += 0.5 * mass_[i] * (vx_[i] * vx_[i] + vy_[i] * vy_[i] + vz_[i] * vz_[i]);
+    en_.initial_kinetic = ke0;
+  }
   rx_.assign(n, 0.0);
   ry_.assign(n, 0.0);
   rz_.assign(n, 0.0);
   std::vector<double>& rx = rx_;
   std::vector<double>& ry = ry_;
   std::vector<double>& rz = rz_;
-  const double t_start = t_;
-  double step_time = 0.0;
+  const double t_start = step_t_start_;
+  double& step_time = step_time_;
   while (step_time < step.duration * (1 - 1e-12)) {
     const double dt = std::min(dt_, step.duration - step_time);
-    if (dt < 1e-3 * dt0_) {
-      if (step.duration - step_time > 1e-3 * dt0_) {
-        std::ostringstream os;
-        os << "time step collapsed to " << dt << " s (initial " << dt0_ << " s) at t = " << t_ << " s";
-        throw std::runtime_error(os.str());
-      }
-      break;  // only round-off left in this step
+    if (step.duration - step_time < 1e-3 * dt0_) break;  // only round-off left in this step
+    if (dt_ < m_.guards.dt_collapse.limit * dt0_) {
+      std::ostringstream os;
+      os << "time step collapsed to " << dt_ << " s = " << dt_ / dt0_ << " x the initial " << dt0_
+         << " s at t = " << t_ << " s (cycle " << cycle_ << "), below [guards] dt_collapse = "
+         << m_.guards.dt_collapse.limit << "; the smallest element is being crushed (check loads and contact)";
+      guard_fired(m_.guards.dt_collapse, 0, os.str());
     }
     // 1-2. Internal forces (element loop + fixed-order nodal sums).
     element_forces();
@@ -123,7 +136,6 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
     // 3. Velocities at t_n+1/2, with damping in dynamic-relaxation steps.
     const double c = step.damping;
     const double a1 = (1 - 0.5 * c * dt) / (1 + 0.5 * c * dt), a2 = dt / (1 + 0.5 * c * dt);
-    double damp = 0;
     for (int i = 0; i < n; ++i) {
       v0x[i] = vx_[i];
       v0y[i] = vy_[i];
@@ -134,16 +146,12 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
       vz_[i] = a1 * vz_[i] + a2 * (fz_[i] + ez[i]) * im;
       if (!(std::isfinite(vx_[i]) && std::isfinite(vy_[i]) && std::isfinite(vz_[i]))) {
         std::ostringstream os;
-        os << "non-finite velocity at node " << i << " at t = " << t_ << " s (diverged?)";
-        throw std::runtime_error(os.str());
-      }
-      if (c > 0) {
-        // Damping force -c m v_mid does work -c m |v_mid|^2 dt.
-        const double mx = 0.5 * (vx_[i] + v0x[i]), my = 0.5 * (vy_[i] + v0y[i]), mz = 0.5 * (vz_[i] + v0z[i]);
-        damp += c * mass_[i] * (mx * mx + my * my + mz * mz) * dt;
+        os << "non-finite velocity (NaN or Inf) at node " << i << " at t = " << t_ << " s (cycle " << cycle_ << ")";
+        if (const int e = nonfinite_element(); e >= 0) os << "; element " << e << " has a non-finite stress or force";
+        os << ": the solution diverged (time step too large for a stiffness: penalty, hourglass, tool mass?)";
+        throw NumericalFault(os.str());
       }
     }
-    en_.damping += damp;
     // Boundary conditions; a reaction is the force that enforces them.
     std::fill(rx.begin(), rx.end(), 0.0);
     std::fill(ry.begin(), ry.end(), 0.0);
@@ -229,18 +237,33 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
         if (fb.dof[2]) vz_[i] = 0;
       });
     // Work of loads, contact and reactions over the interval, kinetic energy.
-    double work = 0, ke = 0;
+    // The damping force -c m v_mid,free (v_free: before the boundary conditions,
+    // v_free = v - r dt/m) does work -c m v_mid,free . v_mid dt; on a fixed
+    // node v_mid = 0 and the reaction takes the damping force, so it removes
+    // no energy there.
+    double work = 0, ke = 0, damp = 0;
     for (int i = 0; i < n; ++i) {
       const double mx = 0.5 * (vx_[i] + v0x[i]), my = 0.5 * (vy_[i] + v0y[i]), mz = 0.5 * (vz_[i] + v0z[i]);
       work += ((ex[i] + rx[i]) * mx + (ey[i] + ry[i]) * my + (ez[i] + rz[i]) * mz) * dt;
       ke += 0.5 * mass_[i] * (vx_[i] * vx_[i] + vy_[i] * vy_[i] + vz_[i] * vz_[i]);
+      if (c > 0) {
+        const double h = 0.5 * dt / mass_[i];
+        damp += c * mass_[i] * ((mx - h * rx[i]) * mx + (my - h * ry[i]) * my + (mz - h * rz[i]) * mz) * dt;
+      }
     }
+    en_.damping += damp;
     en_.external_work += work;
     en_.kinetic = ke;
     double ie = 0, eh = 0;
     for (int e = 0; e < mesh.num_elements(); ++e) {
       ie += ie_inc_[e];
       eh += hg_inc_[e];
+    }
+    if (!std::isfinite(ie + eh)) {
+      std::ostringstream os;
+      os << "non-finite internal or hourglass energy at t = " << t_ << " s (cycle " << cycle_ << ")";
+      if (const int e = nonfinite_element(); e >= 0) os << " in element " << e;
+      throw NumericalFault(os.str() + ": the solution diverged");
     }
     en_.internal += ie;
     en_.hourglass += eh;
@@ -279,6 +302,66 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
     for (double d : dt_elem_) dtmin = std::min(dtmin, d);
     dt_ = m_.dt_safety * dtmin;
     if (on_cycle) on_cycle({index, &step, t_, step_time, dt, cycle_});
+  }
+  check_step_energies(step);
+  step_index_ = index + 1;
+  step_time_ = 0;
+}
+
+void Solver::guard_fired(const Guard& g, int id, const std::string& what) {
+  if (g.error)
+    throw NumericalFault(what + " (to continue anyway, set the guard's action to \"warn\" in [guards])");
+  if (warned_[id]) return;
+  warned_[id] = true;
+  const std::string w = what + " (guard set to warn; once per step)";
+  warnings_.push_back(w);
+  if (on_warning_) on_warning_(w);
+}
+
+int Solver::nonfinite_element() const {
+  const int ne = m_.mesh.num_elements();
+  for (int e = 0; e < ne; ++e) {
+    for (int k = 0; k < 12; ++k)
+      if (!std::isfinite(sig_[12 * e + k])) return e;
+    for (int k = 0; k < 24; ++k)
+      if (!std::isfinite(corner_[24 * e + k])) return e;
+  }
+  return -1;
+}
+
+void Solver::check_step_energies(const Step& step) {
+  const Guards& g = m_.guards;
+  const Energies& e = en_;
+  // Ratios to the internal energy are meaningless while nothing has deformed:
+  // they are checked only when the energy in question is a visible part of the
+  // largest energy flow.
+  const double flow = std::max({std::abs(e.external_work), e.kinetic + e.internal + e.hourglass, std::abs(e.friction),
+                                std::abs(e.damping)});
+  auto at = [&] {
+    std::ostringstream os;
+    os << " at the end of step '" << step.name << "' (t = " << t_ << " s, cycle " << cycle_ << ")";
+    return os.str();
+  };
+  if (e.hourglass > g.hourglass_ratio.limit * e.internal && e.hourglass > 1e-6 * flow) {
+    std::ostringstream os;
+    os << "hourglass energy " << e.hourglass << " mJ is " << e.hourglass / std::max(e.internal, 1e-300)
+       << " x the internal energy " << e.internal << " mJ" << at() << ", above [guards] hourglass_ratio = "
+       << g.hourglass_ratio.limit << " (refine the mesh, avoid point loads)";
+    guard_fired(g.hourglass_ratio, 1, os.str());
+  }
+  if (step.quasi_static && e.kinetic > g.kinetic_ratio.limit * e.internal && e.kinetic > 1e-6 * flow) {
+    std::ostringstream os;
+    os << "kinetic energy " << e.kinetic << " mJ is " << e.kinetic / std::max(e.internal, 1e-300)
+       << " x the internal energy " << e.internal << " mJ" << at() << " of a quasi-static step, above [guards] kinetic_ratio = "
+       << g.kinetic_ratio.limit << " (slower loading, less mass scaling, or damping)";
+    guard_fired(g.kinetic_ratio, 2, os.str());
+  }
+  if (e.balance_error() > g.energy_balance.limit) {
+    std::ostringstream os;
+    os << "energy balance error " << e.balance_error() << at() << " (kinetic " << e.kinetic << ", internal "
+       << e.internal << ", hourglass " << e.hourglass << ", damping " << e.damping << ", external work "
+       << e.external_work << " mJ), above [guards] energy_balance = " << g.energy_balance.limit;
+    guard_fired(g.energy_balance, 3, os.str());
   }
 }
 

@@ -3,6 +3,7 @@
 // case changes without recompiling.  The format is documented in
 // data/cases/README.md; every key is checked (a typo is an error, not
 // silently ignored) and every message names the file, the line and the key.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,7 @@ struct OutputSpec {
 
 struct Deck {
   std::string path;
+  std::uint64_t hash = 0;  ///< FNV-1a of the deck's text (checkpoints must match it)
   fe::Model model;
   OutputSpec output;
   int threads = 0;  ///< 0: OpenMP default

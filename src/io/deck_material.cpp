@@ -1,7 +1,7 @@
 #include "io/deck_material.hpp"
 
+#include <cmath>
 #include <filesystem>
-#include <set>
 
 #include "core/csv.hpp"
 #include "fe/disk.hpp"
@@ -14,171 +14,141 @@
 namespace drawbend::io {
 
 namespace {
-std::string at(const toml::node& n, const std::string& deck) { return deck + ":" + std::to_string(n.source().begin.line); }
-
-void check_keys(const toml::table& t, const std::string& deck, const std::string& what, const std::set<std::string>& keys) {
-  for (const auto& [k, v] : t)
-    if (!keys.count(std::string(k.str()))) {
-      std::string list;
-      for (const auto& a : keys) list += (list.empty() ? "" : ", ") + a;
-      throw InputError(at(v, deck) + ": " + what + "." + std::string(k.str()) + ": unknown key (expected one of: " + list + ")");
-    }
+std::string relative_to(const std::string& dir, const std::string& file) {
+  std::filesystem::path p(file);
+  if (p.is_relative()) p = std::filesystem::path(dir) / p;
+  return p.string();
 }
 
-double positive(const toml::table& t, const std::string& key, const std::string& deck, const std::string& what) {
-  const auto* n = t.get(key);
-  if (!n) throw InputError(at(t, deck) + ": " + what + ": missing required key '" + key + "'");
-  const auto v = n->value<double>();
-  if (!v) throw InputError(at(*n, deck) + ": " + what + "." + key + ": expected a number");
-  if (!(*v > 0)) throw InputError(at(*n, deck) + ": " + what + "." + key + ": must be > 0, found " + fmt(*v));
-  return *v;
-}
-
-// interval = cycles over which a law averages the sliding speed (default 100, Sec. 3.3.2).
-int interval_key(const toml::table& t, const std::string& deck) {
-  const auto* n = t.get("interval");
-  if (!n) return 100;
-  const auto v = n->value<int64_t>();
-  if (!v || *v < 1) throw InputError(at(*n, deck) + ": contact.friction.interval: expected a whole number of cycles >= 1");
-  return static_cast<int>(*v);
-}
 }  // namespace
 
-std::shared_ptr<const material::Material> make_material(const toml::table& t, const std::string& deck,
+std::shared_ptr<const material::Material> make_material(const DeckContext& c, const toml::table& t,
                                                         const std::string& dir) {
-  const auto* type = t.get("type");
-  const std::string ty = type && type->value<std::string>() ? *type->value<std::string>() : "";
+  const std::size_t before = c.count();
+  const std::string ty = c.str(t, "type", "material");
   if (ty != "elastic" && ty != "j2")
-    throw InputError(at(type ? *type : static_cast<const toml::node&>(t), deck) +
-                     ": material.type: expected \"elastic\" or \"j2\"");
-  const double E = positive(t, "E", deck, "material"), rho = positive(t, "density", deck, "material");
-  const auto* nun = t.get("nu");
-  if (!nun || !nun->value<double>()) throw InputError(at(t, deck) + ": material: missing number 'nu'");
-  const double nu = *nun->value<double>();
-  if (!(nu > -1.0 && nu < 0.5)) throw InputError(at(*nun, deck) + ": material.nu: must lie in (-1, 0.5), found " + fmt(nu));
+    c.fail(t.get("type") ? *t.get("type") : static_cast<const toml::node&>(t), "material.type",
+           "expected \"elastic\" or \"j2\", found \"" + ty + "\"");
+  if (ty == "elastic") c.allowed(t, "material", {"type", "E", "nu", "density"});
+  else c.allowed(t, "material", {"type", "E", "nu", "density", "hardening", "yield", "tangent"});
+  const double E = c.positive(t, "E", "material"), rho = c.positive(t, "density", "material");
+  const double nu = c.num(t, "nu", "material");
+  if (!std::isnan(nu) && !(nu > -1.0 && nu < 0.5))
+    c.bad(*t.get("nu"), "material.nu", "expected Poisson's ratio in (-1, 0.5), found " + fmt_shortest(nu));
   if (ty == "elastic") {
-    check_keys(t, deck, "material", {"type", "E", "nu", "density"});
+    if (c.count() > before) return nullptr;
     return std::make_shared<material::LinearElastic>(E, nu, rho);
   }
-  check_keys(t, deck, "material", {"type", "E", "nu", "density", "hardening", "yield", "tangent"});
-  if (const auto* h = t.get("hardening")) {
-    const auto file = h->value<std::string>();
-    if (!file) throw InputError(at(*h, deck) + ": material.hardening: expected a file name");
-    std::filesystem::path p(*file);
-    if (p.is_relative()) p = std::filesystem::path(dir) / p;
-    return std::make_shared<material::J2Isotropic>(E, nu, rho, material::HardeningCurve::load(p.string()));
+  if (t.get("hardening")) {
+    const std::string file = c.str(t, "hardening", "material");
+    if (c.count() > before) return nullptr;
+    return std::make_shared<material::J2Isotropic>(E, nu, rho, material::HardeningCurve::load(relative_to(dir, file)));
   }
-  const double sy = positive(t, "yield", deck, "material");
-  double H = 0;
-  if (const auto* tn = t.get("tangent")) {
-    if (!tn->value<double>() || *tn->value<double>() < 0)
-      throw InputError(at(*tn, deck) + ": material.tangent: expected a hardening modulus >= 0 MPa");
-    H = *tn->value<double>();
-  }
+  const double sy = c.positive(t, "yield", "material");
+  const double H = c.in_range(t, "tangent", "material", 0.0, 0.0);
+  if (c.count() > before) return nullptr;
   // Linear hardening as a two-point table (constant extrapolation of the slope).
   return std::make_shared<material::J2Isotropic>(E, nu, rho,
-                                                 material::HardeningCurve({0.0, 1.0}, {sy, sy + H}, at(t, deck)));
+                                                 material::HardeningCurve({0.0, 1.0}, {sy, sy + H}, c.where(t, "material")));
 }
 
 // friction = { law = "surface", nodes = "table_6_1.csv" | lines = "table_5_16.csv",
 //              p_min, p_max, v_min, v_max (nodes only; default Sec. 6.3), interval = 100 }
-static std::shared_ptr<friction::FrictionLaw> make_surface_friction(const toml::table& t, const std::string& deck,
+static std::shared_ptr<friction::FrictionLaw> make_surface_friction(const DeckContext& c, const toml::table& t,
                                                                     const std::string& dir) {
-  check_keys(t, deck, "contact.friction", {"law", "nodes", "lines", "interval", "p_min", "p_max", "v_min", "v_max"});
-  const int interval = interval_key(t, deck);
+  const std::string w = "contact.friction";
+  const std::size_t before = c.count();
+  c.allowed(t, w, {"law", "nodes", "lines", "interval", "p_min", "p_max", "v_min", "v_max"});
+  const int interval = c.count_of(t, "interval", w, 100, 1);
   friction::SurfaceDomain d;
-  for (const auto& [key, ptr] : {std::pair{"p_min", &d.p_min}, std::pair{"p_max", &d.p_max},
-                                 std::pair{"v_min", &d.v_min}, std::pair{"v_max", &d.v_max}})
-    if (const auto* n = t.get(key)) {
-      if (!n->value<double>()) throw InputError(at(*n, deck) + ": contact.friction." + key + ": expected a number");
-      *ptr = *n->value<double>();
-    }
+  d.p_min = c.num(t, "p_min", w, d.p_min);
+  d.p_max = c.num(t, "p_max", w, d.p_max);
+  d.v_min = c.num(t, "v_min", w, d.v_min);
+  d.v_max = c.num(t, "v_max", w, d.v_max);
   if (!(d.p_min >= 0 && d.p_min < d.p_max))
-    throw InputError(at(t, deck) + ": contact.friction: need 0 <= p_min < p_max [MPa]");
+    c.bad(t, w, "expected 0 <= p_min < p_max [MPa], found " + fmt_shortest(d.p_min) + " and " + fmt_shortest(d.p_max));
   if (!(d.v_min >= 0 && d.v_min < d.v_max))
-    throw InputError(at(t, deck) + ": contact.friction: need 0 <= v_min < v_max [mm/s]");
+    c.bad(t, w, "expected 0 <= v_min < v_max [mm/s], found " + fmt_shortest(d.v_min) + " and " + fmt_shortest(d.v_max));
   const auto* nodes = t.get("nodes");
   const auto* lines = t.get("lines");
   if (!nodes == !lines)
-    throw InputError(at(t, deck) + ": contact.friction: give exactly one of 'nodes' (Table 6.1 format) or 'lines' "
-                     "(Table 5.16 format)");
-  const auto* src = nodes ? nodes : lines;
-  const auto file = src->value<std::string>();
-  if (!file) throw InputError(at(*src, deck) + ": contact.friction." + (nodes ? "nodes" : "lines") + ": expected a file name");
+    c.bad(t, w, "expected exactly one of 'nodes' (Table 6.1 format) or 'lines' (Table 5.16 format)");
   if (lines && (t.get("v_min") || t.get("v_max")))
-    throw InputError(at(t, deck) + ": contact.friction: with 'lines' the speed range is that of the outer lines; "
-                     "remove v_min/v_max");
-  std::filesystem::path fp(*file);
-  if (fp.is_relative()) fp = std::filesystem::path(dir) / fp;
-  const std::string where = at(*src, deck) + ": contact.friction." + (nodes ? "nodes" : "lines") + ": ";
+    c.bad(t, w, "with 'lines' the speed range is that of the outer lines; remove v_min/v_max");
+  if (c.count() > before) return nullptr;
+  const std::string key = nodes ? "nodes" : "lines";
+  const std::string file = relative_to(dir, c.str(t, key, w));
+  if (c.count() > before) return nullptr;
   try {
-    const auto [rd, td] = nodes ? friction::load_surface_nodes(fp.string(), d)
-                                : friction::load_surface_lines(fp.string(), d.p_min, d.p_max);
+    const auto [rd, td] = nodes ? friction::load_surface_nodes(file, d) : friction::load_surface_lines(file, d.p_min, d.p_max);
     return std::make_shared<friction::SurfaceLaw>(rd, td, interval);
   } catch (const InputError& e) {
-    throw InputError(where + e.what());
+    c.fail(*t.get(key), w + "." + key, e.what());
   } catch (const std::invalid_argument& e) {
-    throw InputError(where + fp.string() + ": " + e.what());
+    c.fail(*t.get(key), w + "." + key, file + ": " + e.what());
   }
 }
 
-std::shared_ptr<friction::FrictionLaw> make_friction(const toml::table& t, const std::string& deck,
+std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const toml::table& t,
                                                      const std::string& dir) {
-  const auto* law = t.get("law");
-  const std::string l = law && law->value<std::string>() ? *law->value<std::string>() : "";
+  const std::string w = "contact.friction";
+  const std::size_t before = c.count();
+  const std::string l = c.str(t, "law", w);
   if (l == "coulomb") {
-    check_keys(t, deck, "contact.friction", {"law", "mu"});
-    const auto* mu = t.get("mu");
-    if (!mu || !mu->value<double>()) throw InputError(at(t, deck) + ": contact.friction: missing number 'mu'");
-    if (*mu->value<double>() < 0) throw InputError(at(*mu, deck) + ": contact.friction.mu: must be >= 0");
-    return std::make_shared<friction::Coulomb>(*mu->value<double>());
+    c.allowed(t, w, {"law", "mu"});
+    const double mu = c.num(t, "mu", w);
+    if (!std::isnan(mu) && !(mu >= 0)) c.bad(*t.get("mu"), w + ".mu", "expected a friction coefficient >= 0, found " + fmt_shortest(mu));
+    if (c.count() > before) return nullptr;
+    return std::make_shared<friction::Coulomb>(mu);
   }
-  if (l == "stribeck") {
-    check_keys(t, deck, "contact.friction",
-               {"law", "table", "interval", "mu_BL", "mu_EHL", "L_BL", "L_EHL", "Ra_um", "eta_Pa_s"});
-    const int interval = interval_key(t, deck);
-    analysis::StribeckParams p;
-    if (const auto* tab = t.get("table")) {
-      const auto file = tab->value<std::string>();
-      if (!file) throw InputError(at(*tab, deck) + ": contact.friction.table: expected a file name");
-      std::filesystem::path fp(*file);
-      if (fp.is_relative()) fp = std::filesystem::path(dir) / fp;
-      p = study::load_stribeck(fp.string());
-    } else {
-      p.mu_BL = positive(t, "mu_BL", deck, "contact.friction");
-      p.mu_EHL = positive(t, "mu_EHL", deck, "contact.friction");
-      p.L_BL = positive(t, "L_BL", deck, "contact.friction");
-      p.L_EHL = positive(t, "L_EHL", deck, "contact.friction");
-      p.Ra_um = positive(t, "Ra_um", deck, "contact.friction");
-      p.eta_Pa_s = positive(t, "eta_Pa_s", deck, "contact.friction");
-    }
-    try {
-      return std::make_shared<friction::Stribeck>(p, interval);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(at(t, deck) + ": contact.friction: " + e.what());
-    }
+  if (l == "surface") return make_surface_friction(c, t, dir);
+  if (l != "stribeck")
+    c.fail(t.get("law") ? *t.get("law") : static_cast<const toml::node&>(t), w + ".law",
+           "expected \"coulomb\", \"stribeck\" or \"surface\", found \"" + l + "\"");
+  c.allowed(t, w, {"law", "table", "interval", "mu_BL", "mu_EHL", "L_BL", "L_EHL", "Ra_um", "eta_Pa_s"});
+  const int interval = c.count_of(t, "interval", w, 100, 1);
+  analysis::StribeckParams p;
+  if (t.get("table")) {
+    const std::string file = c.str(t, "table", w);
+    if (c.count() > before) return nullptr;
+    p = study::load_stribeck(relative_to(dir, file));
+  } else {
+    p.mu_BL = c.in_range(t, "mu_BL", w, NAN, 0.0);
+    p.mu_EHL = c.in_range(t, "mu_EHL", w, NAN, 0.0);
+    p.L_BL = c.positive(t, "L_BL", w);
+    p.L_EHL = c.positive(t, "L_EHL", w);
+    p.Ra_um = c.positive(t, "Ra_um", w);
+    p.eta_Pa_s = c.positive(t, "eta_Pa_s", w);
+    if (t.get("L_BL") && t.get("L_EHL") && !(p.L_BL < p.L_EHL))
+      c.bad(*t.get("L_BL"), w + ".L_BL",
+            "expected L_BL < L_EHL (boundary before hydrodynamic lubrication), found L_BL = " + fmt_shortest(p.L_BL) +
+                " >= L_EHL = " + fmt_shortest(p.L_EHL));
+    if (t.get("mu_BL") == nullptr || t.get("mu_EHL") == nullptr)
+      c.bad(t, w, "missing required key 'mu_BL' or 'mu_EHL' (expected numbers >= 0)");
   }
-  if (l == "surface") return make_surface_friction(t, deck, dir);
-  throw InputError(at(law ? *law : static_cast<const toml::node&>(t), deck) +
-                   ": contact.friction.law: expected \"coulomb\", \"stribeck\" or \"surface\" (found \"" + l + "\")");
+  if (c.count() > before) return nullptr;
+  try {
+    return std::make_shared<friction::Stribeck>(p, interval);
+  } catch (const std::invalid_argument& e) {
+    c.fail(t, w, e.what());
+  }
 }
 
-fe::Mesh make_quarter_disk(const toml::table& t, const std::string& deck) {
-  check_keys(t, deck, "mesh", {"kind", "radius", "thickness", "core_fraction", "core", "ring", "through"});
+fe::Mesh make_quarter_disk(const DeckContext& c, const toml::table& t) {
+  const std::size_t before = c.count();
+  c.allowed(t, "mesh", {"kind", "radius", "thickness", "core_fraction", "core", "ring", "through"});
   fe::QuarterDiskSpec s;
-  s.radius = positive(t, "radius", deck, "mesh");
-  s.thickness = positive(t, "thickness", deck, "mesh");
-  if (t.get("core_fraction")) s.core_fraction = positive(t, "core_fraction", deck, "mesh");
-  for (const auto& [key, ptr] : {std::pair{"core", &s.core}, std::pair{"ring", &s.ring}, std::pair{"through", &s.through}})
-    if (const auto* n = t.get(key)) {
-      const auto v = n->value<int64_t>();
-      if (!v || *v < 1) throw InputError(at(*n, deck) + ": mesh." + key + ": expected a whole number of elements >= 1");
-      *ptr = static_cast<int>(*v);
-    }
+  s.radius = c.positive(t, "radius", "mesh");
+  s.thickness = c.positive(t, "thickness", "mesh");
+  s.core_fraction = c.positive(t, "core_fraction", "mesh", s.core_fraction);
+  s.core = c.count_of(t, "core", "mesh", s.core, 1);
+  s.ring = c.count_of(t, "ring", "mesh", s.ring, 1);
+  s.through = c.count_of(t, "through", "mesh", s.through, 1);
+  if (c.count() > before) return {};
   try {
     return fe::quarter_disk(s);
   } catch (const std::invalid_argument& e) {
-    throw InputError(at(t, deck) + ": mesh: " + e.what());
+    c.fail(t, "mesh", e.what());
   }
 }
 

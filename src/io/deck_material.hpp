@@ -9,6 +9,7 @@
 
 #include "fe/mesh.hpp"
 #include "friction/friction_law.hpp"
+#include "io/deck_context.hpp"
 #include "material/material.hpp"
 
 namespace drawbend::io {
@@ -16,7 +17,9 @@ namespace drawbend::io {
 /// [material]: type = "elastic" | "j2"; E [MPa], nu, density [t/mm^3];
 /// j2: hardening = "path.csv" (plastic_strain,true_stress_MPa; relative to the
 /// deck's directory) or yield [MPa] with optional tangent [MPa] (linear hardening).
-std::shared_ptr<const material::Material> make_material(const toml::table& t, const std::string& deck,
+/// Value problems are recorded in c's collector; returns nullptr if the
+/// material could not be built.
+std::shared_ptr<const material::Material> make_material(const DeckContext& c, const toml::table& t,
                                                         const std::string& deck_dir);
 
 /// friction = { law = "coulomb", mu = 0.1 }, or
@@ -25,11 +28,12 @@ std::shared_ptr<const material::Material> make_material(const toml::table& t, co
 /// friction = { law = "surface", nodes = "table_6_1.csv" | lines = "table_5_16.csv", interval = 100,
 ///              p_min = 0, p_max = 80, v_min = 6.35, v_max = 101.6 }  (the mu(p, v) law of Ch. 6;
 ///              v_min/v_max only with nodes: with lines they are the outer lines' speeds)
-std::shared_ptr<friction::FrictionLaw> make_friction(const toml::table& t, const std::string& deck,
+std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const toml::table& t,
                                                      const std::string& deck_dir);
 
 /// [mesh] kind = "quarter_disk": radius, thickness [mm], core, ring, through
-/// (element counts), core_fraction (fe/disk.hpp).
-fe::Mesh make_quarter_disk(const toml::table& t, const std::string& deck);
+/// (element counts), core_fraction (fe/disk.hpp).  Problems are recorded in
+/// c's collector; returns an empty mesh if it could not be built.
+fe::Mesh make_quarter_disk(const DeckContext& c, const toml::table& t);
 
 }  // namespace drawbend::io

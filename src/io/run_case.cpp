@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/csv.hpp"
+#include "io/run_checkpoint.hpp"
 #include "io/vtu.hpp"
 
 namespace drawbend::io {
@@ -144,6 +145,24 @@ void write_fields(const fe::Solver& s, const std::string& path) {
             {{"stress_MPa", 6, sg.data()}, {"von_mises_MPa", 1, vm.data()}, {"plastic_strain", 1, ep.data()}}, s.time());
 }
 
+void parse_checkpoint_every(const std::string& spec, RunOptions& opt) {
+  const bool seconds = !spec.empty() && spec.back() == 's';
+  const std::string num = seconds ? spec.substr(0, spec.size() - 1) : spec;
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(num, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  const bool ok = used == num.size() && !num.empty() && v > 0 && std::isfinite(v) && (seconds || v == std::floor(v));
+  if (!ok)
+    throw std::invalid_argument("--checkpoint-every: expected a whole number of cycles (e.g. 500) or simulated seconds "
+                                "with an 's' (e.g. 2e-3s), found '" + spec + "'");
+  if (seconds) opt.checkpoint_every_s = v;
+  else opt.checkpoint_every_cycles = static_cast<long>(v);
+}
+
 RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   namespace fs = std::filesystem;
   fs::create_directories(opt.out_dir);
@@ -151,6 +170,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   if (threads > 0) omp_set_num_threads(threads);
   const auto wall0 = std::chrono::steady_clock::now();
   fe::Solver solver(deck.model);
+  solver.set_warning_handler([&log](const std::string& w) { log << "\nwarning: " << w << "\n"; });
   const fe::Model& m = deck.model;
   double total = 0;
   for (const auto& s : m.steps) total += s.duration;
@@ -167,19 +187,31 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   }
   CsvWriter hist(header);
   hist.comment("time histories of " + deck.path + " (energies in mJ = N mm)");
-  std::vector<std::pair<double, std::string>> snapshots;
-  int snap = 0;
+  RunState rs;
   auto snapshot = [&]() {
-    const std::string name = "fields_" + std::to_string(snap) + ".vtu";
+    const std::string name = "fields_" + std::to_string(rs.snap) + ".vtu";
     write_fields(solver, (fs::path(opt.out_dir) / name).string());
-    write_contact_maps(solver, (fs::path(opt.out_dir) / ("contact_" + std::to_string(snap))).string());
-    snapshots.push_back({solver.time(), name});
-    ++snap;
+    write_contact_maps(solver, (fs::path(opt.out_dir) / ("contact_" + std::to_string(rs.snap))).string());
+    rs.snapshots.push_back({solver.time(), name});
+    ++rs.snap;
   };
-  snapshot();
-  double next_hist = 0, next_field = 0, last_print = -1;
-  int current_step = -1;
+  if (opt.restart.empty()) {
+    snapshot();
+  } else {
+    rs = read_checkpoint(opt.restart, deck.hash, solver);
+    for (const auto& row : rs.history_rows) hist.row(row);
+    log << "restarted from " << opt.restart << " at t = " << solver.time() << " s, cycle " << solver.cycles() << "\n";
+  }
+  double& next_hist = rs.next_hist;
+  double& next_field = rs.next_field;
+  int& current_step = rs.current_step;
+  double last_print = -1;
+  RunSummary r;
+  const std::string ckpt_path = (fs::path(opt.out_dir) / "checkpoint.bin").string();
+  double next_ckpt_time = opt.checkpoint_every_s > 0 ? solver.time() + opt.checkpoint_every_s : 0;
+  struct Halt {};
   auto wall_last = std::chrono::steady_clock::now();
+  try {
   solver.run([&](const fe::Progress& p) {
     const double interval =
         deck.output.history_interval > 0 ? deck.output.history_interval : p.step->duration / 200.0;
@@ -212,11 +244,35 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
           << std::fixed << std::setprecision(0) << el * (1 - frac) / std::max(frac, 1e-9) << " s   " << std::flush;
       last_print = p.time;
     }
+    const bool by_cycles = opt.checkpoint_every_cycles > 0 && p.cycle % opt.checkpoint_every_cycles == 0;
+    const bool by_time = opt.checkpoint_every_s > 0 && p.time >= next_ckpt_time;
+    if (by_cycles || by_time) {
+      if (by_time)
+        while (next_ckpt_time <= p.time) next_ckpt_time += opt.checkpoint_every_s;
+      rs.history_rows = hist.rows();
+      write_checkpoint(ckpt_path, deck.hash, solver, rs);
+      r.checkpoint = ckpt_path;
+      if (opt.halt_after_cycles > 0 && p.cycle >= opt.halt_after_cycles) throw Halt{};
+    }
   });
+  } catch (const fe::NumericalFault&) {
+    // Keep what was recorded up to the fault: it shows how the run got there.
+    if (last_print >= 0) log << "\n";
+    hist.save((fs::path(opt.out_dir) / "history.csv").string());
+    log << "history up to the fault: " << (fs::path(opt.out_dir) / "history.csv").string() << "\n";
+    throw;
+  } catch (const Halt&) {
+    if (last_print >= 0) log << "\n";
+    log << "halted after cycle " << solver.cycles() << " (t = " << solver.time() << " s); continue with --restart "
+        << ckpt_path << "\n";
+    r.halted = true;
+    r.time = solver.time();
+    r.cycles = solver.cycles();
+    return r;
+  }
   if (last_print >= 0) log << "\n";
   hist.save((fs::path(opt.out_dir) / "history.csv").string());
-  write_pvd((fs::path(opt.out_dir) / "fields.pvd").string(), snapshots);
-  RunSummary r;
+  write_pvd((fs::path(opt.out_dir) / "fields.pvd").string(), rs.snapshots);
   const auto& e = solver.energies();
   r.time = solver.time();
   r.cycles = solver.cycles();

@@ -16,7 +16,18 @@ struct RunOptions {
   std::string out_dir = "out";
   bool quiet = false;      ///< no progress line
   int threads = 0;         ///< 0: the deck's or OpenMP's default
+  /// Checkpoints to <out_dir>/checkpoint.bin every this much simulated time [s]
+  /// or every this many cycles (0: none).
+  double checkpoint_every_s = 0;
+  long checkpoint_every_cycles = 0;
+  std::string restart;     ///< checkpoint to continue from ("": start afresh)
+  /// Stop right after the first checkpoint at or beyond this cycle (0: never),
+  /// as an interruption would; for testing restarts.
+  long halt_after_cycles = 0;
 };
+
+/// Parse a --checkpoint-every value: "500" (cycles) or "2e-3s" (simulated seconds).
+void parse_checkpoint_every(const std::string& spec, RunOptions& opt);
 
 struct RunSummary {
   double time = 0;
@@ -27,6 +38,8 @@ struct RunSummary {
   double added_mass_ratio = 0;      ///< added / physical mass
   double max_penetration = 0;       ///< [mm]
   double wall_seconds = 0;
+  bool halted = false;              ///< stopped by halt_after_cycles (no final outputs)
+  std::string checkpoint;           ///< last checkpoint written ("" if none)
 };
 
 /// Write the contact map of every pair: position in global and tool

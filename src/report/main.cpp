@@ -46,6 +46,9 @@ int main(int argc, char** argv) {
         if (!dead.empty()) throw InputError(list + ": " + std::to_string(dead.size()) + " unused entries");
       }
     }
+    for (const auto& ch : chapters)
+      for (const auto& s : study::chapter_staleness(ch))
+        std::cerr << "drawbend-report: warning: chapter " << ch.id << " is STALE: " << s << "\n";
     const std::string md = std::filesystem::path(out).replace_extension(".md").string();
     write_file_atomic(md, study::assemble_report(chapters, title));
     const std::string tmp = out + ".tmp.html";

@@ -1,6 +1,7 @@
 #include "study/chapter.hpp"
 
 #include "analysis/printed.hpp"
+#include "core/provenance.hpp"
 #include "study/thesis_data.hpp"
 
 #include <cstdlib>
@@ -30,8 +31,9 @@ bool Chapter::parse(int argc, char** argv) {
   if (!options_.parse(argc, argv)) return false;
   fs::create_directories(out_dir_ + "/tables");
   fs::create_directories(out_dir_ + "/figures");
-  checks_ = std::make_unique<Checks>(id_, Errata::load(data("thesis/errata.csv")),
-                                     Errata::load(data("thesis/disagreements.csv")));
+  Errata errata = Errata::load(data("thesis/errata.csv"));  // first: a missing data dir names errata.csv
+  Errata disagreements = Errata::load(data("thesis/disagreements.csv"));
+  checks_ = std::make_unique<Checks>(id_, std::move(errata), std::move(disagreements));
   return true;
 }
 
@@ -62,6 +64,7 @@ void Chapter::plot(const std::string& script, const std::string& stem,
                    const std::map<std::string, std::string>& vars) const {
   const std::string gp = figures_dir_ + "/" + script + ".gp";
   if (!fs::exists(gp)) throw InputError(gp + ": gnuplot script not found");
+  note_input(gp);
   const std::string final_svg = out("figures/" + stem + ".svg");
   const std::string tmp_svg = final_svg + ".tmp";
   std::string e = "outfile='" + tmp_svg + "'; tables='" + out("tables") + "'; figdir='" + figures_dir_ + "'";
@@ -104,6 +107,7 @@ int Chapter::finish() {
   w.comment("numbers quoted by chapter " + id_ + "'s results.md as {{key}}");
   for (const auto& v : values_) w.row({v[0], v[1], v[2]});
   w.save(out("values.csv"));
+  write_provenance(out("provenance.csv"), DRAWBEND_GIT_DESCRIBE);
   checks_->print_summary();
   const int failed = checks_->count(Status::fail);
   if (failed > 0 && allow_failures_) std::cout << "warning: " << failed << " check(s) failed (--allow-failures)\n";

@@ -6,6 +6,8 @@
 #include <map>
 #include <sstream>
 
+#include "core/provenance.hpp"
+
 namespace drawbend::study {
 
 namespace fs = std::filesystem;
@@ -58,6 +60,36 @@ std::map<std::string, std::string> load_values(const ChapterSource& ch) {
 }
 
 }  // namespace
+
+std::vector<std::string> chapter_staleness(const ChapterSource& ch) {
+  const std::string p = ch.out_dir + "/provenance.csv";
+  if (!fs::exists(p)) return {"no provenance.csv: the inputs of these results are unknown (rerun the chapter)"};
+  return stale_inputs(p);
+}
+
+std::string provenance_section(const ChapterSource& ch) {
+  std::ostringstream os;
+  const auto stale = chapter_staleness(ch);
+  os << "\n## Provenance of these results {.unnumbered .provenance}\n\n";
+  if (!stale.empty()) {
+    os << "::: {.stale}\n**STALE**: these results do not match the current inputs:\n\n";
+    for (const auto& s : stale) os << "- " << escape_cell(s) << "\n";
+    os << "\n:::\n\n";
+  }
+  const std::string p = ch.out_dir + "/provenance.csv";
+  if (!fs::exists(p)) return os.str();
+  const CsvTable t = read_csv(p);
+  os << "| what | file | FNV-1a 64 | bytes |\n|---|---|---|---|\n";
+  for (const auto& r : t.rows) {
+    const fs::path f(t.text(r, "path"));
+    const std::string shown = t.text(r, "kind") == "version" ? f.string() : (f.parent_path().filename() / f.filename()).string();
+    os << "| " << escape_cell(t.text(r, "kind")) << " | `" << shown << "` | " << escape_cell(t.text(r, "fnv1a64"))
+       << " | " << escape_cell(t.text(r, "bytes")) << " |\n";
+  }
+  os << "\n: Inputs read by chapter " << ch.id << " and the binary that computed its results"
+     << (stale.empty() ? " (all match the current files)." : " (STALE: see above).") << "\n";
+  return os.str();
+}
 
 std::string markdown_table(const CsvTable& t, const std::string& caption, int status_column) {
   std::ostringstream os;
@@ -198,6 +230,12 @@ std::string assemble_report(const std::vector<ChapterSource>& chapters, const st
   std::ostringstream os;
   os << "---\ntitle: \"" << title << "\"\nlang: en\n---\n\n";
   os << checks_summary(chapters);
+  std::string stale_list;
+  for (const auto& ch : chapters)
+    if (!chapter_staleness(ch).empty()) stale_list += (stale_list.empty() ? "" : ", ") + ch.id;
+  if (!stale_list.empty())
+    os << "\n::: {.stale}\n**STALE results**: " << stale_list
+       << " were computed from inputs that have changed since; their Provenance sections list which.\n:::\n";
   for (const auto& ch : chapters) {
     os << "\n";
     for (const char* part : {"intro.md", "results.md"}) {
@@ -207,6 +245,7 @@ std::string assemble_report(const std::vector<ChapterSource>& chapters, const st
       located.src_dir = p;
       os << expand_chapter(read_file(p), located) << "\n";
     }
+    os << provenance_section(ch);
   }
   return os.str();
 }

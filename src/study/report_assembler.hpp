@@ -32,7 +32,15 @@ std::string expand_chapter(const std::string& markdown, const ChapterSource& ch)
 /// The summary of all checks by chapter (first page of the report).
 std::string checks_summary(const std::vector<ChapterSource>& chapters);
 
-/// The whole report: title block, summary, then each chapter.
+/// Why a chapter's results are stale: each recorded input or binary
+/// (provenance.csv) that is gone or whose hash has changed (empty: up to date).
+std::vector<std::string> chapter_staleness(const ChapterSource& ch);
+
+/// The chapter's provenance table, with a loud STALE block when it is stale.
+std::string provenance_section(const ChapterSource& ch);
+
+/// The whole report: title block, summary (with the list of stale chapters),
+/// then each chapter followed by its provenance.
 std::string assemble_report(const std::vector<ChapterSource>& chapters, const std::string& title);
 
 /// Chapters found under src_root (directories with intro.md), sorted by name.

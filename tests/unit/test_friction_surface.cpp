@@ -11,6 +11,9 @@
 //  - Built with the printed map, the surface evaluated through the printed map
 //    again reproduces all three lines (the 3 x 3 Lagrange solve is exact), and
 //    node 1 is no longer the slow line's p = 0 value.
+//  - validate(): a surface whose speed nodes are out of order (v_min > v_max),
+//    whose pressure nodes coincide, or with a NaN nodal value is refused; the
+//    default domain (p 0-80 MPa, v 6.35-101.6 mm/s) is accepted.
 #define BOOST_TEST_MODULE friction_surface
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -73,4 +76,19 @@ BOOST_AUTO_TEST_CASE(printed_map_surface_is_consistent) {
       BOOST_TEST(m == l.mu(p), tt::tolerance(1e-10));
     }
   BOOST_TEST(std::abs(P.mu[0] - 0.0142) > 1e-3);
+}
+
+BOOST_AUTO_TEST_CASE(node_ordering_is_validated) {
+  FrictionSurface ok;
+  BOOST_CHECK_NO_THROW(ok.validate());
+  FrictionSurface swapped;
+  swapped.v_min = 101.6;
+  swapped.v_max = 6.35;
+  BOOST_CHECK_THROW(swapped.validate(), std::invalid_argument);
+  FrictionSurface flat;
+  flat.p_max = flat.p_min;
+  BOOST_CHECK_THROW(flat.validate(), std::invalid_argument);
+  FrictionSurface nan_node;
+  nan_node.mu[4] = NAN;
+  BOOST_CHECK_THROW(nan_node.validate(), std::invalid_argument);
 }

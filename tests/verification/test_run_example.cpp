@@ -24,7 +24,10 @@ BOOST_AUTO_TEST_CASE(block_slide_deck) {
   const auto out = std::filesystem::temp_directory_path() / "drawbend_run_example";
   std::filesystem::remove_all(out);
   std::ostringstream log;
-  const io::RunSummary r = io::run_case(deck, {out.string(), true, 0}, log);
+  io::RunOptions ro;
+  ro.out_dir = out.string();
+  ro.quiet = true;
+  const io::RunSummary r = io::run_case(deck, ro, log);
   BOOST_TEST_MESSAGE(log.str());
   BOOST_TEST(r.energy_balance_error < 1e-3);
   const CsvTable h = read_csv((out / "history.csv").string());

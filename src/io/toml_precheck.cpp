@@ -1,0 +1,105 @@
+#include "io/toml_precheck.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "core/csv.hpp"
+
+namespace drawbend::io {
+
+namespace {
+bool key_start(char c) {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
+         c == '"' || c == '\'';
+}
+}  // namespace
+
+void precheck_table_headers(const std::string& text, const std::string& path) {
+  // A small lexer: strings (basic, literal, multi-line), comments, and the
+  // nesting depth of array and inline-table values, so that only a '[' that
+  // starts a line outside any value is taken for a table header.
+  const std::size_t n = text.size();
+  int line = 1;
+  std::string open;  // brackets of the values being read, innermost last
+  std::size_t col0 = 0;
+  // TOML allows non-ASCII text only in strings and comments; toml++ 3.3.0
+  // classifies other non-ASCII characters with a table that reaches
+  // __builtin_unreachable for many of them (undefined behaviour).
+  auto non_ascii = [&](std::size_t k) {
+    throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(k - col0 + 1) +
+                     ": TOML syntax error: expected ASCII outside strings and comments, found the byte 0x" +
+                     [&] {
+                       char b[3];
+                       std::snprintf(b, sizeof b, "%02x", static_cast<unsigned char>(text[k]));
+                       return std::string(b);
+                     }());
+  };
+  bool line_start = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    const char c = text[i];
+    if (c == '\n') {
+      ++line;
+      line_start = true;
+      col0 = i + 1;
+      continue;
+    }
+    if (c == ' ' || c == '\t' || c == '\r') continue;
+    if (static_cast<unsigned char>(c) >= 0x80) non_ascii(i);
+    const bool at_start = line_start;
+    line_start = false;
+    if (c == '#') {
+      while (i + 1 < n && text[i + 1] != '\n') ++i;
+      continue;
+    }
+    if (c == '"' || c == '\'') {
+      const bool multi = i + 2 < n && text[i + 1] == c && text[i + 2] == c;
+      const std::string close = multi ? std::string(3, c) : std::string(1, c);
+      std::size_t j = i + (multi ? 3 : 1);
+      while (j < n) {
+        if (c == '"' && multi && text[j] == '\\') {
+          // A line-ending backslash: toml++ 3.3.0 tests each following
+          // character with a whitespace table that is undefined behaviour
+          // for many non-ASCII code points, so the run must end in ASCII.
+          std::size_t k = j + 1;
+          while (k < n && (text[k] == ' ' || text[k] == '\t' || text[k] == '\r' || text[k] == '\n')) ++k;
+          if (k > j + 1 && k < n && static_cast<unsigned char>(text[k]) >= 0x80) non_ascii(k);
+        }
+        if (c == '"' && text[j] == '\\') {
+          j += 2;
+          continue;
+        }
+        if (!multi && text[j] == '\n') break;  // unterminated: toml++ reports it
+        if (text.compare(j, close.size(), close) == 0) break;
+        if (text[j] == '\n') ++line;
+        ++j;
+      }
+      i = std::min(n, j + close.size()) - 1;
+      continue;
+    }
+    if (c == '[' && open.empty() && at_start) {
+      std::size_t j = i + 1;
+      if (j < n && text[j] == '[') ++j;
+      while (j < n && (text[j] == ' ' || text[j] == '\t')) ++j;
+      if (j >= n || !key_start(text[j]))
+        throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(i - col0 + 1) +
+                         ": TOML syntax error: expected a table name after '" + text.substr(i, j - i) +
+                         "', found " + (j >= n ? std::string("the end of the file") : text[j] == '\n' ? std::string("the end of the line") : "'" + std::string(1, text[j]) + "'"));
+      // The rest of the header is scanned like any text (its second '[' and
+      // closing brackets balance out), so a non-ASCII byte in it is caught too.
+      continue;
+    }
+    if (c == '[' || c == '{') {
+      open += c;
+    } else if ((c == ']' || c == '}') && !open.empty()) {
+      // toml++ 3.3.0 also asserts on a '}' where an array expects a value.
+      const char want = open.back() == '[' ? ']' : '}';
+      if (c != want)
+        throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(i - col0 + 1) +
+                         ": TOML syntax error: expected '" + std::string(1, want) + "' to close the '" +
+                         std::string(1, open.back()) + "', found '" + std::string(1, c) + "'");
+      open.pop_back();
+    }
+  }
+}
+
+}  // namespace drawbend::io

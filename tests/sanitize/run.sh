@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The sanitizer build: AddressSanitizer + UndefinedBehaviorSanitizer, -O1.
+# Configures BUILD_DIR (normally build-asan beside build) with
+# DRAWBEND_SANITIZE=ON and DRAWBEND_TESTS_ONLY=ON, builds only what the tests
+# need (target sanitize_tests) and runs the unit tests, the cheap verification
+# problems (label asan) and the robustness tests (drawbend on broken decks).
+# Any sanitizer report fails the run (-fno-sanitize-recover=all, ASan aborts).
+# Usage: run.sh SOURCE_DIR BUILD_DIR
+set -euo pipefail
+src=$1 bld=$2
+jobs=$(nproc 2>/dev/null || echo 2)
+t0=$(date +%s)
+cmake -S "$src" -B "$bld" -DCMAKE_BUILD_TYPE=Debug -DDRAWBEND_SANITIZE=ON -DDRAWBEND_TESTS_ONLY=ON >/dev/null
+cmake --build "$bld" --target sanitize_tests -j "$jobs" 2>&1 | grep -E "error|warning|Error" || true
+cmake --build "$bld" --target sanitize_tests -j "$jobs" >/dev/null  # fails the test if the build failed
+t1=$(date +%s)
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+cd "$bld"
+ctest --output-on-failure -j "$jobs" -L 'unit|asan|robustness'
+t2=$(date +%s)
+echo "sanitize: build $((t1 - t0)) s, tests $((t2 - t1)) s"
