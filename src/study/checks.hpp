@@ -8,8 +8,9 @@
 //   disagree our simulation does not reproduce a published value within the
 //            tolerance, and data/thesis/disagreements.csv records what the
 //            investigation found (the report lists these as "not reproduced").
-//            Only `agree` checks (ours vs published) can be disagreements;
-//            the tolerance is never widened to hide them.
+//            Agreement checks (ours vs published) and claims tested on our
+//            simulations can be disagreements; the tolerance is never
+//            widened to hide them.
 // A documented erratum or disagreement whose check passes is reported as a
 // failure (the explanation is stale), so neither list can hide a real change.
 #include <map>
