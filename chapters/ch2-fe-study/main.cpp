@@ -12,6 +12,7 @@
 
 #include "analysis/rope.hpp"
 #include "ch2_steps.hpp"
+#include "sim/fe_options.hpp"
 #include "study/chapter.hpp"
 #include "study/thesis_data.hpp"
 
@@ -93,13 +94,7 @@ int main(int argc, char** argv) {
   study::Chapter ch("ch2-fe-study", "Chapter 2: the draw-bend FE study, re-derived and with our own simulations");
   auto& o = ch.options();
   o.add(swift_pin_mm, "swift-pin-diameter", "pin diameter [mm] assumed for Swift's Eq. (2.1); Chapter 2 does not state it");
-  fe.base.element_length = 1.0;
-  o.add(run_fe, "fe", "run the finite-element part (1) or not (0)");
-  o.add(reuse_runs, "reuse-runs", "reuse runs whose deck is unchanged (1), for development only");
-  o.add(fe.base.element_length, "fe-element-length", "element length along the strip in the bend zone [mm]");
-  o.add(fe.base.across, "fe-across", "elements across the half width");
-  o.add(fe.base.through, "fe-through", "elements through the thickness");
-  o.add(fe.base.mass_scaling, "fe-mass-scaling", "mass scaling of the chapter's runs (at 100 mm/s)");
+  sim::add_fe_options(o, fe.base, run_fe, reuse_runs);
   o.add(fe.low_mass_scaling, "fe-low-mass-scaling", "mass scaling of the comparison run");
   o.add(fe.fine_element_length, "fe-fine-element-length", "element length of the convergence runs [mm]");
   return study::run_chapter(ch, argc, argv, body);

@@ -18,6 +18,7 @@
 
 #include "analysis/stribeck.hpp"
 #include "ch3_steps.hpp"
+#include "sim/fe_options.hpp"
 #include "study/chapter.hpp"
 #include "study/thesis_data.hpp"
 
@@ -111,12 +112,6 @@ void body(study::Chapter& c) {
 int main(int argc, char** argv) {
   study::Chapter ch("ch3-stribeck", "Chapter 3: the Stribeck friction curve, its strip-draw verification and draw-bend");
   auto& o = ch.options();
-  fe.element_length = 1.0;
-  o.add(run_fe, "fe", "run the draw-bend simulations (1) or not (0)");
-  o.add(reuse_runs, "reuse-runs", "reuse runs whose deck is unchanged (1), for development only");
-  o.add(fe.element_length, "fe-element-length", "element length along the strip in the bend zone [mm]");
-  o.add(fe.across, "fe-across", "elements across the half width");
-  o.add(fe.through, "fe-through", "elements through the thickness");
-  o.add(fe.mass_scaling, "fe-mass-scaling", "mass scaling at 100 mm/s (scaled by (100/v)^2 at speed v)");
+  sim::add_fe_options(o, fe, run_fe, reuse_runs);
   return study::run_chapter(ch, argc, argv, body);
 }

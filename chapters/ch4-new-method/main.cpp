@@ -19,6 +19,7 @@
 #include "analysis/pressure_ratio.hpp"
 #include "analysis/rope.hpp"
 #include "ch4_steps.hpp"
+#include "sim/fe_options.hpp"
 #include "study/chapter.hpp"
 #include "study/thesis_data.hpp"
 
@@ -103,14 +104,6 @@ void body(study::Chapter& c) {
 int main(int argc, char** argv) {
   study::Chapter ch("ch4-new-method", "Chapter 4: the new method, re-derived and with our own simulations");
   auto& o = ch.options();
-  fe.base.element_length = 1.0;
-  fe.base.through = 4;
-  fe.base.across = 2;
-  o.add(run_fe, "fe", "run the finite-element part (1) or not (0)");
-  o.add(reuse_runs, "reuse-runs", "reuse runs whose deck is unchanged (1), for development only");
-  o.add(fe.base.element_length, "fe-element-length", "element length along the strip in the bend zone [mm]");
-  o.add(fe.base.across, "fe-across", "elements across the half width");
-  o.add(fe.base.through, "fe-through", "elements through the thickness");
-  o.add(fe.base.mass_scaling, "fe-mass-scaling", "mass scaling at 100 mm/s (scaled by (100/v)^2 at speed v)");
+  sim::add_fe_options(o, fe.base, run_fe, reuse_runs);
   return study::run_chapter(ch, argc, argv, body);
 }

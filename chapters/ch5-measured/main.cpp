@@ -23,6 +23,7 @@
 #include <iostream>
 
 #include "ch5_steps.hpp"
+#include "sim/fe_options.hpp"
 
 namespace {
 ch5::FeOptions fe;
@@ -32,15 +33,7 @@ int run_fe = 1, reuse_runs = 0, across_variant = 0;  // ints: the option parser'
 int main(int argc, char** argv) {
   drawbend::study::Chapter ch("ch5-measured", "Chapter 5: friction measurement on AA5754-O (measured data)");
   auto& o = ch.options();
-  fe.base.element_length = 1.0;
-  fe.base.across = 2;
-  fe.base.through = 4;
-  o.add(run_fe, "fe", "run the finite-element part (1) or not (0)");
-  o.add(reuse_runs, "reuse-runs", "reuse runs whose deck is unchanged (1), for development only");
-  o.add(fe.base.element_length, "fe-element-length", "element length along the strip in the bend zone [mm]");
-  o.add(fe.base.across, "fe-across", "elements across the half width");
-  o.add(fe.base.through, "fe-through", "elements through the thickness");
-  o.add(fe.base.mass_scaling, "fe-mass-scaling", "mass scaling at 100 mm/s (scaled by (100/v)^2 at speed v)");
+  drawbend::sim::add_fe_options(o, fe.base, run_fe, reuse_runs);
   o.add(fe.fine_element_length, "fe-fine-element-length", "finer-map variant along the strip: element length [mm] (0: half the base)");
   o.add(fe.fine_across, "fe-fine-across", "finer-map variant across: elements across the half width (0: twice the base)");
   o.add(fe.stiff_penalty, "fe-stiff-penalty", "penalty variant: contact penalty scale (base 0.1)");

@@ -1,0 +1,18 @@
+#include "sim/fe_options.hpp"
+
+namespace drawbend::sim {
+
+void add_fe_options(Options& o, DrawBendSpec& base, int& run_fe, int& reuse_runs) {
+  base.element_length = 1.0;
+  base.across = 2;
+  base.through = 4;
+  base.mass_scaling = 1e4;
+  o.add(run_fe, "fe", "run the finite-element part (1) or not (0)");
+  o.add(reuse_runs, "reuse-runs", "reuse runs whose deck is unchanged (1), for development only");
+  o.add(base.element_length, "fe-element-length", "element length along the strip in the bend zone [mm]");
+  o.add(base.across, "fe-across", "elements across the half width");
+  o.add(base.through, "fe-through", "elements through the thickness");
+  o.add(base.mass_scaling, "fe-mass-scaling", "mass scaling at 100 mm/s (scaled by (100/v)^2 at speed v)");
+}
+
+}  // namespace drawbend::sim
