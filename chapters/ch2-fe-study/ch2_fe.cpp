@@ -33,17 +33,8 @@ namespace {
 /// Sliding distance [mm] after which the outlet force stays within `band` of
 /// its final level (mean of the last third), from the start of the draw.
 double steady_distance(const sim::DrawBendResult& r, double band) {
-  const auto& h = r.history;
-  std::vector<std::pair<double, double>> s;  // (time in draw, F_out)
-  double t0 = -1;
-  for (const auto& row : h.rows)
-    if (h.text(row, "step") == "draw") {
-      const double t = h.number(row, "time_s");
-      if (t0 < 0) t0 = t;
-      s.push_back({t - t0, -h.number(row, "outlet_force_N")});
-    }
   double last_out = 0;
-  for (const auto& [t, f] : s)
+  for (const auto& [t, f] : r.draw_series("outlet_force_N", -1))  // the grip pulls along -z
     if (std::abs(f - r.F_out) > band * r.F_out) last_out = t;
   return last_out * r.spec.speed;  // the speed ramp is short: slide ~ speed x time
 }
@@ -233,20 +224,7 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   auto fh = c.table({"time_s", "F_back_N", "F_out_frictionless_N", "F_out_mu0.1_N"},
                     "draw-step tension forces, 12.7 mm pin (half model, N)");
   {
-    std::vector<std::pair<double, double>> a, b;
-    double ta = -1, tb = -1;
-    for (const auto& row : ff.history.rows)
-      if (ff.history.text(row, "step") == "draw") {
-        const double tt = ff.history.number(row, "time_s");
-        if (ta < 0) ta = tt;
-        a.push_back({tt - ta, -ff.history.number(row, "outlet_force_N")});
-      }
-    for (const auto& row : fr.history.rows)
-      if (fr.history.text(row, "step") == "draw") {
-        const double tt = fr.history.number(row, "time_s");
-        if (tb < 0) tb = tt;
-        b.push_back({tt - tb, -fr.history.number(row, "outlet_force_N")});
-      }
+    const auto a = ff.draw_series("outlet_force_N", -1), b = fr.draw_series("outlet_force_N", -1);
     for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
       fh.row({fmt(a[i].first, 6), fmt(ff.F_back, 6), fmt(a[i].second, 6), fmt(b[i].second, 6)});
   }

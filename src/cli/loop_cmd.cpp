@@ -8,6 +8,7 @@
 // drawbend synth --from-thesis --out DIR [--data DIR] [--points 7]
 //   The thesis fits sampled into the sample format: DIR/thesis_drawbend.csv.
 // Exit codes: 0 ok, 2 bad input, 3 numerical failure.
+#include "cli/exit_codes.hpp"
 #include "cli/loop_cmd.hpp"
 
 #include <filesystem>
@@ -32,21 +33,6 @@ MapLibrary maps_for(const std::string& dir, const std::vector<double>& pins) {
   return MapLibrary::stand_in(pins);
 }
 
-template <class F>
-int guarded(F f) {
-  try {
-    return f();
-  } catch (const InputError& e) {
-    std::cerr << "input error: " << e.what() << "\n";
-    return 2;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "input error: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 3;
-  }
-}
 }  // namespace
 
 int loop_main(int argc, char** argv) {
@@ -75,7 +61,7 @@ int loop_main(int argc, char** argv) {
   opt.add(bending, "bending", "base bending force: linear (b0 + b1 F_back) or constant (Swift form)");
   opt.add(figures, "figures", "directory of the gnuplot scripts (empty: no figures)");
   opt.add(gnuplot, "gnuplot", "gnuplot executable");
-  return guarded([&] {
+  return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
     if (bending != "linear" && bending != "constant")
       throw std::invalid_argument("--bending must be linear or constant, not '" + bending + "'");
@@ -121,7 +107,7 @@ int synth_main(int argc, char** argv) {
   opt.add_flag(from_thesis, "from-thesis", "write the thesis fits as sample rows (thesis_drawbend.csv)");
   opt.add(data_dir, "data", "data directory (with thesis/) for --from-thesis");
   opt.add(points, "points", "rows per thesis fit for --from-thesis");
-  return guarded([&] {
+  return with_exit_codes([&] {
     if (!opt.parse(argc, argv)) return 0;
     fs::create_directories(out);
     if (from_thesis) {

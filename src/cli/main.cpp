@@ -14,10 +14,12 @@
 #include "fe/guards.hpp"
 #include "io/deck.hpp"
 #include "io/run_case.hpp"
+#include "cli/exit_codes.hpp"
 
 namespace drawbend::cli {
 int drawbend_deck_command(int argc, char** argv);
 }
+
 
 int main(int argc, char** argv) {
   using namespace drawbend;
@@ -35,17 +37,7 @@ int main(int argc, char** argv) {
     return argc < 2 ? 2 : 0;
   }
   const std::string cmd = argv[1];
-  if (cmd == "drawbend-deck") {
-    try {
-      return cli::drawbend_deck_command(argc - 1, argv + 1);
-    } catch (const InputError& e) {
-      std::cerr << "input error: " << e.what() << "\n";
-      return 2;
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      return 3;
-    }
-  }
+  if (cmd == "drawbend-deck") return cli::with_exit_codes([&] { return cli::drawbend_deck_command(argc - 1, argv + 1); });
   if (cmd == "loop") return cli::loop_main(argc - 1, argv + 1);    // loop_cmd.cpp
   if (cmd == "synth") return cli::synth_main(argc - 1, argv + 1);  // loop_cmd.cpp
   if (cmd != "run") {
@@ -69,7 +61,7 @@ int main(int argc, char** argv) {
           "write <out>/checkpoint.bin every N cycles (e.g. 500) or T simulated seconds (e.g. 2e-3s)");
   opt.add(ro.restart, "restart", "continue from this checkpoint (same deck; use the same --out)");
   opt.add(halt, "halt-after-cycles", "stop after the first checkpoint at or beyond this cycle (tests restarts)");
-  try {
+  return cli::with_exit_codes([&] {
     if (!opt.parse(argc - 2, argv + 2)) return 0;
     ro.quiet = quiet;
     ro.halt_after_cycles = halt;
@@ -78,17 +70,5 @@ int main(int argc, char** argv) {
     io::Deck deck = io::read_deck(deck_path);
     io::run_case(deck, ro, std::cout);
     return 0;
-  } catch (const InputError& e) {
-    std::cerr << "input error: " << e.what() << "\n";
-    return 2;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "input error: " << e.what() << "\n";
-    return 2;
-  } catch (const fe::NumericalFault& e) {
-    std::cerr << "\nnumerical fault: " << e.what() << "\n";
-    return 3;
-  } catch (const std::exception& e) {
-    std::cerr << "\nerror: " << e.what() << "\n";
-    return 3;
-  }
+  });
 }

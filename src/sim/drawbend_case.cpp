@@ -153,13 +153,6 @@ std::string deck_text(const DrawBendSpec& s) {
 
 namespace {
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 /// The last contact map of pair 0 written by run_case (contact_<k>_0.csv).
 fs::path last_map(const fs::path& dir) {
   int best = -1;
@@ -237,6 +230,18 @@ analysis::PressureMap DrawBendResult::pressure_map(const std::string& label) con
   return m;
 }
 
+std::vector<std::pair<double, double>> DrawBendResult::draw_series(const std::string& column, double sign) const {
+  std::vector<std::pair<double, double>> out;
+  double t0 = -1;
+  for (const auto& row : history.rows)
+    if (history.text(row, "step") == "draw") {
+      const double t = history.number(row, "time_s");
+      if (t0 < 0) t0 = t;
+      out.push_back({t - t0, sign * history.number(row, column)});
+    }
+  return out;
+}
+
 std::vector<std::pair<double, double>> DrawBendResult::wrap_strain(double fraction) const {
   const auto& h = history;
   const double step = std::max(spec.element_length, 0.5), shift = (fraction - 0.5) * wrap_length(spec);
@@ -290,7 +295,7 @@ DrawBendResult run_drawbend(const DrawBendSpec& s, const std::string& dir, bool 
   DrawBendResult r;
   r.spec = s;
   r.dir = dir;
-  const bool cached = reuse && fs::exists(deck_path) && read_text(deck_path) == text &&
+  const bool cached = reuse && fs::exists(deck_path) && read_file(deck_path.string()) == text &&
                       fs::exists(fs::path(dir) / "summary.csv");
   if (!cached) {
     fs::remove(fs::path(dir) / "summary.csv");

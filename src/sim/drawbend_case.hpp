@@ -77,6 +77,9 @@ struct DrawBendResult {
   double tension_rise() const { return F_out - F_back; }
   /// The map as the new method needs it (nodal pressure and area, half model).
   analysis::PressureMap pressure_map(const std::string& label) const;
+  /// A history column over the draw step: (time since the draw began [s],
+  /// sign x value), e.g. draw_series("outlet_force_N", -1) for F_Y [N].
+  std::vector<std::pair<double, double>> draw_series(const std::string& column, double sign = 1) const;
   /// Average contact pressure over the nodes in contact [MPa] (area weighted).
   double mean_pressure() const;
   /// Outside-surface strain at a point of the wrap against the slide in the
