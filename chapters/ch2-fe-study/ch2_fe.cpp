@@ -20,6 +20,7 @@
 
 #include "analysis/rope.hpp"
 #include "ch2_steps.hpp"
+#include "sim/case_pool.hpp"
 #include "sim/map_tools.hpp"
 #include "study/thesis_data.hpp"
 
@@ -58,22 +59,24 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   s.speed = 100.0;
   s.hardening = c.data("materials/aa5754_o_rd.csv");
   const auto wall0 = std::chrono::steady_clock::now();
-  auto run = [&](sim::DrawBendSpec x, const std::string& name, const std::string& friction) {
-    x.name = name;
-    x.friction = friction;
-    std::cout << "  FE: " << name << " ...\n" << std::flush;
-    return sim::run_drawbend(x, c.out("runs/" + name), o.reuse);
-  };
   const std::string coulomb = "{ law = \"coulomb\", mu = " + fmt(mu_in) + " }";
-  const sim::DrawBendResult fr = run(s, "ch2_coulomb", coulomb);
-  const sim::DrawBendResult ff = run(s, "ch2_frictionless", "");
   sim::DrawBendSpec s_ms = s;
   s_ms.mass_scaling = o.low_mass_scaling;
-  const sim::DrawBendResult fm = run(s_ms, "ch2_frictionless_low_mass_scaling", "");
   sim::DrawBendSpec s_fine = s;
   s_fine.element_length = o.fine_element_length;
-  const sim::DrawBendResult gf = run(s_fine, "ch2_frictionless_fine", "");
-  const sim::DrawBendResult gr = run(s_fine, "ch2_coulomb_fine", coulomb);
+  std::vector<sim::CaseJob> jobs;
+  auto job = [&](sim::DrawBendSpec x, const std::string& name, const std::string& friction) {
+    x.name = name;
+    x.friction = friction;
+    jobs.push_back({x, c.out("runs/" + name)});
+  };
+  job(s, "ch2_coulomb", coulomb);
+  job(s, "ch2_frictionless", "");
+  job(s_ms, "ch2_frictionless_low_mass_scaling", "");
+  job(s_fine, "ch2_frictionless_fine", "");
+  job(s_fine, "ch2_coulomb_fine", coulomb);
+  const std::vector<sim::DrawBendResult> all = sim::run_drawbend_all(jobs, o.reuse);  // side by side
+  const sim::DrawBendResult &fr = all[0], &ff = all[1], &fm = all[2], &gf = all[3], &gr = all[4];
   c.value("fe_wall", fmt_fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count() / 60, 1),
           "min");
   c.value("fe_h", fmt(s.element_length), "mm");

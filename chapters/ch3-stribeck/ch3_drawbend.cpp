@@ -15,6 +15,7 @@
 
 #include "analysis/rope.hpp"
 #include "ch3_steps.hpp"
+#include "sim/case_pool.hpp"
 #include "sim/drawbend_case.hpp"
 #include "sim/map_tools.hpp"
 #include "study/thesis_data.hpp"
@@ -44,10 +45,13 @@ void drawbend_pins(study::Chapter& c, const StribeckParams& s33, const sim::Draw
                       "contact_deg_centre_row", "p_max_over_mean"},
                      "draw-bend at 10 MPa average pressure (Sec. 3.5): forces on the half model [N], Eq. (2.3) mu");
   std::vector<double> mu_c_ret, mu_s_ret, arc, peak_ratio;
+  // The nine runs side by side (sim/case_pool.hpp), then the reduction per pin.
+  std::vector<double> FXs;
+  std::vector<sim::CaseJob> jobs;
   for (const double D : pins) {
     const double FB_est = swift_bending_force(ys, t, 2 * w_half, D / 2, M_PI / 2, ForceBasis::half_model);
     const double FX = (p_target * D * w_half - FB_est) / (1 + std::exp(mu_c * M_PI / 2));
-    sim::DrawBendResult res[3];
+    FXs.push_back(FX);
     for (int k = 0; k < 3; ++k) {
       sim::DrawBendSpec s = base;
       s.pin_diameter = D;
@@ -60,8 +64,15 @@ void drawbend_pins(study::Chapter& c, const StribeckParams& s33, const sim::Draw
       s.name = "ch3_d" + fmt(D) + "_" + laws[k];
       if (k == 1) s.friction = "{ law = \"coulomb\", mu = " + fmt(mu_c) + " }";
       if (k == 2) s.friction = "{ law = \"stribeck\", table = \"" + c.data("thesis/table_3_3.csv") + "\", interval = 100 }";
-      std::cout << "  FE: " << s.name << " ...\n" << std::flush;
-      res[k] = sim::run_drawbend(s, c.out("runs/" + s.name), reuse);
+      jobs.push_back({s, c.out("runs/" + s.name)});
+    }
+  }
+  const std::vector<sim::DrawBendResult> all = sim::run_drawbend_all(jobs, reuse);
+  for (std::size_t ip = 0; ip < pins.size(); ++ip) {
+    const double D = pins[ip], FX = FXs[ip];
+    const sim::DrawBendResult* res = &all[3 * ip];
+    for (int k = 0; k < 3; ++k) {
+      const sim::DrawBendSpec& s = res[k].spec;
       const std::string rid = "ch3.fe.d" + fmt(D) + "." + laws[k];
       c.checks().claim(rid + ".energy", "energy balance error < 1 %, " + s.name, res[k].balance_error < 0.01,
                        "balance error " + fmt(res[k].balance_error, 3));

@@ -24,6 +24,7 @@
 #include "analysis/rope.hpp"
 #include "analysis/stribeck.hpp"
 #include "ch4_steps.hpp"
+#include "sim/case_pool.hpp"
 #include "sim/map_tools.hpp"
 #include "study/thesis_data.hpp"
 
@@ -64,25 +65,29 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   // to that of the reference run (1e4 at 100 mm/s), so the step-3 dynamics do
   // not change with the thesis's 50 mm/s; the Stribeck law sees the real speed.
   const auto wall0 = std::chrono::steady_clock::now();
-  std::vector<PinRuns> runs;
+  std::vector<sim::CaseJob> jobs;  // per pin: frictionless, Stribeck; run side by side
   for (const auto& row : t41.rows) {
-    PinRuns r;
-    r.D = t41.number(row, "pin_diameter_mm");
     sim::DrawBendSpec s = o.base;
-    s.pin_diameter = r.D;
+    s.pin_diameter = t41.number(row, "pin_diameter_mm");
     s.thickness = t_strip;
     s.width = w_half;
     s.back_tension = t41.number(row, "FX_prime_N");
     s.speed = v;
     s.mass_scaling = o.base.mass_scaling * (100.0 / v) * (100.0 / v);
     s.hardening = c.data("materials/aa5754_o_rd.csv");
-    s.name = "ch4_d" + fmt(r.D) + "_frictionless";
-    std::cout << "  FE: " << s.name << " ...\n" << std::flush;
-    r.free = sim::run_drawbend(s, c.out("runs/" + s.name), o.reuse);
-    s.name = "ch4_d" + fmt(r.D) + "_stribeck";
+    s.name = "ch4_d" + fmt(s.pin_diameter) + "_frictionless";
+    jobs.push_back({s, c.out("runs/" + s.name)});
+    s.name = "ch4_d" + fmt(s.pin_diameter) + "_stribeck";
     s.friction = "{ law = \"stribeck\", table = \"" + c.data("thesis/table_3_3.csv") + "\", interval = 100 }";
-    std::cout << "  FE: " << s.name << " ...\n" << std::flush;
-    r.strib = sim::run_drawbend(s, c.out("runs/" + s.name), o.reuse);
+    jobs.push_back({s, c.out("runs/" + s.name)});
+  }
+  std::vector<sim::DrawBendResult> all = sim::run_drawbend_all(jobs, o.reuse);
+  std::vector<PinRuns> runs;
+  for (std::size_t i = 0; i + 1 < all.size(); i += 2) {
+    PinRuns r;
+    r.D = all[i].spec.pin_diameter;
+    r.free = std::move(all[i]);
+    r.strib = std::move(all[i + 1]);
     runs.push_back(std::move(r));
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();

@@ -17,6 +17,7 @@
 
 #include "analysis/pressure_ratio.hpp"
 #include "ch5_steps.hpp"
+#include "sim/case_pool.hpp"
 #include "sim/map_tools.hpp"
 
 namespace ch5 {
@@ -104,16 +105,20 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
 
   FeMaps m;
   const auto wall0 = std::chrono::steady_clock::now();
+  std::vector<sim::CaseJob> jobs;  // all runs side by side (sim/case_pool.hpp)
+  std::vector<std::pair<std::string, double>> keys;
   for (const char* variant : kVariants) {
     const bool base = std::string(variant) == "base";
     for (double pin : kPins) {
       if (!base && pin > 25.4 + 1e-9) continue;  // variants: the pins of Table 5.16
       if (std::string(variant) == "fine_across" && !o.across_variant) continue;
       const sim::DrawBendSpec s = spec_for(variant, pin);
-      std::cout << "  FE: " << s.name << " ...\n" << std::flush;
-      m.runs[variant].emplace(pin, sim::run_drawbend(s, c.out("runs/" + s.name), o.reuse));
+      jobs.push_back({s, c.out("runs/" + s.name)});
+      keys.emplace_back(variant, pin);
     }
   }
+  std::vector<sim::DrawBendResult> all = sim::run_drawbend_all(jobs, o.reuse);
+  for (std::size_t i = 0; i < all.size(); ++i) m.runs[keys[i].first].emplace(keys[i].second, std::move(all[i]));
   m.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
 
   // Run table, invariants and the bending force beside the measured one.

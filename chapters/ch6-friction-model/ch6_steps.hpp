@@ -8,6 +8,7 @@ namespace ch6 {
 void block_sliding(drawbend::study::Chapter& c);
 }  // namespace ch6
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,6 +23,8 @@ struct CupResult {
   double die_lift = 0;                           ///< lower-die displacement at the end
   double kinetic_ratio = 0, hourglass_ratio = 0, added_mass_ratio = 0;  ///< over internal energy; added/physical mass
   long cycles = 0;
+  /// Per element at the end: centroid x, y, z [mm], equivalent plastic strain, von Mises stress [MPa].
+  std::vector<std::array<double, 5>> field;
 };
 /// Draw a cup from `deck_path` at punch speed [mm/s] over `stroke` [mm] in `cycles`
 /// cycles; optional mesh refinement factor; writes a VTU snapshot at the end when `vtu` is set.

@@ -1,0 +1,96 @@
+#include "sim/case_pool.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <iostream>
+#include <mutex>
+#include <numeric>
+#include <thread>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace drawbend::sim {
+
+namespace {
+int hardware_threads() {
+#ifdef _OPENMP
+  return std::max(1, omp_get_num_procs());
+#else
+  return std::max(1u, std::thread::hardware_concurrency());
+#endif
+}
+}  // namespace
+
+int default_case_jobs() {
+  if (const char* e = std::getenv("DRAWBEND_JOBS")) {
+    const int j = std::atoi(e);
+    if (j >= 1) return j;
+    std::cerr << "warning: DRAWBEND_JOBS='" << e << "' is not a positive integer; using the hardware threads\n";
+  }
+  return hardware_threads();
+}
+
+void run_cases(std::size_t n, const std::function<void(std::size_t)>& f, const std::vector<double>& cost, int jobs) {
+  if (n == 0) return;
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  if (cost.size() == n)
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+  const int nw = static_cast<int>(std::min<std::size_t>(n, static_cast<std::size_t>(std::max(1, jobs))));
+  const int threads_each = std::max(1, hardware_threads() / nw);
+  std::vector<std::exception_ptr> err(n);
+  std::atomic<std::size_t> next{0};
+  auto worker = [&]() {
+#ifdef _OPENMP
+    omp_set_num_threads(threads_each);  // this thread's teams only
+#endif
+    for (std::size_t k; (k = next.fetch_add(1)) < n;) {
+      const std::size_t i = order[k];
+      try {
+        f(i);
+      } catch (...) {
+        err[i] = std::current_exception();
+      }
+    }
+  };
+  if (nw == 1) {
+    worker();
+  } else {
+    std::vector<std::thread> pool;
+    for (int w = 0; w < nw; ++w) pool.emplace_back(worker);
+    for (auto& t : pool) t.join();
+  }
+  for (const auto& e : err)
+    if (e) std::rethrow_exception(e);
+}
+
+std::vector<DrawBendResult> run_drawbend_all(const std::vector<CaseJob>& jobs, bool reuse) {
+  std::vector<DrawBendResult> out(jobs.size());
+  std::vector<double> cost;  // ~ elements x cycles ~ (wrap / h) x across x through x (slide / speed) / sqrt(ms)
+  for (const auto& j : jobs) {
+    const DrawBendSpec& s = j.spec;
+    cost.push_back(wrap_length(s) / s.element_length * s.across * s.through * draw_length(s) / s.speed /
+                   std::sqrt(s.mass_scaling));
+  }
+  std::mutex io;
+  run_cases(jobs.size(), [&](std::size_t i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    {
+      std::lock_guard<std::mutex> lock(io);
+      std::cout << "  FE: " << jobs[i].spec.name << " started\n" << std::flush;
+    }
+    out[i] = run_drawbend(jobs[i].spec, jobs[i].dir, reuse);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::lock_guard<std::mutex> lock(io);
+    std::cout << "  FE: " << jobs[i].spec.name << " done in " << static_cast<int>(s + 0.5) << " s\n" << std::flush;
+  }, cost);
+  return out;
+}
+
+}  // namespace drawbend::sim

@@ -1,0 +1,44 @@
+#pragma once
+// Independent cases of a chapter run side by side.
+//
+// The draw-bend meshes of the default tier have 400-900 elements: too few for
+// the element loop's OpenMP threads to pay (measured: 2 threads, 400 elements,
+// same wall time at twice the CPU).  A chapter's cases are independent, so
+// the pool runs whole cases concurrently instead, `jobs` at a time, and gives
+// each case hardware_threads / jobs OpenMP threads (at least one).
+//
+// Results do not depend on the pool: every case is deterministic whatever its
+// thread count (fixed-order nodal sums), and results come back in the order
+// the cases were given.  An exception in one case is rethrown after all
+// running cases have finished (the first by case order).
+//
+// jobs: DRAWBEND_JOBS from the environment if set (1 = one case at a time),
+// otherwise the number of hardware threads.
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sim/drawbend_case.hpp"
+
+namespace drawbend::sim {
+
+/// Concurrent cases: DRAWBEND_JOBS, else hardware threads (>= 1).
+int default_case_jobs();
+
+/// Run f(0..n-1), `jobs` at a time, largest `cost` first (cost may be empty).
+/// Each call sees omp_get_max_threads() = max(1, hardware threads / jobs).
+void run_cases(std::size_t n, const std::function<void(std::size_t)>& f, const std::vector<double>& cost = {},
+               int jobs = default_case_jobs());
+
+/// One draw-bend case and the directory it runs in.
+struct CaseJob {
+  DrawBendSpec spec;
+  std::string dir;
+};
+
+/// run_drawbend for every job, concurrently; a line on stdout as each case
+/// starts and ends (with its wall time).  Results in job order.
+std::vector<DrawBendResult> run_drawbend_all(const std::vector<CaseJob>& jobs, bool reuse);
+
+}  // namespace drawbend::sim
