@@ -15,6 +15,7 @@
 // F = c a0 S1 + c^2 a1 S2 in the two unknowns S1 (normal force) and S2 of the
 // thesis's map, solved by least squares, beside ours.
 // Forces N (full strip), pressures MPa.
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -100,6 +101,9 @@ void map_sensitivity(Chapter& c, const Inputs& in, const FeMaps& m) {
   };
   add("thesis", "ours - Table 5.16", d0_thesis, d1_thesis);
   for (const auto& s : sources) add(s.key, s.label, d0[s.key], d1[s.key]);
+  for (const auto& s : kSources)  // sources whose runs this tier did not make: "not run" in the page's table
+    if (std::none_of(sources.begin(), sources.end(), [&](const Source& x) { return x.key == s.key; }))
+      for (const char* q : {"sens_rms_a0_", "sens_rms_a1_", "sens_max_a0_", "sens_max_a1_"}) c.value(q + s.key, "not run");
   c.save(sum, "sensitivity_summary");
 
   // Map moments implied by Table 5.16 (the thesis's maps are not printed).

@@ -66,7 +66,8 @@ struct FeOptions {
   double fine_element_length = 0;     ///< "fine_along" variant: element length [mm]; 0 = half the base
   int fine_across = 0;                ///< "fine_across" variant: elements across; 0 = twice the base
   double stiff_penalty = 0.3;         ///< "penalty" variant: contact penalty scale
-  bool across_variant = false;        ///< run the fine_across variant too (the `full` label does)
+  bool map_variants = false;          ///< run the map variants penalty, td_curve, fine_along (the `full` tier does)
+  bool across_variant = false;        ///< run the fine_across variant too (the `full` tier does)
 };
 
 /// The map variants of the sensitivity study; "base" is the chapter's map.
@@ -74,7 +75,8 @@ inline const char* kVariants[5] = {"base", "penalty", "td_curve", "fine_along", 
 
 struct FeMaps {
   /// variant -> pin [mm] -> run (base has all three pins, variants the 12.7
-  /// and 25.4 mm pins; "fine_across" only when FeOptions::across_variant).
+  /// and 25.4 mm pins, only with FeOptions::map_variants; "fine_across" only
+  /// with FeOptions::across_variant as well).
   std::map<std::string, std::map<double, drawbend::sim::DrawBendResult>> runs;
   double wall_s = 0;  ///< wall time of all runs [s]
 

@@ -27,7 +27,7 @@
 
 namespace {
 ch5::FeOptions fe;
-int run_fe = 1, reuse_runs = 0, across_variant = 0;  // ints: the option parser's flags take no value
+int run_fe = 1, reuse_runs = 0, map_variants = 0, across_variant = 0;  // ints: the option parser's flags take no value
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -37,7 +37,9 @@ int main(int argc, char** argv) {
   o.add(fe.fine_element_length, "fe-fine-element-length", "finer-map variant along the strip: element length [mm] (0: half the base)");
   o.add(fe.fine_across, "fe-fine-across", "finer-map variant across: elements across the half width (0: twice the base)");
   o.add(fe.stiff_penalty, "fe-stiff-penalty", "penalty variant: contact penalty scale (base 0.1)");
-  o.add(across_variant, "fe-across-variant", "run the finer-across-the-width map variant too (1) or not (0)");
+  o.add(map_variants, "fe-map-variants",
+        "run the map variants of the sensitivity study (stiffer penalty, TD curve, finer along; 6 runs) (1) or not (0)");
+  o.add(across_variant, "fe-across-variant", "with --fe-map-variants 1: the finer-across-the-width variant too (1) or not (0)");
   return drawbend::study::run_chapter(ch, argc, argv, [](drawbend::study::Chapter& c) {
     using namespace ch5;
     const Inputs in = load_inputs(c);  // 1
@@ -49,6 +51,7 @@ int main(int argc, char** argv) {
     friction_lines_and_surfaces(c, in);// 7
     fe.run = run_fe != 0;
     fe.reuse = reuse_runs != 0;
+    fe.map_variants = map_variants != 0;
     fe.across_variant = across_variant != 0;
     c.value("fe_ran", fe.run ? "yes" : "no");
     if (!fe.run) return;
