@@ -23,6 +23,9 @@ Chapter::Chapter(std::string id, std::string description)
   options_.add(out_dir_, "out", "output directory of this chapter");
   options_.add(figures_dir_, "figures", "directory with the gnuplot scripts");
   options_.add(gnuplot_, "gnuplot", "gnuplot executable");
+  options_.add(tier_, "tier",
+               "mesh tier of this run, quick or full: a documented disagreement may hold for one tier only "
+               "(column `tier` of data/thesis/disagreements.csv); the full tier's FULL_ARGS pass --tier full");
   options_.add_flag(allow_failures_, "allow-failures",
                     "exit 0 even when checks fail (the report still shows them); used by `make`");
 }
@@ -32,8 +35,11 @@ bool Chapter::parse(int argc, char** argv) {
   fs::create_directories(out_dir_ + "/tables");
   fs::create_directories(out_dir_ + "/figures");
   Errata errata = Errata::load(data("thesis/errata.csv"));  // first: a missing data dir names errata.csv
-  Errata disagreements = Errata::load(data("thesis/disagreements.csv"));
+  if (tier_ != "quick" && tier_ != "full")
+    throw InputError("--tier: expected quick or full, found '" + tier_ + "'");
+  Errata disagreements = Errata::load(data("thesis/disagreements.csv"), tier_);
   checks_ = std::make_unique<Checks>(id_, std::move(errata), std::move(disagreements));
+  value("tier", tier_);  // the pages may say which mesh tier they show
   return true;
 }
 

@@ -19,11 +19,18 @@ std::string to_string(Status s) {
   return "?";
 }
 
-Errata Errata::load(const std::string& path) {
+Errata Errata::load(const std::string& path, const std::string& tier) {
   Errata e;
   const CsvTable t = read_csv(path);
+  const bool has_tier = std::find(t.header.begin(), t.header.end(), "tier") != t.header.end();
   for (const auto& r : t.rows) {
     const std::string id = t.text(r, "id");
+    if (has_tier) {
+      const std::string rt = t.text(r, "tier");
+      if (rt != "" && rt != "all" && rt != "quick" && rt != "full")
+        throw InputError(t.where(r, "tier") + ": expected quick, full, all or empty, found '" + rt + "'");
+      if (!tier.empty() && rt != "" && rt != "all" && rt != tier) continue;
+    }
     const std::string ex = t.text(r, "explanation");
     if (ex.empty()) throw InputError(t.where(r, "explanation") + ": empty explanation");
     if (id.empty() || id == "*") throw InputError(t.where(r, "id") + ": an erratum must name a check id or an id prefix");

@@ -32,7 +32,10 @@ struct Check {
 /// Documented thesis errata: id or id prefix (ending in '*') -> explanation.
 class Errata {
  public:
-  static Errata load(const std::string& csv_path);
+  /// With a `tier` column (disagreements.csv), rows whose tier is neither
+  /// empty, `all` nor `tier` are left out: a disagreement seen on the quick
+  /// mesh only is not applied to (and so cannot go stale on) the full one.
+  static Errata load(const std::string& csv_path, const std::string& tier = "");
   /// Explanation for an id, or empty when none is documented.
   std::string explain(const std::string& id) const;
   /// Entries (ids or "prefix*") that match none of the given check ids.

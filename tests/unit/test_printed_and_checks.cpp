@@ -10,6 +10,7 @@
 //    is stale (fail); a NaN is never excused; a bare '*' entry is rejected;
 //    entries matching no check are listed as unused.
 //  - "1,45" (decimal comma) is rejected rather than read as 145.
+//  - Disagreements with a tier column apply on their tier only (see the last case).
 #define BOOST_TEST_MODULE printed_and_checks
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -82,4 +83,23 @@ BOOST_AUTO_TEST_CASE(claims_prefixes_nan_and_audit) {
   BOOST_TEST(dead.front() == "never.used");
   write_file_atomic(errata, "id,explanation\n*,everything\n");
   BOOST_CHECK_THROW(study::Errata::load(errata), InputError);
+}
+
+// Tiered disagreements (column `tier`): a row for the quick tier excuses its
+// check on the quick tier only; on the full tier the same check is judged by
+// its tolerance alone (pass, not stale); an empty tier applies to both; an
+// unknown tier value is rejected.
+BOOST_AUTO_TEST_CASE(disagreement_tiers) {
+  const auto dir = std::filesystem::temp_directory_path() / "drawbend_checks_test3";
+  std::filesystem::create_directories(dir);
+  const std::string list = (dir / "disagreements.csv").string();
+  write_file_atomic(list, "id,explanation,tier\nq.only,coarse mesh artefact,quick\nboth,any mesh,\n");
+  study::Checks quick("test", {}, study::Errata::load(list, "quick"));
+  study::Checks full("test", {}, study::Errata::load(list, "full"));
+  BOOST_TEST(study::to_string(quick.agree("q.only", "q", 1.0, 1.5, 0.1, "N", "r").status) == "disagree");
+  BOOST_TEST(study::to_string(full.agree("q.only", "q", 1.0, 1.05, 0.1, "N", "r").status) == "pass");
+  BOOST_TEST(study::to_string(full.agree("both", "q", 1.0, 1.5, 0.1, "N", "r").status) == "disagree");
+  BOOST_TEST(study::Errata::load(list).explain("q.only") == "coarse mesh artefact");  // no tier: every row
+  write_file_atomic(list, "id,explanation,tier\nx,y,fine\n");
+  BOOST_CHECK_THROW(study::Errata::load(list, "quick"), InputError);
 }
