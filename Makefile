@@ -1,7 +1,7 @@
 # Top-level wrapper.
 #   make        installs missing Debian packages, builds, regenerates every
 #               chapter at paper fidelity (the `full` draw-bend meshes) and
-#               writes build-full/report/study.html (about 1.5 h on 2 cores);
+#               writes build-full/report/study.html (about 80 min on 2 cores);
 #   make quick  the same report from the quick meshes of the test suite in
 #               build/report/study.html (about 20 min on 2 cores);
 #   make test   builds and runs the CTest suite (unit + chapter + report) in build/.

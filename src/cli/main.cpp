@@ -20,7 +20,6 @@ namespace drawbend::cli {
 int drawbend_deck_command(int argc, char** argv);
 }
 
-
 int main(int argc, char** argv) {
   using namespace drawbend;
   const char* usage =

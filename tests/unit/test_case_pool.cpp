@@ -1,0 +1,74 @@
+// The case pool (src/sim/case_pool.hpp).
+// Closed-form answers:
+//  - n = 7 cases on 1, 2 and 3 workers: every index runs exactly once, and
+//    each case's result lands in its own slot (out[i] = i*i), whatever the order.
+//  - With costs, one worker takes the cases largest cost first: cost
+//    {1, 5, 3} runs 1, 2, 0.
+//  - Cases 2 and 5 throw: the other cases still run (6 of 8 done), and the
+//    exception rethrown is case 2's (the first by case order).
+//  - Each case sees max(1, hardware threads / workers) OpenMP threads.
+#define BOOST_TEST_MODULE case_pool
+#include <boost/test/unit_test.hpp>
+
+#include <atomic>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "sim/case_pool.hpp"
+
+using drawbend::sim::run_cases;
+
+BOOST_AUTO_TEST_CASE(every_case_once_in_its_slot) {
+  for (int jobs : {1, 2, 3}) {
+    std::vector<int> out(7, -1);
+    std::vector<std::atomic<int>> runs(7);
+    run_cases(7, [&](std::size_t i) {
+      ++runs[i];
+      out[i] = static_cast<int>(i * i);
+    }, {}, jobs);
+    for (int i = 0; i < 7; ++i) {
+      BOOST_TEST(runs[i].load() == 1);
+      BOOST_TEST(out[i] == i * i);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(largest_cost_first_on_one_worker) {
+  std::vector<std::size_t> order;
+  run_cases(3, [&](std::size_t i) { order.push_back(i); }, {1.0, 5.0, 3.0}, 1);
+  BOOST_TEST(order == (std::vector<std::size_t>{1, 2, 0}), boost::test_tools::per_element());
+}
+
+BOOST_AUTO_TEST_CASE(first_exception_by_case_order) {
+  std::atomic<int> done{0};
+  try {
+    run_cases(8, [&](std::size_t i) {
+      if (i == 5 || i == 2) throw std::runtime_error("case " + std::to_string(i));
+      ++done;
+    }, {}, 2);
+    BOOST_FAIL("no exception");
+  } catch (const std::runtime_error& e) {
+    BOOST_TEST(std::string(e.what()) == "case 2");
+  }
+  BOOST_TEST(done.load() == 6);
+}
+
+#ifdef _OPENMP
+BOOST_AUTO_TEST_CASE(threads_per_case) {
+  const int hw = omp_get_num_procs();
+  std::mutex m;
+  std::vector<int> seen;
+  run_cases(4, [&](std::size_t) {
+    std::lock_guard<std::mutex> lock(m);
+    seen.push_back(omp_get_max_threads());
+  }, {}, 2);
+  for (int t : seen) BOOST_TEST(t == std::max(1, hw / 2));
+}
+#endif
