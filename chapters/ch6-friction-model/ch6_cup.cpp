@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <map>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include <toml++/toml.h>
@@ -82,8 +83,15 @@ CupResult draw_cup(const std::string& deck_path, double speed, double stroke, lo
   s.run_step(0);
   CupResult r;
   const double z0 = s.tool_offset("punch")[2];
-  const long every = std::max(1L, cycles / 400);
+  const long every = std::max(1L, cycles / 400), tenth = std::max(1L, cycles / 10);
+  const long c0 = s.cycles();
   s.run_step(1, [&](const fe::Progress& p) {
+    if ((p.cycle - c0) % tenth == 0 && p.cycle > c0) {  // progress: one line per 10 % of the stroke
+      std::ostringstream line;
+      line << "  cup " << speed << " mm/s: " << 10 * ((p.cycle - c0) / tenth) << " % of " << stroke
+           << " mm, punch force " << -4e-3 * s.tool_force("punch")[2] << " kN\n";
+      std::fputs(line.str().c_str(), stderr);  // one write per line: cases run side by side
+    }
     if (p.cycle % every) return;
     const double d = s.tool_offset("punch")[2] - z0;
     r.curve.push_back({d, -4.0 * s.tool_force("punch")[2]});  // full blank: 4 quarters

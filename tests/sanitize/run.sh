@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The sanitizer build: AddressSanitizer + UndefinedBehaviorSanitizer, -O1.
+# The sanitizer build: AddressSanitizer + UndefinedBehaviorSanitizer, -O0
+# (CMakeLists.txt says why not -O1).
 # Configures BUILD_DIR (normally build-asan beside build) with
 # DRAWBEND_SANITIZE=ON and DRAWBEND_TESTS_ONLY=ON, builds only what the tests
 # need (target sanitize_tests) and runs the unit tests, the cheap verification
