@@ -57,9 +57,14 @@ CupResult draw_cup(const std::string& deck_path, double speed, double stroke, lo
                    int refine) {
   // Refinement: the deck's element counts times `refine` (in-plane and through the thickness).
   toml::table root = toml::parse_file(deck_path);
+  int layers = 0;
   if (auto* mesh = root["mesh"].as_table())
     for (const char* key : {"core", "ring", "through"})
-      if (auto* n = mesh->get(key); n && n->value<int64_t>()) mesh->insert_or_assign(key, *n->value<int64_t>() * refine);
+      if (auto* n = mesh->get(key); n && n->value<int64_t>()) {
+        const int64_t count = *n->value<int64_t>() * refine;  // read before the node is replaced
+        mesh->insert_or_assign(key, count);
+        if (std::string(key) == "through") layers = static_cast<int>(count);
+      }
   std::ostringstream text;
   text << root;
   io::Deck deck = io::parse_deck(text.str(), deck_path);
@@ -82,6 +87,8 @@ CupResult draw_cup(const std::string& deck_path, double speed, double stroke, lo
   fe::Solver s(m);
   s.run_step(0);
   CupResult r;
+  r.elements = m.mesh.num_elements();
+  r.layers = layers;
   const double z0 = s.tool_offset("punch")[2];
   const long every = std::max(1L, cycles / 400), tenth = std::max(1L, cycles / 10);
   const long c0 = s.cycles();
@@ -140,7 +147,7 @@ double force_at(const CupResult& r, double d) {
   return NAN;
 }
 
-void cup_drawing(study::Chapter& c, bool full) {
+void cup_drawing(study::Chapter& c, bool full, const std::string& cases) {
   const std::string deck = c.data("cases/cup_draw.toml");
   const CsvTable t65 = read_csv(c.data("thesis/table_6_5.csv"));
   const std::string sc = c.data("thesis/scalars.csv");
@@ -156,8 +163,20 @@ void cup_drawing(study::Chapter& c, bool full) {
   auto curves = c.table({"case", "punch_displacement_mm", "punch_force_kN"}, "Punch force against displacement");
   // The cases side by side (sim/case_pool.hpp); default: the slowest and the fastest.
   std::vector<std::size_t> rows;
-  for (std::size_t i = 0; i < t65.rows.size(); ++i)
-    if (full || i == 0 || i + 1 == t65.rows.size()) rows.push_back(i);
+  if (cases.empty()) {
+    for (std::size_t i = 0; i < t65.rows.size(); ++i)
+      if (full || i == 0 || i + 1 == t65.rows.size()) rows.push_back(i);
+  } else {  // --cup-cases: the listed ids, in table order; case 1 and the last are needed below
+    const std::string list = "," + cases + ",";
+    for (std::size_t i = 0; i < t65.rows.size(); ++i)
+      if (list.find("," + t65.text(t65.rows[i], "case") + ",") != std::string::npos) rows.push_back(i);
+    std::size_t listed = 1;
+    for (char ch : cases) listed += ch == ',';
+    if (rows.size() != listed || rows.front() != 0 || rows.back() + 1 != t65.rows.size())
+      throw InputError("--cup-cases '" + cases + "': give distinct case ids of Table 6.5 (1 to " +
+                       t65.text(t65.rows.back(), "case") + "), separated by commas, including 1 and " +
+                       t65.text(t65.rows.back(), "case"));
+  }
   std::vector<CupResult> runs(rows.size());
   sim::run_cases(rows.size(), [&](std::size_t k) {
     const auto& row = t65.rows[rows[k]];
@@ -219,7 +238,8 @@ void cup_drawing(study::Chapter& c, bool full) {
   c.value("cup_v9", fmt(t65.number(t65.rows.back(), "punch_speed_mm_s")), "mm/s");
   c.value("cup_blank", fmt(study::scalar(sc, "ch6_blank_diameter").value), "mm");
   c.value("cup_clamp", fmt_fixed(r1.die_force / 1000, 1), "kN");
-  c.value("cup_elements", std::to_string(io::read_deck(deck).model.mesh.num_elements()));
+  c.value("cup_elements", std::to_string(r1.elements));
+  c.value("cup_layers", std::to_string(r1.layers));
   c.value("cup_rd_case1", fmt_fixed(r1.size_rd, 2), "mm");
   c.value("cup_td_case1", fmt_fixed(r1.size_td, 2), "mm");
   c.value("cup_rd_case9", fmt_fixed(r9.size_rd, 2), "mm");
@@ -236,8 +256,10 @@ void cup_drawing(study::Chapter& c, bool full) {
                    r1.size_td < r1.size_rd, "mu_TD < mu_RD above ~10 MPa");
   c.checks().claim("ch6.cup.faster_draws_in_more", "cup smaller at case 9 than case 1 along RD and TD (Sec. 6.6.1)",
                    r9.size_rd < r1.size_rd && r9.size_td < r1.size_td, "lower friction at speed at the die radius");
-  c.value("cup_tier", full ? "all nine cases of Table 6.5 on the mesh refined twice (the `full` tier)"
-                           : "cases 1 and 9 of Table 6.5 on the coarse mesh (the default tier)");
+  std::string listed = ids;  // "1 9" -> "1, 9"
+  for (std::size_t at = listed.find(' '); at != std::string::npos; at = listed.find(' ', at + 2)) listed.replace(at, 1, ", ");
+  c.value("cup_tier", "cases " + listed + " of Table 6.5 on the " +
+                          (full ? std::string("mesh refined twice (the `full` tier)") : "coarse mesh (the default tier)"));
   c.plot("cup_force", "fig_6_20",
          {{"datafile", c.out("tables/cup_curves.csv")},
           {"f1", fmt(study::scalar(sc, "ch6_punch_force_exp_case1").value)},

@@ -23,6 +23,7 @@ struct CupResult {
   double die_lift = 0;                           ///< lower-die displacement at the end
   double kinetic_ratio = 0, hourglass_ratio = 0, added_mass_ratio = 0;  ///< over internal energy; added/physical mass
   long cycles = 0;
+  int elements = 0, layers = 0;                  ///< mesh of the run (after refinement)
   /// Per element at the end: centroid x, y, z [mm], equivalent plastic strain, von Mises stress [MPa].
   std::vector<std::array<double, 5>> field;
 };
@@ -33,5 +34,6 @@ CupResult draw_cup(const std::string& deck_path, double speed, double stroke, lo
 /// Punch force at displacement d by linear interpolation (NaN beyond the curve).
 double force_at(const CupResult& r, double d);
 /// Sec. 6.6: the cup-drawing cases (coarse cases 1 and 9 by default; all nine, finer, with `full`).
-void cup_drawing(drawbend::study::Chapter& c, bool full);
+/// `cases`: comma-separated Table 6.5 case ids to run instead (must hold case 1 and the last case).
+void cup_drawing(drawbend::study::Chapter& c, bool full, const std::string& cases = "");
 }  // namespace ch6
