@@ -185,7 +185,7 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases) {
                        id == "1" ? c.out("tables/cup_case1.vtu") : "", refine);
   });
   std::map<std::string, CupResult> res;
-  std::string ids;
+  std::string ids, listed;  // "1 9" for the figure, "1, 9" for the page
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const auto& row = t65.rows[rows[k]];
     const std::string id = t65.text(row, "case");
@@ -193,6 +193,7 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases) {
     const CupResult& r = runs[k];
     res[id] = r;
     ids += (ids.empty() ? "" : " ") + id;
+    listed += (listed.empty() ? "" : ", ") + id;
     double fmax = 0;
     for (const auto& [d, f] : r.curve) {
       fmax = std::max(fmax, f);
@@ -256,8 +257,6 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases) {
                    r1.size_td < r1.size_rd, "mu_TD < mu_RD above ~10 MPa");
   c.checks().claim("ch6.cup.faster_draws_in_more", "cup smaller at case 9 than case 1 along RD and TD (Sec. 6.6.1)",
                    r9.size_rd < r1.size_rd && r9.size_td < r1.size_td, "lower friction at speed at the die radius");
-  std::string listed = ids;  // "1 9" -> "1, 9"
-  for (std::size_t at = listed.find(' '); at != std::string::npos; at = listed.find(' ', at + 2)) listed.replace(at, 1, ", ");
   c.value("cup_tier", "cases " + listed + " of Table 6.5 on the " +
                           (full ? std::string("mesh refined twice (the `full` tier)") : "coarse mesh (the default tier)"));
   c.plot("cup_force", "fig_6_20",
