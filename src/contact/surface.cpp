@@ -6,7 +6,6 @@
 namespace drawbend::contact {
 
 namespace {
-inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 inline Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 inline Vec3 axpy(double s, const Vec3& a, const Vec3& b) { return {s * a[0] + b[0], s * a[1] + b[1], s * a[2] + b[2]}; }
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }

@@ -18,6 +18,8 @@ namespace drawbend::contact {
 
 using Vec3 = std::array<double, 3>;
 
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
 struct Surface {
   enum class Kind { plane, cylinder, torus };
   Kind kind = Kind::plane;

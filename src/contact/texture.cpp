@@ -1,5 +1,7 @@
 #include "contact/texture.hpp"
 
+#include "contact/surface.hpp"  // Vec3 helpers (dot)
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -8,7 +10,6 @@
 namespace drawbend::contact {
 
 namespace {
-inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 inline Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
