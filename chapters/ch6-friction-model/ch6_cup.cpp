@@ -9,7 +9,8 @@
 //   - the force at 15 mm (Sec. 6.6.2: thesis 27.3 / 25.9 kN simulated, 26.5 /
 //     25.2 kN measured, cases 1 / 9) and its change with speed;
 //   - cup sizes along RD and TD (flange outer diameter at the end, Figs. 6.17, 6.21);
-//   - the location of the largest plastic strain at the end of the stroke.
+//   - the location of the largest plastic strain at the end of the stroke (radius, height,
+//     angle from RD), and with `full` at 21 mm, where the thesis finds failure in RD.
 #include <algorithm>
 #include <map>
 #include <cmath>
@@ -131,6 +132,7 @@ CupResult draw_cup(const std::string& deck_path, double speed, double stroke, lo
     r.max_strain = ep;
     r.max_strain_r = std::hypot(cx, cy);
     r.max_strain_z = cz;
+    r.max_strain_angle = std::atan2(cy, cx) * 180.0 / std::acos(-1.0);
   }
   if (!vtu.empty()) io::write_fields(s, vtu);
   r.die_lift = s.tool_offset("lower_die")[2];  // how far the force-driven lower die moved
@@ -156,7 +158,7 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases) {
   const long cycles = full ? 160000 : 30000;  // per stroke; the refined mesh halves the stable step
   const int refine = full ? 2 : 1;
   auto w = c.table({"case", "punch_speed_mm_s", "force_at_15mm_kN", "max_force_kN", "cup_size_RD_mm", "cup_size_TD_mm",
-                    "clamp_force_kN", "max_plastic_strain", "at_radius_mm", "at_height_mm", "kinetic_over_internal",
+                    "clamp_force_kN", "max_plastic_strain", "at_radius_mm", "at_height_mm", "at_angle_from_RD_deg", "kinetic_over_internal",
                     "hourglass_over_internal", "cycles"},
                    std::string("Cup drawing, quarter model, ") + (full ? "refined" : "coarse") +
                        " mesh, ASSUMED 5 mm punch and die radii (Fig. 6.12 missing); forces for the full blank");
@@ -201,7 +203,7 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases) {
     }
     w.row({id, fmt(v), fmt_fixed(force_at(r, d_eval) / 1000, 3), fmt_fixed(fmax / 1000, 3), fmt_fixed(r.size_rd, 3),
            fmt_fixed(r.size_td, 3), fmt_fixed(r.die_force / 1000, 3), fmt_fixed(r.max_strain, 4),
-           fmt_fixed(r.max_strain_r, 2), fmt_fixed(r.max_strain_z, 2), fmt(r.kinetic_ratio, 3), fmt(r.hourglass_ratio, 3),
+           fmt_fixed(r.max_strain_r, 2), fmt_fixed(r.max_strain_z, 2), fmt_fixed(r.max_strain_angle, 1), fmt(r.kinetic_ratio, 3), fmt(r.hourglass_ratio, 3),
            std::to_string(r.cycles)});
   }
   // The fields of case 1 at the end of the stroke (Figs. 6.17, 6.21, 6.26): the
@@ -223,6 +225,20 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases) {
     c.value("cup_strain_21_r", fmt_fixed(r.max_strain_r, 1), "mm");
     c.value("cup_strain_21_z", fmt_fixed(r.max_strain_z, 1), "mm");
     c.value("cup_strain_21", fmt_fixed(r.max_strain, 3));
+    c.value("cup_strain_21_angle", fmt_fixed(r.max_strain_angle, 1), "deg from RD");
+    const bool rd = r.max_strain_angle < 45.0;
+    c.value("cup_failure", "At " + fmt(d_fail) + " mm (case 1) the largest plastic strain, " +
+                               fmt_fixed(r.max_strain, 3) + ", lies at radius " + fmt_fixed(r.max_strain_r, 1) +
+                               " mm, " + fmt_fixed(r.max_strain_z, 1) + " mm above the blank's starting plane, " +
+                               fmt_fixed(r.max_strain_angle, 1) + "° from RD: nearer " + (rd ? "RD" : "TD") +
+                               (rd ? ", where the thesis finds failure too" : "; the thesis finds failure in RD") +
+                               " (Figs. 6.26–6.27; fields in `tables/cup_case1_21mm.vtu`).");
+    c.checks().claim("ch6.cup.fails_in_rd", "largest plastic strain at 21 mm nearer RD than TD, case 1 (Sec. 6.6.3)",
+                     rd, "frictional anisotropy only (isotropic material, as in the thesis): mu_RD > mu_TD holds back "
+                     "the RD draw-in, so strain gathers on the RD axis; 'in RD' read as nearer the RD axis");
+  } else {
+    c.value("cup_failure", "The thesis locates failure at " + fmt(d_fail) +
+                               " mm, in RD (Figs. 6.26–6.27); that run is part of the `full` tier only.");
   }
   c.save(w, "cup_cases");  // one name for both tiers: the page shows the tier that ran
   c.save(curves, "cup_curves");
@@ -248,6 +264,7 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases) {
   c.value("cup_strain_r", fmt_fixed(r1.max_strain_r, 1), "mm");
   c.value("cup_strain_z", fmt_fixed(r1.max_strain_z, 1), "mm");
   c.value("cup_strain", fmt_fixed(r1.max_strain, 3));
+  c.value("cup_strain_angle", fmt_fixed(r1.max_strain_angle, 1), "deg from RD");
   c.value("cup_ke_max", fmt(std::max(r1.kinetic_ratio, r9.kinetic_ratio), 2));
   c.value("cup_hg_pct", fmt_fixed(100 * std::max(r1.hourglass_ratio, r9.hourglass_ratio), 1), "%");
   // Claims of Secs. 6.6.1-6.6.2 tested on our numbers.
