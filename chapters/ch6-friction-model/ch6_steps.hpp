@@ -21,6 +21,9 @@ struct CupResult {
   double size_rd = 0, size_td = 0;               ///< flange outer diameter along RD (x) and TD (y)
   double max_strain = 0, max_strain_r = 0, max_strain_z = 0;  ///< largest plastic strain and where
   double max_strain_angle = 0;                   ///< its angle from RD (x) about the cup axis [deg]: 0 RD, 90 TD
+  /// Largest plastic strain within 15 deg of RD and of TD: mirror-image bands of the
+  /// disk mesh (symmetric about 45 deg), so their difference is the friction's.
+  double band_rd = 0, band_td = 0;
   double die_lift = 0;                           ///< lower-die displacement at the end
   double kinetic_ratio = 0, hourglass_ratio = 0, added_mass_ratio = 0;  ///< over internal energy; added/physical mass
   long cycles = 0;
