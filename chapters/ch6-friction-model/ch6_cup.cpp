@@ -228,7 +228,7 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases) {
     c.value("cup_strain_21_r", fmt_fixed(r.max_strain_r, 1), "mm");
     c.value("cup_strain_21_z", fmt_fixed(r.max_strain_z, 1), "mm");
     c.value("cup_strain_21", fmt_fixed(r.max_strain, 3));
-    c.value("cup_strain_21_angle", fmt_fixed(r.max_strain_angle, 1), "deg from RD");
+    c.value("cup_strain_21_angle", fmt_fixed(r.max_strain_angle, 1), "deg");
     c.value("cup_strain_21_band_rd", fmt_fixed(r.band_rd, 3));
     c.value("cup_strain_21_band_td", fmt_fixed(r.band_td, 3));
     const bool rd = r.band_rd > r.band_td;
@@ -272,11 +272,22 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases) {
   c.value("cup_strain_r", fmt_fixed(r1.max_strain_r, 1), "mm");
   c.value("cup_strain_z", fmt_fixed(r1.max_strain_z, 1), "mm");
   c.value("cup_strain", fmt_fixed(r1.max_strain, 3));
-  c.value("cup_strain_angle", fmt_fixed(r1.max_strain_angle, 1), "deg from RD");
+  c.value("cup_strain_angle", fmt_fixed(r1.max_strain_angle, 1), "deg");
   c.value("cup_band_rd", fmt_fixed(r1.band_rd, 3));
   c.value("cup_band_td", fmt_fixed(r1.band_td, 3));
   c.value("cup_ke_max", fmt(std::max(r1.kinetic_ratio, r9.kinetic_ratio), 2));
   c.value("cup_hg_pct", fmt_fixed(100 * std::max(r1.hourglass_ratio, r9.hourglass_ratio), 1), "%");
+  // Sec. 6.6.2 in magnitude: the forces at 15 mm against the measured ones (the
+  // physical truth; the thesis's own simulation was 2.9 % and 2.4 % above them).
+  const double dx = study::scalar(sc, "ch6_force_drop_exp").value;
+  c.checks().agree("ch6.cup.f15_case1", "punch force at 15 mm, case 1, full blank (Sec. 6.6.2, measured)", e1, f1,
+                   0.10 * e1, "kN",
+                   "10 %: the thesis's own model came within 3 %; ours adds assumed tool radii (Fig. 6.12 missing)");
+  c.checks().agree("ch6.cup.f15_case9", "punch force at 15 mm, case 9, full blank (Sec. 6.6.2, measured)", e9, f9,
+                   0.10 * e9, "kN",
+                   "10 %: the thesis's own model came within 3 %; ours adds assumed tool radii (Fig. 6.12 missing)");
+  c.checks().agree("ch6.cup.force_drop", "change of the punch force at 15 mm from case 1 to case 9 (Sec. 6.6.2, measured)",
+                   dx, f9 - f1, 0.2, "kN", "the measured forces are printed to 0.1 kN, so their difference to 0.2 kN");
   // Claims of Secs. 6.6.1-6.6.2 tested on our numbers.
   c.checks().claim("ch6.cup.force_falls_with_speed", "punch force at 15 mm lower at case 9 than at case 1 (Sec. 6.6.2)",
                    f9 < f1, "mu(p, v) falls with speed at the die-radius and punch pressures (tens of MPa)");
