@@ -17,6 +17,13 @@ constexpr double kEtaPaS = 1.2;  // Table 3.3 (Ter Haar); enters L only as a con
 bool close(double a, double b) { return std::abs(a - b) < 1e-9 * std::max(1.0, std::abs(a)); }
 }  // namespace
 
+double ellipse(double a, double b, double phi) {
+  const double c = std::cos(phi), s = std::sin(phi);
+  const double den = std::sqrt(b * b * c * c + a * a * s * s);
+  if (den < 1e-12) return a * c * c + b * s * s;
+  return a * b / den;
+}
+
 std::vector<double> Design::zscore(const std::string& column) const {
   std::vector<double> x(rows.size(), 0.0);
   for (size_t i = 0; i < rows.size(); ++i) {
@@ -160,13 +167,6 @@ Layout layout(const Design& d, const ModelSpec& spec) {
     }
   }
   return L;
-}
-
-double ellipse(double a, double b, double phi) {
-  const double c = std::cos(phi), s = std::sin(phi);
-  const double den = std::sqrt(b * b * c * c + a * a * s * s);
-  if (den < 1e-12) return a * c * c + b * s * s;
-  return a * b / den;
 }
 
 double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th, int i, double* mu_out) {

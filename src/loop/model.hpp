@@ -25,6 +25,10 @@
 
 namespace drawbend::loop {
 
+/// Friction coefficient in direction phi [rad] from RD on the ellipse with
+/// semi-axes mu_RD = a and mu_TD = b (Eq. 6.3): a b / sqrt(b^2 cos^2 + a^2 sin^2).
+double ellipse(double a, double b, double phi);
+
 constexpr double kWrapRad = 1.5707963267948966;  ///< 90 deg wrap (Sec. 5.6)
 constexpr double kStripWidthMm = 25.4;           ///< Sec. 5.2
 

@@ -1,6 +1,8 @@
 // Synthetic data with a hidden law; see synth.hpp.
 #include "loop/synth.hpp"
 
+#include "loop/model.hpp"  // ellipse (Eq. 6.3)
+
 #include <cmath>
 #include <algorithm>
 #include <map>
@@ -26,10 +28,6 @@ const PinSpec kPins[3] = {{12.7, 1450, 1800, -0.0625, 396.84, 0.10},
                           {42.0, 1500, 2100, -0.0118, 70.133, 0.30}};
 const double kMuRD = 0.09, kMuTD = 0.075, kWrap = 1.5707963267948966;
 
-double ellipse_mu(double a, double b, double phi) {
-  const double c = std::cos(phi), s = std::sin(phi);
-  return a * b / std::sqrt(b * b * c * c + a * a * s * s);
-}
 }  // namespace
 
 Dataset synthesize(const SynthOptions& o, const MapLibrary& maps, SynthTruth& t) {
@@ -116,7 +114,7 @@ Dataset synthesize(const SynthOptions& o, const MapLibrary& maps, SynthTruth& t)
       double y = F + bend;
       if (!ts.rotating) {
         const double phi = ts.dir * M_PI / 180;
-        double mu = ellipse_mu(kMuRD, kMuTD, phi);
+        double mu = ellipse(kMuRD, kMuTD, phi);
         if (o.effect == "depletion") mu *= 1 - A * (1 - std::exp(-s.sliding_mm / 60));
         if (o.effect == "pin_surface" && ts.pin == 2) mu *= 1 + A;
         if (o.effect == "speed") mu *= 1 - A * std::log10(s.speed_mm_s / 25.4);
