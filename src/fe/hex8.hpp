@@ -41,13 +41,16 @@ inline constexpr double kZetaN[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
 void volume_derivatives(const double x[8], const double y[8], const double z[8], double dvdx[8], double dvdy[8],
                         double dvdz[8]);
 
-/// Element geometry at the current configuration.
-struct HexGeometry {
-  double B[3][8];   ///< uniform gradient dN_a/dx_i averaged over the element [1/mm]
-  double volume;    ///< exact volume [mm^3]
-  double R[3][3];   ///< corotational frame: columns are the local axes e_xi, e_eta, e_zeta
-  double h[3];      ///< half-lengths along the local axes [mm]
+/// Element geometry at the current configuration; T = double for one element,
+/// a vector of doubles for several side by side (fe/lanes.hpp).
+template <class T>
+struct HexGeometryT {
+  T B[3][8];   ///< uniform gradient dN_a/dx_i averaged over the element [1/mm]
+  T volume;    ///< exact volume [mm^3]
+  T R[3][3];   ///< corotational frame: columns are the local axes e_xi, e_eta, e_zeta
+  T h[3];      ///< half-lengths along the local axes [mm]
 };
+using HexGeometry = HexGeometryT<double>;
 
 /// Compute B, V, the corotational frame and half-lengths; returns false if the
 /// volume is not positive (inverted element).

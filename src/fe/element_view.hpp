@@ -1,0 +1,55 @@
+#pragma once
+// The element loop's data, as plain pointers into the solver's
+// structure-of-arrays state, and its entry points per instruction set.
+//
+// The loop is written once (fe/element_kernel.hpp) and compiled twice:
+// `baseline` (the x86-64 baseline, SSE2) and, where the compiler and machine
+// allow it, `avx2` (4 doubles per instruction, no FMA).  Both give the same
+// bits (fe/lanes.hpp says why), which tests/unit/test_element_kernel.cpp
+// checks; the solver picks the widest one the CPU has.
+#include <array>
+
+#include "material/material.hpp"
+
+namespace drawbend::fe {
+
+struct ElementView {
+  const std::array<int, 8>* hex = nullptr;                                    ///< connectivity
+  const double *x = nullptr, *y = nullptr, *z = nullptr;                      ///< node positions [mm]
+  const double *vx = nullptr, *vy = nullptr, *vz = nullptr;                   ///< node velocities [mm/s]
+  double* sig = nullptr;         ///< 12 per element: the two integration points' stresses [MPa]
+  double* state = nullptr;       ///< 2 * ns per element: the points' material states
+  double* hgq = nullptr;         ///< 6 per element: hourglass generalised forces
+  double* hg_ratio = nullptr;    ///< 1 per element: relaxed tangent ratio
+  double* corner = nullptr;      ///< 24 per element: corner forces [N]
+  double* ie_inc = nullptr;      ///< 1 per element: internal energy increment [mJ]
+  double* hg_inc = nullptr;      ///< 1 per element: hourglass energy increment [mJ]
+  double* dt_elem = nullptr;     ///< 1 per element: stable time step [s]
+  const double* mass_factor = nullptr;  ///< 1 per element: mass scaling factor
+  const material::Material* mat = nullptr;
+  int ns = 0;                    ///< material state size per point
+  double E0 = 0, G0 = 0;         ///< elastic moduli [MPa]
+  double hourglass = 0;          ///< hourglass stiffness scale
+  double c_elastic = 0;          ///< nu / (1 - nu)
+  double dtp = 0;                ///< length of the interval the velocities act over [s]
+  double wave_speed = 0;         ///< dilatational wave speed [mm/s]
+};
+
+/// Process elements [begin, end), `width` (1 or 4) side by side and the rest
+/// one by one.  Returns the lowest inverted element in the range, or -1.
+using ElementRangeFn = int (*)(const ElementView&, int begin, int end, int width);
+
+namespace baseline {
+int element_range(const ElementView& v, int begin, int end, int width);
+}
+namespace avx2 {
+int element_range(const ElementView& v, int begin, int end, int width);
+}
+
+/// The widest kernel this build and this CPU can run ("avx2" or "baseline"),
+/// unless DRAWBEND_ISA=baseline is set in the environment.
+ElementRangeFn element_kernel(const char** name = nullptr);
+/// Whether this build has the avx2 kernel and the CPU runs it.
+bool avx2_kernel_available();
+
+}  // namespace drawbend::fe

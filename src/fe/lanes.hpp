@@ -1,0 +1,60 @@
+#pragma once
+// Lanes of elements for the element loop: the same source computes one
+// element (T = double) or W elements side by side (T = a GCC vector of W
+// doubles, one element per lane).
+//
+// Why this keeps the results bit for bit.  A vector add, subtract, multiply,
+// divide or square root is the IEEE operation on each lane, so lane l of a
+// vector expression equals the scalar expression evaluated in the same order.
+// The kernels are written once, as templates, so the order is the same by
+// construction.  Two things could still break it, and both are excluded:
+//  - fused multiply-add (a*b + c rounded once): the vector ISA files are built
+//    with -ffp-contract=off and without -mfma;
+//  - reassociation (-ffast-math, -fassociative-math): never used.
+#include <algorithm>
+#include <cmath>
+
+namespace drawbend::fe {
+
+template <int W>
+struct Lanes;
+template <>
+struct Lanes<1> {
+  using type = double;
+};
+template <>
+struct Lanes<4> {
+  using type = double __attribute__((vector_size(32)));
+};
+
+/// Lane l of a value (a double has one lane).
+inline double lane(double v, int) { return v; }
+inline double& lane_ref(double& v, int) { return v; }
+template <class T>
+inline double lane(const T& v, int l) {
+  return v[l];
+}
+template <class T>
+inline auto& lane_ref(T& v, int l) {
+  return v[l];
+}
+
+/// r = the square root of each lane of v (IEEE, correctly rounded: as
+/// std::sqrt).  Written through a reference: returning a 32-byte vector by
+/// value would change the ABI between the baseline and AVX builds.
+inline void lane_sqrt(const double& v, double& r) { r = std::sqrt(v); }
+template <class T>
+inline void lane_sqrt(const T& v, T& r) {
+  for (int l = 0; l < static_cast<int>(sizeof(T) / sizeof(double)); ++l) r[l] = std::sqrt(v[l]);
+}
+
+/// True when every lane is positive (false for a NaN lane).
+inline bool all_positive(double v) { return v > 0.0; }
+template <class T>
+inline bool all_positive(const T& v) {
+  bool ok = true;
+  for (int l = 0; l < static_cast<int>(sizeof(T) / sizeof(double)); ++l) ok = ok && v[l] > 0.0;
+  return ok;
+}
+
+}  // namespace drawbend::fe
