@@ -1,9 +1,9 @@
 # Top-level wrapper.
 #   make        installs missing Debian packages, builds, regenerates every
 #               chapter at paper fidelity (the `full` draw-bend meshes) and
-#               writes build-full/report/study.html (about 80 min on 2 cores);
+#               writes build-full/report/study.html (37 min on 2 cores, fresh clone);
 #   make quick  the same report from the quick meshes of the test suite in
-#               build/report/study.html (about 20 min on 2 cores);
+#               build/report/study.html (quicker: the quick meshes of `make test`);
 #   make test   builds and runs the CTest suite (unit + chapter + report) in build/.
 BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
