@@ -115,12 +115,12 @@ int element_block(const ElementView& ev, int e0) {
   for (int a = 0; a < 8; ++a)
     for (int l = 0; l < W; ++l) {
       const int i = ev.hex[e0 + l][a];
-      lane_ref(x[a], l) = ev.x[i];
-      lane_ref(y[a], l) = ev.y[i];
-      lane_ref(z[a], l) = ev.z[i];
-      lane_ref(v[a][0], l) = ev.vx[i];
-      lane_ref(v[a][1], l) = ev.vy[i];
-      lane_ref(v[a][2], l) = ev.vz[i];
+      set_lane(x[a], l, ev.x[i]);
+      set_lane(y[a], l, ev.y[i]);
+      set_lane(z[a], l, ev.z[i]);
+      set_lane(v[a][0], l, ev.vx[i]);
+      set_lane(v[a][1], l, ev.vy[i]);
+      set_lane(v[a][2], l, ev.vz[i]);
     }
   HexGeometryT<T> g;
   if (!hex_geometry_t(x, y, z, g)) {
@@ -162,7 +162,7 @@ int element_block(const ElementView& ev, int e0) {
     }
   }
   T rbar;
-  for (int l = 0; l < W; ++l) lane_ref(rbar, l) = ev.hg_ratio[e0 + l];
+  for (int l = 0; l < W; ++l) set_lane(rbar, l, ev.hg_ratio[e0 + l]);
   const T c = rbar * ev.c_elastic + (1.0 - rbar);
   LCl[2][2] = -c * (LCl[0][0] + LCl[1][1]);
   T LC[3][3];
@@ -182,7 +182,7 @@ int element_block(const ElementView& ev, int e0) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) Lmid[i][j] = Lg[i][0] * Mi[0][j] + Lg[i][1] * Mi[1][j] + Lg[i][2] * Mi[2][j];
     for (int k = 0; k < 6; ++k)
-      for (int l = 0; l < W; ++l) lane_ref(s[gp][k], l) = ev.sig[12 * (e0 + l) + 6 * gp + k];
+      for (int l = 0; l < W; ++l) set_lane(s[gp][k], l, ev.sig[12 * (e0 + l) + 6 * gp + k]);
     rotate_and_strain(Lmid, dtp, s[gp], deps[gp]);
   }
   // ... the material update, one point at a time, with the stress power
@@ -210,13 +210,14 @@ int element_block(const ElementView& ev, int e0) {
       ie += w;
     }
     ev.ie_inc[e] = 0.5 * lane(V, l) * ie;
-    lane_ref(ratio, l) = 0.5 * (mat.tangent_ratio(&ev.sig[12 * e], st[0]) + mat.tangent_ratio(&ev.sig[12 * e + 6], st[1]));
+    const double r0 = mat.tangent_ratio(&ev.sig[12 * e], st[0]), r1 = mat.tangent_ratio(&ev.sig[12 * e + 6], st[1]);
+    set_lane(ratio, l, 0.5 * (r0 + r1));
   }
   T sp[6], sm[6];
   for (int k = 0; k < 6; ++k)
     for (int l = 0; l < W; ++l) {
-      lane_ref(sp[k], l) = ev.sig[12 * (e0 + l) + k];
-      lane_ref(sm[k], l) = ev.sig[12 * (e0 + l) + 6 + k];
+      set_lane(sp[k], l, ev.sig[12 * (e0 + l) + k]);
+      set_lane(sm[k], l, ev.sig[12 * (e0 + l) + 6 + k]);
     }
   // Internal forces: mean part (V/2)(sig+ + sig-) . B_a ...
   T smean[6], f[8][3];
@@ -250,7 +251,7 @@ int element_block(const ElementView& ev, int e0) {
     }
   T Q[6];  // [mode xi*eta: 3][mode xi*eta*zeta: 3]
   for (int k = 0; k < 6; ++k)
-    for (int l = 0; l < W; ++l) lane_ref(Q[k], l) = ev.hgq[6 * (e0 + l) + k];
+    for (int l = 0; l < W; ++l) set_lane(Q[k], l, ev.hgq[6 * (e0 + l) + k]);
   for (int i = 0; i < 3; ++i) {
     const T K2 = i < 2 ? Er * V * ih2[i] / 3.0 : ev.G0 * V * (ih2[0] + ih2[1]) / 3.0;
     const T K3 = Er * V * ih2[i] / 9.0;

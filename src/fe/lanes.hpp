@@ -27,16 +27,17 @@ struct Lanes<4> {
   using type = double __attribute__((vector_size(32)));
 };
 
-/// Lane l of a value (a double has one lane).
+/// Lane l of a value (a double has one lane), and setting it (a setter, not
+/// a reference: Clang binds no reference to a vector element).
 inline double lane(double v, int) { return v; }
-inline double& lane_ref(double& v, int) { return v; }
+inline void set_lane(double& v, int, double x) { v = x; }
 template <class T>
 inline double lane(const T& v, int l) {
   return v[l];
 }
 template <class T>
-inline auto& lane_ref(T& v, int l) {
-  return v[l];
+inline void set_lane(T& v, int l, double x) {
+  v[l] = x;
 }
 
 /// r = the square root of each lane of v (IEEE, correctly rounded: as

@@ -34,7 +34,8 @@ struct Block {
   Block(int n, unsigned seed) : ne(n) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(-1, 1);
-    const double base[8][3] = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}, {0, 0, .5}, {2, 0, .5}, {2, 1, .5}, {0, 1, .5}};
+    const double base[8][3] = {{0, 0, 0},  {2, 0, 0},  {2, 1, 0},  {0, 1, 0},
+                               {0, 0, .5}, {2, 0, .5}, {2, 1, .5}, {0, 1, .5}};
     for (int e = 0; e < n; ++e) {
       std::array<int, 8> c;
       for (int a = 0; a < 8; ++a) {
@@ -111,7 +112,8 @@ BOOST_AUTO_TEST_CASE(lanes_give_the_bits_of_one_element_at_a_time) {
   // The load is plastic: some material state moved.
   Block fresh(11, 7);
   bool yielded = false;
-  for (std::size_t i = 0; i < fresh.state.size(); ++i) yielded = yielded || one[12 * 11 + i] != fresh.state[i];  // outputs: sig (12 per element), then state
+  // The outputs are sig (12 per element), then the material states.
+  for (std::size_t i = 0; i < fresh.state.size(); ++i) yielded = yielded || one[12 * 11 + i] != fresh.state[i];
   BOOST_TEST(yielded);
   BOOST_TEST(bitwise_equal(one, run(&baseline::element_range, 4, 3)));
 #ifdef DRAWBEND_HAVE_AVX2_KERNEL
