@@ -17,6 +17,7 @@
 
 #include "bench_friction.hpp"
 #include "core/csv.hpp"
+#include "fe/element_view.hpp"
 #include "fe/solver.hpp"
 #include "material/j2_isotropic.hpp"
 
@@ -92,7 +93,10 @@ int main(int argc, char** argv) {
   std::vector<Case> cases = {{"bar_1600", bar(40, 8, 5)}, {"bar_8000", bar(100, 16, 5)}, {"drawbend_4800", strip_on_pin()}};
   if (!quick) cases.push_back({"bar_64000", bar(200, 40, 8)});
   CsvWriter w({"case", "elements", "threads", "ns_per_element_cycle"});
-  w.comment("explicit solver cost; machine: see README (performance section)");
+  const char* isa = "";
+  fe::element_kernel(&isa);
+  w.comment(std::string("explicit solver cost; element kernel: ") + isa + "; machine: see README (performance section)");
+  std::cout << "element kernel: " << isa << "\n";
   const int maxt = omp_get_num_procs();
   if (friction_only) cases.clear();
   for (auto& c : cases) {

@@ -3,9 +3,10 @@
 // The element itself is described in fe/element_kernel.hpp.
 #include <algorithm>
 #include <cstdlib>
-#include <cstring>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "fe/element_view.hpp"
 #include "fe/solver.hpp"
@@ -22,14 +23,17 @@ bool avx2_kernel_available() {
 
 ElementRangeFn element_kernel(const char** name) {
   const char* env = std::getenv("DRAWBEND_ISA");
-  const bool want_baseline = env && std::strcmp(env, "baseline") == 0;
+  const std::string want = env ? env : "";
+  if (!want.empty() && want != "baseline" && want != "avx2")
+    std::cerr << "warning: DRAWBEND_ISA='" << want << "' is neither 'baseline' nor 'avx2'; ignored\n";
 #ifdef DRAWBEND_HAVE_AVX2_KERNEL
-  if (!want_baseline && avx2_kernel_available()) {
+  if (want != "baseline" && avx2_kernel_available()) {
     if (name) *name = "avx2";
     return &avx2::element_range;
   }
 #endif
-  (void)want_baseline;
+  if (want == "avx2")
+    std::cerr << "warning: DRAWBEND_ISA=avx2, but this build or this CPU has no AVX2 kernel; using the baseline\n";
   if (name) *name = "baseline";
   return &baseline::element_range;
 }
