@@ -281,7 +281,7 @@ int element_block(const ElementView& ev, int e0) {
   for (int l = 0; l < W; ++l) {
     const int e = e0 + l;
     ev.hg_inc[e] = lane(ehg, l);
-    const double len = 2.0 * std::min({lane(g.h[0], l), lane(g.h[1], l), lane(g.h[2], l)});  // hex_stable_length
+    const double len = hex_stable_length(lane(g.h[0], l), lane(g.h[1], l), lane(g.h[2], l));
     ev.dt_elem[e] = len / ev.wave_speed * std::sqrt(ev.mass_factor[e]);
   }
   return -1;

@@ -59,8 +59,7 @@ bool hex_geometry(const double x[8], const double y[8], const double z[8], HexGe
 /// Element size for the critical time step: 2 min(h), twice the smallest
 /// half-length (equal to V / largest face area for a parallelepiped).  The
 /// one definition used by the mass scaling and by every cycle's time step.
-inline double hex_stable_length(const HexGeometry& g) {
-  return 2.0 * std::min({g.h[0], g.h[1], g.h[2]});
-}
+inline double hex_stable_length(double h0, double h1, double h2) { return 2.0 * std::min({h0, h1, h2}); }
+inline double hex_stable_length(const HexGeometry& g) { return hex_stable_length(g.h[0], g.h[1], g.h[2]); }
 
 }  // namespace drawbend::fe
