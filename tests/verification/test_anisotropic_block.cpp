@@ -44,7 +44,7 @@ static void slide(double theta_deg, double psi_deg, bool corotational) {
   rd.mu.fill(0.2);
   td.mu.fill(0.1);
   auto& cp = m.add_rigid_contact("floor", {}, "zmin", std::make_shared<friction::SurfaceLaw>(rd, td, 100));
-  cp.texture_axis = {1, 0, 0};
+  m.rolling_direction = {1, 0, 0};
   cp.texture = corotational ? fe::ContactPair::Texture::corotational : fe::ContactPair::Texture::fixed;
   const double th = theta_deg * M_PI / 180, psi = psi_deg * M_PI / 180;
   fe::Step turn;  // trapezoidal spin: total angle = w * 0.75 T
