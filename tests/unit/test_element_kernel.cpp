@@ -88,6 +88,7 @@ struct Block {
     v.mass_factor = mf.data();
     v.mat = &mat;
     v.ns = mat.state_size();
+    v.spin = mat.uses_spin();
     v.E0 = mat.youngs_modulus(), v.G0 = mat.shear_modulus();
     v.hourglass = 0.1;
     v.c_elastic = 0.33 / 0.67;
