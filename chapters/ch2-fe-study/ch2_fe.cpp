@@ -87,11 +87,11 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("fe_ms_low", fmt(s_ms.mass_scaling));
   c.value("fe_FX", fmt(s.back_tension), "N");
   for (const auto* r : {&fr, &ff, &fm, &gf, &gr}) {
-    c.checks().claim("ch2.fe." + r->spec.name + ".energy", "energy balance error < 1 %, " + r->spec.name,
+    c.checks().claim(study::Kind::health, "ch2.fe." + r->spec.name + ".energy", "energy balance error < 1 %, " + r->spec.name,
                      r->balance_error < 0.01, "balance error " + fmt(r->balance_error, 3));
-    c.checks().claim("ch2.fe." + r->spec.name + ".quasistatic", "kinetic/internal energy < 5 %, " + r->spec.name,
+    c.checks().claim(study::Kind::health, "ch2.fe." + r->spec.name + ".quasistatic", "kinetic/internal energy < 5 %, " + r->spec.name,
                      r->kinetic_ratio < 0.05, "KE/IE " + fmt(r->kinetic_ratio, 3));
-    c.checks().claim("ch2.fe." + r->spec.name + ".hourglass", "hourglass/internal energy < 5 %, " + r->spec.name,
+    c.checks().claim(study::Kind::health, "ch2.fe." + r->spec.name + ".hourglass", "hourglass/internal energy < 5 %, " + r->spec.name,
                      r->hourglass_ratio < 0.05, "HG/IE " + fmt(r->hourglass_ratio, 3));
   }
 
@@ -112,11 +112,11 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   const auto thesis_angle = study::scalar(sc, "ch2_contact_angle");
   const std::string res = "one node spacing round the pin (" + fmt(node_deg, 3) + " deg at " + fmt(s.element_length) +
                           " mm elements): the arc ends are interpolated between nodes";
-  c.checks().agree("ch2.fe.contact_start", "real contact start angle, centre row", thesis_start.value, arc.start_deg,
+  c.checks().agree(study::Kind::simulated, "ch2.fe.contact_start", "real contact start angle, centre row", thesis_start.value, arc.start_deg,
                    node_deg, "deg", res);
-  c.checks().agree("ch2.fe.contact_end", "real contact end angle, centre row", thesis_end.value, arc.end_deg, node_deg,
+  c.checks().agree(study::Kind::simulated, "ch2.fe.contact_end", "real contact end angle, centre row", thesis_end.value, arc.end_deg, node_deg,
                    "deg", res);
-  c.checks().agree("ch2.fe.contact_angle", "real contact angle, centre row", thesis_angle.value, arc.angle(),
+  c.checks().agree(study::Kind::simulated, "ch2.fe.contact_angle", "real contact angle, centre row", thesis_angle.value, arc.angle(),
                    2 * node_deg, "deg", "two node spacings: both ends interpolated");
   c.value("arc_start", fmt_fixed(arc.start_deg, 1), "deg");
   c.value("arc_end", fmt_fixed(arc.end_deg, 1), "deg");
@@ -132,7 +132,7 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("edge_middle", fmt_fixed(pe.middle, 1), "MPa");
   c.value("p_mean", fmt_fixed(fr.mean_pressure(), 1), "MPa");
   // Sec. 2.3.1: peaks at entry and exit above the mid-wrap pressure.
-  c.checks().claim("ch2.fe.entry_exit_peaks", "pressure peaks at entry and exit above mid-wrap (Sec. 2.3.1)",
+  c.checks().claim(study::Kind::simulated, "ch2.fe.entry_exit_peaks", "pressure peaks at entry and exit above mid-wrap (Sec. 2.3.1)",
                    pc.entry > pc.middle && pc.exit > pc.middle,
                    "entry " + fmt(pc.entry, 3) + ", mid " + fmt(pc.middle, 3) + ", exit " + fmt(pc.exit, 3) + " MPa");
   // Sec. 2.3.1: the frictionless maximum pressure is 1.2 % below the mu = 0.1 one.
@@ -142,7 +142,7 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   const double dmax = 100 * (pmax_r - pmax_f) / pmax_r;
   c.value("pmax_diff", fmt_fixed(dmax, 1), "%");
   c.value("pmax_coulomb", fmt_fixed(pmax_r, 1), "MPa");
-  c.checks().agree("ch2.fe.max_pressure_frictionless_diff", "max pressure, mu = 0.1 over frictionless, percent",
+  c.checks().agree(study::Kind::simulated, "ch2.fe.max_pressure_frictionless_diff", "max pressure, mu = 0.1 over frictionless, percent",
                    study::scalar(sc, "ch2_max_pressure_frictionless_diff").value, dmax, 5.0, "%",
                    "5 points: a single-node maximum at the map's resolution moves by several per cent between runs");
 
@@ -168,7 +168,7 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("eps_out_max", fmt_fixed(100 * eo_max, 2), "%");
   c.value("eps_in_min", fmt_fixed(100 * ei_min, 2), "%");
   c.value("eps_bend", fmt_fixed(100 * eb, 2), "%");
-  c.checks().claim("ch2.fe.outside_strain_above_bending", "peak outside strain above pure bending ln(1+t/(2R+t))",
+  c.checks().claim(study::Kind::simulated, "ch2.fe.outside_strain_above_bending", "peak outside strain above pure bending ln(1+t/(2R+t))",
                    eo_max > eb, fmt(100 * eo_max, 3) + " % vs " + fmt(100 * eb, 3) + " %");
   // The steady state (Sec. 2.3.2: the strains reach a uniform distribution):
   // the whole wrap is steady once the strip leaving it, at the exit tangent,
@@ -196,11 +196,11 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("d_steady_strain", fmt_fixed(d_strain, 1), "mm");
   c.value("ratio_steady_strain", fmt_fixed(d_strain / Lw, 2));
   c.value("ratio_steady_force", fmt_fixed(d_force / Lw, 2));
-  c.checks().agree("ch2.fe.steady_ratio", "slide to steady strain / wrap length (Sec. 2.3.2)",
+  c.checks().agree(study::Kind::simulated, "ch2.fe.steady_ratio", "slide to steady strain / wrap length (Sec. 2.3.2)",
                    study::scalar(sc, "ch2_steady_ratio").value, d_strain / Lw, 0.3, "-",
                    "0.3: sections one element length apart (0.09 of the wrap at 1 mm) and the 2 % band, "
                    "where the thesis read its plots");
-  c.checks().claim("ch2.fe.steady_before_window", "outlet force steady before the last third that is averaged",
+  c.checks().claim(study::Kind::health, "ch2.fe.steady_before_window", "outlet force steady before the last third that is averaged",
                    d_force < (2.0 / 3.0) * sim::draw_length(s),
                    fmt(d_force, 3) + " mm of " + fmt(sim::draw_length(s), 3));
 
@@ -218,9 +218,9 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("mu_ours_reg", fmt_fixed(mu_reg, 4));
   c.value("FY_coulomb", fmt_fixed(fr.F_out, 1), "N");
   const auto fb_lo = study::scalar(sc, "ch2_sim_bending_force_min"), fb_hi = study::scalar(sc, "ch2_sim_bending_force_max");
-  c.checks().agree("ch2.fe.FB", "bending force F_B, frictionless (Sec. 2.3.3)", 0.5 * (fb_lo.value + fb_hi.value), FB,
+  c.checks().agree(study::Kind::simulated, "ch2.fe.FB", "bending force F_B, frictionless (Sec. 2.3.3)", 0.5 * (fb_lo.value + fb_hi.value), FB,
                    0.5 * (fb_hi.value - fb_lo.value), "N", "the thesis's own range of simulated values");
-  c.checks().agree("ch2.fe.mu_retrieved", "mu retrieved by Eq. (2.3), input 0.1 (Sec. 2.3.3)",
+  c.checks().agree(study::Kind::simulated, "ch2.fe.mu_retrieved", "mu retrieved by Eq. (2.3), input 0.1 (Sec. 2.3.3)",
                    study::scalar(sc, "ch2_mu_retrieved").value, mu, 0.005, "-",
                    "5 % of the input: the retrieval error is the bending reactions' normal force, which depends on "
                    "bending stiffness at entry and exit");
@@ -240,7 +240,7 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   const double d_ms = 100 * (FB - FB_ms) / FB_ms;
   c.value("FB_low_ms", fmt_fixed(FB_ms, 1), "N");
   c.value("ms_diff", fmt_fixed(d_ms, 2), "%");
-  c.checks().claim("ch2.fe.mass_scaling_invariant", "F_B changes < 2 % between the two mass scalings (Fig. 2.5)",
+  c.checks().claim(study::Kind::simulated, "ch2.fe.mass_scaling_invariant", "F_B changes < 2 % between the two mass scalings (Fig. 2.5)",
                    std::abs(d_ms) < 2.0, fmt(d_ms, 3) + " %");
   auto conv = c.table({"element_length_mm", "F_B_N", "mu_eq_2_3", "p_max_MPa", "contact_arc_deg"},
                       "mesh convergence, 12.7 mm pin (half model)");

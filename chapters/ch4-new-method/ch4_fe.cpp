@@ -119,14 +119,14 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     // F_B: our flow curve is a Swift fit to the NGTC tensile data (Table 5.1);
     // the thesis's input curve is not printed, and F_B scales with the flow
     // stress at the bending strain (about 8 % on the 12.7 mm pin).
-    c.checks().agree(id + ".FB", "T4.1 bending force F_B, pin " + d + " mm", t41.number(a, "FB_N"), FB.back(),
+    c.checks().agree(study::Kind::simulated, id + ".FB", "T4.1 bending force F_B, pin " + d + " mm", t41.number(a, "FB_N"), FB.back(),
                      0.10 * t41.number(a, "FB_N"), "N",
                      "10 %: different hardening input (Swift fit of Table 5.1) and code (H3DMAP vs ours)");
-    c.checks().agree(id + ".FT", "T4.2 friction force F_T, pin " + d + " mm", t42.number(b, "FT_N"), FT.back(),
+    c.checks().agree(study::Kind::simulated, id + ".FT", "T4.2 friction force F_T, pin " + d + " mm", t42.number(b, "FT_N"), FT.back(),
                      0.15 * t42.number(b, "FT_N"), "N",
                      "15 %: F_T is a difference of forces, and mu(p) of Table 3.3 weighs the pressure peaks, "
                      "which depend on mesh and contact algorithm");
-    c.checks().agree(id + ".c", "T4.2 pressure ratio c, pin " + d + " mm", t42.number(b, "c"), cs.back(), 0.01, "-",
+    c.checks().agree(study::Kind::simulated, id + ".c", "T4.2 pressure ratio c, pin " + d + " mm", t42.number(b, "c"), cs.back(), 0.01, "-",
                      "0.01: c - 1 is a few per cent; F_T's tolerance moves c by up to 0.007");
     tab.row({d, fmt_fixed(FXp, 1), t41.text(a, "FY_prime_N"), fmt_fixed(FYp, 1), t41.text(a, "FB_N"),
              fmt_fixed(FB.back(), 1), t42.text(b, "FY_N"), fmt_fixed(FY, 1), t42.text(b, "FT_N"),
@@ -139,11 +139,11 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     // Quasi-static invariants of the runs (printed by each run, checked here).
     for (const auto* x : {&r.free, &r.strib}) {
       const std::string rid = id + (x == &r.free ? ".frictionless" : ".stribeck");
-      c.checks().claim(rid + ".energy", "energy balance error < 1 %, " + x->spec.name, x->balance_error < 0.01,
+      c.checks().claim(study::Kind::health, rid + ".energy", "energy balance error < 1 %, " + x->spec.name, x->balance_error < 0.01,
                        "balance error " + fmt(x->balance_error, 3));
-      c.checks().claim(rid + ".quasistatic", "kinetic/internal energy < 5 % at the end (the usual quasi-static limit), " + x->spec.name,
+      c.checks().claim(study::Kind::health, rid + ".quasistatic", "kinetic/internal energy < 5 % at the end (the usual quasi-static limit), " + x->spec.name,
                        x->kinetic_ratio < 0.05, "KE/IE " + fmt(x->kinetic_ratio, 3));
-      c.checks().claim(rid + ".hourglass", "hourglass/internal energy < 5 %, " + x->spec.name,
+      c.checks().claim(study::Kind::health, rid + ".hourglass", "hourglass/internal energy < 5 %, " + x->spec.name,
                        x->hourglass_ratio < 0.05, "HG/IE " + fmt(x->hourglass_ratio, 3));
     }
     PinTest pt;
@@ -156,10 +156,10 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   // Trends the chapter states: F_B, F_T and c fall as the pin grows (Tables
   // 4.1/4.2) and so does the conventional mu (Fig. 4.9, Sec. 4.3).
   auto falls = [](const std::vector<double>& x) { return x[0] > x[1] && x[1] > x[2]; };
-  c.checks().claim("ch4.fe.FB_falls", "F_B falls with pin diameter (Table 4.1)", falls(FB), "ours");
-  c.checks().claim("ch4.fe.FT_falls", "F_T falls with pin diameter (Table 4.2)", falls(FT), "ours");
-  c.checks().claim("ch4.fe.c_falls", "c falls with pin diameter (Table 4.2)", falls(cs), "ours");
-  c.checks().claim("ch4.fe.mu_conv_falls", "conventional mu falls with pin diameter (Fig. 4.9)", falls(mu_conv),
+  c.checks().claim(study::Kind::simulated, "ch4.fe.FB_falls", "F_B falls with pin diameter (Table 4.1)", falls(FB), "ours");
+  c.checks().claim(study::Kind::simulated, "ch4.fe.FT_falls", "F_T falls with pin diameter (Table 4.2)", falls(FT), "ours");
+  c.checks().claim(study::Kind::simulated, "ch4.fe.c_falls", "c falls with pin diameter (Table 4.2)", falls(cs), "ours");
+  c.checks().claim(study::Kind::simulated, "ch4.fe.mu_conv_falls", "conventional mu falls with pin diameter (Fig. 4.9)", falls(mu_conv),
                    "ours: " + fmt(mu_conv[0], 4) + ", " + fmt(mu_conv[1], 4) + ", " + fmt(mu_conv[2], 4));
 
   // 3. Maps, profiles, histories.  The frictionless maps are also exported in
@@ -229,13 +229,13 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("n2_cond", fmt(n2.condition, 3));
   // Sec. 4.4: "The new method well predicted the input Stribeck friction curve
   // in the range from 0 MPa to 40 MPa": within 5 % of the input there.
-  c.checks().claim("ch4.fe.new_method_0_40", "new method (2nd order) within 5 % of the input over 0-40 MPa (Sec. 4.4)",
+  c.checks().claim(study::Kind::simulated, "ch4.fe.new_method_0_40", "new method (2nd order) within 5 % of the input over 0-40 MPa (Sec. 4.4)",
                    err_lo < 0.05, "largest relative error " + fmt(100 * err_lo, 3) + " %");
   // Sec. 4.4: "the conventional method overestimates the friction coefficients":
   // mu_conv above the input mu at its own average pressure, every pin.
   bool over = true;
   for (std::size_t i = 0; i < runs.size(); ++i) over = over && mu_conv[i] > stribeck_mu(v, P_avg[i], law);
-  c.checks().claim("ch4.fe.conventional_overestimates", "conventional mu above the input mu at P_avg, all pins (Fig. 4.10)",
+  c.checks().claim(study::Kind::simulated, "ch4.fe.conventional_overestimates", "conventional mu above the input mu at P_avg, all pins (Fig. 4.10)",
                    over, "ours");
 
   // 5. Contact area per pressure range, all pins (Fig. 4.11: 12.7 mm pin).
@@ -260,7 +260,7 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   total += above;
   c.value("area_above_split", fmt_fixed(100 * above / std::max(total, 1e-12), 1), "%");
   // Sec. 4.4: "Pressures over 40 MPa exist only at small areas of 12.7 mm pin".
-  c.checks().claim("ch4.fe.small_area_above_40", "area above 40 MPa < 10 % of the 12.7 mm pin's contact (Sec. 4.4)",
+  c.checks().claim(study::Kind::simulated, "ch4.fe.small_area_above_40", "area above 40 MPa < 10 % of the 12.7 mm pin's contact (Sec. 4.4)",
                    above < 0.10 * total, fmt(100 * above / std::max(total, 1e-12), 3) + " %");
 }
 

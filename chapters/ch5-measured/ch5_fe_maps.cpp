@@ -141,11 +141,11 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
       cpu += r.wall_seconds;
       const std::string id = "ch5.fe." + r.spec.name;
       // Quasi-static invariants of each run.
-      c.checks().claim(id + ".energy", "energy balance error < 1 %, " + r.spec.name, r.balance_error < 0.01,
+      c.checks().claim(study::Kind::health, id + ".energy", "energy balance error < 1 %, " + r.spec.name, r.balance_error < 0.01,
                        "balance error " + fmt(r.balance_error, 3) + "; 1 %: the usual explicit-dynamics limit");
-      c.checks().claim(id + ".quasistatic", "kinetic/internal energy < 5 % at the end, " + r.spec.name,
+      c.checks().claim(study::Kind::health, id + ".quasistatic", "kinetic/internal energy < 5 % at the end, " + r.spec.name,
                        r.kinetic_ratio < 0.05, "KE/IE " + fmt(r.kinetic_ratio, 3) + "; 5 %: the usual quasi-static limit");
-      c.checks().claim(id + ".hourglass", "hourglass/internal energy < 5 %, " + r.spec.name,
+      c.checks().claim(study::Kind::health, id + ".hourglass", "hourglass/internal energy < 5 %, " + r.spec.name,
                        r.hourglass_ratio < 0.05, "HG/IE " + fmt(r.hourglass_ratio, 3) + "; 5 %: the usual limit");
       if (variant == "base") {
         const std::string d = fmt(pin);

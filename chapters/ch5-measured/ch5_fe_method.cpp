@@ -143,7 +143,7 @@ void diluted_new_method(Chapter& c, const Inputs& in, const FeMaps& m) {
                  rd ? "fig_5_28_fe" : "fig_5_29_fe", std::string(dir) + " (our maps)");
     // Sec. 5.9.1: the lines flatten with speed, now on our lines.
     const auto& L = ours[dir];
-    c.checks().claim("ch5.fe." + std::string(dir) + ".slope_falls_with_speed",
+    c.checks().claim(study::Kind::simulated, "ch5.fe." + std::string(dir) + ".slope_falls_with_speed",
                      std::string("a1 from our maps decreases with speed, ") + dir + " (Sec. 5.9.1)",
                      L[0].mu.a[1] > L[1].mu.a[1] && L[1].mu.a[1] > L[2].mu.a[1], "order of our slopes");
   }
@@ -153,7 +153,7 @@ void diluted_new_method(Chapter& c, const Inputs& in, const FeMaps& m) {
   for (double pin : kTwoPins) {
     const double p = m.run("base", pin).mean_pressure();
     const double rd = ours["RD"][0].mu(p), td = ours["TD"][0].mu(p);
-    c.checks().claim("ch5.fe.RD_above_TD.v6.35.d" + fmt(pin),
+    c.checks().claim(study::Kind::simulated, "ch5.fe.RD_above_TD.v6.35.d" + fmt(pin),
                      "mu_RD > mu_TD from our maps at 6.35 mm/s, at the mean pressure of the " + fmt(pin) +
                          " mm pin (Sec. 5.9.1)",
                      rd > td, "mu_RD " + fmt(rd, 4) + ", mu_TD " + fmt(td, 4) + " at " + fmt(p, 3) + " MPa");
@@ -197,7 +197,7 @@ void undiluted_new_method(Chapter& c, const Inputs& in, const FeMaps& m) {
     const double p = m.run("base", pin).mean_pressure();
     falls = falls && lines[0].mu(p) > lines[1].mu(p) && lines[1].mu(p) > lines[2].mu(p);
   }
-  c.checks().claim("ch5.fe.undiluted.mu_falls_with_speed",
+  c.checks().claim(study::Kind::simulated, "ch5.fe.undiluted.mu_falls_with_speed",
                    "undiluted mu from our maps falls with speed at each pin's mean pressure (Fig. 5.30, Table 5.17)",
                    falls, "order of our mu(p) at the maps' mean pressures");
 }
