@@ -23,6 +23,7 @@
 #include "analysis/pressure_ratio.hpp"
 #include "analysis/rope.hpp"
 #include "analysis/stribeck.hpp"
+#include "material/swift_fit.hpp"
 #include "ch4_steps.hpp"
 #include "sim/case_pool.hpp"
 #include "sim/map_tools.hpp"
@@ -81,7 +82,31 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     s.friction = "{ law = \"stribeck\", table = \"" + c.data("thesis/table_3_3.csv") + "\", interval = 100 }";
     jobs.push_back({s, c.out("runs/" + s.name)});
   }
+  // The stated cause of ch4.fe.d42.FB (the low-strain part of the flow curve),
+  // tested: the 42 mm frictionless run again on the alternative Swift fit that
+  // takes the 0.2 % yield stress at eps_p = 0.002 (fit_swift(..., 0.002): an
+  // initial yield about 8 % lower, under 1 % change beyond eps_p = 0.05).
+  {
+    const CsvTable t51 = read_csv(c.data("thesis/table_5_1.csv"));
+    const auto& rd = t51.rows.front();
+    const material::SwiftLaw alt =
+        material::fit_swift(t51.number(rd, "YS02_MPa"), t51.number(rd, "UTS_MPa"), t51.number(rd, "n"), 0.002);
+    CsvWriter w({"plastic_strain", "true_stress_MPa"});
+    w.comment("AA5754-O RD, Swift fit with the 0.2 % yield stress at eps_p = 0.002 (fit_swift(..., 0.002)): K = " +
+              fmt(alt.K, 10) + " MPa, eps0 = " + fmt(alt.eps0, 10) + ", n = " + fmt(alt.n));
+    w.comment("units: plastic_strain: -; true_stress_MPa: MPa");
+    for (double e : material::swift_table_strains())
+      w.row({fmt(e, 6), fmt_fixed(alt.stress(e), material::swift_table_stress_decimals)});
+    const std::string path = c.out("tables/aa5754_o_rd_swift_eps_y_0.002.csv");
+    w.save(path);
+    sim::DrawBendSpec s = jobs[jobs.size() - 2].spec;  // the 42 mm frictionless run
+    s.hardening = std::filesystem::absolute(path).string();  // the deck resolves relative paths from its own dir
+    s.name += "_swift_eps_y_0.002";
+    jobs.push_back({s, c.out("runs/" + s.name)});
+  }
   std::vector<sim::DrawBendResult> all = sim::run_drawbend_all(jobs, o.reuse);
+  const sim::DrawBendResult alt42 = std::move(all.back());
+  all.pop_back();
   std::vector<PinRuns> runs;
   for (std::size_t i = 0; i + 1 < all.size(); i += 2) {
     PinRuns r;
@@ -92,6 +117,13 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   c.value("fe_wall", fmt_fixed(wall / 60.0, 1), "min");
+  {
+    const double fb_base = runs.back().free.tension_rise(), fb_alt = alt42.tension_rise();
+    const double fb_thesis = t41.number(t41.rows.back(), "FB_N");
+    c.value("FB_d42_alt", fmt_fixed(fb_alt, 1), "N");
+    c.value("FB_d42_alt_change", fmt_fixed(100 * (fb_alt - fb_base) / fb_base, 1), "%");
+    c.value("FB_d42_alt_vs_thesis", fmt_fixed(100 * (fb_alt - fb_thesis) / fb_thesis, 1), "%");
+  }
   c.value("fe_speed", fmt(v), "mm/s");
   c.value("fe_h", fmt(o.base.element_length), "mm");
   c.value("fe_across", std::to_string(o.base.across));
@@ -126,8 +158,13 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
                      0.15 * t42.number(b, "FT_N"), "N",
                      "15 %: F_T is a difference of forces, and mu(p) of Table 3.3 weighs the pressure peaks, "
                      "which depend on mesh and contact algorithm");
-    c.checks().agree(study::Kind::simulated, id + ".c", "T4.2 pressure ratio c, pin " + d + " mm", t42.number(b, "c"), cs.back(), 0.01, "-",
-                     "0.01: c - 1 is a few per cent; F_T's tolerance moves c by up to 0.007");
+    // c: with F_X = F_X' (the same back tension), c - 1 = F_T/(F_X' + F_Y')
+    // exactly, so c carries F_T's relative uncertainty on c - 1 only (stated
+    // before the run): 15 % of the thesis's c - 1, plus half its printed digit.
+    const auto c_printed = study::printed(t42, b, "c");
+    c.checks().agree(study::Kind::simulated, id + ".c", "T4.2 pressure ratio c, pin " + d + " mm", c_printed.value,
+                     cs.back(), 0.15 * (c_printed.value - 1) + c_printed.half_ulp, "-",
+                     "c - 1 = F_T/(F_X'+F_Y'): F_T's 15 % on c - 1, + half the printed digit");
     tab.row({d, fmt_fixed(FXp, 1), t41.text(a, "FY_prime_N"), fmt_fixed(FYp, 1), t41.text(a, "FB_N"),
              fmt_fixed(FB.back(), 1), t42.text(b, "FY_N"), fmt_fixed(FY, 1), t42.text(b, "FT_N"),
              fmt_fixed(FT.back(), 1), t42.text(b, "c"), fmt_fixed(cs.back(), 4), fmt_fixed(mu_conv.back(), 4),
@@ -259,9 +296,13 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   for (std::size_t k = 0; k < edges.size(); ++k) (edges[k] >= p_split ? above : total) += areas[0][k];
   total += above;
   c.value("area_above_split", fmt_fixed(100 * above / std::max(total, 1e-12), 1), "%");
-  // Sec. 4.4: "Pressures over 40 MPa exist only at small areas of 12.7 mm pin".
-  c.checks().claim(study::Kind::simulated, "ch4.fe.small_area_above_40", "area above 40 MPa < 10 % of the 12.7 mm pin's contact (Sec. 4.4)",
-                   above < 0.10 * total, fmt(100 * above / std::max(total, 1e-12), 3) + " %");
+  // Sec. 4.4: "Pressures over 40 MPa exist only at small areas of 12.7 mm pin":
+  // some area above 40 MPa, but less than 10 % of the contact.  A map without
+  // any area above 40 MPa does not test the claim and fails it.
+  c.checks().claim(study::Kind::simulated, "ch4.fe.small_area_above_40",
+                   "some, but under 10 %, of the 12.7 mm pin's contact above 40 MPa (Sec. 4.4)",
+                   above > 0 && above < 0.10 * total,
+                   fmt(100 * above / std::max(total, 1e-12), 3) + " % above 40 MPa");
 }
 
 }  // namespace ch4
