@@ -287,6 +287,12 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases) {
                    0.10 * e9, "kN", why10);
   c.checks().agree(study::Kind::measured, "ch6.cup.force_drop", "change of the punch force at 15 mm from case 1 to case 9 (Sec. 6.6.2, measured)",
                    dx, f9 - f1, 0.2, "kN", "the measured forces are printed to 0.1 kN, so their difference to 0.2 kN");
+  // The same health standard as the draw-bend runs of Chapters 2-5: hourglass
+  // energy under 5 % of the internal energy, for every cup run.
+  for (const auto& [id, r] : res)
+    c.checks().claim(study::Kind::health, "ch6.cup.hourglass.case" + id,
+                     "hourglass/internal energy < 5 %, cup case " + id + (full ? " (refined mesh)" : " (coarse mesh)"),
+                     r.hourglass_ratio < 0.05, "HG/IE " + fmt(r.hourglass_ratio, 3));
   // Claims of Secs. 6.6.1-6.6.2 tested on our numbers.
   c.checks().claim(study::Kind::simulated, "ch6.cup.force_falls_with_speed", "punch force at 15 mm lower at case 9 than at case 1 (Sec. 6.6.2)",
                    f9 < f1, "mu(p, v) falls with speed at the die-radius and punch pressures (tens of MPa)");
