@@ -32,6 +32,7 @@ void drawbend_pins(study::Chapter& c, const StribeckParams& s33, const sim::Draw
   const double mu_c = study::scalar(sc, "ch3_coulomb_mu_input").value;
   const double w_half = study::scalar(sc, "ch5_strip_width").value / 2;
   const double t = study::scalar(sc, "ch5_strip_thickness").value;
+  const auto ret_lo = study::scalar(sc, "ch3_coulomb_retrieval_min"), ret_hi = study::scalar(sc, "ch3_coulomb_retrieval_max");
   const CsvTable t51 = read_csv(c.data("thesis/table_5_1.csv"));
   const double ys = t51.number(t51.rows.front(), "YS02_MPa");  // RD
   const std::vector<double> pins{study::scalar(sc, "ch3_pin_diameter_small").value,
@@ -100,11 +101,15 @@ void drawbend_pins(study::Chapter& c, const StribeckParams& s33, const sim::Draw
     c.value("db_muc_d" + d, fmt_fixed(mu_cc, 4));
     c.value("db_mus_d" + d, fmt_fixed(mu_ss, 4));
     c.value("db_retrieved_d" + d, fmt_fixed(100 * mu_cc / mu_c, 1), "%");
-    // Sec. 3.5.2: "the input friction coefficient of 0.1 was well retrieved (95 to 97%)".
-    c.checks().agree(study::Kind::simulated, "ch3.fe.d" + d + ".coulomb_retrieved", "Coulomb mu retrieved by Eq. (2.3), percent of input, pin " + d + " mm",
-                     96.0, 100 * mu_cc / mu_c, 5.0, "%",
-                     "thesis 95-97 %; +-5 points: the bending reactions at entry and exit add normal force the rope "
-                     "formula ignores, and depend on mesh and contact stiffness");
+    // Sec. 3.5.2: "the input friction coefficient of 0.1 was well retrieved (95
+    // to 97%)".  Tolerance from the thesis's own numbers (stated before the
+    // run): the printed range over its three pins, 95-97 %, widened by half a
+    // printed unit at each end.
+    c.checks().agree(study::Kind::simulated, "ch3.fe.d" + d + ".coulomb_retrieved",
+                     "Coulomb mu retrieved by Eq. (2.3), percent of input, pin " + d + " mm",
+                     0.5 * (ret_lo.value + ret_hi.value), 100 * mu_cc / mu_c,
+                     0.5 * (ret_hi.value - ret_lo.value) + ret_lo.half_ulp, "%",
+                     "the thesis's printed range 95-97 % over its pins + half a printed unit");
     // Fig. 3.14: the retrieved Stribeck mu "comes close to the coefficient based
     // on the Stribeck curve" at the test's average pressure and speed.
     c.checks().agree(study::Kind::simulated, "ch3.fe.d" + d + ".stribeck_vs_curve", "Stribeck mu by Eq. (2.3) vs the input curve at P_avg, pin " + d + " mm",
