@@ -98,7 +98,7 @@ void synthetic_detection(Chapter& c, const Config& cfg) {
   c.value("s_null_flagged", std::to_string(all_null.flagged));
   c.value("s_worst_ratio", fmt(all_eff.worst_ratio, 3));
   c.value("s_maps", maps.label());
-  c.checks().claim("ch7.synth.detected", "every hidden effect is named by the loop's first step (all noise levels)",
+  c.checks().claim(study::Kind::verification, "ch7.synth.detected", "every hidden effect is named by the loop's first step (all noise levels)",
                    all_eff.detected == all_eff.sets,
                    "effects were sized to be detectable at the largest noise (10 N against 150-300 N friction forces)");
   // False alarms: the loop's family-wise level is alpha per data set; allow
@@ -107,14 +107,14 @@ void synthetic_detection(Chapter& c, const Config& cfg) {
   const double allowed = alpha + 2 * std::sqrt(alpha * (1 - alpha) / std::max(1, all_null.sets));
   c.value("s_alpha", fmt(alpha));
   c.value("s_null_rate_allowed", fmt(100 * allowed, 3), "%");
-  c.checks().claim("ch7.synth.null", "false-alarm rate on null sets at most alpha + 2 binomial SD (" +
+  c.checks().claim(study::Kind::verification, "ch7.synth.null", "false-alarm rate on null sets at most alpha + 2 binomial SD (" +
                                          fmt(100 * allowed, 3) + " % for " + std::to_string(all_null.sets) + " sets)",
                    rate <= allowed,
                    "Bonferroni over candidates plus the F test give a family-wise level of about alpha per set");
   c.value("s_null_worst_ratio", fmt(all_null.worst_ratio, 3));
   // Reference: the null sets, where the base model is the true model, give the
   // held-out RMS / noise a correct model reaches under the same folds.
-  c.checks().agree("ch7.synth.near_noise", "worst held-out RMS / noise sd after the loop, detected sets "
+  c.checks().agree(study::Kind::verification, "ch7.synth.near_noise", "worst held-out RMS / noise sd after the loop, detected sets "
                    "(reference: worst of the null sets, fitted by the true model)", all_null.worst_ratio,
                    all_eff.worst_ratio, 2.0 / std::sqrt(2.0 * n_rows), "-",
                    "two sampling standard deviations of an RMS over the n rows of a set, 1/sqrt(2n) each; the null sets' "
