@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -345,13 +346,18 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   // what it holds and what was removed, plus the residual the balance check
   // measures (fe/solver.hpp, Energies::balance_error).
   const double held = e.kinetic + e.internal + e.hourglass + e.damping - e.initial_kinetic;
+  // One number of decimals for every term (4 significant digits of the largest), so the sum reads exactly.
+  double big = std::abs(e.external_work);
+  for (double v : {e.kinetic, e.internal, e.hourglass, e.damping, e.initial_kinetic}) big = std::max(big, std::abs(v));
+  const int dec = big > 0 ? std::clamp(3 - static_cast<int>(std::floor(std::log10(big))), 0, 12) : 3;
+  auto E = [dec](double v) { return fmt_fixed(v, dec); };
   log << "summary: " << r.cycles << " cycles in " << fmt(r.wall_seconds, 3) << " s wall\n"
-      << "  energy [mJ]: work on the sheet " << fmt_fixed(e.external_work, 3) << " = kinetic " << fmt_fixed(e.kinetic, 3)
-      << " + internal " << fmt_fixed(e.internal, 3) << " + hourglass " << fmt_fixed(e.hourglass, 3) << " + damping "
-      << fmt_fixed(e.damping, 3) << (e.initial_kinetic != 0 ? " - initial kinetic " + fmt_fixed(e.initial_kinetic, 3) : "")
-      << " + residual " << fmt_fixed(e.external_work - held, 3) << "\n"
-      << "  (the work includes " << fmt_fixed(e.friction, 3) << " mJ dissipated by friction and "
-      << fmt_fixed(e.contact_stored, 3) << " mJ held in the contact penalty springs)\n"
+      << "  energy [mJ]: work on the sheet " << E(e.external_work) << " = kinetic " << E(e.kinetic) << " + internal "
+      << E(e.internal) << " + hourglass " << E(e.hourglass) << " + damping " << E(e.damping)
+      << (e.initial_kinetic != 0 ? " - initial kinetic " + E(e.initial_kinetic) : "") << " + residual "
+      << E(e.external_work - held) << "\n"
+      << "  (the work is that of loads, supports and tools, friction included: friction dissipated "
+      << fmt(e.friction, 4) << " mJ; the contact penalty springs hold " << fmt(e.contact_stored, 4) << " mJ)\n"
       << "  energy balance error " << fmt(100 * r.energy_balance_error, 3) << " % of the largest energy flow; "
       << "hourglass/internal " << fmt(100 * r.hourglass_ratio, 3) << " %; kinetic/internal "
       << fmt(100 * r.kinetic_ratio, 3) << " %; mass scaling x" << fmt(1 + r.added_mass_ratio, 4)
