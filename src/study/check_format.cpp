@@ -120,7 +120,7 @@ std::string checks_html_table(const CsvTable& t, const std::string& caption) {
     os << "<tr class=\"row-" << html_escape(status) << "\"><td class=\"id\">" << html_escape(t.text(r, "id"))
        << "</td>";
     if (kinds) os << "<td>" << html_escape(kind_of(t, r)) << "</td>";
-    os << "<td>" << html_escape(t.text(r, "quantity")) << "</td><td class=\"num\">"
+    os << "<td class=\"quantity\">" << html_escape(t.text(r, "quantity")) << "</td><td class=\"num\">"
        << html_escape(display_value(t.text(r, "thesis"), unit, tol)) << "</td><td class=\"num\">"
        << html_escape(display_value(t.text(r, "ours"), unit, tol)) << "</td><td class=\"num\">"
        << html_escape(display_tolerance(tol, unit)) << "</td><td>" << html_escape(display_unit(unit))

@@ -166,8 +166,7 @@ std::string expand_chapter(const std::string& markdown, const ChapterSource& ch)
 std::string assemble_report(const std::vector<ChapterSource>& chapters, const std::string& title,
                             const FrontInfo& info) {
   std::ostringstream os;
-  os << "---\ntitle: \"" << title << "\"\nlang: en\n---\n\n";
-  os << front_page(chapters, info);
+  os << front_yaml(chapters, info, title) << front_page(chapters, info);
   std::string stale_list;
   for (const auto& ch : chapters)
     if (!chapter_staleness(ch).empty()) stale_list += (stale_list.empty() ? "" : ", ") + ch.id;

@@ -181,17 +181,32 @@ std::string abstract_paragraph(const std::vector<ChapterSource>& chapters) {
   return s;
 }
 
+namespace {
+/// A YAML single-quoted scalar ('' for a quote; no line breaks).
+std::string yaml_quoted(const std::string& s) {
+  std::string o = "'";
+  for (char c : s) o += c == '\'' ? std::string("''") : c == '\n' ? std::string(" ") : std::string(1, c);
+  return o + "'";
+}
+}  // namespace
+
+std::string front_yaml(const std::vector<ChapterSource>& chapters, const FrontInfo& info, const std::string& title) {
+  std::ostringstream os;
+  os << "---\ntitle: " << yaml_quoted(title) << "\nlang: en\n"
+     << "subtitle: " << yaml_quoted("Reproduces: " + info.citation) << "\n"
+     << "date: " << yaml_quoted("Mesh tier: " + joined(chapter_values(chapters, "tier"), "unknown") +
+                                " (quick: the test suite's meshes, `make quick`; full: paper fidelity, `make`) \u00b7 "
+                                "computed by drawbend " + joined(chapter_versions(chapters), "unknown version") +
+                                " \u00b7 report assembled " + info.date)
+     << "\nabstract: " << yaml_quoted(abstract_paragraph(chapters)) << "\n---\n\n";
+  return os.str();
+}
+
 std::string front_page(const std::vector<ChapterSource>& chapters, const FrontInfo& info) {
+  (void)info;
   const auto all = load_all(chapters);
   std::ostringstream os;
-  os << "# About this report {#summary .unnumbered}\n\n"
-     << "::: {.front}\n"
-     << "**Reproduces:** " << info.citation << "\n\n"
-     << "**Mesh tier:** " << joined(chapter_values(chapters, "tier"), "unknown")
-     << " (quick: the test suite's meshes, `make quick`; full: paper fidelity, `make`)  \n"
-     << "**Computed by:** drawbend " << joined(chapter_versions(chapters), "unknown version") << "  \n"
-     << "**Report assembled:** " << info.date << "\n:::\n\n";
-  os << "## Abstract {.unnumbered}\n\n" << abstract_paragraph(chapters) << "\n\n";
+  os << "# About this report {#summary .unnumbered}\n\n";
 
   // Counts by kind.
   std::map<std::string, StatusCounts> by_kind;
@@ -265,7 +280,7 @@ std::string front_page(const std::vector<ChapterSource>& chapters, const FrontIn
       ++ndis;
       const std::string &unit = t.text(r, "unit"), &tol = t.text(r, "tolerance");
       nr << "<tr><td class=\"id\"><a href=\"#checks-" << c.ch->id << "\">" << html_escape(t.text(r, "id"))
-         << "</a></td><td>" << html_escape(t.text(r, "quantity")) << "</td><td class=\"num\">"
+         << "</a></td><td class=\"quantity\">" << html_escape(t.text(r, "quantity")) << "</td><td class=\"num\">"
          << html_escape(display_value(t.text(r, "thesis"), unit, tol)) << "</td><td class=\"num\">"
          << html_escape(display_value(t.text(r, "ours"), unit, tol)) << "</td><td class=\"num\">"
          << html_escape(display_tolerance(tol, unit)) << "</td><td>" << html_escape(display_unit(unit))

@@ -24,9 +24,13 @@ struct StatusCounts {
   void add(const std::string& status);
 };
 
-/// The front page (Markdown with some raw HTML tables): citation, tier,
-/// commit, date, abstract, counts by kind and per chapter, "Not reproduced",
-/// "Errata at a glance".
+/// The title block (Pandoc YAML metadata, shown before the table of
+/// contents): title, the thesis citation (subtitle), the tier, commit and
+/// date (date line), and the abstract.
+std::string front_yaml(const std::vector<ChapterSource>& chapters, const FrontInfo& info, const std::string& title);
+
+/// The first section (Markdown with raw HTML tables): counts by kind and per
+/// chapter, "Not reproduced", "Errata at a glance".
 std::string front_page(const std::vector<ChapterSource>& chapters, const FrontInfo& info);
 
 /// The one-paragraph abstract, generated from the checks.

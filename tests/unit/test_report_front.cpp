@@ -67,9 +67,13 @@ BOOST_AUTO_TEST_CASE(front_page_counts_by_kind) {
   BOOST_TEST(a.find("(2 checks) confirms 1 value and finds 1 erratum") != std::string::npos, a);
   BOOST_TEST(a.find("No check fails.") != std::string::npos, a);
   BOOST_TEST(a.find("quick tier") != std::string::npos, a);
+  const std::string y = front_yaml(chs, {"*T*", "2026-01-01"}, "It's a title");
+  BOOST_TEST(y.find("title: 'It''s a title'") != std::string::npos, y);
+  BOOST_TEST(y.find("subtitle: 'Reproduces: *T*'") != std::string::npos, y);
+  BOOST_TEST(y.find("Mesh tier: quick") != std::string::npos, y);
+  BOOST_TEST(y.find("2026-01-01") != std::string::npos, y);
+  BOOST_TEST(y.find("abstract: 'This report rebuilds") != std::string::npos, y);
   const std::string f = front_page(chs, {"*T*", "2026-01-01"});
-  BOOST_TEST(f.find("**Reproduces:** *T*") != std::string::npos);
-  BOOST_TEST(f.find("2026-01-01") != std::string::npos);
   BOOST_TEST(f.find(">168<") != std::string::npos);   // thesis value rounded to the tolerance
   BOOST_TEST(f.find(">120<") != std::string::npos);
   BOOST_TEST(f.find("168.29819") == std::string::npos);
