@@ -36,20 +36,18 @@ MapLibrary maps_for(const std::string& dir, const std::vector<double>& pins) {
 }  // namespace
 
 int loop_main(int argc, char** argv) {
-  if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
-    if (argc >= 2 && std::string(argv[1]) == "--help") {
-      std::cout << "usage: drawbend loop DATA.csv --out DIR [--maps DIR] [--cv auto|test|bt-block] [--folds 5]\n"
-                   "  [--permutations 999] [--seed N] [--alpha 0.05] [--bending linear|constant] [--figures DIR]\n";
-      return 0;
-    }
-    std::cerr << "drawbend loop: missing DATA.csv\n";
-    return 2;
-  }
-  const std::string data_path = argv[1];
+  const bool help = argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h");
+  const std::string data_path = argc >= 2 ? argv[1] : "";
   LoopOptions lo;
   std::string out = "loop-out", maps_dir, bending = "linear", figures = DRAWBEND_FIGURES_DIR, gnuplot = "gnuplot";
   int seed = static_cast<int>(lo.seed);
-  Options opt("drawbend loop DATA.csv", "Close the loop on measured draw-bend data.");
+  Options opt("drawbend loop DATA.csv",
+              "Close the loop on measured draw-bend data: fit the base model (bending force per pin, constant mu "
+              "per cell by Eq. 5.1), rank every extra column by held-out error and a permutation test, add the "
+              "library effects that explain it, and write DIR/loop.md (read it first: the data problems, the base "
+              "model, each step with its p-value and held-out RMS, and why the loop stopped), loop_summary.json, "
+              "tables/ and figures/. DATA.csv: one row per sample with full-strip forces in N (README.md, "
+              "'Your own measured data').");
   opt.add(out, "out", "output directory");
   opt.add(maps_dir, "maps", "directory of FE maps pin_<d>mm.csv (empty: analytic stand-in, not FE)");
   opt.add(lo.cv, "cv", "cross-validation folds: auto, test, bt-block");
@@ -61,6 +59,15 @@ int loop_main(int argc, char** argv) {
   opt.add(bending, "bending", "base bending force: linear (b0 + b1 F_back) or constant (Swift form)");
   opt.add(figures, "figures", "directory of the gnuplot scripts (empty: no figures)");
   opt.add(gnuplot, "gnuplot", "gnuplot executable");
+  if (help) {
+    const char* argv_help[] = {"drawbend loop", "--help"};
+    opt.parse(2, const_cast<char**>(argv_help));
+    return 0;
+  }
+  if (data_path.empty() || data_path.rfind("--", 0) == 0) {
+    std::cerr << "drawbend loop: missing DATA.csv (drawbend loop --help lists the options)\n";
+    return 2;
+  }
   return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
     if (bending != "linear" && bending != "constant")
