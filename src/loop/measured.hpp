@@ -47,6 +47,9 @@ struct Dataset {
   std::vector<Problem> problems;
   int rows_read = 0;     ///< data rows in the file
   int rows_dropped = 0;  ///< rows with at least one problem
+  /// How the file was read when it is not plain CSV (e.g. "';' between cells,
+  /// decimal commas"); empty otherwise.
+  std::string format_note;
 
   /// Column index of an extra column, -1 if absent.
   int extra_index(const std::string& name) const;
