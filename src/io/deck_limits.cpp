@@ -12,16 +12,17 @@ namespace drawbend::io {
 
 namespace {
 
-// Memory of a run per node and per element [bytes].  Counted from the arrays
-// of fe::Mesh, fe::Solver and Solver::run_step (per node: reference, current
-// position, velocity, force, mass, reactions, the step's scratch arrays and
-// node sets, about 30 doubles; per element: connectivity, two integration
-// points' stresses and states, hourglass state, corner forces and the
-// per-element step data, about 60 doubles) and checked against the peak
-// resident memory of `drawbend run` on a 60 x 60 x 60 elastic block:
-// 202 MB measured (GNU time, 2026-11-24), 196 MB predicted.
-constexpr double kBytesPerNode = 300;
-constexpr double kBytesPerElement = 560;
+// Memory of a run per node and per element [bytes]: fe::Mesh, fe::Solver and
+// Solver::run_step hold about 30 doubles per node (reference and current
+// positions, velocity, force, mass, reactions, the step's scratch arrays) and
+// about 60 per element (connectivity, two integration points' stresses and
+// states, hourglass state, corner forces, per-element step data); the
+// snapshot writers add text buffers.  Calibrated on the peak resident memory
+// of `drawbend run` on a 60 x 60 x 60 J2 block (226,981 nodes, 216,000
+// elements, one snapshot): 223 MB measured (GNU time, 2026-11-24), 226 MB
+// predicted.
+constexpr double kBytesPerNode = 350;
+constexpr double kBytesPerElement = 680;
 
 const toml::node* at(const toml::table& root, const std::string& table, const std::string& key) {
   const auto* t = root.get(table);

@@ -169,6 +169,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   const int threads = opt.threads > 0 ? opt.threads : deck.threads;
   if (threads > 0) omp_set_num_threads(threads);
   const auto wall0 = std::chrono::steady_clock::now();
+  for (const auto& w : deck.warnings) log << "warning: " << w << "\n";  // before the solver can fail
   fe::Solver solver(deck.model);
   solver.set_warning_handler([&log](const std::string& w) { log << "\nwarning: " << w << "\n"; });
   const fe::Model& m = deck.model;
@@ -179,9 +180,8 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
       << fmt(100 * solver.added_mass() / solver.physical_mass(), 4) << " % (units: mm, N, MPa, s)\n";
   if (deck.cost.cycles > 0)
     log << "  estimate: about " << fmt(deck.cost.cycles, 3) << " cycles at the initial step (limit "
-        << fmt(deck.limits.max_cycles, 3) << "), memory about " << fmt(deck.cost.memory_mb, 3) << " MB (limit "
-        << fmt(deck.limits.max_memory_mb, 3) << "); [limits] in the deck raises them\n";
-  for (const auto& w : deck.warnings) log << "warning: " << w << "\n";
+        << fmt_shortest(deck.limits.max_cycles) << "), memory about " << fmt(deck.cost.memory_mb, 3) << " MB (limit "
+        << fmt_shortest(deck.limits.max_memory_mb) << "); [limits] in the deck raises them\n";
   // History file.
   std::vector<std::string> header{"time_s", "step", "dt_s", "kinetic_mJ", "internal_mJ", "hourglass_mJ",
                                   "external_work_mJ", "friction_mJ", "damping_mJ", "balance_error"};
@@ -250,10 +250,12 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
       const double frac = p.time / total;
       const double done = static_cast<double>(p.cycle - cycle0);
       const double to_go = std::max(0.0, total - p.time) / solver.dt();
-      log << "\r  " << std::fixed << std::setprecision(1) << 100 * frac << " %  t = " << std::scientific
-          << std::setprecision(3) << p.time << " s  dt = " << p.dt << " s  step " << p.step->name << "  cycle "
-          << p.cycle << " of ~" << static_cast<long>(p.cycle + to_go) << "  left ~" << std::fixed
-          << std::setprecision(0) << (done > 0 ? el / done * to_go : 0.0) << " s   " << std::flush;
+      std::ostringstream line;  // its own stream: the log's number format stays as it was
+      line << "\r  " << std::fixed << std::setprecision(1) << 100 * frac << " %  t = " << std::scientific
+           << std::setprecision(3) << p.time << " s  dt = " << p.dt << " s  step " << p.step->name << "  cycle "
+           << p.cycle << " of ~" << static_cast<long>(p.cycle + to_go) << "  left ~" << std::fixed
+           << std::setprecision(0) << (done > 0 ? el / done * to_go : 0.0) << " s   ";
+      log << line.str() << std::flush;
       last_print = p.time;
     }
     const bool by_cycles = opt.checkpoint_every_cycles > 0 && p.cycle % opt.checkpoint_every_cycles == 0;
