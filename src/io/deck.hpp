@@ -34,7 +34,7 @@ struct OutputSpec {
 struct RunLimits {
   double max_cycles = 1e8;        ///< predicted cycles (end time / stable step)
   double max_memory_mb = 4096;    ///< predicted memory of the mesh and solver state [MB]
-  double max_mass_factor = 1e6;   ///< (physical + added mass) / physical mass
+  double max_mass_factor = 1e9;   ///< (physical + added mass) / physical mass; a warning above 1 % of it
 };
 
 /// The up-front estimate of a run (deck_limits.cpp).

@@ -100,9 +100,14 @@ void check_cost(const DeckContext& c, const toml::table& root, Deck& d) {
   const auto* first_step = root.get("step") && root.get("step")->is_array() && !root.get("step")->as_array()->empty()
                                ? &(*root.get("step")->as_array())[0]
                                : static_cast<const toml::node*>(&root);
-  // Mass scaling beyond a bound: an error, a warning above a tenth of it.
+  // Mass scaling by a factor f slows the waves by sqrt(f): for the inertia it
+  // is like loading sqrt(f) times faster.  The shipped cup deck scales by
+  // 8e5 (Chapter 6; its refined mesh by about 3e6), the draw-bend decks by
+  // 1e4, as the thesis.  Beyond 1e9 (over 30,000 times faster) inertia
+  // dominates any forming speed: an error; above 1 % of the limit (1e7, over
+  // 3,000 times faster) a warning.
   const double mf = d.cost.mass_factor;
-  if (mf > 0.1 * d.limits.max_mass_factor) {
+  if (mf > 0.01 * d.limits.max_mass_factor) {
     const toml::node* n = at(root, "numerics", "target_dt");
     std::string key = "numerics.target_dt";
     if (!n || m.target_dt <= 0) n = at(root, "numerics", "mass_scaling"), key = "numerics.mass_scaling";
@@ -111,10 +116,12 @@ void check_cost(const DeckContext& c, const toml::table& root, Deck& d) {
                              fmt(100 * (mf - 1), 3) + " %)";
     if (mf > d.limits.max_mass_factor)
       c.bad(*n, key, what + ", above [limits] max_mass_factor = " + fmt_shortest(d.limits.max_mass_factor) +
-                         ": inertia would dominate the result (the thesis scales by at most 1e4)");
+                         ": inertia would dominate the result, as loading " + fmt(std::sqrt(mf), 2) +
+                         " times faster would");
     else
-      d.warnings.push_back(c.where(*n, key) + ": " + what + ", above a tenth of [limits] max_mass_factor = " +
-                           fmt_shortest(d.limits.max_mass_factor) + " (the thesis scales by at most 1e4)");
+      d.warnings.push_back(c.where(*n, key) + ": " + what + ", above 1 % of [limits] max_mass_factor = " +
+                           fmt_shortest(d.limits.max_mass_factor) + ": inertia acts as if loaded " +
+                           fmt(std::sqrt(mf), 2) + " times faster; check the kinetic energy");
   }
   if (d.cost.cycles > d.limits.max_cycles) {
     const toml::node* n = at(root, "limits", "max_cycles");

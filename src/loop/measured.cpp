@@ -118,9 +118,10 @@ void nonfinite_extras(Dataset& d) {
 
 }  // namespace
 
-Dataset read_measured(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
+Dataset read_measured(const std::string& path) { return parse_measured(read_file(path), path); }
+
+Dataset parse_measured(const std::string& text, const std::string& path) {
+  std::istringstream in(text);
   Dataset d;
   d.path = path;
   std::string line;

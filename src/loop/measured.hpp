@@ -60,6 +60,8 @@ extern const std::vector<std::string> kRequiredColumns;
 /// Read a data file.  Only an unreadable file throws (InputError); everything
 /// else becomes a Problem.
 Dataset read_measured(const std::string& path);
+/// The same from text already read (`path` names it in messages).
+Dataset parse_measured(const std::string& text, const std::string& path);
 
 /// Write rows in the same format (comments first, then header, then rows).
 void write_measured(const std::string& path, const Dataset& d);
