@@ -16,6 +16,7 @@
 #include <memory>
 
 #include "bench_friction.hpp"
+#include "bench_material.hpp"
 #include "core/csv.hpp"
 #include "fe/element_view.hpp"
 #include "fe/solver.hpp"
@@ -86,6 +87,7 @@ int main(int argc, char** argv) {
   const std::string out = argc > 1 ? argv[1] : "build/bench/results.csv";
   const bool quick = argc > 2 && std::string(argv[2]) == "--quick";
   const bool friction_only = argc > 2 && std::string(argv[2]) == "--friction";  // only the friction-law cost
+  const bool material_only = argc > 2 && std::string(argv[2]) == "--materials";  // only the material updates
   struct Case {
     std::string name;
     fe::Model model;
@@ -98,7 +100,7 @@ int main(int argc, char** argv) {
   w.comment(std::string("explicit solver cost; element kernel: ") + isa + "; machine: see README (performance section)");
   std::cout << "element kernel: " << isa << "\n";
   const int maxt = omp_get_num_procs();
-  if (friction_only) cases.clear();
+  if (friction_only || material_only) cases.clear();
   for (auto& c : cases) {
     const long ne = c.model.mesh.num_elements();
     const long base = std::max(20L, 2000000L / ne), extra = std::max(50L, (quick ? 4000000L : 20000000L) / ne);
@@ -113,7 +115,8 @@ int main(int argc, char** argv) {
     }
   }
   std::filesystem::create_directories(std::filesystem::path(out).parent_path());
-  bench_friction(std::string(DRAWBEND_DATA_DIR) + "/cases/block_surface.toml",
+  if (!friction_only) bench_material(w, quick);
+  if (!material_only) bench_friction(std::string(DRAWBEND_DATA_DIR) + "/cases/block_surface.toml",
                  (std::filesystem::path(out).parent_path() / "friction_cost.csv").string(), w, quick);
   w.save(out);
   std::cout << "written " << out << "\n";

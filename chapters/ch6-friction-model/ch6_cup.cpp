@@ -25,6 +25,7 @@
 #include "io/run_case.hpp"
 #include "material/material.hpp"
 #include "sim/case_pool.hpp"
+#include "sim/material_spec.hpp"
 #include "study/thesis_data.hpp"
 
 namespace ch6 {
@@ -55,7 +56,7 @@ double tool_contact_stiffness(const fe::Model& m, const std::string& tool) {
 }  // namespace
 
 CupResult draw_cup(const std::string& deck_path, double speed, double stroke, long cycles, const std::string& vtu,
-                   int refine) {
+                   int refine, const std::string& material) {
   // Refinement: the deck's element counts times `refine` (in-plane and through the thickness).
   toml::table root = toml::parse_file(deck_path);
   int layers = 0;
@@ -66,6 +67,11 @@ CupResult draw_cup(const std::string& deck_path, double speed, double stroke, lo
         mesh->insert_or_assign(key, count);
         if (std::string(key) == "through") layers = static_cast<int>(count);
       }
+  if (!material.empty()) {  // the user's material over the deck's own flow curve
+    const std::string curve = root["material"]["hardening"].value_or(std::string());
+    const std::string section = sim::material_section(material, curve);
+    root.insert_or_assign("material", *toml::parse(std::string_view(section), std::string_view("--cup-material"))["material"].as_table());
+  }
   std::ostringstream text;
   text << root;
   io::Deck deck = io::parse_deck(text.str(), deck_path);
@@ -152,7 +158,9 @@ double force_at(const CupResult& r, double d) {
   return NAN;
 }
 
-void cup_drawing(study::Chapter& c, bool full, const std::string& cases) {
+void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const std::string& material) {
+  c.value("cup_material", material.empty() ? std::string("isotropic J2 (von Mises) on the Table 5.1 RD curve, as the thesis")
+                                           : "the material " + material + " (--cup-material)");
   const std::string deck = c.data("cases/cup_draw.toml");
   const CsvTable t65 = read_csv(c.data("thesis/table_6_5.csv"));
   const std::string sc = c.data("thesis/scalars.csv");
@@ -187,7 +195,7 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases) {
     const auto& row = t65.rows[rows[k]];
     const std::string id = t65.text(row, "case");
     runs[k] = draw_cup(deck, t65.number(row, "punch_speed_mm_s"), stroke, cycles,
-                       id == "1" ? c.out("tables/cup_case1.vtu") : "", refine);
+                       id == "1" ? c.out("tables/cup_case1.vtu") : "", refine, material);
   });
   std::map<std::string, CupResult> res;
   std::string ids, listed;  // "1 9" for the figure, "1, 9" for the page
@@ -224,7 +232,8 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases) {
   const double d_fail = study::scalar(sc, "ch6_failure_stroke").value;
   if (full) {
     const CupResult r = draw_cup(deck, t65.number(t65.rows.front(), "punch_speed_mm_s"), d_fail,
-                                 static_cast<long>(cycles * d_fail / stroke), c.out("tables/cup_case1_21mm.vtu"), refine);
+                                 static_cast<long>(cycles * d_fail / stroke), c.out("tables/cup_case1_21mm.vtu"), refine,
+                                 material);
     c.value("cup_strain_21_r", fmt_fixed(r.max_strain_r, 1), "mm");
     c.value("cup_strain_21_z", fmt_fixed(r.max_strain_z, 1), "mm");
     c.value("cup_strain_21", fmt_fixed(r.max_strain, 3));

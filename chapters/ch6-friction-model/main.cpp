@@ -27,6 +27,7 @@ using namespace drawbend::analysis;
 namespace {
 
 bool g_full = false;  // --full: the paper-fidelity cup-drawing runs (CTest label `full`)
+std::string g_cup_material;  // --cup-material: the cup's material (sim/material_spec.hpp); empty: the deck's
 std::string g_cup_cases;  // --cup-cases: which Table 6.5 cases (default: 1 and 9, all nine with --full)
 
 struct Lines {
@@ -145,7 +146,7 @@ void body(study::Chapter& c) {
   // 7. Block sliding (Sec. 6.5).
   ch6::block_sliding(c);
   // 8. Cup drawing (Sec. 6.6): coarse cases 1 and 9; all nine on a finer mesh with --full.
-  ch6::cup_drawing(c, g_full, g_cup_cases);
+  ch6::cup_drawing(c, g_full, g_cup_cases, g_cup_material);
 }
 
 }  // namespace
@@ -156,5 +157,9 @@ int main(int argc, char** argv) {
   ch.options().add(g_cup_cases, "cup-cases",
                    "cup drawing: comma-separated Table 6.5 case ids to run, with 1 and 9 among them (e.g. 1,9 with "
                    "--full: the end cases on the refined mesh, about 20 min on 2 cores); empty: 1,9, or all with --full");
+  ch.options().add(g_cup_material, "cup-material",
+                   "cup drawing: the material, as drawbend drawbend-deck --material (a TOML inline table of [material] "
+                   "keys, e.g. '{ type = \"hill48\", hill48 = { r0 = 0.65, r45 = 0.65, r90 = 0.72 } }', or a TOML file); "
+                   "empty: the deck's isotropic J2 on the Table 5.1 RD curve, as the thesis");
   return study::run_chapter(ch, argc, argv, body);
 }

@@ -29,6 +29,11 @@ int drawbend_deck_command(int argc, char** argv) {
   opt.add(s.mass_scaling, "mass-scaling", "uniform mass scaling factor");
   opt.add(s.penalty, "penalty", "contact penalty scale");
   opt.add(s.hardening, "hardening", "hardening curve CSV (plastic strain, true stress [MPa])");
+  opt.add(s.material, "material",
+          "material: empty = isotropic J2 on --hardening; a TOML inline table of [material] keys, e.g. "
+          "'{ type = \"j2_combined\", kinematic = { beta = 0.5 } }', or a TOML file with a [material] table "
+          "(data/materials/*.toml)");
+  opt.add(s.strip_direction, "strip-direction", "the strip's axis is the rolling direction (rd) or the transverse one (td)");
   opt.add(run_dir, "run", "run the deck into this directory instead of printing it");
   if (!opt.parse(argc, argv)) return 0;
   if (run_dir.empty()) {

@@ -70,7 +70,7 @@ void Solver::contact_forces(double dt, bool friction_on) {
     if (corot && texture_ref_[p].empty()) {
       std::vector<int> ids;
       for (const auto& c : nodes) ids.push_back(c.node);
-      texture_ref_[p] = contact::texture_refs(mesh, cp.faces, ids, cp.texture_axis);
+      texture_ref_[p] = contact::texture_refs(mesh, cp.faces, ids, m_.rolling_direction);
     }
     const int ss = cp.friction ? cp.friction->state_size() : 0;
     const Vec3 off = tool_offset_[tool], vt = tool_vel_[tool];
@@ -129,7 +129,7 @@ void Solver::contact_forces(double dt, bool friction_on) {
         if (m2 > 0) for (double& v : fo) v *= mag / m2;
         ft = {fo[0] - kn * vtan[0] * dt, fo[1] - kn * vtan[1] * dt, fo[2] - kn * vtan[2] * dt};
         // Texture axes in the tangent plane.
-        const Vec3 ax = corot ? contact::texture_axis(texture_ref_[p][k], x_, y_, z_) : cp.texture_axis;
+        const Vec3 ax = corot ? contact::texture_axis(texture_ref_[p][k], x_, y_, z_) : m_.rolling_direction;
         const double an = dot(ax, n);
         Vec3 e1{ax[0] - an * n[0], ax[1] - an * n[1], ax[2] - an * n[2]};
         const double e1n = std::sqrt(dot(e1, e1));

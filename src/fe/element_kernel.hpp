@@ -79,24 +79,16 @@ inline void rotate(const T R[3][3], const T A[3][3], T out[3][3]) {
     }
 }
 
-/// Jaumann rotation of one point's stress s (in place) over dt, and its strain
-/// increment deps (engineering shear), from the mid-interval gradient L.
+/// Jaumann rotation of one point's stress s (in place) over dt, its strain
+/// increment deps (engineering shear) and its spin w = (W_01, W_12, W_20),
+/// from the mid-interval gradient L.  The material turns its own back stresses
+/// and axes with the same spin and function (material/objectivity.hpp).
 template <class T>
-inline void rotate_and_strain(const T L[3][3], double dt, T s[6], T deps[6]) {
-  const T w01 = 0.5 * (L[0][1] - L[1][0]), w12 = 0.5 * (L[1][2] - L[2][1]), w20 = 0.5 * (L[2][0] - L[0][2]);
-  const T S[3][3] = {{s[0], s[3], s[5]}, {s[3], s[1], s[4]}, {s[5], s[4], s[2]}};
-  const T zero = {};
-  const T W[3][3] = {{zero, w01, -w20}, {-w01, zero, w12}, {w20, -w12, zero}};
-  T WS[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) WS[i][j] = W[i][0] * S[0][j] + W[i][1] * S[1][j] + W[i][2] * S[2][j];
-  // W S - S W = WS + (WS)^T since W is skew and S symmetric.
-  s[0] += dt * 2 * WS[0][0];
-  s[1] += dt * 2 * WS[1][1];
-  s[2] += dt * 2 * WS[2][2];
-  s[3] += dt * (WS[0][1] + WS[1][0]);
-  s[4] += dt * (WS[1][2] + WS[2][1]);
-  s[5] += dt * (WS[2][0] + WS[0][2]);
+inline void rotate_and_strain(const T L[3][3], double dt, T s[6], T deps[6], T w[3]) {
+  w[0] = 0.5 * (L[0][1] - L[1][0]);
+  w[1] = 0.5 * (L[1][2] - L[2][1]);
+  w[2] = 0.5 * (L[2][0] - L[0][2]);
+  material::rotate_symmetric(w[0], w[1], w[2], dt, s);
   deps[0] = L[0][0] * dt;
   deps[1] = L[1][1] * dt;
   deps[2] = L[2][2] * dt;
@@ -173,7 +165,7 @@ int element_block(const ElementView& ev, int e0) {
     for (int j = 0; j < 3; ++j) M[i][j] = (i == j ? 1.0 : 0.0) - 0.5 * dtp * Ln[i][j];
   inverse3(M, Mi);
   // The two integration points: Jaumann rotation and strain increment ...
-  T s[2][6], deps[2][6];
+  T s[2][6], deps[2][6], spin[2][3];
   for (int gp = 0; gp < 2; ++gp) {
     const double zeta = gp == 0 ? kZg : -kZg;
     T Lg[3][3], Lmid[3][3];
@@ -183,9 +175,10 @@ int element_block(const ElementView& ev, int e0) {
       for (int j = 0; j < 3; ++j) Lmid[i][j] = Lg[i][0] * Mi[0][j] + Lg[i][1] * Mi[1][j] + Lg[i][2] * Mi[2][j];
     for (int k = 0; k < 6; ++k)
       for (int l = 0; l < W; ++l) set_lane(s[gp][k], l, ev.sig[12 * (e0 + l) + 6 * gp + k]);
-    rotate_and_strain(Lmid, dtp, s[gp], deps[gp]);
+    rotate_and_strain(Lmid, dtp, s[gp], deps[gp], spin[gp]);
   }
-  // ... the material update, one point at a time, with the stress power
+  // ... the material update, one point at a time (it turns its own history with
+  // the point's spin), with the stress power
   // increment per unit volume by the midpoint rule; the tangent ratio.
   const material::Material& mat = *ev.mat;
   T ratio;
@@ -204,7 +197,8 @@ int element_block(const ElementView& ev, int e0) {
         sp[k] = lane(s[gp][k], l);
         d[k] = lane(deps[gp][k], l);
       }
-      mat.update(d, sp, st[gp]);
+      const material::Spin wp{lane(spin[gp][0], l), lane(spin[gp][1], l), lane(spin[gp][2], l), dtp};
+      mat.update(d, wp, sp, st[gp]);
       double w = 0;
       for (int k = 0; k < 6; ++k) w += 0.5 * (lane(s[gp][k], l) + sp[k]) * d[k];
       ie += w;

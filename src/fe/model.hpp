@@ -80,8 +80,7 @@ struct ContactPair {
   double penalty = 0.1;  ///< penalty factor alpha: k = alpha K A / L (see contact.cpp)
   double damping = 0.2;  ///< normal contact damping, fraction of critical 2 sqrt(k m) (see contact.cpp)
   std::shared_ptr<friction::FrictionLaw> friction;  ///< nullptr: frictionless
-  Vec3 texture_axis{1, 0, 0};  ///< rolling direction of the sheet (global, before projection)
-  /// fixed: RD = texture_axis projected on the tool (thesis Sec. 6.4); corotational:
+  /// fixed: RD = the model's rolling direction projected on the tool (thesis Sec. 6.4); corotational:
   /// RD follows the polar rotation of the sheet face at each node (contact/texture.hpp).
   enum class Texture { fixed, corotational };
   Texture texture = Texture::fixed;
@@ -105,6 +104,10 @@ struct Model {
   std::string name = "case";
   Mesh mesh;
   std::shared_ptr<const material::Material> material;
+  /// The sheet frame: the rolling direction RD (global, need not be unit), stated once.  The
+  /// friction texture of every contact pair and the material axes of an anisotropic material
+  /// both start from it, projected into the sheet's plane (material/sheet_frame.hpp).
+  Vec3 rolling_direction{1, 0, 0};
   std::vector<Tool> tools;
   std::vector<ContactPair> contacts;
   std::vector<Step> steps;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "fe/hex8.hpp"
+#include "material/sheet_frame.hpp"
 
 namespace drawbend::fe {
 
@@ -35,8 +36,6 @@ Solver::Solver(Model& model) : m_(model) {
   // and 2 material states each.
   sig_.assign(12 * ne, 0.0);
   state_.assign(static_cast<std::size_t>(ne) * 2 * mat.state_size(), 0.0);
-  for (int k = 0; k < 2 * ne && mat.state_size() > 0; ++k)
-    mat.init_state(&state_[static_cast<std::size_t>(k) * mat.state_size()]);
   hgq_.assign(6 * ne, 0.0);
   hg_ratio_.assign(ne, 1.0);
   corner_.assign(24 * ne, 0.0);
@@ -55,6 +54,20 @@ Solver::Solver(Model& model) : m_(model) {
     const double dt_e = hex_stable_length(g) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
     if (m_.target_dt > 0 && m_.dt_safety * dt_e < m_.target_dt)
       elem_mass_factor_[e] *= std::pow(m_.target_dt / (m_.dt_safety * dt_e), 2);
+    // Material state; an anisotropic material gets the sheet axes: the model's
+    // rolling direction projected into the element's sheet plane (normal: its
+    // third natural axis zeta, the thickness direction of the generated meshes).
+    if (const int ns = mat.state_size(); ns > 0) {
+      material::SheetAxes axes;
+      if (mat.directional()) {
+        try {
+          axes = material::sheet_axes(m_.rolling_direction, {g.R[0][2], g.R[1][2], g.R[2][2]});
+        } catch (const std::invalid_argument& ex) {
+          throw std::invalid_argument("element " + std::to_string(e) + ": " + ex.what());
+        }
+      }
+      for (int gp = 0; gp < 2; ++gp) mat.init_state(&state_[(2 * static_cast<std::size_t>(e) + gp) * ns], axes);
+    }
     const double me = mat.density() * V;
     phys_mass_ += me;
     added_mass_ += me * (elem_mass_factor_[e] - 1.0);

@@ -204,8 +204,8 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
   }
   InputProblems problems(path);
   const DeckContext c(path, problems);
-  c.allowed(root, "deck",
-            {"case", "mesh", "material", "numerics", "guards", "tool", "contact", "step", "output", "limits"});
+  c.allowed(root, "deck", {"case", "mesh", "material", "sheet", "numerics", "guards", "tool", "contact", "step",
+                           "output", "limits"});
   Deck d;
   d.path = path;
   d.hash = fnv1a64(text);
@@ -235,8 +235,17 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
   problems.attempt([&] {
     if (const auto* t = c.table(root, "guards", "deck", false)) read_guards(c, *t, m.guards);
   });
+  // The sheet frame, stated once: friction texture and material axes both use it.
+  bool sheet_rd = false;
+  problems.attempt([&] {
+    if (const auto* t = c.table(root, "sheet", "deck", false)) {
+      c.allowed(*t, "sheet", {"rolling_direction"});
+      m.rolling_direction = c.vec(*t, "rolling_direction", "sheet", fe::Vec3{1, 0, 0}, true);
+      sheet_rd = t->get("rolling_direction") != nullptr;
+    }
+  });
   read_tools(c, root, m);
-  read_contacts(c, root, m, dir, mesh_ok);
+  read_contacts(c, root, m, dir, mesh_ok, sheet_rd);
   read_steps(c, root, m, mesh_ok);
   problems.attempt([&] {
     if (const auto* t = c.table(root, "output", "deck", false)) read_output(c, *t, d.output);

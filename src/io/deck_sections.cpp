@@ -117,7 +117,9 @@ void read_tools(const DeckContext& c, const toml::table& root, fe::Model& m) {
     });
 }
 
-void read_contacts(const DeckContext& c, const toml::table& root, fe::Model& m, const std::string& dir, bool mesh_ok) {
+void read_contacts(const DeckContext& c, const toml::table& root, fe::Model& m, const std::string& dir, bool mesh_ok,
+                   bool sheet_rd) {
+  bool axis_seen = false;
   const toml::array* cps = nullptr;
   if (!c.problems().attempt([&] { cps = c.array_of_tables(root, "contact", "deck"); }) || !cps) return;
   for (const auto& cn : *cps)
@@ -129,7 +131,17 @@ void read_contacts(const DeckContext& c, const toml::table& root, fe::Model& m, 
       cp.tool = c.str(t, "tool", "contact");
       cp.penalty = c.positive(t, "penalty", "contact", 0.1);
       cp.damping = c.in_range(t, "damping", "contact", 0.2, 0.0, 1.0);
-      cp.texture_axis = c.vec(t, "texture_axis", "contact", Vec3{1, 0, 0}, true);
+      if (const auto* ax = t.get("texture_axis")) {
+        const Vec3 rd = c.vec(t, "texture_axis", "contact", Vec3{1, 0, 0}, true);
+        if (sheet_rd)
+          c.bad(*ax, "contact.texture_axis", "the rolling direction is stated in [sheet] rolling_direction; state it once");
+        else if (axis_seen && rd != m.rolling_direction)
+          c.bad(*ax, "contact.texture_axis",
+                "differs from another contact's texture_axis: one sheet has one rolling direction "
+                "(state it once in [sheet] rolling_direction)");
+        m.rolling_direction = rd;
+        axis_seen = true;
+      }
       const std::string tex = c.str(t, "texture", "contact", std::string("fixed"));
       if (tex != "fixed" && tex != "corotational")
         c.bad(*t.get("texture"), "contact.texture", "expected \"fixed\" or \"corotational\", found \"" + tex + "\"");

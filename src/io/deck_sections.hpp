@@ -15,7 +15,10 @@ namespace drawbend::io {
 void read_guards(const DeckContext& c, const toml::table& t, fe::Guards& g);
 void read_tools(const DeckContext& c, const toml::table& root, fe::Model& m);
 /// `mesh_ok`: the mesh was read, so face sets can be checked.
-void read_contacts(const DeckContext& c, const toml::table& root, fe::Model& m, const std::string& dir, bool mesh_ok);
+/// [[contact]] pairs.  `texture_axis` is the older spelling of [sheet] rolling_direction: allowed
+/// when the deck has no [sheet] rolling direction, and then the same on every pair.
+void read_contacts(const DeckContext& c, const toml::table& root, fe::Model& m, const std::string& dir, bool mesh_ok,
+                   bool sheet_rd);
 void read_steps(const DeckContext& c, const toml::table& root, fe::Model& m, bool mesh_ok);
 
 }  // namespace drawbend::io

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <stdexcept>
 
 #include "core/csv.hpp"
 
@@ -88,6 +89,35 @@ HardeningCurve HardeningCurve::load(const std::string& csv_path) {
   }
   validate(x, y, [&](std::size_t i) { return csv_path + ":" + std::to_string(t.rows[i].line); }, csv_path);
   return HardeningCurve(std::move(x), std::move(y), csv_path);
+}
+
+namespace {
+template <class F>
+HardeningCurve tabulate(F&& stress, const std::string& source) {
+  constexpr int n = 400;
+  constexpr double eps_max = 1.5;
+  std::vector<double> x(n + 1), y(n + 1);
+  for (int i = 0; i <= n; ++i) {
+    const double u = static_cast<double>(i) / n;
+    x[i] = eps_max * u * u;
+    y[i] = stress(x[i]);
+  }
+  return HardeningCurve(std::move(x), std::move(y), source);
+}
+}  // namespace
+
+HardeningCurve HardeningCurve::voce(double sigma0, double Q, double b) {
+  if (!(sigma0 > 0) || !(Q >= 0) || !(b >= 0) || !std::isfinite(sigma0 + Q + b))
+    throw std::invalid_argument("Voce: need sigma0 > 0, Q >= 0, b >= 0 (finite), found sigma0 = " +
+                                fmt_shortest(sigma0) + ", Q = " + fmt_shortest(Q) + ", b = " + fmt_shortest(b));
+  return tabulate([&](double e) { return sigma0 + Q * (1.0 - std::exp(-b * e)); }, "Voce curve");
+}
+
+HardeningCurve HardeningCurve::swift(double K, double e0, double n) {
+  if (!(K > 0) || !(e0 > 0) || !(n >= 0) || !std::isfinite(K + e0 + n))
+    throw std::invalid_argument("Swift: need K > 0, e0 > 0, n >= 0 (finite), found K = " + fmt_shortest(K) +
+                                ", e0 = " + fmt_shortest(e0) + ", n = " + fmt_shortest(n));
+  return tabulate([&](double e) { return K * std::pow(e0 + e, n); }, "Swift curve");
 }
 
 }  // namespace drawbend::material

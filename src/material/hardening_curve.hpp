@@ -27,6 +27,14 @@ class HardeningCurve {
   /// Reads a CSV with columns `plastic_strain,true_stress_MPa` ('#' comment
   /// lines allowed).  Throws drawbend::InputError with file:line on bad data.
   static HardeningCurve load(const std::string& csv_path);
+  /// Voce sigma = sigma0 + Q (1 - exp(-b eps_p)) [MPa] and Swift
+  /// sigma = K (e0 + eps_p)^n [MPa], tabulated at 401 points on [0, 1.5] spaced
+  /// as (i/400)^2 (dense where the curve bends most; the interpolation error is
+  /// below 0.01 MPa for AA5754-O- and AA6016-like constants), the last slope
+  /// continued beyond.  Throw std::invalid_argument for non-physical constants
+  /// (sigma0, K, e0 <= 0, Q, b, n < 0).
+  static HardeningCurve voce(double sigma0, double Q, double b);
+  static HardeningCurve swift(double K, double e0, double n);
 
   std::size_t size() const { return x_.size(); }
   const std::vector<double>& plastic_strains() const { return x_; }

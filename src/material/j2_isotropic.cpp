@@ -58,7 +58,8 @@ inline void J2Isotropic::update_point(const double d[6], double s[6], double* st
   state[0] = e;
 }
 
-void J2Isotropic::update(const double deps[6], double sigma[6], double* state) const {
+// No history with a direction: the spin (already applied to sigma) is not needed.
+void J2Isotropic::update(const double deps[6], const Spin&, double sigma[6], double* state) const {
   update_point(deps, sigma, state);
 }
 
@@ -74,16 +75,9 @@ double J2Isotropic::tangent_ratio(const double* s, const double* state) const {
   const double a0 = s[XX] - p, a1 = s[YY] - p, a2 = s[ZZ] - p;
   const double q2 = 1.5 * (a0 * a0 + a1 * a1 + a2 * a2) + 3.0 * (s[XY] * s[XY] + s[YZ] * s[YZ] + s[ZX] * s[ZX]);
   // The ratio serves the element's hourglass stabilisation, which needs the
-  // state's distance from the yield surface, not the sign of the last
-  // increment: a point flowing plastically unloads by round-off now and then,
-  // and an on/off switch would flip the stabilisation every cycle.  So: 1 below
-  // 0.90 sigma_y, the tangent ratio H/(E+H) above 0.98 sigma_y, linear between.
-  const double f = std::sqrt(q2) / sy;
+  // state's distance from the yield surface, not the sign of the last increment.
   const double H = curve_.segment_slope(k);
-  const double plastic = H / (el_.E + H);
-  if (f <= 0.90) return 1.0;
-  if (f >= 0.98) return plastic;
-  return 1.0 + (plastic - 1.0) * (f - 0.90) / 0.08;
+  return yield_proximity_ratio(std::sqrt(q2) / sy, H / (el_.E + H));
 }
 
 std::string J2Isotropic::describe() const {

@@ -25,7 +25,8 @@ class J2Isotropic final : public Material {
   J2Isotropic(double youngs_modulus, double poisson_ratio, double density, HardeningCurve curve);
 
   int state_size() const override { return 1; }
-  void update(const double deps[6], double sigma[6], double* state) const override;
+  using Material::update;
+  void update(const double deps[6], const Spin& spin, double sigma[6], double* state) const override;
   void update_many(std::size_t count, const double* deps, double* sigma, double* state) const override;
   double density() const override { return el_.rho; }
   double youngs_modulus() const override { return el_.E; }

@@ -7,7 +7,7 @@ namespace drawbend::material {
 LinearElastic::LinearElastic(double youngs_modulus, double poisson_ratio, double density)
     : el_(youngs_modulus, poisson_ratio, density) {}
 
-void LinearElastic::update(const double deps[6], double sigma[6], double* /*state*/) const {
+void LinearElastic::update(const double deps[6], const Spin&, double sigma[6], double* /*state*/) const {
   el_.add_elastic(deps, sigma);
 }
 

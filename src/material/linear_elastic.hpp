@@ -10,7 +10,8 @@ class LinearElastic final : public Material {
   LinearElastic(double youngs_modulus, double poisson_ratio, double density);
 
   int state_size() const override { return 0; }
-  void update(const double deps[6], double sigma[6], double* state) const override;
+  using Material::update;
+  void update(const double deps[6], const Spin& spin, double sigma[6], double* state) const override;
   void update_many(std::size_t count, const double* deps, double* sigma, double* state) const override;
   double density() const override { return el_.rho; }
   double youngs_modulus() const override { return el_.E; }

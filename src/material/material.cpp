@@ -8,7 +8,7 @@
 
 namespace drawbend::material {
 
-void Material::init_state(double* state) const {
+void Material::init_state(double* state, const SheetAxes&) const {
   for (int i = 0; i < state_size(); ++i) state[i] = 0.0;
 }
 

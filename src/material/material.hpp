@@ -5,37 +5,62 @@
 // Conventions (all materials):
 //  - Voigt order for stress and strain: xx, yy, zz, xy, yz, zx.
 //  - Strain increments use ENGINEERING shear (gamma_xy = 2 eps_xy); stresses
-//    are tensor components (sigma_xy).
+//    and back stresses are tensor components (sigma_xy).
 //  - Units: MPa, t/mm^3, mm/s (see README.md "Units").
-//  - The caller rotates the stress to the current configuration before
-//    update() (objective stress rate); the material sees a small-strain
-//    increment only.
 //
-// Extending: a new model (kinematic hardening with a backstress in the state,
-// Hill'48 with its own yield function, ...) is a new class deriving from
-// Material with its own state layout.  Element code only calls state_size(),
-// init_state() and update()/update_many(), so it does not change.
+// The contract with the element (fe/element_kernel.hpp), as it is:
+//  - Set-up: init_state(state, axes) once per integration point, with the
+//    sheet axes there (RD, TD, ND in global components, from the deck's one
+//    rolling direction projected into the element's sheet plane:
+//    material/sheet_frame.hpp).  A material that carries directions (Hill'48)
+//    stores them in its state; the default ignores them.
+//  - Each cycle: the element rotates the stress with the point's spin
+//    (material/objectivity.hpp, the Jaumann increment) and calls
+//    update(deps, spin, sigma, state) with the small-strain increment.  The
+//    material must rotate every other tensor- or vector-valued history it
+//    keeps (back stresses, anisotropy axes) with the same spin and the same
+//    functions, so that all of them turn together with the sheet.
+//  - update() must not allocate and must be deterministic (no state outside
+//    `state`), so that results do not depend on thread count or kernel.
+//
+// Extending: a new model derives from Material with its own state layout
+// (state_size() doubles per point) and follows the rules above; the element
+// code does not change.
 #include <cstddef>
 #include <string>
+
+#include "material/objectivity.hpp"
 
 namespace drawbend::material {
 
 // Voigt component indices.
 inline constexpr int XX = 0, YY = 1, ZZ = 2, XY = 3, YZ = 4, ZX = 5;
 
+/// The sheet's axes at an integration point: unit, orthonormal, right-handed,
+/// global components.  Default: RD = x, TD = y, ND = z.
+struct SheetAxes {
+  double rd[3] = {1, 0, 0}, td[3] = {0, 1, 0}, nd[3] = {0, 0, 1};
+};
+
 class Material {
  public:
   virtual ~Material() = default;
   /// Number of history variables per integration point (J2 isotropic: 1 = equivalent plastic strain).
   virtual int state_size() const = 0;
-  /// Initial (virgin) state; the default sets all state_size() doubles to zero.
-  virtual void init_state(double* state) const;
-  /// Update the Cauchy stress (already rotated to the current configuration by the caller) for the strain
-  /// increment deps (engineering shear). state points to state_size() doubles. Must not allocate.
-  virtual void update(const double deps[6], double sigma[6], double* state) const = 0;
+  /// Initial (virgin) state at a point whose sheet axes are `axes`; the default sets all
+  /// state_size() doubles to zero.
+  virtual void init_state(double* state, const SheetAxes& axes) const;
+  void init_state(double* state) const { init_state(state, SheetAxes{}); }
+  /// Update the Cauchy stress (already rotated by the caller with `spin`) for the strain
+  /// increment deps (engineering shear); rotate the state's own tensors and axes with `spin`
+  /// first.  state points to state_size() doubles.  Must not allocate.
+  virtual void update(const double deps[6], const Spin& spin, double sigma[6], double* state) const = 0;
+  /// The same without rotation (a point that does not spin: material-level tests and drivers).
+  void update(const double deps[6], double sigma[6], double* state) const { update(deps, Spin{}, sigma, state); }
   /// Update `count` integration points stored contiguously: deps and sigma hold 6*count doubles,
   /// state holds state_size()*count doubles.  Same result as calling update() on each point; models
   /// override it (as `final` classes) so that a block of elements costs one virtual call, not one per point.
+  /// (No spin: for points that do not rotate.)
   virtual void update_many(std::size_t count, const double* deps, double* sigma, double* state) const;
   virtual double density() const = 0;         // t/mm^3
   virtual double youngs_modulus() const = 0;  // MPa
@@ -49,6 +74,9 @@ class Material {
   /// response (and the default): 1.  J2 on the yield surface: the uniaxial elastoplastic ratio
   /// E_t/E = H/(E + H), H the hardening modulus; 0 for perfect plasticity (callers may want a floor).
   virtual double tangent_ratio(const double* /*sigma*/, const double* /*state*/) const { return 1.0; }
+  /// Whether the state carries the sheet axes (anisotropic models): the solver then builds
+  /// them for init_state() and refuses a rolling direction normal to the sheet.
+  virtual bool directional() const { return false; }
   /// Equivalent plastic strain of a state vector (0 for elastic materials), for output.
   virtual double plastic_strain(const double* /*state*/) const { return 0.0; }
   /// One-line description with the constants, for output-file headers (default: the elastic constants).
@@ -79,5 +107,15 @@ struct IsotropicElasticity {
 
 /// Von Mises equivalent stress of a Voigt stress (tensor shear components).
 double von_mises(const double sigma[6]) noexcept;
+
+/// The hourglass tangent ratio of a point at f = (equivalent stress)/(yield stress)
+/// whose plastic tangent ratio is `plastic` (H/(E + H)): 1 below 0.90, `plastic`
+/// above 0.98, linear between.  A point flowing plastically unloads by round-off
+/// now and then, and an on/off switch would flip the stabilisation every cycle.
+inline double yield_proximity_ratio(double f, double plastic) noexcept {
+  if (f <= 0.90) return 1.0;
+  if (f >= 0.98) return plastic;
+  return 1.0 + (plastic - 1.0) * (f - 0.90) / 0.08;
+}
 
 }  // namespace drawbend::material

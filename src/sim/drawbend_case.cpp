@@ -10,6 +10,7 @@
 
 #include "io/deck.hpp"
 #include "io/run_case.hpp"
+#include "sim/material_spec.hpp"
 
 namespace drawbend::sim {
 
@@ -88,8 +89,9 @@ std::string deck_text(const DrawBendSpec& s) {
     << "], counts = [" << c_in << ", " << n_in + n_out << ", " << c_out << "] }\n"
     << "y = { from = 0.0, to = " << num(s.width) << ", n = " << s.across << " }\n"
     << "z = { from = " << num(R) << ", to = " << num(R + t) << ", n = " << s.through << " }\n\n"
-    << "[material]\ntype = \"j2\"\nE = 70000.0\nnu = 0.33\ndensity = 2.7e-9\nhardening = \"" << s.hardening
-    << "\"\n\n[numerics]\ndt_safety = 0.8\nmass_scaling = " << num(s.mass_scaling) << "\n\n"
+    << material_section(s.material, s.hardening) << "\n"
+    << (s.strip_direction == "rd" && s.material.empty() ? std::string() : sheet_section(s.strip_direction) + "\n")
+    << "[numerics]\ndt_safety = 0.8\nmass_scaling = " << num(s.mass_scaling) << "\n\n"
     << "[[tool]]\nname = \"pin\"\ndrive = \"fixed\"\n[[tool.surface]]\nkind = \"cylinder\"\n"
     << "origin = [0.0, 0.0, 0.0]\naxis = [0.0, 1.0, 0.0]\nradius = " << num(R) << "\n\n"
     << "[[contact]]\nfaces = \"zmin\"\ntool = \"pin\"\npenalty = " << num(s.penalty) << "\n";

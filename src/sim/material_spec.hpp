@@ -1,0 +1,27 @@
+#pragma once
+// The [material] section of a builder's deck (draw-bend, cup) from the user's
+// choice, so that every builder offers the same `--material`:
+//  - empty: isotropic J2 (type "j2") with the builder's default hardening CSV,
+//    the thesis's model (Table 5.1 curves);
+//  - a TOML inline table of [material] keys, e.g.
+//      { type = "j2_combined", kinematic = { beta = 0.5 } }
+//      { type = "hill48", hill48 = { r0 = 0.69, r45 = 0.73, r90 = 0.87 } }
+//    merged over E = 70000 MPa, nu = 0.33, density = 2.7e-9 t/mm^3 and, when
+//    it names no flow curve, the default hardening CSV;
+//  - the path of a TOML file with a [material] table (data/materials/*.toml),
+//    merged the same way.
+// The deck reader (io/deck_material.hpp) then checks every key and value with
+// file:line: key messages.  Units: MPa, t/mm^3.
+#include <string>
+
+namespace drawbend::sim {
+
+/// "[material]\n..." for the choice above.  Throws InputError when the text is
+/// neither a readable TOML file with a [material] table nor a TOML inline table.
+std::string material_section(const std::string& material, const std::string& default_hardening);
+
+/// "[sheet]\nrolling_direction = [...]\n": the strip's axis (x) is RD ("rd") or
+/// TD ("td", RD across the strip: y).  Throws InputError for anything else.
+std::string sheet_section(const std::string& strip_direction);
+
+}  // namespace drawbend::sim
