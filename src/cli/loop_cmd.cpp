@@ -11,6 +11,7 @@
 #include "cli/exit_codes.hpp"
 #include "cli/loop_cmd.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <set>
@@ -74,7 +75,9 @@ int loop_main(int argc, char** argv) {
       throw std::invalid_argument("--bending must be linear or constant, not '" + bending + "'");
     lo.bending_linear = bending == "linear";
     lo.seed = static_cast<std::uint64_t>(seed);
+    ensure_writable_dir(out, "--out");  // before the analysis, not after it
     const Dataset data = read_measured(data_path);
+    if (!data.format_note.empty()) std::cout << data_path << ": " << data.format_note << "\n";
     for (const auto& p : data.problems) std::cerr << "data problem: " << p.str() << "\n";
     std::cout << data_path << ": " << data.rows_read << " rows read, " << data.rows.size() << " used, "
               << data.rows_dropped << " dropped, " << data.problems.size() << " problems\n";
@@ -86,6 +89,10 @@ int loop_main(int argc, char** argv) {
     for (const auto& n : d.notes)
       if (n.rfind("WARNING", 0) == 0) std::cerr << n << "\n";
     const LoopResult r = run_loop(d, lo);
+    if (r.cv.empty() || !std::isfinite(r.cv.front().rms))  // never exit 0 with a meaningless answer
+      throw std::runtime_error("the base model's held-out RMS is " +
+                               (r.cv.empty() ? std::string("missing") : fmt(r.cv.front().rms)) +
+                               ": the data cannot be analysed (no outputs written)");
     write_loop_outputs(d, r, out, figures, gnuplot);
     std::cout << "base held-out RMS " << fmt(r.cv.front().rms, 4) << " N; " << r.steps.size() << " step(s)";
     for (const auto& s : r.steps)
@@ -116,7 +123,7 @@ int synth_main(int argc, char** argv) {
   opt.add(points, "points", "rows per thesis fit for --from-thesis");
   return with_exit_codes([&] {
     if (!opt.parse(argc, argv)) return 0;
-    fs::create_directories(out);
+    ensure_writable_dir(out, "--out");
     if (from_thesis) {
       const Dataset d = thesis_dataset(data_dir + "/thesis", points);
       write_measured(out + "/thesis_drawbend.csv", d);

@@ -5,6 +5,7 @@
 // hourglass and kinetic energy ratios, added mass).  Exit codes: 0 ok,
 // 2 bad input (every problem of the deck, each with file:line: key), 3 a
 // numerical fault (a guard of fe/guards.hpp, naming element or node and time).
+#include <csignal>
 #include <iostream>
 #include <string>
 
@@ -19,6 +20,22 @@
 namespace drawbend::cli {
 int drawbend_deck_command(int argc, char** argv);
 }
+
+namespace {
+// SIGINT/SIGTERM during `drawbend run`: the run checkpoints at the next cycle
+// boundary, prints how to continue and exits 128 + the signal (130, 143).  A
+// second signal ends the program at once (the handler resets itself).
+volatile std::sig_atomic_t g_stop = 0;
+extern "C" void on_stop_signal(int sig) { g_stop = sig; }
+void watch_stop_signals() {
+  struct sigaction sa {};
+  sa.sa_handler = on_stop_signal;
+  sa.sa_flags = SA_RESETHAND;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace drawbend;
@@ -73,8 +90,11 @@ int main(int argc, char** argv) {
     ro.halt_after_cycles = halt;
     if (!every.empty()) io::parse_checkpoint_every(every, ro);
     if (halt > 0 && every.empty()) throw std::invalid_argument("--halt-after-cycles needs --checkpoint-every");
+    ensure_writable_dir(ro.out_dir, "--out");  // before any work
+    watch_stop_signals();
+    ro.stop = &g_stop;
     io::Deck deck = io::read_deck(deck_path);
-    io::run_case(deck, ro, std::cout);
-    return 0;
+    const io::RunSummary r = io::run_case(deck, ro, std::cout);
+    return r.interrupted ? 128 + r.interrupted : 0;
   });
 }

@@ -204,10 +204,11 @@ void parse_checkpoint_every(const std::string& spec, RunOptions& opt) {
 
 RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   namespace fs = std::filesystem;
-  fs::create_directories(opt.out_dir);
+  ensure_writable_dir(opt.out_dir, "output folder");
   const int threads = opt.threads > 0 ? opt.threads : deck.threads;
   if (threads > 0) omp_set_num_threads(threads);
   const auto wall0 = std::chrono::steady_clock::now();
+  for (const auto& w : deck.warnings) log << "warning: " << w << "\n";  // before the solver can fail
   fe::Solver solver(deck.model);
   solver.set_warning_handler([&log](const std::string& w) { log << "\nwarning: " << w << "\n"; });
   const fe::Model& m = deck.model;
@@ -216,6 +217,10 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   log << "case " << m.name << ": " << m.mesh.num_elements() << " elements, " << m.mesh.num_nodes() << " nodes, "
       << m.steps.size() << " steps, " << total << " s simulated; dt = " << solver.stable_dt() << " s; mass scaling x"
       << fmt(1 + solver.added_mass() / solver.physical_mass(), 4) << " (units: mm, N, MPa, s)\n";
+  if (deck.cost.cycles > 0)
+    log << "  estimate: about " << fmt(deck.cost.cycles, 3) << " cycles at the initial step (limit "
+        << fmt_shortest(deck.limits.max_cycles) << "), memory about " << fmt(deck.cost.memory_mb, 3) << " MB (limit "
+        << fmt_shortest(deck.limits.max_memory_mb) << "); [limits] in the deck raises them\n";
   // History file.
   std::vector<std::string> header{"time_s", "step", "dt_s", "kinetic_mJ", "internal_mJ", "hourglass_mJ",
                                   "external_work_mJ", "friction_mJ", "damping_mJ", "balance_error"};
@@ -250,6 +255,8 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   double next_ckpt_time = opt.checkpoint_every_s > 0 ? solver.time() + opt.checkpoint_every_s : 0;
   struct Halt {};
   auto wall_last = std::chrono::steady_clock::now();
+  const auto wall_run0 = wall_last;  // the time left comes from the cycles done in this run
+  const long cycle0 = solver.cycles();
   try {
   solver.run([&](const fe::Progress& p) {
     const double interval =
@@ -276,15 +283,30 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
     const auto now = std::chrono::steady_clock::now();
     if (!opt.quiet && std::chrono::duration<double>(now - wall_last).count() > 1.0) {
       wall_last = now;
-      const double el = std::chrono::duration<double>(now - wall0).count();
+      // Time left = wall time per cycle so far x the cycles still to run at the
+      // current stable step (the step only shrinks, so this is a lower bound).
+      const double el = std::chrono::duration<double>(now - wall_run0).count();
       const double frac = p.time / total;
-      log << "\r  " << std::fixed << std::setprecision(1) << 100 * frac << " %  t = " << std::scientific
-          << std::setprecision(3) << p.time << " s  dt = " << p.dt << " s  step " << p.step->name << "  left ~"
-          << std::fixed << std::setprecision(0) << el * (1 - frac) / std::max(frac, 1e-9) << " s   " << std::flush;
+      const double done = static_cast<double>(p.cycle - cycle0);
+      const double to_go = std::max(0.0, total - p.time) / solver.dt();
+      std::ostringstream line;  // its own stream: the log's number format stays as it was
+      line << "\r  " << std::fixed << std::setprecision(1) << 100 * frac << " %  t = " << std::scientific
+           << std::setprecision(3) << p.time << " s  dt = " << p.dt << " s  step " << p.step->name << "  cycle "
+           << p.cycle << " of ~" << static_cast<long>(p.cycle + to_go) << "  left ~" << std::fixed
+           << std::setprecision(0) << (done > 0 ? el / done * to_go : 0.0) << " s   ";
+      log << line.str() << std::flush;
       last_print = p.time;
     }
     const bool by_cycles = opt.checkpoint_every_cycles > 0 && p.cycle % opt.checkpoint_every_cycles == 0;
     const bool by_time = opt.checkpoint_every_s > 0 && p.time >= next_ckpt_time;
+    const int sig = opt.stop ? static_cast<int>(*opt.stop) : 0;
+    if (sig != 0) {  // SIGINT/SIGTERM: checkpoint at this cycle boundary and stop
+      rs.history_rows = hist.rows();
+      write_checkpoint(ckpt_path, deck.hash, solver, rs);
+      r.checkpoint = ckpt_path;
+      r.interrupted = sig;
+      throw Halt{};
+    }
     if (by_cycles || by_time) {
       if (by_time)
         while (next_ckpt_time <= p.time) next_ckpt_time += opt.checkpoint_every_s;
@@ -302,8 +324,13 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
     throw;
   } catch (const Halt&) {
     if (last_print >= 0) log << "\n";
-    log << "halted after cycle " << solver.cycles() << " (t = " << solver.time() << " s); continue with --restart "
-        << ckpt_path << "\n";
+    if (r.interrupted)
+      log << "interrupted at t = " << solver.time() << " s, cycle " << solver.cycles()
+          << "; continue with: drawbend run " << deck.path << " --out " << opt.out_dir << " --restart " << ckpt_path
+          << "\n";
+    else
+      log << "halted after cycle " << solver.cycles() << " (t = " << solver.time() << " s); continue with --restart "
+          << ckpt_path << "\n";
     r.halted = true;
     r.time = solver.time();
     r.cycles = solver.cycles();
