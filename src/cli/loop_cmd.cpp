@@ -103,7 +103,7 @@ int synth_main(int argc, char** argv) {
   bool from_thesis = false;
   Options opt("drawbend synth", "Write synthetic draw-bend data with a hidden law, or the thesis data set.");
   opt.add(out, "out", "output directory");
-  opt.add(so.effect, "effect", "hidden law: none, depletion, pin_surface, speed, drift, direction, pressure");
+  opt.add(so.effect, "effect", "hidden law: none, depletion, pin_surface, speed, drift, direction, pressure, curvature, batch, temperature");
   opt.add(so.noise_N, "noise", "measurement noise sd on the outlet force [N]");
   opt.add(seed, "seed", "random seed");
   opt.add(so.amplitude, "amplitude", "amplitude of the hidden law (negative: its default)");

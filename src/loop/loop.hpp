@@ -53,7 +53,6 @@ struct LoopResult {
   std::string base_model, cv_mode, maps;
   std::vector<Step> steps;
   std::string stopped_because;
-  std::vector<std::string> unexplained;  ///< significant variables no library effect explains (F-test confirmed)
   std::vector<std::string> screened;     ///< passed the permutation screen only, not confirmed by a model test
   std::vector<std::vector<CandidateResult>> rankings;  ///< one per analysis round
   std::vector<Candidate> candidates;                   ///< values at the base model

@@ -254,8 +254,9 @@ Layout layout(const Design& d, const ModelSpec& spec) {
   return L;
 }
 
-double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th, int i, double* mu_out) {
-  const Row& r = d.rows[i];
+double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th, int i, double* mu_out,
+                   const Row* override_row = nullptr, double* p_out = nullptr) {
+  const Row& r = override_row ? *override_row : d.rows[i];
   const double bend = f.b0[r.pin] + f.b1[r.pin] * r.fback;
   if (std::isnan(bend)) return std::nan("");
   if (r.rotating) return r.fback + bend;
@@ -280,7 +281,7 @@ double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::
         if (f.level[k][i] > 0) factor += th[s + f.level[k][i] - 1];
         break;
       case EffectKind::direction_level:
-        if (d.dir_param[r.dir] >= 0) factor += th[s + d.dir_param[r.dir]];
+        if (r.dir >= 0 && d.dir_param[r.dir] >= 0) factor += th[s + d.dir_param[r.dir]];
         break;
       case EffectKind::direction_fourier: factor += th[s] * r.sin2 + th[s + 1] * r.four2; break;
       case EffectKind::pin_surface:
@@ -297,6 +298,7 @@ double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::
     ff = r.fback * (std::exp(mu * kWrapRad) - 1);
   }
   if (mu_out) *mu_out = mu;
+  if (p_out) *p_out = map_pressure(r, bend, ff, bend_ref);
   return r.fback + bend + ff;
 }
 
@@ -537,6 +539,18 @@ double predict_mu(const Design& d, const Fit& f, int i) {
   const Layout L = layout(d, f.spec);
   double mu = std::nan("");
   predict_row(d, f, L, f.theta, i, &mu);
+  return mu;
+}
+
+double predict_mu_at(const Design& d, const Fit& f, int i, double phi_rad, double* p_out) {
+  const Layout L = layout(d, f.spec);
+  Row r = d.rows[i];
+  r.phi = phi_rad;
+  r.sin2 = std::pow(std::sin(2 * phi_rad), 2);
+  r.four2 = 0.5 * (std::cos(2 * phi_rad) - std::cos(6 * phi_rad));
+  r.dir = -1;  // RD and TD carry no direction-level factor
+  double mu = std::nan("");
+  predict_row(d, f, L, f.theta, i, &mu, &r, p_out);
   return mu;
 }
 

@@ -138,5 +138,8 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec);
 double predict(const Design& d, const Fit& f, int i);
 /// Predicted friction coefficient (mean over the map) of fixed row i.
 double predict_mu(const Design& d, const Fit& f, int i);
+/// The same at direction phi [rad] (0 RD, pi/2 TD) instead of the row's own;
+/// p_out: the map's force-weighted mean pressure of the row [MPa].
+double predict_mu_at(const Design& d, const Fit& f, int i, double phi_rad, double* p_out);
 
 }  // namespace drawbend::loop

@@ -1,6 +1,8 @@
 // Loop outputs; see report.hpp.
 #include "loop/report.hpp"
 
+#include "loop/friction_model.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -146,8 +148,24 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
       m << "| " << i + 1 << " | " << c.name << " | " << c.kind << " | " << c.dof << " | " << c.permuted << " | "
         << fmt(c.p_value, 3) << " | " << c.n_perm << " | " << c.decision << " | " << fmt(c.cv_reduction, 3) << " |\n";
     }
+  const FrictionModel fm = identify_friction(d, r);
+  m << write_friction_outputs(d, r, fm, out);
+  if (!figdir.empty()) {  // one surface plot per lubricant and direction (our own script, in the output)
+    for (size_t k = 0; k < fm.surfaces.size(); ++k)
+      for (const char* dir : {"RD", "TD"}) {
+        const std::string tag = (k == 0 ? std::string() : "_" + std::to_string(k)) + "_" + dir;
+        const std::string dat = out + "/tables/surface" +
+                                (k == 0 ? std::string() : "_" + lubricant_tag(fm.surfaces[k].lubricant)) + "_" + dir + ".dat";
+        const std::string gp = out + "/figures/surface" + tag + ".gp", svg = "figures/surface" + tag + ".svg";
+        write_file_atomic(gp, "set terminal svg size 640,480 noenhanced\nset output '" + out + "/" + svg +
+                                  "'\nset xlabel 'p [MPa]'\nset ylabel 'v [mm/s]'\nset zlabel 'mu'\n"
+                                  "set title 'fitted mu(p, v), " + std::string(dir) + ", " +
+                                  fm.surfaces[k].lubricant + "'\nsplot '" + dat + "' with lines notitle\n");
+        if (std::system((gnuplot + " '" + gp + "' 2>/dev/null").c_str()) == 0) figs.push_back(svg);
+      }
+  }
   if (!figs.empty()) {
-    m << "\n## Residuals against each candidate (before: base model; after: final model)\n\n";
+    m << "\n## Figures: residuals against each candidate (before: base model; after: final model), fitted surfaces\n\n";
     for (const auto& f : figs) m << "![" << f << "](" << f << ")\n\n";
   }
   write_file_atomic(out + "/loop.md", m.str());
