@@ -30,11 +30,10 @@ void synthetic_detection(Chapter& c, const Config& cfg) {
                    "noise_estimate_N the loop's replicate-noise estimate (within-test scatter)");
   struct Sum {
     int sets = 0, detected = 0, wrong = 0, at_noise = 0, null_alarm = 0;
-    double worst_ratio = 0, noise_err = 0;
+    double worst_ratio = 0, noise_err = 0, noise_rel = 0;
   };
   std::map<std::pair<std::string, double>, Sum> sum;
   Sum all_eff, all_null;
-  size_t n_rows = 0;
   LoopOptions o;
   o.permutations = cfg.permutations;
   for (double noise : noises)
@@ -48,7 +47,6 @@ void synthetic_detection(Chapter& c, const Config& cfg) {
         so.seed = 1000 + 17 * k + static_cast<int>(noise) + (null ? 500 : 0);
         SynthTruth truth;
         const Dataset data = synthesize(so, maps, truth);
-        n_rows = data.rows.size();
         const Design d = make_design(data, maps);
         const LoopResult r = run_loop(d, o);
         std::string steps;
@@ -72,7 +70,10 @@ void synthetic_detection(Chapter& c, const Config& cfg) {
           t->detected += detected;
           t->wrong += wrong;
           t->at_noise += r.at_noise;
-          t->noise_err = std::max(t->noise_err, std::abs(r.noise.sigma_N / noise - 1));
+          // error of the noise estimate in units of its own standard error,
+          // 1/sqrt(2 dof) relative (dof = sum over tests of n - rank)
+          t->noise_err = std::max(t->noise_err, std::abs(r.noise.sigma_N / noise - 1) * std::sqrt(2 * r.noise.dof));
+          t->noise_rel = std::max(t->noise_rel, std::abs(r.noise.sigma_N / noise - 1));
           t->null_alarm += null && !r.steps.empty();
           if (detected || null) t->worst_ratio = std::max(t->worst_ratio, ratio);
         }
@@ -88,12 +89,14 @@ void synthetic_detection(Chapter& c, const Config& cfg) {
     }
   c.save(w, "synth_runs");
   auto t = c.table({"effect", "noise_N", "sets", "detected", "wrong_steps", "sets_at_noise_level",
-                    "null_sets_with_a_step", "worst_final_over_noise", "worst_noise_estimate_error"},
+                    "null_sets_with_a_step", "worst_final_over_noise", "worst_noise_estimate_error",
+                    "worst_noise_error_in_SE"},
                    "demonstration 3 summary: detection of hidden effects and false alarms on null sets");
   for (const auto& [k, s] : sum)
     t.row({k.first, fmt(k.second), std::to_string(s.sets), k.first == "none" ? "-" : std::to_string(s.detected),
            std::to_string(s.wrong), std::to_string(s.at_noise), k.first == "none" ? std::to_string(s.null_alarm) : "-",
-           k.first == "none" ? "-" : fmt(s.worst_ratio, 3), fmt(100 * s.noise_err, 3) + " %"});
+           k.first == "none" ? "-" : fmt(s.worst_ratio, 3), fmt(100 * s.noise_rel, 3) + " %",
+           fmt(s.noise_err, 3)});
   c.save(t, "synth_summary");
   c.value("s_effect_sets", std::to_string(all_eff.sets));
   c.value("s_detected", std::to_string(all_eff.detected));
@@ -105,7 +108,8 @@ void synthetic_detection(Chapter& c, const Config& cfg) {
   c.value("s_kinds", std::to_string(synth_effects().size() - 1));
   c.value("s_seeds", std::to_string(cfg.effect_seeds));
   c.value("s_worst_ratio", fmt(all_eff.worst_ratio, 3));
-  c.value("s_noise_err", fmt(100 * std::max(all_eff.noise_err, all_null.noise_err), 3), "%");
+  c.value("s_noise_err", fmt(100 * std::max(all_eff.noise_rel, all_null.noise_rel), 3), "%");
+  c.value("s_noise_se", fmt(std::max(all_eff.noise_err, all_null.noise_err), 3));
   c.value("s_maps", maps.label());
   const double det_rate = static_cast<double>(all_eff.detected) / std::max(1, all_eff.sets);
   const double fa_rate = static_cast<double>(all_null.null_alarm) / std::max(1, all_null.sets);
@@ -120,11 +124,11 @@ void synthetic_detection(Chapter& c, const Config& cfg) {
                        " the loop is run at (Bonferroni over candidates plus the F test)");
   c.value("s_alpha", fmt(o.alpha));
   c.value("s_null_worst_ratio", fmt(all_null.worst_ratio, 3));
-  c.checks().claim("ch7.synth.noise_estimate", "the replicate-noise estimate is within 25 % of the true noise sd on "
-                   "every set", std::max(all_eff.noise_err, all_null.noise_err) <= 0.25,
-                   "45 tests x (8 - 4) degrees of freedom = 180: the sd of an estimated sd is 1/sqrt(2 x 180) = 5.3 %, "
-                   "so 25 % is over 4 standard errors; larger errors mean within-test structure leaks into the "
-                   "estimate");
+  c.checks().claim("ch7.synth.noise_estimate", "the replicate-noise estimate is within 4 of its own standard errors "
+                   "of the true noise sd on every set", std::max(all_eff.noise_err, all_null.noise_err) <= 4,
+                   "an estimated sd with dof degrees of freedom has a relative standard error 1/sqrt(2 dof) (45 tests x "
+                   "2 dof here: 7.5 %); 4 standard errors is rarely reached by chance over the sets of this study, so a "
+                   "larger error means within-test structure leaks into the estimate");
 }
 
 }  // namespace ch7

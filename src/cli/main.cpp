@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
       "       drawbend drawbend-deck [--pin-diameter D ...] [--run DIR]\n"
       "  Writes (or runs) the draw-bend deck of the chapters' builder; --help lists its options.\n"
       "       drawbend loop DATA.csv --out DIR [options]  (see drawbend loop --help)\n"
-      "       drawbend synth --effect E | --from-thesis --out DIR  (see drawbend synth --help)\n";
+      "       drawbend synth --effect E | --from-thesis --out DIR  (see drawbend synth --help)\n"
+      "       drawbend export friction_model.toml --to lsdyna|openradioss|abaqus\n";
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::cout << usage;
     return argc < 2 ? 2 : 0;
@@ -39,8 +40,9 @@ int main(int argc, char** argv) {
   if (cmd == "drawbend-deck") return cli::with_exit_codes([&] { return cli::drawbend_deck_command(argc - 1, argv + 1); });
   if (cmd == "loop") return cli::loop_main(argc - 1, argv + 1);    // loop_cmd.cpp
   if (cmd == "synth") return cli::synth_main(argc - 1, argv + 1);  // loop_cmd.cpp
+  if (cmd == "export") return cli::export_main(argc - 1, argv + 1);  // export_cmd.cpp
   if (cmd != "run") {
-    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, loop, synth)\n";
+    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, loop, synth, export)\n";
     return 2;
   }
   if (argc < 3) {

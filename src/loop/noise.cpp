@@ -25,15 +25,21 @@ NoiseFloor replicate_noise(const Design& d) {
       if (d.data->has_sliding) return R[a].sliding_mm < R[b].sliding_mm;
       return R[a].line < R[b].line;
     });
-    // Columns: 1, F_back, and with 6+ rows the run position and its square.
-    const int q = n >= 6 ? 4 : 2;
+    // Columns: 1, F and F^2 (F the back tension scaled to [-1, 1] within the
+    // test), and the run position t in [-1, 1] up to t^3; fewer with few rows.
+    const int q = n >= 8 ? 6 : n >= 6 ? 4 : 2;
+    double fmin = INFINITY, fmax = -INFINITY;
+    for (int k = 0; k < n; ++k)
+      fmin = std::min(fmin, R[ix[k]].back_tension_N), fmax = std::max(fmax, R[ix[k]].back_tension_N);
     Eigen::MatrixXd X(n, q);
     Eigen::VectorXd y(n);
     for (int k = 0; k < n; ++k) {
       const double t = n > 1 ? 2.0 * k / (n - 1) - 1 : 0;
+      const double F = fmax > fmin ? 2 * (R[ix[k]].back_tension_N - fmin) / (fmax - fmin) - 1 : 0;
       X(k, 0) = 1;
-      X(k, 1) = R[ix[k]].back_tension_N;
-      if (q == 4) X(k, 2) = t, X(k, 3) = t * t;
+      X(k, 1) = F;
+      if (q >= 4) X(k, 2) = t, X(k, 3) = t * t;
+      if (q >= 6) X(k, 4) = F * F, X(k, 5) = t * t * t;
       y[k] = R[ix[k]].outlet_force_N;
     }
     const auto qr = X.colPivHouseholderQr();

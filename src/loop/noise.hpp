@@ -3,9 +3,11 @@
 //
 // Within every test (>= 4 rows) the outlet force is fitted by least squares on
 // a line in the back tension and, with 6 or more rows, a quadratic in the run
-// position (rows in time_s order, else sliding distance, else file order):
+// position (rows in time_s order, else sliding distance, else file order);
+// with 8 or more rows a quadratic in the back tension and a cubic in the run
+// position:
 //   sigma^2 = sum_tests |e|^2 / sum_tests (n_t - rank_t).
-// For white noise this is unbiased; the quadratic in run position absorbs slow
+// For white noise this is unbiased; the polynomial in run position absorbs slow
 // within-test structure (depletion along the sliding distance, drift) so that
 // it is not mistaken for noise.  Structure that varies between tests (pin,
 // batch, direction, speed) never enters.  Units: N.
