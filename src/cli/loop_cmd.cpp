@@ -53,11 +53,14 @@ int loop_main(int argc, char** argv) {
   opt.add(maps_dir, "maps", "directory of FE maps pin_<d>mm.csv (empty: analytic stand-in, not FE)");
   opt.add(lo.cv, "cv", "cross-validation folds: auto, test, bt-block");
   opt.add(lo.folds, "folds", "number of folds");
-  opt.add(lo.permutations, "permutations", "permutations per candidate");
+  opt.add(lo.permutations, "permutations", "cap of the sequential permutation test per candidate");
+  opt.add(lo.min_effect, "min-effect", "minimum held-out error reduction of a step, in units of the replicate noise");
   opt.add(seed, "seed", "random seed of the permutation test");
   opt.add(lo.alpha, "alpha", "family-wise significance level (Bonferroni over candidates)");
   opt.add(lo.max_steps, "max-steps", "maximum number of effects to add");
-  opt.add(bending, "bending", "base bending force: linear (b0 + b1 F_back) or constant (Swift form)");
+  opt.add(bending, "bending",
+          "bending force: linear (b0 + b1 F_back) or constant, from the rotating-pin rows; for pins without "
+          "rotating-pin rows: swift (Eq. 2.1), fe (the FE map's bending_force_N) or none (F_B = 0)");
   opt.add(figures, "figures", "directory of the gnuplot scripts (empty: no figures)");
   opt.add(gnuplot, "gnuplot", "gnuplot executable");
   if (help) {
@@ -71,9 +74,9 @@ int loop_main(int argc, char** argv) {
   }
   return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
-    if (bending != "linear" && bending != "constant")
-      throw std::invalid_argument("--bending must be linear or constant, not '" + bending + "'");
-    lo.bending_linear = bending == "linear";
+    const BendingSource bsrc = bending_source(bending);  // throws on an unknown name
+    lo.bending_linear = bending != "constant";
+    lo.progress = true;
     lo.seed = static_cast<std::uint64_t>(seed);
     ensure_writable_dir(out, "--out");  // before the analysis, not after it
     const Dataset data = read_measured(data_path);
@@ -85,20 +88,22 @@ int loop_main(int argc, char** argv) {
     std::set<double> pins;
     for (const auto& s : data.rows) pins.insert(s.pin_d_mm);
     const MapLibrary maps = maps_for(maps_dir, {pins.begin(), pins.end()});
-    const Design d = make_design(data, maps);
-    for (const auto& n : d.notes)
-      if (n.rfind("WARNING", 0) == 0) std::cerr << n << "\n";
+    const Design d = make_design(data, maps, 0.4, bsrc);  // exits 2 without rotating rows and --bending
+    if (d.missing_rotating) std::cout << d.notes.front() << "\n";
     const LoopResult r = run_loop(d, lo);
     if (r.cv.empty() || !std::isfinite(r.cv.front().rms))  // never exit 0 with a meaningless answer
       throw std::runtime_error("the base model's held-out RMS is " +
                                (r.cv.empty() ? std::string("missing") : fmt(r.cv.front().rms)) +
                                ": the data cannot be analysed (no outputs written)");
     write_loop_outputs(d, r, out, figures, gnuplot);
-    std::cout << "base held-out RMS " << fmt(r.cv.front().rms, 4) << " N; " << r.steps.size() << " step(s)";
+    if (!std::isfinite(r.cv.back().rms))
+      throw std::runtime_error("the held-out error is not finite: rows that no model can predict");
+    std::cout << "bending: " << r.bending << "\nbase held-out RMS " << fmt(r.cv.front().rms, 4) << " N; "
+              << r.steps.size() << " step(s)";
     for (const auto& s : r.steps)
       std::cout << "; " << s.variable << " -> " << s.effect << " (p " << fmt(s.p_value, 3) << ", RMS "
                 << fmt(s.rms_before, 4) << " -> " << fmt(s.rms_after, 4) << " N)";
-    std::cout << "\nstopped: " << r.stopped_because << "\nwrote " << out << "/loop.md, " << out
+    std::cout << "\n" << r.conclusion << "\nstopped: " << r.stopped_because << "\nwrote " << out << "/loop.md, " << out
               << "/loop_summary.json\n";
     return 0;
   });
@@ -111,7 +116,7 @@ int synth_main(int argc, char** argv) {
   bool from_thesis = false;
   Options opt("drawbend synth", "Write synthetic draw-bend data with a hidden law, or the thesis data set.");
   opt.add(out, "out", "output directory");
-  opt.add(so.effect, "effect", "hidden law: none, depletion, pin_surface, speed, drift, direction, pressure");
+  opt.add(so.effect, "effect", "hidden law: none, depletion, pin_surface, speed, drift, direction, pressure, curvature, batch, temperature");
   opt.add(so.noise_N, "noise", "measurement noise sd on the outlet force [N]");
   opt.add(seed, "seed", "random seed");
   opt.add(so.amplitude, "amplitude", "amplitude of the hidden law (negative: its default)");

@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
       "  drawbend-deck [--run DIR]    write or run a draw-bend deck (full-strip forces; --basis half)\n"
       "  loop DATA.csv --out DIR      close the loop on measured draw-bend data (writes loop.md)\n"
       "  synth --out DIR              synthetic draw-bend data with a hidden law, or the thesis data\n"
+      "  export MODEL.toml --to X     a friction_model.toml for LS-DYNA, OpenRadioss or Abaqus\n"
       "  --version                    print the version and commit\n"
       "Units: mm, N, MPa, s.  Exit codes: 0 done, 2 input error, 3 numerical fault.\n";
   if (argc >= 2 && std::string(argv[1]) == "--version") {
@@ -59,8 +60,9 @@ int main(int argc, char** argv) {
   if (cmd == "drawbend-deck") return cli::with_exit_codes([&] { return cli::drawbend_deck_command(argc - 1, argv + 1); });
   if (cmd == "loop") return cli::loop_main(argc - 1, argv + 1);    // loop_cmd.cpp
   if (cmd == "synth") return cli::synth_main(argc - 1, argv + 1);  // loop_cmd.cpp
+  if (cmd == "export") return cli::export_main(argc - 1, argv + 1);  // export_cmd.cpp
   if (cmd != "run") {
-    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, drawbend-deck, loop, synth; see drawbend --help)\n";
+    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, drawbend-deck, loop, synth, export; see drawbend --help)\n";
     return 2;
   }
   // `drawbend run --help` prints the options below without a deck.
