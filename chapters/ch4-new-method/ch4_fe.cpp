@@ -123,6 +123,13 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     c.value("FB_d42_alt", fmt_fixed(fb_alt, 1), "N");
     c.value("FB_d42_alt_change", fmt_fixed(100 * (fb_alt - fb_base) / fb_base, 1), "%");
     c.value("FB_d42_alt_vs_thesis", fmt_fixed(100 * (fb_alt - fb_thesis) / fb_thesis, 1), "%");
+    const std::string rid = "ch4.fe.d42.frictionless_swift_eps_y_0.002";
+    c.checks().claim(study::Kind::health, rid + ".energy", "energy balance error < 1 %, " + alt42.spec.name,
+                     alt42.balance_error < 0.01, "balance error " + fmt(alt42.balance_error, 3));
+    c.checks().claim(study::Kind::health, rid + ".quasistatic", "kinetic/internal energy < 5 % at the end, " + alt42.spec.name,
+                     alt42.kinetic_ratio < 0.05, "KE/IE " + fmt(alt42.kinetic_ratio, 3));
+    c.checks().claim(study::Kind::health, rid + ".hourglass", "hourglass/internal energy < 5 %, " + alt42.spec.name,
+                     alt42.hourglass_ratio < 0.05, "HG/IE " + fmt(alt42.hourglass_ratio, 3));
   }
   c.value("fe_speed", fmt(v), "mm/s");
   c.value("fe_h", fmt(o.base.element_length), "mm");
