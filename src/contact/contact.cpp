@@ -49,20 +49,15 @@ void Solver::contact_forces(double dt, bool friction_on) {
   en_.contact_stored = 0;
   for (std::size_t p = 0; p < contact_.size(); ++p) {
     const ContactPair& cp = m_.contacts[p];
-    int tool = -1;
-    for (std::size_t k = 0; k < m_.tools.size(); ++k)
-      if (m_.tools[k].name == cp.tool) tool = static_cast<int>(k);
+    const int tool = pair_tool_[p];
     const Tool& T = m_.tools[tool];
     auto& nodes = contact_[p];
     // Tributary areas on the current configuration (sequential: fixed order).
     for (auto& c : nodes) c.area = 0;
-    for (const auto& f : mesh.face_set(cp.faces)) {
-      const double A = quad_area(x_, y_, z_, f);
-      for (int q = 0; q < 4; ++q) {
-        auto it = std::lower_bound(nodes.begin(), nodes.end(), f[q],
-                                   [](const ContactNode& c, int v) { return c.node < v; });
-        it->area += 0.25 * A;
-      }
+    const auto& faces = *pair_faces_[p];
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      const double A = quad_area(x_, y_, z_, faces[f]);
+      for (int q = 0; q < 4; ++q) nodes[face_slot_[p][4 * f + q]].area += 0.25 * A;
     }
     const friction::FrictionLaw* law = friction_on ? cp.friction.get() : nullptr;
     if (texture_ref_.size() <= p) texture_ref_.resize(contact_.size());

@@ -30,7 +30,7 @@ Solver::Solver(Model& model) : m_(model) {
   x_ = mesh.x;
   y_ = mesh.y;
   z_ = mesh.z;
-  for (auto* v : {&vx_, &vy_, &vz_, &fx_, &fy_, &fz_, &mass_}) v->assign(n, 0.0);
+  for (auto* v : {&vx_, &vy_, &vz_, &fx_, &fy_, &fz_, &mass_, &ex_, &ey_, &ez_, &v0x_, &v0y_, &v0z_}) v->assign(n, 0.0);
   const auto& mat = *m_.material;
   // Two integration points per element (through the thickness): 12 stresses
   // and 2 material states each.
@@ -103,6 +103,13 @@ Solver::Solver(Model& model) : m_(model) {
         len[k] = std::min(len[k], V / A);
       }
     }
+    std::vector<int> slot;
+    for (const auto& f : faces)
+      for (int q = 0; q < 4; ++q)
+        slot.push_back(static_cast<int>(std::lower_bound(nodes.begin(), nodes.end(), f[q]) - nodes.begin()));
+    face_slot_.push_back(std::move(slot));
+    pair_faces_.push_back(&faces);
+    pair_tool_.push_back(tool_index(m_, cp.tool));
     contact_.push_back(std::move(cn));
     contact_stiffness_len_.push_back(std::move(len));
     contact_force_.emplace_back(nodes.size(), Vec3{0, 0, 0});

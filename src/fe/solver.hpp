@@ -18,6 +18,7 @@
 #include "fe/guards.hpp"
 #include "fe/model.hpp"
 #include "fe/mesh.hpp"
+#include "fe/step_phases.hpp"
 
 namespace drawbend::fe {
 
@@ -126,8 +127,17 @@ class Solver {
   void load_state(const std::string& in, const std::string& source);
 
  private:
+  // The phases of a cycle that touch the solver's own state (run_step).
+  void begin_step(int index);                 ///< resolve the step's names (plan_), reset per-step state
+  NodeView node_view();
+  void check_force_driven_tools() const;      ///< throws std::invalid_argument: a tool too light for dt
+  void guard_time_step();                     ///< non-finite or collapsed time step
   void element_forces();
   void contact_forces(double dt, bool friction);
+  void contact_phase(double dt, bool friction, NodeField ext);  ///< contact forces, added into ext
+  [[noreturn]] void fault_nonfinite_velocity(int node) const;
+  void account_energies(const EnergyIncrement& inc);  ///< adds the interval's energies; non-finite guard
+  void advance_time(double dt);               ///< t, cycle and the next stable step
   void compute_dt();
   /// Throws NumericalFault naming the element if the step is zero or not finite.
   void check_dt() const;
@@ -147,7 +157,14 @@ class Solver {
   std::vector<std::vector<double>> friction_state_;
   std::vector<std::vector<contact::TextureRef>> texture_ref_;  // per pair (corotational texture only), per node
   std::vector<std::vector<Vec3>> contact_force_;  // per pair, per contact node, force on sheet
-  std::vector<std::pair<std::string, Vec3>> reactions_, applied_;
+  // Contact pairs resolved at set-up: tool index, face list, and per face corner the slot of its node.
+  std::vector<int> pair_tool_;
+  std::vector<const std::vector<Quad>*> pair_faces_;
+  std::vector<std::vector<int>> face_slot_;
+  StepPlan plan_;         // the current step's names resolved (begin_step)
+  int plan_step_ = -1;    // the step plan_ belongs to
+  std::vector<Vec3> reactions_, applied_;  // last cycle: per reaction slot of plan_, per load of the step
+  std::vector<double> ex_, ey_, ez_, v0x_, v0y_, v0z_;  // per node: external force, velocity before the update
   std::vector<double> energy_scratch_[2];
   std::vector<double> rx_, ry_, rz_;  // per-node reactions of the last cycle
   std::vector<Vec3> slide_offset_;    // per rotation BC of the current step: slid distance [mm]
