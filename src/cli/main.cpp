@@ -1,10 +1,11 @@
 // drawbend: the command-line front end.
-//   drawbend run CASE.toml [--out DIR] [--threads N] [--quiet]
+//   drawbend run CASE.toml [--out DIR] [--threads N] [--quiet] [--progress-every S]
 //                [--checkpoint-every N|Ts] [--restart CHECKPOINT]
 // Runs one case deck, printing progress and an end summary (energy balance,
 // hourglass and kinetic energy ratios, added mass).  Exit codes: 0 ok,
 // 2 bad input (every problem of the deck, each with file:line: key), 3 a
 // numerical fault (a guard of fe/guards.hpp, naming element or node and time).
+#include <cmath>
 #include <csignal>
 #include <iostream>
 #include <string>
@@ -82,6 +83,7 @@ int main(int argc, char** argv) {
   opt.add(ro.out_dir, "out", "output directory");
   opt.add(ro.threads, "threads", "OpenMP threads (0: deck or default)");
   opt.add_flag(quiet, "quiet", "no progress line");
+  opt.add(ro.progress_every_s, "progress-every", "wall-clock seconds between progress lines (> 0)");
   opt.add(every, "checkpoint-every",
           "write <out>/checkpoint.bin every N cycles (e.g. 500) or T simulated seconds (e.g. 2e-3s)");
   opt.add(ro.restart, "restart", "continue from this checkpoint (same deck; use the same --out)");
@@ -89,6 +91,8 @@ int main(int argc, char** argv) {
   return cli::with_exit_codes([&] {
     if (!opt.parse(argc - (help ? 1 : 2), argv + (help ? 1 : 2))) return 0;
     ro.quiet = quiet;
+    if (!(ro.progress_every_s > 0) || !std::isfinite(ro.progress_every_s))
+      throw std::invalid_argument("--progress-every must be a positive number of seconds");
     ro.halt_after_cycles = halt;
     if (!every.empty()) io::parse_checkpoint_every(every, ro);
     if (halt > 0 && every.empty()) throw std::invalid_argument("--halt-after-cycles needs --checkpoint-every");
