@@ -337,11 +337,14 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
                      "meshes (Sec. 2.3.2, against Wilson's linear rise)",
                      sh < 0.25 && sh_f < 0.25,
                      fmt(100 * sh, 3) + " % and " + fmt(100 * sh_f, 3) + " % of the rise; a linear rise gives 60 %");
+    // Figs. 2.8, 2.15, 2.16 and Fig. 2.13's inside curve from the strip's
+    // last snapshot (ch2_fields.cpp).
+    field_figures(c, fr, gr);
     c.plot("strain_distribution", "fig_2_13", {{"datafile", c.out("tables/steady_strain_distribution.csv")},
+                                               {"insidefile", c.out("tables/inside_strain.csv")},
+                                               {"insidefinefile", c.out("tables/inside_strain_fine.csv")},
                                                {"wrapfile", fmt(Lw, 5)}});
   }
-  // Figs. 2.8, 2.15, 2.16 from the strip's last snapshot (ch2_fields.cpp).
-  field_figures(c, fr, gr);
   c.value("d_steady_mid", fmt_fixed(d_mid, 1), "mm");
   c.value("ratio_steady_mid", fmt_fixed(d_mid / Lw, 2));
   c.value("wrap_length", fmt_fixed(Lw, 1), "mm");

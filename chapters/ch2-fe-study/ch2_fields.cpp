@@ -4,8 +4,9 @@
 //     strip edge lift off the pin?
 //   - Figs. 2.15 and 2.16: the longitudinal stress and longitudinal plastic
 //     strain through the thickness along the strip (centre row of elements).
-//   - Sec. 2.3.2: the outside strain rises at the inlet, the inside strain at
-//     the outlet (the mechanism behind Fig. 2.13), checked on both meshes.
+//   - Fig. 2.13's inside curve (element layer nearest the pin), and Sec. 2.3.2:
+//     the outside strain rises at the inlet, the inside strain at the outlet
+//     (the mechanism behind Fig. 2.13), checked on both meshes.
 #include <cmath>
 #include <sstream>
 
@@ -105,6 +106,21 @@ void field_figures(study::Chapter& c, const sim::DrawBendResult& fr, const sim::
                                      {"wrapfile", fmt(Lw, 5)},
                                      {"title_text", "Longitudinal plastic strain, centre row, μ = 0.1 (Fig. 2.16)"},
                                      {"cb_text", "Longitudinal plastic strain"}});
+
+  // Fig. 2.13's inside curve: the longitudinal log strain of the element
+  // layer nearest the pin, centre row, at the end of the draw, on both meshes
+  // (the tracked sections of the history follow the outside surface only).
+  for (const auto* run : {&f, &g}) {
+    const bool chapter_mesh = run == &f;
+    auto lt = c.table({"position_mm", "inside_strain"},
+                      std::string("longitudinal log strain of the element layer nearest the pin, centre row, end of "
+                                  "the draw (mu = 0.1), ") + (chapter_mesh ? "chapter mesh" : "finer mesh") +
+                          ", from the last snapshot; position of the element centroid from the entry tangent [mm]");
+    const auto el = chapter_mesh ? els : sim::strip_elements(*run, s, E, nu);
+    for (const auto& e : el)
+      if (std::abs(e.y0 - el.front().y0) < 1e-6 && e.depth < 1.0 / s.through) lt.row({fmt(e.s, 6), fmt(e.eps_L, 6)});
+    c.save(lt, chapter_mesh ? "inside_strain" : "inside_strain_fine");
+  }
 
   // Sec. 2.3.2 (Fig. 2.13): "the strain increase was concentrated at the
   // inlet region of outside surface and at the outlet region of inside

@@ -138,6 +138,7 @@ std::vector<StripElement> strip_elements(const StripFields& f, const DrawBendSpe
     const double sigma_W = normal_stress(f.stress[e], n[1]), sigma_N = normal_stress(f.stress[e], n[2]);
     el.eps_pL = el.eps_L - (el.sigma_L - nu * (sigma_W + sigma_N)) / E;
     el.eps_p = f.plastic_strain[e];
+    el.x0 = c0[0];
     el.y0 = c0[1];
     el.depth = (c0[2] - R) / t;
     el.s = along(c);

@@ -40,6 +40,7 @@ struct StripElement {
   double s = 0;       ///< position of the centroid along the strip from the entry tangent [mm]:
                       ///< x upstream, R_m * angle in the wrap, Lw + depth below the pin axis downstream
   double depth = 0;   ///< reference through-thickness position of the centroid, 0 = inside (pin side), 1 = outside
+  double x0 = 0;      ///< reference position along the strip (centroid) [mm]: one value per column of elements
   double y0 = 0;      ///< reference position across the width (centroid) [mm]
   double ds = 0;      ///< the element's extent in s: s of its downstream end face less its upstream one [mm]
   double sigma_L = 0;  ///< longitudinal Cauchy stress e_L . sigma . e_L [MPa]
