@@ -18,6 +18,7 @@
 
 namespace drawbend::cli {
 int drawbend_deck_command(int argc, char** argv);
+int model_loop_command(int argc, char** argv);  // model_loop_cmd.cpp
 }
 
 int main(int argc, char** argv) {
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
       "  Exit codes: 0 done, 2 input error, 3 numerical fault.\n"
       "       drawbend drawbend-deck [--pin-diameter D ...] [--run DIR]\n"
       "  Writes (or runs) the draw-bend deck of the chapters' builder; --help lists its options.\n"
+      "       drawbend model-loop DATA.csv --out DIR [options]  (FE candidates; see drawbend model-loop --help)\n"
       "       drawbend loop DATA.csv --out DIR [options]  (see drawbend loop --help)\n"
       "       drawbend synth --effect E | --from-thesis --out DIR  (see drawbend synth --help)\n";
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
@@ -37,10 +39,11 @@ int main(int argc, char** argv) {
   }
   const std::string cmd = argv[1];
   if (cmd == "drawbend-deck") return cli::with_exit_codes([&] { return cli::drawbend_deck_command(argc - 1, argv + 1); });
+  if (cmd == "model-loop") return cli::with_exit_codes([&] { return cli::model_loop_command(argc - 1, argv + 1); });
   if (cmd == "loop") return cli::loop_main(argc - 1, argv + 1);    // loop_cmd.cpp
   if (cmd == "synth") return cli::synth_main(argc - 1, argv + 1);  // loop_cmd.cpp
   if (cmd != "run") {
-    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, loop, synth)\n";
+    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, drawbend-deck, model-loop, loop, synth)\n";
     return 2;
   }
   if (argc < 3) {
