@@ -1,5 +1,6 @@
 // Chapter 8 steps 1-3: measured points, the bending-force loop, the slope.
 #include <cmath>
+#include <sstream>
 
 #include "ch8_steps.hpp"
 #include "analysis/linear_fit.hpp"
@@ -62,12 +63,11 @@ std::string pct(double x) { return (x >= 0 ? "+" : "") + fmt_fixed(100 * x, 1); 
 sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg) {
   std::vector<sim::ModelCandidate> cands;
   const std::string data_dir = c.data("");
-  if (cfg.full_study) {
-    for (const char* n : {"split:0.15/0.3/0.45/0.6/1", "voce", "hill48"})
-      cands.push_back(sim::named_candidate(n, data_dir.substr(0, data_dir.size() - 1)));
-  } else {
-    cands.push_back(sim::named_candidate("split:0.3/0.6", data_dir.substr(0, data_dir.size() - 1)));
-  }
+  std::string list = cfg.candidates;
+  if (list.empty()) list = cfg.full_study ? "split:0.15/0.3/0.45/0.6/1,voce,hill48" : "split:0.3/0.6";
+  std::stringstream ss(list);
+  for (std::string n; std::getline(ss, n, ',');)
+    if (!n.empty()) cands.push_back(sim::named_candidate(n, data_dir.substr(0, data_dir.size() - 1)));
   sim::ModelLoopConfig lc;
   lc.fit_pin = cfg.fit_pin;
   lc.min_gain = cfg.min_gain;
@@ -126,7 +126,7 @@ sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Conf
     c.value("fb_final_err_d" + d, pct(f.rel_error()), "%");
     c.value("role_d" + d, f.held_out ? "held out" : "fit");
     // The goal as a check on every pin: the final model against the measured fit.
-    c.checks().agree("ch8.fb.d" + d, "F_B on the " + d + " mm pin, final model (" + r.final_model.model + "), " +
+    c.checks().agree(study::Kind::measured, "ch8.fb.d" + d, "F_B on the " + d + " mm pin, final model (" + r.final_model.model + "), " +
                                          (f.held_out ? "held out" : "fit pin"),
                      pts[k].bending_N, f.predicted_N, 0.10 * pts[k].bending_N, "N",
                      "10 % of the measured fit: the accuracy goal for the bending force (issue 23); on held-out pins "
@@ -188,7 +188,7 @@ void tension_slope(Chapter& c, const Inputs& in, const Config& cfg, const sim::M
     const double tol = 2 * std::sqrt(2.0) * sd / span;
     c.value("slope_" + key, fmt(slope, 3));
     c.value("slope_tol_" + key, fmt(tol, 2));
-    c.checks().agree("ch8.fb.slope." + key, "slope of F_B against back tension, " + fmt(cfg.fit_pin) + " mm pin, " + model,
+    c.checks().agree(study::Kind::measured, "ch8.fb.slope." + key, "slope of F_B against back tension, " + fmt(cfg.fit_pin) + " mm pin, " + model,
                      fit.slope.value, slope, tol, "N/N",
                      "two standard errors of a slope over " + fmt(span) + " N when each simulated F_B scatters by up to " +
                          fmt(sd, 2) + " N (2 x the difference between F_Y's mean over the last third and its regression value at the end: how far the draw is from steady)");

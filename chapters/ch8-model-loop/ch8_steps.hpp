@@ -19,6 +19,8 @@ struct Config {
   int full_study = 0;      ///< 1: the full tier's candidates, slopes and numerical studies
   double fit_pin = 12.7;   ///< the training pin [mm]
   double min_gain = 0.03;  ///< required fall of the held-out RMS relative error
+  std::string candidates;  ///< comma-separated candidate names; empty: the tier's list
+  int numerics = -1;       ///< 1/0: run the numerical studies or not; -1: with --full-study
 };
 
 struct Inputs {

@@ -10,6 +10,11 @@
 #include "core/hash.hpp"
 #include "sim/case_pool.hpp"
 
+#include <filesystem>
+#include <sstream>
+
+#include <toml++/toml.h>
+
 namespace drawbend::sim {
 
 std::vector<FbPoint> read_fb_points(const std::string& csv_path) {
@@ -217,6 +222,55 @@ ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoi
   return out;
 }
 
+namespace {
+
+/// The [material] table of a spec's material (empty: the isotropic J2 model on
+/// the spec's hardening curve; '{...}': an inline table; else a TOML file).
+toml::table material_table(const std::string& material) {
+  if (material.empty()) return toml::table{{"type", "j2"}};
+  if (material.front() != '{') {
+    toml::table file = toml::parse_file(material);
+    if (const auto* t = file["material"].as_table()) return *t;
+    throw InputError(material + ": expected a [material] table");
+  }
+  const std::string doc = "material = " + material;
+  toml::table w = toml::parse(std::string_view(doc));
+  return *w["material"].as_table();
+}
+
+void inline_all(toml::table& t) {
+  for (auto&& [k, v] : t)
+    if (auto* sub = v.as_table()) {
+      inline_all(*sub);
+      sub->is_inline(true);
+    }
+}
+
+/// `current` with the keys of `add` set (a flow-curve key replaces the
+/// others), as an inline table: candidates compose (Voce or Hill'48 on top of
+/// an accepted combined-hardening model keep its back stress).
+std::string merged_material(const std::string& current, const toml::table& add) {
+  toml::table m = material_table(current);
+  const bool curve = add.contains("voce") || add.contains("swift") || add.contains("hardening");
+  if (curve)
+    for (const char* k : {"voce", "swift", "hardening", "yield", "tangent"}) m.erase(k);
+  for (auto&& [k, v] : add) m.insert_or_assign(k, v);
+  inline_all(m);
+  m.is_inline(true);
+  std::ostringstream o;
+  o << m;
+  return o.str();
+}
+
+/// One key of a material file's [material] table (InputError if missing).
+toml::node_view<const toml::node> file_key(const toml::table& file_material, const std::string& path,
+                                           const char* key) {
+  if (!file_material.contains(key)) throw InputError(path + ": [material] has no '" + key + "'");
+  return file_material[key];
+}
+
+}  // namespace
+
 ModelCandidate named_candidate(const std::string& name, const std::string& data_dir) {
   ModelCandidate c;
   c.name = name;
@@ -247,14 +301,27 @@ ModelCandidate named_candidate(const std::string& name, const std::string& data_
                              s.material = "{ type = \"j2_combined\", kinematic = { beta = " + fmt_shortest(b) + " } }";
                            }});
     }
-  } else if (kind == "voce" && arg.empty()) {
-    c.what = "published Voce flow curve (Hou 2020) instead of the tabulated RD curve";
-    const std::string f = data_dir + "/materials/aa5754_o_voce_hou2020.toml";
-    c.members.push_back({"Voce flow curve", [f](DrawBendSpec& s) { s.material = f; }});
-  } else if (kind == "hill48" && arg.empty()) {
-    c.what = "Hill'48 yield surface, published r-values (Hou 2020)";
-    const std::string f = data_dir + "/materials/aa5754_o_hill48_hou2020.toml";
-    c.members.push_back({"Hill'48", [f](DrawBendSpec& s) { s.material = f; }});
+  } else if ((kind == "voce" || kind == "hill48") && arg.empty()) {
+    // Only the named part changes: Voce replaces the flow curve (yield surface
+    // and back stress kept); Hill'48 replaces the yield surface (flow curve
+    // and back stress kept), so each effect is judged alone.
+    const std::string f = data_dir + (kind == "voce" ? "/materials/aa5754_o_voce_hou2020.toml"
+                                                      : "/materials/aa5754_o_hill48_hou2020.toml");
+    const toml::table fm = material_table(f);
+    toml::table add;
+    if (kind == "voce") {
+      c.what = "published Voce flow curve (Hou 2020) instead of the tabulated RD (Swift) curve";
+      add.insert("voce", *file_key(fm, f, "voce").node());
+    } else {
+      c.what = "Hill'48 yield surface, published r-values (Hou 2020), on the same flow curve";
+      add.insert("type", "hill48");
+      add.insert("hill48", *file_key(fm, f, "hill48").node());
+    }
+    c.members.push_back({kind == "voce" ? "Voce flow curve" : "Hill'48", [add](DrawBendSpec& s) {
+                           toml::table a = add;
+                           // hill48 on a combined model keeps its back stress (hill48 takes `kinematic`)
+                           s.material = merged_material(s.material, a);
+                         }});
   } else if (kind == "ms") {
     c.what = "mass scaling (numerical: should change nothing when converged)";
     for (double x : values()) {

@@ -8,6 +8,10 @@
 //  - "split:0.3/0.6" is two members whose material is j2_combined with
 //    beta = 0.3 and 0.6; "ms:2500" sets mass scaling 2500; "across:4" sets 4;
 //    unknown names, beta 1.5 and across 2.5 are input errors;
+//  - candidates compose: Voce on top of split beta 0.3 keeps the back stress
+//    and replaces only the flow curve; Hill'48 on top of it keeps the back
+//    stress and the (tabulated) flow curve and sets the published r-values
+//    0.65 / 0.65 / 0.72 (data/materials/aa5754_o_hill48_hou2020.toml);
 //  - a loop whose points all lie on the fit pin has nothing held out: an
 //    input error before any run.
 #define BOOST_TEST_MODULE model_loop
@@ -16,6 +20,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include <toml++/toml.h>
 
 #include "core/csv.hpp"
 #include "sim/model_loop.hpp"
@@ -69,6 +75,29 @@ BOOST_AUTO_TEST_CASE(spec_and_candidates) {
   BOOST_CHECK_THROW(sim::named_candidate("split:1.5", "/data"), InputError);
   BOOST_CHECK_THROW(sim::named_candidate("split:0.3/x", "/data"), InputError);
   BOOST_CHECK_THROW(sim::named_candidate("across:2.5", "/data"), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(candidates_compose) {
+  sim::DrawBendSpec t;
+  t.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
+  sim::named_candidate("split:0.3", DRAWBEND_DATA_DIR).members[0].apply(t);
+  sim::DrawBendSpec v = t, h = t;
+  sim::named_candidate("voce", DRAWBEND_DATA_DIR).members[0].apply(v);
+  sim::named_candidate("hill48", DRAWBEND_DATA_DIR).members[0].apply(h);
+  auto table = [](const std::string& m) {
+    const std::string doc = "m = " + m;
+    return toml::table(*toml::parse(std::string_view(doc))["m"].as_table());
+  };
+  const toml::table mv = table(v.material), mh = table(h.material);
+  BOOST_TEST(mv["type"].value_or(std::string()) == "j2_combined");
+  BOOST_TEST(mv["kinematic"]["beta"].value_or(0.0) == 0.3);
+  BOOST_TEST(mv["voce"]["sigma0"].value_or(0.0) == 100.4);
+  BOOST_TEST(mh["type"].value_or(std::string()) == "hill48");
+  BOOST_TEST(mh["kinematic"]["beta"].value_or(0.0) == 0.3);
+  BOOST_TEST(mh["hill48"]["r0"].value_or(0.0) == 0.65);
+  BOOST_TEST(mh["hill48"]["r90"].value_or(0.0) == 0.72);
+  BOOST_TEST(!mh.contains("voce"));  // the flow curve stays the tabulated one
+  BOOST_TEST(sim::deck_text(h).find("aa5754_o_rd.csv") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(nothing_held_out) {
