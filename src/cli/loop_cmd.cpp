@@ -36,7 +36,45 @@ MapLibrary maps_for(const std::string& dir, const std::vector<double>& pins) {
 
 }  // namespace
 
+namespace {
+/// The value of `--model X` / `--model=X` in argv (empty if absent); removes it
+/// from args.  Throws InputError when --model has no value.
+std::string take_model(std::vector<char*>& args) {
+  std::string model;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string a = args[i];
+    if (a == "--model") {
+      if (i + 1 >= args.size()) throw InputError("--model: missing value (empirical or fe)");
+      model = args[i + 1];
+      args.erase(args.begin() + i, args.begin() + i + 2);
+      return model;
+    }
+    if (a.rfind("--model=", 0) == 0) {
+      model = a.substr(8);
+      args.erase(args.begin() + i);
+      return model;
+    }
+  }
+  return model;
+}
+}  // namespace
+
+// `--model fe` hands the command to the model-level loop (model_loop_cmd.cpp):
+// the FE model re-run with candidate effects against measured bending forces.
 int loop_main(int argc, char** argv) {
+  std::vector<char*> args(argv, argv + argc);
+  std::string model;
+  if (const int rc = with_exit_codes([&] { model = take_model(args); return 0; }); rc != 0) return rc;
+  if (model == "fe") return with_exit_codes([&] {
+      return model_loop_command(static_cast<int>(args.size()), args.data(), "drawbend loop DATA.csv --model fe");
+    });
+  if (!model.empty() && model != "empirical") {
+    std::cerr << "input error: --model: expected 'empirical' (the analysis-level loop) or 'fe' (the FE model re-run "
+                 "with candidate effects), found '" << model << "'\n";
+    return 2;
+  }
+  argc = static_cast<int>(args.size());
+  argv = args.data();
   const bool help = argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h");
   const std::string data_path = argc >= 2 ? argv[1] : "";
   LoopOptions lo;
@@ -63,6 +101,10 @@ int loop_main(int argc, char** argv) {
           "rotating-pin rows: swift (Eq. 2.1), fe (the FE map's bending_force_N) or none (F_B = 0)");
   opt.add(figures, "figures", "directory of the gnuplot scripts (empty: no figures)");
   opt.add(gnuplot, "gnuplot", "gnuplot executable");
+  std::string model_help = "empirical";
+  opt.add(model_help, "model",
+          "empirical (this analysis-level loop) or fe: re-run the draw-bend FE model with candidate effects "
+          "against measured bending forces (drawbend loop DATA.csv --model fe --help lists its options)");
   if (help) {
     const char* argv_help[] = {"drawbend loop", "--help"};
     opt.parse(2, const_cast<char**>(argv_help));
