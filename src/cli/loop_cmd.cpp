@@ -11,6 +11,8 @@
 #include "cli/exit_codes.hpp"
 #include "cli/loop_cmd.hpp"
 
+#include <omp.h>
+
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -79,7 +81,7 @@ int loop_main(int argc, char** argv) {
   const std::string data_path = argc >= 2 ? argv[1] : "";
   LoopOptions lo;
   std::string out = "loop-out", maps_dir, bending = "linear", figures = DRAWBEND_FIGURES_DIR, gnuplot = "gnuplot";
-  int seed = static_cast<int>(lo.seed);
+  int seed = static_cast<int>(lo.seed), threads = 0;
   Options opt("drawbend loop DATA.csv",
               "Close the loop on measured draw-bend data: fit the base model (bending force per pin, constant mu "
               "per cell by Eq. 5.1), rank every extra column by held-out error and a permutation test, add the "
@@ -96,6 +98,7 @@ int loop_main(int argc, char** argv) {
   opt.add(seed, "seed", "random seed of the permutation test");
   opt.add(lo.alpha, "alpha", "family-wise significance level (Bonferroni over candidates)");
   opt.add(lo.max_steps, "max-steps", "maximum number of effects to add");
+  opt.add(threads, "threads", "OpenMP threads of the fits (0: OMP_NUM_THREADS or all)");
   opt.add(bending, "bending",
           "bending force: linear (b0 + b1 F_back) or constant, from the rotating-pin rows; for pins without "
           "rotating-pin rows: swift (Eq. 2.1), fe (the FE map's bending_force_N) or none (F_B = 0)");
@@ -116,6 +119,7 @@ int loop_main(int argc, char** argv) {
   }
   return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
+    if (threads > 0) omp_set_num_threads(threads);
     const BendingSource bsrc = bending_source(bending);  // throws on an unknown name
     lo.bending_linear = bending != "constant";
     lo.progress = true;
@@ -154,7 +158,7 @@ int loop_main(int argc, char** argv) {
 int synth_main(int argc, char** argv) {
   SynthOptions so;
   std::string out = "synth-out", maps_dir, data_dir = DRAWBEND_DATA_DIR, pins_text = "12.7,25.4,42";
-  int seed = 1, points = 7;
+  int seed = 1, points = 7, threads = 0;
   bool from_thesis = false;
   Options opt("drawbend synth", "Write synthetic draw-bend data with a hidden law, or the thesis data set.");
   opt.add(out, "out", "output directory");
@@ -168,8 +172,10 @@ int synth_main(int argc, char** argv) {
   opt.add_flag(from_thesis, "from-thesis", "write the thesis fits as sample rows (thesis_drawbend.csv)");
   opt.add(data_dir, "data", "data directory (with thesis/) for --from-thesis");
   opt.add(points, "points", "rows per thesis fit for --from-thesis");
+  opt.add(threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all)");
   return with_exit_codes([&] {
     if (!opt.parse(argc, argv)) return 0;
+    if (threads > 0) omp_set_num_threads(threads);
     ensure_writable_dir(out, "--out");
     if (from_thesis) {
       const Dataset d = thesis_dataset(data_dir + "/thesis", points);
