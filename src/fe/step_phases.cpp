@@ -7,7 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "fe/solver.hpp"  // kParallelMin
+#include "fe/parallel_policy.hpp"  // parallel::worth_forking
 
 namespace drawbend::fe {
 
@@ -200,7 +200,7 @@ EnergyIncrement interval_energies(const NodeView& v, NodeField ext, NodeField r,
 
 void move_nodes(const NodeView& v, double dt) {
   const int n = v.n;
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+#pragma omp parallel for schedule(static) if (parallel::worth_forking(n, parallel::kNodeUpdateNs))
   for (int i = 0; i < n; ++i) {
     v.x[i] += dt * v.vx[i];
     v.y[i] += dt * v.vy[i];
