@@ -115,6 +115,14 @@ Solver::Solver(Model& model) : m_(model) {
     contact_force_.emplace_back(nodes.size(), Vec3{0, 0, 0});
     const int ss = cp.friction ? cp.friction->state_size() : 0;
     friction_state_.emplace_back(nodes.size() * ss, 0.0);
+    // Corotational texture axes: each node's reference face and initial RD, from the reference mesh
+    // (only where a step turns friction on: the axes are used by friction alone).
+    texture_ref_.emplace_back();
+    const bool friction_used = std::any_of(m_.steps.begin(), m_.steps.end(), [](const Step& s) { return s.friction; });
+    if (cp.friction && friction_used && cp.texture == ContactPair::Texture::corotational)
+      texture_ref_.back() = contact::texture_refs(faces, mesh.x.data(), mesh.y.data(), mesh.z.data(), nodes,
+                                                  m_.rolling_direction, cp.faces);
+    for (auto& s : energy_scratch_) s.resize(std::max(s.size(), nodes.size()), 0.0);
   }
   tool_offset_.assign(m_.tools.size(), Vec3{0, 0, 0});
   tool_vel_.assign(m_.tools.size(), Vec3{0, 0, 0});

@@ -1,6 +1,6 @@
 // The time loop of the explicit solver, one cycle as named phases (their
 // bodies: fe/step_phases.cpp; the element loop: fe/element_forces.cpp; contact
-// and friction: contact/contact.cpp), the step's set-up, and the guards.
+// and friction: the contact module, contact/contact.hpp), the step's set-up, and the guards.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -32,7 +32,7 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
 
     element_forces();                                              // forces: element loop, nodal sums
     apply_loads(m_, step, plan_, ts, nodes, ext, applied_.data());  // loads at t_n (and gravity)
-    contact_phase(dt, step.friction, ext);                          // contact and friction, into ext
+    contact_phase(dt, step.friction, nodes, ext);                   // contact and friction, into ext
     if (const int i = integrate_velocities(nodes, ext, a1, a2, v_old); i >= 0) fault_nonfinite_velocity(i);
     enforce_constraints(step, plan_, th, dt, nodes, slide_offset_.data(), reaction, reactions_.data());
     account_energies(interval_energies(nodes, ext, reaction, v_old, dt, c));  // guards: non-finite energy
@@ -118,8 +118,59 @@ void Solver::check_force_driven_tools() const {
     }
 }
 
-void Solver::contact_phase(double dt, bool friction, NodeField ext) {
-  contact_forces(dt, friction);
+contact::ContactView Solver::contact_view(std::size_t p, bool friction_on, const NodeView& n) {
+  const ContactPair& cp = m_.contacts[p];
+  const int tool = pair_tool_[p];
+  const Tool& T = m_.tools[tool];
+  contact::ContactView v;
+  v.x = n.x, v.y = n.y, v.z = n.z;
+  v.vx = n.vx, v.vy = n.vy, v.vz = n.vz;
+  v.mass = n.mass;
+  v.faces = pair_faces_[p]->data();
+  v.num_faces = static_cast<int>(pair_faces_[p]->size());
+  v.face_slot = face_slot_[p].data();
+  v.nodes = contact_[p].data();
+  v.num_nodes = static_cast<int>(contact_[p].size());
+  v.stiffness_len = contact_stiffness_len_[p].data();
+  v.force = contact_force_[p].data();
+  v.stored = energy_scratch_[0].data();
+  v.dissipated = energy_scratch_[1].data();
+  v.surfaces = T.surfaces.data();
+  v.num_surfaces = static_cast<int>(T.surfaces.size());
+  v.tool_offset = tool_offset_[tool];
+  v.tool_velocity = tool_vel_[tool];
+  v.penalty = cp.penalty;
+  v.damping = cp.damping;
+  v.bulk_modulus = m_.material->bulk_modulus();
+  v.law = friction_on ? cp.friction.get() : nullptr;
+  v.state_size = cp.friction ? cp.friction->state_size() : 0;
+  v.friction_state = friction_state_[p].data();
+  v.texture = v.law && cp.texture == ContactPair::Texture::corotational ? texture_ref_[p].data() : nullptr;
+  v.rolling_direction = m_.rolling_direction;
+  v.parallel = parallel::worth_forking(v.num_nodes, parallel::kContactNodeNs);
+  return v;
+}
+
+void Solver::guard_penetration(std::size_t p, int k) {
+  const ContactPair& cp = m_.contacts[p];
+  const Guard& pen = m_.guards.penetration;
+  const ContactNode& c = contact_[p][k];
+  const double L = contact_stiffness_len_[p][k];
+  std::ostringstream os;
+  os << "contact penetration " << c.depth << " mm at node " << c.node << " (faces '" << cp.faces << "' on tool '"
+     << cp.tool << "') is " << c.depth / L << " x the element size " << L << " mm normal to the face at t = " << t_
+     << " s (cycle " << cycle_ << "), above [guards] penetration = " << pen.limit << " (raise the contact penalty)";
+  guard_fired(pen, 4, os.str());
+}
+
+void Solver::contact_phase(double dt, bool friction, const NodeView& nodes, NodeField ext) {
+  for (auto& f : tool_force_) f = {0, 0, 0};
+  en_.contact_stored = 0;
+  for (std::size_t p = 0; p < contact_.size(); ++p) {
+    const contact::PairTotals totals{&en_.friction, &en_.contact_stored, &tool_force_[pair_tool_[p]]};
+    const contact::ContactView v = contact_view(p, friction, nodes);
+    if (const int k = contact::pair_forces(v, dt, m_.guards.penetration.limit, totals); k >= 0) guard_penetration(p, k);
+  }
   for (std::size_t p = 0; p < contact_.size(); ++p)
     for (std::size_t k = 0; k < contact_[p].size(); ++k) {
       const int i = contact_[p][k].node;
