@@ -18,11 +18,20 @@ constexpr double kEtaPaS = 1.2;  // Table 3.3 (Ter Haar); enters L only as a con
 bool close(double a, double b) { return std::abs(a - b) < 1e-9 * std::max(1.0, std::abs(a)); }
 }  // namespace
 
-double ellipse(double a, double b, double phi) {
-  const double c = std::cos(phi), s = std::sin(phi);
+double ellipse(double a, double b, double phi) { return ellipse_cs(a, b, std::cos(phi), std::sin(phi)); }
+
+double ellipse_cs(double a, double b, double c, double s) {
   const double den = std::sqrt(b * b * c * c + a * a * s * s);
   if (den < 1e-12) return a * c * c + b * s * s;
   return a * b / den;
+}
+
+void set_direction(Row& r, double phi) {
+  r.phi = phi;
+  r.cos_phi = std::cos(phi);
+  r.sin_phi = std::sin(phi);
+  r.sin2 = std::pow(std::sin(2 * phi), 2);
+  r.four2 = 0.5 * (std::cos(2 * phi) - std::cos(6 * phi));
 }
 
 BendingSource bending_source(const std::string& b) {
@@ -130,9 +139,7 @@ Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_
     r.rotating = s.rotating;
     r.fback = s.back_tension_N;
     r.y = s.outlet_force_N;
-    r.phi = s.direction_deg * M_PI / 180.0;
-    r.sin2 = std::pow(std::sin(2 * r.phi), 2);
-    r.four2 = 0.5 * (std::cos(2 * r.phi) - std::cos(6 * r.phi));
+    set_direction(r, s.direction_deg * M_PI / 180.0);
     r.sliding = std::isnan(s.sliding_mm) ? 0.0 : s.sliding_mm;
     if (!s.rotating) {
       std::string cell = s.lubricant + (d.speed_is_level ? " | " + fmt(s.speed_mm_s) + " mm/s" : "");
@@ -262,7 +269,7 @@ double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::
   if (r.rotating) return r.fback + bend;
   const int ir = L.mu_rd[r.cell], it = L.mu_td[r.cell];
   double mu0;
-  if (ir >= 0 && it >= 0) mu0 = ellipse(th[ir], th[it], r.phi);
+  if (ir >= 0 && it >= 0) mu0 = ellipse_cs(th[ir], th[it], r.cos_phi, r.sin_phi);
   else mu0 = th[ir >= 0 ? ir : it];
   if (!f.seen.empty() && ((ir >= 0 && !f.seen[ir]) || (it >= 0 && !f.seen[it]))) return std::nan("");
   double a1 = 0, factor = 1, pinf = 1;
@@ -545,9 +552,7 @@ double predict_mu(const Design& d, const Fit& f, int i) {
 double predict_mu_at(const Design& d, const Fit& f, int i, double phi_rad, double* p_out) {
   const Layout L = layout(d, f.spec);
   Row r = d.rows[i];
-  r.phi = phi_rad;
-  r.sin2 = std::pow(std::sin(2 * phi_rad), 2);
-  r.four2 = 0.5 * (std::cos(2 * phi_rad) - std::cos(6 * phi_rad));
+  set_direction(r, phi_rad);
   r.dir = -1;  // RD and TD carry no direction-level factor
   double mu = std::nan("");
   predict_row(d, f, L, f.theta, i, &mu, &r, p_out);
