@@ -2,17 +2,23 @@
 // solver, run from data/cases/strip_draw.toml with per-case overrides (die
 // force = pressure x die area, drawing speed, durations, time step).
 //   - Table 3.2 / Fig. 3.8: mu = (F1 - F2)/F_N at steady sliding against the
-//     input curve, Eq. (3.2), for the five pressure/speed cases.
+//     input curve, Eq. (3.2), for the five pressure/speed cases; Fig. 3.4:
+//     the pressure under the die at the end of case 1 (Fig. 3.3, the map
+//     before the thesis's contact fix, has no counterpart: see results.md).
 //   - Figs. 3.5-3.7 and the choice of update interval: the speed of a node
-//     under the die with mu updated every cycle and every 10, 100, 1000 cycles.
+//     under the die with mu updated every cycle and every 10, 100, 1000 cycles,
+//     and with Coulomb friction (Fig. 3.6).
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 
 #include "analysis/stribeck.hpp"
 #include "ch3_steps.hpp"
 #include "fe/solver.hpp"
 #include "friction/stribeck_law.hpp"
 #include "io/deck.hpp"
+#include "study/thesis_data.hpp"
 
 namespace ch3 {
 
@@ -23,11 +29,16 @@ namespace {
 struct DrawResult {
   double mu = 0, p_mean = 0, p_spread = 0;  ///< mu over the last third; pressure under the die [MPa]
   double v_mean = 0, v_std = 0, v_min = 0, v_max = 0;  ///< slip speed of the probe node over the last third [mm/s]
+  double ramp_v_max = 0;  ///< largest probe slip speed while the drawing speed ramps up [mm/s]
   long cycles = 0;
   std::vector<std::pair<double, double>> trace;  ///< (time in draw step, probe slip speed)
+  std::map<std::pair<double, double>, double> die_map;  ///< die pressure [MPa] at the end, by reference (x, y) [mm]
 };
 
-DrawResult draw(const std::string& deck_path, double p, double v, int interval) {
+/// One strip draw at pressure p [MPa] and speed v [mm/s] with the deck's
+/// Stribeck law updated every `interval` cycles or, with coulomb_mu >= 0,
+/// Coulomb friction of that mu on the die instead (Fig. 3.6).
+DrawResult draw(const std::string& deck_path, double p, double v, int interval, double coulomb_mu = -1) {
   io::Deck deck = io::read_deck(deck_path);
   fe::Model& m = deck.model;
   const auto [xmin, xmax] = std::minmax_element(m.mesh.x.begin(), m.mesh.x.end());
@@ -41,7 +52,10 @@ DrawResult draw(const std::string& deck_path, double p, double v, int interval) 
     if (cp.tool == "die") {
       const auto* law = dynamic_cast<const friction::Stribeck*>(cp.friction.get());
       if (!law) throw InputError(deck_path + ": the die contact must use the Stribeck law");
-      cp.friction = std::make_shared<friction::Stribeck>(law->params(), interval);
+      if (coulomb_mu >= 0)
+        cp.friction = std::make_shared<friction::Coulomb>(coulomb_mu);
+      else
+        cp.friction = std::make_shared<friction::Stribeck>(law->params(), interval);
     }
   fe::Step& d = m.steps.at(1);
   d.duration = ramp + std::max(slide / v, 2.0 * ramp);
@@ -89,6 +103,7 @@ DrawResult draw(const std::string& deck_path, double p, double v, int interval) 
   s.run_step(1, [&](const fe::Progress& pr) {
     const double vs = s.contact_nodes(pair)[probe].slip_speed;
     if (pr.cycle % 20 == 0) r.trace.push_back({pr.time - t0, vs});
+    if (pr.step_time < ramp) r.ramp_v_max = std::max(r.ramp_v_max, vs);
     if (pr.step_time < d.duration * 2.0 / 3.0) return;
     const auto F = s.tool_force("die");
     sft += std::abs(F[0]);  // mu = mean F_t / mean F_n over the last third
@@ -104,6 +119,7 @@ DrawResult draw(const std::string& deck_path, double p, double v, int interval) 
   r.v_std = std::sqrt(std::max(0.0, sv2 / n - r.v_mean * r.v_mean));
   double pmin = 1e30, pmax = 0, psum = 0;
   for (const auto& c : s.contact_nodes(pair)) {
+    r.die_map[{m.mesh.x[c.node], m.mesh.y[c.node]}] = c.pressure;
     pmin = std::min(pmin, c.pressure);
     pmax = std::max(pmax, c.pressure);
     psum += c.pressure;
@@ -116,16 +132,36 @@ DrawResult draw(const std::string& deck_path, double p, double v, int interval) 
 
 }  // namespace
 
-void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const CsvTable& t32) {
+void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const CsvTable& t32, double mu_coulomb) {
   const std::string deck = c.data("cases/strip_draw.toml");
   // Table 3.2 / Fig. 3.8.
   auto w = c.table({"case", "pressure_MPa", "velocity_mm_s", "L", "mu_input", "mu_simulated", "error_pct",
                     "pressure_spread_pct", "cycles"},
                    "Strip-draw verification of the Stribeck law (Table 3.2, Fig. 3.8); mu = (F1 - F2)/F_N");
-  double worst = 0;
+  double worst = 0, spread_max = 0;
   for (const auto& row : t32.rows) {
     const double p = t32.number(row, "pressure_MPa"), v = t32.number(row, "velocity_mm_s");
     const DrawResult r = draw(deck, p, v, 100);
+    spread_max = std::max(spread_max, r.p_spread);
+    if (&row == &t32.rows.front()) {
+      // Fig. 3.4: the pressure under the die at the end of the draw, case 1,
+      // over the strip's top face (reference positions).
+      std::set<double> xs, ys;
+      for (const auto& [xy, pr] : r.die_map) xs.insert(xy.first), ys.insert(xy.second);
+      c.save_grid("die_pressure", "pressure under the die [MPa] at the end of the draw, Table 3.2 case " +
+                                      t32.text(row, "case") + " (" + fmt(p) + " MPa, " + fmt(v) +
+                                      " mm/s): x, y reference position on the strip's top face [mm]",
+                  {xs.begin(), xs.end()}, {ys.begin(), ys.end()},
+                  [&](double x, double y) { return r.die_map.at({x, y}); });
+      // Mean over the row at each end of the strip (x = min and max).
+      for (double xe : {*xs.begin(), *xs.rbegin()}) {
+        double sum = 0;
+        for (double y : ys) sum += r.die_map.at({xe, y});
+        c.value(xe == *xs.begin() ? "die_p_xmin" : "die_p_xmax", fmt_fixed(sum / ys.size(), 2), "MPa");
+      }
+      c.plot("die_pressure", "fig_3_4", {{"gridfile", c.out("tables/die_pressure.dat")},
+                                         {"title_text", "Pressure under the die, target " + fmt(p) + " MPa (Fig. 3.4)"}});
+    }
     const double L = analysis::lubricant_number(v, p, s31), mu_in = analysis::stribeck_mu(L, s31);
     const double err = (r.mu - mu_in) / mu_in;
     worst = std::max(worst, std::abs(err));
@@ -138,6 +174,7 @@ void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const Cs
   }
   c.save(w, "strip_draw");
   c.value("strip_draw_worst", fmt_fixed(100 * worst, 2), "%");
+  c.value("strip_draw_spread_max", fmt_fixed(100 * spread_max, 1), "%");
   c.plot("stribeck_sim", "fig_3_8",
          {{"curvefile", c.out("tables/stribeck_curves.csv")}, {"simfile", c.out("tables/strip_draw.csv")}});
 
@@ -151,13 +188,15 @@ void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const Cs
                     "Stribeck update interval: Table 3.2 case " + t32.text(t32.rows.front(), "case") + " (" + fmt(p) +
                         " MPa, " + fmt(v) + " mm/s), probe node under the die centre");
   std::vector<std::vector<std::pair<double, double>>> traces;
+  std::vector<double> traces_std;  // probe speed std of those traces [mm/s]
   for (int interval : {1, 10, 100, 1000}) {
     const DrawResult r = draw(deck, p, v, interval);
     iv.row({std::to_string(interval), fmt_fixed(r.mu, 5), fmt_fixed(100 * (r.mu - mu_in) / mu_in, 2),
             fmt_fixed(r.v_mean, 3), fmt_fixed(r.v_std, 3), fmt_fixed(r.v_min, 3), fmt_fixed(r.v_max, 3)});
     c.value("iv" + std::to_string(interval) + "_std", fmt(r.v_std, 2), "mm/s");
     c.value("iv" + std::to_string(interval) + "_err", fmt_fixed(100 * (r.mu - mu_in) / mu_in, 2), "%");
-    if (interval == 1 || interval == 100) traces.push_back(r.trace);
+    if (interval == 1 || interval == 100) traces.push_back(r.trace), traces_std.push_back(r.v_std);
+    if (interval == 1) c.value("iv1_max", fmt_fixed(r.v_max, 1), "mm/s");
   }
   c.save(iv, "stribeck_interval");
   auto tr = c.table({"time_s", "speed_interval_1", "speed_interval_100"}, "Probe node slip speed in the draw step [mm/s]");
@@ -165,6 +204,48 @@ void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const Cs
     tr.row({fmt(traces[0][k].first, 6), fmt(traces[0][k].second, 6), fmt(traces[1][k].second, 6)});
   c.save(tr, "stribeck_probe_speed");
   c.plot("probe_speed", "fig_3_5_3_7", {{"datafile", c.out("tables/stribeck_probe_speed.csv")}});
+
+  // Fig. 3.6: the same case with Coulomb mu = 0.1 on the die, where the thesis
+  // saw no fluctuation ("not observed with the Coulomb friction model"; a
+  // minor one shows only when the plot is enlarged).
+  const DrawResult rc = draw(deck, p, v, 1, mu_coulomb);
+  c.checks().agree(study::Kind::verification, "ch3.strip_draw.coulomb.mu",
+                   "strip-draw mu with Coulomb mu = " + fmt(mu_coulomb) + " on the die (Fig. 3.6 run)", mu_coulomb,
+                   rc.mu, 0.02 * mu_coulomb, "-",
+                   "steady sliding at uniform pressure: 2 % for explicit dynamics and penalty contact, as the "
+                   "Stribeck cases");
+  // Stated before the run: the probe's speed over the last third varies by a
+  // standard deviation below 1 % of the span of the thesis's Stribeck
+  // fluctuation (-10 to 30 mm/s, Sec. 3.3.2), i.e. 0.4 mm/s: a line's width
+  // on a plot that shows that fluctuation, which is what "not observed" (and a
+  // minor fluctuation seen only when enlarged) means for Fig. 3.6.  And it
+  // varies less than with the Stribeck law updated every cycle, the contrast of
+  // Figs. 3.5 and 3.6.
+  const std::string sc = c.data("thesis/scalars.csv");
+  const double span = study::scalar(sc, "ch3_velocity_fluctuation_max").value -
+                      study::scalar(sc, "ch3_velocity_fluctuation_min").value;
+  const double std1 = traces_std[0];
+  c.checks().claim(study::Kind::verification, "ch3.strip_draw.coulomb.speed_steady",
+                   "probe speed steady with Coulomb friction: std < 1 % of the thesis's Stribeck fluctuation span "
+                   "and below the every-cycle Stribeck std (Sec. 3.3.2, Figs. 3.5-3.6)",
+                   rc.v_std < 0.01 * span && rc.v_std < std1,
+                   "std " + fmt(rc.v_std, 3) + " mm/s (Coulomb) against " + fmt(0.01 * span, 3) +
+                       " mm/s (1 % of the " + fmt(span) + " mm/s span) and " + fmt(std1, 3) +
+                       " mm/s (Stribeck, every cycle)");
+  c.value("coulomb_mu_in", fmt(mu_coulomb));
+  c.value("coulomb_std", fmt(rc.v_std, 2), "mm/s");
+  c.value("coulomb_ramp_max", fmt_fixed(rc.ramp_v_max, 1), "mm/s");
+  c.value("coulomb_mu", fmt_fixed(rc.mu, 4));
+  c.value("coulomb_range", fmt_fixed(rc.v_min, 2) + "–" + fmt_fixed(rc.v_max, 2), "mm/s");
+  auto tc = c.table({"time_s", "speed_coulomb", "speed_stribeck_interval_1"},
+                    "Probe node slip speed in the draw step [mm/s], Coulomb mu = " + fmt(mu_coulomb) +
+                        " and the Stribeck law updated every cycle");
+  for (std::size_t k = 0; k < std::min(rc.trace.size(), traces[0].size()); ++k)
+    tc.row({fmt(rc.trace[k].first, 6), fmt(rc.trace[k].second, 6), fmt(traces[0][k].second, 6)});
+  c.save(tc, "coulomb_probe_speed");
+  c.plot("probe_speed_coulomb", "fig_3_6", {{"datafile", c.out("tables/coulomb_probe_speed.csv")},
+                                            {"title_text", "Nodal sliding speed, Coulomb μ = " + fmt(mu_coulomb) +
+                                                               ", " + fmt(p) + " MPa, " + fmt(v) + " mm/s (Fig. 3.6)"}});
 }
 
 }  // namespace ch3

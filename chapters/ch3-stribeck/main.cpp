@@ -11,7 +11,8 @@
 //   4. The draw-bend condition of Sec. 3.5 (10 MPa, 50 mm/s).
 //   5. Checks of the text's statements.
 //   6. The strip-draw verification in our solver (Table 3.2, Fig. 3.8) and the
-//      update interval (Figs. 3.5-3.7), from data/cases/strip_draw.toml.
+//      update interval (Figs. 3.5-3.7), Coulomb friction (Fig. 3.6), from
+//      data/cases/strip_draw.toml.
 //   7. Draw-bend on three pins at 10 MPa (Sec. 3.5, Figs. 3.10-3.18),
 //      ch3_drawbend.cpp.
 #include <cmath>
@@ -92,7 +93,7 @@ void body(study::Chapter& c) {
                       100.0 * interval / steps, frac.half_ulp, "%", "printed to 0.01 %: half a unit in the last place");
 
   // 6. The solver.
-  ch3::strip_draw(c, s31, t32);
+  ch3::strip_draw(c, s31, t32, study::scalar(c.data("thesis/scalars.csv"), "ch3_strip_draw_coulomb_mu").value);
 
   // 7. Draw-bend on three pins.
   c.value("db_ran", run_fe ? "yes" : "no");

@@ -10,6 +10,7 @@
 #include "analysis/rope.hpp"
 #include <stdexcept>
 #include "core/csv.hpp"
+#include "loop/least_squares.hpp"
 
 namespace drawbend::loop {
 
@@ -18,11 +19,20 @@ constexpr double kEtaPaS = 1.2;  // Table 3.3 (Ter Haar); enters L only as a con
 bool close(double a, double b) { return std::abs(a - b) < 1e-9 * std::max(1.0, std::abs(a)); }
 }  // namespace
 
-double ellipse(double a, double b, double phi) {
-  const double c = std::cos(phi), s = std::sin(phi);
+double ellipse(double a, double b, double phi) { return ellipse_cs(a, b, std::cos(phi), std::sin(phi)); }
+
+double ellipse_cs(double a, double b, double c, double s) {
   const double den = std::sqrt(b * b * c * c + a * a * s * s);
   if (den < 1e-12) return a * c * c + b * s * s;
   return a * b / den;
+}
+
+void set_direction(Row& r, double phi) {
+  r.phi = phi;
+  r.cos_phi = std::cos(phi);
+  r.sin_phi = std::sin(phi);
+  r.sin2 = std::pow(std::sin(2 * phi), 2);
+  r.four2 = 0.5 * (std::cos(2 * phi) - std::cos(6 * phi));
 }
 
 BendingSource bending_source(const std::string& b) {
@@ -130,9 +140,7 @@ Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_
     r.rotating = s.rotating;
     r.fback = s.back_tension_N;
     r.y = s.outlet_force_N;
-    r.phi = s.direction_deg * M_PI / 180.0;
-    r.sin2 = std::pow(std::sin(2 * r.phi), 2);
-    r.four2 = 0.5 * (std::cos(2 * r.phi) - std::cos(6 * r.phi));
+    set_direction(r, s.direction_deg * M_PI / 180.0);
     r.sliding = std::isnan(s.sliding_mm) ? 0.0 : s.sliding_mm;
     if (!s.rotating) {
       std::string cell = s.lubricant + (d.speed_is_level ? " | " + fmt(s.speed_mm_s) + " mm/s" : "");
@@ -262,7 +270,7 @@ double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::
   if (r.rotating) return r.fback + bend;
   const int ir = L.mu_rd[r.cell], it = L.mu_td[r.cell];
   double mu0;
-  if (ir >= 0 && it >= 0) mu0 = ellipse(th[ir], th[it], r.phi);
+  if (ir >= 0 && it >= 0) mu0 = ellipse_cs(th[ir], th[it], r.cos_phi, r.sin_phi);
   else mu0 = th[ir >= 0 ? ir : it];
   if (!f.seen.empty() && ((ir >= 0 && !f.seen[ir]) || (it >= 0 && !f.seen[it]))) return std::nan("");
   double a1 = 0, factor = 1, pinf = 1;
@@ -381,55 +389,6 @@ std::vector<std::string> friction_names(const Design& d, const ModelSpec& spec, 
   return n;
 }
 
-// Levenberg-Marquardt on residual function r(theta) (numerical Jacobian of the
-// prediction); returns the final SSE and leaves J at the solution.
-double levenberg_marquardt(Eigen::VectorXd& th, const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& resid,
-                           Eigen::MatrixXd& J, bool& converged) {
-  const int p = static_cast<int>(th.size());
-  Eigen::VectorXd r = resid(th);
-  double sse = r.squaredNorm(), lambda = 1e-3;
-  J.resize(r.size(), p);
-  auto jacobian = [&]() {
-    for (int j = 0; j < p; ++j) {
-      Eigen::VectorXd t2 = th;
-      const double h = 1e-7 * std::max(1.0, std::abs(th[j]));
-      t2[j] += h;
-      J.col(j) = (r - resid(t2)) / h;  // d(prediction)/d(theta)
-    }
-  };
-  converged = false;
-  for (int it = 0; it < 100; ++it) {
-    jacobian();
-    const Eigen::MatrixXd A = J.transpose() * J;
-    const Eigen::VectorXd g = J.transpose() * r;
-    bool improved = false;
-    for (int tries = 0; tries < 20; ++tries) {
-      Eigen::MatrixXd Ad = A;
-      for (int j = 0; j < p; ++j) Ad(j, j) += lambda * std::max(A(j, j), 1e-12);
-      const Eigen::VectorXd t2 = th + Ad.ldlt().solve(g);
-      const Eigen::VectorXd r2 = resid(t2);
-      const double s2 = r2.squaredNorm();
-      if (std::isfinite(s2) && s2 < sse) {
-        const double rel = (sse - s2) / std::max(sse, 1e-300);
-        th = t2;
-        r = r2;
-        sse = s2;
-        lambda = std::max(lambda / 10, 1e-12);
-        improved = true;
-        if (rel < 1e-12) converged = true;
-        break;
-      }
-      lambda *= 10;
-    }
-    if (!improved || converged) {
-      converged = true;
-      break;
-    }
-  }
-  jacobian();
-  return sse;
-}
-
 }  // namespace
 
 Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& train_in) {
@@ -545,9 +504,7 @@ double predict_mu(const Design& d, const Fit& f, int i) {
 double predict_mu_at(const Design& d, const Fit& f, int i, double phi_rad, double* p_out) {
   const Layout L = layout(d, f.spec);
   Row r = d.rows[i];
-  r.phi = phi_rad;
-  r.sin2 = std::pow(std::sin(2 * phi_rad), 2);
-  r.four2 = 0.5 * (std::cos(2 * phi_rad) - std::cos(6 * phi_rad));
+  set_direction(r, phi_rad);
   r.dir = -1;  // RD and TD carry no direction-level factor
   double mu = std::nan("");
   predict_row(d, f, L, f.theta, i, &mu, &r, p_out);
