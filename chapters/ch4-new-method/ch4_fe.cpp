@@ -23,6 +23,7 @@
 #include "analysis/pressure_ratio.hpp"
 #include "analysis/rope.hpp"
 #include "analysis/stribeck.hpp"
+#include "core/run_output.hpp"
 #include "material/swift_fit.hpp"
 #include "ch4_steps.hpp"
 #include "sim/case_pool.hpp"
@@ -215,10 +216,10 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     {
       std::ifstream in(r.free.map_file);
       std::stringstream text;
-      text << "# reference_back_tension_N: " << fmt(2 * r.free.F_back, 8)
-           << " (full strip; the map is the half model's, frictionless, pin " << d << " mm)\n"
+      text << run_output::pin_map_header(2 * r.free.F_back,
+                                         "full strip; the map is the half model's, frictionless, pin " + d + " mm")
            << in.rdbuf();
-      write_file_atomic(c.out("maps/pin_" + d + "mm.csv"), text.str());
+      write_file_atomic(c.out("maps/" + run_output::pin_map_name(d)), text.str());
     }
     for (const auto* x : {&r.free, &r.strib}) {
       const bool fr = x == &r.free;

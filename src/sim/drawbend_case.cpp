@@ -8,6 +8,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/run_output.hpp"
 #include "io/deck.hpp"
 #include "io/run_case.hpp"
 #include "sim/material_spec.hpp"
@@ -155,20 +156,6 @@ std::string deck_text(const DrawBendSpec& s) {
 
 namespace {
 
-/// The last contact map of pair 0 written by run_case (contact_<k>_0.csv).
-fs::path last_map(const fs::path& dir) {
-  int best = -1;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    const std::string n = e.path().filename().string();
-    if (n.rfind("contact_", 0) == 0 && n.size() > 14 && n.substr(n.size() - 6) == "_0.csv") {
-      const int k = std::stoi(n.substr(8, n.size() - 14));
-      best = std::max(best, k);
-    }
-  }
-  if (best < 0) throw InputError(dir.string() + ": no contact map");
-  return dir / ("contact_" + std::to_string(best) + "_0.csv");
-}
-
 void reduce(DrawBendResult& r) {
   const fs::path dir(r.dir);
   r.history = read_csv((dir / "history.csv").string());
@@ -197,14 +184,13 @@ void reduce(DrawBendResult& r) {
   r.F_out_regression = sf / m + slope * (t.back() - st / m);
   // Contact map at the end of the draw, as angle round the pin from the inlet
   // tangent point (top of the pin) and position across the width.
-  r.map_file = last_map(dir).string();
-  const CsvTable cm = read_csv(r.map_file);
-  for (const auto& row : cm.rows) {
+  r.map_file = run_output::last_contact_map(dir.string(), 0);
+  for (const auto& row : run_output::read_contact_map(r.map_file).rows) {
     MapNode q;
-    q.angle_deg = std::atan2(cm.number(row, "x_mm"), cm.number(row, "z_mm")) * 180.0 / M_PI;
-    q.y = cm.number(row, "y0_mm");  // rows are rows of the mesh: the reference y
-    q.pressure = cm.number(row, "pressure_MPa");
-    q.area = cm.number(row, "area_mm2");
+    q.angle_deg = std::atan2(row.x, row.z) * 180.0 / M_PI;
+    q.y = row.y0;  // rows are rows of the mesh: the reference y
+    q.pressure = row.pressure;
+    q.area = row.area;
     r.map.push_back(q);
   }
   const CsvTable sum = read_csv((dir / "summary.csv").string());
