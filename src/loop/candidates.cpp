@@ -13,6 +13,7 @@
 
 #include "core/csv.hpp"
 #include "loop/effects.hpp"
+#include "loop/fast_mod.hpp"
 
 namespace drawbend::loop {
 
@@ -404,10 +405,13 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
       for (int u : g) fixed_gram = fixed_gram && up.ub[u] == up.ub[g[0]] && up.un[u] == up.un[g[0]];
     const UnitProbe::Gram A = fixed_gram ? up.gram(xu) : UnitProbe::Gram{};
     const int cap = std::max(1, permutations);
+    size_t kmax = 1;
+    for (const auto& g : groups) kmax = std::max(kmax, g.size());
+    const FastMod mod(kmax);  // mod(rng(), k) == rng() % k, without the division
     for (int batch = 100; b < cap; batch = std::min(cap - b, 2 * batch)) {
       for (int j = 0; j < batch; ++j, ++b) {
         for (const auto& g : groups)  // Fisher-Yates within the group
-          for (size_t k = g.size(); k > 1; --k) std::swap(xp[g[k - 1]], xp[g[rng() % k]]);
+          for (size_t k = g.size(); k > 1; --k) std::swap(xp[g[k - 1]], xp[g[mod(rng(), k)]]);
         if ((fixed_gram ? up.ess_permuted(xp, A) : up.ess(xp)) >= res.stat * (1 - 1e-12)) ++ge;
       }
       dec = sequential_decision(ge, b, thr);
