@@ -31,8 +31,9 @@
 // the block:
 //   5. theta = 0,  psi = 0,  fixed:        phi = -30 -> mu = 0.15119 along x;
 //                                          material RD at 30 deg at every point
-//   6. theta = 60, psi = 90, corotational: phi = 0 -> 0.2 along y;
-//                                          material RD at 90 deg at every point
+//   6. theta = 60, psi = 90, corotational: phi = 0 -> 0.2 along y: the deck
+//      as written, run by `verify` (spec.toml: block_rd30.*); its material
+//      axes at 90 deg are those of case 7
 //   7. theta = 60, psi = 0,  corotational: phi = -90 -> 0.1 along x
 // The material axes: within 0.5 deg of 30 + theta (as the block's turn), ND
 // along z within 1e-6.
@@ -145,5 +146,4 @@ static void sheet_frame_case(double theta_deg, double psi_deg, bool corotational
 }
 
 BOOST_AUTO_TEST_CASE(sheet_frame_rd30_fixed) { sheet_frame_case(0, 0, false); }
-BOOST_AUTO_TEST_CASE(sheet_frame_rd30_turned_along_rd) { sheet_frame_case(60, 90, true); }
 BOOST_AUTO_TEST_CASE(sheet_frame_rd30_turned_across_rd) { sheet_frame_case(60, 0, true); }
