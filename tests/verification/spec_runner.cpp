@@ -52,7 +52,8 @@ struct Problem {
   std::string id, requirement, quantity, answer, unit, reason, tolerance_kind;
   double tolerance = 0, value = NAN;
   bool has_value = false;
-  std::string deck, program, why_program;
+  std::vector<std::string> decks;  ///< one deck, or several that must each meet the answer
+  std::string program, why_program;
   std::vector<std::string> cases;
   Measure measure;
   bool runs() const { return program.empty(); }
@@ -177,10 +178,11 @@ std::vector<Problem> read_spec(const std::string& path, std::vector<std::string>
     if (exact && t->get("tolerance")) r.bad(*t->get("tolerance"), w + ".tolerance", "an exact answer has no tolerance");
     if (found && !(p.tolerance > 0)) r.bad(*t->get("tolerance"), w + ".tolerance", "must be > 0");
     p.program = r.text(*t, "program", w, false);
-    p.deck = r.text(*t, "deck", w, false);
+    if (const toml::node* d = t->get("deck"))
+      p.decks = d->is_string() ? std::vector<std::string>{r.text(*t, "deck", w)} : r.strings(*t, "deck", w);
     p.value = r.number(*t, "value", w, p.runs(), p.has_value);
     if (p.runs()) {
-      if (p.deck.empty()) r.bad(*t, w, "expected either deck (with measure) or program (with cases)");
+      if (p.decks.empty()) r.bad(*t, w, "expected either deck (with measure) or program (with cases)");
       const toml::table* m = t->get_as<toml::table>("measure");
       if (!m) r.bad(*t, w + ".measure", "missing required table (what to read from the run output)");
       else p.measure = read_measure(r, *m, w + ".measure");
@@ -221,9 +223,9 @@ std::vector<std::string> tie_to_tests(const std::vector<Problem>& ps, const fs::
   std::set<std::pair<std::string, std::string>> named;
   std::set<std::string> decks;
   for (const auto& p : ps) {
-    if (!p.deck.empty()) {
-      decks.insert(fs::weakly_canonical(dir / p.deck).string());
-      if (!fs::exists(dir / p.deck)) err.push_back(spec + ": " + p.id + ": deck '" + p.deck + "' does not exist");
+    for (const auto& d : p.decks) {
+      decks.insert(fs::weakly_canonical(dir / d).string());
+      if (!fs::exists(dir / d)) err.push_back(spec + ": " + p.id + ": deck '" + d + "' does not exist");
     }
     if (p.runs()) continue;
     const auto it = cases.find(p.program);
@@ -325,50 +327,53 @@ int main(int argc, char** argv) {
   for (const auto& o : orphans) std::cout << "error: " << o << "\n";
   int runs = 0, programs = 0, misses = 0;
   std::map<std::string, std::string> ran;  // deck -> "" (ran) or the failure
-  std::cout << std::left << std::setw(34) << "problem" << std::setw(12) << "measured" << std::setw(12) << "answer"
+  std::cout << std::left << std::setw(44) << "problem" << std::setw(12) << "measured" << std::setw(12) << "answer"
             << std::setw(11) << "error" << std::setw(11) << "tolerance" << "status\n";
   for (const auto& p : ps) {
     if (!p.runs()) {
       ++programs;
-      std::cout << std::setw(34) << p.id << std::setw(12) << "-" << std::setw(12) << (p.has_value ? g(p.value) : "-")
+      std::cout << std::setw(44) << p.id << std::setw(12) << "-" << std::setw(12) << (p.has_value ? g(p.value) : "-")
                 << std::setw(11) << "-" << std::setw(11) << g(p.tolerance) << "program: ctest -R '^" << p.test()
                 << "$'\n";
       continue;
     }
-    ++runs;
-    const fs::path deck = dir / p.deck;
-    const fs::path run_dir = fs::path(out) / deck.stem();
-    std::string status;
-    if (check_only) {
-      status = "not run (--check-only)";
-    } else {
-      if (!ran.count(p.deck)) {
-        fs::create_directories(out);
-        const std::string log = (fs::path(out) / (deck.stem().string() + ".log")).string();
-        const std::string cmd = quote(exe) + " run " + quote(deck.string()) + " --out " + quote(run_dir.string()) +
-                                " --quiet --threads 1 > " + quote(log) + " 2>&1";
-        const int rc = std::system(cmd.c_str());
-        ran[p.deck] = rc == 0 ? "" : "drawbend run failed (see " + log + ")";
-      }
-      status = ran[p.deck];
-    }
-    double worst_q = NAN, worst = -1;
-    if (status.empty()) {
-      try {
-        for (double q : measure(p.measure, run_dir)) {
-          const double e = std::isfinite(q) ? error_of(p, q) : INFINITY;
-          if (e > worst) worst = e, worst_q = q;
+    for (const auto& d : p.decks) {
+      ++runs;
+      const fs::path deck = dir / d;
+      const fs::path run_dir = fs::path(out) / deck.stem();
+      std::string status;
+      if (check_only) {
+        status = "not run (--check-only)";
+      } else {
+        if (!ran.count(d)) {
+          fs::create_directories(out);
+          const std::string log = (fs::path(out) / (deck.stem().string() + ".log")).string();
+          const std::string cmd = quote(exe) + " run " + quote(deck.string()) + " --out " + quote(run_dir.string()) +
+                                  " --quiet --threads 1 > " + quote(log) + " 2>&1";
+          const int rc = std::system(cmd.c_str());
+          ran[d] = rc == 0 ? "" : "drawbend run failed (see " + log + ")";
         }
-        status = worst <= p.tolerance ? "pass" : "MISS";
-      } catch (const std::exception& e) {
-        status = std::string("error: ") + e.what();
+        status = ran[d];
       }
+      double worst_q = NAN, worst = -1;
+      if (status.empty()) {
+        try {
+          for (double q : measure(p.measure, run_dir)) {
+            const double e = std::isfinite(q) ? error_of(p, q) : INFINITY;
+            if (e > worst) worst = e, worst_q = q;
+          }
+          status = worst <= p.tolerance ? "pass" : "MISS";
+        } catch (const std::exception& e) {
+          status = std::string("error: ") + e.what();
+        }
+      }
+      if (status != "pass" && status.rfind("not run", 0) != 0) ++misses;
+      const std::string name = p.decks.size() > 1 ? p.id + " [" + deck.stem().string() + "]" : p.id;
+      std::cout << std::setw(44) << name << std::setw(12) << g(worst_q) << std::setw(12) << g(p.value) << std::setw(11)
+                << (worst >= 0 ? g(worst) : "-") << std::setw(11) << g(p.tolerance) << status << "\n";
     }
-    if (status != "pass" && status.rfind("not run", 0) != 0) ++misses;
-    std::cout << std::setw(34) << p.id << std::setw(12) << g(worst_q) << std::setw(12) << g(p.value) << std::setw(11)
-              << (worst >= 0 ? g(worst) : "-") << std::setw(11) << g(p.tolerance) << status << "\n";
   }
-  std::cout << ps.size() << " problems: " << runs << " deck problems run here (" << misses << " missed), " << programs
+  std::cout << ps.size() << " problems: " << runs << " deck measurements run here (" << misses << " missed), " << programs
             << " computed by their programs; " << orphans.size() << " orphan(s)\n";
   return misses || !orphans.empty() ? 1 : 0;
 }
