@@ -295,6 +295,12 @@ std::string g(double v) {
   return s.str();
 }
 
+/// An error or a tolerance as the entry states it: "1 %" (relative), "0.001" (absolute), "exact".
+std::string in_kind(const Problem& p, double v) {
+  if (p.tolerance_kind == "exact") return v == 0 ? "exact" : g(v);
+  return p.tolerance_kind == "relative" ? g(100 * v) + " %" : g(v);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -327,13 +333,15 @@ int main(int argc, char** argv) {
   for (const auto& o : orphans) std::cout << "error: " << o << "\n";
   int runs = 0, programs = 0, misses = 0;
   std::map<std::string, std::string> ran;  // deck -> "" (ran) or the failure
+  std::vector<std::string> missed;         // what each missed entry asked for
   std::cout << std::left << std::setw(44) << "problem" << std::setw(12) << "measured" << std::setw(12) << "answer"
-            << std::setw(11) << "error" << std::setw(11) << "tolerance" << "status\n";
+            << std::setw(7) << "unit" << std::setw(11) << "error" << std::setw(11) << "tolerance" << "status\n";
   for (const auto& p : ps) {
     if (!p.runs()) {
       ++programs;
       std::cout << std::setw(44) << p.id << std::setw(12) << "-" << std::setw(12) << (p.has_value ? g(p.value) : "-")
-                << std::setw(11) << "-" << std::setw(11) << g(p.tolerance) << "program: ctest -R '^" << p.test()
+                << std::setw(7) << p.unit << std::setw(11) << "-" << std::setw(11) << in_kind(p, p.tolerance)
+                << "program: ctest -R '^" << p.test()
                 << "$'\n";
       continue;
     }
@@ -367,12 +375,18 @@ int main(int argc, char** argv) {
           status = std::string("error: ") + e.what();
         }
       }
-      if (status != "pass" && status.rfind("not run", 0) != 0) ++misses;
       const std::string name = p.decks.size() > 1 ? p.id + " [" + deck.stem().string() + "]" : p.id;
-      std::cout << std::setw(44) << name << std::setw(12) << g(worst_q) << std::setw(12) << g(p.value) << std::setw(11)
-                << (worst >= 0 ? g(worst) : "-") << std::setw(11) << g(p.tolerance) << status << "\n";
+      if (status != "pass" && status.rfind("not run", 0) != 0) {
+        ++misses;
+        missed.push_back(name + ": " + p.requirement + "\n    quantity: " + p.quantity + "\n    answer: " + p.answer +
+                         "\n    tolerance: " + p.reason);
+      }
+      std::cout << std::setw(44) << name << std::setw(12) << g(worst_q) << std::setw(12) << g(p.value) << std::setw(7)
+                << p.unit << std::setw(11) << (worst >= 0 ? in_kind(p, worst) : "-") << std::setw(11)
+                << in_kind(p, p.tolerance) << status << "\n";
     }
   }
+  for (const auto& m : missed) std::cout << "missed " << m << "\n";
   std::cout << ps.size() << " problems: " << runs << " deck measurements run here (" << misses << " missed), " << programs
             << " computed by their programs; " << orphans.size() << " orphan(s)\n";
   return misses || !orphans.empty() ? 1 : 0;
