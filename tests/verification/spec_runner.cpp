@@ -9,7 +9,8 @@
 //    cases must exist; and every test case of every test_*.cpp and every
 //    decks/*.toml of the folder must be named by some entry.  An orphan on
 //    either side is an error (exit 1).
-// 3. Runs each deck entry's deck once with `drawbend run` (one thread), reads
+// 3. Runs each deck entry's deck once with `drawbend run` (one thread) into
+//    DIR/<deck name>/ (emptied first; its console output in DIR/<deck name>.log), reads
 //    its quantity from the run output (history.csv, summary.csv or the last
 //    contact map), compares it with the stated answer and tolerance, prints a
 //    table and exits 1 on any miss.  Program entries are listed with the CTest
@@ -355,6 +356,7 @@ int main(int argc, char** argv) {
       } else {
         if (!ran.count(d)) {
           fs::create_directories(out);
+          fs::remove_all(run_dir);  // no stale contact map of an earlier run may be read as the last one
           const std::string log = (fs::path(out) / (deck.stem().string() + ".log")).string();
           const std::string cmd = quote(exe) + " run " + quote(deck.string()) + " --out " + quote(run_dir.string()) +
                                   " --quiet --threads 1 > " + quote(log) + " 2>&1";
