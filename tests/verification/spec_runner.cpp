@@ -144,6 +144,10 @@ Measure read_measure(Reader& r, const toml::table& m, const std::string& w) {
 std::vector<Problem> read_spec(const std::string& path, std::vector<std::string>& problems) {
   Reader r{path, {}};
   toml::table root;
+  if (!fs::is_regular_file(path)) {
+    problems.push_back(path + ": cannot be read (no such file)");
+    return {};
+  }
   try {
     root = toml::parse_file(path);
   } catch (const toml::parse_error& e) {
@@ -160,9 +164,12 @@ std::vector<Problem> read_spec(const std::string& path, std::vector<std::string>
   }
   std::set<std::string> ids;
   for (std::size_t i = 0; i < arr->size(); ++i) {
-    const toml::table* t = (*arr)[i].as_table();
-    if (!t) continue;
     const std::string w = "problem[" + std::to_string(i + 1) + "]";
+    const toml::table* t = (*arr)[i].as_table();
+    if (!t) {
+      r.bad((*arr)[i], w, "expected a table ([[problem]])");
+      continue;
+    }
     r.allowed(*t, w, {"id", "requirement", "quantity", "answer", "value", "unit", "tolerance", "tolerance_kind", "reason",
                       "deck", "measure", "program", "cases", "why_program"});
     Problem p;
