@@ -309,6 +309,20 @@ std::string in_kind(const Problem& p, double v) {
   return p.tolerance_kind == "relative" ? g(100 * v) + " %" : g(v);
 }
 
+/// One line of the table: each cell padded to its column, and never run into the next.
+void row(const std::string& id, const std::string& measured, const std::string& answer, const std::string& unit,
+         const std::string& error, const std::string& tolerance, const std::string& status) {
+  std::string line;
+  auto cell = [&line](const std::string& s, std::size_t w) { line += s + std::string(s.size() < w ? w - s.size() : 1, ' '); };
+  cell(id, 52);
+  cell(measured, 13);
+  cell(answer, 12);
+  cell(unit, 6);
+  cell(error, 12);
+  cell(tolerance, 11);
+  std::cout << line << status << "\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -342,15 +356,12 @@ int main(int argc, char** argv) {
   int runs = 0, programs = 0, misses = 0;
   std::map<std::string, std::string> ran;  // deck -> "" (ran) or the failure
   std::vector<std::string> missed;         // what each missed entry asked for
-  std::cout << std::left << std::setw(44) << "problem" << std::setw(12) << "measured" << std::setw(12) << "answer"
-            << std::setw(7) << "unit" << std::setw(11) << "error" << std::setw(11) << "tolerance" << "status\n";
+  row("problem", "measured", "answer", "unit", "error", "tolerance", "status");
   for (const auto& p : ps) {
     if (!p.runs()) {
       ++programs;
-      std::cout << std::setw(44) << p.id << std::setw(12) << "-" << std::setw(12) << (p.has_value ? g(p.value) : "-")
-                << std::setw(7) << p.unit << std::setw(11) << "-" << std::setw(11) << in_kind(p, p.tolerance)
-                << "program: ctest -R '^" << p.test()
-                << "$'\n";
+      row(p.id, "-", p.has_value ? g(p.value) : "-", p.unit, "-", in_kind(p, p.tolerance),
+          "program: ctest -R '^" + p.test() + "$'");
       continue;
     }
     for (const auto& d : p.decks) {
@@ -390,9 +401,7 @@ int main(int argc, char** argv) {
         missed.push_back(name + ": " + p.requirement + "\n    quantity: " + p.quantity + "\n    answer: " + p.answer +
                          "\n    tolerance: " + p.reason);
       }
-      std::cout << std::setw(44) << name << std::setw(12) << g(worst_q) << std::setw(12) << g(p.value) << std::setw(7)
-                << p.unit << std::setw(11) << (worst >= 0 ? in_kind(p, worst) : "-") << std::setw(11)
-                << in_kind(p, p.tolerance) << status << "\n";
+      row(name, g(worst_q), g(p.value), p.unit, worst >= 0 ? in_kind(p, worst) : "-", in_kind(p, p.tolerance), status);
     }
   }
   for (const auto& m : missed) std::cout << "missed " << m << "\n";
