@@ -20,6 +20,13 @@
 
 namespace drawbend::analysis {
 
+/// The anisotropic ellipse of Sec. 6.4 (Fig. 6.5): the friction coefficient
+/// at angle phi from RD between mu_RD = a and mu_TD = b (each from the surface),
+///   mu(phi) = a b / sqrt(b^2 cos^2 phi + a^2 sin^2 phi),
+/// from c = cos phi and s = sin phi.  When the denominator vanishes (a and b
+/// both ~0) it returns a c^2 + b s^2 instead of 0/0.
+double ellipse_mu(double a, double b, double c, double s);
+
 /// The nine shape functions of Eq. (6.1) at (xi, eta); they sum to one.
 std::array<double, 9> nine_node_shape(double xi, double eta);
 

@@ -32,4 +32,9 @@ double mu_rope(double Fx_N, double Fy_N, double FB_N, double theta_rad);
 /// where F_fric = F_y - F_x - F_B is the pure friction force.  Theta = pi/2 gives Eq. (5.1).
 double mu_from_friction(double Ffric_N, double Fback_N, double theta_rad);
 
+/// Eq. (5.1) solved for the friction force (the inverse of mu_from_friction,
+/// the capstan law of Eq. 2.3 without bending): F_fric = F_back (exp(mu Theta) - 1).
+/// Computed as exp(...) - 1, not expm1, so that the loop's fits keep their bits.
+double friction_from_mu(double mu, double Fback_N, double theta_rad);
+
 }  // namespace drawbend::analysis
