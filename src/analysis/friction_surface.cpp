@@ -15,12 +15,6 @@ std::array<double, 3> lagrange3(double s) {
 }
 }  // namespace
 
-double ellipse_mu(double a, double b, double c, double s) {
-  const double den = std::sqrt(b * b * c * c + a * a * s * s);
-  if (den < 1e-12) return a * c * c + b * s * s;
-  return a * b / den;
-}
-
 std::array<double, 9> nine_node_shape(double xi, double eta) {
   const auto a = lagrange3(xi), b = lagrange3(eta);
   std::array<double, 9> N{};

@@ -19,8 +19,4 @@ double implied_rotating_bending(double Fback, double Ffric, double Fbend_num, do
   return (2.0 * Fback + Fbend_num + Ffric) / c - 2.0 * Fback;
 }
 
-double pressure_at_tension(double p_ref, double F, double FB, double Ff, double F_ref, double FB_ref) {
-  return p_ref * (2 * F + FB + Ff) / (2 * F_ref + FB_ref);
-}
-
 }  // namespace drawbend::analysis

@@ -26,6 +26,9 @@ double implied_rotating_bending(double Fback, double Ffric, double Fbend_numerat
 /// bending force FB and friction force Ff (F_y = F + FB + Ff),
 ///   p = p_ref (2 F + FB + Ff) / (2 F_ref + FB_ref).
 /// Evaluated in exactly that order (the loop's fits depend on its bits).
-double pressure_at_tension(double p_ref_MPa, double F, double FB, double Ff, double F_ref, double FB_ref);
+/// Inline: the loop's fits call it per row and iteration.
+inline double pressure_at_tension(double p_ref_MPa, double F, double FB, double Ff, double F_ref, double FB_ref) {
+  return p_ref_MPa * (2 * F + FB + Ff) / (2 * F_ref + FB_ref);
+}
 
 }  // namespace drawbend::analysis

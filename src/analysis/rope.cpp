@@ -46,6 +46,4 @@ double mu_from_friction(double Ffric, double Fback, double theta) {
   return mu_rope(Fback, Fback + Ffric, 0.0, theta);
 }
 
-double friction_from_mu(double mu, double Fback, double theta) { return Fback * (std::exp(mu * theta) - 1); }
-
 }  // namespace drawbend::analysis

@@ -30,7 +30,9 @@ std::string ModelSpec::describe() const {
 
 namespace {
 
-// Per-pin least-squares bending line on the training rotating rows.
+// Per-pin least-squares bending line on the training rotating rows.  Not
+// analysis::fit_line: that one takes the means as (sum x)/n where this sums
+// x/n (other last bits), and the standard errors here need sxx and the means.
 void fit_bending(const Design& d, const std::vector<int>& train, bool linear, Fit& f) {
   const size_t np = d.pins.size();
   f.b0.assign(np, std::nan(""));

@@ -30,7 +30,7 @@ double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::
   if (r.rotating) return r.fback + bend;
   const int ir = L.mu_rd[r.cell], it = L.mu_td[r.cell];
   double mu0;
-  if (ir >= 0 && it >= 0) mu0 = ellipse_cs(th[ir], th[it], r.cos_phi, r.sin_phi);
+  if (ir >= 0 && it >= 0) mu0 = analysis::ellipse_mu(th[ir], th[it], r.cos_phi, r.sin_phi);
   else mu0 = th[ir >= 0 ? ir : it];
   if (!f.seen.empty() && ((ir >= 0 && !f.seen[ir]) || (it >= 0 && !f.seen[it]))) return std::nan("");
   Terms t;
