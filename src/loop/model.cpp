@@ -1,7 +1,7 @@
 // The loop's force model fitted to the rows: the bending line per pin, the
 // friction parameters by Levenberg-Marquardt with standard errors, and the
 // joint fit of both (for F tests).  Design: design.cpp; prediction:
-// predict.cpp; the effects: effect_rules.cpp.
+// predict.cpp; the effects: effect_rules.hpp.
 #include <algorithm>
 #include <cmath>
 

@@ -4,7 +4,8 @@
 // fits (model.cpp) and the public predictions (predict.cpp) share.
 //
 //   design.cpp        Design, make_design: per-row quantities from the data and maps
-//   effect_rules.cpp  one rule per EffectKind: its parameter count, its term in mu, its names
+//   effect_rules.hpp  one rule per EffectKind: its parameter count, its term in mu, its names
+//   effect_rules.cpp  the layout of theta and the parameters' names from those rules
 //   predict.cpp       predict_row: base model + effects, Eqs. 2.2, 5.1 and the ellipse
 //   model.cpp         the fits: bending lines, Levenberg-Marquardt, standard errors
 #include <string>
@@ -16,7 +17,7 @@
 
 namespace drawbend::loop::detail {
 
-/// Where each friction parameter lives in theta.
+/// Where each friction parameter lives in theta (effect_rules.cpp).
 struct Layout {
   std::vector<int> mu_rd, mu_td;  ///< per cell, -1 absent
   std::vector<int> eff_start;     ///< per effect: index of its first parameter
@@ -29,7 +30,7 @@ struct Terms {
   double a1 = 0, factor = 1, pinf = 1;
 };
 
-/// What an effect's rule sees when it adds its term for row i (r is the row,
+/// What an effect's rule (effect_rules.hpp) sees when it adds its term for row i (r is the row,
 /// possibly a copy at another direction); th points at the effect's first parameter.
 struct EffectArgs {
   const Design& d;
@@ -40,18 +41,6 @@ struct EffectArgs {
   const Effect& e;
   const double* th;
 };
-
-/// One entry of the effect table: everything the model does per EffectKind.
-struct EffectRule {
-  int (*count)(const Design& d, const Effect& e);  ///< number of friction parameters
-  void (*apply)(const EffectArgs& a, Terms& t);    ///< adds the effect's term (nullptr: none)
-  /// Writes the names of its parameters at n[s..]; level_names: the effect's level names.
-  void (*name)(const Design& d, const Effect& e, const std::vector<std::string>& level_names, int s,
-               std::vector<std::string>& n);
-};
-
-/// The rule of an effect kind (one switch, checked for completeness by -Wswitch).
-const EffectRule& rule(EffectKind k);
 
 Layout layout(const Design& d, const ModelSpec& spec);
 

@@ -1,14 +1,14 @@
 // The loop's force model evaluated at a row: base model plus effects.
 //   rotating pin:  F_out = F_back + F_B
 //   fixed pin:     F_out = F_back + F_B + F_fric,  F_fric = F_back (exp(mu Theta) - 1)  (Eq. 5.1)
-//   mu = (ellipse(mu_RD, mu_TD; phi) + a1 p) * factor * pinf   (terms from effect_rules.cpp)
+//   mu = (ellipse(mu_RD, mu_TD; phi) + a1 p) * factor * pinf   (terms from effect_rules.hpp)
 // with the map pressure p following the mean strip tension (Eq. 2.2).
 #include <cmath>
 
 #include "analysis/friction_surface.hpp"
 #include "analysis/pressure_ratio.hpp"
 #include "analysis/rope.hpp"
-#include "loop/model_parts.hpp"
+#include "loop/effect_rules.hpp"
 
 namespace drawbend::loop {
 
@@ -36,8 +36,8 @@ double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::
   Terms t;
   for (size_t k = 0; k < f.spec.effects.size(); ++k) {
     const Effect& e = f.spec.effects[k];
-    const EffectRule& rl = rule(e.kind);
-    if (rl.apply) rl.apply(EffectArgs{d, f, r, i, k, e, th.data() + L.eff_start[k]}, t);
+    const EffectArgs a{d, f, r, i, k, e, th.data() + L.eff_start[k]};
+    visit_rule(e.kind, [&](auto rule) { rule.apply(a, t); });
   }
   double ff = 0, mu = 0;
   const int iters = t.a1 != 0 ? 4 : 1;
