@@ -1,14 +1,14 @@
 // The loop's force model fitted to the rows: the bending line per pin, the
 // friction parameters by Levenberg-Marquardt with standard errors, and the
 // joint fit of both (for F tests).  Design: design.cpp; prediction:
-// predict.cpp; the effects: effect_rules.hpp.
+// predict_row.hpp; the effects: effect_rules.hpp.
 #include <algorithm>
 #include <cmath>
 
 #include "analysis/rope.hpp"
 #include "core/csv.hpp"
 #include "loop/least_squares.hpp"
-#include "loop/model_parts.hpp"
+#include "loop/predict_row.hpp"
 
 namespace drawbend::loop {
 

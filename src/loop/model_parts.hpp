@@ -6,7 +6,8 @@
 //   design.cpp        Design, make_design: per-row quantities from the data and maps
 //   effect_rules.hpp  one rule per EffectKind: its parameter count, its term in mu, its names
 //   effect_rules.cpp  the layout of theta and the parameters' names from those rules
-//   predict.cpp       predict_row: base model + effects, Eqs. 2.2, 5.1 and the ellipse
+//   predict_row.hpp   predict_row: base model + effects, Eqs. 2.2, 5.1 and the ellipse (inline)
+//   predict.cpp       the public predictions
 //   model.cpp         the fits: bending lines, Levenberg-Marquardt, standard errors
 #include <string>
 #include <vector>
@@ -49,8 +50,8 @@ std::vector<std::string> friction_names(const Design& d, const ModelSpec& spec, 
 
 /// Predicted outlet force of row i [N] with friction parameters th; mu_out and
 /// p_out receive mu and the map's mean pressure [MPa]; override_row replaces
-/// d.rows[i] (same i for the effects' per-row data).
-double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th, int i, double* mu_out,
-                   const Row* override_row = nullptr, double* p_out = nullptr);
+/// d.rows[i] (same i for the effects' per-row data).  Defined in predict_row.hpp.
+inline double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th, int i,
+                          double* mu_out, const Row* override_row = nullptr, double* p_out = nullptr);
 
 }  // namespace drawbend::loop::detail
