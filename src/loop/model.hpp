@@ -26,7 +26,8 @@
 namespace drawbend::loop {
 
 /// Friction coefficient in direction phi [rad] from RD on the ellipse with
-/// semi-axes mu_RD = a and mu_TD = b (Eq. 6.3): a b / sqrt(b^2 cos^2 + a^2 sin^2).
+/// semi-axes mu_RD = a and mu_TD = b (Sec. 6.4, Fig. 6.5; analysis::ellipse_mu):
+/// a b / sqrt(b^2 cos^2 + a^2 sin^2).
 double ellipse(double a, double b, double phi);
 /// The same from cos(phi) and sin(phi) (bit for bit ellipse(a, b, phi)).
 double ellipse_cs(double a, double b, double c, double s);
