@@ -21,6 +21,7 @@ struct Config {
   double min_gain = 0.03;  ///< required fall of the held-out RMS relative error
   std::string candidates;  ///< comma-separated candidate names; empty: the tier's list
   int numerics = -1;       ///< 1/0: run the numerical studies or not; -1: with --full-study
+  int cup = 1;             ///< 1: the cup loop and attribution (step 5)
 };
 
 struct Inputs {
@@ -39,5 +40,7 @@ drawbend::sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, 
 void tension_slope(Chapter& c, const Inputs& in, const Config& cfg, const drawbend::sim::ModelLoopResult& loop);
 /// Full tier: mass scaling on every pin, elements across on the 25.4 and 42 mm pins.
 void numerical_convergence(Chapter& c, const Inputs& in, const Config& cfg);
+/// The cup (Sec. 6.6): punch-force loop and the 2 x 2 attribution at 21 mm.
+void cup_loop(Chapter& c, const Config& cfg, const drawbend::sim::ModelLoopResult& bending);
 
 }  // namespace ch8
