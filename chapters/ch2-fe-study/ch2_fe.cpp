@@ -24,6 +24,7 @@
 #include "ch2_steps.hpp"
 #include "sim/case_pool.hpp"
 #include "sim/map_tools.hpp"
+#include "study/run_health.hpp"
 #include "study/thesis_data.hpp"
 
 namespace ch2 {
@@ -97,14 +98,9 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("fe_ms", fmt(s.mass_scaling));
   c.value("fe_ms_low", fmt(s_ms.mass_scaling));
   c.value("fe_FX", fmt(s.back_tension), "N");
-  for (const auto* r : {&fr, &ff, &fm, &gf, &gr, &all[5], &all[6]}) {
-    c.checks().claim(study::Kind::health, "ch2.fe." + r->spec.name + ".energy", "energy balance error < 1 %, " + r->spec.name,
-                     r->balance_error < 0.01, "balance error " + fmt(r->balance_error, 3));
-    c.checks().claim(study::Kind::health, "ch2.fe." + r->spec.name + ".quasistatic", "kinetic/internal energy < 5 %, " + r->spec.name,
-                     r->kinetic_ratio < 0.05, "KE/IE " + fmt(r->kinetic_ratio, 3));
-    c.checks().claim(study::Kind::health, "ch2.fe." + r->spec.name + ".hourglass", "hourglass/internal energy < 5 %, " + r->spec.name,
-                     r->hourglass_ratio < 0.05, "HG/IE " + fmt(r->hourglass_ratio, 3));
-  }
+  for (const auto* r : {&fr, &ff, &fm, &gf, &gr, &all[5], &all[6]})
+    study::check_run_health(c.checks(), "ch2.fe." + r->spec.name, r->spec.name,
+                            {r->balance_error, r->kinetic_ratio, r->hourglass_ratio});
 
   // 2. Pressure map (mu = 0.1, end of the draw), rows, contact arc, peaks.
   sim::save_map_grid(fr.map, c.out("tables/map_coulomb.dat"), "contact pressure [MPa], 12.7 mm pin, mu = 0.1");

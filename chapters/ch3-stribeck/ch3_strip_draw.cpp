@@ -1,6 +1,8 @@
 // Chapter 3, Sec. 3.3: the strip-draw verification of the Stribeck law in our
-// solver, run from data/cases/strip_draw.toml with per-case overrides (die
-// force = pressure x die area, drawing speed, durations, time step).
+// solver, built by src/sim/strip_draw_case (the model of
+// data/cases/strip_draw.toml; `drawbend strip-deck` writes any case) with the
+// die pressure, drawing speed and update interval of each case, run through
+// the case pool.
 //   - Table 3.2 / Fig. 3.8: mu = (F1 - F2)/F_N at steady sliding against the
 //     input curve, Eq. (3.2), for the five pressure/speed cases; Fig. 3.4:
 //     the pressure under the die at the end of case 1 (Fig. 3.3, the map
@@ -15,125 +17,36 @@
 
 #include "analysis/stribeck.hpp"
 #include "ch3_steps.hpp"
-#include "fe/solver.hpp"
-#include "friction/stribeck_law.hpp"
-#include "io/deck.hpp"
+#include "sim/deck_writer.hpp"
+#include "sim/strip_draw_case.hpp"
 #include "study/thesis_data.hpp"
 
 namespace ch3 {
 
 using namespace drawbend;
 
-namespace {
-
-struct DrawResult {
-  double mu = 0, p_mean = 0, p_spread = 0;  ///< mu over the last third; pressure under the die [MPa]
-  double v_mean = 0, v_std = 0, v_min = 0, v_max = 0;  ///< slip speed of the probe node over the last third [mm/s]
-  double ramp_v_max = 0;  ///< largest probe slip speed while the drawing speed ramps up [mm/s]
-  long cycles = 0;
-  std::vector<std::pair<double, double>> trace;  ///< (time in draw step, probe slip speed)
-  std::map<std::pair<double, double>, double> die_map;  ///< die pressure [MPa] at the end, by reference (x, y) [mm]
-};
-
-/// One strip draw at pressure p [MPa] and speed v [mm/s] with the deck's
-/// Stribeck law updated every `interval` cycles or, with coulomb_mu >= 0,
-/// Coulomb friction of that mu on the die instead (Fig. 3.6).
-DrawResult draw(const std::string& deck_path, double p, double v, int interval, double coulomb_mu = -1) {
-  io::Deck deck = io::read_deck(deck_path);
-  fe::Model& m = deck.model;
-  const auto [xmin, xmax] = std::minmax_element(m.mesh.x.begin(), m.mesh.x.end());
-  const auto [ymin, ymax] = std::minmax_element(m.mesh.y.begin(), m.mesh.y.end());
-  const double area = (*xmax - *xmin) * (*ymax - *ymin);  // the die covers the whole top face
-  // Speed ramp 10 ms; the last third of the draw, where mu is read, starts after it.
-  const double FN = p * area, slide = 0.4, ramp = 0.01;
-  for (auto& t : m.tools)
-    if (t.name == "die") t.force = {{0.0, 0.02}, {0.0, FN}};
-  for (auto& cp : m.contacts)
-    if (cp.tool == "die") {
-      const auto* law = dynamic_cast<const friction::Stribeck*>(cp.friction.get());
-      if (!law) throw InputError(deck_path + ": the die contact must use the Stribeck law");
-      if (coulomb_mu >= 0)
-        cp.friction = std::make_shared<friction::Coulomb>(coulomb_mu);
-      else
-        cp.friction = std::make_shared<friction::Stribeck>(law->params(), interval);
-    }
-  fe::Step& d = m.steps.at(1);
-  d.duration = ramp + std::max(slide / v, 2.0 * ramp);
-  for (auto& vb : d.velocities) vb.speed = {{0.0, ramp}, {0.0, v}};
-  // Time step (and so mass scaling): seconds per case while the contact dynamics
-  // settle; the fastest case needs less mass scaling, as in the thesis (Sec. 3.3.3:
-  // case 5 ran with mass scaling 10 instead of 1000 "to avoid possible dynamic effects").
-  m.target_dt = v < 4.0 ? 1e-5 : (v > 40.0 ? 5e-7 : 2.5e-6);
-  // The force-driven die is a mass on the contact springs (total stiffness
-  // k = alpha K A / L over its area): explicit integration needs omega dt < 2.
-  // A mass giving omega dt = 0.5 is stable and settles quickly.
-  double L = 1e30;
-  for (double zz : m.mesh.z) L = std::min(L, zz > 0 ? zz : 1e30);  // thickness of the top layer
-  for (auto& t : m.tools)
-    if (t.name == "die") {
-      double alpha = 0.1;
-      for (const auto& cp : m.contacts)
-        if (cp.tool == "die") alpha = cp.penalty;
-      const double k = alpha * m.material->bulk_modulus() * area / L;
-      t.mass = 4.0 * k * m.target_dt * m.target_dt;
-    }
-  fe::Solver s(m);
-  s.run_step(0);
-  // Probe: the contact node nearest the centre of the die.
-  int pair = -1;
-  for (std::size_t k = 0; k < m.contacts.size(); ++k)
-    if (m.contacts[k].tool == "die") pair = static_cast<int>(k);
-  const double cx = 0.5 * (*xmin + *xmax), cy = 0.5 * (*ymin + *ymax);
-  int probe = 0;
-  double best = 1e30;
-  const auto& nodes = s.contact_nodes(pair);
-  for (std::size_t k = 0; k < nodes.size(); ++k) {
-    const double dd = std::hypot(s.x()[nodes[k].node] - cx, s.y()[nodes[k].node] - cy);
-    if (dd < best) {
-      best = dd;
-      probe = static_cast<int>(k);
-    }
-  }
-  DrawResult r;
-  double sft = 0, sfn = 0, sv = 0, sv2 = 0;
-  long n = 0;
-  r.v_min = 1e30;
-  r.v_max = -1e30;
-  const double t0 = s.time();
-  s.run_step(1, [&](const fe::Progress& pr) {
-    const double vs = s.contact_nodes(pair)[probe].slip_speed;
-    if (pr.cycle % 20 == 0) r.trace.push_back({pr.time - t0, vs});
-    if (pr.step_time < ramp) r.ramp_v_max = std::max(r.ramp_v_max, vs);
-    if (pr.step_time < d.duration * 2.0 / 3.0) return;
-    const auto F = s.tool_force("die");
-    sft += std::abs(F[0]);  // mu = mean F_t / mean F_n over the last third
-    sfn += std::abs(F[2]);
-    sv += vs;
-    sv2 += vs * vs;
-    r.v_min = std::min(r.v_min, vs);
-    r.v_max = std::max(r.v_max, vs);
-    ++n;
-  });
-  r.mu = sfn > 0 ? sft / sfn : NAN;
-  r.v_mean = sv / n;
-  r.v_std = std::sqrt(std::max(0.0, sv2 / n - r.v_mean * r.v_mean));
-  double pmin = 1e30, pmax = 0, psum = 0;
-  for (const auto& c : s.contact_nodes(pair)) {
-    r.die_map[{m.mesh.x[c.node], m.mesh.y[c.node]}] = c.pressure;
-    pmin = std::min(pmin, c.pressure);
-    pmax = std::max(pmax, c.pressure);
-    psum += c.pressure;
-  }
-  r.p_mean = psum / s.contact_nodes(pair).size();
-  r.p_spread = (pmax - pmin) / p;
-  r.cycles = s.cycles();
-  return r;
-}
-
-}  // namespace
-
 void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const CsvTable& t32, double mu_coulomb) {
-  const std::string deck = c.data("cases/strip_draw.toml");
+  // Every run of this section, side by side in the case pool: the cases of
+  // Table 3.2 (interval 100), then the first case updated every 1, 10, 100 and
+  // 1000 cycles (Figs. 3.5-3.7), then with Coulomb friction (Fig. 3.6).
+  sim::StripDrawSpec base;
+  base.hardening = c.data("materials/aa5754_o_rd.csv");
+  base.stribeck_table = c.data("thesis/table_3_1.csv");
+  auto spec = [&](double p, double v, int interval, const std::string& friction = "") {
+    sim::StripDrawSpec s = base;
+    s.pressure = p;
+    s.speed = v;
+    s.interval = interval;
+    s.friction = friction;
+    return s;
+  };
+  const double p1 = t32.number(t32.rows.front(), "pressure_MPa"), v1 = t32.number(t32.rows.front(), "velocity_mm_s");
+  const std::vector<int> intervals{1, 10, 100, 1000};
+  std::vector<sim::StripDrawSpec> specs;
+  for (const auto& row : t32.rows) specs.push_back(spec(t32.number(row, "pressure_MPa"), t32.number(row, "velocity_mm_s"), 100));
+  for (int interval : intervals) specs.push_back(spec(p1, v1, interval));
+  specs.push_back(spec(p1, v1, 1, "{ law = \"coulomb\", mu = " + sim::toml_float(mu_coulomb) + " }"));
+  const std::vector<sim::StripDrawResult> runs = sim::run_strip_draws(specs);
   // Table 3.2 / Fig. 3.8.
   auto w = c.table({"case", "pressure_MPa", "velocity_mm_s", "L", "mu_input", "mu_simulated", "error_pct",
                     "pressure_spread_pct", "cycles"},
@@ -141,7 +54,7 @@ void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const Cs
   double worst = 0, spread_max = 0;
   for (const auto& row : t32.rows) {
     const double p = t32.number(row, "pressure_MPa"), v = t32.number(row, "velocity_mm_s");
-    const DrawResult r = draw(deck, p, v, 100);
+    const sim::StripDrawResult& r = runs[&row - &t32.rows[0]];
     spread_max = std::max(spread_max, r.p_spread);
     if (&row == &t32.rows.front()) {
       // Fig. 3.4: the pressure under the die at the end of the draw, case 1,
@@ -179,7 +92,7 @@ void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const Cs
          {{"curvefile", c.out("tables/stribeck_curves.csv")}, {"simfile", c.out("tables/strip_draw.csv")}});
 
   // Figs. 3.5-3.7: the update interval, on the first case of Table 3.2.
-  const double p = t32.number(t32.rows.front(), "pressure_MPa"), v = t32.number(t32.rows.front(), "velocity_mm_s");
+  const double p = p1, v = v1;
   const double mu_in = analysis::stribeck_mu(v, p, s31);
   c.value("iv_speed", fmt(v), "mm/s");
   c.value("iv_case", "case " + t32.text(t32.rows.front(), "case") + ", " + fmt(p) + "\u00a0MPa, " + fmt(v) + "\u00a0mm/s");
@@ -189,8 +102,9 @@ void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const Cs
                         " MPa, " + fmt(v) + " mm/s), probe node under the die centre");
   std::vector<std::vector<std::pair<double, double>>> traces;
   std::vector<double> traces_std;  // probe speed std of those traces [mm/s]
-  for (int interval : {1, 10, 100, 1000}) {
-    const DrawResult r = draw(deck, p, v, interval);
+  for (std::size_t k = 0; k < intervals.size(); ++k) {
+    const int interval = intervals[k];
+    const sim::StripDrawResult& r = runs[t32.rows.size() + k];
     iv.row({std::to_string(interval), fmt_fixed(r.mu, 5), fmt_fixed(100 * (r.mu - mu_in) / mu_in, 2),
             fmt_fixed(r.v_mean, 3), fmt_fixed(r.v_std, 3), fmt_fixed(r.v_min, 3), fmt_fixed(r.v_max, 3)});
     c.value("iv" + std::to_string(interval) + "_std", fmt(r.v_std, 2), "mm/s");
@@ -208,7 +122,7 @@ void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const Cs
   // Fig. 3.6: the same case with Coulomb mu = 0.1 on the die, where the thesis
   // saw no fluctuation ("not observed with the Coulomb friction model"; a
   // minor one shows only when the plot is enlarged).
-  const DrawResult rc = draw(deck, p, v, 1, mu_coulomb);
+  const sim::StripDrawResult& rc = runs.back();
   c.checks().agree(study::Kind::verification, "ch3.strip_draw.coulomb.mu",
                    "strip-draw mu with Coulomb mu = " + fmt(mu_coulomb) + " on the die (Fig. 3.6 run)", mu_coulomb,
                    rc.mu, 0.02 * mu_coulomb, "-",

@@ -12,7 +12,7 @@
 //   5. Checks of the text's statements.
 //   6. The strip-draw verification in our solver (Table 3.2, Fig. 3.8) and the
 //      update interval (Figs. 3.5-3.7), Coulomb friction (Fig. 3.6), from
-//      data/cases/strip_draw.toml.
+//      the strip-draw builder (src/sim/strip_draw_case).
 //   7. Draw-bend on three pins at 10 MPa (Sec. 3.5, Figs. 3.10-3.18),
 //      ch3_drawbend.cpp.
 #include <cmath>

@@ -27,7 +27,9 @@
 #include "material/swift_fit.hpp"
 #include "ch4_steps.hpp"
 #include "sim/case_pool.hpp"
+#include "sim/fe_options.hpp"
 #include "sim/map_tools.hpp"
+#include "study/run_health.hpp"
 #include "study/thesis_data.hpp"
 
 namespace ch4 {
@@ -75,7 +77,7 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     s.width = w_half;
     s.back_tension = t41.number(row, "FX_prime_N");
     s.speed = v;
-    s.mass_scaling = o.base.mass_scaling * (100.0 / v) * (100.0 / v);
+    s.mass_scaling = sim::mass_scaling_for_speed(o.base.mass_scaling, v);
     s.hardening = c.data("materials/aa5754_o_rd.csv");
     s.name = "ch4_d" + fmt(s.pin_diameter) + "_frictionless";
     jobs.push_back({s, c.out("runs/" + s.name)});
@@ -125,18 +127,14 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     c.value("FB_d42_alt_change", fmt_fixed(100 * (fb_alt - fb_base) / fb_base, 1), "%");
     c.value("FB_d42_alt_vs_thesis", fmt_fixed(100 * (fb_alt - fb_thesis) / fb_thesis, 1), "%");
     const std::string rid = "ch4.fe.d42.frictionless_swift_eps_y_0.002";
-    c.checks().claim(study::Kind::health, rid + ".energy", "energy balance error < 1 %, " + alt42.spec.name,
-                     alt42.balance_error < 0.01, "balance error " + fmt(alt42.balance_error, 3));
-    c.checks().claim(study::Kind::health, rid + ".quasistatic", "kinetic/internal energy < 5 % at the end, " + alt42.spec.name,
-                     alt42.kinetic_ratio < 0.05, "KE/IE " + fmt(alt42.kinetic_ratio, 3));
-    c.checks().claim(study::Kind::health, rid + ".hourglass", "hourglass/internal energy < 5 %, " + alt42.spec.name,
-                     alt42.hourglass_ratio < 0.05, "HG/IE " + fmt(alt42.hourglass_ratio, 3));
+    study::check_run_health(c.checks(), rid, alt42.spec.name,
+                            {alt42.balance_error, alt42.kinetic_ratio, alt42.hourglass_ratio});
   }
   c.value("fe_speed", fmt(v), "mm/s");
   c.value("fe_h", fmt(o.base.element_length), "mm");
   c.value("fe_across", std::to_string(o.base.across));
   c.value("fe_through", std::to_string(o.base.through));
-  c.value("fe_ms", fmt(o.base.mass_scaling * (100.0 / v) * (100.0 / v)));
+  c.value("fe_ms", fmt(sim::mass_scaling_for_speed(o.base.mass_scaling, v)));
 
   // 2. Tables 4.1/4.2, ours beside the thesis's.
   auto tab = c.table({"pin_mm", "FXp_N", "FYp_thesis_N", "FYp_ours_N", "FB_thesis_N", "FB_ours_N", "FY_thesis_N",
@@ -184,12 +182,7 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     // Quasi-static invariants of the runs (printed by each run, checked here).
     for (const auto* x : {&r.free, &r.strib}) {
       const std::string rid = id + (x == &r.free ? ".frictionless" : ".stribeck");
-      c.checks().claim(study::Kind::health, rid + ".energy", "energy balance error < 1 %, " + x->spec.name, x->balance_error < 0.01,
-                       "balance error " + fmt(x->balance_error, 3));
-      c.checks().claim(study::Kind::health, rid + ".quasistatic", "kinetic/internal energy < 5 % at the end (the usual quasi-static limit), " + x->spec.name,
-                       x->kinetic_ratio < 0.05, "KE/IE " + fmt(x->kinetic_ratio, 3));
-      c.checks().claim(study::Kind::health, rid + ".hourglass", "hourglass/internal energy < 5 %, " + x->spec.name,
-                       x->hourglass_ratio < 0.05, "HG/IE " + fmt(x->hourglass_ratio, 3));
+      study::check_run_health(c.checks(), rid, x->spec.name, {x->balance_error, x->kinetic_ratio, x->hourglass_ratio});
     }
     PinTest pt;
     pt.map = r.free.pressure_map("pin " + d + " mm, frictionless");

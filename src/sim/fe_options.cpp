@@ -2,11 +2,17 @@
 
 namespace drawbend::sim {
 
+double mass_scaling_for_speed(double at_100, double v) { return at_100 * (100.0 / v) * (100.0 / v); }
+
+void set_quick_mesh(DrawBendSpec& s) {
+  s.element_length = 1.0;
+  s.across = 2;
+  s.through = 4;
+  s.mass_scaling = kQuickMassScaling;
+}
+
 void add_fe_options(Options& o, DrawBendSpec& base, int& run_fe, int& reuse_runs) {
-  base.element_length = 1.0;
-  base.across = 2;
-  base.through = 4;
-  base.mass_scaling = 1e4;
+  set_quick_mesh(base);
   o.add(run_fe, "fe", "run the finite-element part (1) or not (0)");
   o.add(reuse_runs, "reuse-runs", "reuse runs whose deck is unchanged (1), for development only");
   o.add(base.element_length, "fe-element-length", "element length along the strip in the bend zone [mm]");
