@@ -48,7 +48,7 @@ struct PinRuns {
 void save_histories(study::Chapter& c, const PinRuns& r, const std::string& name) {
   auto w = c.table({"time_s", "F_back_N", "F_out_frictionless_N", "F_out_stribeck_N"},
                    "draw-step tension forces, pin " + fmt(r.D) + " mm (half model, N)");
-  const auto a = r.free.draw_series("outlet_force_N", -1), b = r.strib.draw_series("outlet_force_N", -1);
+  const auto a = r.free.draw_series(sim::Signal::outlet_force, -1), b = r.strib.draw_series(sim::Signal::outlet_force, -1);
   for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
     w.row({fmt(a[i].first, 6), fmt(r.free.F_back, 6), fmt(a[i].second, 6), fmt(b[i].second, 6)});
   c.save(w, name);

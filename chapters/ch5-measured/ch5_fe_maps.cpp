@@ -194,11 +194,11 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
   c.value("fe_across_ran", o.map_variants && o.across_variant
                               ? "was run"
                               : "was not run in this (quick) tier of the chapter; the full tier (`make`, or "
-                                "`--fe-map-variants 1 --fe-across-variant 1`) runs it");
+                                "`--fe-map-variants true --fe-across-variant true`) runs it");
   c.value("fe_variants_ran", o.map_variants
                                  ? "ran in this tier of the chapter"
                                  : "did not run in this (quick) tier: they are six more runs. The full tier (`make`, "
-                                   "or `--fe-map-variants 1`) runs them, and the rows below then have numbers");
+                                   "or `--fe-map-variants true`) runs them, and the rows below then have numbers");
   c.value("fe_penalty", fmt(o.base.penalty));
   c.value("fe_stiff_penalty", fmt(o.stiff_penalty));
 

@@ -31,7 +31,7 @@ int model_loop_command(int argc, char** argv, const char* name) {
   s.mass_scaling = 0;      // 0: the quick tier's rule at --speed (set after parsing)
   std::string out, candidates = "split:0.3/0.6";
   sim::ModelLoopConfig cfg;
-  int reuse = 1;
+  bool reuse = true;
   Options opt(me, "Test modelling effects by re-running the draw-bend FE model (rotating = frictionless pin, "
                        "explicit, half strip) against measured bending forces. DATA.csv: one row per point with the "
                        "columns pin_diameter_mm, back_tension_N, bending_force_N (full strip, N; '#' comments). The "
@@ -43,7 +43,7 @@ int model_loop_command(int argc, char** argv, const char* name) {
   opt.add(cfg.fit_pin, "fit-pin", "pin diameter whose points train [mm]; the others are held out");
   opt.add(cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
   opt.add(candidates, "candidates", "comma-separated: split:B1/B2..., voce, hill48, ms:X, across:N");
-  opt.add(reuse, "reuse", "read back finished runs with the identical deck (1) or rerun (0)");
+  opt.add(reuse, "reuse", "read back finished runs with the identical deck (true) or rerun them (false)");
   opt.add(s.thickness, "thickness", "strip thickness [mm]");
   opt.add(s.width, "width", "modelled half width [mm]");
   opt.add(s.speed, "speed", "outlet speed [mm/s]");
@@ -92,7 +92,7 @@ int model_loop_command(int argc, char** argv, const char* name) {
                      "pin_diameter_mm values)");
   ensure_writable_dir(out, "--out");
   cfg.run_root = out + "/runs";
-  cfg.reuse = reuse != 0;
+  cfg.reuse = reuse;
   const auto r = sim::run_model_loop(s, points, cands, cfg);
   sim::save_eval_csv(r.baseline, out + "/baseline.csv");
   sim::save_eval_csv(r.final_model, out + "/final.csv");

@@ -1,4 +1,4 @@
-// The run-output contract (core/run_output.hpp): contact maps and pin maps.
+// The run-output contract (core/run_output.hpp): history columns, contact maps and pin maps.
 #include "core/run_output.hpp"
 
 #include <algorithm>
@@ -9,6 +9,40 @@
 namespace drawbend::run_output {
 
 namespace fs = std::filesystem;
+
+const char* signal_name(Signal s) {
+  switch (s) {
+    case Signal::time: return "time_s";
+    case Signal::step: return "step";
+    case Signal::dt: return "dt_s";
+    case Signal::kinetic: return "kinetic_mJ";
+    case Signal::internal: return "internal_mJ";
+    case Signal::hourglass: return "hourglass_mJ";
+    case Signal::external_work: return "external_work_mJ";
+    case Signal::friction: return "friction_mJ";
+    case Signal::damping: return "damping_mJ";
+    case Signal::balance_error: return "balance_error";
+    case Signal::outlet_force: return "outlet_force_N";
+    case Signal::back_tension: return "back_tension_N";
+    case Signal::inlet_x: return "inlet_x_mm";
+    case Signal::pin_force_x: return "pin_force_x_N";
+    case Signal::pin_force_z: return "pin_force_z_N";
+    case Signal::strain_inside: return "strain_inside";
+    case Signal::plastic_strain_inside: return "plastic_strain_inside";
+    case Signal::strain_outside: return "strain_outside";
+    case Signal::plastic_strain_outside: return "plastic_strain_outside";
+  }
+  return "?";  // unreachable: every enumerator is named above (-Wswitch warns on a new one)
+}
+
+std::vector<std::string> run_history_columns() {
+  std::vector<std::string> c;
+  for (int k = static_cast<int>(Signal::time); k <= static_cast<int>(Signal::balance_error); ++k)
+    c.push_back(signal_name(static_cast<Signal>(k)));
+  return c;
+}
+
+std::string mid_wrap_strain(int k) { return "eps_mid_" + std::to_string(k); }
 
 const std::vector<std::string>& contact_map_columns() {
   static const std::vector<std::string> c{"node", "x_mm", "y_mm", "z_mm", "x0_mm", "y0_mm", "z0_mm", "surface",

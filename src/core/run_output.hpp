@@ -1,6 +1,7 @@
 #pragma once
-// What a run leaves on disk, as one typed contract: the contact map (one CSV
-// per contact pair and snapshot) and the pin maps the loop reads.  The column
+// What a run leaves on disk, as one typed contract: the history (history.csv,
+// its columns named by the Signal enum), the contact map (one CSV per contact
+// pair and snapshot) and the pin maps the loop reads.  The column
 // names, the file names and the comment keys live here and nowhere else:
 // io/run_case writes maps with write_contact_map, sim/drawbend_case reads the
 // last one with read_contact_map, Chapter 4 exports pin maps with
@@ -9,6 +10,44 @@
 #include <vector>
 
 namespace drawbend::run_output {
+
+/// history.csv: one row per output interval.
+inline constexpr const char* kHistoryFile = "history.csv";
+
+/// The columns of history.csv.  Every run (io/run_case) writes `time` to
+/// `balance_error`, in this order, then the deck's [output] history signals
+/// under the names the deck gives them.  The draw-bend builder
+/// (sim/drawbend_case) names its deck signals from the second group, so its
+/// readers (sim/, the chapters) use the enum, not a spelled string.
+enum class Signal {
+  // Every run, in file order.
+  time,           ///< time_s [s]
+  step,           ///< step: the step's name (text)
+  dt,             ///< dt_s: stable time step [s]
+  kinetic,        ///< kinetic_mJ [mJ = N mm]
+  internal,       ///< internal_mJ
+  hourglass,      ///< hourglass_mJ
+  external_work,  ///< external_work_mJ
+  friction,       ///< friction_mJ
+  damping,        ///< damping_mJ
+  balance_error,  ///< balance_error: relative energy-balance error [-]
+  // The draw-bend case's deck signals.
+  outlet_force,            ///< outlet_force_N: reaction at the outlet grip, z [N, half model]
+  back_tension,            ///< back_tension_N: applied force at the inlet end, x [N, half model]
+  inlet_x,                 ///< inlet_x_mm: inlet end displacement, x [mm]
+  pin_force_x,             ///< pin_force_x_N: force on the pin, x [N]
+  pin_force_z,             ///< pin_force_z_N: force on the pin, z [N]
+  strain_inside,           ///< strain_inside: axial strain at the contact-side spot [-]
+  plastic_strain_inside,   ///< plastic_strain_inside: equivalent plastic strain there [-]
+  strain_outside,          ///< strain_outside: axial strain at the free-side spot [-]
+  plastic_strain_outside,  ///< plastic_strain_outside: equivalent plastic strain there [-]
+};
+/// The column name of a signal (with its unit suffix): Signal::outlet_force -> "outlet_force_N".
+const char* signal_name(Signal s);
+/// The columns every history.csv starts with (Signal::time .. Signal::balance_error), in order.
+std::vector<std::string> run_history_columns();
+/// eps_mid_<k>: the draw-bend case's outside-surface axial strain of mid-wrap section k [-].
+std::string mid_wrap_strain(int k);
 
 /// One slave node of a contact map.
 struct ContactMapRow {

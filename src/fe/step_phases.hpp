@@ -9,23 +9,10 @@
 #include <vector>
 
 #include "fe/model.hpp"
+#include "fe/node_view.hpp"
 
 namespace drawbend::fe {
 
-/// Nodal state, n of each, as plain pointers.
-struct NodeView {
-  int n = 0;
-  double *x = nullptr, *y = nullptr, *z = nullptr;     ///< current positions [mm]
-  double *vx = nullptr, *vy = nullptr, *vz = nullptr;  ///< velocities [mm/s]
-  const double *fx = nullptr, *fy = nullptr, *fz = nullptr;  ///< internal (element) forces [N]
-  const double* mass = nullptr;                        ///< lumped masses [t]
-  const double *X = nullptr, *Y = nullptr, *Z = nullptr;     ///< reference positions [mm]
-};
-
-/// A per-node vector field (external forces, reactions, old velocities).
-struct NodeField {
-  double *x = nullptr, *y = nullptr, *z = nullptr;
-};
 
 /// A step's names resolved once, at its start.
 struct StepPlan {

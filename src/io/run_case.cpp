@@ -221,8 +221,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
         << fmt_shortest(deck.limits.max_cycles) << "), memory about " << fmt(deck.cost.memory_mb, 3) << " MB (limit "
         << fmt_shortest(deck.limits.max_memory_mb) << "); [limits] in the deck raises them\n";
   // History file.
-  std::vector<std::string> header{"time_s", "step", "dt_s", "kinetic_mJ", "internal_mJ", "hourglass_mJ",
-                                  "external_work_mJ", "friction_mJ", "damping_mJ", "balance_error"};
+  std::vector<std::string> header = run_output::run_history_columns();
   std::vector<int> elements;  // per signal: the tracked element of a "strain" signal
   for (const auto& h : deck.output.history) {
     header.push_back(h.name);
@@ -267,6 +266,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
     }
     const auto& e = solver.energies();
     if (p.time >= next_hist - 1e-15) {
+      // The run's own columns, in the order of run_output::run_history_columns().
       std::vector<std::string> row{fmt(p.time, 10), p.step->name, fmt(p.dt, 6), fmt(e.kinetic, 8), fmt(e.internal, 8),
                                    fmt(e.hourglass, 8), fmt(e.external_work, 8), fmt(e.friction, 8),
                                    fmt(e.damping, 8), fmt(e.balance_error(), 4)};
@@ -318,8 +318,8 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   } catch (const fe::NumericalFault&) {
     // Keep what was recorded up to the fault: it shows how the run got there.
     if (last_print >= 0) log << "\n";
-    hist.save((fs::path(opt.out_dir) / "history.csv").string());
-    log << "history up to the fault: " << (fs::path(opt.out_dir) / "history.csv").string() << "\n";
+    hist.save((fs::path(opt.out_dir) / run_output::kHistoryFile).string());
+    log << "history up to the fault: " << (fs::path(opt.out_dir) / run_output::kHistoryFile).string() << "\n";
     throw;
   } catch (const Halt&) {
     if (last_print >= 0) log << "\n";
@@ -336,7 +336,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
     return r;
   }
   if (last_print >= 0) log << "\n";
-  hist.save((fs::path(opt.out_dir) / "history.csv").string());
+  hist.save((fs::path(opt.out_dir) / run_output::kHistoryFile).string());
   write_pvd((fs::path(opt.out_dir) / "fields.pvd").string(), rs.snapshots);
   const auto& e = solver.energies();
   r.time = solver.time();

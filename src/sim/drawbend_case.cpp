@@ -16,6 +16,9 @@
 namespace drawbend::sim {
 
 namespace fs = std::filesystem;
+using run_output::kHistoryFile;
+using run_output::mid_wrap_strain;
+using run_output::signal_name;
 
 double wrap_length(const DrawBendSpec& s) { return (s.pin_diameter / 2 + s.thickness / 2) * M_PI / 2; }
 
@@ -125,21 +128,22 @@ std::string deck_text(const DrawBendSpec& s) {
     << "velocity = [ { set = \"xmax\", direction = [0.0, 0.0, -1.0], speed = { t = [0.0, "
     << num(ramp3) << "], v = [0.0, " << num(s.speed) << "] } } ]\n\n"
     << "[output]\nfields_per_step = " << std::max(1, s.snapshots) << "\nhistory = [\n"
-    << "  { name = \"outlet_force_N\", kind = \"reaction\", target = \"xmax\", component = 2 },\n"
-    << "  { name = \"back_tension_N\", kind = \"applied\", target = \"xmin\", component = 0 },\n"
-    << "  { name = \"inlet_x_mm\", kind = \"displacement\", target = \"xmin\", component = 0 },\n"
-    << "  { name = \"pin_force_x_N\", kind = \"tool_force\", target = \"pin\", component = 0 },\n"
-    << "  { name = \"pin_force_z_N\", kind = \"tool_force\", target = \"pin\", component = 2 },\n";
+    << "  { name = \"" << signal_name(Signal::outlet_force) << "\", kind = \"reaction\", target = \"xmax\", component = 2 },\n"
+    << "  { name = \"" << signal_name(Signal::back_tension) << "\", kind = \"applied\", target = \"xmin\", component = 0 },\n"
+    << "  { name = \"" << signal_name(Signal::inlet_x) << "\", kind = \"displacement\", target = \"xmin\", component = 0 },\n"
+    << "  { name = \"" << signal_name(Signal::pin_force_x) << "\", kind = \"tool_force\", target = \"pin\", component = 0 },\n"
+    << "  { name = \"" << signal_name(Signal::pin_force_z) << "\", kind = \"tool_force\", target = \"pin\", component = 2 },\n";
   // Strain spots (Sec. 2.3.2): the centre-row elements on the contact side
   // ("inside") and the free side ("outside") at a section that passes the
   // whole wrap during the draw: it enters at a slide of d - Lw - 2 mm.
   const double xs = -(d - Lw - 2.0), ys = s.width / (2.0 * s.across), dz = t / (2.0 * s.through);
   for (int k = 0; k < 2; ++k) {
-    const char* side = k == 0 ? "inside" : "outside";
+    const Signal strain = k == 0 ? Signal::strain_inside : Signal::strain_outside;
+    const Signal plastic = k == 0 ? Signal::plastic_strain_inside : Signal::plastic_strain_outside;
     const double zs = k == 0 ? R + dz : R + t - dz;
-    o << "  { name = \"strain_" << side << "\", kind = \"strain\", point = [" << num(xs) << ", " << num(ys) << ", "
-      << num(zs) << "], component = 0 },\n"
-      << "  { name = \"plastic_strain_" << side << "\", kind = \"strain\", point = [" << num(xs) << ", " << num(ys)
+    o << "  { name = \"" << signal_name(strain) << "\", kind = \"strain\", point = [" << num(xs) << ", " << num(ys)
+      << ", " << num(zs) << "], component = 0 },\n"
+      << "  { name = \"" << signal_name(plastic) << "\", kind = \"strain\", point = [" << num(xs) << ", " << num(ys)
       << ", " << num(zs) << "], component = 1 },\n";
   }
   // Mid-wrap sections (Sec. 2.3.2, "steady strain condition"): the section
@@ -148,7 +152,7 @@ std::string deck_text(const DrawBendSpec& s) {
   // changing.  One section per element length along the refined zone.
   const double step = std::max(h, 0.5);
   for (int k = 0; k * step <= d - 1.0; ++k)
-    o << "  { name = \"eps_mid_" << k << "\", kind = \"strain\", point = [" << num(Lw / 2 - k * step) << ", "
+    o << "  { name = \"" << mid_wrap_strain(k) << "\", kind = \"strain\", point = [" << num(Lw / 2 - k * step) << ", "
       << num(ys) << ", " << num(R + t - dz) << "], component = 0 },\n";
   o << "]\n";
   return o.str();
@@ -158,16 +162,16 @@ namespace {
 
 void reduce(DrawBendResult& r) {
   const fs::path dir(r.dir);
-  r.history = read_csv((dir / "history.csv").string());
+  r.history = read_csv((dir / kHistoryFile).string());
   const CsvTable& h = r.history;
   std::vector<double> t, fy;
   for (const auto& row : h.rows)
-    if (h.text(row, "step") == "draw") {
-      t.push_back(h.number(row, "time_s"));
-      fy.push_back(-h.number(row, "outlet_force_N"));  // the outlet grip pulls along -z
-      r.F_back = -h.number(row, "back_tension_N");
+    if (h.text(row, signal_name(Signal::step)) == "draw") {
+      t.push_back(h.number(row, signal_name(Signal::time)));
+      fy.push_back(-h.number(row, signal_name(Signal::outlet_force)));  // the outlet grip pulls along -z
+      r.F_back = -h.number(row, signal_name(Signal::back_tension));
     }
-  if (t.size() < 12) throw InputError(r.dir + ": too few draw-step samples in history.csv");
+  if (t.size() < 12) throw InputError(r.dir + ": too few draw-step samples in " + kHistoryFile);
   // Chapters 3-4: mean of the last third of step 3.
   const size_t n = t.size(), i3 = n - n / 3;
   double s = 0, s2 = 0;
@@ -218,14 +222,14 @@ analysis::PressureMap DrawBendResult::pressure_map(const std::string& label) con
   return m;
 }
 
-std::vector<std::pair<double, double>> DrawBendResult::draw_series(const std::string& column, double sign) const {
+std::vector<std::pair<double, double>> DrawBendResult::draw_series(Signal column, double sign) const {
   std::vector<std::pair<double, double>> out;
   double t0 = -1;
   for (const auto& row : history.rows)
-    if (history.text(row, "step") == "draw") {
-      const double t = history.number(row, "time_s");
+    if (history.text(row, signal_name(Signal::step)) == "draw") {
+      const double t = history.number(row, signal_name(Signal::time));
       if (t0 < 0) t0 = t;
-      out.push_back({t - t0, sign * history.number(row, column)});
+      out.push_back({t - t0, sign * history.number(row, signal_name(column))});
     }
   return out;
 }
@@ -238,13 +242,13 @@ std::vector<std::pair<double, double>> DrawBendResult::wrap_strain(double fracti
   double x0 = NAN;
   std::vector<std::pair<double, const CsvRow*>> draw;  // (slide, row)
   for (const auto& row : h.rows)
-    if (h.text(row, "step") == "draw") {
-      const double x = h.number(row, "inlet_x_mm");
+    if (h.text(row, signal_name(Signal::step)) == "draw") {
+      const double x = h.number(row, signal_name(Signal::inlet_x));
       if (std::isnan(x0)) x0 = x;
       draw.push_back({x - x0, &row});
     }
   for (int k = 0;; ++k) {
-    const std::string col = "eps_mid_" + std::to_string(k);
+    const std::string col = mid_wrap_strain(k);
     if (std::find(h.header.begin(), h.header.end(), col) == h.header.end()) break;
     const double s = k * step + shift;
     // The section's strain when the slide reaches s (linear between samples).

@@ -11,10 +11,10 @@ void set_quick_mesh(DrawBendSpec& s) {
   s.mass_scaling = kQuickMassScaling;
 }
 
-void add_fe_options(Options& o, DrawBendSpec& base, int& run_fe, int& reuse_runs) {
+void add_fe_options(Options& o, DrawBendSpec& base, bool& run_fe, bool& reuse_runs) {
   set_quick_mesh(base);
-  o.add(run_fe, "fe", "run the finite-element part (1) or not (0)");
-  o.add(reuse_runs, "reuse-runs", "reuse runs whose deck is unchanged (1), for development only");
+  o.add(run_fe, "fe", "run the finite-element part");
+  o.add(reuse_runs, "reuse-runs", "reuse runs whose deck is unchanged, for development only");
   o.add(base.element_length, "fe-element-length", "element length along the strip in the bend zone [mm]");
   o.add(base.across, "fe-across", "elements across the half width");
   o.add(base.through, "fe-through", "elements through the thickness");

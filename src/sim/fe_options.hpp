@@ -24,7 +24,8 @@ double mass_scaling_for_speed(double at_100, double v);
 void set_quick_mesh(DrawBendSpec& s);
 
 /// Set the quick-tier mesh on `base` and register --fe, --reuse-runs,
-/// --fe-element-length, --fe-across, --fe-through and --fe-mass-scaling.
-void add_fe_options(Options& o, DrawBendSpec& base, int& run_fe, int& reuse_runs);
+/// --fe-element-length, --fe-across, --fe-through and --fe-mass-scaling
+/// (--fe and --reuse-runs take true or false).
+void add_fe_options(Options& o, DrawBendSpec& base, bool& run_fe, bool& reuse_runs);
 
 }  // namespace drawbend::sim
