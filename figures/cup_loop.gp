@@ -12,7 +12,7 @@ set style data histograms
 set style histogram clustered gap 1
 set style fill solid 0.55 border -1
 set boxwidth 0.9
-set xtics rotate by -25 noenhanced font ",11"
+set xtics rotate by 30 right noenhanced font ",11"
 set bmargin 9
 set yrange [0:*]
 set key top right
