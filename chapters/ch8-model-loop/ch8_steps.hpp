@@ -21,6 +21,7 @@ struct Config {
   double fit_pin = 12.7;    ///< the training pin [mm]
   double min_gain = 0.03;   ///< required fall of the held-out RMS relative error
   std::string candidates;   ///< comma-separated candidate names; empty: the tier's list
+  bool cup = true;                ///< the cup loop and attribution (step 5)
   std::string numerics = "auto";  ///< the numerical studies: true, false, or auto (= full_study)
 
   /// Whether step 4 (the numerical studies) runs; throws std::invalid_argument
@@ -49,5 +50,7 @@ drawbend::sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, 
 void tension_slope(Chapter& c, const Inputs& in, const Config& cfg, const drawbend::sim::ModelLoopResult& loop);
 /// Full tier: mass scaling on every pin, elements across on the 25.4 and 42 mm pins.
 void numerical_convergence(Chapter& c, const Inputs& in, const Config& cfg);
+/// The cup (Sec. 6.6): punch-force loop and the 2 x 2 attribution at 21 mm.
+void cup_loop(Chapter& c, const Config& cfg, const drawbend::sim::ModelLoopResult& bending);
 
 }  // namespace ch8

@@ -14,6 +14,9 @@
 //   3. F_B against back tension on the 12.7 mm pin (slope check).
 //   4. Full tier only: mass scaling on every pin; 2/4/8 elements across on
 //      the 25.4 and 42 mm pins.
+//   5. The cup (Sec. 6.6): why the punch force is high (tool radii, flow
+//      curve, combined hardening, Hill'48), and the 2 x 2 attribution of the
+//      RD failure to frictional or material anisotropy at 21 mm.
 #include "ch8_steps.hpp"
 #include "sim/fe_options.hpp"
 
@@ -30,6 +33,7 @@ int main(int argc, char** argv) {
         "comma-separated candidates (split:B1/B2..., voce, hill48, ms:X, across:N); empty: the tier's list");
   o.add(cfg.numerics, "numerics",
         "the mass-scaling and width studies: true, false, or auto (as --full-study); 1, 0, -1 also accepted");
+  o.add(cfg.cup, "cup", "the cup loop and the 2 x 2 attribution (step 5)");
   o.add(cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
   return drawbend::study::run_chapter(ch, argc, argv, [&cfg](drawbend::study::Chapter& c) {
     using namespace ch8;
@@ -40,5 +44,6 @@ int main(int argc, char** argv) {
     if (numerics) numerical_convergence(c, in, cfg);  // 4, first: numerics before physics
     const auto loop = bending_force_loop(c, in, cfg);      // 2
     tension_slope(c, in, cfg, loop);                       // 3
+    if (cfg.cup) cup_loop(c, cfg, loop);                   // 5
   });
 }
