@@ -214,7 +214,7 @@ void cup_loop(Chapter& c, const Config& cfg, const sim::ModelLoopResult& bending
                                   {"v1", fmt(s.v1)}, {"v9", fmt(s.v9)}});
   const std::string tier = fine.refine > 1 ? " (refined mesh)" : " (coarse mesh)";
   c.value("cup_final_model", cur.label);
-  c.value("cup_check_mesh", fine.refine > 1 ? "refined (the full tier)" : "coarse (the quick tier)");
+  c.value("cup_check_mesh", fine.refine > 1 ? "refined mesh (the full tier)" : "coarse mesh (the quick tier)");
   c.value("cup_check_f1", fmt_fixed(c1, 2), "kN");
   c.value("cup_check_f9", fmt_fixed(c9, 2), "kN");
   c.value("cup_check_err1", pct(err(c1, s.e1)), "%");
