@@ -82,8 +82,6 @@ std::string inline_table(const std::string& file, const std::string& key) {
   return o.str();
 }
 
-std::string pct(double x) { return (x >= 0 ? "+" : "") + fmt_fixed(100 * x, 1); }
-
 }  // namespace
 
 void cup_loop(Chapter& c, const Config& cfg, const sim::ModelLoopResult& bending) {

@@ -57,8 +57,6 @@ std::vector<sim::FbPoint> reference_points(const Inputs& in) {
   return pts;
 }
 
-std::string pct(double x) { return (x >= 0 ? "+" : "") + fmt_fixed(100 * x, 1); }
-
 }  // namespace
 
 sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg) {

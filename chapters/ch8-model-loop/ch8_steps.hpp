@@ -44,6 +44,8 @@ struct Inputs {
 };
 
 Inputs load_inputs(Chapter& c, const Config& cfg);
+/// A relative error as a signed percentage with one decimal ("+10.6").
+inline std::string pct(double x) { return (x >= 0 ? "+" : "") + drawbend::fmt_fixed(100 * x, 1); }
 /// The bending-force loop: before/after per pin, figure, checks.  Returns the final model.
 drawbend::sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg);
 /// F_B against back tension on the fit pin (slope check).

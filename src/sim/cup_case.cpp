@@ -84,7 +84,13 @@ void set_die_radius(toml::table& root, double rd, const std::string& where) {
 // The base deck with the spec's mesh, radii, material and friction (paths absolute).
 toml::table base_table(const CupSpec& spec, int& layers) {
   if (spec.refine < 1) throw InputError(spec.deck + ": refine must be >= 1");
-  toml::table root = toml::parse_file(spec.deck);
+  if (!fs::is_regular_file(spec.deck)) throw InputError(spec.deck + ": cup base deck not found");
+  toml::table root;
+  try {
+    root = toml::parse_file(spec.deck);
+  } catch (const toml::parse_error& e) {
+    throw InputError(spec.deck + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
+  }
   const fs::path dir = fs::path(spec.deck).parent_path();
   if (auto* mesh = root["mesh"].as_table())
     for (const char* key : {"core", "ring", "through"})
