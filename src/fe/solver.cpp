@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "fe/contact_springs.hpp"
 #include "fe/hex8.hpp"
 #include "material/sheet_frame.hpp"
 
@@ -76,42 +77,15 @@ Solver::Solver(Model& model) : m_(model) {
   // Contact pairs: unique slave nodes, tributary faces, penalty length scale.
   for (const auto& cp : m_.contacts) {
     const auto& faces = mesh.face_set(cp.faces);
-    std::vector<int> nodes;
-    for (const auto& f : faces) nodes.insert(nodes.end(), f.begin(), f.end());
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    ContactSprings springs = contact_springs(mesh, nc_, faces, x_, y_, z_, cp.faces);  // fe/contact_springs.hpp
+    const std::vector<int>& nodes = springs.nodes;
     std::vector<ContactNode> cn(nodes.size());
     for (std::size_t k = 0; k < nodes.size(); ++k) cn[k].node = nodes[k];
-    // Element size normal to the face: V / A of the element owning each face.
-    std::vector<double> len(nodes.size(), 1e30);
-    for (const auto& f : faces) {
-      int owner = -1;
-      for (int c = nc_.start[f[0]]; c < nc_.start[f[0] + 1] && owner < 0; ++c) {
-        const int e = nc_.corner[c] / 8;
-        int hits = 0;
-        for (int a = 0; a < 8; ++a)
-          for (int q = 0; q < 4; ++q) hits += mesh.hex[e][a] == f[q];
-        if (hits == 4) owner = e;
-      }
-      if (owner < 0) throw std::invalid_argument("contact: face set '" + cp.faces + "' has a face on no element");
-      double ex[8], ey[8], ez[8];
-      gather(x_, y_, z_, mesh.hex[owner], ex, ey, ez);
-      const double V = hex_volume(ex, ey, ez);
-      const double A = quad_area(x_, y_, z_, f);
-      for (int q = 0; q < 4; ++q) {
-        const auto k = std::lower_bound(nodes.begin(), nodes.end(), f[q]) - nodes.begin();
-        len[k] = std::min(len[k], V / A);
-      }
-    }
-    std::vector<int> slot;
-    for (const auto& f : faces)
-      for (int q = 0; q < 4; ++q)
-        slot.push_back(static_cast<int>(std::lower_bound(nodes.begin(), nodes.end(), f[q]) - nodes.begin()));
-    face_slot_.push_back(std::move(slot));
+    face_slot_.push_back(std::move(springs.face_slot));
     pair_faces_.push_back(&faces);
     pair_tool_.push_back(tool_index(m_, cp.tool));
     contact_.push_back(std::move(cn));
-    contact_stiffness_len_.push_back(std::move(len));
+    contact_stiffness_len_.push_back(std::move(springs.length));
     contact_force_.emplace_back(nodes.size(), Vec3{0, 0, 0});
     const int ss = cp.friction ? cp.friction->state_size() : 0;
     friction_state_.emplace_back(nodes.size() * ss, 0.0);

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "fe/contact_springs.hpp"
 #include "fe/solver.hpp"
 
 namespace drawbend::fe {
@@ -97,15 +98,12 @@ void Solver::check_force_driven_tools() const {
   // integration is stable only if omega dt <= 2 (with the element safety factor).
   for (std::size_t k = 0; k < m_.tools.size(); ++k)
     if (plan_.drive[k] == Tool::Drive::force) {
-      double stiffness = 0;
+      double stiffness = 0;  // on the current coordinates (fe/contact_springs.hpp)
       for (std::size_t p = 0; p < m_.contacts.size(); ++p) {
         if (pair_tool_[p] != static_cast<int>(k)) continue;
-        std::vector<double> area(contact_[p].size(), 0.0);
-        const auto& faces = *pair_faces_[p];
-        for (std::size_t f = 0; f < faces.size(); ++f)
-          for (int q = 0; q < 4; ++q) area[face_slot_[p][4 * f + q]] += 0.25 * quad_area(x_, y_, z_, faces[f]);
-        for (std::size_t i = 0; i < area.size(); ++i)
-          stiffness += m_.contacts[p].penalty * m_.material->bulk_modulus() * area[i] / contact_stiffness_len_[p][i];
+        const ContactSprings springs{{}, face_slot_[p], contact_stiffness_len_[p]};
+        stiffness += spring_stiffness(springs, *pair_faces_[p], x_, y_, z_, m_.contacts[p].penalty,
+                                      m_.material->bulk_modulus());
       }
       const double limit = 2.0 * m_.dt_safety;
       if (stiffness > 0 && std::sqrt(stiffness / m_.tools[k].mass) * dt_ > limit) {

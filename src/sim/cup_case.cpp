@@ -11,6 +11,7 @@
 #include <toml++/toml.h>
 
 #include "core/csv.hpp"
+#include "fe/contact_springs.hpp"
 #include "fe/solver.hpp"
 #include "io/deck.hpp"
 #include "io/run_case.hpp"
@@ -122,26 +123,6 @@ toml::table base_table(const CupSpec& spec, int& layers) {
   return root;
 }
 
-
-double tool_contact_stiffness(const fe::Model& m, const std::string& tool) {
-  double k = 0;
-  for (const auto& cp : m.contacts) {
-    if (cp.tool != tool) continue;
-    double area = 0, zmin = 1e30, zmax = -1e30;
-    for (const auto& f : m.mesh.face_set(cp.faces)) area += fe::quad_area(m.mesh.x, m.mesh.y, m.mesh.z, f);
-    for (double z : m.mesh.z) {
-      zmin = std::min(zmin, z);
-      zmax = std::max(zmax, z);
-    }
-    int layers = 0;  // distinct z levels - 1 = elements through the thickness
-    std::vector<double> zs(m.mesh.z);
-    std::sort(zs.begin(), zs.end());
-    for (std::size_t i = 1; i < zs.size(); ++i) layers += zs[i] - zs[i - 1] > 1e-9;
-    k += cp.penalty * m.material->bulk_modulus() * area / ((zmax - zmin) / std::max(1, layers));
-  }
-  return k;
-}
-
 }  // namespace
 
 CupResult draw_cup(const CupSpec& spec) {
@@ -170,7 +151,7 @@ CupResult draw_cup(const CupSpec& spec) {
   m.steps[0].duration = 400 * dt;
   m.steps[0].damping = 1.0 / (50 * dt);  // velocities relax in ~50 cycles while clamping
   for (auto& t : m.tools)
-    if (t.drive == fe::Tool::Drive::force) t.mass = 4.0 * tool_contact_stiffness(m, t.name) * dt * dt;  // omega dt = 0.5
+    if (t.drive == fe::Tool::Drive::force) t.mass = fe::tool_mass_half_omega_dt(fe::tool_contact_stiffness(m, t.name), dt);
   fe::Solver s(m);
   s.run_step(0);
   CupResult r;
@@ -272,7 +253,7 @@ std::string cup_deck_text(const CupSpec& spec) {
   punch->insert_or_assign("speed", toml::table{{"t", toml::array{0.0, tr}}, {"v", toml::array{0.0, spec.speed}}});
   for (const auto& t : m.tools)
     if (t.drive == fe::Tool::Drive::force)
-      tool_table(root, t.name)->insert_or_assign("mass", 4.0 * tool_contact_stiffness(m, t.name) * dt * dt);
+      tool_table(root, t.name)->insert_or_assign("mass", fe::tool_mass_half_omega_dt(fe::tool_contact_stiffness(m, t.name), dt));
   std::ostringstream o;
   o << "# Cup-drawing deck written by drawbend's builder (src/sim/cup_case.cpp) from " << spec.deck << ".\n"
     << "# Punch speed " << spec.speed << " mm/s, stroke " << spec.stroke << " mm in " << spec.cycles

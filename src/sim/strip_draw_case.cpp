@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "fe/contact_springs.hpp"
 #include "fe/solver.hpp"
 #include "sim/case_pool.hpp"
 #include "sim/deck_writer.hpp"
@@ -75,8 +76,8 @@ std::string text(const StripDrawSpec& s, double dt, double die_mass) {
     << "# 4 mm/s the balance misses by 12 % of the frictional dissipation (0.25 of\n"
     << "# 2.1 mJ).  Open question (issue 7 report); it warns until it is understood.\n"
     << "energy_balance = { limit = 0.1, action = \"warn\" }\n\n"
-    << "# The die is a rigid mass on its contact springs (stiffness k = penalty K A / h\n"
-    << "# over its area A, h the element height): mass 4 k dt^2 puts it at omega dt = 0.5.\n"
+    << "# The die is a rigid mass on its contact springs (stiffness k = sum of penalty K A_i / L_i\n"
+    << "# over its contact nodes, fe/contact_springs.hpp): mass 4 k dt^2 puts it at omega dt = 0.5.\n"
     << "[[tool]]\nname = \"die\"\ndrive = \"force\"\ndirection = [0.0, 0.0, -1.0]\nforce = "
     << toml_ramp(s.force_ramp, FN) << "\nmass = " << toml_float(die_mass) << "\n"
     << "[[tool.surface]]\nkind = \"plane\"\norigin = [0.0, 0.0, " << toml_float(s.thickness)
@@ -98,21 +99,6 @@ std::string text(const StripDrawSpec& s, double dt, double die_mass) {
   return o.str();
 }
 
-/// The die mass of omega dt = 0.5 on the model's contact springs: k = penalty
-/// K A / L over the die area A (the whole top face), L the element height.
-double die_mass(const fe::Model& m) {
-  const auto [xmin, xmax] = std::minmax_element(m.mesh.x.begin(), m.mesh.x.end());
-  const auto [ymin, ymax] = std::minmax_element(m.mesh.y.begin(), m.mesh.y.end());
-  const double area = (*xmax - *xmin) * (*ymax - *ymin);
-  double L = 1e30;
-  for (double zz : m.mesh.z) L = std::min(L, zz > 0 ? zz : 1e30);  // height of the bottom layer
-  double alpha = 0.1;
-  for (const auto& cp : m.contacts)
-    if (cp.tool == "die") alpha = cp.penalty;
-  const double k = alpha * m.material->bulk_modulus() * area / L;
-  return 4.0 * k * m.target_dt * m.target_dt;
-}
-
 }  // namespace
 
 std::string strip_draw_deck_text(const StripDrawSpec& s) {
@@ -121,7 +107,7 @@ std::string strip_draw_deck_text(const StripDrawSpec& s) {
   if (s.die_mass > 0) return text(s, dt, s.die_mass);
   // The mass needs the material's bulk modulus and the mesh: read them from the deck itself.
   const io::Deck first = io::parse_deck(text(s, dt, 1.0), s.name + ".toml");
-  return text(s, dt, die_mass(first.model));
+  return text(s, dt, fe::tool_mass_half_omega_dt(fe::tool_contact_stiffness(first.model, "die"), dt));
 }
 
 io::Deck strip_draw_deck(const StripDrawSpec& s) {
