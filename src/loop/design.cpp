@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "analysis/rope.hpp"
+#include "analysis/stribeck.hpp"
 #include "core/csv.hpp"
 #include "loop/model.hpp"
 
@@ -156,10 +157,10 @@ Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_
         } catch (...) {
         }
       }
-      const double ra_comb = std::hypot(Ra_sheet_um, ra_pin) * 1e-6;
-      // Eq. 3.1 written out, not analysis::lubricant_number: that one multiplies (v 1e-3) eta where
-      // this multiplies (eta v) 1e-3, which rounds differently, and the loop's outputs keep their bits.
-      r.lgL = std::log10(kEtaPaS * std::max(s.speed_mm_s, 1e-6) * 1e-3 / (p_avg * 1e6 * ra_comb));
+      analysis::StribeckParams lub;  // Eq. 3.1's inputs: the combined roughness and the viscosity
+      lub.Ra_um = std::hypot(Ra_sheet_um, ra_pin);
+      lub.eta_Pa_s = kEtaPaS;
+      r.lgL = std::log10(analysis::lubricant_number(std::max(s.speed_mm_s, 1e-6), p_avg, lub));
       lg_sum += r.lgL;
       ++n_fixed;
     }
