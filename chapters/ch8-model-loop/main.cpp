@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
         "width convergence; false: the quick tier");
   o.add(cfg.fit_pin, "fit-pin", "pin whose bending force trains the candidates [mm]");
   o.add(cfg.candidates, "candidates",
-        "comma-separated candidates (split:B1/B2..., voce, hill48, ms:X, across:N); empty: the tier's list");
+        "comma-separated candidates (split:B1/B2..., chaboche:X1/X2..., voce, hill48, offset, ms:X, across:N); empty: the tier's list");
   o.add(cfg.numerics, "numerics",
         "the mass-scaling and width studies: true, false, or auto (as --full-study); 1, 0, -1 also accepted");
   o.add(cfg.cup, "cup", "the cup loop and the 2 x 2 attribution (step 5)");

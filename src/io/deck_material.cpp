@@ -25,15 +25,43 @@ std::string relative_to(const std::string& dir, const std::string& file) {
 }  // namespace
 
 namespace {
-// hardening = "curve.csv" | yield [+ tangent] | voce = { sigma0, Q, b } | swift = { K, e0, n }.
+// hardening = "curve.csv" | { plastic_strain = [...], true_stress_MPa = [...] } | yield [+ tangent] | voce = { sigma0, Q, b } | swift = { K, e0, n }.
 std::optional<material::HardeningCurve> read_curve(const DeckContext& c, const toml::table& t, const std::string& dir) {
   const std::size_t before = c.count();
   const int forms = (t.get("hardening") != nullptr) + (t.get("yield") != nullptr) + (t.get("voce") != nullptr) +
                     (t.get("swift") != nullptr);
   if (forms != 1) {
-    c.bad(t, "material", "expected exactly one flow curve: hardening = \"curve.csv\", yield [MPa] (+ tangent), "
+    c.bad(t, "material", "expected exactly one flow curve: hardening = \"curve.csv\" or { plastic_strain, true_stress_MPa }, yield [MPa] (+ tangent), "
                          "voce = { sigma0, Q, b } or swift = { K, e0, n }");
     return std::nullopt;
+  }
+  if (const auto* inl = t.get_as<toml::table>("hardening")) {  // { plastic_strain = [...], true_stress_MPa = [...] }
+    const std::string w = "material.hardening";
+    c.allowed(*inl, w, {"plastic_strain", "true_stress_MPa"});
+    std::vector<double> col[2];
+    const char* keys[2] = {"plastic_strain", "true_stress_MPa"};
+    for (int k = 0; k < 2; ++k) {
+      const auto* a = inl->get_as<toml::array>(keys[k]);
+      if (!a || a->empty()) {
+        c.bad(*inl, w + "." + keys[k], "expected a non-empty array of numbers");
+        continue;
+      }
+      for (const auto& v : *a) {
+        const auto x = v.value<double>();
+        if (!x || !std::isfinite(*x)) c.bad(v, w + "." + keys[k], "expected a finite number");
+        col[k].push_back(x.value_or(0.0));
+      }
+    }
+    if (c.count() == before && col[0].size() != col[1].size())
+      c.bad(*inl, w, "plastic_strain and true_stress_MPa differ in length (" + std::to_string(col[0].size()) + " and " +
+                         std::to_string(col[1].size()) + ")");
+    if (c.count() > before) return std::nullopt;
+    try {
+      return material::HardeningCurve(col[0], col[1], "the inline curve");
+    } catch (const InputError& e) {
+      c.bad(*inl, w, e.what());
+      return std::nullopt;
+    }
   }
   if (t.get("hardening")) {
     const std::string file = c.str(t, "hardening", "material");

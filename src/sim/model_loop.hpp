@@ -102,8 +102,12 @@ ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoi
 
 /// Named candidates for the command line and the chapter:
 ///   split:B1/B2/...   split combined hardening, kinematic fraction beta (fitted on the fit pin)
+///   chaboche:X1/X2... one Armstrong-Frederick back stress, gamma 300, saturating at X (MPa),
+///                     carved out of the flow curve (R = sigma - X, its non-decreasing envelope)
 ///   voce              the published Voce flow curve (data/materials/aa5754_o_voce_hou2020.toml)
 ///   hill48            the published Hill'48 r-values (data/materials/aa5754_o_hill48_hou2020.toml)
+///   offset            Swift refitted with Table 5.1's 0.2 % offset yield stress at eps_p = 0.002
+///                     (data/thesis/table_5_1.csv RD row): the flow curve below 1 % strain
 ///   ms:X              mass scaling X (numerical check)
 ///   across:N          N elements across the half width (numerical check)
 /// Throws InputError for anything else.

@@ -4,7 +4,8 @@
 // rolling_direction sets the model's RD (normalised); every non-physical value
 // (r <= 0, gamma < 0, C < 0, beta outside [0, 1], 4 terms, a typo, both r-values and
 // stress ratios, a rolling direction stated twice) is an input error naming
-// file:line: key.
+// file:line: key.  An inline hardening table { plastic_strain, true_stress_MPa }
+// reads like a CSV table; unequal lengths, a falling stress and a wrong key are input errors.
 #define BOOST_TEST_MODULE deck_material
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -57,6 +58,18 @@ BOOST_AUTO_TEST_CASE(valid_combined_and_hill48) {
   BOOST_TEST(std::abs(h.model.rolling_direction[1] - 0.8) < 1e-15);
 }
 
+// An inline flow curve reads as the same table from a file: 100 MPa at 0 and
+// 150 MPa at 0.1 give 125 MPa at eps_p = 0.05 (linear between points).
+BOOST_AUTO_TEST_CASE(inline_hardening_table) {
+  const auto d = io::parse_deck(
+      deck("type = \"j2_combined\"\nhardening = { plastic_strain = [0.0, 0.1], true_stress_MPa = [100.0, 150.0] }\n"
+           "kinematic = { C = [3000.0], gamma = [300.0] }"),
+      "case.toml");
+  const auto* m = dynamic_cast<const material::CombinedPlasticity*>(d.model.material.get());
+  BOOST_TEST_REQUIRE(m != nullptr);
+  BOOST_TEST(std::abs(m->isotropic_stress(0.05) - 125.0) < 1e-12);
+}
+
 BOOST_AUTO_TEST_CASE(bad_values_name_file_line_key) {
   struct Bad {
     std::string material, extra, expect;
@@ -80,6 +93,11 @@ BOOST_AUTO_TEST_CASE(bad_values_name_file_line_key) {
       {"type = \"j2\"\nvoce = { sigma0 = 100.0, Q = -5.0, b = 10.0 }", "", "material.voce.Q"},
       {"type = \"j2\"\nyield = 100.0\nvoce = { sigma0 = 100.0, Q = 5.0, b = 10.0 }", "", "exactly one flow curve"},
       {"type = \"j2\"\nyield = 100.0", "[sheet]\nrolling_direction = [0.0, 0.0, 0.0]\n", "sheet.rolling_direction"},
+      {"type = \"j2\"\nhardening = { plastic_strain = [0.0, 0.1], true_stress_MPa = [100.0] }", "",
+       "case.toml:10: material.hardening"},
+      {"type = \"j2\"\nhardening = { plastic_strain = [0.0, 0.1], true_stress_MPa = [100.0, 90.0] }", "",
+       "must not decrease"},
+      {"type = \"j2\"\nhardening = { plastic_strain = [0.0, 0.1], stress = [100.0, 90.0] }", "", "material.hardening"},
   };
   for (const Bad& b : bad) {
     const std::string e = error_of(deck(b.material, b.extra));

@@ -12,11 +12,20 @@
 //    and replaces only the flow curve; Hill'48 on top of it keeps the back
 //    stress and the (tabulated) flow curve and sets the published r-values
 //    0.65 / 0.65 / 0.72 (data/materials/aa5754_o_hill48_hou2020.toml);
+//  - "offset" on top of split beta 0.3 keeps the back stress and sets a Swift
+//    curve K (e0 + eps_p)^n through Table 5.1's RD row with the 0.2 % offset
+//    yield stress at eps_p = 0.002: sigma(0.002) = 99.71 MPa, n = 0.32, and
+//    an initial yield stress below 99.71 MPa;
+//  - "chaboche:30" on top of split beta 0.3 replaces the kinematic part by one
+//    term C = 300 * 30 = 9000 MPa, gamma = 300, and carves R = sigma - X out
+//    of the tabulated RD curve: R non-decreasing, R + X = sigma at eps_p = 0.5
+//    (the envelope cuts only at small strain), R(0) <= sigma(0) - 0;
 //  - a loop whose points all lie on the fit pin has nothing held out: an
 //    input error before any run.
 #define BOOST_TEST_MODULE model_loop
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -24,6 +33,7 @@
 #include <toml++/toml.h>
 
 #include "core/csv.hpp"
+#include "material/hardening_curve.hpp"
 #include "sim/model_loop.hpp"
 
 using namespace drawbend;
@@ -98,6 +108,34 @@ BOOST_AUTO_TEST_CASE(candidates_compose) {
   BOOST_TEST(mh["hill48"]["r90"].value_or(0.0) == 0.72);
   BOOST_TEST(!mh.contains("voce"));  // the flow curve stays the tabulated one
   BOOST_TEST(sim::deck_text(h).find("aa5754_o_rd.csv") != std::string::npos);
+
+  sim::DrawBendSpec o = t;
+  sim::named_candidate("offset", DRAWBEND_DATA_DIR).members[0].apply(o);
+  const toml::table mo = table(o.material);
+  BOOST_TEST(mo["kinematic"]["beta"].value_or(0.0) == 0.3);
+  const double K = mo["swift"]["K"].value_or(0.0), e0 = mo["swift"]["e0"].value_or(0.0), n = mo["swift"]["n"].value_or(0.0);
+  BOOST_TEST(n == 0.32);
+  BOOST_TEST(K * std::pow(e0 + 0.002, n) == 99.71, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(K * std::pow(e0, n) < 99.71);
+
+  sim::DrawBendSpec ch = t;
+  sim::named_candidate("chaboche:30", DRAWBEND_DATA_DIR).members[0].apply(ch);
+  const toml::table mc = table(ch.material);
+  BOOST_TEST(mc["type"].value_or(std::string()) == "j2_combined");
+  BOOST_TEST(!mc["kinematic"].as_table()->contains("beta"));
+  BOOST_TEST((*mc["kinematic"]["C"].as_array())[0].value_or(0.0) == 9000.0);
+  BOOST_TEST((*mc["kinematic"]["gamma"].as_array())[0].value_or(0.0) == 300.0);
+  std::vector<double> ex, R;
+  for (const auto& v : *mc["hardening"]["plastic_strain"].as_array()) ex.push_back(v.value_or(0.0));
+  for (const auto& v : *mc["hardening"]["true_stress_MPa"].as_array()) R.push_back(v.value_or(0.0));
+  BOOST_REQUIRE(ex.size() == R.size());
+  for (std::size_t i = 1; i < R.size(); ++i) BOOST_TEST(R[i] >= R[i - 1]);
+  const auto base = material::HardeningCurve::load(t.hardening);
+  for (std::size_t i = 0; i < ex.size(); ++i)
+    if (std::abs(ex[i] - 0.5) < 1e-12)
+      BOOST_TEST(R[i] + 30 * (1 - std::exp(-300 * ex[i])) == base.stress(ex[i]), boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(R.front() <= base.stress(0.0));
+  BOOST_CHECK_THROW(sim::named_candidate("chaboche:0", DRAWBEND_DATA_DIR), InputError);
 }
 
 BOOST_AUTO_TEST_CASE(nothing_held_out) {
