@@ -107,8 +107,12 @@ void cup_loop(Chapter& c, const Config& cfg, const sim::ModelLoopResult& bending
   const std::string hill = inline_table(c.data("materials/aa5754_o_hill48_hou2020.toml"), "hill48");
   const std::string voce = inline_table(c.data("materials/aa5754_o_voce_hou2020.toml"), "voce");
   double beta = -1;  // the bending loop's choice on the 12.7 mm pin
-  for (const auto& st : bending.steps)
-    if (st.member.rfind("split beta ", 0) == 0) beta = std::stod(st.member.substr(11));
+  for (const auto& st : bending.steps)  // the chosen member's material, read as TOML (split form only)
+    if (!st.spec.material.empty() && st.spec.material.front() == '{') {
+      const std::string doc = "m = " + st.spec.material;
+      const toml::table t = toml::parse(std::string_view(doc));
+      if (const auto b = t["m"]["kinematic"]["beta"].value<double>()) beta = *b;
+    }
 
   // Runs side by side in the case pool.
   auto run = [&](const std::vector<sim::CupSpec>& specs) {

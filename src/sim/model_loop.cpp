@@ -201,6 +201,7 @@ ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoi
     DrawBendSpec chosen = model;
     c.members[best].apply(chosen);
     step.member = c.members[best].label;
+    step.spec = chosen;
     step.eval = summarise(label + " + " + step.member, run.evaluate(specs_of(chosen, points), points));
     const double gain = current.held_rms - step.eval.held_rms;
     if (gain > cfg.min_gain) {

@@ -70,6 +70,7 @@ struct StepRecord {
   std::string candidate, what, member, decision;  ///< decision: "accepted" or "rejected: ..."
   std::vector<std::pair<std::string, double>> member_fit_rms;  ///< each member's fit-pin RMS
   ModelEval eval;  ///< the chosen member on all points
+  DrawBendSpec spec;  ///< the model with the chosen member applied (its material as a TOML inline table)
 };
 
 struct ModelLoopConfig {
