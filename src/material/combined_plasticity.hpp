@@ -93,7 +93,8 @@ class CombinedPlasticity final : public Material {
 
   /// The constants behind update() and tangent_ratio(), for code that must
   /// compute their bits in another form (the element kernel's lanes:
-  /// fe/combined_lanes.hpp).
+  /// fe/combined_lanes.hpp and fe/hill48_lanes.hpp repeat both step by step;
+  /// a change here must be made there, or test_element_kernel fails).
   struct LaneParams {
     double lambda, G, E;     ///< elastic constants [MPa]
     double s0, beta;         ///< initial yield stress [MPa]; split fraction (0: Chaboche or none)
