@@ -184,8 +184,8 @@ std::vector<std::pair<std::string, std::unique_ptr<material::CombinedPlasticity>
 }
 
 /// A combined model with every branch in one block and a reversal: 37
-/// elements loaded as in run_mixed() for three cycles, then with every
-/// velocity reversed for three more.  Returns the outputs after the third
+/// elements loaded as in run_mixed() for three cycles (after a first one with
+/// dtp = 0, as the solver's), then with every velocity reversed for three more.  Returns the outputs after the third
 /// cycle followed by those after the sixth; `fresh`: the state before.
 std::vector<double> run_reversal(ElementRangeFn f, int width, const material::Material& m,
                                  std::vector<double>* fresh = nullptr) {
@@ -204,6 +204,9 @@ std::vector<double> run_reversal(ElementRangeFn f, int width, const material::Ma
   }
   if (fresh) *fresh = b.state;
   const ElementView v = b.view();
+  ElementView first = v;  // the solver's first cycle: no interval yet, so no strain and no turn
+  first.dtp = 0.0;
+  f(first, 0, b.ne, width);
   for (int c = 0; c < 3; ++c) f(v, 0, b.ne, width);
   std::vector<double> out = b.outputs();
   for (auto* a : {&b.vx, &b.vy, &b.vz})
