@@ -9,7 +9,9 @@
 // removes set-up time.  Then the quick draw-bend deck's wall time on 1 and 2
 // threads, which must not be slower on 2 (bench_deck.cpp; not with --quick).
 // The CPU model and the element kernel head the output.  Results go to
-// build/bench/results.csv.
+// build/bench/results.csv.  `--bar-material NAME` times only the 1,600-element
+// bar on one thread with another material (bar_material(): the lane versions
+// of the material models are compared on it).
 #include <omp.h>
 
 #include <chrono>
@@ -24,19 +26,39 @@
 #include "core/csv.hpp"
 #include "fe/element_view.hpp"
 #include "fe/solver.hpp"
+#include "material/combined_plasticity.hpp"
 #include "material/j2_isotropic.hpp"
 
 using namespace drawbend;
 
 namespace {
 
-fe::Model bar(int nx, int ny, int nz) {
+/// The bar's material (--bar-material): J2 isotropic (the default, the
+/// reference figures), or CombinedPlasticity on the same curve and elastic
+/// constants: "split" (beta = 0.3), "chaboche" (one Armstrong-Frederick term,
+/// C = 5000 MPa, gamma = 40), "hill48" (Hill'48 from r = 0.65 / 0.65 / 0.72,
+/// isotropic hardening) or "hill48_chaboche" (both).  Empty for an unknown name.
+std::shared_ptr<const material::Material> bar_material(const std::string& name) {
+  const double E = 70000.0, nu = 0.33, rho = 2.7e-9;
+  const material::HardeningCurve curve({0.0, 1.0}, {100.0, 600.0});
+  const material::Hill48 hill = material::Hill48::from_r_values(0.65, 0.65, 0.72);
+  material::KinematicHardening split, chab, none;
+  split.beta = 0.3;
+  chab.chaboche = {{5000.0, 40.0}};
+  if (name == "j2") return std::make_shared<material::J2Isotropic>(E, nu, rho, curve);
+  if (name == "split") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, split);
+  if (name == "chaboche") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, chab);
+  if (name == "hill48") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, none, hill);
+  if (name == "hill48_chaboche") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, chab, hill);
+  return nullptr;
+}
+
+fe::Model bar(int nx, int ny, int nz, std::shared_ptr<const material::Material> mat = nullptr) {
   fe::Model m;
   const double h = 1.0;  // 1 mm elements
   m.mesh = fe::structured_block(fe::uniform_lines(0, nx * h, nx), fe::uniform_lines(0, ny * h, ny),
                                 fe::uniform_lines(0, nz * h, nz));
-  m.material = std::make_shared<material::J2Isotropic>(70000.0, 0.33, 2.7e-9,
-                                                       material::HardeningCurve({0.0, 1.0}, {100.0, 600.0}));
+  m.material = mat ? std::move(mat) : bar_material("j2");
   fe::Step s;
   s.duration = 1.0;  // long; runs are cut by cycle count
   s.fixed = {{"xmin", {true, true, true}}, {"xmax", {false, true, true}}};
@@ -98,12 +120,25 @@ int main(int argc, char** argv) {
   const bool friction_only = flag("--friction");  // only the friction-law cost
   const bool material_only = flag("--materials");  // only the material updates
   const bool solver_only = flag("--solver");       // only the element-cycle costs (and the deck unless --quick)
+  // --bar-material NAME (bar_material()): only bar_1600 with that material, on 1 thread, nothing else.
+  std::string bar_mat;
+  for (int i = 2; i + 1 < argc; ++i)
+    if (std::string(argv[i]) == "--bar-material") bar_mat = argv[i + 1];
   struct Case {
     std::string name;
     fe::Model model;
   };
   std::vector<Case> cases = {{"bar_1600", bar(40, 8, 5)}, {"bar_8000", bar(100, 16, 5)}, {"drawbend_4800", strip_on_pin()}};
   if (!quick) cases.push_back({"bar_64000", bar(200, 40, 8)});
+  if (!bar_mat.empty()) {
+    auto m = bar_material(bar_mat);
+    if (!m) {
+      std::cerr << "bench_solver: --bar-material '" << bar_mat
+                << "' is not j2, split, chaboche, hill48 or hill48_chaboche\n";
+      return 2;
+    }
+    cases = {{"bar_1600_" + bar_mat, bar(40, 8, 5, std::move(m))}};
+  }
   CsvWriter w({"case", "elements", "threads", "ns_per_element_cycle"});
   const char* isa = "";
   int width = 4;
@@ -119,7 +154,7 @@ int main(int argc, char** argv) {
     const long ne = c.model.mesh.num_elements();
     const long base = std::max(20L, 2000000L / ne), extra = std::max(50L, (quick ? 4000000L : 20000000L) / ne);
     for (int threads : {1, 2}) {
-      if (threads > maxt) continue;
+      if (threads > maxt || (threads > 1 && !bar_mat.empty())) continue;
       omp_set_num_threads(threads);
       const double t_short = seconds(c.model, base), t_long = seconds(c.model, base + extra);
       const double ns = (t_long - t_short) / (static_cast<double>(extra) * ne) * 1e9;
@@ -130,6 +165,11 @@ int main(int argc, char** argv) {
   }
   std::filesystem::create_directories(std::filesystem::path(out).parent_path());
   bool deck_ok = true;
+  if (!bar_mat.empty()) {
+    w.save(out);
+    std::cout << "written " << out << "\n";
+    return 0;
+  }
   if (!friction_only && !material_only && !quick)
     deck_ok = bench_deck((std::filesystem::path(out).parent_path() / "scratch").string(), w);
   if (solver_only) {

@@ -25,6 +25,9 @@ void bind_lanes(ElementView& v) {
   const auto* j2 = dynamic_cast<const material::J2Isotropic*>(v.mat);
   v.j2_lanes = j2 != nullptr;
   if (j2) v.j2 = j2->lane_params();
+  const auto* cp = dynamic_cast<const material::CombinedPlasticity*>(v.mat);
+  v.combined_lanes = cp != nullptr;
+  if (cp) v.combined = cp->lane_params();
 }
 
 bool avx512_kernel_available() {

@@ -33,12 +33,13 @@
 // defines element_range.
 //
 // Structure (LULESH): gather -> geometry and strain rates on fixed-size locals
-// (vector lanes) -> material update (J2 on the lanes with masks; the other
-// models one point at a time, scalar) ->
+// (vector lanes) -> material update (J2 and combined hardening / Hill'48 on
+// the lanes with masks; other models, and W = 1, one point at a time) ->
 // forces on fixed-size locals -> scatter into the element's corner buffer.
 #include <algorithm>
 #include <cmath>
 
+#include "fe/combined_lanes.hpp"
 #include "fe/element_view.hpp"
 #include "fe/hex8_geometry.hpp"
 #include "fe/material_lanes.hpp"
@@ -182,15 +183,19 @@ int element_block(const ElementView& ev, int e0) {
     rotate_and_strain(Lmid, dtp, s[gp], deps[gp], spin[gp]);
   }
   // ... the material update, with the stress power increment per unit volume
-  // by the midpoint rule; the tangent ratio.  J2 on the lanes, branch-free
-  // (fe/material_lanes.hpp); other materials one point at a time (each turns
-  // its own history with the point's spin).
+  // by the midpoint rule; the tangent ratio.  J2 and CombinedPlasticity on
+  // the lanes, branch-free (fe/material_lanes.hpp, fe/combined_lanes.hpp);
+  // other materials one point at a time (each turns its own history with the
+  // point's spin).
   const material::Material& mat = *ev.mat;
   T ratio;
   bool on_lanes = false;
   if constexpr (W > 1) {
     if (ev.j2_lanes) {
       j2_points<W>(ev, e0, s, deps, V, ratio);
+      on_lanes = true;
+    } else if (ev.combined_lanes) {
+      combined_points<W>(ev, e0, s, deps, spin, V, ratio);
       on_lanes = true;
     }
   }

@@ -11,6 +11,7 @@
 #include <array>
 
 #include "fe/node_view.hpp"
+#include "material/combined_plasticity.hpp"
 #include "material/j2_isotropic.hpp"
 #include "material/material.hpp"
 
@@ -35,6 +36,8 @@ struct ElementView {
   bool spin = false;             ///< the material rotates its own state (Material::uses_spin)
   bool j2_lanes = false;         ///< mat is J2 isotropic: its update runs on the lanes (bind_lanes)
   material::J2Isotropic::LaneParams j2{};  ///< its constants, when j2_lanes
+  bool combined_lanes = false;   ///< mat is CombinedPlasticity (von Mises or Hill'48): on the lanes too
+  material::CombinedPlasticity::LaneParams combined{};  ///< its constants, when combined_lanes
   double E0 = 0, G0 = 0;         ///< elastic moduli [MPa]
   double hourglass = 0;          ///< hourglass stiffness scale
   double c_elastic = 0;          ///< nu / (1 - nu)
@@ -56,8 +59,9 @@ namespace avx512 {
 int element_range(const ElementView& v, int begin, int end, int width);
 }
 
-/// Sets v.j2_lanes and v.j2 from v.mat: the lane version of its update where it
-/// has one (J2 isotropic), else the scalar one.  Call after setting v.mat.
+/// Sets v.j2_lanes, v.j2, v.combined_lanes and v.combined from v.mat: the lane
+/// version of its update where it has one (J2 isotropic, CombinedPlasticity),
+/// else the scalar one.  Call after setting v.mat.
 void bind_lanes(ElementView& v);
 
 /// The widest kernel this build and this CPU can run ("avx512", "avx2" or

@@ -54,6 +54,13 @@ inline void lane_sqrt(const T& v, T& r) {
   for (int l = 0; l < static_cast<int>(sizeof(T) / sizeof(double)); ++l) r[l] = std::sqrt(v[l]);
 }
 
+/// r = std::exp of each lane of v (the same libm call as the scalar code).
+inline void lane_exp(const double& v, double& r) { r = std::exp(v); }
+template <class T>
+inline void lane_exp(const T& v, T& r) {
+  for (int l = 0; l < static_cast<int>(sizeof(T) / sizeof(double)); ++l) r[l] = std::exp(v[l]);
+}
+
 /// True when every lane is positive (false for a NaN lane).
 inline bool all_positive(double v) { return v > 0.0; }
 template <class T>

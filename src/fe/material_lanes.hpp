@@ -53,6 +53,49 @@ inline bool any_lane(const M& m) {
   return any;
 }
 
+/// sy = HardeningCurve::stress(ep) and hk = slope(ep) of W plastic strains.
+template <int W, class T>
+inline void curve_at(const CurveTable& c, const T& ep, T& sy, T& hk) {
+  int k[W];
+  for (int l = 0; l < W; ++l) k[l] = curve_segment(c, ep[l]);
+  T xk, yk;
+  gather_segment<W>(c, k, xk, yk, hk);
+  sy = yk + hk * (ep - xk);
+}
+
+/// ratio = material::yield_proximity_ratio(f, plastic), by masks.
+template <class T>
+inline void proximity_ratio(const T& f, const T& plastic, T& ratio) {
+  const T one = T{} + 1.0;
+  const T between = 1.0 + (plastic - 1.0) * (f - 0.90) / 0.08;
+  ratio = f <= 0.90 ? one : (f >= 0.98 ? plastic : between);
+}
+
+/// The material section of element_block<W> shared by the models on the
+/// lanes: for each point, point(gp, sn, r) updates sn (in: the rotated stress
+/// s[gp], out: the new stress) and the point's state in ev.state, and sets r,
+/// its tangent ratio; here the stress power by the midpoint rule into
+/// ev.ie_inc, the new stresses into ev.sig and the mean ratio.  The bits of
+/// the scalar section.
+template <int W, class T, class Point>
+inline void lane_points(const ElementView& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio,
+                        Point&& point) {
+  T ie = {}, r[2];
+  for (int gp = 0; gp < 2; ++gp) {
+    T sn[6];
+    for (int k = 0; k < 6; ++k) sn[k] = s[gp][k];
+    point(gp, sn, r[gp]);
+    T w = {};
+    for (int k = 0; k < 6; ++k) w += 0.5 * (s[gp][k] + sn[k]) * deps[gp][k];
+    ie += w;
+    for (int l = 0; l < W; ++l)
+      for (int k = 0; k < 6; ++k) ev.sig[12 * (e0 + l) + 6 * gp + k] = lane(sn[k], l);
+  }
+  const T iev = 0.5 * V * ie;
+  for (int l = 0; l < W; ++l) ev.ie_inc[e0 + l] = lane(iev, l);
+  ratio = 0.5 * (r[0] + r[1]);
+}
+
 /// One integration point of W elements: trial stress from s and d, radial
 /// return; s and ep are updated in place (J2Isotropic::update_point).
 template <int W, class T>
@@ -122,11 +165,8 @@ inline void j2_update(const J2Params& P, const T d[6], T s[6], T& ep) {
 /// ep).  Through a reference, as lane_sqrt (fe/lanes.hpp): no vector return.
 template <int W, class T>
 inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, T& ratio) {
-  int k[W];
-  for (int l = 0; l < W; ++l) k[l] = curve_segment(P.curve, ep[l]);
-  T xk, yk, hk;
-  gather_segment<W>(P.curve, k, xk, yk, hk);
-  const T sy = yk + hk * (ep - xk);
+  T sy, hk;
+  curve_at<W>(P.curve, ep, sy, hk);
   const T p = (s[0] + s[1] + s[2]) * (1.0 / 3.0);
   const T a0 = s[0] - p, a1 = s[1] - p, a2 = s[2] - p;
   const T q2 = 1.5 * (a0 * a0 + a1 * a1 + a2 * a2) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
@@ -134,36 +174,20 @@ inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, T& ra
   lane_sqrt(q2, q);
   const T f = q / sy;
   const T plastic = hk / (P.E + hk);
-  // material::yield_proximity_ratio(f, plastic), by masks.
-  const T one = T{} + 1.0;
-  const T between = 1.0 + (plastic - 1.0) * (f - 0.90) / 0.08;
-  ratio = f <= 0.90 ? one : (f >= 0.98 ? plastic : between);
+  proximity_ratio(f, plastic, ratio);
 }
 
-/// The material section of element_block<W> for J2 isotropic: both points'
-/// updates (s: the rotated stresses, deps: the increments), the stress power
-/// into ev.ie_inc and the mean tangent ratio; the new stresses and plastic
-/// strains go to ev.sig and ev.state.  The bits of the scalar section.
+/// The material section of element_block<W> for J2 isotropic (lane_points):
+/// the plastic strains from and to ev.state.
 template <int W, class T>
 inline void j2_points(const ElementView& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio) {
-  T ie = {}, r[2];
-  for (int gp = 0; gp < 2; ++gp) {
-    T sn[6], ep;
-    for (int k = 0; k < 6; ++k) sn[k] = s[gp][k];
+  lane_points<W>(ev, e0, s, deps, V, ratio, [&](int gp, T* sn, T& r) {
+    T ep;
     for (int l = 0; l < W; ++l) set_lane(ep, l, ev.state[2 * (e0 + l) + gp]);
     j2_update<W>(ev.j2, deps[gp], sn, ep);
-    T w = {};
-    for (int k = 0; k < 6; ++k) w += 0.5 * (s[gp][k] + sn[k]) * deps[gp][k];
-    ie += w;
-    for (int l = 0; l < W; ++l) {
-      for (int k = 0; k < 6; ++k) ev.sig[12 * (e0 + l) + 6 * gp + k] = lane(sn[k], l);
-      ev.state[2 * (e0 + l) + gp] = lane(ep, l);
-    }
-    j2_tangent_ratio<W>(ev.j2, sn, ep, r[gp]);
-  }
-  const T iev = 0.5 * V * ie;
-  for (int l = 0; l < W; ++l) ev.ie_inc[e0 + l] = lane(iev, l);
-  ratio = 0.5 * (r[0] + r[1]);
+    for (int l = 0; l < W; ++l) ev.state[2 * (e0 + l) + gp] = lane(ep, l);
+    j2_tangent_ratio<W>(ev.j2, sn, ep, r);
+  });
 }
 
 }  // namespace drawbend::fe::DRAWBEND_ISA::kernel

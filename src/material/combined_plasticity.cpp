@@ -79,6 +79,16 @@ CombinedPlasticity::CombinedPlasticity(double youngs_modulus, double poisson_rat
   s0_ = curve_.initial_yield();
 }
 
+CombinedPlasticity::LaneParams CombinedPlasticity::lane_params() const noexcept {
+  LaneParams p{el_.lambda, el_.G, el_.E, s0_, kin_.beta, {0, 0, 0}, {0, 0, 0},
+               static_cast<int>(kin_.chaboche.size()), nback_, aniso_, hill_, curve_.table()};
+  for (int k = 0; k < p.nterms; ++k) {
+    p.C[k] = kin_.chaboche[k].C;
+    p.gamma[k] = kin_.chaboche[k].gamma;
+  }
+  return p;
+}
+
 double CombinedPlasticity::isotropic_stress(double ep) const {
   const double s = curve_.stress(ep);
   return kin_.beta > 0 ? s0_ + (1.0 - kin_.beta) * (s - s0_) : s;

@@ -91,6 +91,21 @@ class CombinedPlasticity final : public Material {
   const KinematicHardening& kinematic() const { return kin_; }
   bool anisotropic() const { return aniso_; }
 
+  /// The constants behind update() and tangent_ratio(), for code that must
+  /// compute their bits in another form (the element kernel's lanes:
+  /// fe/combined_lanes.hpp and fe/hill48_lanes.hpp repeat both step by step;
+  /// a change here must be made there, or test_element_kernel fails).
+  struct LaneParams {
+    double lambda, G, E;     ///< elastic constants [MPa]
+    double s0, beta;         ///< initial yield stress [MPa]; split fraction (0: Chaboche or none)
+    double C[3], gamma[3];   ///< Chaboche terms: C [MPa], gamma [1]
+    int nterms, nback;       ///< Chaboche terms; back stresses in the state
+    bool aniso;              ///< Hill'48 in the sheet axes carried in the state
+    Hill48 hill;
+    HardeningCurve::Table curve;
+  };
+  LaneParams lane_params() const noexcept;
+
  private:
   double equivalent(const double xi[6]) const;  // sigma_bar in the sheet axes
   void solve_relative(double kappa, const double xs[6], double xi[6]) const;  // (I + kappa T M) xi = xs

@@ -11,6 +11,11 @@
 //  - J2 on the lanes (fe/material_lanes.hpp): a block mixing elastic points,
 //    points below the initial yield stress, plastic points and points whose
 //    increment crosses several curve points gives the scalar bits.
+//  - Combined hardening on the lanes (fe/combined_lanes.hpp): for von Mises
+//    and Hill'48 with isotropic, split and two-term Chaboche hardening, a block
+//    mixing elastic and plastic points, loaded for three cycles and then
+//    reversed for three (Bauschinger re-yielding the other way), gives the
+//    scalar bits after both phases (every output, as above).
 //  - An inverted element (here no. 5, of a block of four) is reported, and the
 //    other elements of its block come out as if computed one by one.
 //  - Closed form: a rigid translation of an unstressed element gives zero
@@ -19,7 +24,10 @@
 #include <boost/test/unit_test.hpp>
 #include <array>
 #include <cstring>
+#include <memory>
 #include <random>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "fe/element_view.hpp"
@@ -49,10 +57,12 @@ struct Block {
                                 material::HardeningCurve({0, 0.001, 0.002, 0.004, 0.1, 1}, {100, 120, 130, 150, 200, 300})};
   const material::Material& mat;
 
-  Block(int n, unsigned seed, bool anisotropic = false, bool fine = false)
+  /// `other`: a material of the caller's instead of j2, hill or j2_fine.
+  Block(int n, unsigned seed, bool anisotropic = false, bool fine = false, const material::Material* other = nullptr)
       : ne(n),
-        mat(anisotropic ? static_cast<const material::Material&>(hill)
-                        : fine ? static_cast<const material::Material&>(j2_fine) : j2) {
+        mat(other ? *other
+                  : anisotropic ? static_cast<const material::Material&>(hill)
+                                : fine ? static_cast<const material::Material&>(j2_fine) : j2) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(-1, 1);
     const double base[8][3] = {{0, 0, 0},  {2, 0, 0},  {2, 1, 0},  {0, 1, 0},
@@ -150,6 +160,63 @@ std::vector<double> run_mixed(ElementRangeFn f, int width, std::vector<double>* 
   return b.outputs();
 }
 
+/// The combined-hardening models on the lanes (fe/combined_lanes.hpp), each
+/// on j2_fine's curve: von Mises with the split form, with two Chaboche terms
+/// and with isotropic hardening only (no spin: nothing to turn), and Hill'48
+/// with isotropic hardening, the split form and two Chaboche terms.
+std::vector<std::pair<std::string, std::unique_ptr<material::CombinedPlasticity>>> combined_models() {
+  const material::HardeningCurve curve({0, 0.001, 0.002, 0.004, 0.1, 1}, {100, 120, 130, 150, 200, 300});
+  const material::Hill48 hill = material::Hill48::from_r_values(0.65, 0.65, 0.72);
+  material::KinematicHardening split, chab, none;
+  split.beta = 0.3;
+  chab.chaboche = {{6000.0, 60.0}, {800.0, 5.0}};
+  std::vector<std::pair<std::string, std::unique_ptr<material::CombinedPlasticity>>> m;
+  auto add = [&](const char* name, const material::KinematicHardening& k, const material::Hill48& h) {
+    m.emplace_back(name, std::make_unique<material::CombinedPlasticity>(70000, 0.33, 2.7e-9, curve, k, h));
+  };
+  add("von Mises, split", split, material::Hill48::von_mises());
+  add("von Mises, Chaboche x2", chab, material::Hill48::von_mises());
+  add("von Mises, isotropic", none, material::Hill48::von_mises());
+  add("Hill'48, isotropic", none, hill);
+  add("Hill'48, split", split, hill);
+  add("Hill'48, Chaboche x2", chab, hill);
+  return m;
+}
+
+/// A combined model with every branch in one block and a reversal: 37
+/// elements loaded as in run_mixed() for three cycles (after a first one with
+/// dtp = 0, as the solver's), then with every velocity reversed for three more.  Returns the outputs after the third
+/// cycle followed by those after the sixth; `fresh`: the state before.
+std::vector<double> run_reversal(ElementRangeFn f, int width, const material::Material& m,
+                                 std::vector<double>* fresh = nullptr) {
+  Block b(37, 13, false, false, &m);
+  const int ns = m.state_size();
+  for (int e = 0; e < b.ne; ++e) {
+    const double scale = e % 3 == 0 ? 0.01 : e % 3 == 1 ? 8.0 : 1.0;
+    for (int a = 0; a < 8; ++a) b.vx[8 * e + a] *= scale, b.vy[8 * e + a] *= scale, b.vz[8 * e + a] *= scale;
+    if (e % 3 == 0)
+      for (int k = 0; k < 12; ++k) b.sig[12 * e + k] *= 0.2;  // well inside the initial yield surface
+    for (int gp = 0; gp < 2; ++gp) {
+      double& ep = b.state[static_cast<std::size_t>(2 * e + gp) * ns];
+      if (e % 5 == 0) ep = 0.002;  // on a curve point
+      if (e % 7 == 0) ep = 0.0;    // virgin
+    }
+  }
+  if (fresh) *fresh = b.state;
+  const ElementView v = b.view();
+  ElementView first = v;  // the solver's first cycle: no interval yet, so no strain and no turn
+  first.dtp = 0.0;
+  f(first, 0, b.ne, width);
+  for (int c = 0; c < 3; ++c) f(v, 0, b.ne, width);
+  std::vector<double> out = b.outputs();
+  for (auto* a : {&b.vx, &b.vy, &b.vz})
+    for (double& x : *a) x = -x;
+  for (int c = 0; c < 3; ++c) f(v, 0, b.ne, width);
+  const std::vector<double> second = b.outputs();
+  out.insert(out.end(), second.begin(), second.end());
+  return out;
+}
+
 bool bitwise_equal(const std::vector<double>& a, const std::vector<double>& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i)
@@ -241,6 +308,66 @@ BOOST_AUTO_TEST_CASE(j2_on_lanes_every_branch_gives_the_scalar_bits) {
     BOOST_TEST_MESSAGE("this CPU has no AVX-512F: the avx512 kernel not checked");
   }
 #endif
+}
+
+BOOST_AUTO_TEST_CASE(combined_on_lanes_every_branch_and_reversal_give_the_scalar_bits) {
+  const int ne = 37;
+  for (const auto& [name, m] : combined_models()) {
+    BOOST_TEST_CONTEXT(name) {
+      std::vector<double> fresh;
+      const auto one = run_reversal(&baseline::element_range, 1, *m, &fresh);
+      // Coverage, from the scalar run: points elastic and plastic in the first
+      // three cycles, blocks of four mixing both, and points that flowed in the
+      // first three cycles and again, the other way, after the reversal
+      // (relative stresses sigma - alpha with a negative scalar product).
+      const int ns = m->state_size();
+      const std::size_t half = one.size() / 2, st0 = 12 * ne;
+      auto relative = [&](std::size_t at, int i, double xi[6]) {
+        double alpha[6];
+        m->back_stress(&one[at + st0 + static_cast<std::size_t>(i) * ns], alpha);
+        for (int c = 0; c < 6; ++c) xi[c] = one[at + 6 * i + c] - alpha[c];
+      };
+      int elastic = 0, plastic = 0, reversed = 0, mixed_blocks = 0;
+      std::vector<bool> flowed(2 * ne);
+      for (int i = 0; i < 2 * ne; ++i) {
+        const double ep0 = fresh[static_cast<std::size_t>(i) * ns], ep1 = one[st0 + static_cast<std::size_t>(i) * ns],
+                     ep2 = one[half + st0 + static_cast<std::size_t>(i) * ns];
+        flowed[i] = ep1 != ep0;
+        (flowed[i] ? plastic : elastic) += 1;
+        double x1[6], x2[6], dot = 0;
+        relative(0, i, x1);
+        relative(half, i, x2);
+        for (int c = 0; c < 6; ++c) dot += x1[c] * x2[c] * (c < 3 ? 1.0 : 2.0);
+        if (flowed[i] && ep2 != ep1 && dot < 0) ++reversed;
+      }
+      for (int e0 = 0; e0 + 4 <= ne; e0 += 4) {
+        bool any_elastic = false, any_plastic = false;
+        for (int i = 2 * e0; i < 2 * (e0 + 4); ++i) (flowed[i] ? any_plastic : any_elastic) = true;
+        mixed_blocks += any_elastic && any_plastic;
+      }
+      BOOST_TEST_MESSAGE(name << ": " << elastic << " elastic, " << plastic << " plastic, " << reversed
+                              << " reversed, " << mixed_blocks << " mixed blocks of 4");
+      BOOST_TEST(elastic > 0);
+      BOOST_TEST(plastic > 0);
+      BOOST_TEST(reversed > 0);
+      BOOST_TEST(mixed_blocks > 0);
+      BOOST_TEST(bitwise_equal(one, run_reversal(&baseline::element_range, 4, *m)));
+#ifdef DRAWBEND_HAVE_AVX2_KERNEL
+      if (avx2_kernel_available()) {
+        BOOST_TEST(bitwise_equal(one, run_reversal(&avx2::element_range, 4, *m)));
+        BOOST_TEST(bitwise_equal(one, run_reversal(&avx2::element_range, 1, *m)));
+      }
+#endif
+#ifdef DRAWBEND_HAVE_AVX512_KERNEL
+      if (avx512_kernel_available()) {
+        BOOST_TEST(bitwise_equal(one, run_reversal(&avx512::element_range, 8, *m)));
+        BOOST_TEST(bitwise_equal(one, run_reversal(&avx512::element_range, 4, *m)));
+      } else {
+        BOOST_TEST_MESSAGE("this CPU has no AVX-512F: the avx512 kernel not checked");
+      }
+#endif
+    }
+  }
 }
 
 BOOST_AUTO_TEST_CASE(inverted_element_reported_and_block_neighbours_unchanged) {
