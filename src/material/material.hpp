@@ -73,7 +73,10 @@ class Material {
   /// numerics such as hourglass control.  sigma and state are the values AFTER update().  Elastic
   /// response (and the default): 1.  J2 on the yield surface: the uniaxial elastoplastic ratio
   /// E_t/E = H/(E + H), H the hardening modulus; 0 for perfect plasticity (callers may want a floor).
-  virtual double tangent_ratio(const double* /*sigma*/, const double* /*state*/) const { return 1.0; }
+  /// (Defined out of line in material.cpp: the element kernel is compiled per
+  /// instruction set, and an inline body would be emitted in the AVX-512 object
+  /// too, where the linker may pick that copy for every caller.)
+  virtual double tangent_ratio(const double* sigma, const double* state) const;
   /// Whether update() needs the spin (its state holds tensors or axes to rotate); the element
   /// passes a zero spin otherwise, which saves the work on the isotropic models' hot path.
   virtual bool uses_spin() const { return false; }
