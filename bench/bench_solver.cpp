@@ -9,7 +9,7 @@
 // removes set-up time.  Then the quick draw-bend deck's wall time on 1 and 2
 // threads, which must not be slower on 2 (bench_deck.cpp; not with --quick).
 // The CPU model and the element kernel head the output.  Results go to
-// build/bench/results.csv.  `--bar-material NAME` times only the 1,600-element
+// build/bench/results.csv (--out; --help lists the options).  `--bar-material NAME` times only the 1,600-element
 // bar on one thread with another material (bar_material(): the lane versions
 // of the material models are compared on it).
 #include <omp.h>
@@ -24,6 +24,7 @@
 #include "bench_friction.hpp"
 #include "bench_material.hpp"
 #include "core/csv.hpp"
+#include "core/options.hpp"
 #include "fe/element_view.hpp"
 #include "fe/solver.hpp"
 #include "material/combined_plasticity.hpp"
@@ -110,20 +111,32 @@ double seconds(fe::Model m, long cycles) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string out = argc > 1 ? argv[1] : "build/bench/results.csv";
-  auto flag = [&](const std::string& f) {
-    for (int i = 2; i < argc; ++i)
-      if (f == argv[i]) return true;
-    return false;
-  };
-  const bool quick = flag("--quick");
-  const bool friction_only = flag("--friction");  // only the friction-law cost
-  const bool material_only = flag("--materials");  // only the material updates
-  const bool solver_only = flag("--solver");       // only the element-cycle costs (and the deck unless --quick)
-  // --bar-material NAME (bar_material()): only bar_1600 with that material, on 1 thread, nothing else.
-  std::string bar_mat;
-  for (int i = 2; i + 1 < argc; ++i)
-    if (std::string(argv[i]) == "--bar-material") bar_mat = argv[i + 1];
+  // 1. Options (--help lists them; an unknown option is an error, exit 2).
+  std::string out = "build/bench/results.csv", bar_mat;
+  bool quick = false, friction_only = false, material_only = false, solver_only = false;
+  Options opt("bench_solver", "make bench: the explicit solver's cost per element-cycle (ns), the material updates, "
+                              "the friction laws and the quick draw-bend deck on 1 and 2 threads");
+  opt.add(out, "out", "results CSV (its folder also gets friction_cost.csv and the deck's scratch runs)");
+  opt.add_flag(quick, "quick", "shorter runs, no 64,000-element bar and no deck timing");
+  opt.add_flag(friction_only, "friction", "only the friction-law cost");
+  opt.add_flag(material_only, "materials", "only the material updates");
+  opt.add_flag(solver_only, "solver", "only the element-cycle costs (and the deck unless --quick)");
+  opt.add(bar_mat, "bar-material",
+          "only the 1,600-element bar on 1 thread with this material: j2, split, chaboche, hill48 or hill48_chaboche");
+  try {
+    if (!opt.parse(argc, argv)) return 0;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "bench_solver: " << e.what() << "\n";
+    return 2;
+  }
+  if (out.empty()) out = "results.csv";
+  const std::filesystem::path dir = std::filesystem::path(out).has_parent_path() ? std::filesystem::path(out).parent_path() : ".";
+  try {  // before any timing: a bad folder fails now, not after minutes
+    std::filesystem::create_directories(dir);
+  } catch (const std::filesystem::filesystem_error& e) {
+    std::cerr << "bench_solver: --out " << out << ": " << e.what() << "\n";
+    return 2;
+  }
   struct Case {
     std::string name;
     fe::Model model;
@@ -163,7 +176,6 @@ int main(int argc, char** argv) {
       w.row({c.name, std::to_string(ne), std::to_string(threads), fmt(ns, 5)});
     }
   }
-  std::filesystem::create_directories(std::filesystem::path(out).parent_path());
   bool deck_ok = true;
   if (!bar_mat.empty()) {
     w.save(out);
@@ -171,7 +183,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (!friction_only && !material_only && !quick)
-    deck_ok = bench_deck((std::filesystem::path(out).parent_path() / "scratch").string(), w);
+    deck_ok = bench_deck((dir / "scratch").string(), w);
   if (solver_only) {
     w.save(out);
     std::cout << "written " << out << "\n";
@@ -179,7 +191,7 @@ int main(int argc, char** argv) {
   }
   if (!friction_only) bench_material(w, quick);
   if (!material_only) bench_friction(std::string(DRAWBEND_DATA_DIR) + "/cases/block_surface.toml",
-                 (std::filesystem::path(out).parent_path() / "friction_cost.csv").string(), w, quick);
+                 (dir / "friction_cost.csv").string(), w, quick);
   w.save(out);
   std::cout << "written " << out << "\n";
   return deck_ok ? 0 : 1;
