@@ -1,0 +1,203 @@
+// One ESAFORM 2021 cup: the deck data/cases/esaform2021_cup.toml with a material
+// variant, a mesh and a stroke set here; the measurements of the cup at the end.
+#include "v1_cup.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+#include "core/csv.hpp"
+#include "fe/mesh.hpp"
+#include "fe/solver.hpp"
+#include "io/deck.hpp"
+#include "io/run_case.hpp"
+
+namespace v1 {
+
+using namespace drawbend;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double sheet_volume(const fe::Mesh& mesh, const std::vector<double>& x, const std::vector<double>& y,
+                    const std::vector<double>& z) {
+  double v = 0;
+  for (const auto& h : mesh.hex) {
+    double ex[8], ey[8], ez[8];
+    for (int a = 0; a < 8; ++a) {
+      ex[a] = x[h[a]];
+      ey[a] = y[h[a]];
+      ez[a] = z[h[a]];
+    }
+    v += fe::hex_volume(ex, ey, ez);
+  }
+  return v;
+}
+
+toml::table deck_table(const std::string& deck, const Variant& var, const RunSpec& spec) {
+  toml::table root = toml::parse_file(deck);
+  auto* mesh = root["mesh"].as_table();
+  auto* mat = root["material"].as_table();
+  if (!mesh || !mat) throw InputError(deck + ": expected [mesh] and [material]");
+  mesh->insert_or_assign("core", int64_t{spec.core});
+  mesh->insert_or_assign("ring", int64_t{spec.ring});
+  mesh->insert_or_assign("through", int64_t{spec.through});
+  mat->insert_or_assign("type", var.type);
+  if (var.type == "hill48") {
+    toml::table h;
+    if (var.r0 > 0) {
+      h.insert("r0", var.r0);
+      h.insert("r45", var.r45);
+      h.insert("r90", var.r90);
+    } else {
+      h.insert("s45", var.s45);
+      h.insert("s90", var.s90);
+      h.insert("sb", var.sb);
+    }
+    mat->insert_or_assign("hill48", h);
+  }
+  return root;
+}
+
+}  // namespace
+
+CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec, const std::string& vtu) {
+  std::ostringstream text;
+  text << deck_table(deck, var, spec);
+  io::Deck d = io::parse_deck(text.str(), deck);
+  fe::Model& m = d.model;
+  if (m.steps.size() != 2) throw InputError(deck + ": expected two steps (settle, draw)");
+  fe::Tool* punch = nullptr;
+  for (auto& t : m.tools)
+    if (t.name == "punch") punch = &t;
+  if (!punch) throw InputError(deck + ": no tool named 'punch'");
+  // Mass scaling: the stroke in spec.cycles cycles.
+  const double dt = spec.stroke / spec.speed / static_cast<double>(spec.cycles);
+  m.target_dt = dt / m.dt_safety;
+  const double tr = 0.02 * static_cast<double>(spec.cycles) * dt;  // speed ramp over 2 % of the cycles
+  punch->speed = {{0.0, tr}, {0.0, spec.speed}};
+  m.steps[1].duration = spec.stroke / spec.speed + 0.5 * tr;
+  m.steps[0].duration = 200 * dt;
+  m.steps[0].damping = 1.0 / (50 * dt);
+  const fe::Mesh& mesh = m.mesh;
+  const double v0 = sheet_volume(mesh, mesh.x, mesh.y, mesh.z);
+  fe::Solver s(m);
+  s.run_step(0);
+  CupResult r;
+  r.elements = mesh.num_elements();
+  r.layers = spec.through;
+  const double z0 = s.tool_offset("punch")[2];
+  const long every = std::max(1L, spec.cycles / 300), tenth = std::max(1L, spec.cycles / 10);
+  const long c0 = s.cycles();
+  s.run_step(1, [&](const fe::Progress& p) {
+    const auto& e = s.energies();
+    if (e.internal > 0 && p.cycle - c0 > tenth) r.max_kinetic_ratio = std::max(r.max_kinetic_ratio, e.kinetic / e.internal);
+    if ((p.cycle - c0) % tenth == 0 && p.cycle > c0) {
+      std::ostringstream line;
+      line << "  cup " << var.id << ": " << 10 * ((p.cycle - c0) / tenth) << " % of " << spec.stroke
+           << " mm, punch force " << -4e-3 * s.tool_force("punch")[2] << " kN\n";
+      std::fputs(line.str().c_str(), stderr);
+    }
+    if (p.cycle % every) return;
+    r.curve.push_back({s.tool_offset("punch")[2] - z0, -4.0 * s.tool_force("punch")[2]});  // full blank
+  });
+  r.cycles = s.cycles();
+  const auto& e = s.energies();
+  r.kinetic_ratio = e.internal > 0 ? e.kinetic / e.internal : 0;
+  r.hourglass_ratio = e.internal > 0 ? e.hourglass / e.internal : 0;
+  r.balance_error = e.balance_error();
+  r.added_mass_ratio = s.added_mass() / s.physical_mass();
+  r.volume_ratio = sheet_volume(mesh, s.x(), s.y(), s.z()) / v0;
+  // Columns of nodes through the thickness, by reference plan position.
+  const double t = *std::max_element(mesh.z.begin(), mesh.z.end());
+  std::map<std::pair<long, long>, std::vector<int>> columns;
+  const auto key = [&](int i) {
+    return std::make_pair(std::lround(mesh.x[i] * 1e6), std::lround(mesh.y[i] * 1e6));
+  };
+  for (int i = 0; i < mesh.num_nodes(); ++i) columns[key(i)].push_back(i);
+  // The cup's outer bottom: the top face at the centre.
+  double z_bottom = -1e30;
+  for (int i : columns.at({0L, 0L})) z_bottom = std::max(z_bottom, s.z()[i]);
+  const double R = std::hypot(mesh.x[mesh.node_set("rim").front()], mesh.y[mesh.node_set("rim").front()]);
+  r.rim_z_min = 1e30;
+  for (const auto& [k, col] : columns) {
+    const int i0 = col.front();
+    const double rr = std::hypot(mesh.x[i0], mesh.y[i0]);
+    const double ang = std::atan2(mesh.y[i0], mesh.x[i0]) * 180.0 / kPi;
+    if (std::abs(rr - R) < 1e-6 * R) {  // rim column
+      double zm = 0;
+      for (int i : col) {
+        zm += s.z()[i] / static_cast<double>(col.size());
+        r.rim_r_max = std::max(r.rim_r_max, std::hypot(s.x()[i], s.y()[i]));
+        r.rim_z_min = std::min(r.rim_z_min, s.z()[i]);
+      }
+      r.height.push_back({ang, z_bottom - zm});
+    }
+    // Thickness lines along RD (y = 0), the 45-degree diagonal and TD (x = 0).
+    double line = -1;
+    if (std::abs(mesh.y[i0]) < 1e-9) line = 0;
+    else if (std::abs(mesh.x[i0]) < 1e-9) line = 90;
+    else if (std::abs(mesh.x[i0] - mesh.y[i0]) < 1e-9 * (1 + rr)) line = 45;
+    if (line < 0) continue;
+    int bot = col.front(), top = col.front();
+    for (int i : col) {
+      if (mesh.z[i] < mesh.z[bot]) bot = i;
+      if (mesh.z[i] > mesh.z[top]) top = i;
+    }
+    if (mesh.z[top] - mesh.z[bot] < 0.5 * t) throw std::runtime_error("v1: a node column without top and bottom");
+    const double mx = 0.5 * (s.x()[top] + s.x()[bot]), my = 0.5 * (s.y()[top] + s.y()[bot]);
+    r.thickness.push_back({line, rr, std::hypot(mx, my), 0.5 * (s.z()[top] + s.z()[bot]),
+                           std::sqrt(std::pow(s.x()[top] - s.x()[bot], 2) + std::pow(s.y()[top] - s.y()[bot], 2) +
+                                     std::pow(s.z()[top] - s.z()[bot], 2))});
+  }
+  std::sort(r.height.begin(), r.height.end());
+  std::sort(r.thickness.begin(), r.thickness.end());
+  if (!vtu.empty()) io::write_fields(s, vtu);
+  return r;
+}
+
+Extrema extrema(const std::vector<std::pair<double, double>>& h) {
+  Extrema x;
+  const std::size_t n = h.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    // Neighbours in the profile mirrored about 0 and 90 deg.
+    const double left = k == 0 ? h[1].second : h[k - 1].second;
+    const double right = k + 1 == n ? h[n - 2].second : h[k + 1].second;
+    const double v = h[k].second;
+    if (v > left && v > right) x.ears.push_back(h[k]);
+    if (v < left && v < right) x.troughs.push_back(h[k]);
+  }
+  return x;
+}
+
+double mesh_angular_error(const std::string& deck, const RunSpec& spec, double r) {
+  // The ring of the O-grid (src/fe/disk.hpp): line k runs straight from the k-th core boundary point to the arc
+  // point at k/(2n) x 90 deg.  Where does it cross radius r?
+  toml::table root = toml::parse_file(deck);
+  const double R = root["mesh"]["radius"].value_or(0.0), cf = root["mesh"]["core_fraction"].value_or(0.5);
+  const int n = spec.core;
+  const double a = cf * R;
+  std::vector<double> phi;
+  for (int k = 0; k <= 2 * n; ++k) {
+    const double px = k <= n ? a : a * (2 * n - k) / n, py = k <= n ? a * k / n : a;
+    const double th = 0.5 * kPi * k / (2 * n);
+    const double ax = R * std::cos(th), ay = R * std::sin(th);
+    double lo = 0, hi = 1;  // |P + s (A - P)| grows along the line
+    for (int it = 0; it < 100; ++it) {
+      const double sm = 0.5 * (lo + hi);
+      (std::hypot(px + sm * (ax - px), py + sm * (ay - py)) < r ? lo : hi) = sm;
+    }
+    phi.push_back(std::atan2(py + lo * (ay - py), px + lo * (ax - px)));
+  }
+  const double mean = 0.5 * kPi / (2 * n);
+  double err = 0;
+  for (std::size_t k = 1; k < phi.size(); ++k) err = std::max(err, std::abs((phi[k] - phi[k - 1]) / mean - 1));
+  return err;
+}
+
+}  // namespace v1

@@ -1,0 +1,57 @@
+#pragma once
+// One ESAFORM 2021 cup (chapter v1-earing-benchmark): draw a quarter blank
+// with a material variant and measure the cup.  Units: mm, N, MPa, s.
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace v1 {
+
+/// A material variant of data/benchmarks/esaform2021.csv.
+struct Variant {
+  std::string id, type, label;
+  double r0 = 0, r45 = 0, r90 = 0;  ///< r-values (hill48 from r-values), or 0
+  double s45 = 0, s90 = 0, sb = 0;  ///< yield-stress ratios to RD (hill48 from stresses), or 0
+};
+
+/// Mesh and loading of a run.
+struct RunSpec {
+  double stroke = 45.0;  ///< punch travel [mm]
+  long cycles = 60000;   ///< cycles over the stroke (sets the mass scaling: dt = stroke / speed / cycles)
+  double speed = 100.0;  ///< punch speed [mm/s] (rate-independent material and Coulomb friction: only dt x speed matters)
+  int core = 8, ring = 14, through = 3;  ///< quarter_disk element counts
+};
+
+struct CupResult {
+  std::vector<std::pair<double, double>> curve;  ///< (punch travel [mm], punch force of the full blank [N])
+  /// Per rim column: angle from RD [deg] (reference), cup height [mm] = outer bottom (top face at the centre)
+  /// minus the rim column's mean z.
+  std::vector<std::pair<double, double>> height;
+  /// Thickness lines at the end: angle (0, 45, 90), initial radius [mm], current radius [mm], current z [mm],
+  /// thickness [mm] (distance of the top node from the bottom node of the column).
+  std::vector<std::array<double, 5>> thickness;
+  double volume_ratio = 0;  ///< current volume / initial volume of the sheet
+  double kinetic_ratio = 0, max_kinetic_ratio = 0, hourglass_ratio = 0, balance_error = 0;
+  double added_mass_ratio = 0;
+  double rim_r_max = 0;  ///< largest radius of a rim node at the end [mm] (< 41.2: the flange has left the holder)
+  double rim_z_min = 0;  ///< lowest rim node at the end [mm]
+  long cycles = 0;
+  int elements = 0, layers = 0;
+};
+
+/// Draw the cup from `deck` with `variant`; writes the final fields to `vtu` when set.
+CupResult draw(const std::string& deck, const Variant& variant, const RunSpec& spec, const std::string& vtu);
+
+/// Ears (local maxima) and troughs (local minima) of a profile h(theta) on 0..90 deg mirrored about 0 and
+/// 90 deg (orthotropic symmetry): (angle, height) each.
+struct Extrema {
+  std::vector<std::pair<double, double>> ears, troughs;
+};
+Extrema extrema(const std::vector<std::pair<double, double>>& h);
+
+/// Relative departure of the quarter-disk mesh from polar symmetry: the largest |w_k / mean(w) - 1| of the
+/// angular widths w_k of the ring elements at reference radius r (before any run).
+double mesh_angular_error(const std::string& deck, const RunSpec& spec, double r);
+
+}  // namespace v1
