@@ -26,7 +26,7 @@ using namespace drawbend;
 namespace {
 
 int g_core = 6, g_ring = 10, g_through = 3;  // quarter_disk element counts
-double g_cycles = 60000;                     // cycles over the stroke
+double g_cycles = 150000;                    // cycles over the stroke
 double g_stroke = 50.0;                      // punch travel [mm]
 
 std::string fmt_list(const std::vector<std::pair<double, double>>& v) {
@@ -68,6 +68,7 @@ void body(study::Chapter& c) {
   const double e_mesh = v1::mesh_angular_error(deck, spec, r_mid);
   c.value("mesh_error_pct", fmt_fixed(100 * e_mesh, 2), "%");
   c.value("mesh_error_r", fmt_fixed(r_mid, 1), "mm");
+  const double r_min = std::min({hr.r0, hr.r45, hr.r90});  // the lowest published r-value
   const bool ears_at_axes = hr.r0 > hr.r45 && hr.r90 > hr.r45;  // what the r-values say
   c.value("r_rule", ears_at_axes ? "r0 and r90 above r45: ears at 0° and 90°, a trough at 45°"
                                  : "r45 not below both r0 and r90");
@@ -143,6 +144,19 @@ void body(study::Chapter& c) {
                      r.balance_error <= 0.05,
                      "work of the tools = internal + kinetic + hourglass + friction to within half the solver's "
                      "guard (10 %)");
+    // A fold (wrinkle) or a tear shows in the thickness lines.
+    double tmin = 1e30, tmax = 0;
+    for (const auto& q : r.thickness) tmin = std::min(tmin, q[4]), tmax = std::max(tmax, q[4]);
+    c.value(v.id + "_tmin", fmt_fixed(tmin, 3), "mm");
+    c.value(v.id + "_tmax", fmt_fixed(tmax, 3), "mm");
+    const double t_hi = std::pow(53.75 / 30.6, 1.0 / (1.0 + r_min));
+    c.checks().claim("v1.no_fold_no_tear." + v.id,
+                     "thickness along RD, 45 deg and TD between 0.5 and " + fmt_fixed(t_hi, 2) + " mm at the end (" +
+                         v.label + ")",
+                     tmin >= 0.5 && tmax <= t_hi,
+                     "pure hoop compression of the rim from r = 53.75 to 30.6 mm thickens it at most by (53.75 / "
+                     "30.6)^(1 / (1 + r_min)) with r_min = " + fmt(r_min) + " the lowest r-value; thinner than half "
+                     "the blank is a tear (a neck at the punch nose)");
     c.checks().claim("v1.flange_out." + v.id,
                      "every rim node inside r = 41.2 mm at the end: the flange has left the holder (" + v.label + ")",
                      r.rim_r_max < 41.2, "the benchmark's cup is drawn to the end of the stroke");
@@ -152,6 +166,13 @@ void body(study::Chapter& c) {
   const Sum& hs = sums.at("hill48_r");
   const double vm_rel = (vm.hmax - vm.hmin) / vm.mean;
   c.value("vm_earing_pct", fmt_fixed(100 * vm_rel, 2), "%");
+  {  // the mesh is mirror-symmetric about 45 deg: so must the von Mises cup be
+    const auto& hv = runs[idx.at("von_mises")].height;
+    double mirror = 0;
+    for (std::size_t k = 0; k < hv.size(); ++k)
+      mirror = std::max(mirror, std::abs(hv[k].second - hv[hv.size() - 1 - k].second));
+    c.value("vm_mirror", fmt_fixed(mirror, 3), "mm");
+  }
   c.checks().claim("v1.von_mises.earing_small",
                    "von Mises: (h_max - h_min) / h_mean below the mesh's angular error at the flange's mid radius",
                    vm_rel <= e_mesh,

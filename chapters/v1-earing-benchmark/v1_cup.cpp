@@ -92,15 +92,18 @@ CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec,
   r.elements = mesh.num_elements();
   r.layers = spec.through;
   const double z0 = s.tool_offset("punch")[2];
-  const long every = std::max(1L, spec.cycles / 300), tenth = std::max(1L, spec.cycles / 10);
+  const long every = std::max(1L, spec.cycles / 300);
   const long c0 = s.cycles();
+  int reported = 0;
   s.run_step(1, [&](const fe::Progress& p) {
     const auto& e = s.energies();
-    if (e.internal > 0 && p.cycle - c0 > tenth) r.max_kinetic_ratio = std::max(r.max_kinetic_ratio, e.kinetic / e.internal);
-    if ((p.cycle - c0) % tenth == 0 && p.cycle > c0) {
+    if (e.internal > 0 && p.step_time > 0.1 * m.steps[1].duration) r.max_kinetic_ratio = std::max(r.max_kinetic_ratio, e.kinetic / e.internal);
+    const int tenths = static_cast<int>(10.0 * p.step_time / m.steps[1].duration);
+    if (tenths > reported) {  // progress: one line per tenth of the stroke
+      reported = tenths;
       std::ostringstream line;
-      line << "  cup " << var.id << ": " << 10 * ((p.cycle - c0) / tenth) << " % of " << spec.stroke
-           << " mm, punch force " << -4e-3 * s.tool_force("punch")[2] << " kN\n";
+      line << "  cup " << var.id << ": " << 10 * tenths << " % of " << spec.stroke << " mm (cycle " << p.cycle - c0
+           << "), punch force " << -4e-3 * s.tool_force("punch")[2] << " kN\n";
       std::fputs(line.str().c_str(), stderr);
     }
     if (p.cycle % every) return;
