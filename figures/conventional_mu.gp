@@ -6,7 +6,7 @@ set title "Conventional friction coefficient, ".dir." strips"
 set xlabel "Pin diameter (mm)"
 set ylabel "μ by Eq. (5.1)"
 set xrange [8:46]
-set key below horizontal
+set key below horizontal center height 1.5 samplen 2  # clear of the x label
 set yrange [0:*]
 plot datafile using 1:2 with linespoints ls 1 title "6.35 mm/s", \
      ''       using 1:3 with linespoints ls 2 title "25.4 mm/s", \

@@ -5,7 +5,7 @@
 # fields for ParaView.
 # Variables: outfile, datafile (x_mm,y_mm,z_mm,plastic_strain,von_mises_MPa).
 load figdir."/common.gp"
-set terminal svg size 1080,520 dynamic enhanced font "Helvetica,13" background rgb "white"
+eval figterm(1080, 520, 13)
 set output outfile
 unset key
 unset grid

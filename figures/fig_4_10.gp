@@ -6,7 +6,7 @@ load figdir."/common.gp"
 set title "New method against the input Stribeck law (our FE maps and forces)"
 set xlabel "Contact pressure (MPa)"
 set ylabel "Friction coefficient μ"
-set key below horizontal
+set key below horizontal center height 1.5 samplen 2  # clear of the x label
 plot curvefile using 1:2 with lines ls 1 lw 3 title "input Stribeck (Table 3.3, 50 mm/s)", \
      curvefile using 1:3 with lines ls 3 dt 2 title "new method, 1st order", \
      curvefile using 1:4 with lines ls 2 title "new method, 2nd order", \

@@ -6,6 +6,6 @@ set title "Conventional μ from the Table 4.2 simulations"
 set xlabel "Pin diameter (mm)"
 set ylabel "μ by Eq. (2.3)"
 set xrange [8:46]
-set key below horizontal
+set key below horizontal center height 1.5 samplen 2  # clear of the x label
 set yrange [0:*]
 plot datafile using 1:7 with linespoints ls 1 title "Stribeck input (Table 3.3)"

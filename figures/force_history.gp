@@ -5,6 +5,6 @@ load figdir."/common.gp"
 set title title_text
 set xlabel "Time in the draw step (s)"
 set ylabel "Force, half model (N)"
-set key below horizontal
+set key below horizontal center height 1.5 samplen 2  # clear of the x label
 n = system("grep -v '^#' ".datafile." | head -1 | tr ',' '\\n' | wc -l") + 0
 plot for [k=2:n] datafile using 1:k with lines ls (k-1)

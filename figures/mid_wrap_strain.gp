@@ -6,6 +6,6 @@ set datafile missing ""
 set title "Outside strain where the strip is, against the slide, 12.7 mm pin, μ = 0.1"
 set xlabel "Slide in the draw step (mm)"
 set ylabel "Outside log strain"
-set key below horizontal
+set key below horizontal center height 1.5 samplen 2  # clear of the x label
 plot datafile using 1:2 with linespoints ls 1 title "section at mid-wrap", \
      datafile using 1:3 with linespoints ls 2 title "section at the exit tangent"

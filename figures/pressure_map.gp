@@ -2,7 +2,7 @@
 # angle round the pin x position across the half width, as a heat map.
 # Variables: outfile, gridfile (angle_deg,y_mm,pressure_MPa blocks), title_text.
 load figdir."/common.gp"
-set terminal svg size 720,360 dynamic enhanced font "Helvetica,14" background rgb "white"
+eval figterm(720, 360, 14)
 set output outfile
 unset key
 set title title_text

@@ -5,7 +5,7 @@ load figdir."/common.gp"
 set title "Strip-draw verification of the Stribeck law"
 set logscale x
 set format x "10^{%L}"
-set xlabel "Lubricant number L = vη/(p R_a)"
+set xlabel "Lubricant number L = vη/(p R_a)" enhanced
 set ylabel "μ"
 set yrange [0:0.12]
 set key top right

@@ -75,6 +75,15 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   job(s_ms, "ch2_frictionless_low_mass_scaling", "");
   job(s_fine, "ch2_frictionless_fine", "");
   job(s_fine, "ch2_coulomb_fine", coulomb);
+  // Contact-penalty variants of the mu = 0.1 run (chapter mesh): do the
+  // penalty stiffness and the pressure threshold move the contact arc's exit
+  // end (ch2.fe.contact_end)?  About 80 s each on the quick mesh.
+  const std::array<double, 2> penalty_scale{0.3, 3.0};
+  for (double k : penalty_scale) {
+    sim::DrawBendSpec sp = s;
+    sp.penalty = s.penalty * k;
+    job(sp, "ch2_coulomb_penalty_x" + fmt(k), coulomb);
+  }
   const std::vector<sim::DrawBendResult> all = sim::run_drawbend_all(jobs, o.reuse);  // side by side
   const sim::DrawBendResult &fr = all[0], &ff = all[1], &fm = all[2], &gf = all[3], &gr = all[4];
   c.value("fe_wall", fmt_fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count() / 60, 1),
@@ -86,12 +95,12 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("fe_ms", fmt(s.mass_scaling));
   c.value("fe_ms_low", fmt(s_ms.mass_scaling));
   c.value("fe_FX", fmt(s.back_tension), "N");
-  for (const auto* r : {&fr, &ff, &fm, &gf, &gr}) {
-    c.checks().claim("ch2.fe." + r->spec.name + ".energy", "energy balance error < 1 %, " + r->spec.name,
+  for (const auto* r : {&fr, &ff, &fm, &gf, &gr, &all[5], &all[6]}) {
+    c.checks().claim(study::Kind::health, "ch2.fe." + r->spec.name + ".energy", "energy balance error < 1 %, " + r->spec.name,
                      r->balance_error < 0.01, "balance error " + fmt(r->balance_error, 3));
-    c.checks().claim("ch2.fe." + r->spec.name + ".quasistatic", "kinetic/internal energy < 5 %, " + r->spec.name,
+    c.checks().claim(study::Kind::health, "ch2.fe." + r->spec.name + ".quasistatic", "kinetic/internal energy < 5 %, " + r->spec.name,
                      r->kinetic_ratio < 0.05, "KE/IE " + fmt(r->kinetic_ratio, 3));
-    c.checks().claim("ch2.fe." + r->spec.name + ".hourglass", "hourglass/internal energy < 5 %, " + r->spec.name,
+    c.checks().claim(study::Kind::health, "ch2.fe." + r->spec.name + ".hourglass", "hourglass/internal energy < 5 %, " + r->spec.name,
                      r->hourglass_ratio < 0.05, "HG/IE " + fmt(r->hourglass_ratio, 3));
   }
 
@@ -108,16 +117,58 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   const double threshold = 0.5;  // MPa: contact where the pressure exceeds this
   const sim::ContactArc arc = sim::contact_arc(centre, threshold);
   const double node_deg = s.element_length / (s.pin_diameter / 2) * 180 / M_PI;  // node spacing round the pin
+  const double node_deg_fine = s_fine.element_length / (s.pin_diameter / 2) * 180 / M_PI;
   const auto thesis_start = study::scalar(sc, "ch2_contact_start"), thesis_end = study::scalar(sc, "ch2_contact_end");
   const auto thesis_angle = study::scalar(sc, "ch2_contact_angle");
-  const std::string res = "one node spacing round the pin (" + fmt(node_deg, 3) + " deg at " + fmt(s.element_length) +
-                          " mm elements): the arc ends are interpolated between nodes";
-  c.checks().agree("ch2.fe.contact_start", "real contact start angle, centre row", thesis_start.value, arc.start_deg,
-                   node_deg, "deg", res);
-  c.checks().agree("ch2.fe.contact_end", "real contact end angle, centre row", thesis_end.value, arc.end_deg, node_deg,
-                   "deg", res);
-  c.checks().agree("ch2.fe.contact_angle", "real contact angle, centre row", thesis_angle.value, arc.angle(),
-                   2 * node_deg, "deg", "two node spacings: both ends interpolated");
+  // The arc is compared on the finer of our two meshes (the mu = 0.1 run at
+  // fe-fine-element-length).  Tolerance, stated before the run: the finer
+  // value's discretisation error, estimated as its change from the chapter
+  // mesh (at least half a node spacing of the finer mesh, since the ends are
+  // interpolated between nodes), plus half the thesis's last printed digit.
+  const sim::ContactArc arc_f = sim::contact_arc(sim::rows_of(gr.map).front(), threshold);
+  auto arc_tol = [&](double coarse, double fine, double half_ulp) {
+    return std::max(std::abs(coarse - fine), 0.5 * node_deg_fine) + half_ulp;
+  };
+  const std::string res = "finer mesh (" + fmt(s_fine.element_length) + " mm) against the thesis; tolerance: its " +
+                          "change from the " + fmt(s.element_length) + " mm mesh (at least half a node spacing, " +
+                          fmt(0.5 * node_deg_fine, 3) + " deg) + half the printed digit";
+  c.checks().agree(study::Kind::simulated, "ch2.fe.contact_start", "real contact start angle, centre row, finer mesh",
+                   thesis_start.value, arc_f.start_deg,
+                   arc_tol(arc.start_deg, arc_f.start_deg, thesis_start.half_ulp), "deg", res);
+  c.checks().agree(study::Kind::simulated, "ch2.fe.contact_end", "real contact end angle, centre row, finer mesh",
+                   thesis_end.value, arc_f.end_deg, arc_tol(arc.end_deg, arc_f.end_deg, thesis_end.half_ulp), "deg", res);
+  c.checks().agree(study::Kind::simulated, "ch2.fe.contact_angle", "real contact angle, centre row, finer mesh",
+                   thesis_angle.value, arc_f.angle(), arc_tol(arc.angle(), arc_f.angle(), thesis_angle.half_ulp), "deg",
+                   res);
+  // The disagreement's stated cause, tested: the contact arc against the
+  // pressure threshold (0.1-2 MPa) and the penalty (x0.3, x1, x3) on the chapter
+  // mesh, and against the mesh.
+  {
+    auto sens = c.table({"run", "penalty", "threshold_MPa", "start_deg", "end_deg", "arc_deg"},
+                        "contact arc of the centre row (mu = 0.1) against the pressure threshold, the contact "
+                        "penalty and the mesh");
+    const std::array<double, 4> thresholds{0.1, 0.5, 1.0, 2.0};
+    auto add = [&](const sim::DrawBendResult& r, const std::string& name) {
+      for (double th : thresholds) {
+        const auto a = sim::contact_arc(sim::rows_of(r.map).front(), th);
+        sens.row({name, fmt(r.spec.penalty), fmt(th), fmt_fixed(a.start_deg, 2), fmt_fixed(a.end_deg, 2),
+                  fmt_fixed(a.angle(), 2)});
+      }
+    };
+    add(fr, fr.spec.name);
+    add(gr, gr.spec.name);
+    for (std::size_t k = 0; k < penalty_scale.size(); ++k) add(all[5 + k], all[5 + k].spec.name);
+    c.save(sens, "contact_arc_sensitivity");
+    c.value("arc_end_penalty_soft", fmt_fixed(sim::contact_arc(sim::rows_of(all[5].map).front(), threshold).end_deg, 1),
+            "deg");
+    c.value("arc_end_penalty_stiff",
+            fmt_fixed(sim::contact_arc(sim::rows_of(all[6].map).front(), threshold).end_deg, 1), "deg");
+    c.value("arc_end_thr_0.1", fmt_fixed(sim::contact_arc(centre, 0.1).end_deg, 1), "deg");
+    c.value("arc_end_thr_2", fmt_fixed(sim::contact_arc(centre, 2.0).end_deg, 1), "deg");
+  }
+  c.value("arc_fine_start", fmt_fixed(arc_f.start_deg, 1), "deg");
+  c.value("arc_fine_end", fmt_fixed(arc_f.end_deg, 1), "deg");
+  c.value("arc_fine", fmt_fixed(arc_f.angle(), 1), "deg");
   c.value("arc_start", fmt_fixed(arc.start_deg, 1), "deg");
   c.value("arc_end", fmt_fixed(arc.end_deg, 1), "deg");
   c.value("arc", fmt_fixed(arc.angle(), 1), "deg");
@@ -132,19 +183,53 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("edge_middle", fmt_fixed(pe.middle, 1), "MPa");
   c.value("p_mean", fmt_fixed(fr.mean_pressure(), 1), "MPa");
   // Sec. 2.3.1: peaks at entry and exit above the mid-wrap pressure.
-  c.checks().claim("ch2.fe.entry_exit_peaks", "pressure peaks at entry and exit above mid-wrap (Sec. 2.3.1)",
+  c.checks().claim(study::Kind::simulated, "ch2.fe.entry_exit_peaks", "pressure peaks at entry and exit above mid-wrap (Sec. 2.3.1)",
                    pc.entry > pc.middle && pc.exit > pc.middle,
                    "entry " + fmt(pc.entry, 3) + ", mid " + fmt(pc.middle, 3) + ", exit " + fmt(pc.exit, 3) + " MPa");
-  // Sec. 2.3.1: the frictionless maximum pressure is 1.2 % below the mu = 0.1 one.
-  double pmax_r = 0, pmax_f = 0;
-  for (const auto& q : fr.map) pmax_r = std::max(pmax_r, q.pressure);
-  for (const auto& q : ff.map) pmax_f = std::max(pmax_f, q.pressure);
+  // Sec. 2.3.1 (Fig. 2.7): "the outlet side pressure peak is somewhat higher
+  // than the inlet side peak".  A claim on the centre row; it must hold on
+  // both meshes, or the mesh decides it.
+  const sim::Peaks pcf = sim::peaks(sim::rows_of(gr.map).front());
+  c.value("peak_entry_fine", fmt_fixed(pcf.entry, 1), "MPa");
+  c.value("peak_exit_fine", fmt_fixed(pcf.exit, 1), "MPa");
+  c.checks().claim(study::Kind::simulated, "ch2.fe.outlet_peak_above_inlet",
+                   "outlet pressure peak above the inlet peak, centre row, both meshes (Sec. 2.3.1, Fig. 2.7)",
+                   pc.exit > pc.entry && pcf.exit > pcf.entry,
+                   "exit/entry " + fmt(pc.exit, 3) + "/" + fmt(pc.entry, 3) + " MPa (" + fmt(s.element_length) +
+                       " mm), " + fmt(pcf.exit, 3) + "/" + fmt(pcf.entry, 3) + " MPa (" +
+                       fmt(s_fine.element_length) + " mm)");
+  // Sec. 2.3.1 (Fig. 2.8): "the strip edge deforms outward to become free of
+  // contact at the edge".  The edge row carries less than the contact
+  // threshold over the middle of the wrap (45 deg), on both meshes.
+  const sim::Peaks pef = sim::peaks(sim::rows_of(gr.map).back());
+  c.checks().claim(study::Kind::simulated, "ch2.fe.edge_free_of_contact",
+                   "strip edge free of contact at mid-wrap, both meshes (Sec. 2.3.1, Fig. 2.8)",
+                   pe.middle < threshold && pef.middle < threshold,
+                   "edge-row pressure at 45 deg " + fmt(pe.middle, 3) + " MPa (" + fmt(s.element_length) + " mm), " +
+                       fmt(pef.middle, 3) + " MPa (" + fmt(s_fine.element_length) + " mm); threshold " +
+                       fmt(threshold) + " MPa");
+  // Sec. 2.3.1: the frictionless maximum pressure is 1.2 % below the mu = 0.1
+  // one.  Compared on the finer mesh; tolerance (stated before the run): the
+  // change of the same difference between the two meshes, plus half the
+  // printed digit (0.05 %).  A single-node maximum is mesh-sensitive, so this
+  // tolerance may exceed the effect: then the check says so (it cannot claim
+  // the sign).
+  auto max_p = [](const std::vector<sim::MapNode>& m) {
+    double p = 0;
+    for (const auto& q : m) p = std::max(p, q.pressure);
+    return p;
+  };
+  const double pmax_r = max_p(fr.map), pmax_f = max_p(ff.map);
   const double dmax = 100 * (pmax_r - pmax_f) / pmax_r;
+  const double dmax_fine = 100 * (max_p(gr.map) - max_p(gf.map)) / max_p(gr.map);
+  const auto dmax_thesis = study::scalar(sc, "ch2_max_pressure_frictionless_diff");
   c.value("pmax_diff", fmt_fixed(dmax, 1), "%");
+  c.value("pmax_diff_fine", fmt_fixed(dmax_fine, 1), "%");
   c.value("pmax_coulomb", fmt_fixed(pmax_r, 1), "MPa");
-  c.checks().agree("ch2.fe.max_pressure_frictionless_diff", "max pressure, mu = 0.1 over frictionless, percent",
-                   study::scalar(sc, "ch2_max_pressure_frictionless_diff").value, dmax, 5.0, "%",
-                   "5 points: a single-node maximum at the map's resolution moves by several per cent between runs");
+  c.checks().agree(study::Kind::simulated, "ch2.fe.max_pressure_frictionless_diff",
+                   "max pressure, mu = 0.1 over frictionless, percent, finer mesh", dmax_thesis.value, dmax_fine,
+                   std::abs(dmax - dmax_fine) + dmax_thesis.half_ulp, "%",
+                   "change of the difference between the two meshes + half the printed digit");
 
   // 3. Strains of the tracked section (inside = contact side, outside = free side).
   auto st = c.table({"slide_mm", "strain_inside", "strain_outside"},
@@ -168,7 +253,27 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("eps_out_max", fmt_fixed(100 * eo_max, 2), "%");
   c.value("eps_in_min", fmt_fixed(100 * ei_min, 2), "%");
   c.value("eps_bend", fmt_fixed(100 * eb, 2), "%");
-  c.checks().claim("ch2.fe.outside_strain_above_bending", "peak outside strain above pure bending ln(1+t/(2R+t))",
+  // Sec. 2.3.2: the frictionless run has a 1.6 % higher maximum strain than
+  // the mu = 0.1 run.  Maximum outside strain of the tracked section over the
+  // draw, compared on the finer mesh; tolerance (stated before the run): the
+  // change of the same difference between the two meshes + half the printed
+  // digit (0.05 %).
+  auto max_outside = [](const sim::DrawBendResult& r) {
+    double m = 0;
+    for (const auto& row : r.history.rows)
+      if (r.history.text(row, "step") == "draw") m = std::max(m, r.history.number(row, "strain_outside"));
+    return m;
+  };
+  const double de = 100 * (max_outside(ff) - max_outside(fr)) / max_outside(fr);
+  const double de_fine = 100 * (max_outside(gf) - max_outside(gr)) / max_outside(gr);
+  const auto de_thesis = study::scalar(sc, "ch2_max_strain_frictionless_diff");
+  c.value("eps_diff", fmt_fixed(de, 2), "%");
+  c.value("eps_diff_fine", fmt_fixed(de_fine, 2), "%");
+  c.checks().agree(study::Kind::simulated, "ch2.fe.max_strain_frictionless_diff",
+                   "max outside strain, frictionless over mu = 0.1, percent, finer mesh (Sec. 2.3.2)", de_thesis.value,
+                   de_fine, std::abs(de - de_fine) + de_thesis.half_ulp, "%",
+                   "change of the difference between the two meshes + half the printed digit");
+  c.checks().claim(study::Kind::simulated, "ch2.fe.outside_strain_above_bending", "peak outside strain above pure bending ln(1+t/(2R+t))",
                    eo_max > eb, fmt(100 * eo_max, 3) + " % vs " + fmt(100 * eb, 3) + " %");
   // The steady state (Sec. 2.3.2: the strains reach a uniform distribution):
   // the whole wrap is steady once the strip leaving it, at the exit tangent,
@@ -189,6 +294,50 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   }
   c.save(mw, "mid_wrap_strain");
   c.plot("mid_wrap_strain", "fig_2_steady", {{"datafile", c.out("tables/mid_wrap_strain.csv")}});
+  // Fig. 2.13: the steady distribution of the outside strain along the strip,
+  // from upstream of the entry tangent (fraction < 0) to downstream of the exit
+  // (> 1): the last section to pass each place, at the end of the draw, on
+  // both meshes.  Only the outside surface is tracked by section.
+  {
+    auto sd = c.table({"position_mm", "fraction_of_wrap", "outside_strain", "outside_strain_fine"},
+                      "steady outside log strain along the strip at the end of the draw (mu = 0.1), position from "
+                      "the entry tangent along the strip (wrap length " + fmt(Lw, 4) + " mm)");
+    for (int k = -10; k <= 20; ++k) {
+      const double f = k / 10.0;
+      const auto a = fr.wrap_strain(f), b = gr.wrap_strain(f);
+      if (a.empty() || b.empty()) continue;
+      sd.row({fmt(f * Lw, 5), fmt(f, 3), fmt(a.back().second, 6), fmt(b.back().second, 6)});
+    }
+    c.save(sd, "steady_strain_distribution");
+    // Sec. 2.3.2 against Wilson et al. (1991): the strain rises at the inlet
+    // and stays "rather constant" in the contact, where Wilson assumed a
+    // linear rise from inlet to outlet.  A linear rise would put 60 % of the
+    // rise (upstream at -0.5 wrap to the middle) across the middle 60 % of the
+    // contact (0.2 to 0.8 of the wrap); the claim: less than a quarter there,
+    // on both meshes.
+    auto steady = [](const sim::DrawBendResult& r, double f) {
+      const auto e = r.wrap_strain(f);
+      return e.empty() ? NAN : e.back().second;
+    };
+    auto share = [&](const sim::DrawBendResult& r) {
+      double lo = 1e300, hi = -1e300;  // range over 0.2, 0.3, ..., 0.8 of the wrap
+      for (int k = 2; k <= 8; ++k) {
+        lo = std::min(lo, steady(r, k / 10.0));
+        hi = std::max(hi, steady(r, k / 10.0));
+      }
+      return (hi - lo) / std::abs(steady(r, 0.5) - steady(r, -0.5));
+    };
+    const double sh = share(fr), sh_f = share(gr);
+    c.value("wilson_share", fmt_fixed(100 * sh, 1), "%");
+    c.value("wilson_share_fine", fmt_fixed(100 * sh_f, 1), "%");
+    c.checks().claim(study::Kind::simulated, "ch2.fe.strain_constant_in_contact",
+                     "steady outside strain ranges over 0.2-0.8 of the wrap by < 1/4 of its rise to mid-wrap, both "
+                     "meshes (Sec. 2.3.2, against Wilson's linear rise)",
+                     sh < 0.25 && sh_f < 0.25,
+                     fmt(100 * sh, 3) + " % and " + fmt(100 * sh_f, 3) + " % of the rise; a linear rise gives 60 %");
+    c.plot("strain_distribution", "fig_2_13", {{"datafile", c.out("tables/steady_strain_distribution.csv")},
+                                               {"wrapfile", fmt(Lw, 5)}});
+  }
   c.value("d_steady_mid", fmt_fixed(d_mid, 1), "mm");
   c.value("ratio_steady_mid", fmt_fixed(d_mid / Lw, 2));
   c.value("wrap_length", fmt_fixed(Lw, 1), "mm");
@@ -196,11 +345,11 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("d_steady_strain", fmt_fixed(d_strain, 1), "mm");
   c.value("ratio_steady_strain", fmt_fixed(d_strain / Lw, 2));
   c.value("ratio_steady_force", fmt_fixed(d_force / Lw, 2));
-  c.checks().agree("ch2.fe.steady_ratio", "slide to steady strain / wrap length (Sec. 2.3.2)",
+  c.checks().agree(study::Kind::simulated, "ch2.fe.steady_ratio", "slide to steady strain / wrap length (Sec. 2.3.2)",
                    study::scalar(sc, "ch2_steady_ratio").value, d_strain / Lw, 0.3, "-",
                    "0.3: sections one element length apart (0.09 of the wrap at 1 mm) and the 2 % band, "
                    "where the thesis read its plots");
-  c.checks().claim("ch2.fe.steady_before_window", "outlet force steady before the last third that is averaged",
+  c.checks().claim(study::Kind::health, "ch2.fe.steady_before_window", "outlet force steady before the last third that is averaged",
                    d_force < (2.0 / 3.0) * sim::draw_length(s),
                    fmt(d_force, 3) + " mm of " + fmt(sim::draw_length(s), 3));
 
@@ -218,9 +367,9 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("mu_ours_reg", fmt_fixed(mu_reg, 4));
   c.value("FY_coulomb", fmt_fixed(fr.F_out, 1), "N");
   const auto fb_lo = study::scalar(sc, "ch2_sim_bending_force_min"), fb_hi = study::scalar(sc, "ch2_sim_bending_force_max");
-  c.checks().agree("ch2.fe.FB", "bending force F_B, frictionless (Sec. 2.3.3)", 0.5 * (fb_lo.value + fb_hi.value), FB,
+  c.checks().agree(study::Kind::simulated, "ch2.fe.FB", "bending force F_B, frictionless (Sec. 2.3.3)", 0.5 * (fb_lo.value + fb_hi.value), FB,
                    0.5 * (fb_hi.value - fb_lo.value), "N", "the thesis's own range of simulated values");
-  c.checks().agree("ch2.fe.mu_retrieved", "mu retrieved by Eq. (2.3), input 0.1 (Sec. 2.3.3)",
+  c.checks().agree(study::Kind::simulated, "ch2.fe.mu_retrieved", "mu retrieved by Eq. (2.3), input 0.1 (Sec. 2.3.3)",
                    study::scalar(sc, "ch2_mu_retrieved").value, mu, 0.005, "-",
                    "5 % of the input: the retrieval error is the bending reactions' normal force, which depends on "
                    "bending stiffness at entry and exit");
@@ -240,7 +389,7 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   const double d_ms = 100 * (FB - FB_ms) / FB_ms;
   c.value("FB_low_ms", fmt_fixed(FB_ms, 1), "N");
   c.value("ms_diff", fmt_fixed(d_ms, 2), "%");
-  c.checks().claim("ch2.fe.mass_scaling_invariant", "F_B changes < 2 % between the two mass scalings (Fig. 2.5)",
+  c.checks().claim(study::Kind::simulated, "ch2.fe.mass_scaling_invariant", "F_B changes < 2 % between the two mass scalings (Fig. 2.5)",
                    std::abs(d_ms) < 2.0, fmt(d_ms, 3) + " %");
   auto conv = c.table({"element_length_mm", "F_B_N", "mu_eq_2_3", "p_max_MPa", "contact_arc_deg"},
                       "mesh convergence, 12.7 mm pin (half model)");

@@ -32,6 +32,7 @@ void drawbend_pins(study::Chapter& c, const StribeckParams& s33, const sim::Draw
   const double mu_c = study::scalar(sc, "ch3_coulomb_mu_input").value;
   const double w_half = study::scalar(sc, "ch5_strip_width").value / 2;
   const double t = study::scalar(sc, "ch5_strip_thickness").value;
+  const auto ret_lo = study::scalar(sc, "ch3_coulomb_retrieval_min"), ret_hi = study::scalar(sc, "ch3_coulomb_retrieval_max");
   const CsvTable t51 = read_csv(c.data("thesis/table_5_1.csv"));
   const double ys = t51.number(t51.rows.front(), "YS02_MPa");  // RD
   const std::vector<double> pins{study::scalar(sc, "ch3_pin_diameter_small").value,
@@ -74,9 +75,9 @@ void drawbend_pins(study::Chapter& c, const StribeckParams& s33, const sim::Draw
     for (int k = 0; k < 3; ++k) {
       const sim::DrawBendSpec& s = res[k].spec;
       const std::string rid = "ch3.fe.d" + fmt(D) + "." + laws[k];
-      c.checks().claim(rid + ".energy", "energy balance error < 1 %, " + s.name, res[k].balance_error < 0.01,
+      c.checks().claim(study::Kind::health, rid + ".energy", "energy balance error < 1 %, " + s.name, res[k].balance_error < 0.01,
                        "balance error " + fmt(res[k].balance_error, 3));
-      c.checks().claim(rid + ".quasistatic", "kinetic/internal energy < 5 % (quasi-static), " + s.name,
+      c.checks().claim(study::Kind::health, rid + ".quasistatic", "kinetic/internal energy < 5 % (quasi-static), " + s.name,
                        res[k].kinetic_ratio < 0.05, "KE/IE " + fmt(res[k].kinetic_ratio, 3));
     }
     const double FB = res[0].tension_rise();
@@ -100,14 +101,18 @@ void drawbend_pins(study::Chapter& c, const StribeckParams& s33, const sim::Draw
     c.value("db_muc_d" + d, fmt_fixed(mu_cc, 4));
     c.value("db_mus_d" + d, fmt_fixed(mu_ss, 4));
     c.value("db_retrieved_d" + d, fmt_fixed(100 * mu_cc / mu_c, 1), "%");
-    // Sec. 3.5.2: "the input friction coefficient of 0.1 was well retrieved (95 to 97%)".
-    c.checks().agree("ch3.fe.d" + d + ".coulomb_retrieved", "Coulomb mu retrieved by Eq. (2.3), percent of input, pin " + d + " mm",
-                     96.0, 100 * mu_cc / mu_c, 5.0, "%",
-                     "thesis 95-97 %; +-5 points: the bending reactions at entry and exit add normal force the rope "
-                     "formula ignores, and depend on mesh and contact stiffness");
+    // Sec. 3.5.2: "the input friction coefficient of 0.1 was well retrieved (95
+    // to 97%)".  Tolerance from the thesis's own numbers (stated before the
+    // run): the printed range over its three pins, 95-97 %, widened by half a
+    // printed unit at each end.
+    c.checks().agree(study::Kind::simulated, "ch3.fe.d" + d + ".coulomb_retrieved",
+                     "Coulomb mu retrieved by Eq. (2.3), percent of input, pin " + d + " mm",
+                     0.5 * (ret_lo.value + ret_hi.value), 100 * mu_cc / mu_c,
+                     0.5 * (ret_hi.value - ret_lo.value) + ret_lo.half_ulp, "%",
+                     "the thesis's printed range 95-97 % over its pins + half a printed unit");
     // Fig. 3.14: the retrieved Stribeck mu "comes close to the coefficient based
     // on the Stribeck curve" at the test's average pressure and speed.
-    c.checks().agree("ch3.fe.d" + d + ".stribeck_vs_curve", "Stribeck mu by Eq. (2.3) vs the input curve at P_avg, pin " + d + " mm",
+    c.checks().agree(study::Kind::simulated, "ch3.fe.d" + d + ".stribeck_vs_curve", "Stribeck mu by Eq. (2.3) vs the input curve at P_avg, pin " + d + " mm",
                      mu_curve, mu_ss, 0.15 * mu_curve, "-",
                      "15 %: Fig. 3.14 shows the retrieved values near, not on, the curve; the pressure peaks raise them");
     for (int k = 0; k < 3; ++k) {
@@ -130,11 +135,11 @@ void drawbend_pins(study::Chapter& c, const StribeckParams& s33, const sim::Draw
   c.value("db_wall", fmt_fixed(wall / 60.0, 1), "min");
   auto falls = [](const std::vector<double>& x) { return x[0] > x[1] && x[1] > x[2]; };
   auto rises = [](const std::vector<double>& x) { return x[0] < x[1] && x[1] < x[2]; };
-  c.checks().claim("ch3.fe.stribeck_mu_falls", "Stribeck mu by Eq. (2.3) falls with pin diameter (Fig. 3.13)",
+  c.checks().claim(study::Kind::simulated, "ch3.fe.stribeck_mu_falls", "Stribeck mu by Eq. (2.3) falls with pin diameter (Fig. 3.13)",
                    falls(mu_s_ret), fmt(mu_s_ret[0], 4) + ", " + fmt(mu_s_ret[1], 4) + ", " + fmt(mu_s_ret[2], 4));
-  c.checks().claim("ch3.fe.contact_arc_grows", "real contact angle grows with pin diameter (Sec. 3.5.3)", rises(arc),
+  c.checks().claim(study::Kind::simulated, "ch3.fe.contact_arc_grows", "real contact angle grows with pin diameter (Sec. 3.5.3)", rises(arc),
                    fmt(arc[0], 3) + ", " + fmt(arc[1], 3) + ", " + fmt(arc[2], 3) + " deg");
-  c.checks().claim("ch3.fe.pressure_evens_out", "peak/mean pressure falls with pin diameter (Sec. 3.5.3)",
+  c.checks().claim(study::Kind::simulated, "ch3.fe.pressure_evens_out", "peak/mean pressure falls with pin diameter (Sec. 3.5.3)",
                    falls(peak_ratio), fmt(peak_ratio[0], 3) + ", " + fmt(peak_ratio[1], 3) + ", " + fmt(peak_ratio[2], 3));
 }
 

@@ -130,7 +130,7 @@ void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const Cs
     const double err = (r.mu - mu_in) / mu_in;
     worst = std::max(worst, std::abs(err));
     const std::string id = t32.text(row, "case");
-    c.checks().agree("ch3.strip_draw.case" + id + ".mu", "strip-draw mu vs Eq. (3.2), case " + id + " (Fig. 3.8)",
+    c.checks().agree(study::Kind::verification, "ch3.strip_draw.case" + id + ".mu", "strip-draw mu vs Eq. (3.2), case " + id + " (Fig. 3.8)",
                      mu_in, r.mu, 0.02 * mu_in, "-",
                      "steady sliding at uniform pressure: 2 % for explicit dynamics and penalty contact");
     w.row({id, fmt(p), fmt(v), fmt(L, 4), fmt_fixed(mu_in, 5), fmt_fixed(r.mu, 5), fmt_fixed(100 * err, 2),

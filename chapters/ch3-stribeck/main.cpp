@@ -81,20 +81,15 @@ void body(study::Chapter& c) {
           {"pointfile", c.out("tables/drawbend_condition.csv")}});
 
   // 5. Checks.
-  c.checks().claim("ch3.T3.2.spans_transition",
-                   "Table 3.2 cases span both transitions: min L < L_BL and max L > L_EHL (Sec. 3.3.3)",
-                   Lmin < s31.L_BL && Lmax > s31.L_EHL, "lubricant numbers by Eq. (3.1)");
-  c.checks().claim("ch3.mu_falls_with_speed", "mu increases with decreasing velocity (Sec. 3.3.2)",
-                   stribeck_mu(1.0, 10.0, s31) > stribeck_mu(10.0, 10.0, s31), "Eq. (3.2) at 1 and 10 mm/s, 10 MPa");
+  // Properties of the input tables alone (Table 3.2 spans both transitions,
+  // mu falls with speed on the Table 3.1 curve, Tables 3.1 and 3.3 differ only
+  // in mu_BL) are data-file tests (tests/unit/test_thesis_tables.cpp), not
+  // checks of the thesis: they cannot fail while the files stay as printed.
   const auto frac = study::scalar(c.data("thesis/scalars.csv"), "ch3_stribeck_interval_fraction");
   const double steps = study::scalar(c.data("thesis/scalars.csv"), "ch3_total_steps").value;
   const double interval = study::scalar(c.data("thesis/scalars.csv"), "ch3_stribeck_interval_steps").value;
   c.checks().rederive("ch3.interval_fraction", "update interval / total steps, percent (Sec. 3.3.2)", frac.value,
                       100.0 * interval / steps, frac.half_ulp, "%", "printed to 0.01 %: half a unit in the last place");
-  c.checks().claim("ch3.T3.1_T3.3_same_regime_bounds", "Tables 3.1 and 3.3 differ only in mu_BL (Sec. 3.5.1)",
-                   s31.mu_EHL == s33.mu_EHL && s31.L_BL == s33.L_BL && s31.L_EHL == s33.L_EHL &&
-                       s31.Ra_um == s33.Ra_um && s31.eta_Pa_s == s33.eta_Pa_s && s31.mu_BL != s33.mu_BL,
-                   "parameter by parameter comparison");
 
   // 6. The solver.
   ch3::strip_draw(c, s31, t32);

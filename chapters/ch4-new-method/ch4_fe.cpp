@@ -23,6 +23,7 @@
 #include "analysis/pressure_ratio.hpp"
 #include "analysis/rope.hpp"
 #include "analysis/stribeck.hpp"
+#include "material/swift_fit.hpp"
 #include "ch4_steps.hpp"
 #include "sim/case_pool.hpp"
 #include "sim/map_tools.hpp"
@@ -81,7 +82,31 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     s.friction = "{ law = \"stribeck\", table = \"" + c.data("thesis/table_3_3.csv") + "\", interval = 100 }";
     jobs.push_back({s, c.out("runs/" + s.name)});
   }
+  // The stated cause of ch4.fe.d42.FB (the low-strain part of the flow curve),
+  // tested: the 42 mm frictionless run again on the alternative Swift fit that
+  // takes the 0.2 % yield stress at eps_p = 0.002 (fit_swift(..., 0.002): an
+  // initial yield about 8 % lower, under 1 % change beyond eps_p = 0.05).
+  {
+    const CsvTable t51 = read_csv(c.data("thesis/table_5_1.csv"));
+    const auto& rd = t51.rows.front();
+    const material::SwiftLaw alt =
+        material::fit_swift(t51.number(rd, "YS02_MPa"), t51.number(rd, "UTS_MPa"), t51.number(rd, "n"), 0.002);
+    CsvWriter w({"plastic_strain", "true_stress_MPa"});
+    w.comment("AA5754-O RD, Swift fit with the 0.2 % yield stress at eps_p = 0.002 (fit_swift(..., 0.002)): K = " +
+              fmt(alt.K, 10) + " MPa, eps0 = " + fmt(alt.eps0, 10) + ", n = " + fmt(alt.n));
+    w.comment("units: plastic_strain: -; true_stress_MPa: MPa");
+    for (double e : material::swift_table_strains())
+      w.row({fmt(e, 6), fmt_fixed(alt.stress(e), material::swift_table_stress_decimals)});
+    const std::string path = c.out("tables/aa5754_o_rd_swift_eps_y_0.002.csv");
+    w.save(path);
+    sim::DrawBendSpec s = jobs[jobs.size() - 2].spec;  // the 42 mm frictionless run
+    s.hardening = std::filesystem::absolute(path).string();  // the deck resolves relative paths from its own dir
+    s.name += "_swift_eps_y_0.002";
+    jobs.push_back({s, c.out("runs/" + s.name)});
+  }
   std::vector<sim::DrawBendResult> all = sim::run_drawbend_all(jobs, o.reuse);
+  const sim::DrawBendResult alt42 = std::move(all.back());
+  all.pop_back();
   std::vector<PinRuns> runs;
   for (std::size_t i = 0; i + 1 < all.size(); i += 2) {
     PinRuns r;
@@ -92,6 +117,20 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   c.value("fe_wall", fmt_fixed(wall / 60.0, 1), "min");
+  {
+    const double fb_base = runs.back().free.tension_rise(), fb_alt = alt42.tension_rise();
+    const double fb_thesis = t41.number(t41.rows.back(), "FB_N");
+    c.value("FB_d42_alt", fmt_fixed(fb_alt, 1), "N");
+    c.value("FB_d42_alt_change", fmt_fixed(100 * (fb_alt - fb_base) / fb_base, 1), "%");
+    c.value("FB_d42_alt_vs_thesis", fmt_fixed(100 * (fb_alt - fb_thesis) / fb_thesis, 1), "%");
+    const std::string rid = "ch4.fe.d42.frictionless_swift_eps_y_0.002";
+    c.checks().claim(study::Kind::health, rid + ".energy", "energy balance error < 1 %, " + alt42.spec.name,
+                     alt42.balance_error < 0.01, "balance error " + fmt(alt42.balance_error, 3));
+    c.checks().claim(study::Kind::health, rid + ".quasistatic", "kinetic/internal energy < 5 % at the end, " + alt42.spec.name,
+                     alt42.kinetic_ratio < 0.05, "KE/IE " + fmt(alt42.kinetic_ratio, 3));
+    c.checks().claim(study::Kind::health, rid + ".hourglass", "hourglass/internal energy < 5 %, " + alt42.spec.name,
+                     alt42.hourglass_ratio < 0.05, "HG/IE " + fmt(alt42.hourglass_ratio, 3));
+  }
   c.value("fe_speed", fmt(v), "mm/s");
   c.value("fe_h", fmt(o.base.element_length), "mm");
   c.value("fe_across", std::to_string(o.base.across));
@@ -119,15 +158,20 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     // F_B: our flow curve is a Swift fit to the NGTC tensile data (Table 5.1);
     // the thesis's input curve is not printed, and F_B scales with the flow
     // stress at the bending strain (about 8 % on the 12.7 mm pin).
-    c.checks().agree(id + ".FB", "T4.1 bending force F_B, pin " + d + " mm", t41.number(a, "FB_N"), FB.back(),
+    c.checks().agree(study::Kind::simulated, id + ".FB", "T4.1 bending force F_B, pin " + d + " mm", t41.number(a, "FB_N"), FB.back(),
                      0.10 * t41.number(a, "FB_N"), "N",
                      "10 %: different hardening input (Swift fit of Table 5.1) and code (H3DMAP vs ours)");
-    c.checks().agree(id + ".FT", "T4.2 friction force F_T, pin " + d + " mm", t42.number(b, "FT_N"), FT.back(),
+    c.checks().agree(study::Kind::simulated, id + ".FT", "T4.2 friction force F_T, pin " + d + " mm", t42.number(b, "FT_N"), FT.back(),
                      0.15 * t42.number(b, "FT_N"), "N",
                      "15 %: F_T is a difference of forces, and mu(p) of Table 3.3 weighs the pressure peaks, "
                      "which depend on mesh and contact algorithm");
-    c.checks().agree(id + ".c", "T4.2 pressure ratio c, pin " + d + " mm", t42.number(b, "c"), cs.back(), 0.01, "-",
-                     "0.01: c - 1 is a few per cent; F_T's tolerance moves c by up to 0.007");
+    // c: with F_X = F_X' (the same back tension), c - 1 = F_T/(F_X' + F_Y')
+    // exactly, so c carries F_T's relative uncertainty on c - 1 only (stated
+    // before the run): 15 % of the thesis's c - 1, plus half its printed digit.
+    const auto c_printed = study::printed(t42, b, "c");
+    c.checks().agree(study::Kind::simulated, id + ".c", "T4.2 pressure ratio c, pin " + d + " mm", c_printed.value,
+                     cs.back(), 0.15 * (c_printed.value - 1) + c_printed.half_ulp, "-",
+                     "c - 1 = F_T/(F_X'+F_Y'): F_T's 15 % on c - 1, + half the printed digit");
     tab.row({d, fmt_fixed(FXp, 1), t41.text(a, "FY_prime_N"), fmt_fixed(FYp, 1), t41.text(a, "FB_N"),
              fmt_fixed(FB.back(), 1), t42.text(b, "FY_N"), fmt_fixed(FY, 1), t42.text(b, "FT_N"),
              fmt_fixed(FT.back(), 1), t42.text(b, "c"), fmt_fixed(cs.back(), 4), fmt_fixed(mu_conv.back(), 4),
@@ -139,11 +183,11 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     // Quasi-static invariants of the runs (printed by each run, checked here).
     for (const auto* x : {&r.free, &r.strib}) {
       const std::string rid = id + (x == &r.free ? ".frictionless" : ".stribeck");
-      c.checks().claim(rid + ".energy", "energy balance error < 1 %, " + x->spec.name, x->balance_error < 0.01,
+      c.checks().claim(study::Kind::health, rid + ".energy", "energy balance error < 1 %, " + x->spec.name, x->balance_error < 0.01,
                        "balance error " + fmt(x->balance_error, 3));
-      c.checks().claim(rid + ".quasistatic", "kinetic/internal energy < 5 % at the end (the usual quasi-static limit), " + x->spec.name,
+      c.checks().claim(study::Kind::health, rid + ".quasistatic", "kinetic/internal energy < 5 % at the end (the usual quasi-static limit), " + x->spec.name,
                        x->kinetic_ratio < 0.05, "KE/IE " + fmt(x->kinetic_ratio, 3));
-      c.checks().claim(rid + ".hourglass", "hourglass/internal energy < 5 %, " + x->spec.name,
+      c.checks().claim(study::Kind::health, rid + ".hourglass", "hourglass/internal energy < 5 %, " + x->spec.name,
                        x->hourglass_ratio < 0.05, "HG/IE " + fmt(x->hourglass_ratio, 3));
     }
     PinTest pt;
@@ -156,10 +200,10 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   // Trends the chapter states: F_B, F_T and c fall as the pin grows (Tables
   // 4.1/4.2) and so does the conventional mu (Fig. 4.9, Sec. 4.3).
   auto falls = [](const std::vector<double>& x) { return x[0] > x[1] && x[1] > x[2]; };
-  c.checks().claim("ch4.fe.FB_falls", "F_B falls with pin diameter (Table 4.1)", falls(FB), "ours");
-  c.checks().claim("ch4.fe.FT_falls", "F_T falls with pin diameter (Table 4.2)", falls(FT), "ours");
-  c.checks().claim("ch4.fe.c_falls", "c falls with pin diameter (Table 4.2)", falls(cs), "ours");
-  c.checks().claim("ch4.fe.mu_conv_falls", "conventional mu falls with pin diameter (Fig. 4.9)", falls(mu_conv),
+  c.checks().claim(study::Kind::simulated, "ch4.fe.FB_falls", "F_B falls with pin diameter (Table 4.1)", falls(FB), "ours");
+  c.checks().claim(study::Kind::simulated, "ch4.fe.FT_falls", "F_T falls with pin diameter (Table 4.2)", falls(FT), "ours");
+  c.checks().claim(study::Kind::simulated, "ch4.fe.c_falls", "c falls with pin diameter (Table 4.2)", falls(cs), "ours");
+  c.checks().claim(study::Kind::simulated, "ch4.fe.mu_conv_falls", "conventional mu falls with pin diameter (Fig. 4.9)", falls(mu_conv),
                    "ours: " + fmt(mu_conv[0], 4) + ", " + fmt(mu_conv[1], 4) + ", " + fmt(mu_conv[2], 4));
 
   // 3. Maps, profiles, histories.  The frictionless maps are also exported in
@@ -229,13 +273,13 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("n2_cond", fmt(n2.condition, 3));
   // Sec. 4.4: "The new method well predicted the input Stribeck friction curve
   // in the range from 0 MPa to 40 MPa": within 5 % of the input there.
-  c.checks().claim("ch4.fe.new_method_0_40", "new method (2nd order) within 5 % of the input over 0-40 MPa (Sec. 4.4)",
+  c.checks().claim(study::Kind::simulated, "ch4.fe.new_method_0_40", "new method (2nd order) within 5 % of the input over 0-40 MPa (Sec. 4.4)",
                    err_lo < 0.05, "largest relative error " + fmt(100 * err_lo, 3) + " %");
   // Sec. 4.4: "the conventional method overestimates the friction coefficients":
   // mu_conv above the input mu at its own average pressure, every pin.
   bool over = true;
   for (std::size_t i = 0; i < runs.size(); ++i) over = over && mu_conv[i] > stribeck_mu(v, P_avg[i], law);
-  c.checks().claim("ch4.fe.conventional_overestimates", "conventional mu above the input mu at P_avg, all pins (Fig. 4.10)",
+  c.checks().claim(study::Kind::simulated, "ch4.fe.conventional_overestimates", "conventional mu above the input mu at P_avg, all pins (Fig. 4.10)",
                    over, "ours");
 
   // 5. Contact area per pressure range, all pins (Fig. 4.11: 12.7 mm pin).
@@ -259,9 +303,13 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   for (std::size_t k = 0; k < edges.size(); ++k) (edges[k] >= p_split ? above : total) += areas[0][k];
   total += above;
   c.value("area_above_split", fmt_fixed(100 * above / std::max(total, 1e-12), 1), "%");
-  // Sec. 4.4: "Pressures over 40 MPa exist only at small areas of 12.7 mm pin".
-  c.checks().claim("ch4.fe.small_area_above_40", "area above 40 MPa < 10 % of the 12.7 mm pin's contact (Sec. 4.4)",
-                   above < 0.10 * total, fmt(100 * above / std::max(total, 1e-12), 3) + " %");
+  // Sec. 4.4: "Pressures over 40 MPa exist only at small areas of 12.7 mm pin":
+  // some area above 40 MPa, but less than 10 % of the contact.  A map without
+  // any area above 40 MPa does not test the claim and fails it.
+  c.checks().claim(study::Kind::simulated, "ch4.fe.small_area_above_40",
+                   "some, but under 10 %, of the 12.7 mm pin's contact above 40 MPa (Sec. 4.4)",
+                   above > 0 && above < 0.10 * total,
+                   fmt(100 * above / std::max(total, 1e-12), 3) + " % above 40 MPa");
 }
 
 }  // namespace ch4

@@ -141,11 +141,11 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
       cpu += r.wall_seconds;
       const std::string id = "ch5.fe." + r.spec.name;
       // Quasi-static invariants of each run.
-      c.checks().claim(id + ".energy", "energy balance error < 1 %, " + r.spec.name, r.balance_error < 0.01,
+      c.checks().claim(study::Kind::health, id + ".energy", "energy balance error < 1 %, " + r.spec.name, r.balance_error < 0.01,
                        "balance error " + fmt(r.balance_error, 3) + "; 1 %: the usual explicit-dynamics limit");
-      c.checks().claim(id + ".quasistatic", "kinetic/internal energy < 5 % at the end, " + r.spec.name,
+      c.checks().claim(study::Kind::health, id + ".quasistatic", "kinetic/internal energy < 5 % at the end, " + r.spec.name,
                        r.kinetic_ratio < 0.05, "KE/IE " + fmt(r.kinetic_ratio, 3) + "; 5 %: the usual quasi-static limit");
-      c.checks().claim(id + ".hourglass", "hourglass/internal energy < 5 %, " + r.spec.name,
+      c.checks().claim(study::Kind::health, id + ".hourglass", "hourglass/internal energy < 5 %, " + r.spec.name,
                        r.hourglass_ratio < 0.05, "HG/IE " + fmt(r.hourglass_ratio, 3) + "; 5 %: the usual limit");
       if (variant == "base") {
         const std::string d = fmt(pin);
@@ -157,6 +157,29 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
       }
     }
   c.save(tab, "fe_runs");
+  // Figs. 5.12-5.14: the bending force of the rotating-pin tests against the
+  // back tension (Table 5.3's fit over its printed range, full strip) with
+  // our frictionless run at the back tension of Table 5.13 beside it.
+  for (const auto& [pin, r] : m.runs.at("base")) {
+    const auto& fit = study::find_fit(in.bending, "RD", 0.0, pin);
+    const std::string d = fmt(pin);
+    auto line = c.table({"F_back_N", "F_bend_T5.3_N"}, "Table 5.3 bending-force fit, RD, pin " + d +
+                                                           " mm, over its printed back-tension range (full strip, N)");
+    const double lo = fit.range ? fit.range->lo : in.back_tension(pin) - 100, hi = fit.range ? fit.range->hi : lo + 200;
+    for (int k = 0; k <= 10; ++k) {
+      const double fb = lo + (hi - lo) * k / 10.0;
+      line.row({fmt(fb, 6), fmt(fit.fit()(fb), 6)});
+    }
+    c.save(line, "bending_fit_d" + d);
+    auto pt = c.table({"F_back_N", "F_B_ours_N"}, "our frictionless run, pin " + d + " mm (full strip, N)");
+    pt.row({fmt(2 * r.F_back, 6), fmt(2 * r.tension_rise(), 6)});
+    c.save(pt, "bending_ours_d" + d);
+    const std::string fig = pin < 20 ? "fig_5_12" : pin < 30 ? "fig_5_13" : "fig_5_14";
+    c.plot("bending_force", fig,
+           {{"linefile", c.out("tables/bending_fit_d" + d + ".csv")},
+            {"pointfile", c.out("tables/bending_ours_d" + d + ".csv")},
+            {"title_text", "Bending force, " + d + " mm pin, RD (Fig. " + fig.substr(4, 1) + "." + fig.substr(6) + ")"}});
+  }
   c.value("fe_wall", fmt_fixed(m.wall_s / 60.0, 1), "min");
   c.value("fe_run_wall_sum", fmt_fixed(cpu / 60.0, 1), "min");
   c.value("fe_runs", std::to_string([&] {

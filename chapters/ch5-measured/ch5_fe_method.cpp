@@ -26,31 +26,27 @@ namespace {
 
 const std::vector<double> kTwoPins{12.7, 25.4};
 
-/// The map's pressures scaled by (1 + d) and areas by 1/(1 + d): the same
-/// normal force S1, a second moment S2 (and pressure-weighted mean S2/S1)
-/// larger by (1 + d): a "peakier" map.
-PressureMap peakier(PressureMap m, double d) {
-  for (double& p : m.p_MPa) p *= 1 + d;
-  for (double& a : m.area_mm2) a /= 1 + d;
-  return m;
-}
-
 /// Tolerance of our a0, a1 against Table 5.16, set from the reason before any
-/// comparison: the thesis's maps (H3DMAP, edge-refined mesh, multilinear RD
-/// curve) and ours (our penalty contact, 2 uniform elements across, Swift fit)
-/// share the normal force, which equilibrium fixes, but may differ in how
-/// peaked they are.  We allow each pin's S2/S1 to differ by 10 % independently
-/// and propagate to first order, plus half a unit of the printed digit.
-std::array<double, 2> map_tolerance(const std::vector<PinTest>& tests, const Polynomial& mu, double d,
-                                    const Printed& a0, const Printed& a1) {
+/// comparison: the printed inputs carry rounding (each pin's c of Table 5.15
+/// and F_T of Table 5.14 to their last printed digit), propagated to first
+/// order through the new method, plus half a unit of the printed a0, a1.  The
+/// maps are what is tested: the thesis's maps are not printed and the map
+/// moments that its own Table 5.16 implies differ from ours by tens of per
+/// cent (ch5_fe_sensitivity), so no map agreement is assumed in the
+/// tolerance (an earlier version allowed each map's S2/S1 10 %, a premise the
+/// implied moments contradict).  A miss is a documented disagreement.
+std::array<double, 2> input_tolerance(const std::vector<PinTest>& tests, const std::vector<double>& c_half_ulp,
+                                      const std::vector<double>& f_half_ulp, const Polynomial& mu, const Printed& a0,
+                                      const Printed& a1) {
   std::array<double, 2> tol{a0.half_ulp, a1.half_ulp};
-  for (std::size_t j = 0; j < tests.size(); ++j) {
-    auto t = tests;
-    t[j].map = peakier(t[j].map, d);
-    const Polynomial q = solve_new_method(t, 1).mu;
-    tol[0] += std::abs(q.a[0] - mu.a[0]);
-    tol[1] += std::abs(q.a[1] - mu.a[1]);
-  }
+  for (std::size_t j = 0; j < tests.size(); ++j)
+    for (int which = 0; which < 2; ++which) {
+      auto t = tests;
+      (which == 0 ? t[j].c : t[j].friction_force_N) += which == 0 ? c_half_ulp[j] : f_half_ulp[j];
+      const Polynomial q = solve_new_method(t, 1).mu;
+      tol[0] += std::abs(q.a[0] - mu.a[0]);
+      tol[1] += std::abs(q.a[1] - mu.a[1]);
+    }
   return tol;
 }
 
@@ -86,14 +82,13 @@ void save_surface(Chapter& c, const std::vector<SpeedLine>& lines, double p_max,
 
 void diluted_new_method(Chapter& c, const Inputs& in, const FeMaps& m) {
   const double p_max = study::scalar(c.data("thesis/scalars.csv"), "ch6_p_max").value;  // 80 MPa
-  const double d_map = 0.10;  // see map_tolerance
-  c.value("tol_map_percent", fmt(100 * d_map), "%");
   auto tab = c.table({"direction", "speed_mm_s", "a0_T5.16", "a0_ours", "a0_tol", "a1_T5.16_per_MPa", "a1_ours_per_MPa",
                       "a1_tol_per_MPa", "c1", "c2", "F1_N", "F2_N", "condition"},
                      "Table 5.16 and ours: mu(p) = a0 + a1 p [p in MPa] by the new method on our maps, "
-                     "12.7/25.4 mm pins, Table 5.14 forces and Table 5.15 c (full strip); tolerance: 10 % "
-                     "independent change of each map's S2/S1 plus half a printed unit");
+                     "12.7/25.4 mm pins, Table 5.14 forces and Table 5.15 c (full strip); tolerance: rounding of "
+                     "the printed inputs propagated plus half a printed unit");
   std::map<std::string, std::vector<SpeedLine>> ours;
+  int t516_agree = 0;
   for (const char* dir : kDirs) {
     std::vector<SpeedLine> printed;
     for (double v : kSpeeds) {
@@ -103,17 +98,24 @@ void diluted_new_method(Chapter& c, const Inputs& in, const FeMaps& m) {
       for (const auto& l : in.lines)
         if (l.direction == dir && study::same(l.speed_mm_s, v)) L = &l;
       if (!L) throw InputError("Table 5.16: no line for " + std::string(dir) + " at " + fmt(v) + " mm/s");
-      const auto tol = map_tolerance(tests, r.mu, d_map, L->a0, L->a1);
+      std::vector<double> c_ulp, f_ulp;
+      for (double pin : kTwoPins) {
+        c_ulp.push_back(study::find_case(in.c_diluted, dir, v, pin).value.half_ulp);
+        f_ulp.push_back(study::find_case(in.ffric_diluted, dir, v, pin).value.half_ulp);
+      }
+      const auto tol = input_tolerance(tests, c_ulp, f_ulp, r.mu, L->a0, L->a1);
       const std::string id = "ch5.fe.T5.16." + std::string(dir) + ".v" + fmt(v);
-      // A re-derivation of the printed line from its printed inputs (Tables
-      // 5.14, 5.15) with our maps in place of the thesis's unprinted ones, so
-      // that a disagreement whose cause is shown can be documented in errata.csv.
-      const std::string why = "map differences between codes: each pin's S2/S1 +-10 % (mesh, contact, hardening "
-                              "input), propagated, + half a printed unit";
-      c.checks().rederive(id + ".a0", "T5.16 a0 from our maps, " + std::string(dir) + " " + fmt(v) + " mm/s",
-                       L->a0.value, r.mu.a[0], tol[0], "-", why);
-      c.checks().rederive(id + ".a1", "T5.16 a1 from our maps, " + std::string(dir) + " " + fmt(v) + " mm/s",
-                       L->a1.value, r.mu.a[1], tol[1], "1/MPa", why);
+      // Our maps in place of the thesis's unprinted ones, with the thesis's
+      // measured inputs (Tables 5.14, 5.15): a comparison of our simulations
+      // with a thesis result, so a miss is a disagreement, never an erratum.
+      const std::string why = "rounding of the printed inputs (Tables 5.14, 5.15) propagated + half a printed unit; "
+                              "no map agreement assumed";
+      t516_agree += c.checks().agree(study::Kind::simulated, id + ".a0",
+                       "T5.16 a0 from our maps, " + std::string(dir) + " " + fmt(v) + " mm/s", L->a0.value, r.mu.a[0],
+                       tol[0], "-", why).status == study::Status::pass;
+      t516_agree += c.checks().agree(study::Kind::simulated, id + ".a1",
+                       "T5.16 a1 from our maps, " + std::string(dir) + " " + fmt(v) + " mm/s", L->a1.value, r.mu.a[1],
+                       tol[1], "1/MPa", why).status == study::Status::pass;
       tab.row({dir, fmt(v), L->a0.text, fmt_fixed(r.mu.a[0], 4), fmt_fixed(tol[0], 4), L->a1.text,
                fmt_fixed(r.mu.a[1], 5), fmt_fixed(tol[1], 5), fmt_fixed(tests[0].c, 3), fmt_fixed(tests[1].c, 3),
                fmt(tests[0].friction_force_N), fmt(tests[1].friction_force_N), fmt(r.condition, 3)});
@@ -143,17 +145,18 @@ void diluted_new_method(Chapter& c, const Inputs& in, const FeMaps& m) {
                  rd ? "fig_5_28_fe" : "fig_5_29_fe", std::string(dir) + " (our maps)");
     // Sec. 5.9.1: the lines flatten with speed, now on our lines.
     const auto& L = ours[dir];
-    c.checks().claim("ch5.fe." + std::string(dir) + ".slope_falls_with_speed",
+    c.checks().claim(study::Kind::simulated, "ch5.fe." + std::string(dir) + ".slope_falls_with_speed",
                      std::string("a1 from our maps decreases with speed, ") + dir + " (Sec. 5.9.1)",
                      L[0].mu.a[1] > L[1].mu.a[1] && L[1].mu.a[1] > L[2].mu.a[1], "order of our slopes");
   }
+  c.value("t516_agree", std::to_string(t516_agree));
   c.save(tab, "table_5_16_fe");
   // Sec. 5.9.1: RD above TD -- at the lowest speed, where the thesis's lines
   // differ most, at the mean contact pressure of each pin's map.
   for (double pin : kTwoPins) {
     const double p = m.run("base", pin).mean_pressure();
     const double rd = ours["RD"][0].mu(p), td = ours["TD"][0].mu(p);
-    c.checks().claim("ch5.fe.RD_above_TD.v6.35.d" + fmt(pin),
+    c.checks().claim(study::Kind::simulated, "ch5.fe.RD_above_TD.v6.35.d" + fmt(pin),
                      "mu_RD > mu_TD from our maps at 6.35 mm/s, at the mean pressure of the " + fmt(pin) +
                          " mm pin (Sec. 5.9.1)",
                      rd > td, "mu_RD " + fmt(rd, 4) + ", mu_TD " + fmt(td, 4) + " at " + fmt(p, 3) + " MPa");
@@ -197,7 +200,7 @@ void undiluted_new_method(Chapter& c, const Inputs& in, const FeMaps& m) {
     const double p = m.run("base", pin).mean_pressure();
     falls = falls && lines[0].mu(p) > lines[1].mu(p) && lines[1].mu(p) > lines[2].mu(p);
   }
-  c.checks().claim("ch5.fe.undiluted.mu_falls_with_speed",
+  c.checks().claim(study::Kind::simulated, "ch5.fe.undiluted.mu_falls_with_speed",
                    "undiluted mu from our maps falls with speed at each pin's mean pressure (Fig. 5.30, Table 5.17)",
                    falls, "order of our mu(p) at the maps' mean pressures");
 }

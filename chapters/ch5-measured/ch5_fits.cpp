@@ -162,10 +162,10 @@ void conventional_mu(Chapter& c, const Inputs& in) {
       const std::string k = std::string(dir) + ".v" + fmt(v);
       dec += mu[key(dir, v, 12.7)] > mu[key(dir, v, 25.4)];
       brk += mu[key(dir, v, 42)] > mu[key(dir, v, 25.4)];
-      c.checks().claim("ch5.conv.decreases_12.7_to_25.4." + k,
+      c.checks().claim(study::Kind::rederived, "ch5.conv.decreases_12.7_to_25.4." + k,
                        std::string("mu(12.7 mm) > mu(25.4 mm), ") + dir + " " + fmt(v) + " mm/s (Sec. 5.6)",
                        mu[key(dir, v, 12.7)] > mu[key(dir, v, 25.4)], "sign of a difference of Eq. (5.1) values");
-      c.checks().claim("ch5.conv.42mm_breaks_trend." + k,
+      c.checks().claim(study::Kind::rederived, "ch5.conv.42mm_breaks_trend." + k,
                        std::string("mu(42 mm) > mu(25.4 mm), ") + dir + " " + fmt(v) + " mm/s (Sec. 5.6, Fig. 5.21)",
                        mu[key(dir, v, 42)] > mu[key(dir, v, 25.4)], "sign of a difference of Eq. (5.1) values");
     }
@@ -174,7 +174,7 @@ void conventional_mu(Chapter& c, const Inputs& in) {
   for (double v : kSpeeds)
     for (double pin : kPins) {
       rdtd += mu[key("RD", v, pin)] > mu[key("TD", v, pin)];
-      c.checks().claim("ch5.conv.RD_above_TD.v" + fmt(v) + ".d" + fmt(pin),
+      c.checks().claim(study::Kind::rederived, "ch5.conv.RD_above_TD.v" + fmt(v) + ".d" + fmt(pin),
                        "mu_RD > mu_TD at " + fmt(v) + " mm/s, " + fmt(pin) + " mm pin (Sec. 5.9.1)",
                        mu[key("RD", v, pin)] > mu[key("TD", v, pin)], "sign of a difference of Eq. (5.1) values");
     }

@@ -86,7 +86,7 @@ std::map<double, Excess> analyse_ratio_table(Chapter& ch, const std::vector<Rati
       bound = std::max(bound, u);
     }
     const bool consistent = dev <= bound;
-    ch.checks().claim("ch5." + name + ".constant_excess.d" + fmt(pin),
+    ch.checks().claim(study::Kind::rederived, "ch5." + name + ".constant_excess.d" + fmt(pin),
                       table + ": printed c = Eq. (2.2) with rotating-pin force raised by one constant, " + fmt(pin) +
                           " mm pin",
                       consistent, "spread of implied excess within the rounding of c to 0.001");
@@ -134,7 +134,7 @@ void pressure_ratio_definitions(Chapter& c, const Inputs& in) {
   for (const auto& [pin, a] : e15) {
     const auto it = e18.find(pin);
     if (it == e18.end()) continue;
-    c.checks().claim("ch5.c_excess_same_in_T5.15_T5.18.d" + fmt(pin),
+    c.checks().claim(study::Kind::rederived, "ch5.c_excess_same_in_T5.15_T5.18.d" + fmt(pin),
                      "Tables 5.15 and 5.18 imply the same rotating-pin force excess, " + fmt(pin) + " mm pin",
                      std::abs(a.mean - it->second.mean) <= a.bound + it->second.bound,
                      "difference of the mean excesses within the sum of their rounding bounds");
@@ -168,7 +168,7 @@ void undiluted(Chapter& c, const Inputs& in) {
   for (double v : kSpeeds) {
     const double gap_u = und[key("RD", v, 42)] - und[key("RD", v, 25.4)];
     const double gap_d = dil[key("RD", v, 42)] - dil[key("RD", v, 25.4)];
-    c.checks().claim("ch5.undiluted.42mm_increase_reduced.v" + fmt(v),
+    c.checks().claim(study::Kind::rederived, "ch5.undiluted.42mm_increase_reduced.v" + fmt(v),
                      "42 mm excess over 25.4 mm reduced by undiluted lubricant, RD " + fmt(v) + " mm/s (Sec. 5.8)",
                      gap_d > 0 ? gap_u < gap_d : gap_u <= 0,
                      "signs of Eq. (5.1) differences at the Table 5.13 back tensions");

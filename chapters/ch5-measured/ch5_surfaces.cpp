@@ -48,7 +48,7 @@ void friction_lines_and_surfaces(Chapter& c, const Inputs& in) {
 
     // Sec. 5.9.1: "At higher sliding speeds the friction coefficients become
     // more pressure independent": the slope a1 falls with speed.
-    c.checks().claim(std::string("ch5.T5.16.") + dir + ".slope_falls_with_speed",
+    c.checks().claim(study::Kind::rederived, std::string("ch5.T5.16.") + dir + ".slope_falls_with_speed",
                      std::string("a1 decreases with speed, ") + dir + " (Sec. 5.9.1)",
                      lines[0].mu.a[1] > lines[1].mu.a[1] && lines[1].mu.a[1] > lines[2].mu.a[1],
                      "order of printed slopes");
@@ -59,7 +59,7 @@ void friction_lines_and_surfaces(Chapter& c, const Inputs& in) {
   const auto rd = lines_of(in, "RD"), td = lines_of(in, "TD");
   double gap[3];
   for (int k = 0; k < 3; ++k) gap[k] = std::abs(rd[k].mu(40) - td[k].mu(40));
-  c.checks().claim("ch5.T5.16.RD_TD_gap_falls_with_speed", "|mu_RD - mu_TD| at 40 MPa falls with speed (Sec. 5.9.1)",
+  c.checks().claim(study::Kind::rederived, "ch5.T5.16.RD_TD_gap_falls_with_speed", "|mu_RD - mu_TD| at 40 MPa falls with speed (Sec. 5.9.1)",
                    gap[0] > gap[1] && gap[1] > gap[2], "values of Table 5.16 lines at 40 MPa");
   // "In general" is read as: over most of the (p, v) domain of the surfaces.
   const FrictionSurface Srd = surface_from_lines(rd, 0.0, p_max), Std = surface_from_lines(td, 0.0, p_max);
@@ -70,7 +70,7 @@ void friction_lines_and_surfaces(Chapter& c, const Inputs& in) {
       above += Srd(p, v) > Std(p, v);
     }
   const double fraction = static_cast<double>(above) / total;
-  c.checks().claim("ch5.T5.16.RD_above_TD_in_general", "mu_RD > mu_TD over most of the (p, v) domain (Sec. 5.9.1)",
+  c.checks().claim(study::Kind::rederived, "ch5.T5.16.RD_above_TD_in_general", "mu_RD > mu_TD over most of the (p, v) domain (Sec. 5.9.1)",
                    fraction > 0.5, "share of an 81 x 81 grid of the surfaces where RD > TD");
   c.value("rd_above_td_percent", fmt_fixed(100.0 * fraction, 0), "%");
   // Where the RD and TD lines cross, and how well the printed digits fix it:

@@ -102,7 +102,7 @@ void block_sliding(study::Chapter& c) {
         worst_case = dir + ", " + fmt(p) + "\u00a0MPa, " + fmt(v) + "\u00a0mm/s";
       }
       const std::string id = "ch6.block." + dir + ".p" + fmt(p) + ".v" + fmt(v);
-      c.checks().agree(id, "block sliding mu_" + std::string(rd ? "x" : "y") + " vs input surface, " + dir + " " +
+      c.checks().agree(study::Kind::verification, id, "block sliding mu_" + std::string(rd ? "x" : "y") + " vs input surface, " + dir + " " +
                                fmt(p) + " MPa " + fmt(v) + " mm/s (T6." + (rd ? "2" : "3") + ")",
                        mu_in, mu, tol * mu_in, "-", reason);
       w.row({dir, fmt(p), fmt(v), fmt_fixed(mu_in, 5), fmt_fixed(mu, 5), fmt_fixed(cross, 6), fmt_fixed(100 * err, 3),
@@ -146,9 +146,9 @@ void block_sliding(study::Chapter& c) {
     worst_d = std::max(worst_d, std::abs(err));
     worst_angle = std::max(worst_angle, std::abs(ang - a));
     const std::string id = "ch6.block.dir" + fmt(a);
-    c.checks().agree(id + ".mu_x", "block sliding mu_x vs ellipse, " + fmt(a) + " deg (T6.4)", mx, r.mu_x, tol * mu, "-",
+    c.checks().agree(study::Kind::verification, id + ".mu_x", "block sliding mu_x vs ellipse, " + fmt(a) + " deg (T6.4)", mx, r.mu_x, tol * mu, "-",
                      reason + " (of |mu|)");
-    c.checks().agree(id + ".mu_y", "block sliding mu_y vs ellipse, " + fmt(a) + " deg (T6.4)", my, r.mu_y, tol * mu, "-",
+    c.checks().agree(study::Kind::verification, id + ".mu_y", "block sliding mu_y vs ellipse, " + fmt(a) + " deg (T6.4)", my, r.mu_y, tol * mu, "-",
                      reason + " (of |mu|)");
     d.row({fmt(a), fmt(p64), fmt(v64), fmt_fixed(mx, 5), fmt_fixed(my, 5), fmt_fixed(r.mu_x, 5), fmt_fixed(r.mu_y, 5),
            fmt_fixed(100 * err, 3), fmt_fixed(ang, 3)});

@@ -33,11 +33,14 @@ struct CupResult {
 };
 /// Draw a cup from `deck_path` at punch speed [mm/s] over `stroke` [mm] in `cycles`
 /// cycles; optional mesh refinement factor; writes a VTU snapshot at the end when `vtu` is set.
+/// `material`: the deck's [material] replaced by this choice (sim/material_spec.hpp: an inline
+/// table of [material] keys or a TOML file); empty: the deck's own (isotropic J2, Table 5.1 RD).
 CupResult draw_cup(const std::string& deck_path, double speed, double stroke, long cycles, const std::string& vtu,
-                   int refine = 1);
+                   int refine = 1, const std::string& material = "");
 /// Punch force at displacement d by linear interpolation (NaN beyond the curve).
 double force_at(const CupResult& r, double d);
 /// Sec. 6.6: the cup-drawing cases (coarse cases 1 and 9 by default; all nine, finer, with `full`).
 /// `cases`: comma-separated Table 6.5 case ids to run instead (must hold case 1 and the last case).
-void cup_drawing(drawbend::study::Chapter& c, bool full, const std::string& cases = "");
+/// `material`: as for draw_cup (the page then names it).
+void cup_drawing(drawbend::study::Chapter& c, bool full, const std::string& cases = "", const std::string& material = "");
 }  // namespace ch6

@@ -13,9 +13,9 @@ using drawbend::study::Chapter;
 
 struct Config {
   std::string maps_dir;   ///< FE maps (empty: analytic stand-in, not FE)
-  int null_seeds = 5;     ///< null data sets per noise level
-  int effect_seeds = 1;   ///< data sets per hidden effect and noise level
-  int permutations = 999;
+  int null_seeds = 10;    ///< null data sets per noise level
+  int effect_seeds = 5;   ///< data sets per hidden effect and noise level
+  int permutations = 20000;  ///< cap of the sequential permutation test
 };
 
 struct Thesis {

@@ -1,10 +1,12 @@
-// Chapter 7 step 7 (demonstration 3): synthetic data with undeclared effects.
-// Every data set has the same design; the loop runs with the same options on
-// all of them and is never told what was hidden.  A planted effect counts as
-// detected when the loop's first step names one of the truth's variables
-// (truth.aliases: e.g. a per-pin factor may be named by pin, pin diameter, 1/R
-// or pin Ra, which the design confounds).  A null set is a false alarm when
-// the loop adds any effect.
+// Chapter 7 step 8 (demonstration 3): synthetic data with undeclared effects.
+// Every data set has the same design and the same decoy columns (coil,
+// temperature_C, humidity_pct, test_order, pin_Ra_um); the loop runs with the
+// same options on all of them and is never told what was hidden.  A planted
+// effect counts as detected when the loop's first step names one of the
+// truth's variables (truth.aliases: e.g. a per-pin factor may be named by pin,
+// pin diameter, 1/R or pin Ra, which the design confounds) AND the final
+// held-out RMS is within 2x the true noise sd.  A null set is a false alarm
+// when the loop adds any effect.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -21,17 +23,17 @@ using namespace drawbend::loop;
 void synthetic_detection(Chapter& c, const Config& cfg) {
   const MapLibrary maps = cfg.maps_dir.empty() ? MapLibrary::stand_in({12.7, 25.4, 42}) : MapLibrary::load_dir(cfg.maps_dir);
   const double noises[3] = {2, 5, 10};
-  auto w = c.table({"effect", "noise_N", "seed", "truth_variable", "steps", "detected", "wrong_steps", "flagged",
-                    "rms_base_N", "rms_final_N", "final_over_noise"},
+  auto w = c.table({"effect", "noise_N", "seed", "truth_variable", "steps", "detected", "wrong_steps",
+                    "noise_estimate_N", "at_noise_level", "rms_base_N", "rms_final_N", "final_over_noise"},
                    "demonstration 3: the loop on synthetic data (hidden law in truth, not given to the loop); "
-                   "held-out RMS of the outlet force in N; flagged = screened variables reported without an effect");
+                   "held-out RMS of the outlet force in N; final_over_noise against the true noise sd; "
+                   "noise_estimate_N the loop's replicate-noise estimate (within-test scatter)");
   struct Sum {
-    int sets = 0, detected = 0, wrong = 0, flagged = 0, null_alarm = 0;
-    double worst_ratio = 0;
+    int sets = 0, detected = 0, wrong = 0, at_noise = 0, null_alarm = 0;
+    double worst_ratio = 0, noise_err = 0, noise_rel = 0;
   };
   std::map<std::pair<std::string, double>, Sum> sum;
   Sum all_eff, all_null;
-  size_t n_rows = 0;
   LoopOptions o;
   o.permutations = cfg.permutations;
   for (double noise : noises)
@@ -42,10 +44,9 @@ void synthetic_detection(Chapter& c, const Config& cfg) {
         SynthOptions so;
         so.effect = effect;
         so.noise_N = noise;
-        so.seed = 1000 + 17 * k + static_cast<int>(noise);
+        so.seed = 1000 + 17 * k + static_cast<int>(noise) + (null ? 500 : 0);
         SynthTruth truth;
         const Dataset data = synthesize(so, maps, truth);
-        n_rows = data.rows.size();
         const Design d = make_design(data, maps);
         const LoopResult r = run_loop(d, o);
         std::string steps;
@@ -54,20 +55,25 @@ void synthetic_detection(Chapter& c, const Config& cfg) {
           steps += (steps.empty() ? "" : "; ") + s.variable + " -> " + s.effect;
           wrong += std::find(truth.aliases.begin(), truth.aliases.end(), s.variable) == truth.aliases.end();
         }
+        const double ratio = r.cv.back().rms / noise;
         const bool detected = !null && !r.steps.empty() &&
                               std::find(truth.aliases.begin(), truth.aliases.end(), r.steps[0].variable) !=
-                                  truth.aliases.end();
-        const double ratio = r.cv.back().rms / noise;
+                                  truth.aliases.end() &&
+                              ratio <= 2.0;
         w.row({effect, fmt(noise), std::to_string(so.seed), truth.variable, steps.empty() ? "none" : steps,
-               null ? "-" : (detected ? "yes" : "no"), std::to_string(wrong), std::to_string(r.unexplained.size()),
-               fmt(r.cv.front().rms, 4), fmt(r.cv.back().rms, 4), fmt(ratio, 3)});
+               null ? "-" : (detected ? "yes" : "no"), std::to_string(wrong), fmt(r.noise.sigma_N, 4),
+               r.at_noise ? "yes" : "no", fmt(r.cv.front().rms, 4), fmt(r.cv.back().rms, 4), fmt(ratio, 3)});
         Sum& s = sum[{effect, noise}];
         Sum& a = null ? all_null : all_eff;
         for (Sum* t : {&s, &a}) {
           t->sets++;
           t->detected += detected;
           t->wrong += wrong;
-          t->flagged += !r.unexplained.empty();
+          t->at_noise += r.at_noise;
+          // error of the noise estimate in units of its own standard error,
+          // 1/sqrt(2 dof) relative (dof = sum over tests of n - rank)
+          t->noise_err = std::max(t->noise_err, std::abs(r.noise.sigma_N / noise - 1) * std::sqrt(2 * r.noise.dof));
+          t->noise_rel = std::max(t->noise_rel, std::abs(r.noise.sigma_N / noise - 1));
           t->null_alarm += null && !r.steps.empty();
           if (detected || null) t->worst_ratio = std::max(t->worst_ratio, ratio);
         }
@@ -82,43 +88,47 @@ void synthetic_detection(Chapter& c, const Config& cfg) {
       }
     }
   c.save(w, "synth_runs");
-  auto t = c.table({"effect", "noise_N", "sets", "detected", "wrong_steps", "sets_flagged", "null_sets_with_a_step",
-                    "worst_final_over_noise"},
+  auto t = c.table({"effect", "noise_N", "sets", "detected", "wrong_steps", "sets_at_noise_level",
+                    "null_sets_with_a_step", "worst_final_over_noise", "worst_noise_estimate_error",
+                    "worst_noise_error_in_SE"},
                    "demonstration 3 summary: detection of hidden effects and false alarms on null sets");
   for (const auto& [k, s] : sum)
     t.row({k.first, fmt(k.second), std::to_string(s.sets), k.first == "none" ? "-" : std::to_string(s.detected),
-           std::to_string(s.wrong), std::to_string(s.flagged), k.first == "none" ? std::to_string(s.null_alarm) : "-",
-           k.first == "none" ? "-" : fmt(s.worst_ratio, 3)});
+           std::to_string(s.wrong), std::to_string(s.at_noise), k.first == "none" ? std::to_string(s.null_alarm) : "-",
+           k.first == "none" ? "-" : fmt(s.worst_ratio, 3), fmt(100 * s.noise_rel, 3) + " %",
+           fmt(s.noise_err, 3)});
   c.save(t, "synth_summary");
   c.value("s_effect_sets", std::to_string(all_eff.sets));
   c.value("s_detected", std::to_string(all_eff.detected));
   c.value("s_wrong", std::to_string(all_eff.wrong));
   c.value("s_null_sets", std::to_string(all_null.sets));
   c.value("s_null_alarm", std::to_string(all_null.null_alarm));
-  c.value("s_null_flagged", std::to_string(all_null.flagged));
+  c.value("s_null_at_noise", std::to_string(all_null.at_noise));
+  c.value("s_eff_at_noise", std::to_string(all_eff.at_noise));
+  c.value("s_kinds", std::to_string(synth_effects().size() - 1));
+  c.value("s_seeds", std::to_string(cfg.effect_seeds));
   c.value("s_worst_ratio", fmt(all_eff.worst_ratio, 3));
+  c.value("s_noise_err", fmt(100 * std::max(all_eff.noise_rel, all_null.noise_rel), 3), "%");
+  c.value("s_noise_se", fmt(std::max(all_eff.noise_err, all_null.noise_err), 3));
   c.value("s_maps", maps.label());
-  c.checks().claim("ch7.synth.detected", "every hidden effect is named by the loop's first step (all noise levels)",
-                   all_eff.detected == all_eff.sets,
-                   "effects were sized to be detectable at the largest noise (10 N against 150-300 N friction forces)");
-  // False alarms: the loop's family-wise level is alpha per data set; allow
-  // alpha plus two binomial standard deviations for the number of null sets.
-  const double alpha = o.alpha, rate = static_cast<double>(all_null.null_alarm) / std::max(1, all_null.sets);
-  const double allowed = alpha + 2 * std::sqrt(alpha * (1 - alpha) / std::max(1, all_null.sets));
-  c.value("s_alpha", fmt(alpha));
-  c.value("s_null_rate_allowed", fmt(100 * allowed, 3), "%");
-  c.checks().claim("ch7.synth.null", "false-alarm rate on null sets at most alpha + 2 binomial SD (" +
-                                         fmt(100 * allowed, 3) + " % for " + std::to_string(all_null.sets) + " sets)",
-                   rate <= allowed,
-                   "Bonferroni over candidates plus the F test give a family-wise level of about alpha per set");
+  const double det_rate = static_cast<double>(all_eff.detected) / std::max(1, all_eff.sets);
+  const double fa_rate = static_cast<double>(all_null.null_alarm) / std::max(1, all_null.sets);
+  c.value("s_detection_rate", fmt(100 * det_rate, 3), "%");
+  c.value("s_false_alarm_rate", fmt(100 * fa_rate, 3), "%");
+  c.checks().claim(study::Kind::verification, "ch7.synth.detected", "detection rate >= 90 % (right variable named by the first step and final "
+                   "held-out RMS within 2x the noise), all kinds and noise levels",
+                   det_rate >= 0.9, "issue 21 goal; effects sized at 10-25 % of mu, against 2-10 N noise on 150-300 N "
+                   "friction forces");
+  c.checks().claim(study::Kind::verification, "ch7.synth.null", "false-alarm rate on null sets (with decoy columns) <= 5 %", fa_rate <= 0.05,
+                   "issue 21 goal; equal to the family-wise level alpha = " + fmt(o.alpha) +
+                       " the loop is run at (Bonferroni over candidates plus the F test)");
+  c.value("s_alpha", fmt(o.alpha));
   c.value("s_null_worst_ratio", fmt(all_null.worst_ratio, 3));
-  // Reference: the null sets, where the base model is the true model, give the
-  // held-out RMS / noise a correct model reaches under the same folds.
-  c.checks().agree("ch7.synth.near_noise", "worst held-out RMS / noise sd after the loop, detected sets "
-                   "(reference: worst of the null sets, fitted by the true model)", all_null.worst_ratio,
-                   all_eff.worst_ratio, 2.0 / std::sqrt(2.0 * n_rows), "-",
-                   "two sampling standard deviations of an RMS over the n rows of a set, 1/sqrt(2n) each; the null sets' "
-                   "ratio already contains the bending-line and parameter uncertainty of a correct model");
+  c.checks().claim(study::Kind::verification, "ch7.synth.noise_estimate", "the replicate-noise estimate is within 4 of its own standard errors "
+                   "of the true noise sd on every set", std::max(all_eff.noise_err, all_null.noise_err) <= 4,
+                   "an estimated sd with dof degrees of freedom has a relative standard error 1/sqrt(2 dof) (45 tests x "
+                   "2 dof here: 7.5 %); 4 standard errors is rarely reached by chance over the sets of this study, so a "
+                   "larger error means within-test structure leaks into the estimate");
 }
 
 }  // namespace ch7

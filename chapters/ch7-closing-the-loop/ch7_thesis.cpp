@@ -43,10 +43,10 @@ Thesis load_thesis_data(Chapter& c, const Config& cfg) {
   const Dataset regen = thesis_dataset(c.data("thesis"), 7);
   const std::string regen_path = c.out("tables/thesis_drawbend_regenerated.csv");
   write_measured(regen_path, regen);
-  c.checks().claim("ch7.data.reproducible", "data/measured/thesis_drawbend.csv equals its generator's output",
+  c.checks().claim(study::Kind::software, "ch7.data.reproducible", "data/measured/thesis_drawbend.csv equals its generator's output",
                    read_file(path) == read_file(regen_path),
                    "the shipped file must be exactly what drawbend synth --from-thesis writes");
-  c.checks().claim("ch7.data.clean", "every row of thesis_drawbend.csv is usable (no data problems)",
+  c.checks().claim(study::Kind::software, "ch7.data.clean", "every row of thesis_drawbend.csv is usable (no data problems)",
                    t.data.problems.empty() && static_cast<int>(t.data.rows.size()) == t.data.rows_read,
                    "the file is generated from the thesis tables, so any problem is a generator or reader bug");
   std::set<std::string> tests, fixed_tests;
@@ -152,7 +152,7 @@ void thesis_loop_pressure(Chapter& c, const Thesis& t) {
   c.value("d1_small_above", std::to_string(small_first));
   c.value("d1_spread_const", fmt(spread0 / std::max(1, cells), 3), "N");
   c.value("d1_spread_mup", fmt(spread1 / std::max(1, cells), 3), "N");
-  c.checks().claim("ch7.demo1.pin_spread", "mu(p) narrows the spread of the per-pin mean held-out residuals",
+  c.checks().claim(study::Kind::measured, "ch7.demo1.pin_spread", "mu(p) narrows the spread of the per-pin mean held-out residuals",
                    spread1 < spread0, "pressure non-uniformity is the thesis's explanation of the pin dependence (Sec. 5.7)");
   c.value("d1_train", std::to_string(train.size()));
   c.value("d1_held", std::to_string(held.size()));
@@ -160,7 +160,7 @@ void thesis_loop_pressure(Chapter& c, const Thesis& t) {
   c.value("d1_rms_mup", fmt(rms(e1), 4), "N");
   c.value("d1_max_const", fmt(maxabs(e0), 4), "N");
   c.value("d1_max_mup", fmt(maxabs(e1), 4), "N");
-  c.checks().claim("ch7.demo1.heldout_rms", "mu(p) through the maps lowers the held-out RMS of the thesis data",
+  c.checks().claim(study::Kind::measured, "ch7.demo1.heldout_rms", "mu(p) through the maps lowers the held-out RMS of the thesis data",
                    rms(e1) < rms(e0), "the thesis's argument for the new method (Sec. 5.7) on held-out back tensions");
   auto pw = c.table({"parameter", "value", "se"}, "demonstration 1: mu(p) = mu0 + a1 p per cell, fitted at the "
                     "middle back tension of each fit (maps: " + t.maps.label() + ")");
@@ -231,7 +231,7 @@ void pin_42_anomaly(Chapter& c, const Thesis& t) {
   c.save(w, "demo2_pin42");
   rel_dil /= std::max(1, n_dil);
   rel_und /= std::max(1, n_und);
-  c.checks().claim("ch7.demo2.pin42_undiluted",
+  c.checks().claim(study::Kind::measured, "ch7.demo2.pin42_undiluted",
                    "the 42 mm pin's excess friction over the mu(p) prediction is smaller with undiluted lubricant",
                    rel_und < rel_dil, "Sec. 5.8: the rich lubricant reduces the 42 mm pin's anomaly (Fig. 5.30)");
   c.value("d2_rel_diluted", fmt(100 * rel_dil, 3), "%");

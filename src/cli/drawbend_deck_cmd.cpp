@@ -2,24 +2,48 @@
 // of the chapters' builder (src/sim/drawbend_case.hpp) for any pin, back
 // tension, friction law and mesh, to standard output or, with --run, run it
 // into DIR.  Units: mm, N, MPa, s.
+//
+// Force basis: the model is the top half of the strip (symmetry), but a test
+// measures the whole strip.  Forces given and printed are full-strip forces
+// by default; `--basis half` takes and prints the half model's (the thesis's
+// simulated numbers, Chapters 2-4).  Every output states its basis.
+#include <cmath>
 #include <iostream>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "analysis/rope.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
 #include "sim/drawbend_case.hpp"
 
 namespace drawbend::cli {
 
+namespace {
+/// The 0.2 % yield stress of Table 5.1's RD row [MPa] (Swift's estimate of F_B).
+double table_5_1_yield_rd() {
+  const CsvTable t = read_csv(std::string(DRAWBEND_DATA_DIR) + "/thesis/table_5_1.csv");
+  return t.number(t.rows.front(), "YS02_MPa");
+}
+}  // namespace
+
 int drawbend_deck_command(int argc, char** argv) {
   sim::DrawBendSpec s;
   s.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
-  std::string run_dir;
-  Options opt("drawbend drawbend-deck", "Write (or run) a draw-bend case deck from the builder.");
+  std::string run_dir, basis = "full";
+  double back_tension = 2 * s.back_tension, bending_force = 0, yield_stress = 0;
+  int threads = 0;
+  Options opt("drawbend drawbend-deck",
+              "Write (or, with --run, run) a draw-bend case deck from the chapters' builder. The model is the top "
+              "half of the strip; forces are full-strip by default (--basis half: the half model's).");
   opt.add(s.name, "name", "case name");
   opt.add(s.pin_diameter, "pin-diameter", "pin diameter D [mm]");
   opt.add(s.thickness, "thickness", "strip thickness [mm]");
-  opt.add(s.width, "width", "modelled half width [mm]");
-  opt.add(s.back_tension, "back-tension", "back tension on the half model [N]");
+  opt.add(s.width, "width", "modelled half width [mm] (the strip is twice as wide)");
+  opt.add(basis, "basis", "force basis of --back-tension, --bending-force and the printed forces: full or half");
+  opt.add(back_tension, "back-tension", "back tension F_X [N] on the --basis (default full strip)");
   opt.add(s.speed, "speed", "outlet speed in the draw step [mm/s]");
   opt.add(s.draw_length, "draw-length", "slide in the draw step [mm] (0: 1.5 wrap lengths + 6 mm)");
   opt.add(s.friction, "friction", "pin friction as a TOML inline table (empty: frictionless), e.g. '{ law = \"coulomb\", mu = 0.1 }'");
@@ -34,16 +58,60 @@ int drawbend_deck_command(int argc, char** argv) {
           "'{ type = \"j2_combined\", kinematic = { beta = 0.5 } }', or a TOML file with a [material] table "
           "(data/materials/*.toml)");
   opt.add(s.strip_direction, "strip-direction", "the strip's axis is the rolling direction (rd) or the transverse one (td)");
+  opt.add(s.snapshots, "frames", "contact maps and .vtu frames written in the draw step (the animation)");
+  opt.add(bending_force, "bending-force",
+          "F_B [N] on the --basis for mu by Eq. (2.3), e.g. F_Y - F_X of a frictionless run (0: Swift's Eq. (2.1))");
+  opt.add(yield_stress, "yield-stress", "yield stress [MPa] of Swift's F_B estimate (0: Table 5.1, RD)");
+  opt.add(threads, "threads", "OpenMP threads of the run (0: OMP_NUM_THREADS or all)");
   opt.add(run_dir, "run", "run the deck into this directory instead of printing it");
   if (!opt.parse(argc, argv)) return 0;
+  if (basis != "full" && basis != "half")
+    throw std::invalid_argument("--basis: expected full or half, found '" + basis + "'");
+  if (s.snapshots < 1) throw std::invalid_argument("--frames: expected at least 1");
+  const bool full = basis == "full";
+  const double to_half = full ? 0.5 : 1.0;  // given forces -> half model
+  const double shown = full ? 2.0 : 1.0;    // half model -> printed basis
+  const std::string tag = full ? "full strip" : "half model";
+  s.back_tension = back_tension * to_half;
   if (run_dir.empty()) {
-    std::cout << sim::deck_text(s);
+    std::cout << "# back_tension in this deck is on the half model: " << fmt(s.back_tension, 6) << " N ("
+              << fmt(back_tension, 6) << " N on the " << tag << ")\n"
+              << sim::deck_text(s);
     return 0;
   }
+#ifdef _OPENMP
+  if (threads > 0) omp_set_num_threads(threads);
+#endif
   const sim::DrawBendResult r = sim::run_drawbend(s, run_dir, false, false);
-  std::cout << "F_X = " << fmt(r.F_back, 6) << " N, F_Y = " << fmt(r.F_out, 6) << " N (last third; std "
-            << fmt(r.F_out_std, 3) << " N), F_Y - F_X = " << fmt(r.tension_rise(), 5) << " N, mean contact pressure "
-            << fmt(r.mean_pressure(), 4) << " MPa (half model)\n";
+  const double FX = shown * r.F_back, FY = shown * r.F_out, theta = M_PI / 2;
+  std::cout << "forces on the " << tag << " (the model is the half strip" << (full ? ", doubled" : "") << "):\n"
+            << "  F_X = " << fmt(FX, 6) << " N, F_Y = " << fmt(FY, 6) << " N (last third of the draw; std "
+            << fmt(shown * r.F_out_std, 3) << " N), F_Y - F_X = " << fmt(FY - FX, 5) << " N\n"
+            << "  mean contact pressure " << fmt(r.mean_pressure(), 4) << " MPa; Eq. (2.2) P = "
+            << fmt(analysis::average_pressure(FX, FY, s.pin_diameter / 2, 2 * s.width,
+                                              full ? analysis::ForceBasis::full_strip : analysis::ForceBasis::half_model),
+                   4)
+            << " MPa\n";
+  if (s.friction.empty()) {
+    std::cout << "  frictionless pin: the bending force F_B = F_Y - F_X = " << fmt(FY - FX, 5)
+              << " N (pass it as --bending-force to a run with friction)\n";
+    return 0;
+  }
+  double FB = bending_force;
+  std::string fb_from = "given by --bending-force";
+  if (FB <= 0) {
+    const double ys = yield_stress > 0 ? yield_stress : table_5_1_yield_rd();
+    FB = analysis::swift_bending_force(ys, s.thickness, 2 * s.width, s.pin_diameter / 2, theta,
+                                       full ? analysis::ForceBasis::full_strip : analysis::ForceBasis::half_model);
+    fb_from = "Swift's estimate, Eq. (2.1), yield stress " + fmt(ys, 4) + " MPa; a frictionless run gives a better one";
+  }
+  std::cout << "  F_B = " << fmt(FB, 5) << " N (" << fb_from << ")\n"
+            << "  friction force F_Y - F_X - F_B = " << fmt(FY - FX - FB, 5) << " N\n";
+  try {
+    std::cout << "  mu by Eq. (2.3) = " << fmt(analysis::mu_rope(FX, FY, FB, theta), 4) << " (90 deg wrap)\n";
+  } catch (const std::domain_error& e) {
+    std::cout << "  mu by Eq. (2.3): not defined (" << e.what() << "); F_B is too large for these forces\n";
+  }
   return 0;
 }
 

@@ -11,6 +11,7 @@
 #include "cli/exit_codes.hpp"
 #include "cli/loop_cmd.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <set>
@@ -36,38 +37,50 @@ MapLibrary maps_for(const std::string& dir, const std::vector<double>& pins) {
 }  // namespace
 
 int loop_main(int argc, char** argv) {
-  if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
-    if (argc >= 2 && std::string(argv[1]) == "--help") {
-      std::cout << "usage: drawbend loop DATA.csv --out DIR [--maps DIR] [--cv auto|test|bt-block] [--folds 5]\n"
-                   "  [--permutations 999] [--seed N] [--alpha 0.05] [--bending linear|constant] [--figures DIR]\n";
-      return 0;
-    }
-    std::cerr << "drawbend loop: missing DATA.csv\n";
-    return 2;
-  }
-  const std::string data_path = argv[1];
+  const bool help = argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h");
+  const std::string data_path = argc >= 2 ? argv[1] : "";
   LoopOptions lo;
   std::string out = "loop-out", maps_dir, bending = "linear", figures = DRAWBEND_FIGURES_DIR, gnuplot = "gnuplot";
   int seed = static_cast<int>(lo.seed);
-  Options opt("drawbend loop DATA.csv", "Close the loop on measured draw-bend data.");
+  Options opt("drawbend loop DATA.csv",
+              "Close the loop on measured draw-bend data: fit the base model (bending force per pin, constant mu "
+              "per cell by Eq. 5.1), rank every extra column by held-out error and a permutation test, add the "
+              "library effects that explain it, and write DIR/loop.md (read it first: the data problems, the base "
+              "model, each step with its p-value and held-out RMS, and why the loop stopped), loop_summary.json, "
+              "tables/ and figures/. DATA.csv: one row per sample with full-strip forces in N (README.md, "
+              "'Your own measured data').");
   opt.add(out, "out", "output directory");
   opt.add(maps_dir, "maps", "directory of FE maps pin_<d>mm.csv (empty: analytic stand-in, not FE)");
   opt.add(lo.cv, "cv", "cross-validation folds: auto, test, bt-block");
   opt.add(lo.folds, "folds", "number of folds");
-  opt.add(lo.permutations, "permutations", "permutations per candidate");
+  opt.add(lo.permutations, "permutations", "cap of the sequential permutation test per candidate");
+  opt.add(lo.min_effect, "min-effect", "minimum held-out error reduction of a step, in units of the replicate noise");
   opt.add(seed, "seed", "random seed of the permutation test");
   opt.add(lo.alpha, "alpha", "family-wise significance level (Bonferroni over candidates)");
   opt.add(lo.max_steps, "max-steps", "maximum number of effects to add");
-  opt.add(bending, "bending", "base bending force: linear (b0 + b1 F_back) or constant (Swift form)");
+  opt.add(bending, "bending",
+          "bending force: linear (b0 + b1 F_back) or constant, from the rotating-pin rows; for pins without "
+          "rotating-pin rows: swift (Eq. 2.1), fe (the FE map's bending_force_N) or none (F_B = 0)");
   opt.add(figures, "figures", "directory of the gnuplot scripts (empty: no figures)");
   opt.add(gnuplot, "gnuplot", "gnuplot executable");
+  if (help) {
+    const char* argv_help[] = {"drawbend loop", "--help"};
+    opt.parse(2, const_cast<char**>(argv_help));
+    return 0;
+  }
+  if (data_path.empty() || data_path.rfind("--", 0) == 0) {
+    std::cerr << "drawbend loop: missing DATA.csv (drawbend loop --help lists the options)\n";
+    return 2;
+  }
   return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
-    if (bending != "linear" && bending != "constant")
-      throw std::invalid_argument("--bending must be linear or constant, not '" + bending + "'");
-    lo.bending_linear = bending == "linear";
+    const BendingSource bsrc = bending_source(bending);  // throws on an unknown name
+    lo.bending_linear = bending != "constant";
+    lo.progress = true;
     lo.seed = static_cast<std::uint64_t>(seed);
+    ensure_writable_dir(out, "--out");  // before the analysis, not after it
     const Dataset data = read_measured(data_path);
+    if (!data.format_note.empty()) std::cout << data_path << ": " << data.format_note << "\n";
     for (const auto& p : data.problems) std::cerr << "data problem: " << p.str() << "\n";
     std::cout << data_path << ": " << data.rows_read << " rows read, " << data.rows.size() << " used, "
               << data.rows_dropped << " dropped, " << data.problems.size() << " problems\n";
@@ -75,16 +88,22 @@ int loop_main(int argc, char** argv) {
     std::set<double> pins;
     for (const auto& s : data.rows) pins.insert(s.pin_d_mm);
     const MapLibrary maps = maps_for(maps_dir, {pins.begin(), pins.end()});
-    const Design d = make_design(data, maps);
-    for (const auto& n : d.notes)
-      if (n.rfind("WARNING", 0) == 0) std::cerr << n << "\n";
+    const Design d = make_design(data, maps, 0.4, bsrc);  // exits 2 without rotating rows and --bending
+    if (d.missing_rotating) std::cout << d.notes.front() << "\n";
     const LoopResult r = run_loop(d, lo);
+    if (r.cv.empty() || !std::isfinite(r.cv.front().rms))  // never exit 0 with a meaningless answer
+      throw std::runtime_error("the base model's held-out RMS is " +
+                               (r.cv.empty() ? std::string("missing") : fmt(r.cv.front().rms)) +
+                               ": the data cannot be analysed (no outputs written)");
     write_loop_outputs(d, r, out, figures, gnuplot);
-    std::cout << "base held-out RMS " << fmt(r.cv.front().rms, 4) << " N; " << r.steps.size() << " step(s)";
+    if (!std::isfinite(r.cv.back().rms))
+      throw std::runtime_error("the held-out error is not finite: rows that no model can predict");
+    std::cout << "bending: " << r.bending << "\nbase held-out RMS " << fmt(r.cv.front().rms, 4) << " N; "
+              << r.steps.size() << " step(s)";
     for (const auto& s : r.steps)
       std::cout << "; " << s.variable << " -> " << s.effect << " (p " << fmt(s.p_value, 3) << ", RMS "
                 << fmt(s.rms_before, 4) << " -> " << fmt(s.rms_after, 4) << " N)";
-    std::cout << "\nstopped: " << r.stopped_because << "\nwrote " << out << "/loop.md, " << out
+    std::cout << "\n" << r.conclusion << "\nstopped: " << r.stopped_because << "\nwrote " << out << "/loop.md, " << out
               << "/loop_summary.json\n";
     return 0;
   });
@@ -97,7 +116,7 @@ int synth_main(int argc, char** argv) {
   bool from_thesis = false;
   Options opt("drawbend synth", "Write synthetic draw-bend data with a hidden law, or the thesis data set.");
   opt.add(out, "out", "output directory");
-  opt.add(so.effect, "effect", "hidden law: none, depletion, pin_surface, speed, drift, direction, pressure");
+  opt.add(so.effect, "effect", "hidden law: none, depletion, pin_surface, speed, drift, direction, pressure, curvature, batch, temperature");
   opt.add(so.noise_N, "noise", "measurement noise sd on the outlet force [N]");
   opt.add(seed, "seed", "random seed");
   opt.add(so.amplitude, "amplitude", "amplitude of the hidden law (negative: its default)");
@@ -109,7 +128,7 @@ int synth_main(int argc, char** argv) {
   opt.add(points, "points", "rows per thesis fit for --from-thesis");
   return with_exit_codes([&] {
     if (!opt.parse(argc, argv)) return 0;
-    fs::create_directories(out);
+    ensure_writable_dir(out, "--out");
     if (from_thesis) {
       const Dataset d = thesis_dataset(data_dir + "/thesis", points);
       write_measured(out + "/thesis_drawbend.csv", d);

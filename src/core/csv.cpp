@@ -23,7 +23,9 @@ std::string trim(const std::string& s) {
 }
 }  // namespace
 
-std::vector<std::string> split_csv_line(const std::string& line) {
+std::vector<std::string> split_csv_line(const std::string& line) { return split_csv_line(line, ','); }
+
+std::vector<std::string> split_csv_line(const std::string& line, char sep) {
   std::vector<std::string> cells;
   std::string cur;
   bool quoted = false;
@@ -40,7 +42,7 @@ std::vector<std::string> split_csv_line(const std::string& line) {
       }
     } else if (ch == '"') {
       quoted = true;
-    } else if (ch == ',') {
+    } else if (ch == sep) {
       cells.push_back(trim(cur));
       cur.clear();
     } else {
@@ -55,12 +57,25 @@ CsvTable read_csv(const std::string& path) {
   return parse_csv(read_file(path), path);
 }
 
+std::string strip_bom(const std::string& text) {
+  return text.rfind("\xEF\xBB\xBF", 0) == 0 ? text.substr(3) : text;
+}
+
+bool semicolon_header(const std::vector<std::string>& cells) {
+  return cells.size() == 1 && cells[0].find(';') != std::string::npos;
+}
+
+std::string semicolon_message() {
+  return "expected ',' between cells, found ';' (a spreadsheet export with decimal commas?): "
+         "save it as CSV with ',' between cells and '.' as the decimal mark";
+}
+
 CsvTable parse_csv(const std::string& text, const std::string& path) {
   // Every ragged row and every bad header cell is reported, in one message.
   InputProblems problems(path);
   CsvTable t;
   t.path = path;
-  std::istringstream in(text);
+  std::istringstream in(strip_bom(text));  // spreadsheet programs write a UTF-8 byte-order mark
   std::string line;
   int lineno = 0;
   while (std::getline(in, line)) {
@@ -73,6 +88,8 @@ CsvTable parse_csv(const std::string& text, const std::string& path) {
     }
     auto cells = split_csv_line(s);
     if (t.header.empty()) {
+      if (semicolon_header(cells))  // one message, not one per row
+        throw InputError(path + ":" + std::to_string(lineno) + ": header: " + semicolon_message());
       t.header = std::move(cells);
       for (std::size_t i = 0; i < t.header.size(); ++i) {
         const std::string col = "header cell " + std::to_string(i + 1);
@@ -209,6 +226,32 @@ void write_file_atomic(const std::string& path, const std::string& text) {
     }
   }
   fs::rename(tmp, target);
+}
+
+void ensure_writable_dir(const std::string& dir, const std::string& what) {
+  namespace fs = std::filesystem;
+  const std::string name = what + " '" + dir + "'";
+  if (dir.empty()) throw InputError(what + ": expected a folder name, found an empty one");
+  std::error_code ec;
+  // The nearest existing ancestor that is not a folder is the usual cause.
+  for (fs::path p = fs::path(dir); !p.empty(); p = p.parent_path()) {
+    if (fs::exists(p, ec) && !fs::is_directory(p, ec))
+      throw InputError(name + ": cannot be a folder, because '" + p.string() + "' is a file");
+    if (p == p.parent_path()) break;
+  }
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError(name + ": cannot create the folder: " + ec.message());
+  const fs::path probe = fs::path(dir) / (".drawbend-write-test." + std::to_string(::getpid()));
+  {
+    std::ofstream out(probe, std::ios::binary | std::ios::trunc);
+    out << "test\n";
+    out.flush();
+    if (!out) {
+      fs::remove(probe, ec);
+      throw InputError(name + ": cannot write in the folder (permission denied or disk full?)");
+    }
+  }
+  fs::remove(probe, ec);
 }
 
 std::string read_file(const std::string& path) {

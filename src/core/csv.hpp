@@ -41,6 +41,14 @@ struct CsvTable {
 
 /// Split one CSV line into cells (handles quotes).
 std::vector<std::string> split_csv_line(const std::string& line);
+/// The same with another separator (';' in spreadsheet exports with decimal commas).
+std::vector<std::string> split_csv_line(const std::string& line, char sep);
+/// The text without a leading UTF-8 byte-order mark.
+std::string strip_bom(const std::string& text);
+/// Whether a header line split at ',' is one cell holding ';' (a ';'-separated file).
+bool semicolon_header(const std::vector<std::string>& cells);
+/// The message for a ';'-separated file where ',' is expected.
+std::string semicolon_message();
 /// Read a CSV file; throws InputError if it cannot be read or rows are ragged.
 CsvTable read_csv(const std::string& path);
 /// The same from text already read (`path` names it in messages); every
@@ -71,6 +79,11 @@ std::string fmt(double v, int significant = 6);
 std::string fmt_shortest(double v);
 /// Format with a fixed count of decimals.
 std::string fmt_fixed(double v, int decimals);
+
+/// Create the folder `dir` (and its parents) and test-write a file in it, so
+/// that a command fails before any work, not after it.  Throws InputError
+/// "<what> 'dir': ..." naming the reason (a file in the way, permission denied).
+void ensure_writable_dir(const std::string& dir, const std::string& what);
 
 /// Write text to a file atomically (temporary file, then rename).
 void write_file_atomic(const std::string& path, const std::string& text);

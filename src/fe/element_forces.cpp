@@ -61,6 +61,7 @@ void Solver::element_forces() {
   ev.mass_factor = elem_mass_factor_.data();
   ev.mat = &mat;
   ev.ns = mat.state_size();
+  ev.spin = mat.uses_spin();
   ev.E0 = mat.youngs_modulus();
   ev.G0 = mat.shear_modulus();
   ev.hourglass = m_.hourglass;

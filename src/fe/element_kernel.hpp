@@ -45,6 +45,7 @@ namespace drawbend::fe::DRAWBEND_ISA {
 namespace kernel {
 constexpr double kRelax = 0.01;                 // tangent ratio relaxes over ~100 cycles (no chatter)
 constexpr double kZg = 0.57735026918962576;    // 1/sqrt(3)
+inline constexpr material::Spin kNoSpin{};       // for materials without rotating history
 
 template <class T>
 inline void inverse3(const T M[3][3], T Mi[3][3]) {
@@ -197,8 +198,12 @@ int element_block(const ElementView& ev, int e0) {
         sp[k] = lane(s[gp][k], l);
         d[k] = lane(deps[gp][k], l);
       }
-      const material::Spin wp{lane(spin[gp][0], l), lane(spin[gp][1], l), lane(spin[gp][2], l), dtp};
-      mat.update(d, wp, sp, st[gp]);
+      if (ev.spin) {
+        const material::Spin wp{lane(spin[gp][0], l), lane(spin[gp][1], l), lane(spin[gp][2], l), dtp};
+        mat.update(d, wp, sp, st[gp]);
+      } else {
+        mat.update(d, kNoSpin, sp, st[gp]);
+      }
       double w = 0;
       for (int k = 0; k < 6; ++k) w += 0.5 * (lane(s[gp][k], l) + sp[k]) * d[k];
       ie += w;

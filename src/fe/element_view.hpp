@@ -28,6 +28,7 @@ struct ElementView {
   const double* mass_factor = nullptr;  ///< 1 per element: mass scaling factor
   const material::Material* mat = nullptr;
   int ns = 0;                    ///< material state size per point
+  bool spin = false;             ///< the material rotates its own state (Material::uses_spin)
   double E0 = 0, G0 = 0;         ///< elastic moduli [MPa]
   double hourglass = 0;          ///< hourglass stiffness scale
   double c_elastic = 0;          ///< nu / (1 - nu)

@@ -114,6 +114,21 @@ Solver::Solver(Model& model) : m_(model) {
   tool_force_.assign(m_.tools.size(), Vec3{0, 0, 0});
   compute_dt();
   dt0_ = dt_;
+  check_dt();
+}
+
+void Solver::check_dt() const {
+  // A zero or non-finite step would make the run loop for ever at one time
+  // (or produce NaN at once); it comes from a material or mesh value the
+  // floating-point range cannot hold (E = 1e308: the wave speed overflows).
+  if (dt_ > 0 && std::isfinite(dt_)) return;
+  int worst = 0;  // the first element whose own step is not finite and > 0
+  while (worst + 1 < m_.mesh.num_elements() && dt_elem_[worst] > 0 && std::isfinite(dt_elem_[worst])) ++worst;
+  std::ostringstream os;
+  os << "stable time step " << dt_ << " s of element " << worst << " (wave speed " << wave_speed_
+     << " mm/s, mass factor " << elem_mass_factor_[worst] << ") at t = " << t_ << " s (cycle " << cycle_
+     << "): the time step must be finite and > 0 (check the material's E and density, and the mesh)";
+  throw NumericalFault(os.str());
 }
 
 void Solver::set_velocity(int node, const Vec3& v) {

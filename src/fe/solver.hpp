@@ -129,6 +129,8 @@ class Solver {
   void element_forces();
   void contact_forces(double dt, bool friction);
   void compute_dt();
+  /// Throws NumericalFault naming the element if the step is zero or not finite.
+  void check_dt() const;
   /// A guard fired: throw NumericalFault (action "error") or warn once per step.
   void guard_fired(const Guard& g, int id, const std::string& what);
   /// The element with a non-finite stress or corner force (-1: none), for messages.

@@ -92,6 +92,7 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
   while (step_time < step.duration * (1 - 1e-12)) {
     const double dt = std::min(dt_, step.duration - step_time);
     if (step.duration - step_time < 1e-3 * dt0_) break;  // only round-off left in this step
+    check_dt();  // zero or non-finite: a fault whatever the collapse guard says
     if (dt_ < m_.guards.dt_collapse.limit * dt0_) {
       std::ostringstream os;
       os << "time step collapsed to " << dt_ << " s = " << dt_ / dt0_ << " x the initial " << dt0_

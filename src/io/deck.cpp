@@ -12,6 +12,7 @@
 #include "core/input_problems.hpp"
 #include "fe/strip.hpp"
 #include "io/deck_context.hpp"
+#include "io/deck_limits.hpp"
 #include "io/deck_material.hpp"
 #include "io/deck_sections.hpp"
 #include "io/toml_precheck.hpp"
@@ -65,7 +66,14 @@ std::vector<double> lines(const DeckContext& c, const toml::table& mesh, const s
     if (total > kMaxNodes) c.bad(*t.get("counts"), w + ".counts", "expected at most " + fmt(kMaxNodes) + " elements in all, found " + fmt(total));
     if (c.count() > before) return {0.0, 1.0};
     try {
-      return fe::piecewise_lines(bv, kv);
+      auto v = fe::piecewise_lines(bv, kv);
+      for (std::size_t i = 1; i < v.size(); ++i)
+        if (!std::isfinite(v[i]) || !(v[i] > v[i - 1])) {
+          c.bad(t, w, "expected elements of finite, non-zero size, found line " + std::to_string(i) + " at " +
+                          fmt_shortest(v[i]) + " mm");
+          return {0.0, 1.0};
+        }
+      return v;
     } catch (const std::invalid_argument& e) {
       c.bad(t, w, e.what());
       return {0.0, 1.0};
@@ -76,12 +84,23 @@ std::vector<double> lines(const DeckContext& c, const toml::table& mesh, const s
   if (nn > kMaxNodes) c.bad(*t.get("n"), w + ".n", "expected at most " + fmt(kMaxNodes) + " elements, found " + std::to_string(nn));
   if (std::isfinite(a) && std::isfinite(b) && !(b > a))
     c.bad(t, w, "expected 'to' > 'from', found from = " + fmt_shortest(a) + ", to = " + fmt_shortest(b));
+  else if (std::isfinite(a) && std::isfinite(b) && !std::isfinite(b - a))
+    c.bad(t, w, "expected coordinates whose span to - from is a finite number of mm, found from = " +
+                    fmt_shortest(a) + ", to = " + fmt_shortest(b));
   if (c.count() > before) return {0.0, 1.0};
-  return fe::uniform_lines(a, b, nn);
+  auto v = fe::uniform_lines(a, b, nn);
+  for (std::size_t i = 1; i < v.size(); ++i)
+    if (!std::isfinite(v[i]) || !(v[i] > v[i - 1])) {
+      c.bad(t, w, "expected " + std::to_string(nn) + " elements of finite, non-zero size between from = " +
+                      fmt_shortest(a) + " and to = " + fmt_shortest(b) + " mm, found line " + std::to_string(i) +
+                      " at " + fmt_shortest(v[i]) + " mm");
+      return {0.0, 1.0};
+    }
+  return v;
 }
 
 /// The mesh, or nothing if a value problem (recorded) prevents building it.
-std::optional<fe::Mesh> read_mesh(const DeckContext& c, const toml::table& mesh) {
+std::optional<fe::Mesh> read_mesh(const DeckContext& c, const toml::table& mesh, const RunLimits& lim) {
   const std::string kind = c.str(mesh, "kind", "mesh", std::string("block"));
   if (kind == "block") {
     c.allowed(mesh, "mesh", {"kind", "x", "y", "z"});
@@ -91,6 +110,8 @@ std::optional<fe::Mesh> read_mesh(const DeckContext& c, const toml::table& mesh)
     const double nodes = static_cast<double>(x.size()) * y.size() * z.size();
     if (nodes > kMaxNodes)
       c.fail(mesh, "mesh", "expected at most " + fmt(kMaxNodes) + " nodes, found " + fmt(nodes));
+    const double elements = static_cast<double>(x.size() - 1) * (y.size() - 1) * (z.size() - 1);
+    if (!check_memory(c, mesh, "mesh", nodes, elements, lim)) return std::nullopt;  // before building it
     return fe::structured_block(x, y, z);
   }
   if (kind == "quarter_disk") {
@@ -168,7 +189,10 @@ void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out) {
 
 Deck read_deck(const std::string& path) { return parse_deck(read_file(path), path); }
 
-Deck parse_deck(const std::string& text, const std::string& path) {
+Deck parse_deck(const std::string& text_in, const std::string& path) {
+  // A UTF-8 byte-order mark, as editors on Windows write it, is not part of the TOML.
+  const bool bom = text_in.rfind("\xEF\xBB\xBF", 0) == 0;
+  const std::string& text = bom ? text_in.substr(3) : text_in;
   precheck_table_headers(text, path);
   toml::table root;
   try {
@@ -180,7 +204,8 @@ Deck parse_deck(const std::string& text, const std::string& path) {
   }
   InputProblems problems(path);
   const DeckContext c(path, problems);
-  c.allowed(root, "deck", {"case", "mesh", "material", "sheet", "numerics", "guards", "tool", "contact", "step", "output"});
+  c.allowed(root, "deck", {"case", "mesh", "material", "sheet", "numerics", "guards", "tool", "contact", "step",
+                           "output", "limits"});
   Deck d;
   d.path = path;
   d.hash = fnv1a64(text);
@@ -195,10 +220,12 @@ Deck parse_deck(const std::string& text, const std::string& path) {
   });
   // Sections that refer to node and face sets check them only if the mesh was read.
   bool mesh_ok = false;
+  problems.attempt([&] { read_limits(c, root, d.limits); });
   problems.attempt([&] {
-    if (auto mesh = read_mesh(c, *c.table(root, "mesh", "deck", true))) {
+    const toml::table& mt = *c.table(root, "mesh", "deck", true);
+    if (auto mesh = read_mesh(c, mt, d.limits)) {
       m.mesh = std::move(*mesh);
-      mesh_ok = true;
+      mesh_ok = check_memory(c, mt, "mesh", m.mesh.num_nodes(), m.mesh.num_elements(), d.limits);
     }
   });
   problems.attempt([&] { m.material = make_material(c, *c.table(root, "material", "deck", true), dir); });
@@ -225,6 +252,10 @@ Deck parse_deck(const std::string& text, const std::string& path) {
   });
   if (problems.empty())
     problems.attempt([&] { m.validate(); });
+  if (problems.empty()) {
+    problems.attempt([&] { check_cost(c, root, d); });
+    material_warnings(c, root, d);
+  }
   problems.throw_if_any();
   return d;
 }

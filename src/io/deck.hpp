@@ -29,12 +29,32 @@ struct OutputSpec {
   std::vector<HistorySignal> history;
 };
 
+/// Limits a deck can raise in [limits] (data/cases/README.md): every run has a
+/// finite, predicted cost before it starts (deck_limits.hpp).
+struct RunLimits {
+  double max_cycles = 1e8;        ///< predicted cycles (end time / stable step)
+  double max_memory_mb = 4096;    ///< predicted memory of the mesh and solver state [MB]
+  double max_mass_factor = 1e9;   ///< (physical + added mass) / physical mass; a warning above 1 % of it
+};
+
+/// The up-front estimate of a run (deck_limits.cpp).
+struct CostEstimate {
+  double stable_dt = 0;    ///< initial stable step with mass scaling [s] (0: not estimated)
+  double cycles = 0;       ///< end time / stable_dt (a lower bound: the step shrinks as elements deform)
+  double memory_mb = 0;    ///< mesh and solver state [MB]
+  double mass_factor = 1;  ///< (physical + added mass) / physical mass
+};
+
 struct Deck {
   std::string path;
   std::uint64_t hash = 0;  ///< FNV-1a of the deck's text (checkpoints must match it)
   fe::Model model;
   OutputSpec output;
   int threads = 0;  ///< 0: OpenMP default
+  RunLimits limits;
+  CostEstimate cost;
+  /// Doubtful but valid values, "file:line: key: ..." (printed by run_case).
+  std::vector<std::string> warnings;
 };
 
 /// Read and validate a deck; throws drawbend::InputError with file:line: key: message.

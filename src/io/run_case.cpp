@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -140,9 +141,47 @@ void write_fields(const fe::Solver& s, const std::string& path) {
     for (int a = 0; a < 8; ++a) hex[8 * e + a] = m.mesh.hex[e][a];
   VtuMesh vm_{static_cast<std::size_t>(n), s.x().data(), s.y().data(), s.z().data(), static_cast<std::size_t>(ne),
               hex.data()};
+  // Contact: friction traction (tangential force on the sheet per tributary
+  // area), slip rate and the local friction coefficient |f_t| / f_n of each
+  // node in contact (zero elsewhere; the largest pressure wins when a node
+  // touches several tools).
+  std::vector<double> trac(3 * n, 0.0), slip(n, 0.0), mu(n, 0.0);
+  for (int p = 0; p < s.num_contact_pairs(); ++p)
+    for (const auto& c : s.contact_nodes(p)) {
+      if (!(c.pressure > 0) || c.pressure < pres[c.node] || !(c.area > 0)) continue;
+      for (int k = 0; k < 3; ++k) trac[3 * c.node + k] = c.ft[k] / c.area;
+      slip[c.node] = c.slip_speed;
+      const double ft = std::sqrt(c.ft[0] * c.ft[0] + c.ft[1] * c.ft[1] + c.ft[2] * c.ft[2]);
+      mu[c.node] = c.normal_force > 0 ? ft / c.normal_force : 0.0;
+    }
+  // Thickness: each element's height across its thinnest initial direction
+  // (the distance between the centroids of the two opposite faces that are
+  // closest in the reference mesh), now and as a ratio to its initial value.
+  std::vector<double> thick(ne), thick_ratio(ne);
+  static const int faces[3][2][4] = {{{0, 1, 2, 3}, {4, 5, 6, 7}}, {{0, 1, 5, 4}, {3, 2, 6, 7}}, {{0, 3, 7, 4}, {1, 2, 6, 5}}};
+  for (int e = 0; e < ne; ++e) {
+    const auto& h = m.mesh.hex[e];
+    auto height = [&](const double* x, const double* y, const double* z, int d) {
+      double c[2][3] = {{0, 0, 0}, {0, 0, 0}};
+      for (int f = 0; f < 2; ++f)
+        for (int a : faces[d][f]) c[f][0] += x[h[a]] / 4, c[f][1] += y[h[a]] / 4, c[f][2] += z[h[a]] / 4;
+      return std::sqrt((c[1][0] - c[0][0]) * (c[1][0] - c[0][0]) + (c[1][1] - c[0][1]) * (c[1][1] - c[0][1]) +
+                       (c[1][2] - c[0][2]) * (c[1][2] - c[0][2]));
+    };
+    int d0 = 0;
+    double h0 = INFINITY;
+    for (int d = 0; d < 3; ++d) {
+      const double hd = height(m.mesh.x.data(), m.mesh.y.data(), m.mesh.z.data(), d);
+      if (hd < h0) h0 = hd, d0 = d;
+    }
+    thick[e] = height(s.x().data(), s.y().data(), s.z().data(), d0);
+    thick_ratio[e] = h0 > 0 ? thick[e] / h0 : 1.0;
+  }
   write_vtu(path, vm_,
-            {{"displacement_mm", 3, disp.data()}, {"velocity_mm_s", 3, vel.data()}, {"contact_pressure_MPa", 1, pres.data()}},
-            {{"stress_MPa", 6, sg.data()}, {"von_mises_MPa", 1, vm.data()}, {"plastic_strain", 1, ep.data()}}, s.time());
+            {{"displacement_mm", 3, disp.data()}, {"velocity_mm_s", 3, vel.data()}, {"contact_pressure_MPa", 1, pres.data()},
+             {"friction_traction_MPa", 3, trac.data()}, {"slip_rate_mm_s", 1, slip.data()}, {"local_mu", 1, mu.data()}},
+            {{"stress_MPa", 6, sg.data()}, {"von_mises_MPa", 1, vm.data()}, {"plastic_strain", 1, ep.data()},
+             {"element_thickness_mm", 1, thick.data()}, {"thickness_ratio", 1, thick_ratio.data()}}, s.time());
 }
 
 void parse_checkpoint_every(const std::string& spec, RunOptions& opt) {
@@ -165,18 +204,23 @@ void parse_checkpoint_every(const std::string& spec, RunOptions& opt) {
 
 RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   namespace fs = std::filesystem;
-  fs::create_directories(opt.out_dir);
+  ensure_writable_dir(opt.out_dir, "output folder");
   const int threads = opt.threads > 0 ? opt.threads : deck.threads;
   if (threads > 0) omp_set_num_threads(threads);
   const auto wall0 = std::chrono::steady_clock::now();
+  for (const auto& w : deck.warnings) log << "warning: " << w << "\n";  // before the solver can fail
   fe::Solver solver(deck.model);
   solver.set_warning_handler([&log](const std::string& w) { log << "\nwarning: " << w << "\n"; });
   const fe::Model& m = deck.model;
   double total = 0;
   for (const auto& s : m.steps) total += s.duration;
   log << "case " << m.name << ": " << m.mesh.num_elements() << " elements, " << m.mesh.num_nodes() << " nodes, "
-      << m.steps.size() << " steps, " << total << " s simulated; dt = " << solver.stable_dt() << " s; added mass "
-      << fmt(100 * solver.added_mass() / solver.physical_mass(), 4) << " % (units: mm, N, MPa, s)\n";
+      << m.steps.size() << " steps, " << total << " s simulated; dt = " << solver.stable_dt() << " s; mass scaling x"
+      << fmt(1 + solver.added_mass() / solver.physical_mass(), 4) << " (units: mm, N, MPa, s)\n";
+  if (deck.cost.cycles > 0)
+    log << "  estimate: about " << fmt(deck.cost.cycles, 3) << " cycles at the initial step (limit "
+        << fmt_shortest(deck.limits.max_cycles) << "), memory about " << fmt(deck.cost.memory_mb, 3) << " MB (limit "
+        << fmt_shortest(deck.limits.max_memory_mb) << "); [limits] in the deck raises them\n";
   // History file.
   std::vector<std::string> header{"time_s", "step", "dt_s", "kinetic_mJ", "internal_mJ", "hourglass_mJ",
                                   "external_work_mJ", "friction_mJ", "damping_mJ", "balance_error"};
@@ -211,6 +255,8 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   double next_ckpt_time = opt.checkpoint_every_s > 0 ? solver.time() + opt.checkpoint_every_s : 0;
   struct Halt {};
   auto wall_last = std::chrono::steady_clock::now();
+  const auto wall_run0 = wall_last;  // the time left comes from the cycles done in this run
+  const long cycle0 = solver.cycles();
   try {
   solver.run([&](const fe::Progress& p) {
     const double interval =
@@ -237,15 +283,30 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
     const auto now = std::chrono::steady_clock::now();
     if (!opt.quiet && std::chrono::duration<double>(now - wall_last).count() > 1.0) {
       wall_last = now;
-      const double el = std::chrono::duration<double>(now - wall0).count();
+      // Time left = wall time per cycle so far x the cycles still to run at the
+      // current stable step (the step only shrinks, so this is a lower bound).
+      const double el = std::chrono::duration<double>(now - wall_run0).count();
       const double frac = p.time / total;
-      log << "\r  " << std::fixed << std::setprecision(1) << 100 * frac << " %  t = " << std::scientific
-          << std::setprecision(3) << p.time << " s  dt = " << p.dt << " s  step " << p.step->name << "  left ~"
-          << std::fixed << std::setprecision(0) << el * (1 - frac) / std::max(frac, 1e-9) << " s   " << std::flush;
+      const double done = static_cast<double>(p.cycle - cycle0);
+      const double to_go = std::max(0.0, total - p.time) / solver.dt();
+      std::ostringstream line;  // its own stream: the log's number format stays as it was
+      line << "\r  " << std::fixed << std::setprecision(1) << 100 * frac << " %  t = " << std::scientific
+           << std::setprecision(3) << p.time << " s  dt = " << p.dt << " s  step " << p.step->name << "  cycle "
+           << p.cycle << " of ~" << static_cast<long>(p.cycle + to_go) << "  left ~" << std::fixed
+           << std::setprecision(0) << (done > 0 ? el / done * to_go : 0.0) << " s   ";
+      log << line.str() << std::flush;
       last_print = p.time;
     }
     const bool by_cycles = opt.checkpoint_every_cycles > 0 && p.cycle % opt.checkpoint_every_cycles == 0;
     const bool by_time = opt.checkpoint_every_s > 0 && p.time >= next_ckpt_time;
+    const int sig = opt.stop ? static_cast<int>(*opt.stop) : 0;
+    if (sig != 0) {  // SIGINT/SIGTERM: checkpoint at this cycle boundary and stop
+      rs.history_rows = hist.rows();
+      write_checkpoint(ckpt_path, deck.hash, solver, rs);
+      r.checkpoint = ckpt_path;
+      r.interrupted = sig;
+      throw Halt{};
+    }
     if (by_cycles || by_time) {
       if (by_time)
         while (next_ckpt_time <= p.time) next_ckpt_time += opt.checkpoint_every_s;
@@ -263,8 +324,13 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
     throw;
   } catch (const Halt&) {
     if (last_print >= 0) log << "\n";
-    log << "halted after cycle " << solver.cycles() << " (t = " << solver.time() << " s); continue with --restart "
-        << ckpt_path << "\n";
+    if (r.interrupted)
+      log << "interrupted at t = " << solver.time() << " s, cycle " << solver.cycles()
+          << "; continue with: drawbend run " << deck.path << " --out " << opt.out_dir << " --restart " << ckpt_path
+          << "\n";
+    else
+      log << "halted after cycle " << solver.cycles() << " (t = " << solver.time() << " s); continue with --restart "
+          << ckpt_path << "\n";
     r.halted = true;
     r.time = solver.time();
     r.cycles = solver.cycles();
@@ -303,14 +369,26 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
                   name + " (friction evaluated at the domain edge)\n";
       }
   sum.save((fs::path(opt.out_dir) / "summary.csv").string());
+  // The energy line adds up as printed: the work done on the sheet equals
+  // what it holds and what was removed, plus the residual the balance check
+  // measures (fe/solver.hpp, Energies::balance_error).
+  const double held = e.kinetic + e.internal + e.hourglass + e.damping - e.initial_kinetic;
+  // One number of decimals for every term (4 significant digits of the largest), so the sum reads exactly.
+  double big = std::abs(e.external_work);
+  for (double v : {e.kinetic, e.internal, e.hourglass, e.damping, e.initial_kinetic}) big = std::max(big, std::abs(v));
+  const int dec = big > 0 ? std::clamp(3 - static_cast<int>(std::floor(std::log10(big))), 0, 12) : 3;
+  auto E = [dec](double v) { return fmt_fixed(v, dec); };
   log << "summary: " << r.cycles << " cycles in " << fmt(r.wall_seconds, 3) << " s wall\n"
-      << "  energy: kinetic " << fmt(e.kinetic, 5) << " mJ, internal " << fmt(e.internal, 5) << " mJ, hourglass "
-      << fmt(e.hourglass, 5) << " mJ, external work " << fmt(e.external_work, 5) << " mJ, damping " << fmt(e.damping, 5)
-      << " mJ, friction " << fmt(e.friction, 5) << " mJ\n"
-      << "  energy balance error " << fmt(100 * r.energy_balance_error, 3) << " %; hourglass/internal "
-      << fmt(100 * r.hourglass_ratio, 3) << " %; kinetic/internal " << fmt(100 * r.kinetic_ratio, 3)
-      << " %; added mass " << fmt(100 * r.added_mass_ratio, 3) << " %; max penetration "
-      << fmt(r.max_penetration, 3) << " mm\n" << flog;
+      << "  energy [mJ]: work on the sheet " << E(e.external_work) << " = kinetic " << E(e.kinetic) << " + internal "
+      << E(e.internal) << " + hourglass " << E(e.hourglass) << " + damping " << E(e.damping)
+      << (e.initial_kinetic != 0 ? " - initial kinetic " + E(e.initial_kinetic) : "") << " + residual "
+      << E(e.external_work - held) << "\n"
+      << "  (the work is that of loads, supports and tools, friction included: friction dissipated "
+      << fmt(e.friction, 4) << " mJ; the contact penalty springs hold " << fmt(e.contact_stored, 4) << " mJ)\n"
+      << "  energy balance error " << fmt(100 * r.energy_balance_error, 3) << " % of the largest energy flow; "
+      << "hourglass/internal " << fmt(100 * r.hourglass_ratio, 3) << " %; kinetic/internal "
+      << fmt(100 * r.kinetic_ratio, 3) << " %; mass scaling x" << fmt(1 + r.added_mass_ratio, 4)
+      << "; max penetration " << fmt(r.max_penetration, 3) << " mm\n" << flog;
   return r;
 }
 

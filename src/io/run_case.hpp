@@ -4,6 +4,7 @@
 //   <out>/contact_<pair>_<k>.csv  contact map per slave node at each snapshot
 //   <out>/fields_<k>.vtu, <out>/fields.pvd   ParaView snapshots
 //   <out>/summary.csv           end-of-run invariants (energy balance, ratios, added mass)
+#include <csignal>
 #include <iosfwd>
 #include <string>
 
@@ -24,6 +25,10 @@ struct RunOptions {
   /// Stop right after the first checkpoint at or beyond this cycle (0: never),
   /// as an interruption would; for testing restarts.
   long halt_after_cycles = 0;
+  /// Set (to the signal number) by a SIGINT/SIGTERM handler: the run writes
+  /// <out_dir>/checkpoint.bin at the next cycle boundary, says how to continue
+  /// and returns with RunSummary::interrupted set.  nullptr: not watched.
+  const volatile std::sig_atomic_t* stop = nullptr;
 };
 
 /// Parse a --checkpoint-every value: "500" (cycles) or "2e-3s" (simulated seconds).
@@ -40,6 +45,7 @@ struct RunSummary {
   double wall_seconds = 0;
   bool halted = false;              ///< stopped by halt_after_cycles (no final outputs)
   std::string checkpoint;           ///< last checkpoint written ("" if none)
+  int interrupted = 0;              ///< the signal that stopped the run (0: none)
 };
 
 /// Write the contact map of every pair: position in global and tool

@@ -8,7 +8,11 @@
 #include <random>
 #include <set>
 
+#include <boost/math/distributions/fisher_f.hpp>
+#include <boost/math/special_functions/beta.hpp>
+
 #include "core/csv.hpp"
+#include "loop/effects.hpp"
 
 namespace drawbend::loop {
 
@@ -159,44 +163,48 @@ struct Probe {
   int dof = 0;
 };
 
-// Explained sum of squares of residual r by x over the probe rows, block-centred.
-double probe_ess(const Probe& p, const std::vector<double>& x, const std::vector<double>& r, const std::vector<int>& block,
-                 std::vector<double>& scratch_z) {
-  if (p.categorical) {  // SS between (block, level) cells minus SS between blocks
-    std::map<std::pair<int, int>, std::pair<double, int>> cl;
-    std::map<int, std::pair<double, int>> bl;
-    for (int i : p.rows) {
-      auto& a = cl[{block[i], static_cast<int>(x[i])}];
-      a.first += r[i], a.second++;
-      auto& b = bl[block[i]];
-      b.first += r[i], b.second++;
+// Explained sum of squares of the block-centred residual rc by x over units.
+// A unit is a test (test-level candidates: x constant within it) or a row;
+// ur[u] = sum of rc over the unit's rows, un[u] its row count, ub[u] its block.
+// Numeric: features x and x^2 centred per block (least squares); categorical:
+// one mean per (block, level).  With rc block-centred, sum(f_c rc) = sum(f rc).
+struct UnitProbe {
+  std::vector<double> ur, un;
+  std::vector<int> ub;
+  int nblocks = 0, nlev = 0, dof = 1;
+  bool categorical = false;
+  mutable std::vector<double> s1, s2, sn;
+  double ess(const std::vector<double>& xu) const {
+    if (categorical) {
+      s1.assign(static_cast<size_t>(nblocks) * nlev, 0.0);
+      sn.assign(s1.size(), 0.0);
+      for (size_t u = 0; u < ur.size(); ++u) {
+        const size_t k = static_cast<size_t>(ub[u]) * nlev + static_cast<size_t>(xu[u]);
+        s1[k] += ur[u], sn[k] += un[u];
+      }
+      double e = 0;
+      for (size_t k = 0; k < s1.size(); ++k)
+        if (sn[k] > 0) e += s1[k] * s1[k] / sn[k];
+      return e;
     }
-    double s = 0;
-    for (auto& [k, v] : cl) s += v.first * v.first / v.second;
-    for (auto& [k, v] : bl) s -= v.first * v.first / v.second;
-    return std::max(0.0, s);
+    s1.assign(nblocks, 0.0), s2.assign(nblocks, 0.0), sn.assign(nblocks, 0.0);
+    double b1 = 0, b2 = 0, q11 = 0, q12 = 0, q22 = 0;
+    for (size_t u = 0; u < ur.size(); ++u) {
+      const double x = xu[u], x2 = x * x, n = un[u];
+      b1 += x * ur[u], b2 += x2 * ur[u];
+      q11 += n * x2, q12 += n * x2 * x, q22 += n * x2 * x2;
+      s1[ub[u]] += n * x, s2[ub[u]] += n * x2, sn[ub[u]] += n;
+    }
+    double A11 = q11, A12 = q12, A22 = q22;
+    for (int k = 0; k < nblocks; ++k)
+      if (sn[k] > 0) A11 -= s1[k] * s1[k] / sn[k], A12 -= s1[k] * s2[k] / sn[k], A22 -= s2[k] * s2[k] / sn[k];
+    if (dof == 1) return A11 > 1e-12 ? b1 * b1 / A11 : 0.0;
+    const double det = A11 * A22 - A12 * A12;
+    if (det <= 1e-12 * std::max(1.0, A11 * A22)) return A11 > 1e-12 ? b1 * b1 / A11 : 0.0;
+    const double c1 = (A22 * b1 - A12 * b2) / det, c2 = (A11 * b2 - A12 * b1) / det;
+    return c1 * b1 + c2 * b2;
   }
-  // numeric: features z (and z^2), centred per block, least squares
-  const int q = p.dof;
-  std::map<int, std::array<double, 4>> m;  // block -> sum r, sum f1, sum f2, count
-  scratch_z.resize(x.size());
-  for (int i : p.rows) {
-    auto& a = m[block[i]];
-    a[0] += r[i], a[1] += x[i], a[2] += x[i] * x[i], a[3] += 1;
-  }
-  double A11 = 0, A12 = 0, A22 = 0, b1 = 0, b2 = 0;
-  for (int i : p.rows) {
-    const auto& a = m[block[i]];
-    const double rc = r[i] - a[0] / a[3], f1 = x[i] - a[1] / a[3], f2 = x[i] * x[i] - a[2] / a[3];
-    A11 += f1 * f1, b1 += f1 * rc;
-    if (q == 2) A12 += f1 * f2, A22 += f2 * f2, b2 += f2 * rc;
-  }
-  if (q == 1) return A11 > 1e-12 ? b1 * b1 / A11 : 0.0;
-  const double det = A11 * A22 - A12 * A12;
-  if (det <= 1e-12 * std::max(1.0, A11 * A22)) return A11 > 1e-12 ? b1 * b1 / A11 : 0.0;
-  const double c1 = (A22 * b1 - A12 * b2) / det, c2 = (A11 * b2 - A12 * b1) / det;
-  return c1 * b1 + c2 * b2;
-}
+};
 
 // Cross-validated fractional reduction of the residual SSE by the probe.
 double probe_cv(const Probe& p, const std::vector<double>& x, const std::vector<double>& r, const Folds& f) {
@@ -253,17 +261,30 @@ double probe_cv(const Probe& p, const std::vector<double>& x, const std::vector<
 
 }  // namespace
 
+int sequential_decision(int k, int b, double thr, double conf) {
+  if (b <= 0) return 0;
+  using boost::math::ibeta_inv;
+  const double lo = k > 0 ? ibeta_inv(static_cast<double>(k), static_cast<double>(b - k + 1), conf) : 0.0;
+  const double hi = k < b ? ibeta_inv(static_cast<double>(k + 1), static_cast<double>(b - k), 1 - conf) : 1.0;
+  if (hi <= thr) return 1;
+  if (lo > thr) return -1;
+  return 0;
+}
+
 std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands, const std::vector<double>& resid,
                                              const Folds& f, int permutations, std::uint64_t seed, double alpha) {
   std::vector<CandidateResult> out;
-  std::vector<double> scratch;
+  const double thr = alpha / std::max<size_t>(1, cands.size());
+  const size_t n = resid.size();
+  int nblocks = 0;
+  for (int b : f.block) nblocks = std::max(nblocks, b + 1);
   for (size_t ci = 0; ci < cands.size(); ++ci) {
     const Candidate& c = cands[ci];
     Probe p;
     p.categorical = c.categorical;
     std::vector<double> x = c.x;
     std::set<double> distinct;
-    for (size_t i = 0; i < x.size(); ++i)
+    for (size_t i = 0; i < n; ++i)
       if (std::isfinite(x[i]) && std::isfinite(resid[i])) {
         p.rows.push_back(static_cast<int>(i));
         distinct.insert(x[i]);
@@ -272,8 +293,40 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     res.name = c.name;
     res.kind = c.kind;
     res.permuted = c.test_level ? "between tests" : "within tests";
+    res.decision = "not significant";
     if (distinct.size() < 2) {
       res.p_value = 1;
+      out.push_back(res);
+      continue;
+    }
+    // Block-centred residuals over the probe rows.
+    std::vector<double> bs(nblocks, 0.0), bn(nblocks, 0.0), rc(n, 0.0);
+    for (int i : p.rows) bs[f.block[i]] += resid[i], bn[f.block[i]] += 1;
+    for (int i : p.rows) rc[i] = resid[i] - bs[f.block[i]] / bn[f.block[i]];
+    if (is_identity(c.name)) {  // random effect: one-way ANOVA of tests within blocks
+      std::map<int, std::pair<double, double>> tsum;
+      std::set<int> blocks;
+      double sst = 0;
+      for (int i : p.rows) {
+        auto& t = tsum[f.test[i]];
+        t.first += rc[i], t.second += 1;
+        sst += rc[i] * rc[i];
+        blocks.insert(f.block[i]);
+      }
+      double ssb = 0;
+      for (auto& [t, v] : tsum) ssb += v.first * v.first / v.second;
+      const double db = static_cast<double>(tsum.size()) - blocks.size(), dw = p.rows.size() - tsum.size();
+      res.permuted = "random effect (F test, not permuted)";
+      res.dof = static_cast<int>(db);
+      res.stat = ssb;
+      if (db > 0 && dw > 0 && sst - ssb > 0) {
+        const double msb = ssb / db, msw = (sst - ssb) / dw, F = msb / msw;
+        res.p_value = boost::math::cdf(boost::math::complement(boost::math::fisher_f_distribution<double>(db, dw), F));
+        const double n0 = static_cast<double>(p.rows.size()) / tsum.size();
+        res.sd_between = std::sqrt(std::max(0.0, (msb - msw) / n0));
+      }
+      res.significant = res.p_value <= thr;
+      res.decision = res.significant ? "significant (between-test scatter)" : "not significant";
       out.push_back(res);
       continue;
     }
@@ -289,47 +342,53 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
       p.dof = static_cast<int>(distinct.size()) - 1;
     }
     res.dof = p.dof;
-    res.stat = probe_ess(p, x, resid, f.block, scratch);
     res.cv_reduction = probe_cv(p, x, resid, f);
-    // Permutation groups: tests within blocks (test-level) or rows within tests.
-    std::map<int, std::vector<int>> groups;  // group -> units
-    std::vector<int> unit_of(x.size(), -1);
-    std::vector<std::vector<int>> unit_rows;
+    // Units (tests or rows) and permutation groups (blocks or tests).
+    UnitProbe up;
+    up.nblocks = nblocks;
+    up.dof = p.dof;
+    up.categorical = c.categorical;
+    if (c.categorical)
+      for (int i : p.rows) up.nlev = std::max(up.nlev, static_cast<int>(x[i]) + 1);
+    std::vector<double> xu;
+    std::vector<std::vector<int>> groups;
     {
-      std::map<int, int> unit_ix;  // test -> unit (test-level) ; row -> unit otherwise
+      std::map<int, int> unit_ix, group_ix;
       for (int i : p.rows) {
         const int key = c.test_level ? f.test[i] : i;
-        auto [it, fresh] = unit_ix.emplace(key, static_cast<int>(unit_rows.size()));
+        auto [it, fresh] = unit_ix.emplace(key, static_cast<int>(xu.size()));
         if (fresh) {
-          unit_rows.push_back({});
-          groups[c.test_level ? f.block[i] : f.test[i]].push_back(it->second);
+          xu.push_back(x[i]);
+          up.ur.push_back(0), up.un.push_back(0), up.ub.push_back(f.block[i]);
+          const int g = c.test_level ? f.block[i] : f.test[i];
+          auto [gt, gfresh] = group_ix.emplace(g, static_cast<int>(groups.size()));
+          if (gfresh) groups.push_back({});
+          groups[gt->second].push_back(it->second);
         }
-        unit_rows[it->second].push_back(i);
-        unit_of[i] = it->second;
+        up.ur[it->second] += rc[i], up.un[it->second] += 1;
       }
     }
-    std::vector<double> unit_val(unit_rows.size());
-    for (size_t u = 0; u < unit_rows.size(); ++u) unit_val[u] = x[unit_rows[u][0]];
+    res.stat = up.ess(xu);
     std::mt19937_64 rng(seed + 7919 * ci);
-    int ge = 0;
-    std::vector<double> xp = x;
-    std::vector<int> perm(unit_rows.size());
-    for (int b = 0; b < permutations; ++b) {
-      for (size_t u = 0; u < perm.size(); ++u) perm[u] = static_cast<int>(u);
-      for (auto& [g, units] : groups)  // Fisher-Yates within the group
-        for (size_t j = units.size(); j > 1; --j) {
-          const size_t r = rng() % j;
-          std::swap(perm[units[j - 1]], perm[units[r]]);
-        }
-      for (size_t u = 0; u < unit_rows.size(); ++u)
-        for (int i : unit_rows[u]) xp[i] = c.test_level ? unit_val[perm[u]] : x[unit_rows[perm[u]][0]];
-      if (probe_ess(p, xp, resid, f.block, scratch) >= res.stat * (1 - 1e-12)) ++ge;
+    int ge = 0, b = 0, dec = 0;
+    std::vector<double> xp = xu;
+    const int cap = std::max(1, permutations);
+    for (int batch = 100; b < cap; batch = std::min(cap - b, 2 * batch)) {
+      for (int j = 0; j < batch; ++j, ++b) {
+        for (const auto& g : groups)  // Fisher-Yates within the group
+          for (size_t k = g.size(); k > 1; --k) std::swap(xp[g[k - 1]], xp[g[rng() % k]]);
+        if (up.ess(xp) >= res.stat * (1 - 1e-12)) ++ge;
+      }
+      dec = sequential_decision(ge, b, thr);
+      if (dec != 0) break;
     }
-    res.p_value = (1.0 + ge) / (1.0 + permutations);
+    res.n_perm = b;
+    res.p_value = (1.0 + ge) / (1.0 + b);
+    res.significant = dec > 0 && res.cv_reduction > 0;
+    res.decision = dec > 0 ? (res.cv_reduction > 0 ? "significant" : "significant, no held-out gain")
+                           : dec < 0 ? "not significant" : "undecided";
     out.push_back(res);
   }
-  const double thr = alpha / std::max<size_t>(1, out.size());
-  for (auto& r : out) r.significant = r.p_value <= thr && r.cv_reduction > 0;
   std::stable_sort(out.begin(), out.end(), [](const CandidateResult& a, const CandidateResult& b) {
     if (a.significant != b.significant) return a.significant;
     if (a.significant) return a.cv_reduction > b.cv_reduction;

@@ -20,6 +20,18 @@
 // test permutes the variable within blocks: test-level variables (constant
 // within each test) are permuted between the tests of a block, row-level
 // variables between the rows of a test.  p = (1 + #{T* >= T}) / (1 + B).
+//
+// Sequential decisions (seed-independent): permutations run in batches; after
+// each batch the Clopper-Pearson interval of p at confidence 1 - 1e-3 is
+// compared with the threshold alpha / (number of candidates): wholly below ->
+// significant, wholly above -> not significant; at `permutations` (the cap)
+// still straddling -> "undecided".  So a decision differs between two seeds
+// with probability below 2e-3 per candidate.
+//
+// Identity variables (test_id) are not permuted (permuting test labels
+// between tests leaves the partition unchanged, so p = 1 by construction):
+// they are tested as a random effect, a one-way ANOVA F test of the residuals'
+// between-test scatter against the within-test scatter, block-centred.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -63,8 +75,15 @@ struct CandidateResult {
   int dof = 0;
   double stat = 0, p_value = 1, cv_reduction = 0;
   bool significant = false;
-  std::string permuted;  ///< "between tests" or "within tests"
+  std::string permuted;  ///< "between tests", "within tests" or "random effect (F test)"
+  std::string decision;  ///< significant, not significant, undecided
+  int n_perm = 0;        ///< permutations used (sequential)
+  double sd_between = 0; ///< identity variables: between-test standard deviation [N]
 };
+
+/// Clopper-Pearson decision of a permutation p-value with k exceedances in b
+/// permutations against thr: -1 not significant, +1 significant, 0 undecided.
+int sequential_decision(int k, int b, double thr, double confidence = 1e-3);
 
 /// Rank candidates; results sorted: significant first by CV reduction, then the
 /// rest by p-value.  Significance: p <= alpha / (number of candidates).

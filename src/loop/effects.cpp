@@ -13,6 +13,11 @@ std::string effect_name(EffectKind k) {
     case EffectKind::pin_surface: return "pin_surface";
     case EffectKind::drift: return "drift";
     case EffectKind::bending_tension: return "bending_tension";
+    case EffectKind::categorical: return "group_factor";
+    case EffectKind::generic_linear: return "generic_linear";
+    case EffectKind::generic_saturating: return "generic_saturating";
+    case EffectKind::direction_level: return "direction_levels";
+    case EffectKind::direction_fourier: return "direction_fourier";
   }
   return "?";
 }
@@ -36,6 +41,20 @@ std::string effect_meaning(EffectKind k) {
       return "linear drift with test order or time (tool wear, temperature): mu (1 + beta z); one slope";
     case EffectKind::bending_tension:
       return "back-tension term in the bending force F_B = b0 + b1 F_back per pin (Swift Eq. 2.1 has none)";
+    case EffectKind::categorical:
+      return "group factor: mu (1 + g_level) for every level but the first (e.g. coil, batch, lubricant lot); "
+             "one factor per level";
+    case EffectKind::generic_linear:
+      return "generic effect of a variable no library effect knows: mu (1 + beta z), z its z-score; sign and size "
+             "only, no physics claimed";
+    case EffectKind::generic_saturating:
+      return "generic saturating effect: mu (1 + beta tanh z), z the variable's z-score; no physics claimed";
+    case EffectKind::direction_level:
+      return "direction as a factor: mu (1 + g_dir) at each direction other than RD (0) and TD (90 deg), "
+             "against the RD/TD ellipse";
+    case EffectKind::direction_fourier:
+      return "smooth non-elliptical anisotropy: mu (1 + c1 sin^2 2phi + c2 (cos 2phi - cos 6phi)/2), "
+             "both terms zero at RD and TD";
   }
   return "";
 }
@@ -49,9 +68,16 @@ std::vector<EffectKind> effects_for(const std::string& c) {
   if (c == "speed_mm_s") return {K::stribeck};
   if (c == "pin_Ra_um") return {K::pin_surface, K::stribeck};
   if (c == "sliding_distance_mm") return {K::depletion};
-  if (c == "direction_deg") return {K::direction_harmonic};
+  if (c == "direction_deg") return {K::direction_harmonic, K::direction_fourier, K::direction_level};
   if (c == "test_order" || c == "time_s") return {K::drift};
   return {};
 }
+
+std::vector<EffectKind> generic_effects(bool categorical) {
+  if (categorical) return {EffectKind::categorical};
+  return {EffectKind::generic_linear, EffectKind::generic_saturating};
+}
+
+bool is_identity(const std::string& c) { return c == "test_id"; }
 
 }  // namespace drawbend::loop

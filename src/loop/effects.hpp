@@ -16,17 +16,29 @@ enum class EffectKind {
   pin_surface,         ///< mu * (1 + s_pin), one factor per pin but the first
   drift,               ///< mu * (1 + beta z), z = z-score of test order or time
   bending_tension,     ///< bending force b0 + b1 F_back per pin (instead of constant)
+  categorical,         ///< mu * (1 + g_level), one factor per level but the first (batch, coil, lot)
+  generic_linear,      ///< mu * (1 + beta z), z = z-score of a column no library effect knows
+  generic_saturating,  ///< mu * (1 + beta tanh(z)): saturating monotone alternative
+  direction_level,     ///< mu * (1 + g_dir) per direction level other than 0 and 90 deg
+  direction_fourier,   ///< mu * (1 + c1 sin^2(2 phi) + c2 (cos 2phi - cos 6phi)/2): smooth, zero at RD and TD
 };
 
 struct Effect {
   EffectKind kind = EffectKind::pressure_mu;
   std::string variable;  ///< the column a drift effect uses
   double lambda_mm = 0;  ///< depletion length (chosen on a grid)
+  int n_levels = 0;      ///< categorical: number of levels of the column
 };
 
 std::string effect_name(EffectKind k);
 std::string effect_meaning(EffectKind k);
 /// Library effects that can explain a candidate variable (empty: none does).
 std::vector<EffectKind> effects_for(const std::string& candidate);
+/// Generic effects for a variable no library effect explains (or whose library
+/// effects failed): categorical -> group factor; numeric -> linear and saturating.
+std::vector<EffectKind> generic_effects(bool categorical);
+/// Identity variables (test_id): handled by design as a random effect, never
+/// permuted and never added as a fixed effect.
+bool is_identity(const std::string& candidate);
 
 }  // namespace drawbend::loop

@@ -70,6 +70,8 @@ MapLibrary MapLibrary::load_dir(const std::string& dir) {
     for (const auto& c : t.comments) {
       const auto k = c.find("reference_back_tension_N:");
       if (k != std::string::npos) pm.fref_N = std::stod(c.substr(k + 25));
+      const auto b = c.find("bending_force_N:");
+      if (b != std::string::npos) pm.fbend_N = std::stod(c.substr(b + 16));
     }
     fs::path side = f;
     side.replace_extension(".ref");

@@ -14,10 +14,10 @@
 //    at entry and exit that carries the bending moment (peak force M_p/delta
 //    over delta = sqrt(R t), M_p = sigma_y t^2 w / 4).
 //
-// Either way the pressure at another back tension F is the map scaled linearly,
-// p(F) = p_ref F / F_ref (documented choice: the belt part of the pressure is
-// proportional to the tension; the FE maps of Table 5.13 were made at one
-// tension per pin).  Units: MPa, mm^2, N, mm.
+// The loop scales a map to another back tension with the mean strip tension of
+// Eq. 2.2 (model.hpp: map_pressure), not with the back tension alone.
+// weighted_pressure(F) below is the plain back-tension scaling, kept for
+// tables.  Units: MPa, mm^2, N, mm.
 #include <string>
 #include <vector>
 
@@ -28,6 +28,7 @@ namespace drawbend::loop {
 struct PinMap {
   double pin_d_mm = 0;
   double fref_N = 0;            ///< full-strip back tension of the map
+  double fbend_N = -1;          ///< full-strip bending force of the FE run (comment '# bending_force_N: N'); < 0 absent
   analysis::PressureMap map;    ///< full-strip areas
   std::string provenance;
   double S1 = 0, S2 = 0;        ///< moments sum(p A), sum(p^2 A) at fref

@@ -61,11 +61,67 @@ bool parse_number(const std::string& text, double& v, std::string& why) {
   return true;
 }
 
+// A spreadsheet's decimal comma ("12,5") as a decimal point; other text as it is.
+std::string decimal_point(const std::string& cell) {
+  const auto c = cell.find(',');
+  if (c == std::string::npos || cell.find(',', c + 1) != std::string::npos || cell.find('.') != std::string::npos)
+    return cell;
+  std::string t = cell;
+  t[c] = '.';
+  double v = 0;
+  std::string why;
+  return parse_number(t, v, why) ? t : cell;
+}
+
+// The largest force a strip draw-bend test can carry: a 25.4 mm x 1.04 mm
+// AA5754-O strip breaks near 6.5 kN (UTS ~ 245 MPa), and even a 50 mm x 5 mm
+// steel strip at 1500 MPa only reaches 4e5 N.  Beyond 1e6 N a value is a unit
+// or typing error, and one such row would dominate every least-squares fit.
+constexpr double kMaxForceN = 1e6;
+
+// Numeric extra columns: when every non-empty cell reads as a number and some
+// are NaN or infinite, those cells are problems (the row is dropped) instead
+// of making the column categorical.
+void nonfinite_extras(Dataset& d) {
+  for (size_t e = 0; e < d.extra_columns.size(); ++e) {
+    bool numeric = true, nonfinite = false;
+    for (const auto& s : d.rows) {
+      const std::string t = trim(s.extra[e]);
+      if (t.empty()) continue;
+      size_t used = 0;
+      double v = 0;
+      try {
+        v = std::stod(t, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != t.size() || used == 0) numeric = false;
+      else if (!std::isfinite(v)) nonfinite = true;
+    }
+    if (!numeric || !nonfinite) continue;
+    std::vector<Sample> keep;
+    for (auto& s : d.rows) {
+      const std::string t = trim(s.extra[e]);
+      double v = 0;
+      std::string why;
+      if (t.empty() || parse_number(t, v, why)) {
+        keep.push_back(std::move(s));
+        continue;
+      }
+      d.problems.push_back({d.path, s.line, d.extra_columns[e],
+                            why + " in a numeric column (the row is dropped; the column stays numeric)"});
+      ++d.rows_dropped;
+    }
+    d.rows = std::move(keep);
+  }
+}
+
 }  // namespace
 
-Dataset read_measured(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
+Dataset read_measured(const std::string& path) { return parse_measured(read_file(path), path); }
+
+Dataset parse_measured(const std::string& text, const std::string& path) {
+  std::istringstream in(text);
   Dataset d;
   d.path = path;
   std::string line;
@@ -75,9 +131,12 @@ Dataset read_measured(const std::string& path) {
   std::map<std::string, int> col;
   std::map<std::string, int> seen;  // row text -> first line
   bool header_ok = false;
+  char sep = ',';
+  bool decimal_comma = false;
   auto problem = [&](int l, const std::string& c, const std::string& m) { d.problems.push_back({path, l, c, m}); };
   while (std::getline(in, line)) {
     ++lineno;
+    if (lineno == 1) line = strip_bom(line);  // a UTF-8 byte-order mark, as spreadsheets write it
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (trim(line).empty()) continue;
     if (line[0] == '#') {
@@ -87,6 +146,12 @@ Dataset read_measured(const std::string& path) {
     }
     if (header.empty()) {
       header = split_csv_line(line);
+      if (semicolon_header(header)) {  // a spreadsheet export: ';' between cells, decimal commas
+        sep = ';';
+        decimal_comma = true;
+        header = split_csv_line(line, sep);
+        d.format_note = "read with ';' between cells and ',' as the decimal mark (line " + std::to_string(lineno) + ")";
+      }
       header_line = lineno;
       for (auto& h : header) h = trim(h);
       for (size_t i = 0; i < header.size(); ++i) {
@@ -109,7 +174,9 @@ Dataset read_measured(const std::string& path) {
       continue;
     }
     ++d.rows_read;
-    auto cells = split_csv_line(line);
+    auto cells = split_csv_line(line, sep);
+    if (decimal_comma)
+      for (auto& c : cells) c = decimal_point(c);
     if (cells.size() != header.size()) {
       problem(lineno, "", "has " + std::to_string(cells.size()) + " cells, the header (line " +
                               std::to_string(header_line) + ") has " + std::to_string(header.size()));
@@ -145,7 +212,15 @@ Dataset read_measured(const std::string& path) {
     for (const auto& e : d.extra_columns) s.extra.push_back(cell(e));
     if (d.problems.size() == before) {  // physical plausibility of parsed values
       if (s.pin_d_mm <= 0) problem(lineno, "pin_diameter_mm", "pin diameter must be positive");
-      if (s.speed_mm_s < 0) problem(lineno, "speed_mm_s", "negative sliding speed");
+      if (s.speed_mm_s <= 0)
+        problem(lineno, "speed_mm_s", "expected a sliding speed > 0 mm/s, found " + fmt(s.speed_mm_s) +
+                                          " (a test without sliding measures no friction)");
+      for (const char* f : {"back_tension_N", "outlet_force_N"}) {
+        const double v = std::string(f) == "back_tension_N" ? s.back_tension_N : s.outlet_force_N;
+        if (v > kMaxForceN)
+          problem(lineno, f, "expected a force below " + fmt(kMaxForceN) + " N (a strip test; check the units), found " +
+                                 fmt(v) + " N");
+      }
       if (s.direction_deg < 0 || s.direction_deg > 90)
         problem(lineno, "direction_deg", "direction must lie in 0..90 deg (0 = RD, 90 = TD)");
       if (s.back_tension_N < 0) problem(lineno, "back_tension_N", "negative force");
@@ -167,6 +242,7 @@ Dataset read_measured(const std::string& path) {
     else d.rows.push_back(std::move(s));
   }
   if (header.empty()) problem(0, "", "no header row (file empty or only comments)");
+  nonfinite_extras(d);
   return d;
 }
 

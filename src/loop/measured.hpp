@@ -47,6 +47,9 @@ struct Dataset {
   std::vector<Problem> problems;
   int rows_read = 0;     ///< data rows in the file
   int rows_dropped = 0;  ///< rows with at least one problem
+  /// How the file was read when it is not plain CSV (e.g. "';' between cells,
+  /// decimal commas"); empty otherwise.
+  std::string format_note;
 
   /// Column index of an extra column, -1 if absent.
   int extra_index(const std::string& name) const;
@@ -57,6 +60,8 @@ extern const std::vector<std::string> kRequiredColumns;
 /// Read a data file.  Only an unreadable file throws (InputError); everything
 /// else becomes a Problem.
 Dataset read_measured(const std::string& path);
+/// The same from text already read (`path` names it in messages).
+Dataset parse_measured(const std::string& text, const std::string& path);
 
 /// Write rows in the same format (comments first, then header, then rows).
 void write_measured(const std::string& path, const Dataset& d);

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "analysis/rope.hpp"
+#include <stdexcept>
 #include "core/csv.hpp"
 
 namespace drawbend::loop {
@@ -22,6 +23,47 @@ double ellipse(double a, double b, double phi) {
   const double den = std::sqrt(b * b * c * c + a * a * s * s);
   if (den < 1e-12) return a * c * c + b * s * s;
   return a * b / den;
+}
+
+BendingSource bending_source(const std::string& b) {
+  if (b == "linear" || b == "constant" || b == "rotating") return BendingSource::rotating;
+  if (b == "swift") return BendingSource::swift;
+  if (b == "fe") return BendingSource::fe;
+  if (b == "none") return BendingSource::none;
+  throw std::invalid_argument("--bending must be linear, constant, swift, fe or none, not '" + b + "'");
+}
+
+std::string bending_source_name(BendingSource b) {
+  switch (b) {
+    case BendingSource::rotating: return "rotating-pin rows";
+    case BendingSource::swift: return "Swift Eq. 2.1 (sigma_y 99.71 MPa, t 1.04 mm, w 25.4 mm, 90 deg)";
+    case BendingSource::fe: return "FE rotating-pin run (map file's bending_force_N)";
+    case BendingSource::none: return "none (F_B = 0: mu absorbs the bending force, an upper bound)";
+  }
+  return "?";
+}
+
+double map_pressure(const Row& r, double FB, double Ff, double FB_ref) {
+  return r.pw_ref * (2 * r.fback + FB + Ff) / (2 * r.fref + FB_ref);
+}
+
+std::vector<int> Design::levels(const std::string& column, std::vector<std::string>* names) const {
+  std::vector<int> out(rows.size(), 0);
+  std::map<std::string, int> ix;
+  std::vector<std::string> nm;
+  const int k = data->extra_index(column);
+  if (k < 0 && column != "pin" && column != "direction_deg")
+    throw InputError("no categorical column '" + column + "' for a group factor");
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const Sample& s = data->rows[i];
+    const std::string v = column == "pin" ? fmt(s.pin_d_mm) : column == "direction_deg" ? fmt(s.direction_deg)
+                                                                                         : s.extra[k];
+    auto [it, fresh] = ix.emplace(v, static_cast<int>(nm.size()));
+    if (fresh) nm.push_back(v);
+    out[i] = it->second;
+  }
+  if (names) *names = nm;
+  return out;
 }
 
 std::vector<double> Design::zscore(const std::string& column) const {
@@ -56,7 +98,7 @@ std::vector<double> Design::zscore(const std::string& column) const {
   return x;
 }
 
-Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_um) {
+Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_um, BendingSource bending) {
   Design d;
   d.data = &data;
   d.maps = &maps;
@@ -65,6 +107,9 @@ Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_
     pins.insert(s.pin_d_mm);
     if (!s.rotating) speeds.insert(s.speed_mm_s), dirs.insert(s.direction_deg);
   }
+  d.fixed_directions.assign(dirs.begin(), dirs.end());
+  for (double a : d.fixed_directions)
+    d.dir_param.push_back(std::abs(a) < 1e-9 || std::abs(a - 90) < 1e-9 ? -1 : d.n_dir_params++);
   d.direction_is_level = dirs.size() <= 2;
   d.notes.push_back(d.direction_is_level ? "direction is a cell level (at most 2 directions: one mu per direction)"
                                          : "directions vary (" + std::to_string(dirs.size()) +
@@ -87,6 +132,7 @@ Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_
     r.y = s.outlet_force_N;
     r.phi = s.direction_deg * M_PI / 180.0;
     r.sin2 = std::pow(std::sin(2 * r.phi), 2);
+    r.four2 = 0.5 * (std::cos(2 * r.phi) - std::cos(6 * r.phi));
     r.sliding = std::isnan(s.sliding_mm) ? 0.0 : s.sliding_mm;
     if (!s.rotating) {
       std::string cell = s.lubricant + (d.speed_is_level ? " | " + fmt(s.speed_mm_s) + " mm/s" : "");
@@ -100,7 +146,11 @@ Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_
       r.cell = it->second;
       (s.direction_deg < 45 ? d.cell_rd : d.cell_td)[r.cell] = 1;
       const PinMap& m = maps.at(s.pin_d_mm);
-      r.pw_map = m.weighted_pressure(s.back_tension_N);
+      r.pw_ref = m.S2 / m.S1;
+      r.fref = m.fref_N;
+      r.dir = static_cast<int>(std::find_if(d.fixed_directions.begin(), d.fixed_directions.end(),
+                                            [&](double a) { return close(a, s.direction_deg); }) -
+                               d.fixed_directions.begin());
       // Lubricant number (Eq. 3.1) at the frictionless average pressure (Eq. 2.2), SI units.
       const double p_avg = 2 * s.back_tension_N / (s.pin_d_mm * kStripWidthMm);  // MPa, F_x = F_y
       double ra_pin = 0.1;  // Table 5.2
@@ -119,14 +169,46 @@ Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_
   }
   for (auto& r : d.rows)
     if (!r.rotating) r.lgL -= lg_sum / std::max(1, n_fixed);
+  d.bend_fallback.assign(d.pins.size(), std::nan(""));
+  std::string missing, label;
   for (size_t p = 0; p < d.pins.size(); ++p) {
     bool rot = false, fixed = false;
     for (const auto& r : d.rows)
       if (r.pin == static_cast<int>(p)) (r.rotating ? rot : fixed) = true;
-    if (fixed && !rot)
-      d.notes.push_back("WARNING: no rotating-pin rows for the " + fmt(d.pins[p]) +
-                        " mm pin: no bending line, so its fixed-pin rows cannot be predicted");
+    const std::string pin = fmt(d.pins[p]) + " mm";
+    if (rot) {
+      label += (label.empty() ? "" : "; ") + pin + ": line fitted to its rotating-pin rows";
+      continue;
+    }
+    if (!fixed) continue;
+    d.missing_rotating = true;
+    missing += (missing.empty() ? "" : ", ") + pin;
+    double fb = std::nan("");
+    if (bending == BendingSource::swift)
+      fb = analysis::swift_bending_force(99.71, 1.04, kStripWidthMm, d.pins[p] / 2, kWrapRad,
+                                         analysis::ForceBasis::full_strip);
+    else if (bending == BendingSource::none)
+      fb = 0;
+    else if (bending == BendingSource::fe) {
+      const PinMap& m = maps.at(d.pins[p]);
+      if (!(m.fbend_N >= 0))
+        throw InputError(m.provenance + ": --bending fe needs a '# bending_force_N: <N>' line in the map file "
+                         "(the frictionless FE run's F_Y - F_X, full strip)");
+      fb = m.fbend_N;
+    }
+    d.bend_fallback[p] = fb;
+    if (bending != BendingSource::rotating)
+      label += (label.empty() ? "" : "; ") + pin + ": NO rotating-pin rows, F_B = " + fmt(fb, 4) + " N from " +
+               bending_source_name(bending);
   }
+  if (d.missing_rotating && bending == BendingSource::rotating)
+    throw InputError(data.path + ": no rotating-pin rows for the " + missing +
+                     " pin(s), so the bending force is unknown; choose a bending model with --bending swift (Eq. 2.1), "
+                     "--bending fe (FE maps with a bending_force_N line) or --bending none (mu absorbs F_B)");
+  d.bending_label = label;
+  if (d.missing_rotating) d.notes.insert(d.notes.begin(), "NO ROTATING-PIN ROWS for the " + missing + " pin(s): bending force from " +
+                                                               bending_source_name(bending) + " (every output says so)");
+  d.notes.push_back("bending force: " + label);
   d.notes.push_back("pressure maps: " + maps.label());
   return d;
 }
@@ -163,14 +245,18 @@ Layout layout(const Design& d, const ModelSpec& spec) {
       case EffectKind::pressure_mu: L.n += static_cast<int>(d.cells.size()); break;
       case EffectKind::pin_surface: L.n += static_cast<int>(d.pins.size()) - 1; break;
       case EffectKind::bending_tension: break;
+      case EffectKind::categorical: L.n += std::max(0, e.n_levels - 1); break;
+      case EffectKind::direction_level: L.n += d.n_dir_params; break;
+      case EffectKind::direction_fourier: L.n += 2; break;
       default: L.n += 1;
     }
   }
   return L;
 }
 
-double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th, int i, double* mu_out) {
-  const Row& r = d.rows[i];
+double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th, int i, double* mu_out,
+                   const Row* override_row = nullptr, double* p_out = nullptr) {
+  const Row& r = override_row ? *override_row : d.rows[i];
   const double bend = f.b0[r.pin] + f.b1[r.pin] * r.fback;
   if (std::isnan(bend)) return std::nan("");
   if (r.rotating) return r.fback + bend;
@@ -188,21 +274,31 @@ double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::
       case EffectKind::stribeck: factor += th[s] * r.lgL; break;
       case EffectKind::depletion: factor -= th[s] * (1 - std::exp(-r.sliding / e.lambda_mm)); break;
       case EffectKind::direction_harmonic: factor += th[s] * r.sin2; break;
-      case EffectKind::drift: factor += th[s] * f.drift_z[k][i]; break;
+      case EffectKind::drift:
+      case EffectKind::generic_linear: factor += th[s] * f.drift_z[k][i]; break;
+      case EffectKind::generic_saturating: factor += th[s] * std::tanh(f.drift_z[k][i]); break;
+      case EffectKind::categorical:
+        if (f.level[k][i] > 0) factor += th[s + f.level[k][i] - 1];
+        break;
+      case EffectKind::direction_level:
+        if (r.dir >= 0 && d.dir_param[r.dir] >= 0) factor += th[s + d.dir_param[r.dir]];
+        break;
+      case EffectKind::direction_fourier: factor += th[s] * r.sin2 + th[s + 1] * r.four2; break;
       case EffectKind::pin_surface:
         if (r.pin > 0) pinf += th[s + r.pin - 1];
         break;
       case EffectKind::bending_tension: break;
     }
   }
-  double c = 1, ff = 0, mu = 0;
+  double ff = 0, mu = 0;
   const int iters = a1 != 0 ? 4 : 1;
-  for (int k = 0; k < iters; ++k) {
-    mu = (mu0 + a1 * c * r.pw_map) * factor * pinf;
+  const double bend_ref = f.b0[r.pin] + f.b1[r.pin] * r.fref;
+  for (int k = 0; k < iters; ++k) {  // the map follows the mean tension (Eq. 2.2), friction included
+    mu = (mu0 + a1 * map_pressure(r, bend, ff, bend_ref)) * factor * pinf;
     ff = r.fback * (std::exp(mu * kWrapRad) - 1);
-    c = (2 * r.fback + bend + ff) / (2 * r.fback + bend);  // Eq. (2.2) ratio, as Table 5.15
   }
   if (mu_out) *mu_out = mu;
+  if (p_out) *p_out = map_pressure(r, bend, ff, bend_ref);
   return r.fback + bend + ff;
 }
 
@@ -218,7 +314,10 @@ void fit_bending(const Design& d, const std::vector<int>& train, bool linear, Fi
         x.push_back(d.rows[i].fback);
         y.push_back(d.rows[i].y - d.rows[i].fback);
       }
-    if (x.empty()) continue;
+    if (x.empty()) {
+      f.b0[p] = p < d.bend_fallback.size() ? d.bend_fallback[p] : std::nan("");
+      continue;
+    }
     const double n = x.size();
     double mx = 0, my = 0;
     for (size_t k = 0; k < x.size(); ++k) mx += x[k] / n, my += y[k] / n;
@@ -242,7 +341,8 @@ void fit_bending(const Design& d, const std::vector<int>& train, bool linear, Fi
   }
 }
 
-std::vector<std::string> friction_names(const Design& d, const ModelSpec& spec, const Layout& L) {
+std::vector<std::string> friction_names(const Design& d, const ModelSpec& spec, const Layout& L,
+                                        const std::vector<std::vector<std::string>>& level_names) {
   std::vector<std::string> n(L.n);
   for (size_t c = 0; c < d.cells.size(); ++c) {
     if (L.mu_rd[c] >= 0) n[L.mu_rd[c]] = "mu_RD [" + d.cells[c] + "]";
@@ -261,7 +361,20 @@ std::vector<std::string> friction_names(const Design& d, const ModelSpec& spec, 
       case EffectKind::depletion: n[s] = "beta depletion (lambda = " + fmt(e.lambda_mm) + " mm)"; break;
       case EffectKind::stribeck: n[s] = "beta per decade of L"; break;
       case EffectKind::direction_harmonic: n[s] = "beta sin^2(2 phi)"; break;
-      case EffectKind::drift: n[s] = "beta per SD of " + e.variable; break;
+      case EffectKind::drift:
+      case EffectKind::generic_linear: n[s] = "beta per SD of " + e.variable; break;
+      case EffectKind::generic_saturating: n[s] = "beta tanh(z) of " + e.variable; break;
+      case EffectKind::categorical:
+        for (int l = 1; l < e.n_levels; ++l) n[s + l - 1] = "g [" + e.variable + " = " + level_names[k][l] + "]";
+        break;
+      case EffectKind::direction_level:
+        for (size_t a = 0; a < d.fixed_directions.size(); ++a)
+          if (d.dir_param[a] >= 0) n[s + d.dir_param[a]] = "g [direction " + fmt(d.fixed_directions[a]) + " deg]";
+        break;
+      case EffectKind::direction_fourier:
+        n[s] = "c1 sin^2(2 phi)";
+        n[s + 1] = "c2 (cos 2phi - cos 6phi)/2";
+        break;
       case EffectKind::bending_tension: break;
     }
   }
@@ -328,8 +441,14 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   fit_bending(d, train, spec.bending_linear || spec.has(EffectKind::bending_tension), f);
   const Layout L = layout(d, spec);
   f.drift_z.assign(spec.effects.size(), {});
-  for (size_t k = 0; k < spec.effects.size(); ++k)
-    if (spec.effects[k].kind == EffectKind::drift) f.drift_z[k] = d.zscore(spec.effects[k].variable);
+  f.level.assign(spec.effects.size(), {});
+  f.level_names.assign(spec.effects.size(), {});
+  for (size_t k = 0; k < spec.effects.size(); ++k) {
+    const EffectKind kk = spec.effects[k].kind;
+    if (kk == EffectKind::drift || kk == EffectKind::generic_linear || kk == EffectKind::generic_saturating)
+      f.drift_z[k] = d.zscore(spec.effects[k].variable);
+    if (kk == EffectKind::categorical) f.level[k] = d.levels(spec.effects[k].variable, &f.level_names[k]);
+  }
   std::vector<int> rows;
   for (int i : train)
     if (!d.rows[i].rotating && !std::isnan(f.b0[d.rows[i].pin])) rows.push_back(i);
@@ -368,7 +487,7 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   if (n > 0 && p > 0) {
     const double s2 = n > p ? sse / (n - p) : 0.0;
     const Eigen::MatrixXd cov = (J.transpose() * J).completeOrthogonalDecomposition().pseudoInverse() * s2;
-    const auto names = friction_names(d, spec, L);
+    const auto names = friction_names(d, spec, L, f.level_names);
     for (int j = 0; j < p; ++j) f.params.push_back({names[j], th[j], std::sqrt(std::max(0.0, cov(j, j))), "-"});
   }
   return f;
@@ -420,6 +539,18 @@ double predict_mu(const Design& d, const Fit& f, int i) {
   const Layout L = layout(d, f.spec);
   double mu = std::nan("");
   predict_row(d, f, L, f.theta, i, &mu);
+  return mu;
+}
+
+double predict_mu_at(const Design& d, const Fit& f, int i, double phi_rad, double* p_out) {
+  const Layout L = layout(d, f.spec);
+  Row r = d.rows[i];
+  r.phi = phi_rad;
+  r.sin2 = std::pow(std::sin(2 * phi_rad), 2);
+  r.four2 = 0.5 * (std::cos(2 * phi_rad) - std::cos(6 * phi_rad));
+  r.dir = -1;  // RD and TD carry no direction-level factor
+  double mu = std::nan("");
+  predict_row(d, f, L, f.theta, i, &mu, &r, p_out);
   return mu;
 }
 

@@ -39,10 +39,13 @@ struct Row {
   bool rotating = false;
   double fback = 0, y = 0;  ///< back tension and measured outlet force [N]
   double phi = 0;           ///< direction [rad]
-  double pw_map = 0;        ///< map's force-weighted mean pressure at F_back, c = 1 [MPa]
+  double pw_ref = 0;        ///< map's force-weighted mean pressure at its reference tension [MPa]
+  double fref = 0;          ///< the map's reference back tension [N]
   double lgL = 0;           ///< log10 lubricant number, centred over fixed rows
   double sliding = 0;       ///< sliding distance [mm] (0 when absent)
   double sin2 = 0;          ///< sin^2(2 phi)
+  double four2 = 0;         ///< (cos 2phi - cos 6phi) / 2
+  int dir = -1;             ///< index into Design::fixed_directions (fixed rows)
 };
 
 struct Design {
@@ -55,14 +58,43 @@ struct Design {
   bool direction_is_level = true;  ///< at most 2 directions: direction is part of the cell
   std::vector<Row> rows;             ///< parallel to data->rows
   std::vector<std::string> notes;    ///< how the design was built
+  /// Bending force of pins without rotating-pin rows (NaN: the pin has them).
+  std::vector<double> bend_fallback;
+  std::string bending_label;         ///< how the bending force is obtained, per pin (every output shows it)
+  bool missing_rotating = false;     ///< some pin has fixed rows but no rotating rows
+  std::vector<double> fixed_directions;  ///< distinct directions of the fixed rows [deg], ascending
+  std::vector<int> dir_param;            ///< per fixed direction: its direction_level parameter, -1 at RD/TD
+  int n_dir_params = 0;
+  /// Level index per row of a categorical column (extra column, "pin", or
+  /// "direction_deg"), with the level names; throws InputError when absent.
+  std::vector<int> levels(const std::string& column, std::vector<std::string>* names) const;
   /// z-scored numeric column (for drift effects); NaN-free or throws.
   std::vector<double> zscore(const std::string& column) const;
 };
 
+/// Bending force for pins without rotating-pin rows:
+///   rotating  none given: such pins make make_design throw InputError (exit 2)
+///   swift     Eq. 2.1 (Swift 1948), sigma_y 99.71 MPa (Table 5.1), t 1.04 mm,
+///             full strip 25.4 mm, 90 deg wrap: constant per pin
+///   fe        the map file's '# bending_force_N: <full strip N>' line (our FE
+///             rotating-pin run at the map's reference tension): constant per pin
+///   none      F_B = 0: the friction coefficient absorbs the bending force
+///             (an upper bound of mu; labelled in every output)
+enum class BendingSource { rotating, swift, fe, none };
+BendingSource bending_source(const std::string& name);  ///< "linear"/"constant" -> rotating
+std::string bending_source_name(BendingSource b);
+
 /// Build the design.  Ra_sheet_um is the sheet roughness for the combined
 /// roughness of the Stribeck effect (pin Ra from column pin_Ra_um, else 0.1 um,
 /// Table 5.2).
-Design make_design(const Dataset& d, const MapLibrary& maps, double Ra_sheet_um = 0.4);
+Design make_design(const Dataset& d, const MapLibrary& maps, double Ra_sheet_um = 0.4,
+                   BendingSource bending = BendingSource::rotating);
+
+/// Map pressure at back tension F with bending force FB and friction force Ff:
+/// the map scales with the mean strip tension (Eq. 2.2, (F_x + F_y)/2), i.e. by
+/// (2F + FB + Ff) / (2 F_ref + FB(F_ref)).  FE maps measured at two back
+/// tensions: see Chapter 7, section on the maps' scaling.
+double map_pressure(const Row& r, double FB, double Ff, double FB_ref);
 
 struct ModelSpec {
   bool bending_linear = true;
@@ -83,6 +115,8 @@ struct Fit {
   std::vector<Param> params;        ///< bending + friction, with standard errors
   std::vector<double> b0, b1;       ///< bending line per pin (NaN: no rotating rows)
   std::vector<std::vector<double>> drift_z;  ///< z-scores of each drift effect's variable
+  std::vector<std::vector<int>> level;       ///< level index per row of each categorical effect
+  std::vector<std::vector<std::string>> level_names;
   double rss = 0;                   ///< fixed-pin rows
   int n_fixed = 0, n_friction_params = 0;
   bool converged = false;
@@ -104,5 +138,8 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec);
 double predict(const Design& d, const Fit& f, int i);
 /// Predicted friction coefficient (mean over the map) of fixed row i.
 double predict_mu(const Design& d, const Fit& f, int i);
+/// The same at direction phi [rad] (0 RD, pi/2 TD) instead of the row's own;
+/// p_out: the map's force-weighted mean pressure of the row [MPa].
+double predict_mu_at(const Design& d, const Fit& f, int i, double phi_rad, double* p_out);
 
 }  // namespace drawbend::loop

@@ -1,6 +1,8 @@
 // Loop outputs; see report.hpp.
 #include "loop/report.hpp"
 
+#include "loop/friction_model.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -10,15 +12,16 @@ namespace drawbend::loop {
 namespace fs = std::filesystem;
 
 CsvWriter candidates_table(const LoopResult& r) {
-  CsvWriter w({"round", "rank", "candidate", "kind", "dof", "permuted", "ess_N2", "p_value", "cv_reduction",
-               "significant"});
+  CsvWriter w({"round", "rank", "candidate", "kind", "dof", "permuted", "ess_N2", "p_value", "permutations",
+               "decision", "cv_reduction", "significant"});
   w.comment(" candidates ranked on held-out residuals (N); p from the blocked permutation test; cv_reduction = "
             "fractional SSE reduction of the probe under grouped cross-validation (" + r.cv_mode + ")");
   for (size_t k = 0; k < r.rankings.size(); ++k)
     for (size_t i = 0; i < r.rankings[k].size(); ++i) {
       const auto& c = r.rankings[k][i];
       w.row({std::to_string(k + 1), std::to_string(i + 1), c.name, c.kind, std::to_string(c.dof), c.permuted,
-             fmt(c.stat, 6), fmt(c.p_value, 4), fmt(c.cv_reduction, 4), c.significant ? "yes" : "no"});
+             fmt(c.stat, 6), fmt(c.p_value, 4), std::to_string(c.n_perm), c.decision, fmt(c.cv_reduction, 4),
+             c.significant ? "yes" : "no"});
     }
   return w;
 }
@@ -91,6 +94,14 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
   }
   std::ostringstream m;
   m << "# Closing the loop: " << d.data->path << "\n\n";
+  m << "**Conclusion.** " << r.conclusion << "\n\n";
+  m << "- Bending force: " << r.bending << ".\n";
+  if (std::isfinite(r.noise.sigma_N))
+    m << "- Replicate noise: " << fmt(r.noise.sigma_N, 4) << " N from the within-test scatter of " << r.noise.tests
+      << " tests (" << r.noise.rows << " rows; successive differences in " << r.noise.order
+      << " order about a line in the back tension per test).\n";
+  else
+    m << "- Replicate noise: not estimable (no test with 4 or more rows).\n";
   m << "- Rows: " << d.data->rows_read << " read, " << d.data->rows.size() << " used, " << d.data->rows_dropped
     << " dropped (" << d.data->problems.size() << " problems, `tables/problems.csv`).\n";
   m << "- Base model: " << r.base_model << ".\n- Pressure maps: " << r.maps << ".\n";
@@ -104,31 +115,57 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
       << fmt(s.threshold, 3) << " | " << fmt(s.rms_before, 4) << " | " << fmt(s.rms_after, 4) << " | "
       << fmt(s.max_before, 4) << " | " << fmt(s.max_after, 4) << " |\n";
   }
-  if (r.steps.empty()) m << "| – | no effect found | | | | " << fmt(r.cv.front().rms, 4) << " | | " << fmt(r.cv.front().max_abs, 4) << " | |\n";
+  if (r.steps.empty())
+    m << "| – | (no step) | | | | " << fmt(r.cv.front().rms, 4) << " | | " << fmt(r.cv.front().max_abs, 4) << " | |\n";
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    if (!r.steps[k].sign.empty()) m << "\nStep " << k + 1 << ": " << r.steps[k].sign << ".\n";
   m << "\nStopped because: " << r.stopped_because << ".\n";
-  if (!r.unexplained.empty()) {
-    m << "\nSignificant variables that no library effect explains:\n\n";
-    for (const auto& u : r.unexplained) m << "- " << u << "\n";
+  if (!r.remaining.empty()) {
+    m << "\nStructure remains unexplained; strongest remaining candidates:\n\n";
+    for (const auto& u : r.remaining) m << "- " << u << "\n";
   }
   if (!r.screened.empty()) {
-    m << "\nPassed the permutation screen but not confirmed by a model F test (not effects):\n\n";
+    m << "\nPassed the permutation screen; every effect tried for it (library and generic) failed the F test, the "
+         "held-out error or the minimum effect:\n\n";
     for (const auto& u : r.screened) m << "- " << u << "\n";
   }
+  m << "\n## Effects tried per step\n\n| step | variable | effect tried | held-out RMS (N) |\n|---|---|---|---|\n";
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    for (const auto& t : r.steps[k].tried)
+      m << "| " << k + 1 << " | " << r.steps[k].variable << " | " << t.first << " | " << fmt(t.second, 4) << " |\n";
   m << "\n## Added effects\n\n| step | effect | meaning | parameter | value ± se |\n|---|---|---|---|---|\n";
   for (size_t k = 0; k < r.steps.size(); ++k)
     for (const auto& p : r.steps[k].params)
       m << "| " << k + 1 << " | " << r.steps[k].effect << " | " << r.steps[k].meaning << " | " << p.name << " | "
         << fmt(p.value, 4) << " ± " << fmt(p.se, 2) << " |\n";
-  m << "\n## Candidates, first round\n\n| rank | candidate | kind | dof | permuted | p | CV reduction | significant "
-       "|\n|---|---|---|---|---|---|---|---|\n";
+  m << "\n## Candidates, first round\n\nSequential permutation p-values (stopped when the decision against the "
+       "threshold was clear at 99.9 % confidence, else undecided); test_id as a random effect (F test).\n\n"
+       "| rank | candidate | kind | dof | permuted | p | permutations | decision | CV reduction |\n"
+       "|---|---|---|---|---|---|---|---|---|\n";
   if (!r.rankings.empty())
     for (size_t i = 0; i < r.rankings[0].size(); ++i) {
       const auto& c = r.rankings[0][i];
       m << "| " << i + 1 << " | " << c.name << " | " << c.kind << " | " << c.dof << " | " << c.permuted << " | "
-        << fmt(c.p_value, 3) << " | " << fmt(c.cv_reduction, 3) << " | " << (c.significant ? "yes" : "no") << " |\n";
+        << fmt(c.p_value, 3) << " | " << c.n_perm << " | " << c.decision << " | " << fmt(c.cv_reduction, 3) << " |\n";
     }
+  const FrictionModel fm = identify_friction(d, r);
+  m << write_friction_outputs(d, r, fm, out);
+  if (!figdir.empty()) {  // one surface plot per lubricant and direction (our own script, in the output)
+    for (size_t k = 0; k < fm.surfaces.size(); ++k)
+      for (const char* dir : {"RD", "TD"}) {
+        const std::string tag = (k == 0 ? std::string() : "_" + std::to_string(k)) + "_" + dir;
+        const std::string dat = out + "/tables/surface" +
+                                (k == 0 ? std::string() : "_" + lubricant_tag(fm.surfaces[k].lubricant)) + "_" + dir + ".dat";
+        const std::string gp = out + "/figures/surface" + tag + ".gp", svg = "figures/surface" + tag + ".svg";
+        write_file_atomic(gp, "set terminal svg size 640,480 noenhanced\nset output '" + out + "/" + svg +
+                                  "'\nset xlabel 'p [MPa]'\nset ylabel 'v [mm/s]'\nset zlabel 'mu'\n"
+                                  "set title 'fitted mu(p, v), " + std::string(dir) + ", " +
+                                  fm.surfaces[k].lubricant + "'\nsplot '" + dat + "' with lines notitle\n");
+        if (std::system((gnuplot + " '" + gp + "' 2>/dev/null").c_str()) == 0) figs.push_back(svg);
+      }
+  }
   if (!figs.empty()) {
-    m << "\n## Residuals against each candidate (before: base model; after: final model)\n\n";
+    m << "\n## Figures: residuals against each candidate (before: base model; after: final model), fitted surfaces\n\n";
     for (const auto& f : figs) m << "![" << f << "](" << f << ")\n\n";
   }
   write_file_atomic(out + "/loop.md", m.str());

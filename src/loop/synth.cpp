@@ -1,8 +1,6 @@
 // Synthetic data with a hidden law; see synth.hpp.
 #include "loop/synth.hpp"
 
-#include "loop/model.hpp"  // ellipse (Eq. 6.3)
-
 #include <cmath>
 #include <algorithm>
 #include <map>
@@ -14,7 +12,8 @@
 namespace drawbend::loop {
 
 const std::vector<std::string>& synth_effects() {
-  static const std::vector<std::string> e = {"none", "depletion", "pin_surface", "speed", "drift", "direction", "pressure"};
+  static const std::vector<std::string> e = {"none",      "depletion", "pin_surface", "speed",   "drift",
+                                             "direction", "pressure",  "curvature",   "batch",   "temperature"};
   return e;
 }
 
@@ -27,6 +26,13 @@ const PinSpec kPins[3] = {{12.7, 1450, 1800, -0.0625, 396.84, 0.10},
                           {25.4, 1650, 2050, -0.0123, 129.39, 0.12},
                           {42.0, 1500, 2100, -0.0118, 70.133, 0.30}};
 const double kMuRD = 0.09, kMuTD = 0.075, kWrap = 1.5707963267948966;
+
+// The truth's own anisotropy (Eq. 6.3 written out here on purpose: the
+// generator shares no code path with the loop's model).
+double truth_ellipse(double a, double b, double phi) {
+  const double c = std::cos(phi), s = std::sin(phi);
+  return a * b / std::sqrt(b * b * c * c + a * a * s * s);
+}
 
 }  // namespace
 
@@ -42,9 +48,9 @@ Dataset synthesize(const SynthOptions& o, const MapLibrary& maps, SynthTruth& t)
   t.noise_N = o.noise_N;
   t.seed = o.seed;
   t.maps = maps.label();
-  const std::map<std::string, double> defaults = {{"none", 0},  {"depletion", 0.25}, {"pin_surface", 0.2},
-                                                  {"speed", 0.1}, {"drift", 0.15},   {"direction", 0.2},
-                                                  {"pressure", 0.002}};
+  const std::map<std::string, double> defaults = {
+      {"none", 0},         {"depletion", 0.25},  {"pin_surface", 0.2}, {"speed", 0.1},  {"drift", 0.15},
+      {"direction", 0.2},  {"pressure", 0.002},  {"curvature", 1e-4},  {"batch", 0.2},  {"temperature", 0.1}};
   t.amplitude = o.amplitude >= 0 ? o.amplitude : defaults.at(o.effect);
   const double A = t.amplitude;
   if (o.effect == "none") t.law = "no hidden effect", t.variable = "";
@@ -58,8 +64,19 @@ Dataset synthesize(const SynthOptions& o, const MapLibrary& maps, SynthTruth& t)
   if (o.effect == "drift")
     t.law = "mu (1 + A (order - mean) / N), order = test_order", t.variable = "test_order", t.aliases = {"test_order"};
   if (o.effect == "direction")
-    t.law = "mu (1 + A sin^2(2 phi)) on top of the RD/TD ellipse", t.variable = "direction_deg",
-    t.aliases = {"direction_deg"};
+    t.law = "mu (1 + A exp(-((phi - 45 deg)/20 deg)^2)) on top of the RD/TD ellipse (a bump at 45 deg, not "
+            "elliptical, not sin^2 2phi)",
+    t.variable = "direction_deg", t.aliases = {"direction_deg"};
+  if (o.effect == "curvature")
+    t.law = "mu(p) = 0.8 mu + A p^2 at the map's weighted pressure p (scaled with the mean tension)",
+    t.variable = "avg_pressure_MPa",
+    t.aliases = {"avg_pressure_MPa", "pin", "pin_diameter_mm", "inv_R_per_mm", "back_tension_N"};
+  if (o.effect == "batch")
+    t.law = "mu (1 + A) on the tests of coil C (coils A, B, C drawn at random per test)", t.variable = "coil",
+    t.aliases = {"coil"};
+  if (o.effect == "temperature")
+    t.law = "mu (1 + A (T - 21 C) / 1.5 C), T = temperature_C (19.5-22.5 C per test)", t.variable = "temperature_C",
+    t.aliases = {"temperature_C"};
   if (o.effect == "pressure")
     t.law = "mu(p) = mu0 + A p over the pressure map (mu0 = 0.7 mu)", t.variable = "avg_pressure_MPa",
     t.aliases = {"avg_pressure_MPa", "pin", "pin_diameter_mm", "inv_R_per_mm", "back_tension_N"};
@@ -67,7 +84,7 @@ Dataset synthesize(const SynthOptions& o, const MapLibrary& maps, SynthTruth& t)
   Dataset d;
   d.path = "synthetic";
   d.has_sliding = d.has_time = true;
-  d.extra_columns = {"test_order", "pin_Ra_um", "temperature_C"};
+  d.extra_columns = {"test_order", "pin_Ra_um", "temperature_C", "coil", "humidity_pct"};
   d.comments = {" synthetic draw-bend data (drawbend synth), seed " + std::to_string(o.seed) + ", noise sd " +
                     fmt(o.noise_N) + " N; the hidden law is in truth.json, not here",
                 " pressure maps: " + maps.label(),
@@ -96,6 +113,7 @@ Dataset synthesize(const SynthOptions& o, const MapLibrary& maps, SynthTruth& t)
     const PinSpec& ps = kPins[ts.pin];
     const std::string id = std::string(ts.rotating ? "rot" : "fix") + "-d" + fmt(ps.d) + "-" + std::to_string(ti);
     const double temp = 19.5 + 3 * unif(rng);
+    const char coil = "ABC"[rng() % 3];
     std::vector<int> slot(n);
     for (int k = 0; k < n; ++k) slot[k] = k;
     for (int j = n; j > 1; --j) std::swap(slot[j - 1], slot[rng() % j]);
@@ -114,25 +132,31 @@ Dataset synthesize(const SynthOptions& o, const MapLibrary& maps, SynthTruth& t)
       double y = F + bend;
       if (!ts.rotating) {
         const double phi = ts.dir * M_PI / 180;
-        double mu = ellipse(kMuRD, kMuTD, phi);
+        double mu = truth_ellipse(kMuRD, kMuTD, phi);
         if (o.effect == "depletion") mu *= 1 - A * (1 - std::exp(-s.sliding_mm / 60));
         if (o.effect == "pin_surface" && ts.pin == 2) mu *= 1 + A;
         if (o.effect == "speed") mu *= 1 - A * std::log10(s.speed_mm_s / 25.4);
         if (o.effect == "drift") mu *= 1 + A * (order[ti] - (N + 1) / 2) / N;
-        if (o.effect == "direction") mu *= 1 + A * std::pow(std::sin(2 * phi), 2);
+        if (o.effect == "direction") mu *= 1 + A * std::exp(-std::pow((ts.dir - 45) / 20, 2));
+        if (o.effect == "batch" && coil == 'C') mu *= 1 + A;
+        if (o.effect == "temperature") mu *= 1 + A * (temp - 21) / 1.5;
         double ff = F * (std::exp(mu * kWrap) - 1);
-        if (o.effect == "pressure") {  // mu(p) over the map, c by fixed point (as the loop's model)
-          const double pw = maps.at(ps.d).weighted_pressure(F);
-          double c = 1;
-          for (int it = 0; it < 6; ++it) {
-            ff = F * (std::exp((0.7 * mu + A * c * pw) * kWrap) - 1);
-            c = (2 * F + bend + ff) / (2 * F + bend);
+        if (o.effect == "pressure" || o.effect == "curvature") {
+          // The truth's pressure: the map's weighted pressure scaled with the
+          // mean strip tension (F_x + F_y)/2 (Eq. 2.2), friction included.
+          const PinMap& m = maps.at(ps.d);
+          const double mean_ref = 2 * m.fref_N + ps.b0 + ps.b1 * m.fref_N;
+          for (int it = 0; it < 8; ++it) {
+            const double pw = m.S2 / m.S1 * (2 * F + bend + ff) / mean_ref;
+            const double mu_p = o.effect == "pressure" ? 0.7 * mu + A * pw : 0.8 * mu + A * pw * pw;
+            ff = F * (std::exp(mu_p * kWrap) - 1);
           }
         }
         y += ff;
       }
       s.outlet_force_N = y + noise(rng);
-      s.extra = {std::to_string(order[ti]), fmt(ps.ra), fmt(temp, 4)};
+      s.extra = {std::to_string(order[ti]), fmt(ps.ra), fmt(temp, 4), std::string(1, coil),
+                 fmt(40 + 20 * unif(rng), 4)};
       d.rows.push_back(s);
     }
   }

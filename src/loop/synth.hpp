@@ -9,7 +9,8 @@
 // the pin's range in a shuffled order along the sliding distance (20-200 mm),
 // so back tension and sliding distance are not confounded.  Extra columns:
 // test_order (random run order), pin_Ra_um (per pin: 0.10, 0.12, 0.30 um),
-// temperature_C (irrelevant, 19.5-22.5 C).
+// temperature_C (per test, 19.5-22.5 C), coil (A/B/C per test), humidity_pct
+// (per row, 40-60 %): decoys unless the hidden law uses them.
 //
 // Truth: bending F_B = Table 5.3 line per pin; friction by the rope formula
 // (Eq. 5.1) with mu = ellipse(0.09 RD, 0.075 TD) times the hidden law, or for
@@ -40,7 +41,9 @@ struct SynthTruth {
   std::uint64_t seed = 0;
 };
 
-/// none, depletion, pin_surface, speed, drift, direction, pressure
+/// none, depletion, pin_surface, speed, drift, direction, pressure, curvature, batch, temperature.
+/// The generator writes its laws out itself and calls nothing of the loop's
+/// model (no shared code path through which the loop could recognise it).
 const std::vector<std::string>& synth_effects();
 
 Dataset synthesize(const SynthOptions& o, const MapLibrary& maps, SynthTruth& truth);

@@ -77,6 +77,7 @@ class CombinedPlasticity final : public Material {
   double poisson_ratio() const override { return el_.nu; }
   double plastic_strain(const double* state) const override { return state[0]; }
   bool directional() const override { return aniso_; }
+  bool uses_spin() const override { return aniso_ || nback_ > 0; }
   double tangent_ratio(const double* sigma, const double* state) const override;
   std::string describe() const override;
 

@@ -74,6 +74,9 @@ class Material {
   /// response (and the default): 1.  J2 on the yield surface: the uniaxial elastoplastic ratio
   /// E_t/E = H/(E + H), H the hardening modulus; 0 for perfect plasticity (callers may want a floor).
   virtual double tangent_ratio(const double* /*sigma*/, const double* /*state*/) const { return 1.0; }
+  /// Whether update() needs the spin (its state holds tensors or axes to rotate); the element
+  /// passes a zero spin otherwise, which saves the work on the isotropic models' hot path.
+  virtual bool uses_spin() const { return false; }
   /// Whether the state carries the sheet axes (anisotropic models): the solver then builds
   /// them for init_state() and refuses a rolling direction normal to the sheet.
   virtual bool directional() const { return false; }

@@ -3,8 +3,10 @@
 // embedded SVG).
 //
 // 1. Read options.  2. Find the chapters.  3. Expand their Markdown.
-// 4. Run Pandoc.
+// 4. Run Pandoc (--columns=100000: a pipe table never gets fixed relative
+//    column widths, so the browser sizes its columns and a wide table scrolls).
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <iostream>
 
@@ -12,6 +14,28 @@
 #include "core/options.hpp"
 #include "study/checks.hpp"
 #include "study/report_assembler.hpp"
+#include "study/report_front.hpp"
+
+namespace {
+
+// The thesis as its source text names it: the title page of
+// /work/shared/seed/000_9db729c8f9049a50.txt prints the title and an empty
+// "By" line, so the author, university and year are not stated there.
+const char* thesis_citation =
+    "*A Draw-Bend Friction Test Applied to Measurement and Modeling of Anisotropic Friction on Sheet Metal*, "
+    "PhD thesis (its source text names no author, university or year; its cup-drawing experiments, Sec. 6.6, "
+    "were run at McMaster University).";
+
+/// The date the report is assembled (UTC), or SOURCE_DATE_EPOCH's for reproducible builds.
+std::string report_date() {
+  std::time_t t = std::time(nullptr);
+  if (const char* e = std::getenv("SOURCE_DATE_EPOCH")) t = static_cast<std::time_t>(std::atoll(e));
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d", std::gmtime(&t));
+  return buf;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace drawbend;
@@ -24,6 +48,8 @@ int main(int argc, char** argv) {
   opt.add(pandoc, "pandoc", "pandoc executable");
   opt.add(css, "css", "style sheet embedded in the HTML");
   opt.add(title, "title", "report title");
+  study::FrontInfo front{thesis_citation, report_date()};
+  opt.add(front.citation, "citation", "the thesis reproduced, as shown on the front page (Markdown)");
   std::string errata;
   opt.add(errata, "errata", "errata list to audit: every entry must match a check (empty: skip)");
   try {
@@ -50,10 +76,10 @@ int main(int argc, char** argv) {
       for (const auto& s : study::chapter_staleness(ch))
         std::cerr << "drawbend-report: warning: chapter " << ch.id << " is STALE: " << s << "\n";
     const std::string md = std::filesystem::path(out).replace_extension(".md").string();
-    write_file_atomic(md, study::assemble_report(chapters, title));
+    write_file_atomic(md, study::assemble_report(chapters, title, front));
     const std::string tmp = out + ".tmp.html";
     const std::string cmd = pandoc + " '" + md + "' --from markdown --to html5 --standalone --self-contained" +
-                            " --mathml --toc --toc-depth=2 --css '" + css + "' -o '" + tmp + "'";
+                            " --mathml --toc --toc-depth=1 --columns=100000 --css '" + css + "' -o '" + tmp + "'";
     if (std::system(cmd.c_str()) != 0) throw std::runtime_error("pandoc failed: " + cmd);
     std::filesystem::rename(tmp, out);
     std::cout << "report: " << out << " (" << chapters.size() << " chapters)\n";

@@ -73,18 +73,6 @@ std::vector<double> area_by_pressure(const std::vector<MapNode>& map, const std:
   return a;
 }
 
-void save_map_grid(const std::vector<MapNode>& map, const std::string& path, const std::string& what, double lo,
-                   double hi) {
-  std::string text = "# " + what + "\n# angle_deg,y_mm,pressure_MPa (gnuplot grid: one block per row)\n";
-  for (const auto& r : rows_of(map)) {
-    for (const auto& q : r.nodes)
-      if (q.angle_deg >= lo && q.angle_deg <= hi)
-        text += fmt(q.angle_deg, 6) + "," + fmt(q.y, 6) + "," + fmt(q.pressure, 6) + "\n";
-    text += "\n";
-  }
-  write_file_atomic(path, text);
-}
-
 namespace {
 /// Pressure of a row at angle a: linear between its nodes, zero outside them.
 double row_pressure(const Row& r, double a) {
@@ -97,7 +85,41 @@ double row_pressure(const Row& r, double a) {
     }
   return 0.0;
 }
+/// The common angle grid of a map: half the median node spacing of the first
+/// row, from the smallest to the largest node angle, clipped to [lo, hi].
+std::vector<double> common_angles(const std::vector<Row>& rows, double lo, double hi, const std::string& path) {
+  if (rows.empty() || rows.front().nodes.size() < 2) throw InputError(path + ": empty contact map");
+  double a0 = INFINITY, a1 = -INFINITY;
+  for (const auto& r : rows)
+    for (const auto& q : r.nodes) a0 = std::min(a0, q.angle_deg), a1 = std::max(a1, q.angle_deg);
+  const auto& c = rows.front().nodes;
+  std::vector<double> gaps;
+  for (std::size_t i = 0; i + 1 < c.size(); ++i) gaps.push_back(c[i + 1].angle_deg - c[i].angle_deg);
+  std::nth_element(gaps.begin(), gaps.begin() + gaps.size() / 2, gaps.end());
+  const double step = std::max(gaps[gaps.size() / 2] / 2, 1e-3);
+  std::vector<double> v;
+  for (double a = std::max(a0, lo); a <= std::min(a1, hi) + 1e-9; a += step) v.push_back(a);
+  return v;
+}
 }  // namespace
+
+void save_map_grid(const std::vector<MapNode>& map, const std::string& path, const std::string& what, double lo,
+                   double hi) {
+  // Rows of a deformed strip do not share their nodes' angles; a heat map
+  // drawn through the nodes themselves comes out as slanted parallelograms.
+  // Each row is interpolated onto one angle grid, so the map is a regular
+  // (angle x width) grid.
+  const auto rows = rows_of(map);
+  const auto angles = common_angles(rows, lo, hi, path);
+  std::string text = "# " + what + "\n# angle_deg,y_mm,pressure_MPa (gnuplot grid: one block per row; each row "
+                     "interpolated linearly between its nodes onto a common angle grid, zero beyond its ends)\n";
+  for (const auto& r : rows) {
+    for (double a : angles) text += fmt(a, 6) + "," + fmt(r.y, 6) + "," + fmt(row_pressure(r, a), 6) + "\n";
+    text += "\n";
+  }
+  write_file_atomic(path, text);
+}
+
 
 void save_row_profiles(const std::vector<MapNode>& map, const std::string& path, const std::string& what) {
   const auto rows = rows_of(map);
@@ -108,18 +130,7 @@ void save_row_profiles(const std::vector<MapNode>& map, const std::string& path,
   w.comment("pressure [MPa] along each row of nodes (y [mm] from the strip centre), interpolated linearly between "
             "the row's nodes onto a common angle grid (half the nodes' spacing; zero beyond a row's ends); angle "
             "from the inlet tangent point");
-  if (rows.empty() || rows.front().nodes.size() < 2) throw InputError(path + ": empty contact map");
-  double lo = INFINITY, hi = -INFINITY;
-  for (const auto& r : rows)
-    for (const auto& q : r.nodes) lo = std::min(lo, q.angle_deg), hi = std::max(hi, q.angle_deg);
-  const auto& c = rows.front().nodes;
-  std::vector<double> gaps;
-  for (std::size_t i = 0; i + 1 < c.size(); ++i) gaps.push_back(c[i + 1].angle_deg - c[i].angle_deg);
-  std::nth_element(gaps.begin(), gaps.begin() + gaps.size() / 2, gaps.end());
-  const double step = std::max(gaps[gaps.size() / 2] / 2, 1e-3);
-  lo = std::max(lo, -20.0);
-  hi = std::min(hi, 110.0);
-  for (double a = lo; a <= hi + 1e-9; a += step) {
+  for (double a : common_angles(rows, -20.0, 110.0, path)) {
     std::vector<std::string> row{fmt(a, 6)};
     for (const auto& r : rows) row.push_back(fmt(row_pressure(r, a), 6));
     w.row(row);

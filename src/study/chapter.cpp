@@ -23,6 +23,8 @@ Chapter::Chapter(std::string id, std::string description)
   options_.add(out_dir_, "out", "output directory of this chapter");
   options_.add(figures_dir_, "figures", "directory with the gnuplot scripts");
   options_.add(gnuplot_, "gnuplot", "gnuplot executable");
+  options_.add(figure_format_, "figure-format",
+               "svg, png or pdf: png and pdf are written beside each figure's SVG (which the report embeds)");
   options_.add(tier_, "tier",
                "mesh tier of this run, quick or full: a documented disagreement may hold for one tier only "
                "(column `tier` of data/thesis/disagreements.csv); the full tier's FULL_ARGS pass --tier full");
@@ -35,6 +37,8 @@ bool Chapter::parse(int argc, char** argv) {
   fs::create_directories(out_dir_ + "/tables");
   fs::create_directories(out_dir_ + "/figures");
   Errata errata = Errata::load(data("thesis/errata.csv"));  // first: a missing data dir names errata.csv
+  if (figure_format_ != "svg" && figure_format_ != "png" && figure_format_ != "pdf")
+    throw InputError("--figure-format: expected svg, png or pdf, found '" + figure_format_ + "'");
   if (tier_ != "quick" && tier_ != "full")
     throw InputError("--tier: expected quick or full, found '" + tier_ + "'");
   Errata disagreements = Errata::load(data("thesis/disagreements.csv"), tier_);
@@ -71,13 +75,19 @@ void Chapter::plot(const std::string& script, const std::string& stem,
   const std::string gp = figures_dir_ + "/" + script + ".gp";
   if (!fs::exists(gp)) throw InputError(gp + ": gnuplot script not found");
   note_input(gp);
-  const std::string final_svg = out("figures/" + stem + ".svg");
-  const std::string tmp_svg = final_svg + ".tmp";
-  std::string e = "outfile='" + tmp_svg + "'; tables='" + out("tables") + "'; figdir='" + figures_dir_ + "'";
-  for (const auto& [k, v] : vars) e += "; " + k + "='" + v + "'";
-  const std::string cmd = gnuplot_ + " -e \"" + e + "\" '" + gp + "'";
-  if (std::system(cmd.c_str()) != 0) throw std::runtime_error("gnuplot failed: " + cmd);
-  fs::rename(tmp_svg, final_svg);  // atomic: a figure is complete or absent
+  // The SVG always (the report embeds it); a PNG or PDF beside it on request.
+  std::vector<std::string> formats{"svg"};
+  if (figure_format_ != "svg") formats.push_back(figure_format_);
+  for (const auto& f : formats) {
+    const std::string final_file = out("figures/" + stem + "." + f);
+    const std::string tmp = final_file + ".tmp";
+    std::string e = "outfile='" + tmp + "'; figformat='" + f + "'; tables='" + out("tables") + "'; figdir='" +
+                    figures_dir_ + "'";
+    for (const auto& [k, v] : vars) e += "; " + k + "='" + v + "'";
+    const std::string cmd = gnuplot_ + " -e \"" + e + "\" '" + gp + "'";
+    if (std::system(cmd.c_str()) != 0) throw std::runtime_error("gnuplot failed: " + cmd);
+    fs::rename(tmp, final_file);  // atomic: a figure is complete or absent
+  }
 }
 
 double Chapter::rederive_scalar(const std::string& check_id, const std::string& quantity, const std::string& target,

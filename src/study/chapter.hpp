@@ -68,6 +68,7 @@ class Chapter {
  private:
   std::string id_, data_dir_, out_dir_, figures_dir_, gnuplot_ = "gnuplot";
   bool allow_failures_ = false;
+  std::string figure_format_ = "svg";  ///< svg, or png/pdf written beside each SVG (the report embeds the SVG)
   std::string tier_ = "quick";  ///< mesh tier of the run: selects the disagreements that apply (quick, full)
   Options options_;
   std::unique_ptr<Checks> checks_;

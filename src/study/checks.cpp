@@ -19,6 +19,18 @@ std::string to_string(Status s) {
   return "?";
 }
 
+std::string to_string(Kind k) {
+  switch (k) {
+    case Kind::rederived: return "rederived";
+    case Kind::simulated: return "simulated";
+    case Kind::measured: return "measured";
+    case Kind::verification: return "verification";
+    case Kind::health: return "health";
+    case Kind::software: return "software";
+  }
+  throw std::logic_error("check kind out of range");
+}
+
 Errata Errata::load(const std::string& path, const std::string& tier) {
   Errata e;
   const CsvTable t = read_csv(path);
@@ -67,7 +79,11 @@ std::vector<std::string> Errata::unused(const std::vector<std::string>& ids) con
 Checks::Checks(std::string chapter, Errata errata, Errata disagreements)
     : chapter_(std::move(chapter)), errata_(std::move(errata)), disagreements_(std::move(disagreements)) {}
 
-const Check& Checks::add(Check c, const Errata& excuse, Status excused, const std::string& reason) {
+const Check& Checks::add(Check c, const std::string& reason) {
+  (void)to_string(c.kind);  // throws on a kind outside the enumeration
+  const bool rederived = c.kind == Kind::rederived;
+  const Errata& excuse = rederived ? errata_ : disagreements_;
+  const Status excused = rederived ? Status::erratum : Status::disagree;
   for (const auto& o : checks_)
     if (o.id == c.id) throw std::logic_error("duplicate check id " + c.id);
   // Allow floating-point round-off (1e-9 relative) on top of the stated tolerance.
@@ -90,22 +106,19 @@ const Check& Checks::add(Check c, const Errata& excuse, Status excused, const st
   return checks_.back();
 }
 
-const Check& Checks::agree(const std::string& id, const std::string& q, double thesis, double ours, double tol,
-                           const std::string& unit, const std::string& reason) {
-  return add({id, q, thesis, ours, tol, unit, "", Status::pass}, disagreements_, Status::disagree, reason);
+const Check& Checks::agree(Kind kind, const std::string& id, const std::string& q, double thesis, double ours,
+                           double tol, const std::string& unit, const std::string& reason) {
+  return add({kind, id, q, thesis, ours, tol, unit, "", Status::pass}, reason);
 }
 
 const Check& Checks::rederive(const std::string& id, const std::string& q, double thesis, double ours,
                               double tol, const std::string& unit, const std::string& reason) {
-  return add({id, q, thesis, ours, tol, unit, "", Status::pass}, errata_, Status::erratum, reason);
+  return add({Kind::rederived, id, q, thesis, ours, tol, unit, "", Status::pass}, reason);
 }
 
-const Check& Checks::claim(const std::string& id, const std::string& q, bool ours, const std::string& reason) {
-  // A claim about the thesis's own numbers is excused by an erratum; a claim
-  // tested on our simulations by a documented disagreement.
-  const bool disagreement = !disagreements_.explain(id).empty();
-  return add({id, q, 1.0, ours ? 1.0 : 0.0, 0.0, "true=1", "", Status::pass},
-             disagreement ? disagreements_ : errata_, disagreement ? Status::disagree : Status::erratum, reason);
+const Check& Checks::claim(Kind kind, const std::string& id, const std::string& q, bool ours,
+                           const std::string& reason) {
+  return add({kind, id, q, 1.0, ours ? 1.0 : 0.0, 0.0, "true=1", "", Status::pass}, reason);
 }
 
 int Checks::count(Status s) const {
@@ -115,10 +128,10 @@ int Checks::count(Status s) const {
 }
 
 void Checks::write(const std::string& path) const {
-  CsvWriter w({"id", "quantity", "thesis", "ours", "tolerance", "unit", "status", "note"});
+  CsvWriter w({"id", "kind", "quantity", "thesis", "ours", "tolerance", "unit", "status", "note"});
   w.comment("checks of chapter " + chapter_ + " against the thesis (drawbend " DRAWBEND_VERSION ")");
   for (const auto& c : checks_)
-    w.row({c.id, c.quantity, fmt(c.thesis, 8), fmt(c.ours, 8), fmt(c.tolerance, 3), c.unit, to_string(c.status),
+    w.row({c.id, to_string(c.kind), c.quantity, fmt(c.thesis, 8), fmt(c.ours, 8), fmt(c.tolerance, 3), c.unit, to_string(c.status),
            c.note});
   w.save(path);
 }

@@ -1,12 +1,13 @@
 #include "study/report_assembler.hpp"
 
 #include <algorithm>
-#include <array>
 #include <filesystem>
 #include <map>
 #include <sstream>
 
 #include "core/provenance.hpp"
+#include "study/check_format.hpp"
+#include "study/report_front.hpp"
 
 namespace drawbend::study {
 
@@ -42,8 +43,8 @@ std::string stem_of(const std::string& path) { return fs::path(path).stem().stri
 std::string checks_table(const ChapterSource& ch) {
   const CsvTable t = read_csv(ch.out_dir + "/checks.csv");
   return "::: {#checks-" + ch.id + " .checks}\n\n" +
-         markdown_table(t, "Checks of " + ch.id + " against the thesis (" + std::to_string(t.rows.size()) +
-                               " checks).", t.column("status")) +
+         checks_html_table(t, "Checks of " + ch.id + " against the thesis (" + std::to_string(t.rows.size()) +
+                                  " checks; numbers rounded to the digits the tolerance resolves).") +
          "\n:::\n";
 }
 
@@ -162,74 +163,10 @@ std::string expand_chapter(const std::string& markdown, const ChapterSource& ch)
   return out.str();
 }
 
-std::string checks_summary(const std::vector<ChapterSource>& chapters) {
+std::string assemble_report(const std::vector<ChapterSource>& chapters, const std::string& title,
+                            const FrontInfo& info) {
   std::ostringstream os;
-  os << "# Summary of checks {#summary .unnumbered}\n\n"
-     << "Every chapter compares its numbers with the thesis. *pass*: within the stated tolerance; "
-     << "*fail*: outside it; *erratum*: the thesis disagrees with its own inputs, explained in the "
-     << "chapter's checks table; *disagree*: our simulation does not reproduce the published value, and "
-     << "the investigation's finding is stated (the tolerance is not widened).\n\n";
-  os << "| Chapter | pass | fail | erratum | disagree | checks table |\n|---|---:|---:|---:|---:|---|\n";
-  int tp = 0, tf = 0, te = 0, td = 0;
-  std::vector<std::array<std::string, 5>> disagreements;  // id, chapter, thesis, ours, note
-  // Errata grouped by explanation: one row per cause, not per check.
-  std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>> causes;
-  for (const auto& ch : chapters) {
-    const std::string path = ch.out_dir + "/checks.csv";
-    if (!fs::exists(path)) {
-      os << "| " << ch.id << " | - | - | - | - | not run |\n";
-      continue;
-    }
-    const CsvTable t = read_csv(path);
-    int p = 0, f = 0, e = 0, d = 0;
-    for (const auto& r : t.rows) {
-      const std::string& s = t.text(r, "status");
-      p += s == "pass";
-      f += s == "fail";
-      e += s == "erratum";
-      d += s == "disagree";
-      if (s == "disagree")
-        disagreements.push_back({t.text(r, "id"), ch.id, t.text(r, "thesis") + " " + t.text(r, "unit"),
-                                 t.text(r, "ours") + " " + t.text(r, "unit"), t.text(r, "note")});
-      if (s == "erratum") {
-        const std::string& note = t.text(r, "note");
-        auto it = std::find_if(causes.begin(), causes.end(), [&](const auto& c) { return c.first == note; });
-        if (it == causes.end()) it = causes.insert(causes.end(), {note, {}});
-        it->second.push_back({t.text(r, "id"), ch.id});
-      }
-    }
-    tp += p;
-    tf += f;
-    te += e;
-    td += d;
-    os << "| " << ch.id << " | " << p << " | " << (f ? "[" + std::to_string(f) + "]{.status-fail}" : "0")
-       << " | " << e << " | " << d << " | [checks](#checks-" << ch.id << ") |\n";
-  }
-  os << "| **all** | **" << tp << "** | **" << tf << "** | **" << te << "** | **" << td << "** | |\n\n";
-  if (!disagreements.empty()) {
-    os << "## Not reproduced {.unnumbered}\n\n| check | thesis | ours | what the investigation found |\n"
-       << "|---|---:|---:|---|\n";
-    for (const auto& [id, ch, th, ours, note] : disagreements)
-      os << "| [" << id << "](#checks-" << ch << ") | " << th << " | " << ours << " | " << escape_cell(note) << " |\n";
-    os << "\n: Published values our simulations do not reproduce within the stated tolerance, with the most "
-          "likely reason.\n\n";
-  }
-  if (!causes.empty()) {
-    os << "## Errata at a glance {.unnumbered}\n\n| checks | most likely explanation |\n|---|---|\n";
-    for (const auto& [note, ids] : causes) {
-      os << "| [" << ids.front().first << "](#checks-" << ids.front().second << ")";
-      if (ids.size() > 1) os << " and " << ids.size() - 1 << " more";
-      os << " | " << escape_cell(note) << " |\n";
-    }
-    os << "\n: Thesis statements and values that the thesis's own inputs do not reproduce, one row per cause.\n\n";
-  }
-  return os.str();
-}
-
-std::string assemble_report(const std::vector<ChapterSource>& chapters, const std::string& title) {
-  std::ostringstream os;
-  os << "---\ntitle: \"" << title << "\"\nlang: en\n---\n\n";
-  os << checks_summary(chapters);
+  os << front_yaml(chapters, info, title) << front_page(chapters, info);
   std::string stale_list;
   for (const auto& ch : chapters)
     if (!chapter_staleness(ch).empty()) stale_list += (stale_list.empty() ? "" : ", ") + ch.id;

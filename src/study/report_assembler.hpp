@@ -29,9 +29,6 @@ std::string markdown_table(const CsvTable& t, const std::string& caption, int st
 /// Expand directives and {{key}} values in one chapter's Markdown.
 std::string expand_chapter(const std::string& markdown, const ChapterSource& ch);
 
-/// The summary of all checks by chapter (first page of the report).
-std::string checks_summary(const std::vector<ChapterSource>& chapters);
-
 /// Why a chapter's results are stale: each recorded input or binary
 /// (provenance.csv) that is gone or whose hash has changed (empty: up to date).
 std::vector<std::string> chapter_staleness(const ChapterSource& ch);
@@ -39,9 +36,12 @@ std::vector<std::string> chapter_staleness(const ChapterSource& ch);
 /// The chapter's provenance table, with a loud STALE block when it is stale.
 std::string provenance_section(const ChapterSource& ch);
 
-/// The whole report: title block, summary (with the list of stale chapters),
-/// then each chapter followed by its provenance.
-std::string assemble_report(const std::vector<ChapterSource>& chapters, const std::string& title);
+struct FrontInfo;  // study/report_front.hpp
+
+/// The whole report: title block, front page (study/report_front.hpp, with
+/// the list of stale chapters), then each chapter followed by its provenance.
+std::string assemble_report(const std::vector<ChapterSource>& chapters, const std::string& title,
+                            const FrontInfo& info);
 
 /// Chapters found under src_root (directories with intro.md), sorted by name.
 std::vector<ChapterSource> discover_chapters(const std::string& src_root, const std::string& out_root);

@@ -13,14 +13,16 @@ if ! command -v clang++ >/dev/null; then
 fi
 cmake -S "$src/tests/fuzz" -B "$bld" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug >/dev/null
 cmake --build "$bld" -j "$(nproc 2>/dev/null || echo 2)" >/dev/null
-for t in deck csv; do
+for t in deck csv loop; do
   work=$bld/corpus_$t
   rm -rf "$work"
   mkdir -p "$work"
   cp "$src/tests/fuzz/corpus/$t"/* "$work"/
   set +e
+  dict=$src/tests/fuzz/$t.dict
+  [ -f "$dict" ] || dict=$src/tests/fuzz/csv.dict  # the loop reads CSV
   "$bld/fuzz_$t" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
-    -artifact_prefix="$bld/crash_$t-" -dict="$src/tests/fuzz/$t.dict" "$work" >"$bld/fuzz_$t.log" 2>&1
+    -artifact_prefix="$bld/crash_$t-" -dict="$dict" "$work" >"$bld/fuzz_$t.log" 2>&1
   rc=$?
   set -e
   grep -E "^#[0-9]+ +DONE|^Done [0-9]+ runs" "$bld/fuzz_$t.log" | sed "s/^/fuzz_$t: /" || true

@@ -10,7 +10,7 @@ shift
 out=$("$@" 2>&1)
 rc=$?
 printf '%s\n' "$out"
-first=$(printf '%s\n' "$out" | grep -m1 -E '^(input error|numerical fault|warning|error):')
+first=$(printf '%s\n' "$out" | grep -m1 -E '^(input error|numerical fault|warning|error|data problem|interrupted at)')
 if [ "$rc" = "$want" ]; then
   echo "verdict: exit $rc as expected; $first"
 else

@@ -13,8 +13,9 @@
 //    drift -> first step names test_order and lowers the held-out RMS to within
 //    30 % of the noise sd.
 //  - The same drift in a column the library does not know (test_order renamed
-//    humidity_pct): no effect is added, and the variable is reported as
-//    unexplained (confirmed by the generic linear-term F test).
+//    lab_reading): the loop adds a generic effect of that column (linear or
+//    saturating) with its size, SE and sign (mu increases with run order in
+//    the generator, so the sign is "increases").
 #define BOOST_TEST_MODULE loop_residuals
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -131,10 +132,13 @@ BOOST_AUTO_TEST_CASE(planted_drift_detected) {
   BOOST_TEST(r.steps.back().rms_after < 1.3 * 5);
 }
 
-BOOST_AUTO_TEST_CASE(unknown_column_reported_not_modelled) {
-  const LoopResult r = loop_on("drift", 5, 11, "humidity_pct");
-  BOOST_TEST(r.steps.empty());
-  BOOST_TEST_REQUIRE(!r.unexplained.empty());
-  BOOST_TEST(r.unexplained[0].rfind("humidity_pct", 0) == 0);
-  BOOST_TEST(r.stopped_because.find("humidity_pct") != std::string::npos);
+BOOST_AUTO_TEST_CASE(unknown_column_gets_generic_effect) {
+  const LoopResult r = loop_on("drift", 5, 11, "lab_reading");
+  BOOST_TEST_REQUIRE(!r.steps.empty());
+  BOOST_TEST(r.steps[0].variable == "lab_reading");
+  BOOST_TEST(r.steps[0].effect.rfind("generic_", 0) == 0);
+  BOOST_TEST_REQUIRE(r.steps[0].params.size() == 1u);
+  BOOST_TEST(r.steps[0].params[0].value > 0);
+  BOOST_TEST(r.steps[0].params[0].se > 0);
+  BOOST_TEST(r.steps[0].sign.find("increases") != std::string::npos);
 }

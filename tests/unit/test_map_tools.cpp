@@ -6,11 +6,20 @@
 //  - peaks of that row: entry maximum before 45 deg, exit maximum after;
 //  - area by pressure: nodes of 1 mm^2 at 5, 15, 15, 25 MPa with bins [0,10),
 //    [10,20), [20,...) give 1, 2, 1 mm^2, and nodes at zero pressure count nowhere;
-//  - the builder's deck parses, and its wrap length is (D/2 + t/2) pi/2.
+//  - the builder's deck parses, and its wrap length is (D/2 + t/2) pi/2;
+//  - the heat-map grid: rows at y = 0 (nodes at 0, 10, 20 deg, p = 0, 10, 0)
+//    and y = 5 (nodes at 5, 15, 25 deg, p = 0, 20, 0) share one angle grid of
+//    5 deg steps (half the 10 deg spacing) from 0 to 25 deg; the y = 5 row
+//    reads 0 at 0 deg (before its first node) and 10 at 10 deg (halfway up).
 #define BOOST_TEST_MODULE map_tools
 #include <boost/test/unit_test.hpp>
+#include <array>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
 
+#include "core/csv.hpp"
 #include "io/deck.hpp"
 #include "sim/drawbend_case.hpp"
 #include "sim/map_tools.hpp"
@@ -74,4 +83,38 @@ BOOST_AUTO_TEST_CASE(builder_deck_parses) {
   sim::DrawBendSpec bad = s;
   bad.pin_diameter = -1;
   BOOST_CHECK_THROW(sim::deck_text(bad), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(map_grid_is_regular_in_angle) {
+  std::vector<sim::MapNode> map;
+  for (int i = 0; i < 3; ++i) {
+    map.push_back({10.0 * i, 0.0, i == 1 ? 10.0 : 0.0, 1.0});
+    map.push_back({5.0 + 10.0 * i, 5.0, i == 1 ? 20.0 : 0.0, 1.0});
+  }
+  const std::string path = (std::filesystem::temp_directory_path() / "drawbend_map_grid.dat").string();
+  sim::save_map_grid(map, path, "test");
+  std::istringstream in(read_file(path));
+  std::string line;
+  std::vector<std::vector<std::array<double, 3>>> blocks(1);
+  while (std::getline(in, line)) {
+    if (line.empty()) {
+      blocks.emplace_back();
+      continue;
+    }
+    if (line[0] == '#') continue;
+    std::array<double, 3> v{};
+    std::sscanf(line.c_str(), "%lf,%lf,%lf", &v[0], &v[1], &v[2]);
+    blocks.back().push_back(v);
+  }
+  while (!blocks.empty() && blocks.back().empty()) blocks.pop_back();
+  BOOST_TEST_REQUIRE(blocks.size() == 2u);
+  BOOST_TEST_REQUIRE(blocks[0].size() == 6u);  // 0, 5, ..., 25 deg
+  BOOST_TEST_REQUIRE(blocks[1].size() == 6u);
+  for (std::size_t k = 0; k < 6; ++k) {
+    BOOST_TEST(blocks[0][k][0] == 5.0 * k);
+    BOOST_TEST(blocks[1][k][0] == 5.0 * k);  // the same angles in every row
+  }
+  BOOST_TEST(blocks[1][0][2] == 0.0);
+  BOOST_TEST(blocks[1][2][2] == 10.0);  // y = 5 row at 10 deg: halfway from 0 (5 deg) to 20 (15 deg)
+  BOOST_TEST(blocks[0][2][2] == 10.0);  // y = 0 row at its node
 }

@@ -46,19 +46,21 @@ BOOST_AUTO_TEST_CASE(check_statuses) {
   const std::string errata = (dir / "errata.csv").string();
   write_file_atomic(errata, "id,explanation\nx.known,typo in the thesis\nx.family.*,all of these\nx.stale,was wrong\n");
   study::Checks c("test", study::Errata::load(errata));
-  BOOST_TEST(study::to_string(c.agree("x.ok", "q", 1.0, 1.01, 0.02, "N", "r").status) == "pass");
-  BOOST_TEST(study::to_string(c.agree("x.bad", "q", 1.0, 1.1, 0.02, "N", "r").status) == "fail");
+  BOOST_TEST(study::to_string(c.agree(study::Kind::simulated, "x.ok", "q", 1.0, 1.01, 0.02, "N", "r").status) == "pass");
+  BOOST_TEST(study::to_string(c.agree(study::Kind::simulated, "x.bad", "q", 1.0, 1.1, 0.02, "N", "r").status) == "fail");
   BOOST_TEST(study::to_string(c.rederive("x.known", "q", 1.0, 2.0, 0.02, "N", "r").status) == "erratum");
   BOOST_TEST(study::to_string(c.rederive("x.family.a", "q", 1.0, 2.0, 0.02, "N", "r").status) == "erratum");
   BOOST_TEST(study::to_string(c.rederive("x.unknown", "q", 1.0, 2.0, 0.02, "N", "r").status) == "fail");
   BOOST_TEST(study::to_string(c.rederive("x.stale", "q", 1.0, 1.0, 0.02, "N", "r").status) == "fail");
   // An agreement check is never excused by the errata list.
-  BOOST_TEST(study::to_string(c.agree("x.known2", "q", 1.0, 2.0, 0.02, "N", "r").status) == "fail");
+  BOOST_TEST(study::to_string(c.agree(study::Kind::simulated, "x.known2", "q", 1.0, 2.0, 0.02, "N", "r").status) == "fail");
   BOOST_TEST(c.count(study::Status::fail) == 4);
-  BOOST_CHECK_THROW(c.agree("x.ok", "q", 1, 1, 0, "", ""), std::logic_error);
+  BOOST_CHECK_THROW(c.agree(study::Kind::simulated, "x.ok", "q", 1, 1, 0, "", ""), std::logic_error);
   c.write((dir / "checks.csv").string());
   const auto t = read_csv((dir / "checks.csv").string());
-  BOOST_TEST(t.header.size() == 8u);
+  BOOST_TEST(t.header.size() == 9u);
+  BOOST_TEST(t.text(t.rows.front(), "kind") == "simulated");
+  BOOST_TEST(t.text(t.rows.at(2), "kind") == "rederived");
   BOOST_TEST(t.rows.size() == 7u);  // the duplicate was rejected
 }
 
@@ -73,11 +75,19 @@ BOOST_AUTO_TEST_CASE(claims_prefixes_nan_and_audit) {
   BOOST_TEST(e.explain("a.b.x") == "long prefix");
   BOOST_TEST(e.explain("a.x") == "short prefix");
   study::Checks c("test", e);
-  BOOST_TEST(study::to_string(c.claim("c.ok", "q", true, "r").status) == "pass");
-  BOOST_TEST(study::to_string(c.claim("c.false", "q", false, "r").status) == "fail");
-  BOOST_TEST(study::to_string(c.claim("c.claim", "q", false, "r").status) == "erratum");
+  BOOST_TEST(study::to_string(c.claim(study::Kind::rederived, "c.ok", "q", true, "r").status) == "pass");
+  BOOST_TEST(study::to_string(c.claim(study::Kind::rederived, "c.false", "q", false, "r").status) == "fail");
+  BOOST_TEST(study::to_string(c.claim(study::Kind::rederived, "c.claim", "q", false, "r").status) == "erratum");
   BOOST_TEST(study::to_string(c.rederive("w.passes", "q", 1.0, 1.0, 0.1, "", "r").status) == "fail");
   BOOST_TEST(study::to_string(c.rederive("a.b.nan", "q", 1.0, NAN, 0.1, "", "r").status) == "fail");
+  // An erratum never excuses a check of another kind: a claim tested on our
+  // simulations that misses is a failure unless disagreements.csv documents it.
+  BOOST_TEST(study::to_string(c.claim(study::Kind::simulated, "c.claim2", "q", false, "r").status) == "fail");
+  BOOST_TEST(study::to_string(c.agree(study::Kind::health, "a.b.health", "q", 1.0, 2.0, 0.1, "", "r").status) == "fail");
+  BOOST_CHECK_THROW(c.claim(static_cast<study::Kind>(99), "c.bad_kind", "q", true, "r"), std::logic_error);
+  for (auto k : {study::Kind::rederived, study::Kind::simulated, study::Kind::measured, study::Kind::verification,
+                 study::Kind::health, study::Kind::software})
+    BOOST_TEST(!study::to_string(k).empty());
   const auto dead = e.unused({"a.b.x", "c.claim", "w.passes"});
   BOOST_TEST(dead.size() == 1u);
   BOOST_TEST(dead.front() == "never.used");
@@ -96,9 +106,9 @@ BOOST_AUTO_TEST_CASE(disagreement_tiers) {
   write_file_atomic(list, "id,explanation,tier\nq.only,coarse mesh artefact,quick\nboth,any mesh,\n");
   study::Checks quick("test", {}, study::Errata::load(list, "quick"));
   study::Checks full("test", {}, study::Errata::load(list, "full"));
-  BOOST_TEST(study::to_string(quick.agree("q.only", "q", 1.0, 1.5, 0.1, "N", "r").status) == "disagree");
-  BOOST_TEST(study::to_string(full.agree("q.only", "q", 1.0, 1.05, 0.1, "N", "r").status) == "pass");
-  BOOST_TEST(study::to_string(full.agree("both", "q", 1.0, 1.5, 0.1, "N", "r").status) == "disagree");
+  BOOST_TEST(study::to_string(quick.agree(study::Kind::simulated, "q.only", "q", 1.0, 1.5, 0.1, "N", "r").status) == "disagree");
+  BOOST_TEST(study::to_string(full.agree(study::Kind::simulated, "q.only", "q", 1.0, 1.05, 0.1, "N", "r").status) == "pass");
+  BOOST_TEST(study::to_string(full.agree(study::Kind::simulated, "both", "q", 1.0, 1.5, 0.1, "N", "r").status) == "disagree");
   BOOST_TEST(study::Errata::load(list).explain("q.only") == "coarse mesh artefact");  // no tier: every row
   write_file_atomic(list, "id,explanation,tier\nx,y,fine\n");
   BOOST_CHECK_THROW(study::Errata::load(list, "quick"), InputError);

@@ -1,0 +1,165 @@
+// The up-front cost of a deck and the plausibility warnings; see deck_limits.hpp.
+#include "io/deck_limits.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/csv.hpp"
+#include "fe/hex8.hpp"
+#include "fe/mesh.hpp"
+
+namespace drawbend::io {
+
+namespace {
+
+// Memory of a run per node and per element [bytes]: fe::Mesh, fe::Solver and
+// Solver::run_step hold about 30 doubles per node (reference and current
+// positions, velocity, force, mass, reactions, the step's scratch arrays) and
+// about 60 per element (connectivity, two integration points' stresses and
+// states, hourglass state, corner forces, per-element step data); the
+// snapshot writers add text buffers.  Calibrated on the peak resident memory
+// of `drawbend run` on a 60 x 60 x 60 J2 block (226,981 nodes, 216,000
+// elements, one snapshot): 223 MB measured (GNU time, 2026-11-24), 226 MB
+// predicted.
+constexpr double kBytesPerNode = 350;
+constexpr double kBytesPerElement = 680;
+
+const toml::node* at(const toml::table& root, const std::string& table, const std::string& key) {
+  const auto* t = root.get(table);
+  if (!t || !t->is_table()) return nullptr;
+  return key.empty() ? t : t->as_table()->get(key);
+}
+
+double limit(const DeckContext& c, const toml::table& t, const std::string& key, double def) {
+  const double v = c.num(t, key, "limits", def);
+  if (std::isnan(v)) return def;  // recorded
+  if (!(v > 0)) {
+    c.bad(*t.get(key), "limits." + key, "expected a limit > 0, found " + fmt_shortest(v));
+    return def;
+  }
+  return v;
+}
+
+}  // namespace
+
+void read_limits(const DeckContext& c, const toml::table& root, RunLimits& lim) {
+  const auto* t = c.table(root, "limits", "deck", false);
+  if (!t) return;
+  c.allowed(*t, "limits", {"max_cycles", "max_memory_mb", "max_mass_factor"});
+  lim.max_cycles = limit(c, *t, "max_cycles", lim.max_cycles);
+  lim.max_memory_mb = limit(c, *t, "max_memory_mb", lim.max_memory_mb);
+  lim.max_mass_factor = limit(c, *t, "max_mass_factor", lim.max_mass_factor);
+}
+
+double estimate_memory_mb(double nodes, double elements) {
+  return (kBytesPerNode * nodes + kBytesPerElement * elements) / 1e6;
+}
+
+bool check_memory(const DeckContext& c, const toml::node& where, const std::string& key, double nodes,
+                  double elements, const RunLimits& lim) {
+  const double mb = estimate_memory_mb(nodes, elements);
+  if (mb <= lim.max_memory_mb) return true;
+  c.bad(where, key,
+        "the mesh of " + fmt(nodes, 4) + " nodes and " + fmt(elements, 4) + " elements would need about " +
+            fmt(mb, 3) + " MB, above [limits] max_memory_mb = " + fmt_shortest(lim.max_memory_mb) +
+            " (raise it in [limits] if the machine has the memory)");
+  return false;
+}
+
+void check_cost(const DeckContext& c, const toml::table& root, Deck& d) {
+  const fe::Model& m = d.model;
+  if (!m.material || m.mesh.num_elements() == 0) return;
+  const fe::Mesh& mesh = m.mesh;
+  const double c_wave = m.material->wave_speed();
+  double dt_min = INFINITY, phys = 0, scaled = 0;
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    double ex[8], ey[8], ez[8];
+    fe::gather(mesh.x, mesh.y, mesh.z, mesh.hex[e], ex, ey, ez);
+    fe::HexGeometry g;
+    if (!fe::hex_geometry(ex, ey, ez, g)) return;  // the solver reports the inverted element
+    double factor = m.mass_scaling;
+    const double dt_e = fe::hex_stable_length(g) / c_wave * std::sqrt(factor);
+    double dt = m.dt_safety * dt_e;
+    if (m.target_dt > 0 && dt < m.target_dt) {  // as fe::Solver scales it
+      factor *= std::pow(m.target_dt / dt, 2);
+      dt = m.target_dt;
+    }
+    const double me = m.material->density() * fe::hex_volume(ex, ey, ez);
+    phys += me;
+    scaled += me * factor;
+    dt_min = std::min(dt_min, dt);
+  }
+  double total = 0;
+  for (const auto& s : m.steps) total += s.duration;
+  d.cost.memory_mb = estimate_memory_mb(mesh.num_nodes(), mesh.num_elements());
+  d.cost.mass_factor = phys > 0 ? scaled / phys : 1;
+  if (!(dt_min > 0) || !std::isfinite(dt_min)) return;  // a numerical fault of the solver, naming the element
+  d.cost.stable_dt = dt_min;
+  d.cost.cycles = total / dt_min;
+  const auto* numerics = at(root, "numerics", "");
+  const auto* first_step = root.get("step") && root.get("step")->is_array() && !root.get("step")->as_array()->empty()
+                               ? &(*root.get("step")->as_array())[0]
+                               : static_cast<const toml::node*>(&root);
+  // Mass scaling by a factor f slows the waves by sqrt(f): for the inertia it
+  // is like loading sqrt(f) times faster.  The shipped cup deck scales by
+  // 8e5 (Chapter 6; its refined mesh by about 3e6), the draw-bend decks by
+  // 1e4, as the thesis.  Beyond 1e9 (over 30,000 times faster) inertia
+  // dominates any forming speed: an error; above 1 % of the limit (1e7, over
+  // 3,000 times faster) a warning.
+  const double mf = d.cost.mass_factor;
+  if (mf > 0.01 * d.limits.max_mass_factor) {
+    const toml::node* n = at(root, "numerics", "target_dt");
+    std::string key = "numerics.target_dt";
+    if (!n || m.target_dt <= 0) n = at(root, "numerics", "mass_scaling"), key = "numerics.mass_scaling";
+    if (!n) n = numerics ? numerics : &root, key = "numerics";
+    const std::string what = "mass scaling multiplies the mass of the model by " + fmt(mf, 3) + " (added mass " +
+                             fmt(100 * (mf - 1), 3) + " %)";
+    if (mf > d.limits.max_mass_factor)
+      c.bad(*n, key, what + ", above [limits] max_mass_factor = " + fmt_shortest(d.limits.max_mass_factor) +
+                         ": inertia would dominate the result, as loading " + fmt(std::sqrt(mf), 2) +
+                         " times faster would");
+    else
+      d.warnings.push_back(c.where(*n, key) + ": " + what + ", above 1 % of [limits] max_mass_factor = " +
+                           fmt_shortest(d.limits.max_mass_factor) + ": inertia acts as if loaded " +
+                           fmt(std::sqrt(mf), 2) + " times faster; check the kinetic energy");
+  }
+  if (d.cost.cycles > d.limits.max_cycles) {
+    const toml::node* n = at(root, "limits", "max_cycles");
+    std::string key = "limits.max_cycles";
+    if (!n) n = at(root, "numerics", "dt_safety"), key = "numerics.dt_safety";
+    if (!n) n = first_step, key = "step.duration";
+    c.bad(*n, key,
+          "the run would take about " + fmt(d.cost.cycles, 3) + " cycles (end time " + fmt(total, 4) +
+              " s / stable step " + fmt(dt_min, 4) + " s), above [limits] max_cycles = " +
+              fmt_shortest(d.limits.max_cycles) + " (raise it in [limits] if this is intended)");
+  }
+}
+
+void material_warnings(const DeckContext& c, const toml::table& root, Deck& d) {
+  // The range of real solids: a soft rubber (E ~ 1 MPa; 0.1 MPa leaves a
+  // margin) to diamond (1.05e6 MPa); aerogel (~1 kg/m^3 = 1e-12 t/mm^3) to
+  // osmium (22.6e3 kg/m^3 = 2.26e-8 t/mm^3).  Outside it a value is most
+  // likely in other units (GPa, kg/m^3).
+  struct Range {
+    const char* key;
+    double lo, hi;
+    const char* unit;
+    const char* why;
+  };
+  const Range ranges[] = {
+      {"E", 0.1, 1.2e6, "MPa", "a soft rubber to diamond"},
+      {"density", 1e-12, 2.3e-8, "t/mm^3", "an aerogel to osmium"},
+  };
+  for (const auto& r : ranges) {
+    const auto* n = at(root, "material", r.key);
+    if (!n) continue;
+    const auto v = n->value<double>();
+    if (!v || !(*v > 0) || !std::isfinite(*v)) continue;  // reported as an input error
+    if (*v < r.lo || *v > r.hi)
+      d.warnings.push_back(c.where(*n, std::string("material.") + r.key) + ": " + fmt_shortest(*v) + " " + r.unit +
+                           " is outside the range of real materials (" + fmt_shortest(r.lo) + " to " +
+                           fmt_shortest(r.hi) + " " + r.unit + ", " + r.why + "); check the units (mm, N, MPa, s, t/mm^3)");
+  }
+}
+
+}  // namespace drawbend::io

@@ -1,0 +1,37 @@
+#pragma once
+// Every run has a finite, predicted cost before it starts.  A deck is refused
+// (input error, exit 2, file:line: key) when its predicted cycles, memory or
+// mass-scaling factor exceed the limits of [limits], which the deck may raise;
+// doubtful but valid values (moduli or densities outside the range of real
+// materials, heavy mass scaling) become warnings.  Limits and their reasons:
+// data/cases/README.md, section "Limits".
+#include <toml++/toml.h>
+
+#include "io/deck.hpp"
+#include "io/deck_context.hpp"
+
+namespace drawbend::io {
+
+/// [limits] max_cycles, max_memory_mb, max_mass_factor (read before the mesh,
+/// so that a mesh too large for memory is refused before it is built).
+void read_limits(const DeckContext& c, const toml::table& root, RunLimits& lim);
+
+/// Predicted memory of a run [MB]: mesh, solver state and the per-step scratch
+/// arrays (bytes per node and per element measured, see deck_limits.cpp).
+double estimate_memory_mb(double nodes, double elements);
+
+/// Refuses (records a problem at `where`, returns false) a mesh whose memory
+/// estimate exceeds lim.max_memory_mb.
+bool check_memory(const DeckContext& c, const toml::node& where, const std::string& key, double nodes,
+                  double elements, const RunLimits& lim);
+
+/// After the deck is read: the stable step with mass scaling, the predicted
+/// cycles and memory, the mass factor (into d.cost); problems above the limits,
+/// warnings below.  A zero or non-finite stable step is left to the solver,
+/// which reports it as a numerical fault naming the element.
+void check_cost(const DeckContext& c, const toml::table& root, Deck& d);
+
+/// Material values outside the range of real materials: warnings in d.warnings.
+void material_warnings(const DeckContext& c, const toml::table& root, Deck& d);
+
+}  // namespace drawbend::io

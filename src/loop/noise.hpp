@@ -1,0 +1,31 @@
+#pragma once
+// The replicate noise of a data set, from the scatter within tests.
+//
+// Within every test (>= 4 rows) the outlet force is fitted by least squares on
+// a line in the back tension and, with 6 or more rows, a quadratic in the run
+// position (rows in time_s order, else sliding distance, else file order);
+// with 8 or more rows a quadratic in the back tension and a cubic in the run
+// position:
+//   sigma^2 = sum_tests |e|^2 / sum_tests (n_t - rank_t).
+// For white noise this is unbiased; the polynomial in run position absorbs slow
+// within-test structure (depletion along the sliding distance, drift) so that
+// it is not mistaken for noise.  Structure that varies between tests (pin,
+// batch, direction, speed) never enters.  Units: N.
+#include <cmath>
+#include <string>
+
+#include "loop/model.hpp"
+
+namespace drawbend::loop {
+
+struct NoiseFloor {
+  double sigma_N = std::nan("");  ///< replicate noise sd [N] (NaN: no test with >= 4 rows)
+  int tests = 0, rows = 0;        ///< tests and rows used
+  double dof = 0;                 ///< degrees of freedom, sum of (n_t - rank_t)
+  std::string order;              ///< run order used
+  bool exact = false;             ///< rows lie exactly on lines (sigma below 1e-6 of the mean force)
+};
+
+NoiseFloor replicate_noise(const Design& d);
+
+}  // namespace drawbend::loop

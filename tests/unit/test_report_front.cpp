@@ -1,0 +1,96 @@
+// The report's front page and the display of checks.
+// Closed-form answers:
+//  - round_for_display rounds to the tolerance's leading decimal place, with 3 to
+//    6 significant digits: (74.105281, 5) -> "74.1"; (168.29819, 20) -> "168";
+//    (118.647, 0.005) -> "118.647"; (0.0961234, 0.001) -> "0.0961";
+//    (1234567.0, 0) -> "1.23457e+06" (6 digits, scientific beyond 1e6).
+//  - A claim (unit "true=1") shows 1/0 as yes/no, tolerance as a dash, no unit;
+//    "-" and "" show as the unit "1".
+//  - A checks.csv without a `kind` column counts its checks as "unclassified".
+//  - Two chapters with 3 and 2 checks (kinds simulated x2 disagree+pass,
+//    rederived x2 pass+erratum, health x1 pass) give the counts 5 checks,
+//    3 pass, 1 erratum, 1 disagree, and the abstract says so.
+#define BOOST_TEST_MODULE report_front
+#include <boost/test/unit_test.hpp>
+#include <filesystem>
+
+#include "core/csv.hpp"
+#include "study/check_format.hpp"
+#include "study/report_front.hpp"
+
+using namespace drawbend;
+using namespace drawbend::study;
+namespace fs = std::filesystem;
+
+BOOST_AUTO_TEST_CASE(rounding_and_units) {
+  BOOST_TEST(round_for_display(74.105281, 5) == "74.1");
+  BOOST_TEST(round_for_display(168.29819, 20) == "168");
+  BOOST_TEST(round_for_display(118.647, 0.005) == "118.647");
+  BOOST_TEST(round_for_display(0.0961234, 0.001) == "0.0961");
+  BOOST_TEST(round_for_display(1234567.0, 0) == "1.23457e+06");
+  BOOST_TEST(round_for_display(-0.0, 1) == "0");
+  BOOST_TEST(display_value("1", "true=1", "0") == "yes");
+  BOOST_TEST(display_value("0", "true=1", "0") == "no");
+  BOOST_TEST(display_tolerance("0", "true=1") == "\u2013");
+  BOOST_TEST(display_unit("-") == "1");
+  BOOST_TEST(display_unit("") == "1");
+  BOOST_TEST(display_unit("true=1") == "");
+  BOOST_TEST(display_unit("MPa") == "MPa");
+  BOOST_TEST(display_value("n/a", "N", "1") == "n/a");
+}
+
+static ChapterSource chapter(const fs::path& root, const std::string& id, const std::string& checks) {
+  const fs::path src = root / "src" / id, out = root / "out" / id;
+  fs::create_directories(src);
+  fs::create_directories(out / "figures");
+  write_file_atomic((src / "intro.md").string(), "# Chapter X \u2014 A title {#" + id + "}\n\ntext\n");
+  write_file_atomic((out / "checks.csv").string(), checks);
+  write_file_atomic((out / "values.csv").string(), "key,value,unit\ntier,quick,\n");
+  write_file_atomic((out / "figures" / "a.svg").string(), "<svg/>");
+  return {id, src.string(), out.string()};
+}
+
+BOOST_AUTO_TEST_CASE(front_page_counts_by_kind) {
+  const fs::path root = fs::temp_directory_path() / "drawbend_front_test";
+  fs::remove_all(root);
+  const std::string head = "id,kind,quantity,thesis,ours,tolerance,unit,status,note\n";
+  std::vector<ChapterSource> chs{
+      chapter(root, "cha", head + "a.1,simulated,F,168.29819,120.1,20,N,disagree,mesh too coarse\n"
+                                  "a.2,simulated,mu,0.1,0.1004,0.005,-,pass,ok\n"
+                                  "a.3,rederived,x,118.65,118.647,0.005,-,pass,ok\n"),
+      chapter(root, "chb", head + "b.1,rederived,y,2,3,0.5,mm,erratum,typo in Table 9\n"
+                                  "b.2,health,energy,0,0.001,0.01,1,pass,ok\n")};
+  const std::string a = abstract_paragraph(chs);
+  BOOST_TEST(a.find("compares 5 numbers") != std::string::npos, a);
+  BOOST_TEST(a.find("in 2 checks: 1 agree") != std::string::npos, a);
+  BOOST_TEST(a.find("1 is not reproduced") != std::string::npos, a);
+  BOOST_TEST(a.find("(2 checks) confirms 1 value and finds 1 erratum") != std::string::npos, a);
+  BOOST_TEST(a.find("No check fails.") != std::string::npos, a);
+  BOOST_TEST(a.find("quick tier") != std::string::npos, a);
+  const std::string y = front_yaml(chs, {"*T*", "2026-01-01"}, "It's a title");
+  BOOST_TEST(y.find("title: 'It''s a title'") != std::string::npos, y);
+  BOOST_TEST(y.find("subtitle: 'Reproduces: *T*'") != std::string::npos, y);
+  BOOST_TEST(y.find("Mesh tier: quick") != std::string::npos, y);
+  BOOST_TEST(y.find("2026-01-01") != std::string::npos, y);
+  BOOST_TEST(y.find("abstract: 'This report rebuilds") != std::string::npos, y);
+  const std::string f = front_page(chs, {"*T*", "2026-01-01"});
+  BOOST_TEST(f.find(">168<") != std::string::npos);   // thesis value rounded to the tolerance
+  BOOST_TEST(f.find(">120<") != std::string::npos);
+  BOOST_TEST(f.find("168.29819") == std::string::npos);
+  BOOST_TEST(f.find("href=\"#checks-cha\"") != std::string::npos);
+  BOOST_TEST(f.find("Errata at a glance") != std::string::npos);
+  BOOST_TEST(chapter_title(chs[0]) == "Chapter X \u2014 A title");
+}
+
+BOOST_AUTO_TEST_CASE(missing_kind_column_is_unclassified) {
+  const fs::path root = fs::temp_directory_path() / "drawbend_front_test_nokind";
+  fs::remove_all(root);
+  std::vector<ChapterSource> chs{chapter(root, "chc", "id,quantity,thesis,ours,tolerance,unit,status,note\n"
+                                                      "c.1,claim,1,1,0,true=1,pass,ok\n")};
+  const CsvTable t = read_csv(chs[0].out_dir + "/checks.csv");
+  BOOST_TEST(kind_of(t, t.rows[0]) == "unclassified");
+  const std::string f = front_page(chs, {"T", "d"});
+  BOOST_TEST(f.find("unclassified") != std::string::npos);
+  BOOST_TEST(abstract_paragraph(chs).find("do not record the kind") != std::string::npos);
+  BOOST_TEST(checks_html_table(t, "c").find(">yes<") != std::string::npos);
+}
