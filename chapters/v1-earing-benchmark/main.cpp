@@ -17,6 +17,7 @@
 #include <cmath>
 #include <map>
 
+#include "material/hill48.hpp"
 #include "sim/case_pool.hpp"
 #include "study/chapter.hpp"
 #include "v1_cup.hpp"
@@ -72,6 +73,24 @@ void body(study::Chapter& c) {
   const bool ears_at_axes = hr.r0 > hr.r45 && hr.r90 > hr.r45;  // what the r-values say
   c.value("r_rule", ears_at_axes ? "r0 and r90 above r45: ears at 0° and 90°, a trough at 45°"
                                  : "r45 not below both r0 and r90");
+  // What each Hill'48 calibration implies at 0, 45, 90 deg (closed forms, src/material/hill48.hpp): the r-value
+  // fit cannot also match the stress ratios, and the stress fit not the r-values.
+  auto ct = c.table({"variant", "r0", "r45", "r90", "s45", "s90", "sb"},
+                    "Hill'48 calibrations: r-values and yield-stress ratios to RD that each implies (published: r = "
+                    "0.525/0.248/0.429, s45/s90/sb = 0.867/0.926/0.975)");
+  for (const auto& v : vars) {
+    if (v.type != "hill48") continue;
+    const auto h = v.r0 > 0 ? material::Hill48::from_r_values(v.r0, v.r45, v.r90)
+                            : material::Hill48::from_stress_ratios(v.s45, v.s90, v.sb);
+    const double q = std::acos(-1.0) / 4;
+    ct.row({v.id, fmt_fixed(h.r_value(0), 3), fmt_fixed(h.r_value(q), 3), fmt_fixed(h.r_value(2 * q), 3),
+            fmt_fixed(h.uniaxial_ratio(q), 3), fmt_fixed(h.uniaxial_ratio(2 * q), 3), fmt_fixed(h.biaxial_ratio(), 3)});
+    c.value(v.id + "_implied", "r = " + fmt_fixed(h.r_value(0), 2) + "/" + fmt_fixed(h.r_value(q), 2) + "/" +
+                                   fmt_fixed(h.r_value(2 * q), 2) + ", σ45/σ0 = " + fmt_fixed(h.uniaxial_ratio(q), 3) +
+                                   ", σ90/σ0 = " + fmt_fixed(h.uniaxial_ratio(2 * q), 3) +
+                                   ", σb/σ0 = " + fmt_fixed(h.biaxial_ratio(), 3));
+  }
+  c.save(ct, "hill48_calibrations");
   // 3. The runs, side by side.
   std::vector<v1::CupResult> runs(vars.size());
   sim::run_cases(vars.size(), [&](std::size_t k) {
@@ -129,18 +148,18 @@ void body(study::Chapter& c) {
     c.value(v.id + "_fmax", fmt_fixed(m.fmax / 1000, 2), "kN");
     c.value(v.id + "_earing", fmt_fixed(m.hmax - m.hmin, 2), "mm");
     // 5. Checks per run.
-    c.checks().claim("v1.volume." + v.id, "sheet volume at the end within 0.6 % of the blank's (" + v.label + ")",
+    c.checks().claim(study::Kind::verification, "v1.volume." + v.id, "sheet volume at the end within 0.6 % of the blank's (" + v.label + ")",
                      std::abs(r.volume_ratio - 1) <= 0.006,
                      "plastic flow is isochoric; the elastic dilatation is p / K with |p| below the flow stress "
                      "(~400 MPa) and K = E / (3 (1 - 2 nu)) = 68.6 GPa: at most 0.58 %");
-    c.checks().claim("v1.quasi_static." + v.id,
+    c.checks().claim(study::Kind::health, "v1.quasi_static." + v.id,
                      "kinetic over internal energy at most 2 % over the draw after its first tenth (" + v.label + ")",
                      r.max_kinetic_ratio <= 0.02,
                      "mass scaling and punch speed must leave inertia negligible; 2 % is well below the solver's "
                      "quasi-static guard (5 %)");
-    c.checks().claim("v1.hourglass." + v.id, "hourglass over internal energy at most 5 % at the end (" + v.label + ")",
+    c.checks().claim(study::Kind::health, "v1.hourglass." + v.id, "hourglass over internal energy at most 5 % at the end (" + v.label + ")",
                      r.hourglass_ratio <= 0.05, "the bound the draw-bend runs meet (reduced integration stays valid)");
-    c.checks().claim("v1.energy_balance." + v.id, "energy balance error at most 5 % at the end (" + v.label + ")",
+    c.checks().claim(study::Kind::health, "v1.energy_balance." + v.id, "energy balance error at most 5 % at the end (" + v.label + ")",
                      r.balance_error <= 0.05,
                      "work of the tools = internal + kinetic + hourglass + friction to within half the solver's "
                      "guard (10 %)");
@@ -150,14 +169,14 @@ void body(study::Chapter& c) {
     c.value(v.id + "_tmin", fmt_fixed(tmin, 3), "mm");
     c.value(v.id + "_tmax", fmt_fixed(tmax, 3), "mm");
     const double t_hi = std::pow(53.75 / 30.6, 1.0 / (1.0 + r_min));
-    c.checks().claim("v1.no_fold_no_tear." + v.id,
+    c.checks().claim(study::Kind::verification, "v1.no_fold_no_tear." + v.id,
                      "thickness along RD, 45 deg and TD between 0.5 and " + fmt_fixed(t_hi, 2) + " mm at the end (" +
                          v.label + ")",
                      tmin >= 0.5 && tmax <= t_hi,
                      "pure hoop compression of the rim from r = 53.75 to 30.6 mm thickens it at most by (53.75 / "
                      "30.6)^(1 / (1 + r_min)) with r_min = " + fmt(r_min) + " the lowest r-value; thinner than half "
                      "the blank is a tear (a neck at the punch nose)");
-    c.checks().claim("v1.flange_out." + v.id,
+    c.checks().claim(study::Kind::verification, "v1.flange_out." + v.id,
                      "every rim node inside r = 41.2 mm at the end: the flange has left the holder (" + v.label + ")",
                      r.rim_r_max < 41.2, "the benchmark's cup is drawn to the end of the stroke");
   }
@@ -173,7 +192,7 @@ void body(study::Chapter& c) {
       mirror = std::max(mirror, std::abs(hv[k].second - hv[hv.size() - 1 - k].second));
     c.value("vm_mirror", fmt_fixed(mirror, 3), "mm");
   }
-  c.checks().claim("v1.von_mises.earing_small",
+  c.checks().claim(study::Kind::verification, "v1.von_mises.earing_small",
                    "von Mises: (h_max - h_min) / h_mean below the mesh's angular error at the flange's mid radius",
                    vm_rel <= e_mesh,
                    "an isotropic sheet has no earing; the quarter O-grid's ring elements span unequal angles "
@@ -186,7 +205,7 @@ void body(study::Chapter& c) {
   double best = 1e30;
   for (const auto& [a, h] : hrun)
     if (std::abs(a - 45.0) < best) best = std::abs(a - 45.0), h45 = h;
-  c.checks().claim("v1.hill48_r.ears_at_axes",
+  c.checks().claim(study::Kind::verification, "v1.hill48_r.ears_at_axes",
                    "Hill'48 from r-values: highest point within 15° of RD or TD, lowest within 15° of 45°, and "
                    "h(0), h(90) > h(45)",
                    ears_at_axes == ((hs.amax <= 15.0 || hs.amax >= 75.0) && std::abs(hs.amin - 45.0) <= 15.0 &&
