@@ -14,6 +14,7 @@
 //      force against stroke, thickness along RD, 45 deg and TD; the .vtu.
 //   5. Checks: earing, ear positions, volume, energies, hourglass, flange out.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -27,8 +28,8 @@ using namespace drawbend;
 namespace {
 
 int g_core = 6, g_ring = 10, g_through = 3;  // quarter_disk element counts
-double g_cycles = 150000;                    // cycles over the stroke
-double g_stroke = 50.0;                      // punch travel [mm]
+double g_cycles = 60000;                     // cycles over the stroke
+double g_stroke = 20.0;                      // punch travel [mm] (quick tier: to the force peak)
 
 std::string fmt_list(const std::vector<std::pair<double, double>>& v) {
   std::string s;
@@ -56,10 +57,31 @@ void body(study::Chapter& c) {
   for (const char* need : {"von_mises", "hill48_r", "hill48_s"})
     if (!idx.count(need)) throw InputError(vt.path + ": missing variant " + need);
   const v1::Variant& hr = vars[idx.at("hill48_r")];
+  {  // the variants' inputs are the published tests of data/materials (rows at 0, 45 and 90 deg, biaxial)
+    const CsvTable mt = read_csv(c.data("materials/aa6016_t4_esaform2021.csv"));
+    std::map<std::string, double> pub;
+    for (const auto& row : mt.rows) {
+      const std::string test = mt.text(row, "test"), ang = mt.text(row, "angle_deg");
+      if (test == "uniaxial") pub["s" + ang] = mt.number(row, "stress_ratio"), pub["r" + ang] = mt.number(row, "r_value");
+      if (test == "balanced_biaxial") pub["sb"] = mt.number(row, "stress_ratio");
+    }
+    const v1::Variant& hs = vars[idx.at("hill48_s")];
+    const bool same = pub.count("r0") && pub.count("r45") && pub.count("r90") && pub.count("sb") &&
+                      hr.r0 == pub["r0"] && hr.r45 == pub["r45"] && hr.r90 == pub["r90"] && hs.s45 == pub["s45"] &&
+                      hs.s90 == pub["s90"] && hs.sb == pub["sb"];
+    c.checks().claim(study::Kind::software, "v1.inputs_published",
+                     "the Hill'48 variants' r0/r45/r90 and s45/s90/sb equal the published tests "
+                     "(data/materials/aa6016_t4_esaform2021.csv)",
+                     same, "exact: both files transcribe the same published numbers");
+  }
   v1::RunSpec spec;
   spec.core = g_core, spec.ring = g_ring, spec.through = g_through;
   spec.cycles = static_cast<long>(g_cycles), spec.stroke = g_stroke;
   if (spec.through < 3) throw InputError("--through: at least 3 elements through the thickness (issue 19)");
+  // A full draw or a partial stroke?  By its area, the blank (r = 53.75 mm) makes a wall of about
+  // (53.75^2 - 30.6^2) / (2 x 30.6) = 32 mm over the 30.6 mm mid-wall radius; its rim clears the die's shoulder
+  // (z = 11.04 mm) after about 32 + 11 = 43 mm of punch travel.  From 45 mm on the cup is drawn out.
+  const bool drawn = spec.stroke >= 45.0;
   // 2. Bounds stated before the run.
   // The O-grid is mirror-symmetric about 45 deg but not polar: at the flange's mid radius (between the die
   // opening, 31.2 mm, and the blank's edge) its ring elements span unequal angles.  A hoop strain represented
@@ -99,17 +121,31 @@ void body(study::Chapter& c) {
   // 4. Tables.
   auto ht = c.table({"variant", "angle_from_RD_deg", "cup_height_mm"},
                     "Cup height (outer bottom to the rim's mid-thickness) against angle from RD, end of the stroke");
+  auto ot = c.table({"variant", "angle_from_RD_deg", "rim_radius_mm"},
+                    "Flange outline: mean radius of each rim node column against angle from RD, end of the stroke");
   auto ft = c.table({"variant", "punch_travel_mm", "punch_force_kN"}, "Punch force (full blank) against punch travel");
   auto tt = c.table({"variant", "line_deg", "initial_radius_mm", "radius_mm", "z_mm", "thickness_mm"},
                     "Thickness along RD (0), 45 deg and TD (90) at the end, by initial radius; current radius and z");
   auto st = c.table({"variant", "h_mean_mm", "h_max_mm", "at_deg", "h_min_mm", "at_deg", "earing_pct", "ears",
                      "troughs", "max_force_kN", "volume_change_pct", "kinetic_over_internal", "max_kinetic_over_internal",
                      "hourglass_over_internal", "energy_balance_error", "added_mass_ratio", "cycles", "elements"},
-                    "ESAFORM 2021 cup: summary per material variant (ears/troughs: angle deg @ height mm)");
+                    "ESAFORM 2021 cup: summary per material variant (h: cup height; ears/troughs of the checked profile, cup "
+                    "height or flange outline: angle deg @ mm)");
   struct Sum {
     double mean, hmax, amax, hmin, amin, fmax;
   };
   std::map<std::string, Sum> sums;
+  // Extremes of a profile: angle and value of its highest and lowest point, and its mean.
+  const auto ext = [](const std::vector<std::pair<double, double>>& p) {
+    auto lo = p.front(), hi = p.front();
+    double mean = 0;
+    for (const auto& q : p) {
+      mean += q.second / static_cast<double>(p.size());
+      if (q.second > hi.second) hi = q;
+      if (q.second < lo.second) lo = q;
+    }
+    return std::array<double, 5>{hi.first, hi.second, lo.first, lo.second, mean};
+  };
   for (std::size_t k = 0; k < vars.size(); ++k) {
     const auto& v = vars[k];
     const auto& r = runs[k];
@@ -121,13 +157,14 @@ void body(study::Chapter& c) {
       if (h > m.hmax) m.hmax = h, m.amax = a;
       if (h < m.hmin) m.hmin = h, m.amin = a;
     }
+    for (const auto& [a, q] : r.outline) ot.row({v.id, fmt_fixed(a, 3), fmt_fixed(q, 4)});
     for (const auto& [d, f] : r.curve) {
       ft.row({v.id, fmt_fixed(d, 4), fmt_fixed(f / 1000, 4)});
       m.fmax = std::max(m.fmax, f);
     }
     for (const auto& q : r.thickness)
       tt.row({v.id, fmt(q[0]), fmt_fixed(q[1], 3), fmt_fixed(q[2], 3), fmt_fixed(q[3], 3), fmt_fixed(q[4], 4)});
-    const auto ex = v1::extrema(r.height);
+    const auto ex = v1::extrema(drawn ? r.height : r.outline);  // ears and troughs of the checked profile
     std::string ears, troughs;
     for (const auto& [a, h] : ex.ears) ears += (ears.empty() ? "" : " ") + fmt_fixed(a, 1) + "@" + fmt_fixed(h, 3);
     for (const auto& [a, h] : ex.troughs)
@@ -146,23 +183,30 @@ void body(study::Chapter& c) {
     c.value(v.id + "_ears", fmt_list(ex.ears));
     c.value(v.id + "_troughs", fmt_list(ex.troughs));
     c.value(v.id + "_fmax", fmt_fixed(m.fmax / 1000, 2), "kN");
-    c.value(v.id + "_earing", fmt_fixed(m.hmax - m.hmin, 2), "mm");
+    {  // the profile the earing checks read (cup height, or flange outline after a partial stroke)
+      const auto e = ext(drawn ? r.height : r.outline);
+      c.value(v.id + "_pmax", fmt_fixed(e[1], 2), "mm");
+      c.value(v.id + "_pamax", fmt_fixed(e[0], 1), "°");
+      c.value(v.id + "_pmin", fmt_fixed(e[3], 2), "mm");
+      c.value(v.id + "_pamin", fmt_fixed(e[2], 1), "°");
+      c.value(v.id + "_earing", fmt_fixed(e[1] - e[3], 2), "mm");
+    }
     // 5. Checks per run.
     c.checks().claim(study::Kind::verification, "v1.volume." + v.id, "sheet volume at the end within 0.6 % of the blank's (" + v.label + ")",
                      std::abs(r.volume_ratio - 1) <= 0.006,
                      "plastic flow is isochoric; the elastic dilatation is p / K with |p| below the flow stress "
                      "(~400 MPa) and K = E / (3 (1 - 2 nu)) = 68.6 GPa: at most 0.58 %");
     c.checks().claim(study::Kind::health, "v1.quasi_static." + v.id,
-                     "kinetic over internal energy at most 2 % over the draw after its first tenth (" + v.label + ")",
-                     r.max_kinetic_ratio <= 0.02,
-                     "mass scaling and punch speed must leave inertia negligible; 2 % is well below the solver's "
-                     "quasi-static guard (5 %)");
-    c.checks().claim(study::Kind::health, "v1.hourglass." + v.id, "hourglass over internal energy at most 5 % at the end (" + v.label + ")",
-                     r.hourglass_ratio <= 0.05, "the bound the draw-bend runs meet (reduced integration stays valid)");
-    c.checks().claim(study::Kind::health, "v1.energy_balance." + v.id, "energy balance error at most 5 % at the end (" + v.label + ")",
-                     r.balance_error <= 0.05,
-                     "work of the tools = internal + kinetic + hourglass + friction to within half the solver's "
-                     "guard (10 %)");
+                     "kinetic/internal energy < 5 % over the draw after its first tenth (" + v.label + ")",
+                     r.max_kinetic_ratio < 0.05,
+                     "the fixed health limit of every run (data/thesis/README.md), here over the whole draw rather "
+                     "than at its end only: mass scaling and punch speed must leave inertia negligible");
+    c.checks().claim(study::Kind::health, "v1.hourglass." + v.id, "hourglass/internal energy < 5 % at the end (" + v.label + ")",
+                     r.hourglass_ratio < 0.05, "the fixed health limit of every run (data/thesis/README.md)");
+    c.checks().claim(study::Kind::health, "v1.energy_balance." + v.id, "energy balance error < 1 % at the end (" + v.label + ")",
+                     r.balance_error < 0.01,
+                     "the fixed health limit of every run (data/thesis/README.md): work of the tools = internal + "
+                     "kinetic + hourglass + friction");
     // A fold (wrinkle) or a tear shows in the thickness lines.
     double tmin = 1e30, tmax = 0;
     for (const auto& q : r.thickness) tmin = std::min(tmin, q[4]), tmax = std::max(tmax, q[4]);
@@ -176,44 +220,48 @@ void body(study::Chapter& c) {
                      "pure hoop compression of the rim from r = 53.75 to 30.6 mm thickens it at most by (53.75 / "
                      "30.6)^(1 / (1 + r_min)) with r_min = " + fmt(r_min) + " the lowest r-value; thinner than half "
                      "the blank is a tear (a neck at the punch nose)");
-    c.checks().claim(study::Kind::verification, "v1.flange_out." + v.id,
+    if (drawn)
+      c.checks().claim(study::Kind::verification, "v1.flange_out." + v.id,
                      "every rim node inside r = 41.2 mm at the end: the flange has left the holder (" + v.label + ")",
                      r.rim_r_max < 41.2, "the benchmark's cup is drawn to the end of the stroke");
   }
-  // Von Mises earing against the mesh bound; ears where the r-values put them.
-  const Sum& vm = sums.at("von_mises");
-  const Sum& hs = sums.at("hill48_r");
-  const double vm_rel = (vm.hmax - vm.hmin) / vm.mean;
+  // Von Mises earing against the mesh bound; ears where the r-values put them.  After a full draw the
+  // profile is the cup height; after a partial stroke (the quick tier) it is the flange outline, the rim's
+  // radius, whose excess over its mean becomes wall height once the flange is drawn in (chosen before the run).
+  const auto profile = [&](const std::string& id) { return drawn ? runs[idx.at(id)].height : runs[idx.at(id)].outline; };
+  const auto pv = profile("von_mises"), ph = profile("hill48_r");
+  const auto ev = ext(pv), eh = ext(ph);
+  // scale: the cup's mean height, or the flange's mean draw-in (blank radius minus mean outline radius)
+  const double vm_rel = (ev[1] - ev[3]) / (drawn ? ev[4] : 53.75 - ev[4]);
   c.value("vm_earing_pct", fmt_fixed(100 * vm_rel, 2), "%");
-  {  // the mesh is mirror-symmetric about 45 deg: so must the von Mises cup be
-    const auto& hv = runs[idx.at("von_mises")].height;
-    double mirror = 0;
-    for (std::size_t k = 0; k < hv.size(); ++k)
-      mirror = std::max(mirror, std::abs(hv[k].second - hv[hv.size() - 1 - k].second));
-    c.value("vm_mirror", fmt_fixed(mirror, 3), "mm");
-  }
+  double mirror = 0;  // the mesh is mirror-symmetric about 45 deg: so must the von Mises profile be
+  for (std::size_t k = 0; k < pv.size(); ++k) mirror = std::max(mirror, std::abs(pv[k].second - pv[pv.size() - 1 - k].second));
+  c.value("vm_mirror", fmt_fixed(mirror, 3), "mm");
+  const std::string what = drawn ? "cup height h: (h_max - h_min) / h_mean" : "flange outline r: (r_max - r_min) / (53.75 mm - r_mean)";
+  c.value("profile", drawn ? "the cup height" : "the flange outline (rim radius) at the end of the partial stroke");
   c.checks().claim(study::Kind::verification, "v1.von_mises.earing_small",
-                   "von Mises: (h_max - h_min) / h_mean below the mesh's angular error at the flange's mid radius",
+                   "von Mises, " + what + " below the mesh's angular error at the flange's mid radius",
                    vm_rel <= e_mesh,
                    "an isotropic sheet has no earing; the quarter O-grid's ring elements span unequal angles "
                    "(relative error " + fmt_fixed(100 * e_mesh, 2) + " % at r = " + fmt_fixed(r_mid, 1) +
                        " mm, computed from the mesh before the run), the only source of a spurious one");
-  const auto& hrun = runs[idx.at("hill48_r")].height;
-  double h0 = hrun.front().second, h90 = hrun.back().second, h45 = hrun.front().second;
-  for (const auto& [a, h] : hrun)
-    if (std::abs(a - 45.0) < std::abs(hrun.front().first - 45.0) + 1e-12) h45 = h;
-  double best = 1e30;
-  for (const auto& [a, h] : hrun)
-    if (std::abs(a - 45.0) < best) best = std::abs(a - 45.0), h45 = h;
+  const auto at = [](const std::vector<std::pair<double, double>>& p, double a) {
+    std::pair<double, double> best = p.front();
+    for (const auto& q : p)
+      if (std::abs(q.first - a) < std::abs(best.first - a)) best = q;
+    return best.second;
+  };
+  const double h0 = at(ph, 0), h45 = at(ph, 45), h90 = at(ph, 90);
   c.checks().claim(study::Kind::verification, "v1.hill48_r.ears_at_axes",
-                   "Hill'48 from r-values: highest point within 15° of RD or TD, lowest within 15° of 45°, and "
-                   "h(0), h(90) > h(45)",
-                   ears_at_axes == ((hs.amax <= 15.0 || hs.amax >= 75.0) && std::abs(hs.amin - 45.0) <= 15.0 &&
-                                    h0 > h45 && h90 > h45),
+                   "Hill'48 from r-values, " + std::string(drawn ? "cup height" : "flange outline") +
+                       ": highest within 15° of RD or TD, lowest within 15° of 45°, and p(0), p(90) > p(45)",
+                   ears_at_axes == ((eh[0] <= 15.0 || eh[0] >= 75.0) && std::abs(eh[2] - 45.0) <= 15.0 && h0 > h45 &&
+                                    h90 > h45),
                    "the flange thickens least, so draws in most slowly and rises highest, where r is largest: "
                    "r0 = " + fmt(hr.r0) + ", r90 = " + fmt(hr.r90) + " > r45 = " + fmt(hr.r45) +
-                       " gives ears at 0° and 90°; 15° is three rim elements of the quick mesh");
+                       " gives ears at 0° and 90°; 15° is two rim elements of the quick mesh");
   c.save(ht, "cup_height");
+  c.save(ot, "flange_outline");
   c.save(ft, "punch_force");
   c.save(tt, "thickness");
   c.save(st, "summary");
@@ -223,7 +271,9 @@ void body(study::Chapter& c) {
   c.value("rim_columns", std::to_string(r0.height.size()));
   c.value("stroke", fmt(spec.stroke), "mm");
   c.value("cycles", std::to_string(spec.cycles));
-  c.plot("v1_earing", "fig_v1_earing", {{"datafile", c.out("tables/cup_height.csv")}});
+  c.plot("v1_earing", "fig_v1_earing",
+         {{"datafile", c.out(drawn ? "tables/cup_height.csv" : "tables/flange_outline.csv")},
+          {"ylab", drawn ? "cup height (mm)" : "flange outline: rim radius (mm)"}});
   c.plot("v1_force", "fig_v1_force", {{"datafile", c.out("tables/punch_force.csv")}});
   c.plot("v1_thickness", "fig_v1_thickness", {{"datafile", c.out("tables/thickness.csv")}});
 }

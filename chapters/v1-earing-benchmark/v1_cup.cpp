@@ -133,13 +133,15 @@ CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec,
     const double rr = std::hypot(mesh.x[i0], mesh.y[i0]);
     const double ang = std::atan2(mesh.y[i0], mesh.x[i0]) * 180.0 / kPi;
     if (std::abs(rr - R) < 1e-6 * R) {  // rim column
-      double zm = 0;
+      double zm = 0, rm = 0;
       for (int i : col) {
         zm += s.z()[i] / static_cast<double>(col.size());
+        rm += std::hypot(s.x()[i], s.y()[i]) / static_cast<double>(col.size());
         r.rim_r_max = std::max(r.rim_r_max, std::hypot(s.x()[i], s.y()[i]));
         r.rim_z_min = std::min(r.rim_z_min, s.z()[i]);
       }
       r.height.push_back({ang, z_bottom - zm});
+      r.outline.push_back({ang, rm});
     }
     // Thickness lines along RD (y = 0), the 45-degree diagonal and TD (x = 0).
     double line = -1;
@@ -159,6 +161,7 @@ CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec,
                                      std::pow(s.z()[top] - s.z()[bot], 2))});
   }
   std::sort(r.height.begin(), r.height.end());
+  std::sort(r.outline.begin(), r.outline.end());
   std::sort(r.thickness.begin(), r.thickness.end());
   if (!vtu.empty()) io::write_fields(s, vtu);
   return r;

@@ -28,6 +28,9 @@ struct CupResult {
   /// Per rim column: angle from RD [deg] (reference), cup height [mm] = outer bottom (top face at the centre)
   /// minus the rim column's mean z.
   std::vector<std::pair<double, double>> height;
+  /// Per rim column: angle from RD [deg] (reference), the column's mean radius [mm] (the flange outline while
+  /// the flange is under the holder: the larger the radius, the more sheet is left to draw, the higher the wall).
+  std::vector<std::pair<double, double>> outline;
   /// Thickness lines at the end: angle (0, 45, 90), initial radius [mm], current radius [mm], current z [mm],
   /// thickness [mm] (distance of the top node from the bottom node of the column).
   std::vector<std::array<double, 5>> thickness;
