@@ -20,20 +20,14 @@
 #include <memory>
 
 #include "bench_friction.hpp"
+
+#include "bench_deck.hpp"  // cpu_model
 #include "fe/solver.hpp"
 #include "io/deck.hpp"
 
 using namespace drawbend;
 
 namespace {
-
-std::string cpu_model() {
-  std::ifstream f("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(f, line))
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return "unknown";
-}
 
 double slide_seconds(const fe::Model& model, long cycles) {
   fe::Model m = model;

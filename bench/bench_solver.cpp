@@ -6,7 +6,10 @@
 // pulled axially at 20 m/s with the other directions held; plus a draw-bend-
 // sized model with contact (strip over a pin, about 4,000 elements).
 // Cost = (wall(long run) - wall(short run)) / (extra cycles x elements), which
-// removes set-up time.  Results go to build/bench/results.csv.
+// removes set-up time.  Then the quick draw-bend deck's wall time on 1 and 2
+// threads, which must not be slower on 2 (bench_deck.cpp; not with --quick).
+// The CPU model and the element kernel head the output.  Results go to
+// build/bench/results.csv.
 #include <omp.h>
 
 #include <chrono>
@@ -15,6 +18,7 @@
 #include <iostream>
 #include <memory>
 
+#include "bench_deck.hpp"
 #include "bench_friction.hpp"
 #include "bench_material.hpp"
 #include "core/csv.hpp"
@@ -85,9 +89,15 @@ double seconds(fe::Model m, long cycles) {
 
 int main(int argc, char** argv) {
   const std::string out = argc > 1 ? argv[1] : "build/bench/results.csv";
-  const bool quick = argc > 2 && std::string(argv[2]) == "--quick";
-  const bool friction_only = argc > 2 && std::string(argv[2]) == "--friction";  // only the friction-law cost
-  const bool material_only = argc > 2 && std::string(argv[2]) == "--materials";  // only the material updates
+  auto flag = [&](const std::string& f) {
+    for (int i = 2; i < argc; ++i)
+      if (f == argv[i]) return true;
+    return false;
+  };
+  const bool quick = flag("--quick");
+  const bool friction_only = flag("--friction");  // only the friction-law cost
+  const bool material_only = flag("--materials");  // only the material updates
+  const bool solver_only = flag("--solver");       // only the element-cycle costs (and the deck unless --quick)
   struct Case {
     std::string name;
     fe::Model model;
@@ -96,9 +106,13 @@ int main(int argc, char** argv) {
   if (!quick) cases.push_back({"bar_64000", bar(200, 40, 8)});
   CsvWriter w({"case", "elements", "threads", "ns_per_element_cycle"});
   const char* isa = "";
-  fe::element_kernel(&isa);
-  w.comment(std::string("explicit solver cost; element kernel: ") + isa + "; machine: see README (performance section)");
-  std::cout << "element kernel: " << isa << "\n";
+  int width = 4;
+  fe::element_kernel(&isa, &width);
+  const std::string cpu = cpu_model();
+  w.comment(std::string("explicit solver cost; element kernel: ") + isa + " (" + std::to_string(width) +
+            " elements side by side); CPU: " + cpu + " (" + std::to_string(omp_get_num_procs()) + " processors)");
+  std::cout << "CPU: " << cpu << " (" << omp_get_num_procs() << " processors)\nelement kernel: " << isa << " ("
+            << width << " elements side by side)\n";
   const int maxt = omp_get_num_procs();
   if (friction_only || material_only) cases.clear();
   for (auto& c : cases) {
@@ -115,10 +129,18 @@ int main(int argc, char** argv) {
     }
   }
   std::filesystem::create_directories(std::filesystem::path(out).parent_path());
+  bool deck_ok = true;
+  if (!friction_only && !material_only && !quick)
+    deck_ok = bench_deck((std::filesystem::path(out).parent_path() / "scratch").string(), w);
+  if (solver_only) {
+    w.save(out);
+    std::cout << "written " << out << "\n";
+    return deck_ok ? 0 : 1;
+  }
   if (!friction_only) bench_material(w, quick);
   if (!material_only) bench_friction(std::string(DRAWBEND_DATA_DIR) + "/cases/block_surface.toml",
                  (std::filesystem::path(out).parent_path() / "friction_cost.csv").string(), w, quick);
   w.save(out);
   std::cout << "written " << out << "\n";
-  return 0;
+  return deck_ok ? 0 : 1;
 }

@@ -3,7 +3,9 @@
 // pressure map and row profiles (Figs. 2.6-2.10), the real contact angle, the
 // inside and outside strains (Figs. 2.11-2.17), the tension forces and the
 // retrieved mu (Figs. 2.19-2.20, Eq. 2.3), the mass-scaling comparison
-// (Fig. 2.5) and mesh convergence.  Half model: forces in N; MPa; mm; s.
+// (Fig. 2.5) and mesh convergence; the section view and the stress and
+// plastic strain along the strip (Figs. 2.8, 2.15, 2.16) in ch2_fields.cpp.
+// Half model: forces in N; MPa; mm; s.
 //
 // Recipe:
 //   1. Runs: Coulomb 0.1 and frictionless at the chapter mesh; frictionless at
@@ -109,8 +111,8 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.plot("pressure_map", "fig_2_6", {{"gridfile", c.out("tables/map_coulomb.dat")},
                                      {"title_text", "Contact pressure, 12.7 mm pin, μ = 0.1 (Fig. 2.6)"}});
   sim::save_row_profiles(fr.map, c.out("tables/rows_coulomb.csv"), "row profiles, 12.7 mm pin, mu = 0.1");
-  c.plot("row_profiles", "fig_2_8", {{"datafile", c.out("tables/rows_coulomb.csv")},
-                                     {"title_text", "Pressure along the rows, centre (y = 0) to edge (Figs. 2.8-2.9)"}});
+  c.plot("row_profiles", "fig_2_7", {{"datafile", c.out("tables/rows_coulomb.csv")},
+                                     {"title_text", "Pressure along the rows, centre (y = 0) to edge (Fig. 2.7)"}});
   const auto rows = sim::rows_of(fr.map);
   const auto& centre = rows.front();
   const auto& edge = rows.back();
@@ -335,7 +337,12 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
                      "meshes (Sec. 2.3.2, against Wilson's linear rise)",
                      sh < 0.25 && sh_f < 0.25,
                      fmt(100 * sh, 3) + " % and " + fmt(100 * sh_f, 3) + " % of the rise; a linear rise gives 60 %");
+    // Figs. 2.8, 2.15, 2.16 and Fig. 2.13's inside curve from the strip's
+    // last snapshot (ch2_fields.cpp).
+    field_figures(c, fr, gr);
     c.plot("strain_distribution", "fig_2_13", {{"datafile", c.out("tables/steady_strain_distribution.csv")},
+                                               {"insidefile", c.out("tables/inside_strain.csv")},
+                                               {"insidefinefile", c.out("tables/inside_strain_fine.csv")},
                                                {"wrapfile", fmt(Lw, 5)}});
   }
   c.value("d_steady_mid", fmt_fixed(d_mid, 1), "mm");

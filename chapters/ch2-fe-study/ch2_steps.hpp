@@ -15,4 +15,9 @@ struct FeOptions {
 /// Steps 4-8: our draw-bend runs of the 12.7 mm pin.
 void fe_study(drawbend::study::Chapter& c, const FeOptions& o);
 
+/// Figs. 2.8, 2.15 and 2.16 and the inlet/outlet strain claim, from the last
+/// snapshots of the mu = 0.1 runs on the chapter mesh (`fr`) and the finer one (`gr`).
+void field_figures(drawbend::study::Chapter& c, const drawbend::sim::DrawBendResult& fr,
+                   const drawbend::sim::DrawBendResult& gr);
+
 }  // namespace ch2

@@ -3,6 +3,8 @@
 //   and its nodes CSV) as a deck fragment of another solver, with the error of
 //   the written table or polynomial against our law (loop/export.hpp).
 // Exit codes: 0 ok, 2 bad input, 3 numerical failure.
+#include <omp.h>
+
 #include <iostream>
 
 #include "cli/exit_codes.hpp"
@@ -14,16 +16,19 @@ namespace drawbend::cli {
 
 int export_main(int argc, char** argv) {
   if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
-    std::cerr << "usage: drawbend export friction_model.toml --to lsdyna|openradioss|abaqus [--out FILE]\n";
+    std::cerr << "usage: drawbend export friction_model.toml --to lsdyna|openradioss|abaqus [--out FILE] [--threads N]\n";
     return argc >= 2 && std::string(argv[1]) == "--help" ? 0 : 2;
   }
   const std::string path = argv[1];
   std::string to, out;
+  int threads = 0;
   Options opt("drawbend export FRICTION_MODEL.toml", "Export an identified friction model to another solver.");
   opt.add(to, "to", "lsdyna, openradioss or abaqus");
   opt.add(out, "out", "output file (default: friction_<to>.k|.rad|.inp next to the model)");
+  opt.add(threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all; the export itself is serial)");
   return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
+    if (threads > 0) omp_set_num_threads(threads);
     const loop::ExportModel m = loop::read_friction_model(path);
     loop::ExportResult r;
     std::string ext;

@@ -11,6 +11,8 @@
 #include "cli/exit_codes.hpp"
 #include "cli/loop_cmd.hpp"
 
+#include <omp.h>
+
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -36,12 +38,50 @@ MapLibrary maps_for(const std::string& dir, const std::vector<double>& pins) {
 
 }  // namespace
 
+namespace {
+/// The value of `--model X` / `--model=X` in argv (empty if absent); removes it
+/// from args.  Throws InputError when --model has no value.
+std::string take_model(std::vector<char*>& args) {
+  std::string model;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string a = args[i];
+    if (a == "--model") {
+      if (i + 1 >= args.size()) throw InputError("--model: missing value (empirical or fe)");
+      model = args[i + 1];
+      args.erase(args.begin() + i, args.begin() + i + 2);
+      return model;
+    }
+    if (a.rfind("--model=", 0) == 0) {
+      model = a.substr(8);
+      args.erase(args.begin() + i);
+      return model;
+    }
+  }
+  return model;
+}
+}  // namespace
+
+// `--model fe` hands the command to the model-level loop (model_loop_cmd.cpp):
+// the FE model re-run with candidate effects against measured bending forces.
 int loop_main(int argc, char** argv) {
+  std::vector<char*> args(argv, argv + argc);
+  std::string model;
+  if (const int rc = with_exit_codes([&] { model = take_model(args); return 0; }); rc != 0) return rc;
+  if (model == "fe") return with_exit_codes([&] {
+      return model_loop_command(static_cast<int>(args.size()), args.data(), "drawbend loop DATA.csv --model fe");
+    });
+  if (!model.empty() && model != "empirical") {
+    std::cerr << "input error: --model: expected 'empirical' (the analysis-level loop) or 'fe' (the FE model re-run "
+                 "with candidate effects), found '" << model << "'\n";
+    return 2;
+  }
+  argc = static_cast<int>(args.size());
+  argv = args.data();
   const bool help = argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h");
   const std::string data_path = argc >= 2 ? argv[1] : "";
   LoopOptions lo;
   std::string out = "loop-out", maps_dir, bending = "linear", figures = DRAWBEND_FIGURES_DIR, gnuplot = "gnuplot";
-  int seed = static_cast<int>(lo.seed);
+  int seed = static_cast<int>(lo.seed), threads = 0;
   Options opt("drawbend loop DATA.csv",
               "Close the loop on measured draw-bend data: fit the base model (bending force per pin, constant mu "
               "per cell by Eq. 5.1), rank every extra column by held-out error and a permutation test, add the "
@@ -58,11 +98,16 @@ int loop_main(int argc, char** argv) {
   opt.add(seed, "seed", "random seed of the permutation test");
   opt.add(lo.alpha, "alpha", "family-wise significance level (Bonferroni over candidates)");
   opt.add(lo.max_steps, "max-steps", "maximum number of effects to add");
+  opt.add(threads, "threads", "OpenMP threads of the fits (0: OMP_NUM_THREADS or all)");
   opt.add(bending, "bending",
           "bending force: linear (b0 + b1 F_back) or constant, from the rotating-pin rows; for pins without "
           "rotating-pin rows: swift (Eq. 2.1), fe (the FE map's bending_force_N) or none (F_B = 0)");
   opt.add(figures, "figures", "directory of the gnuplot scripts (empty: no figures)");
   opt.add(gnuplot, "gnuplot", "gnuplot executable");
+  std::string model_help = "empirical";
+  opt.add(model_help, "model",
+          "empirical (this analysis-level loop) or fe: re-run the draw-bend FE model with candidate effects "
+          "against measured bending forces (drawbend loop DATA.csv --model fe --help lists its options)");
   if (help) {
     const char* argv_help[] = {"drawbend loop", "--help"};
     opt.parse(2, const_cast<char**>(argv_help));
@@ -74,6 +119,7 @@ int loop_main(int argc, char** argv) {
   }
   return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
+    if (threads > 0) omp_set_num_threads(threads);
     const BendingSource bsrc = bending_source(bending);  // throws on an unknown name
     lo.bending_linear = bending != "constant";
     lo.progress = true;
@@ -112,7 +158,7 @@ int loop_main(int argc, char** argv) {
 int synth_main(int argc, char** argv) {
   SynthOptions so;
   std::string out = "synth-out", maps_dir, data_dir = DRAWBEND_DATA_DIR, pins_text = "12.7,25.4,42";
-  int seed = 1, points = 7;
+  int seed = 1, points = 7, threads = 0;
   bool from_thesis = false;
   Options opt("drawbend synth", "Write synthetic draw-bend data with a hidden law, or the thesis data set.");
   opt.add(out, "out", "output directory");
@@ -126,8 +172,10 @@ int synth_main(int argc, char** argv) {
   opt.add_flag(from_thesis, "from-thesis", "write the thesis fits as sample rows (thesis_drawbend.csv)");
   opt.add(data_dir, "data", "data directory (with thesis/) for --from-thesis");
   opt.add(points, "points", "rows per thesis fit for --from-thesis");
+  opt.add(threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all)");
   return with_exit_codes([&] {
     if (!opt.parse(argc, argv)) return 0;
+    if (threads > 0) omp_set_num_threads(threads);
     ensure_writable_dir(out, "--out");
     if (from_thesis) {
       const Dataset d = thesis_dataset(data_dir + "/thesis", points);

@@ -1,10 +1,11 @@
 // drawbend: the command-line front end.
-//   drawbend run CASE.toml [--out DIR] [--threads N] [--quiet]
+//   drawbend run CASE.toml [--out DIR] [--threads N] [--quiet] [--progress-every S]
 //                [--checkpoint-every N|Ts] [--restart CHECKPOINT]
 // Runs one case deck, printing progress and an end summary (energy balance,
 // hourglass and kinetic energy ratios, added mass).  Exit codes: 0 ok,
 // 2 bad input (every problem of the deck, each with file:line: key), 3 a
 // numerical fault (a guard of fe/guards.hpp, naming element or node and time).
+#include <cmath>
 #include <csignal>
 #include <iostream>
 #include <string>
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
       "  run CASE.toml --out DIR      run one finite-element case deck (format: data/cases/README.md)\n"
       "  drawbend-deck [--run DIR]    write or run a draw-bend deck (full-strip forces; --basis half)\n"
       "  loop DATA.csv --out DIR      close the loop on measured draw-bend data (writes loop.md)\n"
+      "  model-loop DATA.csv --out DIR  re-run the draw-bend FE model with candidate effects\n"
       "  synth --out DIR              synthetic draw-bend data with a hidden law, or the thesis data\n"
       "  export MODEL.toml --to X     a friction_model.toml for LS-DYNA, OpenRadioss or Abaqus\n"
       "  --version                    print the version and commit\n"
@@ -58,11 +60,12 @@ int main(int argc, char** argv) {
   }
   const std::string cmd = argv[1];
   if (cmd == "drawbend-deck") return cli::with_exit_codes([&] { return cli::drawbend_deck_command(argc - 1, argv + 1); });
+  if (cmd == "model-loop") return cli::with_exit_codes([&] { return cli::model_loop_command(argc - 1, argv + 1); });
   if (cmd == "loop") return cli::loop_main(argc - 1, argv + 1);    // loop_cmd.cpp
   if (cmd == "synth") return cli::synth_main(argc - 1, argv + 1);  // loop_cmd.cpp
   if (cmd == "export") return cli::export_main(argc - 1, argv + 1);  // export_cmd.cpp
   if (cmd != "run") {
-    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, drawbend-deck, loop, synth, export; see drawbend --help)\n";
+    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, drawbend-deck, model-loop, loop, synth, export; see drawbend --help)\n";
     return 2;
   }
   // `drawbend run --help` prints the options below without a deck.
@@ -82,6 +85,7 @@ int main(int argc, char** argv) {
   opt.add(ro.out_dir, "out", "output directory");
   opt.add(ro.threads, "threads", "OpenMP threads (0: deck or default)");
   opt.add_flag(quiet, "quiet", "no progress line");
+  opt.add(ro.progress_every_s, "progress-every", "wall-clock seconds between progress lines (> 0)");
   opt.add(every, "checkpoint-every",
           "write <out>/checkpoint.bin every N cycles (e.g. 500) or T simulated seconds (e.g. 2e-3s)");
   opt.add(ro.restart, "restart", "continue from this checkpoint (same deck; use the same --out)");
@@ -89,6 +93,8 @@ int main(int argc, char** argv) {
   return cli::with_exit_codes([&] {
     if (!opt.parse(argc - (help ? 1 : 2), argv + (help ? 1 : 2))) return 0;
     ro.quiet = quiet;
+    if (!(ro.progress_every_s > 0) || !std::isfinite(ro.progress_every_s))
+      throw std::invalid_argument("--progress-every must be a positive number of seconds");
     ro.halt_after_cycles = halt;
     if (!every.empty()) io::parse_checkpoint_every(every, ro);
     if (halt > 0 && every.empty()) throw std::invalid_argument("--halt-after-cycles needs --checkpoint-every");

@@ -80,7 +80,7 @@ void Solver::contact_forces(double dt, bool friction_on) {
     std::vector<double>& diss = energy_scratch_[1];
     stored.assign(nn, 0.0);
     diss.assign(nn, 0.0);
-#pragma omp parallel for schedule(static) if (nn >= kParallelMin)
+#pragma omp parallel for schedule(static) if (parallel::worth_forking(nn, parallel::kContactNodeNs))
     for (int k = 0; k < nn; ++k) {
       ContactNode& c = nodes[k];
       const int i = c.node;

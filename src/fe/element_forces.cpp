@@ -21,11 +21,35 @@ bool avx2_kernel_available() {
 #endif
 }
 
-ElementRangeFn element_kernel(const char** name) {
+void bind_lanes(ElementView& v) {
+  const auto* j2 = dynamic_cast<const material::J2Isotropic*>(v.mat);
+  v.j2_lanes = j2 != nullptr;
+  if (j2) v.j2 = j2->lane_params();
+}
+
+bool avx512_kernel_available() {
+#if defined(DRAWBEND_HAVE_AVX512_KERNEL) && (defined(__x86_64__) || defined(__i386__))
+  return __builtin_cpu_supports("avx512f");
+#else
+  return false;
+#endif
+}
+
+ElementRangeFn element_kernel(const char** name, int* width) {
   const char* env = std::getenv("DRAWBEND_ISA");
   const std::string want = env ? env : "";
-  if (!want.empty() && want != "baseline" && want != "avx2")
-    std::cerr << "warning: DRAWBEND_ISA='" << want << "' is neither 'baseline' nor 'avx2'; ignored\n";
+  if (!want.empty() && want != "baseline" && want != "avx2" && want != "avx512")
+    std::cerr << "warning: DRAWBEND_ISA='" << want << "' is not 'baseline', 'avx2' or 'avx512'; ignored\n";
+  if (width) *width = 4;
+#ifdef DRAWBEND_HAVE_AVX512_KERNEL
+  if (want != "baseline" && want != "avx2" && avx512_kernel_available()) {
+    if (name) *name = "avx512";
+    if (width) *width = 8;
+    return &avx512::element_range;
+  }
+#endif
+  if (want == "avx512")
+    std::cerr << "warning: DRAWBEND_ISA=avx512, but this build or this CPU has no AVX-512 kernel; trying avx2\n";
 #ifdef DRAWBEND_HAVE_AVX2_KERNEL
   if (want != "baseline" && avx2_kernel_available()) {
     if (name) *name = "avx2";
@@ -60,6 +84,7 @@ void Solver::element_forces() {
   ev.dt_elem = dt_elem_.data();
   ev.mass_factor = elem_mass_factor_.data();
   ev.mat = &mat;
+  bind_lanes(ev);
   ev.ns = mat.state_size();
   ev.spin = mat.uses_spin();
   ev.E0 = mat.youngs_modulus();
@@ -70,13 +95,22 @@ void Solver::element_forces() {
   // spin and hourglass increments use its length (zero before the first cycle).
   ev.dtp = last_dt_;
   ev.wave_speed = wave_speed_;
-  static const ElementRangeFn kernel = element_kernel();
-  // Blocks of four elements: every element's result is independent of the
-  // block it falls in and of the thread that runs it.
-  constexpr int kBlock = 4;
+  struct Chosen {
+    ElementRangeFn fn = nullptr;
+    int width = 4;
+  };
+  static const Chosen chosen = [] {
+    Chosen c;
+    c.fn = element_kernel(nullptr, &c.width);
+    return c;
+  }();
+  const ElementRangeFn kernel = chosen.fn;
+  const int kBlock = chosen.width;
+  // Blocks of four (eight: avx512) elements: every element's result is
+  // independent of the block it falls in and of the thread that runs it.
   const int nb = (ne + kBlock - 1) / kBlock;
   int inverted = -1;
-#pragma omp parallel for schedule(static) if (ne >= kParallelMin)
+#pragma omp parallel for schedule(static) if (parallel::worth_forking(ne, parallel::kElementNs))
   for (int b = 0; b < nb; ++b) {
     const int r = kernel(ev, kBlock * b, std::min(ne, kBlock * (b + 1)), kBlock);
     if (r >= 0) {
@@ -94,7 +128,7 @@ void Solver::element_forces() {
   }
   // Nodal sums in a fixed order (the corners are sorted by element and corner).
   const int n = mesh.num_nodes();
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+#pragma omp parallel for schedule(static) if (parallel::worth_forking(n, parallel::kNodeSumNs))
   for (int i = 0; i < n; ++i) {
     double sx = 0, sy = 0, sz = 0;
     for (int k = nc_.start[i]; k < nc_.start[i + 1]; ++k) {

@@ -29,16 +29,19 @@
 // the physical corotational stiffness of hex8.hpp with the elastic moduli.
 //
 // Include this header in exactly one translation unit per instruction set
-// (element_kernel.cpp, element_kernel_avx2.cpp): it defines element_range.
+// (element_kernel.cpp, element_kernel_avx2.cpp, element_kernel_avx512.cpp): it
+// defines element_range.
 //
 // Structure (LULESH): gather -> geometry and strain rates on fixed-size locals
-// (vector lanes) -> material update, one point at a time (branchy, scalar) ->
+// (vector lanes) -> material update (J2 on the lanes with masks; the other
+// models one point at a time, scalar) ->
 // forces on fixed-size locals -> scatter into the element's corner buffer.
 #include <algorithm>
 #include <cmath>
 
 #include "fe/element_view.hpp"
 #include "fe/hex8_geometry.hpp"
+#include "fe/material_lanes.hpp"
 
 namespace drawbend::fe::DRAWBEND_ISA {
 
@@ -178,12 +181,20 @@ int element_block(const ElementView& ev, int e0) {
       for (int l = 0; l < W; ++l) set_lane(s[gp][k], l, ev.sig[12 * (e0 + l) + 6 * gp + k]);
     rotate_and_strain(Lmid, dtp, s[gp], deps[gp], spin[gp]);
   }
-  // ... the material update, one point at a time (it turns its own history with
-  // the point's spin), with the stress power
-  // increment per unit volume by the midpoint rule; the tangent ratio.
+  // ... the material update, with the stress power increment per unit volume
+  // by the midpoint rule; the tangent ratio.  J2 on the lanes, branch-free
+  // (fe/material_lanes.hpp); other materials one point at a time (each turns
+  // its own history with the point's spin).
   const material::Material& mat = *ev.mat;
   T ratio;
-  for (int l = 0; l < W; ++l) {
+  bool on_lanes = false;
+  if constexpr (W > 1) {
+    if (ev.j2_lanes) {
+      j2_points<W>(ev, e0, s, deps, V, ratio);
+      on_lanes = true;
+    }
+  }
+  for (int l = 0; l < W && !on_lanes; ++l) {
     const int e = e0 + l;
     double* st[2] = {nullptr, nullptr};
     if (ev.ns) {
@@ -293,6 +304,10 @@ int element_range(const ElementView& v, int begin, int end, int width) {
     if (r >= 0 && inverted < 0) inverted = r;
   };
   int e = begin;
+#ifdef __AVX512F__
+  if (width == 8)
+    for (; e + 8 <= end; e += 8) note(kernel::element_block<8>(v, e));
+#endif
   if (width == 4)
     for (; e + 4 <= end; e += 4) note(kernel::element_block<4>(v, e));
   for (; e < end; ++e) note(kernel::element_block<1>(v, e));

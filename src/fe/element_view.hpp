@@ -2,13 +2,15 @@
 // The element loop's data, as plain pointers into the solver's
 // structure-of-arrays state, and its entry points per instruction set.
 //
-// The loop is written once (fe/element_kernel.hpp) and compiled twice:
+// The loop is written once (fe/element_kernel.hpp) and compiled three times:
 // `baseline` (the x86-64 baseline, SSE2) and, where the compiler and machine
-// allow it, `avx2` (4 doubles per instruction, no FMA).  Both give the same
+// allow it, `avx2` (4 doubles per instruction, no FMA) and `avx512` (8 elements
+// side by side, 8 doubles per instruction, no FMA).  All give the same
 // bits (fe/lanes.hpp says why), which tests/unit/test_element_kernel.cpp
 // checks; the solver picks the widest one the CPU has.
 #include <array>
 
+#include "material/j2_isotropic.hpp"
 #include "material/material.hpp"
 
 namespace drawbend::fe {
@@ -29,6 +31,8 @@ struct ElementView {
   const material::Material* mat = nullptr;
   int ns = 0;                    ///< material state size per point
   bool spin = false;             ///< the material rotates its own state (Material::uses_spin)
+  bool j2_lanes = false;         ///< mat is J2 isotropic: its update runs on the lanes (bind_lanes)
+  material::J2Isotropic::LaneParams j2{};  ///< its constants, when j2_lanes
   double E0 = 0, G0 = 0;         ///< elastic moduli [MPa]
   double hourglass = 0;          ///< hourglass stiffness scale
   double c_elastic = 0;          ///< nu / (1 - nu)
@@ -36,8 +40,8 @@ struct ElementView {
   double wave_speed = 0;         ///< dilatational wave speed [mm/s]
 };
 
-/// Process elements [begin, end), `width` (1 or 4) side by side and the rest
-/// one by one.  Returns the lowest inverted element in the range, or -1.
+/// Process elements [begin, end), `width` (1, 4, or 8 in the avx512 kernel)
+/// side by side and the rest one by one.  Returns the lowest inverted element in the range, or -1.
 using ElementRangeFn = int (*)(const ElementView&, int begin, int end, int width);
 
 namespace baseline {
@@ -46,11 +50,20 @@ int element_range(const ElementView& v, int begin, int end, int width);
 namespace avx2 {
 int element_range(const ElementView& v, int begin, int end, int width);
 }
+namespace avx512 {
+int element_range(const ElementView& v, int begin, int end, int width);
+}
 
-/// The widest kernel this build and this CPU can run ("avx2" or "baseline"),
-/// unless DRAWBEND_ISA=baseline is set in the environment.
-ElementRangeFn element_kernel(const char** name = nullptr);
-/// Whether this build has the avx2 kernel and the CPU runs it.
+/// Sets v.j2_lanes and v.j2 from v.mat: the lane version of its update where it
+/// has one (J2 isotropic), else the scalar one.  Call after setting v.mat.
+void bind_lanes(ElementView& v);
+
+/// The widest kernel this build and this CPU can run ("avx512", "avx2" or
+/// "baseline"), unless DRAWBEND_ISA names a narrower one; `width`: the
+/// elements it takes side by side (8, 4, 4).
+ElementRangeFn element_kernel(const char** name = nullptr, int* width = nullptr);
+/// Whether this build has the avx2 (avx512) kernel and the CPU runs it.
 bool avx2_kernel_available();
+bool avx512_kernel_available();
 
 }  // namespace drawbend::fe

@@ -9,7 +9,8 @@
 // The kernels are written once, as templates, so the order is the same by
 // construction.  Two things could still break it, and both are excluded:
 //  - fused multiply-add (a*b + c rounded once): the vector ISA files are built
-//    with -ffp-contract=off and without -mfma;
+//    with -ffp-contract=off and without -mfma (AVX-512F has its own FMA
+//    instructions; -ffp-contract=off keeps the compiler from using them);
 //  - reassociation (-ffast-math, -fassociative-math): never used.
 #include <algorithm>
 #include <cmath>
@@ -25,6 +26,10 @@ struct Lanes<1> {
 template <>
 struct Lanes<4> {
   using type = double __attribute__((vector_size(32)));
+};
+template <>
+struct Lanes<8> {  // AVX-512 only (fe/element_kernel_avx512.cpp): on AVX2 eight lanes spill
+  using type = double __attribute__((vector_size(64)));
 };
 
 /// Lane l of a value (a double has one lane), and setting it (a setter, not

@@ -18,12 +18,10 @@
 #include "fe/guards.hpp"
 #include "fe/model.hpp"
 #include "fe/mesh.hpp"
+#include "fe/parallel_policy.hpp"  // whether a loop forks: parallel::worth_forking
 
 namespace drawbend::fe {
 
-/// Loops shorter than this run serially: for small models the fork/join of a
-/// parallel region costs more than the work (the same result either way).
-inline constexpr int kParallelMin = 512;
 
 struct Energies {
   double kinetic = 0, internal = 0, hourglass = 0;

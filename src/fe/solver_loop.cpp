@@ -269,7 +269,7 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
     en_.internal += ie;
     en_.hourglass += eh;
     // Positions at t_n+1.
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+#pragma omp parallel for schedule(static) if (parallel::worth_forking(n, parallel::kNodeUpdateNs))
     for (int i = 0; i < n; ++i) {
       x_[i] += dt * vx_[i];
       y_[i] += dt * vy_[i];

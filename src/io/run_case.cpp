@@ -281,7 +281,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
       next_field += p.step->duration / std::max(1, deck.output.fields_per_step);
     }
     const auto now = std::chrono::steady_clock::now();
-    if (!opt.quiet && std::chrono::duration<double>(now - wall_last).count() > 1.0) {
+    if (!opt.quiet && std::chrono::duration<double>(now - wall_last).count() > opt.progress_every_s) {
       wall_last = now;
       // Time left = wall time per cycle so far x the cycles still to run at the
       // current stable step (the step only shrinks, so this is a lower bound).

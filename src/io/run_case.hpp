@@ -16,6 +16,7 @@ namespace drawbend::io {
 struct RunOptions {
   std::string out_dir = "out";
   bool quiet = false;      ///< no progress line
+  double progress_every_s = 1.0;  ///< wall seconds between progress lines (> 0)
   int threads = 0;         ///< 0: the deck's or OpenMP's default
   /// Checkpoints to <out_dir>/checkpoint.bin every this much simulated time [s]
   /// or every this many cycles (0: none).

@@ -61,6 +61,18 @@ class HardeningCurve {
   /// End strain of segment k (+infinity for the last, extrapolated segment).
   double segment_end(int k) const noexcept;
 
+  /// The arrays behind segment() and stress_on(), for code that must compute
+  /// their bits in another form (the element kernel's lanes: fe/material_lanes.hpp).
+  struct Table {
+    const double *x, *y, *h;  ///< points and slopes
+    const int* bins;          ///< bins[b]: segment containing b * bin width
+    double inv_bin_width, max_bin;
+    int last;                 ///< size() - 1
+  };
+  Table table() const noexcept {
+    return {x_.data(), y_.data(), h_.data(), bins_.data(), inv_bin_width_, max_bin_, static_cast<int>(x_.size()) - 1};
+  }
+
   /// Flow stress sigma_y(ep) in MPa.
   double stress(double ep) const noexcept { return stress_on(segment(ep), ep); }
   /// Hardening modulus d sigma_y / d ep (right derivative) in MPa.

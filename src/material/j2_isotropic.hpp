@@ -37,6 +37,14 @@ class J2Isotropic final : public Material {
   std::string describe() const override;
 
   const HardeningCurve& curve() const { return curve_; }
+  /// The constants of update_point() and tangent_ratio() as plain numbers, for
+  /// the element kernel's lane version of both (fe/material_lanes.hpp), which
+  /// gives their bits.  Valid while this material lives.
+  struct LaneParams {
+    double lambda, G, g3, y0_sq, E;
+    HardeningCurve::Table curve;
+  };
+  LaneParams lane_params() const noexcept { return {el_.lambda, el_.G, g3_, y0_sq_, el_.E, curve_.table()}; }
   const IsotropicElasticity& elasticity() const { return el_; }
 
  private:

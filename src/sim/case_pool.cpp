@@ -79,16 +79,29 @@ std::vector<DrawBendResult> run_drawbend_all(const std::vector<CaseJob>& jobs, b
                    std::sqrt(s.mass_scaling));
   }
   std::mutex io;
+  // Progress: cases done of all, and the time left, estimated from the wall
+  // time so far and the share of the estimated cost still to run.
+  const double cost_all = std::accumulate(cost.begin(), cost.end(), 0.0);
+  double cost_done = 0;
+  std::size_t n_done = 0;
+  const auto start = std::chrono::steady_clock::now();
   run_cases(jobs.size(), [&](std::size_t i) {
     const auto t0 = std::chrono::steady_clock::now();
     {
       std::lock_guard<std::mutex> lock(io);
-      std::cout << "  FE: " << jobs[i].spec.name << " started\n" << std::flush;
+      std::cout << "  FE: " << jobs[i].spec.name << " (pin " << jobs[i].spec.pin_diameter << " mm) started\n" << std::flush;
     }
     out[i] = run_drawbend(jobs[i].spec, jobs[i].dir, reuse);
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::lock_guard<std::mutex> lock(io);
-    std::cout << "  FE: " << jobs[i].spec.name << " done in " << static_cast<int>(s + 0.5) << " s\n" << std::flush;
+    ++n_done;
+    cost_done += cost[i];
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << "  FE: " << jobs[i].spec.name << " (pin " << jobs[i].spec.pin_diameter << " mm) done in " << static_cast<int>(s + 0.5) << " s (" << n_done << "/"
+              << jobs.size() << " cases";
+    if (n_done < jobs.size() && cost_done > 0)
+      std::cout << ", about " << static_cast<int>(elapsed * (cost_all - cost_done) / cost_done + 0.5) << " s left";
+    std::cout << ")\n" << std::flush;
   }, cost);
   return out;
 }

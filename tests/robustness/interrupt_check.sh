@@ -44,8 +44,8 @@ interrupt() {
 # The command the message gives, with the real path of the binary.
 continue_cmd() { sed -n 's/^interrupted at .*; continue with: drawbend //p' "$work/log"; }
 
-# SIGINT after the first progress line (printed after a second of wall time).
-interrupt INT 130 'cycle [0-9]* of ~[0-9]*' "$drawbend" run "$deck" --out "$b"
+# SIGINT after the first progress line (printed after 0.1 s of wall time here).
+interrupt INT 130 'cycle [0-9]* of ~[0-9]*' "$drawbend" run "$deck" --out "$b" --progress-every 0.1
 # The progress line: "cycle N of ~M" predicts the cycles of the whole run.
 pred=$(tr '\r' '\n' <"$work/log" | grep -oE 'cycle [0-9]+ of ~[0-9]+' | head -1 | sed 's/.*~//')
 echo "progress line predicted ~$pred cycles; the straight run took $total"

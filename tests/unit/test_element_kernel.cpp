@@ -2,11 +2,15 @@
 // Answers:
 //  - Bit-identity: on 11 distorted, spinning, plastically loaded elements, three
 //    cycles of the kernel four elements side by side (baseline and, where the
-//    CPU has it, AVX2) give exactly the bits of one element at a time: corner
+//    CPU has it, AVX2; eight and four on AVX-512) give exactly the bits of one
+//    element at a time: corner
 //    forces, stresses, material states, hourglass forces and ratios, energy
 //    increments and stable time steps; for J2 isotropic and for Hill'48 with a
 //    Chaboche back stress (whose state holds back stresses and axes that turn
 //    with the spin).
+//  - J2 on the lanes (fe/material_lanes.hpp): a block mixing elastic points,
+//    points below the initial yield stress, plastic points and points whose
+//    increment crosses several curve points gives the scalar bits.
 //  - An inverted element (here no. 5, of a block of four) is reported, and the
 //    other elements of its block come out as if computed one by one.
 //  - Closed form: a rigid translation of an unstressed element gives zero
@@ -40,9 +44,15 @@ struct Block {
                                     material::HardeningCurve({0, 0.1, 1}, {100, 200, 300}),
                                     material::KinematicHardening{{{5000.0, 40.0}}, 0.0},
                                     material::Hill48::from_r_values(0.65, 0.65, 0.72)};
+  // Curve points close together: one increment crosses several of them.
+  material::J2Isotropic j2_fine{70000, 0.33, 2.7e-9,
+                                material::HardeningCurve({0, 0.001, 0.002, 0.004, 0.1, 1}, {100, 120, 130, 150, 200, 300})};
   const material::Material& mat;
 
-  Block(int n, unsigned seed, bool anisotropic = false) : ne(n), mat(anisotropic ? static_cast<const material::Material&>(hill) : j2) {
+  Block(int n, unsigned seed, bool anisotropic = false, bool fine = false)
+      : ne(n),
+        mat(anisotropic ? static_cast<const material::Material&>(hill)
+                        : fine ? static_cast<const material::Material&>(j2_fine) : j2) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(-1, 1);
     const double base[8][3] = {{0, 0, 0},  {2, 0, 0},  {2, 1, 0},  {0, 1, 0},
@@ -94,6 +104,7 @@ struct Block {
     v.c_elastic = 0.33 / 0.67;
     v.dtp = 1e-4;
     v.wave_speed = mat.wave_speed();
+    bind_lanes(v);
     return v;
   }
   /// Everything the kernel writes, for bitwise comparison.
@@ -114,6 +125,27 @@ std::vector<double> run(ElementRangeFn f, int width, int cycles, int* inverted =
     const int r = f(v, 0, b.ne, width);
     if (inverted) *inverted = r;
   }
+  return b.outputs();
+}
+
+/// J2 on the lanes with every branch of the radial return in one block: 37
+/// elements (blocks of 8 and 4 and single ones), some barely moving (elastic,
+/// some below the initial yield stress), some loaded hard (plastic, crossing
+/// several points of j2_fine's curve in one increment), some starting exactly
+/// on a curve point.  `fresh`: the state before, for the coverage checks.
+std::vector<double> run_mixed(ElementRangeFn f, int width, std::vector<double>* fresh = nullptr) {
+  Block b(37, 11, false, true);
+  for (int e = 0; e < b.ne; ++e) {
+    const double scale = e % 3 == 0 ? 0.01 : e % 3 == 1 ? 8.0 : 1.0;
+    for (int a = 0; a < 8; ++a) b.vx[8 * e + a] *= scale, b.vy[8 * e + a] *= scale, b.vz[8 * e + a] *= scale;
+    if (e % 3 == 0)
+      for (int k = 0; k < 12; ++k) b.sig[12 * e + k] *= 0.2;  // well inside the initial yield surface
+    if (e % 5 == 0) b.state[2 * e] = b.state[2 * e + 1] = 0.002;  // on a curve point
+    if (e % 7 == 0) b.state[2 * e] = 0.0;                          // virgin
+  }
+  if (fresh) *fresh = b.state;
+  const ElementView v = b.view();
+  for (int c = 0; c < 3; ++c) f(v, 0, b.ne, width);
   return b.outputs();
 }
 
@@ -142,6 +174,15 @@ BOOST_AUTO_TEST_CASE(lanes_give_the_bits_of_one_element_at_a_time) {
     BOOST_TEST_MESSAGE("this CPU has no AVX2: only the baseline kernel checked");
   }
 #endif
+#ifdef DRAWBEND_HAVE_AVX512_KERNEL
+  if (avx512_kernel_available()) {
+    BOOST_TEST(bitwise_equal(one, run(&avx512::element_range, 8, 3)));
+    BOOST_TEST(bitwise_equal(one, run(&avx512::element_range, 4, 3)));
+    BOOST_TEST(bitwise_equal(one, run(&avx512::element_range, 1, 3)));
+  } else {
+    BOOST_TEST_MESSAGE("this CPU has no AVX-512F: the avx512 kernel not checked");
+  }
+#endif
 }
 
 BOOST_AUTO_TEST_CASE(lanes_give_the_bits_of_one_element_at_a_time_hill48_chaboche) {
@@ -157,15 +198,62 @@ BOOST_AUTO_TEST_CASE(lanes_give_the_bits_of_one_element_at_a_time_hill48_chaboch
     BOOST_TEST(bitwise_equal(one, run(&avx2::element_range, 1, 3, nullptr, false, true)));
   }
 #endif
+#ifdef DRAWBEND_HAVE_AVX512_KERNEL
+  if (avx512_kernel_available()) {
+    BOOST_TEST(bitwise_equal(one, run(&avx512::element_range, 8, 3, nullptr, false, true)));
+    BOOST_TEST(bitwise_equal(one, run(&avx512::element_range, 4, 3, nullptr, false, true)));
+  }
+#endif
+}
+
+BOOST_AUTO_TEST_CASE(j2_on_lanes_every_branch_gives_the_scalar_bits) {
+  std::vector<double> fresh;
+  const auto one = run_mixed(&baseline::element_range, 1, &fresh);
+  // Coverage: some points stayed elastic, some yielded, some crossed two or more curve points.
+  const int ne = 37;
+  int elastic = 0, plastic = 0, crossed = 0;
+  const std::vector<double> pts = {0, 0.001, 0.002, 0.004, 0.1, 1};
+  auto segment = [&](double ep) {
+    int k = 0;
+    while (k + 1 < static_cast<int>(pts.size()) && ep >= pts[k + 1]) ++k;
+    return k;
+  };
+  for (int i = 0; i < 2 * ne; ++i) {
+    const double before = fresh[i], after = one[12 * ne + i];
+    if (after == before) ++elastic;
+    else ++plastic;
+    if (segment(after) >= segment(before) + 2) ++crossed;
+  }
+  BOOST_TEST_MESSAGE("points: " << elastic << " elastic, " << plastic << " plastic, " << crossed << " crossed 2+ curve points");
+  BOOST_TEST(elastic > 0);
+  BOOST_TEST(plastic > 0);
+  BOOST_TEST(crossed > 0);
+  BOOST_TEST(bitwise_equal(one, run_mixed(&baseline::element_range, 4)));
+#ifdef DRAWBEND_HAVE_AVX2_KERNEL
+  if (avx2_kernel_available()) BOOST_TEST(bitwise_equal(one, run_mixed(&avx2::element_range, 4)));
+#endif
+#ifdef DRAWBEND_HAVE_AVX512_KERNEL
+  if (avx512_kernel_available()) {
+    BOOST_TEST(bitwise_equal(one, run_mixed(&avx512::element_range, 8)));
+    BOOST_TEST(bitwise_equal(one, run_mixed(&avx512::element_range, 4)));
+  } else {
+    BOOST_TEST_MESSAGE("this CPU has no AVX-512F: the avx512 kernel not checked");
+  }
+#endif
 }
 
 BOOST_AUTO_TEST_CASE(inverted_element_reported_and_block_neighbours_unchanged) {
   int r1 = -2, r4 = -2;
   const auto one = run(&baseline::element_range, 1, 1, &r1, true);
-  const auto four = run(element_kernel(), 4, 1, &r4, true);
+  int width = 4;
+  const ElementRangeFn widest = element_kernel(nullptr, &width);
+  const auto four = run(widest, 4, 1, &r4, true);
   BOOST_TEST(r1 == 5);
   BOOST_TEST(r4 == 5);
   BOOST_TEST(bitwise_equal(one, four));
+  int r8 = -2;  // the widest kernel's own width (8 on AVX-512): element 5 is in the first block
+  BOOST_TEST(bitwise_equal(one, run(widest, width, 1, &r8, true)));
+  BOOST_TEST(r8 == 5);
 }
 
 BOOST_AUTO_TEST_CASE(rigid_translation_is_stress_free) {

@@ -1,0 +1,201 @@
+// Chapter 8 steps 1-3: measured points, the bending-force loop, the slope.
+#include <cmath>
+#include <sstream>
+
+#include "ch8_steps.hpp"
+#include "analysis/linear_fit.hpp"
+
+namespace ch8 {
+
+using namespace drawbend;
+
+double Inputs::measured(double pin, double fback) const {
+  return study::find_fit(bending, "RD", 0.0, pin).fit()(fback);
+}
+
+Inputs load_inputs(Chapter& c, const Config& cfg) {
+  Inputs in;
+  in.bending = study::load_fits(c.data("thesis/table_5_3.csv"), "Table 5.3");
+  const CsvTable t513 = read_csv(c.data("thesis/table_5_13.csv"));
+  for (const auto& r : t513.rows) {
+    in.pins.push_back(t513.number(r, "pin_diameter_mm"));
+    in.fback.push_back(t513.number(r, "fback_N"));
+  }
+  const std::string sc = c.data("thesis/scalars.csv");
+  const double v = study::scalar(sc, "ch4_outlet_speed").value;  // 50 mm/s (Sec. 5.7.1 runs as Chapter 4)
+  in.thickness = study::scalar(sc, "ch5_strip_thickness").value;
+  in.base = cfg.base;
+  in.base.thickness = in.thickness;
+  in.base.width = study::scalar(sc, "ch5_strip_width").value / 2;  // half model
+  in.base.speed = v;
+  in.base.mass_scaling = cfg.base.mass_scaling * (100.0 / v) * (100.0 / v);  // Chapter 4's inertia
+  in.base.hardening = c.data("materials/aa5754_o_rd.csv");
+  in.base.friction.clear();  // rotating pin: frictionless
+
+  auto tab = c.table({"pin_diameter_mm", "back_tension_N", "bending_force_N"},
+                     "measured bending force (full strip, N): Table 5.3's fit at the Table 5.13 back tension; the "
+                     "input format of `drawbend model-loop`");
+  for (std::size_t k = 0; k < in.pins.size(); ++k)
+    tab.row({fmt(in.pins[k]), fmt(in.fback[k]), fmt(in.measured(in.pins[k], in.fback[k]), 5)});
+  c.save(tab, "measured_fb");
+  c.value("fe_speed", fmt(v), "mm/s");
+  c.value("fe_ms", fmt(in.base.mass_scaling));
+  c.value("fe_h", fmt(in.base.element_length), "mm");
+  c.value("fe_across", std::to_string(in.base.across));
+  c.value("fit_pin", fmt(cfg.fit_pin), "mm");
+  c.value("min_gain", fmt(100 * cfg.min_gain), "%");
+  return in;
+}
+
+namespace {
+
+std::vector<sim::FbPoint> reference_points(const Inputs& in) {
+  std::vector<sim::FbPoint> pts;
+  for (std::size_t k = 0; k < in.pins.size(); ++k)
+    pts.push_back({in.pins[k], in.fback[k], in.measured(in.pins[k], in.fback[k]), "Table 5.3 at Table 5.13"});
+  return pts;
+}
+
+std::string pct(double x) { return (x >= 0 ? "+" : "") + fmt_fixed(100 * x, 1); }
+
+}  // namespace
+
+sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg) {
+  std::vector<sim::ModelCandidate> cands;
+  const std::string data_dir = c.data("");
+  std::string list = cfg.candidates;
+  if (list.empty()) list = cfg.full_study ? "split:0.15/0.3/0.45/0.6/1,voce,hill48" : "split:0.3/0.6";
+  std::stringstream ss(list);
+  for (std::string n; std::getline(ss, n, ',');)
+    if (!n.empty()) cands.push_back(sim::named_candidate(n, data_dir.substr(0, data_dir.size() - 1)));
+  sim::ModelLoopConfig lc;
+  lc.fit_pin = cfg.fit_pin;
+  lc.min_gain = cfg.min_gain;
+  lc.run_root = c.out("runs");
+  lc.reuse = cfg.reuse_runs != 0;
+  const auto pts = reference_points(in);
+  const sim::ModelLoopResult r = sim::run_model_loop(in.base, pts, cands, lc);
+
+  // Steps: residual -> candidate -> decision.
+  auto steps = c.table({"candidate", "what", "members_fit_rms_pct", "chosen", "fit_rms_pct", "heldout_rms_pct",
+                        "heldout_max_pct", "decision"},
+                       "the model-level loop: each candidate's members judged on the fit pin, the chosen member on the "
+                       "held-out pins; relative errors of F_B in % (RMS over points)");
+  steps.row({"baseline", "isotropic J2, tabulated RD flow curve", "", r.baseline.model,
+             fmt_fixed(100 * r.baseline.fit_rms, 1), fmt_fixed(100 * r.baseline.held_rms, 1),
+             fmt_fixed(100 * r.baseline.held_max, 1), ""});
+  for (const auto& s : r.steps) {
+    std::string members;
+    for (const auto& [m, e] : s.member_fit_rms) members += (members.empty() ? "" : "; ") + m + ": " + fmt_fixed(100 * e, 1);
+    steps.row({s.candidate, s.what, members, s.member, fmt_fixed(100 * s.eval.fit_rms, 1),
+               fmt_fixed(100 * s.eval.held_rms, 1), fmt_fixed(100 * s.eval.held_max, 1), s.decision});
+  }
+  c.save(steps, "model_loop_steps");
+
+  // Before/after per pin: measured, isotropic, each candidate's chosen member, final.
+  std::vector<std::string> head = {"pin_mm", "R_over_t", "F_back_N", "role", "measured_N", "isotropic_N", "isotropic_err_pct"};
+  for (const auto& s : r.steps) {
+    head.push_back(s.candidate + "_N");
+    head.push_back(s.candidate + "_err_pct");
+  }
+  head.insert(head.end(), {"final_N", "final_err_pct"});
+  auto tab = c.table(head, "bending force F_B = 2 (F_Y - F_X) per pin (full strip, N), measured (Table 5.3 at Table "
+                           "5.13) against the isotropic model and each candidate (its member chosen on the fit pin); "
+                           "role: fit = trained on this pin, held-out = judged only; final model: " + r.final_model.model);
+  auto fig = c.table({"R_over_t", "measured_N", "isotropic_N", "final_N", "pin_mm"},
+                     "F_B against pin radius over thickness R/t (full strip, N), for the figure");
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    const auto& b = r.baseline.points[k];
+    const auto& f = r.final_model.points[k];
+    const double rt = pts[k].pin_mm / 2 / in.thickness;
+    std::vector<std::string> row = {fmt(pts[k].pin_mm), fmt(rt, 3), fmt(pts[k].back_tension_N), f.held_out ? "held-out" : "fit",
+                                    fmt_fixed(pts[k].bending_N, 1), fmt_fixed(b.predicted_N, 1), pct(b.rel_error())};
+    for (const auto& s : r.steps) {
+      row.push_back(fmt_fixed(s.eval.points[k].predicted_N, 1));
+      row.push_back(pct(s.eval.points[k].rel_error()));
+    }
+    row.push_back(fmt_fixed(f.predicted_N, 1));
+    row.push_back(pct(f.rel_error()));
+    tab.row(row);
+    fig.row({fmt(rt, 4), fmt(pts[k].bending_N, 5), fmt(b.predicted_N, 5), fmt(f.predicted_N, 5), fmt(pts[k].pin_mm)});
+    const std::string d = fmt(pts[k].pin_mm);
+    c.value("fb_meas_d" + d, fmt_fixed(pts[k].bending_N, 1), "N");
+    c.value("fb_iso_d" + d, fmt_fixed(b.predicted_N, 1), "N");
+    c.value("fb_iso_err_d" + d, pct(b.rel_error()), "%");
+    c.value("fb_final_d" + d, fmt_fixed(f.predicted_N, 1), "N");
+    c.value("fb_final_err_d" + d, pct(f.rel_error()), "%");
+    c.value("role_d" + d, f.held_out ? "held out" : "fit");
+    // The goal as a check on every pin: the final model against the measured fit.
+    c.checks().agree(study::Kind::measured, "ch8.fb.d" + d, "F_B on the " + d + " mm pin, final model (" + r.final_model.model + "), " +
+                                         (f.held_out ? "held out" : "fit pin"),
+                     pts[k].bending_N, f.predicted_N, 0.10 * pts[k].bending_N, "N",
+                     "10 % of the measured fit: the accuracy goal for the bending force (issue 23); on held-out pins "
+                     "no parameter was fitted to this number");
+  }
+  c.save(tab, "fb_before_after");
+  c.save(fig, "fb_figure");
+  c.plot("model_loop_fb", "fb_per_pin", {{"datafile", c.out("tables/fb_figure.csv")}});
+  c.value("final_model", r.final_model.model);
+  c.value("iso_held_rms", fmt_fixed(100 * r.baseline.held_rms, 1), "%");
+  c.value("final_held_rms", fmt_fixed(100 * r.final_model.held_rms, 1), "%");
+  c.value("loop_runs", std::to_string(r.runs));
+  c.value("loop_run_wall", fmt_fixed(r.run_wall_s, 0), "s");
+  return r;
+}
+
+void tension_slope(Chapter& c, const Inputs& in, const Config& cfg, const sim::ModelLoopResult& loop) {
+  // F_B against F_X on the fit pin over Table 5.3's back-tension range: the
+  // isotropic model always, the final model in the full tier (two more runs of
+  // the combined model are too costly for the quick tier).
+  const auto& fit = study::find_fit(in.bending, "RD", 0.0, cfg.fit_pin);
+  std::vector<double> fx = {fit.range->lo, fit.range->hi};
+  for (std::size_t k = 0; k < in.pins.size(); ++k)
+    if (study::same(in.pins[k], cfg.fit_pin)) fx.insert(fx.begin() + 1, in.fback[k]);
+  const bool final_too = cfg.full_study && loop.final_model.model != loop.baseline.model;
+  std::vector<sim::DrawBendSpec> specs;
+  for (double f : fx) specs.push_back(sim::spec_for_point(in.base, {cfg.fit_pin, f, 0, ""}));
+  if (final_too)
+    for (double f : fx) specs.push_back(sim::spec_for_point(loop.final_spec, {cfg.fit_pin, f, 0, ""}));
+  const auto runs = sim::run_cached(specs, c.out("runs"), cfg.reuse_runs != 0);
+  const std::size_t n = fx.size();
+  auto tab = c.table({"F_back_N", "measured_N", "isotropic_N", "isotropic_u_N", "final_N", "final_u_N"},
+                     "F_B against back tension on the " + fmt(cfg.fit_pin) + " mm pin (full strip, N): Table 5.3's fit, "
+                     "the isotropic model and (full tier) the final model (" + loop.final_model.model + "); u: 2 x the "
+                     "difference between F_Y's two end-of-draw estimates (mean of the last third, regression of the last 25 % at its end)");
+  std::vector<double> yi, yf;
+  double sdi = 0, sdf = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    yi.push_back(2 * runs[k].tension_rise());
+    sdi = std::max(sdi, 2 * std::abs(runs[k].F_out - runs[k].F_out_regression));
+    std::string ff = "", fs = "";
+    if (final_too) {
+      yf.push_back(2 * runs[n + k].tension_rise());
+      sdf = std::max(sdf, 2 * std::abs(runs[n + k].F_out - runs[n + k].F_out_regression));
+      ff = fmt_fixed(yf.back(), 1);
+      fs = fmt_fixed(2 * std::abs(runs[n + k].F_out - runs[n + k].F_out_regression), 2);
+    }
+    tab.row({fmt(fx[k]), fmt_fixed(in.measured(cfg.fit_pin, fx[k]), 1), fmt_fixed(yi.back(), 1),
+             fmt_fixed(2 * std::abs(runs[k].F_out - runs[k].F_out_regression), 2), ff, fs});
+  }
+  c.save(tab, "fb_vs_tension");
+  // Tolerance: two standard errors of a slope between the range ends when
+  // each F_B is uncertain by sd (the disagreement of the two F_Y estimates).
+  const double span = fx.back() - fx.front();
+  c.value("slope_meas", fmt(fit.slope.value, 3));
+  c.value("slope_range", fmt(fx.front()) + "-" + fmt(fx.back()), "N");
+  auto check = [&](const std::vector<double>& y, double sd, const std::string& model, const std::string& key) {
+    const double slope = analysis::fit_line(fx, y).slope;
+    const double tol = 2 * std::sqrt(2.0) * sd / span;
+    c.value("slope_" + key, fmt(slope, 3));
+    c.value("slope_tol_" + key, fmt(tol, 2));
+    c.checks().agree(study::Kind::measured, "ch8.fb.slope." + key, "slope of F_B against back tension, " + fmt(cfg.fit_pin) + " mm pin, " + model,
+                     fit.slope.value, slope, tol, "N/N",
+                     "two standard errors of a slope over " + fmt(span) + " N when each simulated F_B scatters by up to " +
+                         fmt(sd, 2) + " N (2 x the difference between F_Y's mean over the last third and its regression value at the end: how far the draw is from steady)");
+  };
+  check(yi, sdi, "isotropic model", "iso");
+  if (final_too) check(yf, sdf, "final model (" + loop.final_model.model + ")", "final");
+  c.value("slope_final_ran", final_too ? "yes" : "no (quick tier: two more combined-hardening runs)");
+}
+
+}  // namespace ch8

@@ -1,0 +1,42 @@
+// Chapter 8: closing the loop at the model level.  The loop of Chapter 7
+// adds empirical terms to the analysis; here the candidate effects are
+// modelling effects, tested by re-running the finite-element draw-bend model
+// (rotating = frictionless pin, Sec. 5.7.1 conditions) against the measured
+// bending force of Table 5.3 (src/sim/model_loop.hpp, the same code as
+// `drawbend model-loop`).  Forces are full-strip forces in N; lengths mm.
+//
+// Recipe:
+//   1. Measured points: Table 5.3's fits at the Table 5.13 back tensions
+//      (tables/measured_fb.csv, the format of `drawbend model-loop`).
+//   2. The loop: isotropic baseline; candidates fitted on the 12.7 mm pin,
+//      judged on the 25.4 and 42 mm pins (held out); before/after table,
+//      figure, F_B checks per pin.
+//   3. F_B against back tension on the 12.7 mm pin (slope check).
+//   4. Full tier only: mass scaling on every pin; 2/4/8 elements across on
+//      the 25.4 and 42 mm pins.
+#include "ch8_steps.hpp"
+#include "sim/fe_options.hpp"
+
+int main(int argc, char** argv) {
+  static ch8::Config cfg;
+  drawbend::study::Chapter ch("ch8-model-loop", "Chapter 8: closing the loop at the model level (bending force)");
+  auto& o = ch.options();
+  drawbend::sim::add_fe_options(o, cfg.base, cfg.run_fe, cfg.reuse_runs);
+  o.add(cfg.full_study, "full-study",
+        "1: the full tier's candidates (beta grid, Voce, Hill'48), the slope of the final model, mass scaling and "
+        "width convergence; 0: the quick tier");
+  o.add(cfg.fit_pin, "fit-pin", "pin whose bending force trains the candidates [mm]");
+  o.add(cfg.candidates, "candidates",
+        "comma-separated candidates (split:B1/B2..., voce, hill48, ms:X, across:N); empty: the tier's list");
+  o.add(cfg.numerics, "numerics", "1: mass-scaling and width studies; 0: not; -1: as --full-study");
+  o.add(cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
+  return drawbend::study::run_chapter(ch, argc, argv, [](drawbend::study::Chapter& c) {
+    using namespace ch8;
+    const Inputs in = load_inputs(c, cfg);  // 1
+    c.value("fe_ran", cfg.run_fe ? "yes" : "no");
+    if (!cfg.run_fe) return;
+    if (cfg.numerics == 1 || (cfg.numerics < 0 && cfg.full_study)) numerical_convergence(c, in, cfg);  // 4, first: numerics before physics
+    const auto loop = bending_force_loop(c, in, cfg);      // 2
+    tension_slope(c, in, cfg, loop);                       // 3
+  });
+}

@@ -1,0 +1,114 @@
+// `drawbend model-loop DATA.csv --out DIR [options]`, also reached as
+// `drawbend loop DATA.csv --model fe ...` (loop_cmd.cpp): the model-level loop
+// (src/sim/model_loop.hpp) on a user's measured bending forces.  DATA.csv has
+// the columns pin_diameter_mm, back_tension_N, bending_force_N (full strip,
+// rotating = frictionless pin).  The points on --fit-pin train; the others are
+// held out.  Candidates (--candidates, comma separated, tried in order):
+// split:B1/B2/... (split combined hardening, beta chosen on the fit pin),
+// voce, hill48, ms:X (mass scaling), across:N.  FE runs are cached in
+// DIR/runs by deck hash.  Writes DIR/baseline.csv, DIR/final.csv and
+// DIR/steps.csv.  Units: mm, N, mm/s.
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "core/csv.hpp"
+#include "cli/loop_cmd.hpp"
+#include "core/options.hpp"
+#include "sim/model_loop.hpp"
+
+namespace drawbend::cli {
+
+int model_loop_command(int argc, char** argv, const char* name) {
+  const std::string me = name;
+  sim::DrawBendSpec s;
+  s.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
+  s.width = 12.7;
+  s.speed = 50;
+  s.mass_scaling = 4e4;  // the quick tier at 50 mm/s (1e4 x (100/50)^2)
+  s.element_length = 1.0;
+  s.across = 2;
+  std::string out, candidates = "split:0.3/0.6";
+  sim::ModelLoopConfig cfg;
+  int reuse = 1;
+  Options opt(me, "Test modelling effects by re-running the draw-bend FE model (rotating = frictionless pin, "
+                       "explicit, half strip) against measured bending forces. DATA.csv: one row per point with the "
+                       "columns pin_diameter_mm, back_tension_N, bending_force_N (full strip, N; '#' comments). The "
+                       "points on --fit-pin train each candidate's members; the other pins are held out, and a "
+                       "candidate is accepted only if their RMS relative error falls by more than --min-gain. FE "
+                       "runs go through the case pool (DRAWBEND_JOBS at a time, progress with time left) and are "
+                       "cached in OUT/runs by deck hash. Writes OUT/baseline.csv, OUT/final.csv, OUT/steps.csv.");
+  opt.add(out, "out", "output directory (runs cached in OUT/runs)");
+  opt.add(cfg.fit_pin, "fit-pin", "pin diameter whose points train [mm]; the others are held out");
+  opt.add(cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
+  opt.add(candidates, "candidates", "comma-separated: split:B1/B2..., voce, hill48, ms:X, across:N");
+  opt.add(reuse, "reuse", "read back finished runs with the identical deck (1) or rerun (0)");
+  opt.add(s.thickness, "thickness", "strip thickness [mm]");
+  opt.add(s.width, "width", "modelled half width [mm]");
+  opt.add(s.speed, "speed", "outlet speed [mm/s]");
+  opt.add(s.mass_scaling, "mass-scaling", "base mass scaling");
+  opt.add(s.element_length, "element-length", "element length along the strip [mm]");
+  opt.add(s.across, "across", "elements across the half width");
+  opt.add(s.hardening, "hardening", "hardening curve CSV of the base (isotropic) model");
+  if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
+    if (!opt.parse(argc, argv)) return 0;
+    throw InputError(me + ": missing DATA.csv (columns pin_diameter_mm, back_tension_N, bending_force_N; --help lists "
+                     "the options)");
+  }
+  const std::string data = argv[1];
+  if (!opt.parse(argc - 1, argv + 1)) return 0;
+  if (out.empty()) throw InputError(me + ": --out DIR is required");
+  // Every input is checked before the first FE run (runs take minutes).
+  const auto points = sim::read_fb_points(data);  // file:line: column for every bad cell
+  std::string bad;
+  auto need = [&](bool ok, const std::string& msg) { if (!ok) bad += (bad.empty() ? "" : "\n") + msg; };
+  need(s.thickness > 0, "--thickness: expected a number > 0 mm, found " + fmt(s.thickness));
+  need(s.width > 0, "--width: expected a number > 0 mm, found " + fmt(s.width));
+  need(s.speed > 0, "--speed: expected a number > 0 mm/s, found " + fmt(s.speed));
+  need(s.mass_scaling >= 1, "--mass-scaling: expected a number >= 1, found " + fmt(s.mass_scaling));
+  need(s.element_length > 0, "--element-length: expected a number > 0 mm, found " + fmt(s.element_length));
+  need(s.across >= 1, "--across: expected a whole number >= 1, found " + std::to_string(s.across));
+  need(std::ifstream(s.hardening).good(), "--hardening: cannot open '" + s.hardening + "'");
+  need(cfg.min_gain >= 0, "--min-gain: expected a number >= 0, found " + fmt(cfg.min_gain));
+  std::vector<sim::ModelCandidate> cands;
+  std::stringstream ss(candidates);
+  for (std::string tok; std::getline(ss, tok, ',');) {
+    if (tok.empty()) continue;
+    try {
+      cands.push_back(sim::named_candidate(tok, DRAWBEND_DATA_DIR));
+    } catch (const InputError& e) {
+      need(false, std::string("--candidates: ") + e.what());
+    }
+  }
+  if (!bad.empty()) throw InputError(bad);
+  bool on_fit = false;
+  for (const auto& p : points) on_fit = on_fit || std::abs(p.pin_mm - cfg.fit_pin) < 1e-6 * cfg.fit_pin;
+  if (!on_fit)
+    throw InputError(data + ": no point on the fit pin " + fmt(cfg.fit_pin) + " mm (--fit-pin names one of the "
+                     "pin_diameter_mm values)");
+  ensure_writable_dir(out, "--out");
+  cfg.run_root = out + "/runs";
+  cfg.reuse = reuse != 0;
+  const auto r = sim::run_model_loop(s, points, cands, cfg);
+  sim::save_eval_csv(r.baseline, out + "/baseline.csv");
+  sim::save_eval_csv(r.final_model, out + "/final.csv");
+  CsvWriter w({"candidate", "member", "fit_rms", "heldout_rms", "heldout_max", "decision"});
+  w.comment(" relative errors of F_B (fractions); fit pin " + fmt(cfg.fit_pin) + " mm");
+  w.row({"baseline", r.baseline.model, fmt(r.baseline.fit_rms, 4), fmt(r.baseline.held_rms, 4),
+         fmt(r.baseline.held_max, 4), ""});
+  for (const auto& st : r.steps)
+    w.row({st.candidate, st.member, fmt(st.eval.fit_rms, 4), fmt(st.eval.held_rms, 4), fmt(st.eval.held_max, 4),
+           st.decision});
+  w.save(out + "/steps.csv");
+  std::cout << "model: " << r.final_model.model << "\n";
+  for (const auto& p : r.final_model.points)
+    std::cout << "  pin " << fmt(p.measured.pin_mm) << " mm, F_X " << fmt(p.measured.back_tension_N) << " N: measured "
+              << fmt(p.measured.bending_N, 4) << " N, baseline "
+              << fmt_fixed(r.baseline.points[&p - &r.final_model.points[0]].predicted_N, 1) << " N, now "
+              << fmt_fixed(p.predicted_N, 1) << " N" << (p.held_out ? " (held out)" : " (fit)") << "\n";
+  std::cout << r.runs << " FE runs, " << fmt_fixed(r.run_wall_s, 0) << " s of run wall time\n";
+  return 0;
+}
+
+}  // namespace drawbend::cli

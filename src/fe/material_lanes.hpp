@@ -1,0 +1,169 @@
+#pragma once
+// The J2 radial return (material/j2_isotropic.cpp) on W elements side by side,
+// for the element kernel (fe/element_kernel.hpp): the same arithmetic in the
+// same order on vector lanes, so every lane gives the bits of
+// J2Isotropic::update_point() and tangent_ratio() (tests/unit/
+// test_element_kernel.cpp compares every output).
+//
+// Branch-free across lanes: each point is elastic or plastic by a mask, both
+// results are computed and the mask selects one (a bitwise select, not an
+// arithmetic blend, so a NaN or infinity in the unused branch never leaks).
+// Only the curve look-up is per lane (a table read by segment index), and the
+// segment-by-segment search of the plastic strain loops as long as its
+// slowest lane, which is once unless a lane crosses a curve point.
+//
+// Compiled once per instruction set, in its namespace (as element_kernel.hpp):
+// nothing here may be an inline function shared with other translation units.
+#include <cmath>
+#include <limits>
+
+#include "fe/element_view.hpp"
+#include "fe/lanes.hpp"
+
+namespace drawbend::fe::DRAWBEND_ISA::kernel {
+
+using J2Params = material::J2Isotropic::LaneParams;
+using CurveTable = material::HardeningCurve::Table;
+
+/// HardeningCurve::segment(), on its table.
+inline int curve_segment(const CurveTable& c, double ep) {
+  if (ep >= c.x[c.last]) return c.last;
+  if (ep <= 0.0) return 0;
+  const double b = ep * c.inv_bin_width;
+  int k = c.bins[b < c.max_bin ? static_cast<int>(b) : static_cast<int>(c.max_bin)];
+  while (ep >= c.x[k + 1]) ++k;
+  while (k > 0 && ep < c.x[k]) --k;
+  return k;
+}
+
+/// Lane l's segment k: its start strain, start stress and slope.
+template <int W, class T>
+inline void gather_segment(const CurveTable& c, const int k[W], T& xk, T& yk, T& hk) {
+  for (int l = 0; l < W; ++l) {
+    set_lane(xk, l, c.x[k[l]]);
+    set_lane(yk, l, c.y[k[l]]);
+    set_lane(hk, l, c.h[k[l]]);
+  }
+}
+
+template <int W, class M>
+inline bool any_lane(const M& m) {
+  bool any = false;
+  for (int l = 0; l < W; ++l) any = any || m[l] != 0;
+  return any;
+}
+
+/// One integration point of W elements: trial stress from s and d, radial
+/// return; s and ep are updated in place (J2Isotropic::update_point).
+template <int W, class T>
+inline void j2_update(const J2Params& P, const T d[6], T s[6], T& ep) {
+  using M = decltype(T{} < T{});
+  const T lt = P.lambda * (d[0] + d[1] + d[2]);
+  const double g2 = 2.0 * P.G;
+  const T t0 = s[0] + lt + g2 * d[0];
+  const T t1 = s[1] + lt + g2 * d[1];
+  const T t2 = s[2] + lt + g2 * d[2];
+  const T t3 = s[3] + P.G * d[3];
+  const T t4 = s[4] + P.G * d[4];
+  const T t5 = s[5] + P.G * d[5];
+  const T p = (t0 + t1 + t2) * (1.0 / 3.0);
+  const T a0 = t0 - p, a1 = t1 - p, a2 = t2 - p;
+  const T q2 = 1.5 * (a0 * a0 + a1 * a1 + a2 * a2) + 3.0 * (t3 * t3 + t4 * t4 + t5 * t5);
+  const M below_initial = q2 <= P.y0_sq;
+  if (!any_lane<W>(~below_initial)) {  // all lanes below the initial yield stress
+    s[0] = t0, s[1] = t1, s[2] = t2, s[3] = t3, s[4] = t4, s[5] = t5;
+    return;
+  }
+  int k[W];
+  for (int l = 0; l < W; ++l) k[l] = curve_segment(P.curve, ep[l]);
+  T xk, yk, hk;
+  gather_segment<W>(P.curve, k, xk, yk, hk);
+  const T sy = yk + hk * (ep - xk);
+  const M elastic = below_initial | (q2 <= sy * sy);
+  if (!any_lane<W>(~elastic)) {
+    s[0] = t0, s[1] = t1, s[2] = t2, s[3] = t3, s[4] = t4, s[5] = t5;
+    return;
+  }
+  // Plastic lanes: q_tr - 3G (e - ep) = sigma_y(e), segment by segment.
+  T q;
+  lane_sqrt(q2, q);
+  T start = ep, r = q - sy, e = ep;
+  M active = ~elastic;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  for (;;) {
+    const T et = start + r / (P.g3 + hk);
+    T end;
+    for (int l = 0; l < W; ++l) set_lane(end, l, k[l] + 1 <= P.curve.last ? P.curve.x[k[l] + 1] : kInf);
+    e = active ? et : e;
+    const M cross = active & ~(et <= end);
+    if (!any_lane<W>(cross)) break;
+    for (int l = 0; l < W; ++l)
+      if (cross[l]) ++k[l];
+    T xn, yn, hn;
+    gather_segment<W>(P.curve, k, xn, yn, hn);
+    xk = cross ? xn : xk;
+    yk = cross ? yn : yk;
+    hk = cross ? hn : hk;
+    start = cross ? end : start;
+    r = cross ? q - P.g3 * (start - ep) - yk : r;
+    active = cross;
+  }
+  const T f = (yk + hk * (e - xk)) / q;
+  s[0] = elastic ? t0 : p + f * a0;
+  s[1] = elastic ? t1 : p + f * a1;
+  s[2] = elastic ? t2 : p + f * a2;
+  s[3] = elastic ? t3 : f * t3;
+  s[4] = elastic ? t4 : f * t4;
+  s[5] = elastic ? t5 : f * t5;
+  ep = elastic ? ep : e;
+}
+
+/// ratio = J2Isotropic::tangent_ratio() of W points (stress s, plastic strain
+/// ep).  Through a reference, as lane_sqrt (fe/lanes.hpp): no vector return.
+template <int W, class T>
+inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, T& ratio) {
+  int k[W];
+  for (int l = 0; l < W; ++l) k[l] = curve_segment(P.curve, ep[l]);
+  T xk, yk, hk;
+  gather_segment<W>(P.curve, k, xk, yk, hk);
+  const T sy = yk + hk * (ep - xk);
+  const T p = (s[0] + s[1] + s[2]) * (1.0 / 3.0);
+  const T a0 = s[0] - p, a1 = s[1] - p, a2 = s[2] - p;
+  const T q2 = 1.5 * (a0 * a0 + a1 * a1 + a2 * a2) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+  T q;
+  lane_sqrt(q2, q);
+  const T f = q / sy;
+  const T plastic = hk / (P.E + hk);
+  // material::yield_proximity_ratio(f, plastic), by masks.
+  const T one = T{} + 1.0;
+  const T between = 1.0 + (plastic - 1.0) * (f - 0.90) / 0.08;
+  ratio = f <= 0.90 ? one : (f >= 0.98 ? plastic : between);
+}
+
+/// The material section of element_block<W> for J2 isotropic: both points'
+/// updates (s: the rotated stresses, deps: the increments), the stress power
+/// into ev.ie_inc and the mean tangent ratio; the new stresses and plastic
+/// strains go to ev.sig and ev.state.  The bits of the scalar section.
+template <int W, class T>
+inline void j2_points(const ElementView& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio) {
+  T ie = {}, r[2];
+  for (int gp = 0; gp < 2; ++gp) {
+    T sn[6], ep;
+    for (int k = 0; k < 6; ++k) sn[k] = s[gp][k];
+    for (int l = 0; l < W; ++l) set_lane(ep, l, ev.state[2 * (e0 + l) + gp]);
+    j2_update<W>(ev.j2, deps[gp], sn, ep);
+    T w = {};
+    for (int k = 0; k < 6; ++k) w += 0.5 * (s[gp][k] + sn[k]) * deps[gp][k];
+    ie += w;
+    for (int l = 0; l < W; ++l) {
+      for (int k = 0; k < 6; ++k) ev.sig[12 * (e0 + l) + 6 * gp + k] = lane(sn[k], l);
+      ev.state[2 * (e0 + l) + gp] = lane(ep, l);
+    }
+    j2_tangent_ratio<W>(ev.j2, sn, ep, r[gp]);
+  }
+  const T iev = 0.5 * V * ie;
+  for (int l = 0; l < W; ++l) ev.ie_inc[e0 + l] = lane(iev, l);
+  ratio = 0.5 * (r[0] + r[1]);
+}
+
+}  // namespace drawbend::fe::DRAWBEND_ISA::kernel

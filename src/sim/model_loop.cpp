@@ -1,0 +1,353 @@
+// The model-level loop (sim/model_loop.hpp).
+#include "sim/model_loop.hpp"
+
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <stdexcept>
+
+#include "core/csv.hpp"
+#include "core/hash.hpp"
+#include "sim/case_pool.hpp"
+
+#include <filesystem>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+namespace drawbend::sim {
+
+std::vector<FbPoint> read_fb_points(const std::string& csv_path) {
+  const CsvTable t = read_csv(csv_path);
+  std::vector<std::string> problems;
+  for (const char* col : {"pin_diameter_mm", "back_tension_N", "bending_force_N"})
+    if (!t.has_column(col)) problems.push_back(t.path + ":1: missing column '" + col + "'");
+  if (!problems.empty()) throw InputError(problems.front());
+  std::vector<FbPoint> out;
+  for (const auto& r : t.rows) {
+    FbPoint p;
+    p.where = t.path + ":" + std::to_string(r.line);
+    try {
+      p.pin_mm = t.number(r, "pin_diameter_mm");
+      p.back_tension_N = t.number(r, "back_tension_N");
+      p.bending_N = t.number(r, "bending_force_N");
+    } catch (const InputError& e) {
+      problems.push_back(e.what());
+      continue;
+    }
+    if (p.pin_mm <= 0) problems.push_back(t.where(r, "pin_diameter_mm") + ": must be > 0 mm");
+    if (p.back_tension_N <= 0) problems.push_back(t.where(r, "back_tension_N") + ": must be > 0 N");
+    if (p.bending_N <= 0) problems.push_back(t.where(r, "bending_force_N") + ": must be > 0 N");
+    out.push_back(p);
+  }
+  if (out.empty() && problems.empty()) problems.push_back(t.path + ": no data rows");
+  if (!problems.empty()) {
+    std::string all;
+    for (const auto& s : problems) all += (all.empty() ? "" : "\n") + s;
+    throw InputError(all);
+  }
+  return out;
+}
+
+std::vector<DrawBendResult> run_cached(std::vector<DrawBendSpec> specs, const std::string& run_root, bool reuse,
+                                       double* wall_s) {
+  std::vector<CaseJob> jobs;
+  std::vector<std::size_t> job_of;
+  std::map<std::string, std::size_t> index;
+  for (auto& s : specs) {
+    s.name = "fb";
+    const std::string text = deck_text(s);
+    auto it = index.find(text);
+    if (it == index.end()) {
+      it = index.emplace(text, jobs.size()).first;
+      jobs.push_back({s, run_root + "/fb_" + hex64(fnv1a64(text))});
+    }
+    job_of.push_back(it->second);
+  }
+  const auto res = run_drawbend_all(jobs, reuse);
+  if (wall_s)
+    for (const auto& r : res) *wall_s += r.wall_seconds;
+  std::vector<DrawBendResult> out;
+  for (std::size_t j : job_of) out.push_back(res[j]);
+  return out;
+}
+
+DrawBendSpec spec_for_point(const DrawBendSpec& base, const FbPoint& p) {
+  DrawBendSpec s = base;
+  s.pin_diameter = p.pin_mm;
+  s.back_tension = p.back_tension_N / 2.0;  // half model
+  return s;
+}
+
+namespace {
+
+bool same_pin(double a, double b) { return std::abs(a - b) < 1e-6 * std::max(1.0, std::abs(a)); }
+
+double rms(const std::vector<double>& v) {
+  if (v.empty()) return std::nan("");
+  double s = 0;
+  for (double x : v) s += x * x;
+  return std::sqrt(s / v.size());
+}
+
+/// Runs specs once each (by deck text) over the whole loop; F_B full strip per spec.
+class Runner {
+ public:
+  explicit Runner(const ModelLoopConfig& cfg) : cfg_(cfg) {}
+  std::vector<PointResult> evaluate(std::vector<DrawBendSpec> specs, const std::vector<FbPoint>& pts) {
+    std::vector<std::string> keys;
+    std::vector<DrawBendSpec> todo;
+    for (auto& s : specs) {
+      s.name = "fb";
+      keys.push_back(deck_text(s));
+      if (!done_.count(keys.back())) todo.push_back(s);
+    }
+    if (!todo.empty()) {
+      std::cout << "model loop: " << todo.size() << " FE case(s) to run or read (" << done_.size()
+                << " done so far)\n"
+                << std::flush;
+      const auto res = run_cached(todo, cfg_.run_root, cfg_.reuse, &wall_);
+      for (const auto& r : res) done_[deck_text(r.spec)] = {2.0 * r.tension_rise(), 2.0 * r.F_out_std, r.dir};
+    }
+    std::vector<PointResult> out;
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+      PointResult r;
+      r.measured = pts[i];
+      r.held_out = !same_pin(pts[i].pin_mm, cfg_.fit_pin);
+      const Done& d = done_.at(keys[i]);
+      r.predicted_N = d.fb;
+      r.predicted_sd_N = d.sd;
+      r.run_dir = d.dir;
+      out.push_back(r);
+    }
+    return out;
+  }
+  int runs() const { return static_cast<int>(done_.size()); }
+  double wall() const { return wall_; }
+
+ private:
+  struct Done {
+    double fb, sd;
+    std::string dir;
+  };
+  const ModelLoopConfig& cfg_;
+  std::map<std::string, Done> done_;
+  double wall_ = 0;
+};
+
+ModelEval summarise(std::string model, std::vector<PointResult> pts) {
+  ModelEval e;
+  e.model = std::move(model);
+  std::vector<double> fit, held;
+  for (const auto& p : pts) {
+    (p.held_out ? held : fit).push_back(p.rel_error());
+    if (p.held_out) e.held_max = std::max(e.held_max, std::abs(p.rel_error()));
+  }
+  e.fit_rms = rms(fit);
+  e.held_rms = rms(held);
+  e.points = std::move(pts);
+  return e;
+}
+
+std::vector<DrawBendSpec> specs_of(const DrawBendSpec& base, const std::vector<FbPoint>& pts) {
+  std::vector<DrawBendSpec> s;
+  for (const auto& p : pts) s.push_back(spec_for_point(base, p));
+  return s;
+}
+
+}  // namespace
+
+ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoint>& points,
+                               const std::vector<ModelCandidate>& candidates, const ModelLoopConfig& cfg) {
+  std::vector<FbPoint> fit_pts, held_pts;
+  for (const auto& p : points) (same_pin(p.pin_mm, cfg.fit_pin) ? fit_pts : held_pts).push_back(p);
+  if (fit_pts.empty()) throw InputError("model loop: no measured point on the fit pin " + fmt(cfg.fit_pin) + " mm");
+  if (held_pts.empty()) throw InputError("model loop: no measured point off the fit pin " + fmt(cfg.fit_pin) +
+                                         " mm: nothing is held out");
+  Runner run(cfg);
+  ModelLoopResult out;
+  DrawBendSpec model = base;
+  std::string label = "isotropic";
+  out.baseline = summarise(label, run.evaluate(specs_of(model, points), points));
+  ModelEval current = out.baseline;
+  for (const auto& c : candidates) {
+    if (c.members.empty()) throw std::invalid_argument("model loop: candidate " + c.name + " has no member");
+    StepRecord step;
+    step.candidate = c.name;
+    step.what = c.what;
+    // 1. every member on the fit pin only; choose the best there.
+    std::vector<DrawBendSpec> specs;
+    std::vector<FbPoint> pts;
+    for (const auto& m : c.members) {
+      DrawBendSpec s = model;
+      m.apply(s);
+      for (const auto& p : fit_pts) {
+        specs.push_back(spec_for_point(s, p));
+        pts.push_back(p);
+      }
+    }
+    const auto fitres = run.evaluate(specs, pts);
+    std::size_t best = 0;
+    double best_rms = 1e300;
+    for (std::size_t k = 0; k < c.members.size(); ++k) {
+      std::vector<double> e;
+      for (std::size_t j = 0; j < fit_pts.size(); ++j) e.push_back(fitres[k * fit_pts.size() + j].rel_error());
+      step.member_fit_rms.emplace_back(c.members[k].label, rms(e));
+      if (rms(e) < best_rms) best_rms = rms(e), best = k;
+    }
+    // 2. the chosen member on every point (held-out pins only now).
+    DrawBendSpec chosen = model;
+    c.members[best].apply(chosen);
+    step.member = c.members[best].label;
+    step.eval = summarise(label + " + " + step.member, run.evaluate(specs_of(chosen, points), points));
+    const double gain = current.held_rms - step.eval.held_rms;
+    if (gain > cfg.min_gain) {
+      step.decision = "accepted";
+      model = chosen;
+      label = step.eval.model;
+      current = step.eval;
+    } else {
+      step.decision = "rejected: held-out RMS " + fmt_fixed(100 * current.held_rms, 1) + " % -> " +
+                      fmt_fixed(100 * step.eval.held_rms, 1) + " %";
+    }
+    std::cout << "model loop: " << c.name << " (" << step.member << "): held-out RMS " << fmt_fixed(100 * step.eval.held_rms, 1)
+              << " %, " << step.decision << "\n"
+              << std::flush;
+    out.steps.push_back(std::move(step));
+  }
+  out.final_model = current;
+  out.final_spec = model;
+  out.runs = run.runs();
+  out.run_wall_s = run.wall();
+  return out;
+}
+
+namespace {
+
+/// The [material] table of a spec's material (empty: the isotropic J2 model on
+/// the spec's hardening curve; '{...}': an inline table; else a TOML file).
+toml::table material_table(const std::string& material) {
+  if (material.empty()) return toml::table{{"type", "j2"}};
+  if (material.front() != '{') {
+    toml::table file = toml::parse_file(material);
+    if (const auto* t = file["material"].as_table()) return *t;
+    throw InputError(material + ": expected a [material] table");
+  }
+  const std::string doc = "material = " + material;
+  toml::table w = toml::parse(std::string_view(doc));
+  return *w["material"].as_table();
+}
+
+void inline_all(toml::table& t) {
+  for (auto&& [k, v] : t)
+    if (auto* sub = v.as_table()) {
+      inline_all(*sub);
+      sub->is_inline(true);
+    }
+}
+
+/// `current` with the keys of `add` set (a flow-curve key replaces the
+/// others), as an inline table: candidates compose (Voce or Hill'48 on top of
+/// an accepted combined-hardening model keep its back stress).
+std::string merged_material(const std::string& current, const toml::table& add) {
+  toml::table m = material_table(current);
+  const bool curve = add.contains("voce") || add.contains("swift") || add.contains("hardening");
+  if (curve)
+    for (const char* k : {"voce", "swift", "hardening", "yield", "tangent"}) m.erase(k);
+  for (auto&& [k, v] : add) m.insert_or_assign(k, v);
+  inline_all(m);
+  m.is_inline(true);
+  std::ostringstream o;
+  o << m;
+  return o.str();
+}
+
+/// One key of a material file's [material] table (InputError if missing).
+toml::node_view<const toml::node> file_key(const toml::table& file_material, const std::string& path,
+                                           const char* key) {
+  if (!file_material.contains(key)) throw InputError(path + ": [material] has no '" + key + "'");
+  return file_material[key];
+}
+
+}  // namespace
+
+ModelCandidate named_candidate(const std::string& name, const std::string& data_dir) {
+  ModelCandidate c;
+  c.name = name;
+  const auto colon = name.find(':');
+  const std::string kind = name.substr(0, colon);
+  const std::string arg = colon == std::string::npos ? "" : name.substr(colon + 1);
+  auto values = [&]() {
+    std::vector<double> v;
+    std::size_t pos = 0;
+    while (pos <= arg.size()) {
+      const auto slash = arg.find('/', pos);
+      const std::string tok = arg.substr(pos, slash == std::string::npos ? std::string::npos : slash - pos);
+      char* end = nullptr;
+      const double x = std::strtod(tok.c_str(), &end);
+      if (tok.empty() || *end != '\0' || !std::isfinite(x))
+        throw InputError("candidate '" + name + "': '" + tok + "' is not a number");
+      v.push_back(x);
+      if (slash == std::string::npos) break;
+      pos = slash + 1;
+    }
+    return v;
+  };
+  if (kind == "split") {
+    c.what = "split combined hardening (kinematic fraction beta fitted on the fit pin)";
+    for (double b : values()) {
+      if (b < 0 || b > 1) throw InputError("candidate '" + name + "': beta must lie in [0, 1]");
+      c.members.push_back({"split beta " + fmt(b), [b](DrawBendSpec& s) {
+                             s.material = "{ type = \"j2_combined\", kinematic = { beta = " + fmt_shortest(b) + " } }";
+                           }});
+    }
+  } else if ((kind == "voce" || kind == "hill48") && arg.empty()) {
+    // Only the named part changes: Voce replaces the flow curve (yield surface
+    // and back stress kept); Hill'48 replaces the yield surface (flow curve
+    // and back stress kept), so each effect is judged alone.
+    const std::string f = data_dir + (kind == "voce" ? "/materials/aa5754_o_voce_hou2020.toml"
+                                                      : "/materials/aa5754_o_hill48_hou2020.toml");
+    const toml::table fm = material_table(f);
+    toml::table add;
+    if (kind == "voce") {
+      c.what = "published Voce flow curve (Hou 2020) instead of the tabulated RD (Swift) curve";
+      add.insert("voce", *file_key(fm, f, "voce").node());
+    } else {
+      c.what = "Hill'48 yield surface, published r-values (Hou 2020), on the same flow curve";
+      add.insert("type", "hill48");
+      add.insert("hill48", *file_key(fm, f, "hill48").node());
+    }
+    c.members.push_back({kind == "voce" ? "Voce flow curve" : "Hill'48", [add](DrawBendSpec& s) {
+                           toml::table a = add;
+                           // hill48 on a combined model keeps its back stress (hill48 takes `kinematic`)
+                           s.material = merged_material(s.material, a);
+                         }});
+  } else if (kind == "ms") {
+    c.what = "mass scaling (numerical: should change nothing when converged)";
+    for (double x : values()) {
+      if (x < 1) throw InputError("candidate '" + name + "': mass scaling must be >= 1");
+      c.members.push_back({"mass scaling " + fmt(x), [x](DrawBendSpec& s) { s.mass_scaling = x; }});
+    }
+  } else if (kind == "across") {
+    c.what = "elements across the half width (numerical)";
+    for (double x : values()) {
+      if (x < 1 || x != std::floor(x)) throw InputError("candidate '" + name + "': across must be a positive integer");
+      const int n = static_cast<int>(x);
+      c.members.push_back({std::to_string(n) + " across", [n](DrawBendSpec& s) { s.across = n; }});
+    }
+  } else {
+    throw InputError("unknown candidate '" + name + "' (expected split:B1/B2..., voce, hill48, ms:X, across:N)");
+  }
+  return c;
+}
+
+void save_eval_csv(const ModelEval& e, const std::string& path) {
+  CsvWriter w({"pin_diameter_mm", "back_tension_N", "measured_FB_N", "predicted_FB_N", "rel_error", "role", "run"});
+  w.comment(" model: " + e.model + "; full-strip forces [N]; rel_error = predicted/measured - 1");
+  for (const auto& p : e.points)
+    w.row({fmt(p.measured.pin_mm), fmt(p.measured.back_tension_N), fmt(p.measured.bending_N, 5),
+           fmt_fixed(p.predicted_N, 1), fmt(p.rel_error(), 4), p.held_out ? "held-out" : "fit", p.run_dir});
+  w.save(path);
+}
+
+}  // namespace drawbend::sim

@@ -1,0 +1,108 @@
+// The model-level loop's inputs (src/sim/model_loop.hpp), without FE runs.
+// Closed-form answers:
+//  - a measured CSV with 2 good rows reads as 2 points (full strip values kept);
+//  - a row with a non-number and a row with a negative force are both named
+//    by file:line in one InputError;
+//  - spec_for_point halves the back tension (1500 N full strip -> 750 N half)
+//    and sets the pin (25.4 mm);
+//  - "split:0.3/0.6" is two members whose material is j2_combined with
+//    beta = 0.3 and 0.6; "ms:2500" sets mass scaling 2500; "across:4" sets 4;
+//    unknown names, beta 1.5 and across 2.5 are input errors;
+//  - candidates compose: Voce on top of split beta 0.3 keeps the back stress
+//    and replaces only the flow curve; Hill'48 on top of it keeps the back
+//    stress and the (tabulated) flow curve and sets the published r-values
+//    0.65 / 0.65 / 0.72 (data/materials/aa5754_o_hill48_hou2020.toml);
+//  - a loop whose points all lie on the fit pin has nothing held out: an
+//    input error before any run.
+#define BOOST_TEST_MODULE model_loop
+#include <boost/test/unit_test.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <toml++/toml.h>
+
+#include "core/csv.hpp"
+#include "sim/model_loop.hpp"
+
+using namespace drawbend;
+
+namespace {
+std::string write_tmp(const std::string& name, const std::string& text) {
+  const auto p = std::filesystem::temp_directory_path() / name;
+  std::ofstream(p) << text;
+  return p.string();
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(reads_points) {
+  const auto p = write_tmp("ml_good.csv", "# c\npin_diameter_mm,back_tension_N,bending_force_N\n12.7,1500,303.1\n42,1900,47.7\n");
+  const auto pts = sim::read_fb_points(p);
+  BOOST_REQUIRE_EQUAL(pts.size(), 2u);
+  BOOST_TEST(pts[1].pin_mm == 42.0);
+  BOOST_TEST(pts[0].bending_N == 303.1);
+}
+
+BOOST_AUTO_TEST_CASE(bad_rows_named) {
+  const auto p = write_tmp("ml_bad.csv", "pin_diameter_mm,back_tension_N,bending_force_N\n12.7,abc,303\n25.4,1800,-1\n");
+  try {
+    sim::read_fb_points(p);
+    BOOST_FAIL("no error");
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    BOOST_TEST(m.find("ml_bad.csv:2") != std::string::npos);
+    BOOST_TEST(m.find("ml_bad.csv:3") != std::string::npos);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(spec_and_candidates) {
+  sim::DrawBendSpec base;
+  const auto s = sim::spec_for_point(base, {25.4, 1500, 100, ""});
+  BOOST_TEST(s.back_tension == 750.0);
+  BOOST_TEST(s.pin_diameter == 25.4);
+  const auto c = sim::named_candidate("split:0.3/0.6", "/data");
+  BOOST_REQUIRE_EQUAL(c.members.size(), 2u);
+  sim::DrawBendSpec t = base;
+  c.members[1].apply(t);
+  BOOST_TEST(t.material == "{ type = \"j2_combined\", kinematic = { beta = 0.6 } }");
+  t = base;
+  sim::named_candidate("ms:2500", "/data").members[0].apply(t);
+  BOOST_TEST(t.mass_scaling == 2500.0);
+  sim::named_candidate("across:4", "/data").members[0].apply(t);
+  BOOST_TEST(t.across == 4);
+  BOOST_CHECK_THROW(sim::named_candidate("chaboche", "/data"), InputError);
+  BOOST_CHECK_THROW(sim::named_candidate("split:1.5", "/data"), InputError);
+  BOOST_CHECK_THROW(sim::named_candidate("split:0.3/x", "/data"), InputError);
+  BOOST_CHECK_THROW(sim::named_candidate("across:2.5", "/data"), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(candidates_compose) {
+  sim::DrawBendSpec t;
+  t.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
+  sim::named_candidate("split:0.3", DRAWBEND_DATA_DIR).members[0].apply(t);
+  sim::DrawBendSpec v = t, h = t;
+  sim::named_candidate("voce", DRAWBEND_DATA_DIR).members[0].apply(v);
+  sim::named_candidate("hill48", DRAWBEND_DATA_DIR).members[0].apply(h);
+  auto table = [](const std::string& m) {
+    const std::string doc = "m = " + m;
+    return toml::table(*toml::parse(std::string_view(doc))["m"].as_table());
+  };
+  const toml::table mv = table(v.material), mh = table(h.material);
+  BOOST_TEST(mv["type"].value_or(std::string()) == "j2_combined");
+  BOOST_TEST(mv["kinematic"]["beta"].value_or(0.0) == 0.3);
+  BOOST_TEST(mv["voce"]["sigma0"].value_or(0.0) == 100.4);
+  BOOST_TEST(mh["type"].value_or(std::string()) == "hill48");
+  BOOST_TEST(mh["kinematic"]["beta"].value_or(0.0) == 0.3);
+  BOOST_TEST(mh["hill48"]["r0"].value_or(0.0) == 0.65);
+  BOOST_TEST(mh["hill48"]["r90"].value_or(0.0) == 0.72);
+  BOOST_TEST(!mh.contains("voce"));  // the flow curve stays the tabulated one
+  BOOST_TEST(sim::deck_text(h).find("aa5754_o_rd.csv") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(nothing_held_out) {
+  sim::ModelLoopConfig cfg;
+  cfg.fit_pin = 12.7;
+  cfg.run_root = (std::filesystem::temp_directory_path() / "ml_none").string();
+  BOOST_CHECK_THROW(sim::run_model_loop(sim::DrawBendSpec{}, {{12.7, 1500, 303, ""}}, {}, cfg), InputError);
+}
