@@ -103,7 +103,9 @@ CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec,
       reported = tenths;
       std::ostringstream line;
       line << "  cup " << var.id << ": " << 10 * tenths << " % of " << spec.stroke << " mm (cycle " << p.cycle - c0
-           << "), punch force " << -4e-3 * s.tool_force("punch")[2] << " kN\n";
+           << "), punch force " << -4e-3 * s.tool_force("punch")[2] << " kN, kinetic/internal "
+           << (e.internal > 0 ? e.kinetic / e.internal : 0) << ", hourglass/internal "
+           << (e.internal > 0 ? e.hourglass / e.internal : 0) << "\n";
       std::fputs(line.str().c_str(), stderr);
     }
     if (p.cycle % every) return;
