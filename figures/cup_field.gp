@@ -9,22 +9,28 @@ eval figterm(1080, 520, 13)
 set output outfile
 unset key
 unset grid
-set view 50, 30, 1.25, 1
+set view 50, 30, 1.3, 1
 set view equal xyz
 set xlabel "x = RD (mm)"
-set ylabel "y = TD (mm)"
-set zlabel "z (mm)" rotate parallel
+set ylabel "y = TD (mm)" offset -2, 0
+set zlabel "z (mm)" rotate parallel offset 2, 0
 set xtics 20
 set ytics 20
 set ztics 10
 set xyplane at 0
 set palette defined (0 "#30123b", 0.25 "#4686fb", 0.5 "#1ae4b6", 0.75 "#faba39", 1 "#7a0403")
-set multiplot layout 1,2
-set colorbox horizontal user origin 0.10, 0.13 size 0.30, 0.035
+# Each plot keeps a band below it for its colour bar, so the axis labels stay
+# clear of the bars and inside the figure.
+set multiplot
+set origin 0.02, 0.20
+set size 0.47, 0.80
+set colorbox horizontal user origin 0.10, 0.15 size 0.30, 0.035
 set title "Equivalent plastic strain"
 set cblabel "plastic strain (-)"
 splot datafile using 1:2:3:4 with points pt 5 ps 0.55 lc palette
-set colorbox horizontal user origin 0.60, 0.13 size 0.30, 0.035
+set origin 0.51, 0.20
+set size 0.47, 0.80
+set colorbox horizontal user origin 0.60, 0.15 size 0.30, 0.035
 set title "von Mises stress"
 set cblabel "von Mises (MPa)"
 splot datafile using 1:2:3:5 with points pt 5 ps 0.55 lc palette

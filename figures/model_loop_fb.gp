@@ -5,7 +5,7 @@
 load figdir."/common.gp"
 set title "Bending force per pin: measured against predicted"
 set xlabel "pin radius / strip thickness R/t"
-set ylabel "bending force F_B, full strip (N)"
+set ylabel "bending force F_{B}, full strip (N)" enhanced
 set key top right
 set yrange [0:*]
 plot datafile using 1:2 with linespoints ls 1 title "measured (Table 5.3)", \

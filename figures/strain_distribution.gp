@@ -10,7 +10,7 @@ load figdir."/common.gp"
 set title "Steady strain along the strip, 12.7 mm pin, μ = 0.1 (Fig. 2.13)"
 set xlabel "Position along the strip from the entry tangent (mm)"
 set ylabel "Longitudinal log strain"
-set key below horizontal
+set key below horizontal height 1.5  # a gap between the x label and the key
 Lw = wrapfile + 0.0
 set arrow from 0, graph 0 to 0, graph 1 nohead dt 2 lc rgb "#777777"
 set arrow from Lw, graph 0 to Lw, graph 1 nohead dt 2 lc rgb "#777777"

@@ -24,6 +24,7 @@
 #include "ch2_steps.hpp"
 #include "sim/case_pool.hpp"
 #include "sim/map_tools.hpp"
+#include "study/run_health.hpp"
 #include "study/thesis_data.hpp"
 
 namespace ch2 {
@@ -37,7 +38,7 @@ namespace {
 /// its final level (mean of the last third), from the start of the draw.
 double steady_distance(const sim::DrawBendResult& r, double band) {
   double last_out = 0;
-  for (const auto& [t, f] : r.draw_series("outlet_force_N", -1))  // the grip pulls along -z
+  for (const auto& [t, f] : r.draw_series(sim::Signal::outlet_force, -1))  // the grip pulls along -z
     if (std::abs(f - r.F_out) > band * r.F_out) last_out = t;
   return last_out * r.spec.speed;  // the speed ramp is short: slide ~ speed x time
 }
@@ -97,14 +98,9 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("fe_ms", fmt(s.mass_scaling));
   c.value("fe_ms_low", fmt(s_ms.mass_scaling));
   c.value("fe_FX", fmt(s.back_tension), "N");
-  for (const auto* r : {&fr, &ff, &fm, &gf, &gr, &all[5], &all[6]}) {
-    c.checks().claim(study::Kind::health, "ch2.fe." + r->spec.name + ".energy", "energy balance error < 1 %, " + r->spec.name,
-                     r->balance_error < 0.01, "balance error " + fmt(r->balance_error, 3));
-    c.checks().claim(study::Kind::health, "ch2.fe." + r->spec.name + ".quasistatic", "kinetic/internal energy < 5 %, " + r->spec.name,
-                     r->kinetic_ratio < 0.05, "KE/IE " + fmt(r->kinetic_ratio, 3));
-    c.checks().claim(study::Kind::health, "ch2.fe." + r->spec.name + ".hourglass", "hourglass/internal energy < 5 %, " + r->spec.name,
-                     r->hourglass_ratio < 0.05, "HG/IE " + fmt(r->hourglass_ratio, 3));
-  }
+  for (const auto* r : {&fr, &ff, &fm, &gf, &gr, &all[5], &all[6]})
+    study::check_run_health(c.checks(), "ch2.fe." + r->spec.name, r->spec.name,
+                            {r->balance_error, r->kinetic_ratio, r->hourglass_ratio});
 
   // 2. Pressure map (mu = 0.1, end of the draw), rows, contact arc, peaks.
   sim::save_map_grid(fr.map, c.out("tables/map_coulomb.dat"), "contact pressure [MPa], 12.7 mm pin, mu = 0.1");
@@ -236,16 +232,16 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   // 3. Strains of the tracked section (inside = contact side, outside = free side).
   auto st = c.table({"slide_mm", "strain_inside", "strain_outside"},
                     "longitudinal log strain of the tracked section vs slide in the draw step (mu = 0.1)");
-  double t0 = -1, eo_max = 0, ei_min = 0;
-  for (const auto& row : fr.history.rows)
-    if (fr.history.text(row, "step") == "draw") {
-      const double tt = fr.history.number(row, "time_s");
-      if (t0 < 0) t0 = tt;
-      const double ei = fr.history.number(row, "strain_inside"), eo = fr.history.number(row, "strain_outside");
+  double eo_max = 0, ei_min = 0;
+  {
+    const auto in = fr.draw_series(sim::Signal::strain_inside), out = fr.draw_series(sim::Signal::strain_outside);
+    for (std::size_t i = 0; i < in.size(); ++i) {  // same rows: one history
+      const double ei = in[i].second, eo = out[i].second;
       eo_max = std::max(eo_max, eo);
       ei_min = std::min(ei_min, ei);
-      st.row({fmt((tt - t0) * s.speed, 5), fmt(ei, 5), fmt(eo, 5)});
+      st.row({fmt(in[i].first * s.speed, 5), fmt(ei, 5), fmt(eo, 5)});
     }
+  }
   c.save(st, "strains");
   c.plot("strains", "fig_2_11", {{"datafile", c.out("tables/strains.csv")}});
   // Pure bending of the mid-surface onto the pin: outside strain
@@ -262,8 +258,7 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   // digit (0.05 %).
   auto max_outside = [](const sim::DrawBendResult& r) {
     double m = 0;
-    for (const auto& row : r.history.rows)
-      if (r.history.text(row, "step") == "draw") m = std::max(m, r.history.number(row, "strain_outside"));
+    for (const auto& [t, e] : r.draw_series(sim::Signal::strain_outside)) m = std::max(m, e);
     return m;
   };
   const double de = 100 * (max_outside(ff) - max_outside(fr)) / max_outside(fr);
@@ -383,7 +378,7 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   auto fh = c.table({"time_s", "F_back_N", "F_out_frictionless_N", "F_out_mu0.1_N"},
                     "draw-step tension forces, 12.7 mm pin (half model, N)");
   {
-    const auto a = ff.draw_series("outlet_force_N", -1), b = fr.draw_series("outlet_force_N", -1);
+    const auto a = ff.draw_series(sim::Signal::outlet_force, -1), b = fr.draw_series(sim::Signal::outlet_force, -1);
     for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
       fh.row({fmt(a[i].first, 6), fmt(ff.F_back, 6), fmt(a[i].second, 6), fmt(b[i].second, 6)});
   }

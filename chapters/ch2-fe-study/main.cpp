@@ -21,11 +21,15 @@ using namespace drawbend::analysis;
 
 namespace {
 
-double swift_pin_mm = 12.7;  // assumption for Eq. (2.1); --swift-pin-diameter
-ch2::FeOptions fe;
-int run_fe = 1, reuse_runs = 0;
+// The chapter's options (main registers them; the body reads them).
+struct Config {
+  double swift_pin_mm = 12.7;  ///< assumption for Eq. (2.1) [mm]; --swift-pin-diameter
+  bool run_fe = true;          ///< --fe: steps 4-8
+  ch2::FeOptions fe;           ///< mesh, numerics and --reuse-runs of steps 4-8
+};
 
-void body(study::Chapter& c) {
+void body(study::Chapter& c, const Config& cfg) {
+  const double swift_pin_mm = cfg.swift_pin_mm;
   // 1. Statements that follow from other printed numbers.
   using V = std::vector<double>;
   c.rederive_scalar("ch2.contact_angle", "real contact angle = end - start (Sec. 2.3.1)", "ch2_contact_angle",
@@ -103,18 +107,18 @@ void body(study::Chapter& c) {
   c.value("d_steady", study::scalar(sc, "ch2_steady_sliding_distance").text, "mm");
 
   // 4-8. Our simulations.
-  fe.reuse = reuse_runs != 0;
-  if (run_fe) ch2::fe_study(c, fe);
+  if (cfg.run_fe) ch2::fe_study(c, cfg.fe);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   study::Chapter ch("ch2-fe-study", "Chapter 2: the draw-bend FE study, re-derived and with our own simulations");
+  Config cfg;
   auto& o = ch.options();
-  o.add(swift_pin_mm, "swift-pin-diameter", "pin diameter [mm] assumed for Swift's Eq. (2.1); Chapter 2 does not state it");
-  sim::add_fe_options(o, fe.base, run_fe, reuse_runs);
-  o.add(fe.low_mass_scaling, "fe-low-mass-scaling", "mass scaling of the comparison run");
-  o.add(fe.fine_element_length, "fe-fine-element-length", "element length of the convergence runs [mm]");
-  return study::run_chapter(ch, argc, argv, body);
+  o.add(cfg.swift_pin_mm, "swift-pin-diameter", "pin diameter [mm] assumed for Swift's Eq. (2.1); Chapter 2 does not state it");
+  sim::add_fe_options(o, cfg.fe.base, cfg.run_fe, cfg.fe.reuse);
+  o.add(cfg.fe.low_mass_scaling, "fe-low-mass-scaling", "mass scaling of the comparison run");
+  o.add(cfg.fe.fine_element_length, "fe-fine-element-length", "element length of the convergence runs [mm]");
+  return study::run_chapter(ch, argc, argv, [&cfg](study::Chapter& c) { body(c, cfg); });
 }

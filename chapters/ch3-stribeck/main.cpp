@@ -11,7 +11,8 @@
 //   4. The draw-bend condition of Sec. 3.5 (10 MPa, 50 mm/s).
 //   5. Checks of the text's statements.
 //   6. The strip-draw verification in our solver (Table 3.2, Fig. 3.8) and the
-//      update interval (Figs. 3.5-3.7), from data/cases/strip_draw.toml.
+//      update interval (Figs. 3.5-3.7), Coulomb friction (Fig. 3.6), from
+//      the strip-draw builder (src/sim/strip_draw_case).
 //   7. Draw-bend on three pins at 10 MPa (Sec. 3.5, Figs. 3.10-3.18),
 //      ch3_drawbend.cpp.
 #include <cmath>
@@ -27,10 +28,15 @@ using namespace drawbend::analysis;
 
 namespace {
 
-sim::DrawBendSpec fe;            // mesh and numerics of the draw-bend runs
-int run_fe = 1, reuse_runs = 0;  // options
+// The chapter's options (main registers them; the body reads them).
+struct Config {
+  sim::DrawBendSpec fe;  ///< mesh and numerics of the draw-bend runs
+  bool run_fe = true;    ///< --fe: step 7
+  bool reuse_runs = false;
+};
 
-void body(study::Chapter& c) {
+void body(study::Chapter& c, const Config& cfg) {
+  const sim::DrawBendSpec& fe = cfg.fe;
   // 1. Inputs.
   const StribeckParams s31 = study::load_stribeck(c.data("thesis/table_3_1.csv"));
   const StribeckParams s33 = study::load_stribeck(c.data("thesis/table_3_3.csv"));
@@ -92,21 +98,21 @@ void body(study::Chapter& c) {
                       100.0 * interval / steps, frac.half_ulp, "%", "printed to 0.01 %: half a unit in the last place");
 
   // 6. The solver.
-  ch3::strip_draw(c, s31, t32);
+  ch3::strip_draw(c, s31, t32, study::scalar(c.data("thesis/scalars.csv"), "ch3_strip_draw_coulomb_mu").value);
 
   // 7. Draw-bend on three pins.
-  c.value("db_ran", run_fe ? "yes" : "no");
+  c.value("db_ran", cfg.run_fe ? "yes" : "no");
   c.value("db_h", fmt(fe.element_length), "mm");
   c.value("db_across", std::to_string(fe.across));
   c.value("db_through", std::to_string(fe.through));
-  if (run_fe) ch3::drawbend_pins(c, s33, fe, reuse_runs != 0);
+  if (cfg.run_fe) ch3::drawbend_pins(c, s33, fe, cfg.reuse_runs);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   study::Chapter ch("ch3-stribeck", "Chapter 3: the Stribeck friction curve, its strip-draw verification and draw-bend");
-  auto& o = ch.options();
-  sim::add_fe_options(o, fe, run_fe, reuse_runs);
-  return study::run_chapter(ch, argc, argv, body);
+  Config cfg;
+  sim::add_fe_options(ch.options(), cfg.fe, cfg.run_fe, cfg.reuse_runs);
+  return study::run_chapter(ch, argc, argv, [&cfg](study::Chapter& c) { body(c, cfg); });
 }

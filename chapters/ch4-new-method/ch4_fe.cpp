@@ -23,10 +23,13 @@
 #include "analysis/pressure_ratio.hpp"
 #include "analysis/rope.hpp"
 #include "analysis/stribeck.hpp"
+#include "core/run_output.hpp"
 #include "material/swift_fit.hpp"
 #include "ch4_steps.hpp"
 #include "sim/case_pool.hpp"
+#include "sim/fe_options.hpp"
 #include "sim/map_tools.hpp"
+#include "study/run_health.hpp"
 #include "study/thesis_data.hpp"
 
 namespace ch4 {
@@ -45,7 +48,7 @@ struct PinRuns {
 void save_histories(study::Chapter& c, const PinRuns& r, const std::string& name) {
   auto w = c.table({"time_s", "F_back_N", "F_out_frictionless_N", "F_out_stribeck_N"},
                    "draw-step tension forces, pin " + fmt(r.D) + " mm (half model, N)");
-  const auto a = r.free.draw_series("outlet_force_N", -1), b = r.strib.draw_series("outlet_force_N", -1);
+  const auto a = r.free.draw_series(sim::Signal::outlet_force, -1), b = r.strib.draw_series(sim::Signal::outlet_force, -1);
   for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
     w.row({fmt(a[i].first, 6), fmt(r.free.F_back, 6), fmt(a[i].second, 6), fmt(b[i].second, 6)});
   c.save(w, name);
@@ -74,7 +77,7 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     s.width = w_half;
     s.back_tension = t41.number(row, "FX_prime_N");
     s.speed = v;
-    s.mass_scaling = o.base.mass_scaling * (100.0 / v) * (100.0 / v);
+    s.mass_scaling = sim::mass_scaling_for_speed(o.base.mass_scaling, v);
     s.hardening = c.data("materials/aa5754_o_rd.csv");
     s.name = "ch4_d" + fmt(s.pin_diameter) + "_frictionless";
     jobs.push_back({s, c.out("runs/" + s.name)});
@@ -124,18 +127,14 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     c.value("FB_d42_alt_change", fmt_fixed(100 * (fb_alt - fb_base) / fb_base, 1), "%");
     c.value("FB_d42_alt_vs_thesis", fmt_fixed(100 * (fb_alt - fb_thesis) / fb_thesis, 1), "%");
     const std::string rid = "ch4.fe.d42.frictionless_swift_eps_y_0.002";
-    c.checks().claim(study::Kind::health, rid + ".energy", "energy balance error < 1 %, " + alt42.spec.name,
-                     alt42.balance_error < 0.01, "balance error " + fmt(alt42.balance_error, 3));
-    c.checks().claim(study::Kind::health, rid + ".quasistatic", "kinetic/internal energy < 5 % at the end, " + alt42.spec.name,
-                     alt42.kinetic_ratio < 0.05, "KE/IE " + fmt(alt42.kinetic_ratio, 3));
-    c.checks().claim(study::Kind::health, rid + ".hourglass", "hourglass/internal energy < 5 %, " + alt42.spec.name,
-                     alt42.hourglass_ratio < 0.05, "HG/IE " + fmt(alt42.hourglass_ratio, 3));
+    study::check_run_health(c.checks(), rid, alt42.spec.name,
+                            {alt42.balance_error, alt42.kinetic_ratio, alt42.hourglass_ratio});
   }
   c.value("fe_speed", fmt(v), "mm/s");
   c.value("fe_h", fmt(o.base.element_length), "mm");
   c.value("fe_across", std::to_string(o.base.across));
   c.value("fe_through", std::to_string(o.base.through));
-  c.value("fe_ms", fmt(o.base.mass_scaling * (100.0 / v) * (100.0 / v)));
+  c.value("fe_ms", fmt(sim::mass_scaling_for_speed(o.base.mass_scaling, v)));
 
   // 2. Tables 4.1/4.2, ours beside the thesis's.
   auto tab = c.table({"pin_mm", "FXp_N", "FYp_thesis_N", "FYp_ours_N", "FB_thesis_N", "FB_ours_N", "FY_thesis_N",
@@ -183,12 +182,7 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     // Quasi-static invariants of the runs (printed by each run, checked here).
     for (const auto* x : {&r.free, &r.strib}) {
       const std::string rid = id + (x == &r.free ? ".frictionless" : ".stribeck");
-      c.checks().claim(study::Kind::health, rid + ".energy", "energy balance error < 1 %, " + x->spec.name, x->balance_error < 0.01,
-                       "balance error " + fmt(x->balance_error, 3));
-      c.checks().claim(study::Kind::health, rid + ".quasistatic", "kinetic/internal energy < 5 % at the end (the usual quasi-static limit), " + x->spec.name,
-                       x->kinetic_ratio < 0.05, "KE/IE " + fmt(x->kinetic_ratio, 3));
-      c.checks().claim(study::Kind::health, rid + ".hourglass", "hourglass/internal energy < 5 %, " + x->spec.name,
-                       x->hourglass_ratio < 0.05, "HG/IE " + fmt(x->hourglass_ratio, 3));
+      study::check_run_health(c.checks(), rid, x->spec.name, {x->balance_error, x->kinetic_ratio, x->hourglass_ratio});
     }
     PinTest pt;
     pt.map = r.free.pressure_map("pin " + d + " mm, frictionless");
@@ -215,10 +209,10 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     {
       std::ifstream in(r.free.map_file);
       std::stringstream text;
-      text << "# reference_back_tension_N: " << fmt(2 * r.free.F_back, 8)
-           << " (full strip; the map is the half model's, frictionless, pin " << d << " mm)\n"
+      text << run_output::pin_map_header(2 * r.free.F_back,
+                                         "full strip; the map is the half model's, frictionless, pin " + d + " mm")
            << in.rdbuf();
-      write_file_atomic(c.out("maps/pin_" + d + "mm.csv"), text.str());
+      write_file_atomic(c.out("maps/" + run_output::pin_map_name(d)), text.str());
     }
     for (const auto* x : {&r.free, &r.strib}) {
       const bool fr = x == &r.free;

@@ -28,10 +28,7 @@ using namespace drawbend::analysis;
 
 namespace {
 
-ch4::FeOptions fe;
-int run_fe = 1, reuse_runs = 0;  // options (ints: the option parser's flags take no value)
-
-void body(study::Chapter& c) {
+void body(study::Chapter& c, const ch4::FeOptions& fe) {
   // 1. Inputs.
   const CsvTable t41 = read_csv(c.data("thesis/table_4_1.csv"));
   const CsvTable t42 = read_csv(c.data("thesis/table_4_2.csv"));
@@ -93,8 +90,6 @@ void body(study::Chapter& c) {
   c.plot("fig_4_9", "fig_4_9", {{"datafile", c.out("tables/table_4_rederived.csv")}});
 
   // 6-10. Our own simulations.
-  fe.run = run_fe != 0;
-  fe.reuse = reuse_runs != 0;
   c.value("fe_ran", fe.run ? "yes" : "no");
   if (fe.run) ch4::fe_study(c, fe);
 }
@@ -103,7 +98,7 @@ void body(study::Chapter& c) {
 
 int main(int argc, char** argv) {
   study::Chapter ch("ch4-new-method", "Chapter 4: the new method, re-derived and with our own simulations");
-  auto& o = ch.options();
-  sim::add_fe_options(o, fe.base, run_fe, reuse_runs);
-  return study::run_chapter(ch, argc, argv, body);
+  ch4::FeOptions fe;  // the chapter's options
+  sim::add_fe_options(ch.options(), fe.base, fe.run, fe.reuse);
+  return study::run_chapter(ch, argc, argv, [&fe](study::Chapter& c) { body(c, fe); });
 }

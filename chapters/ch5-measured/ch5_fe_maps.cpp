@@ -18,6 +18,8 @@
 #include "analysis/pressure_ratio.hpp"
 #include "ch5_steps.hpp"
 #include "sim/case_pool.hpp"
+#include "sim/fe_options.hpp"
+#include "study/run_health.hpp"
 #include "sim/map_tools.hpp"
 
 namespace ch5 {
@@ -83,7 +85,7 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
   const double v = study::scalar(sc, "ch4_outlet_speed").value;  // 50 mm/s
   const double w_half = study::scalar(sc, "ch5_strip_width").value / 2;
   const double t_strip = study::scalar(sc, "ch5_strip_thickness").value;
-  const double ms = o.base.mass_scaling * (100.0 / v) * (100.0 / v);
+  const double ms = sim::mass_scaling_for_speed(o.base.mass_scaling, v);
 
   auto spec_for = [&](const std::string& variant, double pin) {
     sim::DrawBendSpec s = o.base;
@@ -141,12 +143,7 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
       cpu += r.wall_seconds;
       const std::string id = "ch5.fe." + r.spec.name;
       // Quasi-static invariants of each run.
-      c.checks().claim(study::Kind::health, id + ".energy", "energy balance error < 1 %, " + r.spec.name, r.balance_error < 0.01,
-                       "balance error " + fmt(r.balance_error, 3) + "; 1 %: the usual explicit-dynamics limit");
-      c.checks().claim(study::Kind::health, id + ".quasistatic", "kinetic/internal energy < 5 % at the end, " + r.spec.name,
-                       r.kinetic_ratio < 0.05, "KE/IE " + fmt(r.kinetic_ratio, 3) + "; 5 %: the usual quasi-static limit");
-      c.checks().claim(study::Kind::health, id + ".hourglass", "hourglass/internal energy < 5 %, " + r.spec.name,
-                       r.hourglass_ratio < 0.05, "HG/IE " + fmt(r.hourglass_ratio, 3) + "; 5 %: the usual limit");
+      study::check_run_health(c.checks(), id, r.spec.name, {r.balance_error, r.kinetic_ratio, r.hourglass_ratio});
       if (variant == "base") {
         const std::string d = fmt(pin);
         c.value("fe_FB_d" + d, fmt_fixed(2 * r.tension_rise(), 1), "N");
@@ -197,11 +194,11 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
   c.value("fe_across_ran", o.map_variants && o.across_variant
                               ? "was run"
                               : "was not run in this (quick) tier of the chapter; the full tier (`make`, or "
-                                "`--fe-map-variants 1 --fe-across-variant 1`) runs it");
+                                "`--fe-map-variants true --fe-across-variant true`) runs it");
   c.value("fe_variants_ran", o.map_variants
                                  ? "ran in this tier of the chapter"
                                  : "did not run in this (quick) tier: they are six more runs. The full tier (`make`, "
-                                   "or `--fe-map-variants 1`) runs them, and the rows below then have numbers");
+                                   "or `--fe-map-variants true`) runs them, and the rows below then have numbers");
   c.value("fe_penalty", fmt(o.base.penalty));
   c.value("fe_stiff_penalty", fmt(o.stiff_penalty));
 

@@ -18,29 +18,25 @@
 //   9. Diluted lubricant: the new method on our maps (Table 5.16 ours, Figs. 5.26-5.29 ours).
 //  10. Undiluted lubricant: second-order mu(p) from three pins (Figs. 5.31, 5.32).
 //  11. Sensitivity of a0, a1 to the map (mesh, penalty, hardening) and to c.
-// Steps 8-11 run our finite-element solver (--fe 0 skips them).
+// Steps 8-11 run our finite-element solver (--fe false skips them).
 #include <cmath>
 #include <iostream>
 
 #include "ch5_steps.hpp"
 #include "sim/fe_options.hpp"
 
-namespace {
-ch5::FeOptions fe;
-int run_fe = 1, reuse_runs = 0, map_variants = 0, across_variant = 0;  // ints: the option parser's flags take no value
-}  // namespace
-
 int main(int argc, char** argv) {
   drawbend::study::Chapter ch("ch5-measured", "Chapter 5: friction measurement on AA5754-O (measured data)");
+  ch5::FeOptions fe;  // the chapter's options
   auto& o = ch.options();
-  drawbend::sim::add_fe_options(o, fe.base, run_fe, reuse_runs);
+  drawbend::sim::add_fe_options(o, fe.base, fe.run, fe.reuse);
   o.add(fe.fine_element_length, "fe-fine-element-length", "finer-map variant along the strip: element length [mm] (0: half the base)");
   o.add(fe.fine_across, "fe-fine-across", "finer-map variant across: elements across the half width (0: twice the base)");
   o.add(fe.stiff_penalty, "fe-stiff-penalty", "penalty variant: contact penalty scale (base 0.1)");
-  o.add(map_variants, "fe-map-variants",
-        "run the map variants of the sensitivity study (stiffer penalty, TD curve, finer along; 6 runs) (1) or not (0)");
-  o.add(across_variant, "fe-across-variant", "with --fe-map-variants 1: the finer-across-the-width variant too (1) or not (0)");
-  return drawbend::study::run_chapter(ch, argc, argv, [](drawbend::study::Chapter& c) {
+  o.add(fe.map_variants, "fe-map-variants",
+        "run the map variants of the sensitivity study (stiffer penalty, TD curve, finer along; 6 runs)");
+  o.add(fe.across_variant, "fe-across-variant", "with --fe-map-variants true: the finer-across-the-width variant too");
+  return drawbend::study::run_chapter(ch, argc, argv, [&fe](drawbend::study::Chapter& c) {
     using namespace ch5;
     const Inputs in = load_inputs(c);  // 1
     rederive_pure_friction(c, in);     // 2
@@ -49,10 +45,6 @@ int main(int argc, char** argv) {
     pressure_ratio_definitions(c, in); // 5
     undiluted(c, in);                  // 6
     friction_lines_and_surfaces(c, in);// 7
-    fe.run = run_fe != 0;
-    fe.reuse = reuse_runs != 0;
-    fe.map_variants = map_variants != 0;
-    fe.across_variant = across_variant != 0;
     c.value("fe_ran", fe.run ? "yes" : "no");
     if (!fe.run) return;
     const FeMaps maps = run_fe_maps(c, in, fe);  // 8

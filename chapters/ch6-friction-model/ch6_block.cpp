@@ -1,6 +1,7 @@
 // Chapter 6, Sec. 6.5: verification of the mu(p, v) law in our solver by block
-// sliding (Fig. 6.7), run from data/cases/block_surface.toml with per-case
-// overrides (load = p x block area, sliding speed and direction).
+// sliding (Fig. 6.7), built by src/sim/block_case (the model of
+// data/cases/block_surface.toml; `drawbend block-deck` writes any case) with
+// the pressure, sliding speed and direction of each case, run through the case pool.
 //   - Tables 6.2 / 6.3, Figs. 6.8 / 6.9: the block slid along RD (x) and TD (y)
 //     at 10, 40, 70 MPa and 10-100 mm/s; retrieved mu_x = F_x/F_N, mu_y = F_y/F_N
 //     (forces on the floor, mean over the last third of the slide) against the
@@ -13,69 +14,28 @@
 #include <cmath>
 
 #include "ch6_steps.hpp"
-#include "fe/solver.hpp"
 #include "friction/surface_law.hpp"
-#include "io/deck.hpp"
+#include "sim/block_case.hpp"
 #include "study/thesis_data.hpp"
 
 namespace ch6 {
 
 using namespace drawbend;
 
-namespace {
-
-struct Slide {
-  double mu_x = 0, mu_y = 0;     ///< mean F_x/F_N, F_y/F_N on the floor over the last third
-  double p_min = 0, p_max = 0;   ///< nodal contact pressures at the end [MPa]
-  double v_mean = 0;             ///< mean nodal slip speed at the end [mm/s]
-  long cycles = 0;
-};
-
-Slide slide(io::Deck deck, double p, double v, double psi_deg) {
-  fe::Model& m = deck.model;
-  const auto [xmin, xmax] = std::minmax_element(m.mesh.x.begin(), m.mesh.x.end());
-  const auto [ymin, ymax] = std::minmax_element(m.mesh.y.begin(), m.mesh.y.end());
-  const double FN = p * (*xmax - *xmin) * (*ymax - *ymin), psi = psi_deg * M_PI / 180.0;
-  fe::Step& press = m.steps.at(0);
-  fe::Step& go = m.steps.at(1);
-  const double ramp = press.forces.at(0).magnitude.t.back();
-  press.forces.at(0).magnitude = {{0.0, ramp}, {0.0, FN}};
-  go.forces.at(0).magnitude = fe::History::constant(FN);
-  const double vramp = go.velocities.at(0).speed.t.back();
-  go.velocities.at(0).speed = {{0.0, vramp}, {0.0, v * std::cos(psi)}};
-  go.velocities.at(1).speed = {{0.0, vramp}, {0.0, v * std::sin(psi)}};
-  fe::Solver s(m);
-  s.run_step(0);
-  double fx = 0, fy = 0, fz = 0;
-  s.run_step(1, [&](const fe::Progress& pr) {
-    if (pr.step_time < go.duration * 2.0 / 3.0) return;
-    const auto F = s.tool_force("floor");
-    fx += F[0];
-    fy += F[1];
-    fz += std::abs(F[2]);
-  });
-  Slide r;
-  r.mu_x = fx / fz;
-  r.mu_y = fy / fz;
-  r.p_min = 1e30;
-  for (const auto& c : s.contact_nodes(0)) {
-    r.p_min = std::min(r.p_min, c.pressure);
-    r.p_max = std::max(r.p_max, c.pressure);
-    r.v_mean += c.slip_speed / static_cast<double>(s.contact_nodes(0).size());
-  }
-  r.cycles = s.cycles();
-  return r;
-}
-
-}  // namespace
-
 void block_sliding(study::Chapter& c) {
-  const std::string path = c.data("cases/block_surface.toml");
-  const io::Deck deck = io::read_deck(path);
-  if (deck.model.contacts.size() != 1 || deck.model.steps.size() != 2)
-    throw InputError(path + ": expected one contact pair and two steps (press, slide)");
-  const auto* law = dynamic_cast<const friction::SurfaceLaw*>(deck.model.contacts[0].friction.get());
-  if (!law) throw InputError(path + ": the floor contact must use the surface law (friction.law = \"surface\")");
+  sim::BlockSpec base;
+  base.hardening = c.data("materials/aa5754_o_rd.csv");
+  base.surface_nodes = c.data("thesis/table_6_1.csv");
+  const io::Deck deck = sim::block_deck(base);
+  const auto* law = dynamic_cast<const friction::SurfaceLaw*>(deck.model.contacts.at(0).friction.get());
+  if (!law) throw InputError("block builder: the floor contact must use the surface law");
+  auto spec = [&](double p, double v, double direction_deg) {
+    sim::BlockSpec s = base;
+    s.pressure = p;
+    s.speed = v;
+    s.direction_deg = direction_deg;
+    return s;
+  };
   const double tol = 0.01;
   const std::string reason = "steady sliding at uniform pressure: 1 % for explicit dynamics and penalty contact";
 
@@ -86,28 +46,40 @@ void block_sliding(study::Chapter& c) {
                    "surface of Table 6.1; mu_cross = the other component");
   double worst = 0;
   std::string worst_case;
+  struct Case {
+    std::string dir;
+    double p, v;
+  };
+  std::vector<Case> cases;
+  std::vector<sim::BlockSpec> specs;
   for (const std::string table : {"table_6_2", "table_6_3"}) {
     const CsvTable t = read_csv(c.data("thesis/" + table + ".csv"));
     for (const auto& row : t.rows) {
       const std::string dir = t.text(row, "direction");
       if (dir != "RD" && dir != "TD") throw InputError(t.where(row, "direction") + ": expected RD or TD");
-      const double p = t.number(row, "pressure_MPa"), v = t.number(row, "speed_mm_s");
-      const bool rd = dir == "RD";
-      const Slide r = slide(deck, p, v, rd ? 0.0 : 90.0);
-      const auto in = law->at(p, v);
-      const double mu_in = rd ? in.mu1 : in.mu2, mu = rd ? r.mu_x : r.mu_y, cross = rd ? r.mu_y : r.mu_x;
-      const double err = (mu - mu_in) / mu_in;
-      if (std::abs(err) > worst) {
-        worst = std::abs(err);
-        worst_case = dir + ", " + fmt(p) + "\u00a0MPa, " + fmt(v) + "\u00a0mm/s";
-      }
-      const std::string id = "ch6.block." + dir + ".p" + fmt(p) + ".v" + fmt(v);
-      c.checks().agree(study::Kind::verification, id, "block sliding mu_" + std::string(rd ? "x" : "y") + " vs input surface, " + dir + " " +
-                               fmt(p) + " MPa " + fmt(v) + " mm/s (T6." + (rd ? "2" : "3") + ")",
-                       mu_in, mu, tol * mu_in, "-", reason);
-      w.row({dir, fmt(p), fmt(v), fmt_fixed(mu_in, 5), fmt_fixed(mu, 5), fmt_fixed(cross, 6), fmt_fixed(100 * err, 3),
-             fmt_fixed(100 * (r.p_max - r.p_min) / p, 2), std::to_string(r.cycles)});
+      cases.push_back({dir, t.number(row, "pressure_MPa"), t.number(row, "speed_mm_s")});
+      specs.push_back(spec(cases.back().p, cases.back().v, dir == "RD" ? 0.0 : 90.0));
     }
+  }
+  const std::vector<sim::BlockResult> slides = sim::run_blocks(specs);
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const std::string& dir = cases[k].dir;
+    const double p = cases[k].p, v = cases[k].v;
+    const bool rd = dir == "RD";
+    const sim::BlockResult& r = slides[k];
+    const auto in = law->at(p, v);
+    const double mu_in = rd ? in.mu1 : in.mu2, mu = rd ? r.mu_x : r.mu_y, cross = rd ? r.mu_y : r.mu_x;
+    const double err = (mu - mu_in) / mu_in;
+    if (std::abs(err) > worst) {
+      worst = std::abs(err);
+      worst_case = dir + ", " + fmt(p) + "\u00a0MPa, " + fmt(v) + "\u00a0mm/s";
+    }
+    const std::string id = "ch6.block." + dir + ".p" + fmt(p) + ".v" + fmt(v);
+    c.checks().agree(study::Kind::verification, id, "block sliding mu_" + std::string(rd ? "x" : "y") + " vs input surface, " + dir + " " +
+                             fmt(p) + " MPa " + fmt(v) + " mm/s (T6." + (rd ? "2" : "3") + ")",
+                     mu_in, mu, tol * mu_in, "-", reason);
+    w.row({dir, fmt(p), fmt(v), fmt_fixed(mu_in, 5), fmt_fixed(mu, 5), fmt_fixed(cross, 6), fmt_fixed(100 * err, 3),
+           fmt_fixed(100 * (r.p_max - r.p_min) / p, 2), std::to_string(r.cycles)});
   }
   c.save(w, "block_rd_td");
   c.value("block_worst_pct", fmt_fixed(100 * worst, 3), "%");
@@ -135,11 +107,16 @@ void block_sliding(study::Chapter& c) {
                    "Block sliding in directions 0-90 deg from RD (Table 6.4, Fig. 6.10) against the ellipse of "
                    "Eq. (6.3b) under the radial return");
   double worst_d = 0, p64 = 0, v64 = 0, worst_angle = 0;
+  std::vector<sim::BlockSpec> dir_specs;
+  for (const auto& row : t64.rows)
+    dir_specs.push_back(spec(t64.number(row, "pressure_MPa"), t64.number(row, "speed_mm_s"),
+                             t64.number(row, "direction_deg")));
+  const std::vector<sim::BlockResult> dir_slides = sim::run_blocks(dir_specs);
   for (const auto& row : t64.rows) {
     const double a = t64.number(row, "direction_deg");
     p64 = t64.number(row, "pressure_MPa");
     v64 = t64.number(row, "speed_mm_s");
-    const Slide r = slide(deck, p64, v64, a);
+    const sim::BlockResult& r = dir_slides[&row - &t64.rows[0]];
     const double phi = a * M_PI / 180.0, mu = friction::ellipse_mu(law->at(p64, v64), phi);
     const double mx = mu * std::cos(phi), my = mu * std::sin(phi);
     const double err = (std::hypot(r.mu_x, r.mu_y) - mu) / mu, ang = std::atan2(r.mu_y, r.mu_x) * 180 / M_PI;

@@ -17,146 +17,14 @@
 #include <cstdio>
 #include <sstream>
 
-#include <toml++/toml.h>
-
 #include "ch6_steps.hpp"
-#include "fe/solver.hpp"
-#include "io/deck.hpp"
-#include "io/run_case.hpp"
-#include "material/material.hpp"
 #include "sim/case_pool.hpp"
-#include "sim/material_spec.hpp"
+#include "sim/cup_case.hpp"
 #include "study/thesis_data.hpp"
 
 namespace ch6 {
 
 using namespace drawbend;
-
-namespace {
-
-double tool_contact_stiffness(const fe::Model& m, const std::string& tool) {
-  double k = 0;
-  for (const auto& cp : m.contacts) {
-    if (cp.tool != tool) continue;
-    double area = 0, zmin = 1e30, zmax = -1e30;
-    for (const auto& f : m.mesh.face_set(cp.faces)) area += fe::quad_area(m.mesh.x, m.mesh.y, m.mesh.z, f);
-    for (double z : m.mesh.z) {
-      zmin = std::min(zmin, z);
-      zmax = std::max(zmax, z);
-    }
-    int layers = 0;  // distinct z levels - 1 = elements through the thickness
-    std::vector<double> zs(m.mesh.z);
-    std::sort(zs.begin(), zs.end());
-    for (std::size_t i = 1; i < zs.size(); ++i) layers += zs[i] - zs[i - 1] > 1e-9;
-    k += cp.penalty * m.material->bulk_modulus() * area / ((zmax - zmin) / std::max(1, layers));
-  }
-  return k;
-}
-
-}  // namespace
-
-CupResult draw_cup(const std::string& deck_path, double speed, double stroke, long cycles, const std::string& vtu,
-                   int refine, const std::string& material) {
-  // Refinement: the deck's element counts times `refine` (in-plane and through the thickness).
-  toml::table root = toml::parse_file(deck_path);
-  int layers = 0;
-  if (auto* mesh = root["mesh"].as_table())
-    for (const char* key : {"core", "ring", "through"})
-      if (auto* n = mesh->get(key); n && n->value<int64_t>()) {
-        const int64_t count = *n->value<int64_t>() * refine;  // read before the node is replaced
-        mesh->insert_or_assign(key, count);
-        if (std::string(key) == "through") layers = static_cast<int>(count);
-      }
-  if (!material.empty()) {  // the user's material over the deck's own flow curve
-    const std::string curve = root["material"]["hardening"].value_or(std::string());
-    const std::string section = sim::material_section(material, curve);
-    root.insert_or_assign("material", *toml::parse(std::string_view(section), std::string_view("--cup-material"))["material"].as_table());
-  }
-  std::ostringstream text;
-  text << root;
-  io::Deck deck = io::parse_deck(text.str(), deck_path);
-  fe::Model& m = deck.model;
-  if (m.steps.size() != 2) throw InputError(deck_path + ": expected two steps (clamp, draw)");
-  fe::Tool* punch = nullptr;
-  for (auto& t : m.tools)
-    if (t.name == "punch") punch = &t;
-  if (!punch) throw InputError(deck_path + ": no tool named 'punch'");
-  // Time step: the stroke in `cycles` cycles (mass scaling to target_dt).
-  const double dt = stroke / speed / cycles;
-  m.target_dt = dt / m.dt_safety;
-  const double tr = 0.02 * cycles * dt;  // the speed ramp takes 2 % of the cycles
-  punch->speed = {{0.0, tr}, {0.0, speed}};
-  m.steps[1].duration = stroke / speed + 0.5 * tr;
-  m.steps[0].duration = 400 * dt;
-  m.steps[0].damping = 1.0 / (50 * dt);  // velocities relax in ~50 cycles while clamping
-  for (auto& t : m.tools)
-    if (t.drive == fe::Tool::Drive::force) t.mass = 4.0 * tool_contact_stiffness(m, t.name) * dt * dt;  // omega dt = 0.5
-  fe::Solver s(m);
-  s.run_step(0);
-  CupResult r;
-  r.elements = m.mesh.num_elements();
-  r.layers = layers;
-  const double z0 = s.tool_offset("punch")[2];
-  const long every = std::max(1L, cycles / 400), tenth = std::max(1L, cycles / 10);
-  const long c0 = s.cycles();
-  s.run_step(1, [&](const fe::Progress& p) {
-    if ((p.cycle - c0) % tenth == 0 && p.cycle > c0) {  // progress: one line per 10 % of the stroke
-      std::ostringstream line;
-      line << "  cup " << speed << " mm/s: " << 10 * ((p.cycle - c0) / tenth) << " % of " << stroke
-           << " mm, punch force " << -4e-3 * s.tool_force("punch")[2] << " kN\n";
-      std::fputs(line.str().c_str(), stderr);  // one write per line: cases run side by side
-    }
-    if (p.cycle % every) return;
-    const double d = s.tool_offset("punch")[2] - z0;
-    r.curve.push_back({d, -4.0 * s.tool_force("punch")[2]});  // full blank: 4 quarters
-    r.die_force = 4.0 * std::abs(s.tool_force("lower_die")[2]);
-  });
-  r.cycles = s.cycles();
-  const auto& e = s.energies();
-  r.kinetic_ratio = e.internal > 0 ? e.kinetic / e.internal : 0;
-  r.hourglass_ratio = e.internal > 0 ? e.hourglass / e.internal : 0;
-  r.added_mass_ratio = s.added_mass() / s.physical_mass();
-  // Cup size: flange outer diameter along RD (x, on y = 0) and TD (y, on x = 0).
-  const auto& mesh = m.mesh;
-  for (int i : mesh.node_set("rim")) {
-    if (mesh.y[i] == 0.0) r.size_rd = std::max(r.size_rd, 2.0 * s.x()[i]);
-    if (mesh.x[i] == 0.0) r.size_td = std::max(r.size_td, 2.0 * s.y()[i]);
-  }
-  // Element fields (centroid, plastic strain, von Mises) and the largest
-  // plastic strain: element centroid (radius, height above the blank's start).
-  const std::vector<double> sig = s.stress();
-  for (int el = 0; el < mesh.num_elements(); ++el) {
-    const double ep = s.plastic_strain(el);
-    double cx = 0, cy = 0, cz = 0;
-    for (int a = 0; a < 8; ++a) {
-      cx += s.x()[mesh.hex[el][a]] / 8;
-      cy += s.y()[mesh.hex[el][a]] / 8;
-      cz += s.z()[mesh.hex[el][a]] / 8;
-    }
-    r.field.push_back({cx, cy, cz, ep, material::von_mises(&sig[6 * static_cast<std::size_t>(el)])});
-    const double angle = std::atan2(cy, cx) * 180.0 / std::acos(-1.0);
-    if (angle <= 15.0) r.band_rd = std::max(r.band_rd, ep);
-    if (angle >= 75.0) r.band_td = std::max(r.band_td, ep);
-    if (ep <= r.max_strain) continue;
-    r.max_strain = ep;
-    r.max_strain_r = std::hypot(cx, cy);
-    r.max_strain_z = cz;
-    r.max_strain_angle = angle;
-  }
-  if (!vtu.empty()) io::write_fields(s, vtu);
-  r.die_lift = s.tool_offset("lower_die")[2];  // how far the force-driven lower die moved
-  return r;
-}
-
-double force_at(const CupResult& r, double d) {
-  for (std::size_t k = 1; k < r.curve.size(); ++k)
-    if (r.curve[k].first >= d) {
-      const auto& [d0, f0] = r.curve[k - 1];
-      const auto& [d1, f1] = r.curve[k];
-      return f0 + (f1 - f0) * (d - d0) / (d1 - d0);
-    }
-  return NAN;
-}
 
 void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const std::string& material) {
   c.value("cup_material", material.empty() ? std::string("isotropic J2 (von Mises) on the Table 5.1 RD curve, as the thesis")
@@ -194,8 +62,11 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const s
   sim::run_cases(rows.size(), [&](std::size_t k) {
     const auto& row = t65.rows[rows[k]];
     const std::string id = t65.text(row, "case");
-    runs[k] = draw_cup(deck, t65.number(row, "punch_speed_mm_s"), stroke, cycles,
-                       id == "1" ? c.out("tables/cup_case1.vtu") : "", refine, material);
+    sim::CupSpec spec;
+    spec.deck = deck, spec.speed = t65.number(row, "punch_speed_mm_s"), spec.stroke = stroke;
+    spec.cycles = cycles, spec.refine = refine, spec.material = material;
+    spec.vtu = id == "1" ? c.out("tables/cup_case1.vtu") : "";
+    runs[k] = sim::draw_cup(spec);
   });
   std::map<std::string, CupResult> res;
   std::string ids, listed;  // "1 9" for the figure, "1, 9" for the page
@@ -231,9 +102,11 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const s
   // reports the end of the 17 mm stroke).
   const double d_fail = study::scalar(sc, "ch6_failure_stroke").value;
   if (full) {
-    const CupResult r = draw_cup(deck, t65.number(t65.rows.front(), "punch_speed_mm_s"), d_fail,
-                                 static_cast<long>(cycles * d_fail / stroke), c.out("tables/cup_case1_21mm.vtu"), refine,
-                                 material);
+    sim::CupSpec spec;
+    spec.deck = deck, spec.speed = t65.number(t65.rows.front(), "punch_speed_mm_s"), spec.stroke = d_fail;
+    spec.cycles = static_cast<long>(cycles * d_fail / stroke), spec.refine = refine, spec.material = material;
+    spec.vtu = c.out("tables/cup_case1_21mm.vtu");
+    const CupResult r = sim::draw_cup(spec);
     c.value("cup_strain_21_r", fmt_fixed(r.max_strain_r, 1), "mm");
     c.value("cup_strain_21_z", fmt_fixed(r.max_strain_z, 1), "mm");
     c.value("cup_strain_21", fmt_fixed(r.max_strain, 3));

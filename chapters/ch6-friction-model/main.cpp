@@ -26,9 +26,12 @@ using namespace drawbend::analysis;
 
 namespace {
 
-bool g_full = false;  // --full: the paper-fidelity cup-drawing runs (CTest label `full`)
-std::string g_cup_material;  // --cup-material: the cup's material (sim/material_spec.hpp); empty: the deck's
-std::string g_cup_cases;  // --cup-cases: which Table 6.5 cases (default: 1 and 9, all nine with --full)
+// The chapter's options (main registers them; the body reads them).
+struct Config {
+  bool full = false;         ///< --full: the paper-fidelity cup-drawing runs (CTest label `full`)
+  std::string cup_material;  ///< --cup-material: the cup's material (sim/material_spec.hpp); empty: the deck's
+  std::string cup_cases;     ///< --cup-cases: which Table 6.5 cases (default: 1 and 9, all nine with --full)
+};
 
 struct Lines {
   std::vector<double> v;
@@ -45,7 +48,7 @@ struct Lines {
   }
 };
 
-void body(study::Chapter& c) {
+void body(study::Chapter& c, const Config& cfg) {
   // 1. Inputs.
   const CsvTable t516 = read_csv(c.data("thesis/table_5_16.csv"));
   const CsvTable t61 = read_csv(c.data("thesis/table_6_1.csv"));
@@ -145,20 +148,21 @@ void body(study::Chapter& c) {
   // 7. Block sliding (Sec. 6.5).
   ch6::block_sliding(c);
   // 8. Cup drawing (Sec. 6.6): coarse cases 1 and 9; all nine on a finer mesh with --full.
-  ch6::cup_drawing(c, g_full, g_cup_cases, g_cup_material);
+  ch6::cup_drawing(c, cfg.full, cfg.cup_cases, cfg.cup_material);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   study::Chapter ch("ch6-friction-model", "Chapter 6: the mu(p, v) friction model, block sliding and cup drawing");
-  ch.options().add_flag(g_full, "full", "cup drawing: all nine cases of Table 6.5 on the refined mesh (slow)");
-  ch.options().add(g_cup_cases, "cup-cases",
+  Config cfg;
+  ch.options().add_flag(cfg.full, "full", "cup drawing: all nine cases of Table 6.5 on the refined mesh (slow)");
+  ch.options().add(cfg.cup_cases, "cup-cases",
                    "cup drawing: comma-separated Table 6.5 case ids to run, with 1 and 9 among them (e.g. 1,9 with "
                    "--full: the end cases on the refined mesh, about 20 min on 2 cores); empty: 1,9, or all with --full");
-  ch.options().add(g_cup_material, "cup-material",
+  ch.options().add(cfg.cup_material, "cup-material",
                    "cup drawing: the material, as drawbend drawbend-deck --material (a TOML inline table of [material] "
                    "keys, e.g. '{ type = \"hill48\", hill48 = { r0 = 0.65, r45 = 0.65, r90 = 0.72 } }', or a TOML file); "
                    "empty: the deck's isotropic J2 on the Table 5.1 RD curve, as the thesis");
-  return study::run_chapter(ch, argc, argv, body);
+  return study::run_chapter(ch, argc, argv, [&cfg](study::Chapter& c) { body(c, cfg); });
 }

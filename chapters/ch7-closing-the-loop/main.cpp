@@ -21,13 +21,13 @@
 #include "ch7_steps.hpp"
 
 int main(int argc, char** argv) {
-  static ch7::Config cfg;
   drawbend::study::Chapter ch("ch7-closing-the-loop", "Chapter 7: closing the loop with measured data");
+  ch7::Config cfg;  // the chapter's options
   ch.options().add(cfg.maps_dir, "maps", "directory of FE pressure maps pin_<d>mm.csv (empty: analytic stand-in)");
   ch.options().add(cfg.null_seeds, "null-seeds", "null data sets per noise level");
   ch.options().add(cfg.effect_seeds, "effect-seeds", "data sets per hidden effect and noise level");
   ch.options().add(cfg.permutations, "permutations", "permutations per candidate");
-  return drawbend::study::run_chapter(ch, argc, argv, [](drawbend::study::Chapter& c) {
+  return drawbend::study::run_chapter(ch, argc, argv, [&cfg](drawbend::study::Chapter& c) {
     using namespace ch7;
     const Thesis t = load_thesis_data(c, cfg);  // 1
     map_table(c, t.maps);                       // 2

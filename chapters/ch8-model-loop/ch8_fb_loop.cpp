@@ -4,6 +4,7 @@
 
 #include "ch8_steps.hpp"
 #include "analysis/linear_fit.hpp"
+#include "sim/fe_options.hpp"
 
 namespace ch8 {
 
@@ -28,7 +29,7 @@ Inputs load_inputs(Chapter& c, const Config& cfg) {
   in.base.thickness = in.thickness;
   in.base.width = study::scalar(sc, "ch5_strip_width").value / 2;  // half model
   in.base.speed = v;
-  in.base.mass_scaling = cfg.base.mass_scaling * (100.0 / v) * (100.0 / v);  // Chapter 4's inertia
+  in.base.mass_scaling = sim::mass_scaling_for_speed(cfg.base.mass_scaling, v);  // Chapter 4's inertia
   in.base.hardening = c.data("materials/aa5754_o_rd.csv");
   in.base.friction.clear();  // rotating pin: frictionless
 
@@ -55,8 +56,6 @@ std::vector<sim::FbPoint> reference_points(const Inputs& in) {
     pts.push_back({in.pins[k], in.fback[k], in.measured(in.pins[k], in.fback[k]), "Table 5.3 at Table 5.13"});
   return pts;
 }
-
-std::string pct(double x) { return (x >= 0 ? "+" : "") + fmt_fixed(100 * x, 1); }
 
 }  // namespace
 

@@ -1,13 +1,18 @@
 // Chapter 8 step 4 (full tier only): numerical effects before physics.
-//  - mass scaling on every pin: the quick tier's factor, 1/4 and 1/16 of it
-//    (isotropic model, Table 5.13 back tensions);
-//  - elements across the half width: 2, 4, 8 on the 25.4 and 42 mm pins
+//  - mass scaling on every pin: 4 x the study's factor, the study's and 1/4 of
+//    it (isotropic model, Table 5.13 back tensions);
+//  - elements across the half width: 2, 4, 8 on the 25.4 and 42 mm pins, at
+//    16 x the study's mass scaling, the quick tier's (the width effect is
+//    compared at equal mass scaling; the mass-scaling effect is measured
+//    apart, above; at the study's factor the 8-across runs would take
+//    about an hour of CPU)
 //    (F_B, peak and mean contact pressure of the end-of-draw map, the map
 //    moments S1 = sum p A and S2/S1 = sum p^2 A / S1 that the new method's
 //    coefficients follow (Chapter 5), and the edge row's pressure at
 //    mid-wrap).
-// Checks (verification, full tier): F_B at the quick tier's mass scaling and
-// width mesh within 3 % of the finest run on each pin.  Reason, written
+// Checks (verification, full tier): F_B at the study's mass scaling within
+// 3 % of the run at 1/4 of it, and at the study's width mesh within 3 % of 8
+// across, on each pin.  Reason, written
 // before the runs: 3 % is a third of the 10 % accuracy goal, so a numerical
 // error inside it can neither mask nor manufacture a goal-sized effect.
 // Forces full strip [N], pressures MPa.
@@ -21,7 +26,8 @@ using namespace drawbend;
 
 void numerical_convergence(Chapter& c, const Inputs& in, const Config& cfg) {
   const double ms0 = in.base.mass_scaling;
-  const std::vector<double> ms = {ms0, ms0 / 4, ms0 / 16};
+  const std::vector<double> ms = {4 * ms0, ms0, ms0 / 4};
+  const double width_ms = 16 * ms0;
   const std::vector<int> across = {2, 4, 8};
   std::vector<sim::DrawBendSpec> specs;
   for (std::size_t k = 0; k < in.pins.size(); ++k)
@@ -37,6 +43,7 @@ void numerical_convergence(Chapter& c, const Inputs& in, const Config& cfg) {
     for (int a : across) {
       auto s = sim::spec_for_point(in.base, {in.pins[k], in.fback[k], 0, ""});
       s.across = a;
+      s.mass_scaling = width_ms;
       specs.push_back(s);
       across_pin.push_back(k);
     }
@@ -57,13 +64,13 @@ void numerical_convergence(Chapter& c, const Inputs& in, const Config& cfg) {
       const std::string d = fmt(in.pins[k]);
       t1.row({d, fmt(ms[j]), fmt_fixed(fb, 1), fmt_fixed(100 * (fb / finest - 1), 1),
               fmt_fixed(100 * (fb / meas - 1), 1), fmt(r.kinetic_ratio, 3), fmt_fixed(r.wall_seconds, 0)});
-      if (j == 0) c.value("ms_change_d" + d, fmt_fixed(100 * (fb / finest - 1), 1), "%");
+      if (j == 1) c.value("ms_change_d" + d, fmt_fixed(100 * (fb / finest - 1), 1), "%");
       if (j + 1 == ms.size()) {
         c.value("fb_msfine_d" + d, fmt_fixed(fb, 1), "N");
         c.value("fb_msfine_err_d" + d, (fb >= meas ? "+" : "") + fmt_fixed(100 * (fb / meas - 1), 1), "%");
       }
     }
-    const double fb0 = 2 * runs[k * ms.size()].tension_rise();
+    const double fb0 = 2 * runs[k * ms.size() + 1].tension_rise();
     c.checks().agree(study::Kind::verification, "ch8.num.ms.d" + fmt(in.pins[k]),
                      "F_B at mass scaling " + fmt(ms0) + " against " + fmt(ms.back()) + ", " + fmt(in.pins[k]) +
                          " mm pin (isotropic)",
@@ -74,8 +81,8 @@ void numerical_convergence(Chapter& c, const Inputs& in, const Config& cfg) {
   c.save(t1, "mass_scaling");
   auto t2 = c.table({"pin_mm", "across", "F_B_N", "change_vs_finest_pct", "p_max_MPa", "p_mean_MPa", "S1_N",
                      "S2_over_S1_MPa", "edge_p_midwrap_MPa", "wall_s"},
-                    "width discretisation: elements across the half width (isotropic model, full strip F_B [N], "
-                    "end-of-draw contact map, half model)");
+                    "width discretisation: elements across the half width (isotropic model, mass scaling " + fmt(width_ms) +
+                        ", full strip F_B [N], end-of-draw contact map, half model)");
   for (std::size_t i = 0; i < across_pin.size(); ++i) {
     const auto& r = runs[n_ms + i];
     const auto& finest = runs[n_ms + (i / across.size()) * across.size() + across.size() - 1];
@@ -99,7 +106,8 @@ void numerical_convergence(Chapter& c, const Inputs& in, const Config& cfg) {
     if (a == in.base.across)
       c.checks().agree(study::Kind::verification, "ch8.num.across.d" + d,
                        "F_B with " + std::to_string(a) + " against " + std::to_string(across.back()) +
-                           " elements across the half width, " + d + " mm pin (isotropic)",
+                           " elements across the half width, " + d + " mm pin (isotropic, mass scaling " +
+                           fmt(width_ms) + ")",
                        fb_fine, fb, tol * fb_fine, "N",
                        "3 % of F_B: a third of the 10 % accuracy goal, so a width-mesh error inside it can neither "
                        "mask nor manufacture a goal-sized effect");

@@ -1,6 +1,7 @@
 #pragma once
 // Chapter 8: closing the loop at the model level (issue 23).  Shared types of
 // the chapter's steps.  Forces full strip [N] unless "half"; lengths mm.
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -15,12 +16,22 @@ using drawbend::study::Chapter;
 
 struct Config {
   drawbend::sim::DrawBendSpec base;  ///< quick-tier mesh from sim/fe_options (mass scaling at 100 mm/s)
-  int run_fe = 1, reuse_runs = 0;
-  int full_study = 0;      ///< 1: the full tier's candidates, slopes and numerical studies
-  double fit_pin = 12.7;   ///< the training pin [mm]
-  double min_gain = 0.03;  ///< required fall of the held-out RMS relative error
-  std::string candidates;  ///< comma-separated candidate names; empty: the tier's list
-  int numerics = -1;       ///< 1/0: run the numerical studies or not; -1: with --full-study
+  bool run_fe = true, reuse_runs = false;
+  bool full_study = false;  ///< the full tier's candidates, slopes and numerical studies
+  double fit_pin = 12.7;    ///< the training pin [mm]
+  double min_gain = 0.03;   ///< required fall of the held-out RMS relative error
+  std::string candidates;   ///< comma-separated candidate names; empty: the tier's list
+  bool cup = true;                ///< the cup loop and attribution (step 5)
+  std::string numerics = "auto";  ///< the numerical studies: true, false, or auto (= full_study)
+
+  /// Whether step 4 (the numerical studies) runs; throws std::invalid_argument
+  /// naming --numerics on a value other than true/false/auto (or 1/0/-1).
+  bool run_numerics() const {
+    if (numerics == "true" || numerics == "1") return true;
+    if (numerics == "false" || numerics == "0") return false;
+    if (numerics == "auto" || numerics == "-1") return full_study;
+    throw std::invalid_argument("--numerics: expected true, false or auto, found '" + numerics + "'");
+  }
 };
 
 struct Inputs {
@@ -33,11 +44,15 @@ struct Inputs {
 };
 
 Inputs load_inputs(Chapter& c, const Config& cfg);
+/// A relative error as a signed percentage with one decimal ("+10.6").
+inline std::string pct(double x) { return (x >= 0 ? "+" : "") + drawbend::fmt_fixed(100 * x, 1); }
 /// The bending-force loop: before/after per pin, figure, checks.  Returns the final model.
 drawbend::sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg);
 /// F_B against back tension on the fit pin (slope check).
 void tension_slope(Chapter& c, const Inputs& in, const Config& cfg, const drawbend::sim::ModelLoopResult& loop);
 /// Full tier: mass scaling on every pin, elements across on the 25.4 and 42 mm pins.
 void numerical_convergence(Chapter& c, const Inputs& in, const Config& cfg);
+/// The cup (Sec. 6.6): punch-force loop and the 2 x 2 attribution at 21 mm.
+void cup_loop(Chapter& c, const Config& cfg, const drawbend::sim::ModelLoopResult& bending);
 
 }  // namespace ch8

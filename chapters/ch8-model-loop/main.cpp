@@ -14,29 +14,36 @@
 //   3. F_B against back tension on the 12.7 mm pin (slope check).
 //   4. Full tier only: mass scaling on every pin; 2/4/8 elements across on
 //      the 25.4 and 42 mm pins.
+//   5. The cup (Sec. 6.6): why the punch force is high (tool radii, flow
+//      curve, combined hardening, Hill'48), and the 2 x 2 attribution of the
+//      RD failure to frictional or material anisotropy at 21 mm.
 #include "ch8_steps.hpp"
 #include "sim/fe_options.hpp"
 
 int main(int argc, char** argv) {
-  static ch8::Config cfg;
   drawbend::study::Chapter ch("ch8-model-loop", "Chapter 8: closing the loop at the model level (bending force)");
+  ch8::Config cfg;  // the chapter's options
   auto& o = ch.options();
   drawbend::sim::add_fe_options(o, cfg.base, cfg.run_fe, cfg.reuse_runs);
   o.add(cfg.full_study, "full-study",
-        "1: the full tier's candidates (beta grid, Voce, Hill'48), the slope of the final model, mass scaling and "
-        "width convergence; 0: the quick tier");
+        "true: the full tier's candidates (beta grid, Voce, Hill'48), the slope of the final model, mass scaling and "
+        "width convergence; false: the quick tier");
   o.add(cfg.fit_pin, "fit-pin", "pin whose bending force trains the candidates [mm]");
   o.add(cfg.candidates, "candidates",
         "comma-separated candidates (split:B1/B2..., voce, hill48, ms:X, across:N); empty: the tier's list");
-  o.add(cfg.numerics, "numerics", "1: mass-scaling and width studies; 0: not; -1: as --full-study");
+  o.add(cfg.numerics, "numerics",
+        "the mass-scaling and width studies: true, false, or auto (as --full-study); 1, 0, -1 also accepted");
+  o.add(cfg.cup, "cup", "the cup loop and the 2 x 2 attribution (step 5)");
   o.add(cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
-  return drawbend::study::run_chapter(ch, argc, argv, [](drawbend::study::Chapter& c) {
+  return drawbend::study::run_chapter(ch, argc, argv, [&cfg](drawbend::study::Chapter& c) {
     using namespace ch8;
+    const bool numerics = cfg.run_numerics();  // a bad --numerics fails before any work
     const Inputs in = load_inputs(c, cfg);  // 1
     c.value("fe_ran", cfg.run_fe ? "yes" : "no");
     if (!cfg.run_fe) return;
-    if (cfg.numerics == 1 || (cfg.numerics < 0 && cfg.full_study)) numerical_convergence(c, in, cfg);  // 4, first: numerics before physics
+    if (numerics) numerical_convergence(c, in, cfg);  // 4, first: numerics before physics
     const auto loop = bending_force_loop(c, in, cfg);      // 2
     tension_slope(c, in, cfg, loop);                       // 3
+    if (cfg.cup) cup_loop(c, cfg, loop);                   // 5
   });
 }

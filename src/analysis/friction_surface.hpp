@@ -14,11 +14,24 @@
 //
 // Units: p in MPa, v in mm/s.  Default domain: p 0-80 MPa, v 6.35-101.6 mm/s.
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "analysis/polynomial.hpp"
 
 namespace drawbend::analysis {
+
+/// The anisotropic ellipse of Sec. 6.4 (Fig. 6.5): the friction coefficient
+/// at angle phi from RD between mu_RD = a and mu_TD = b (each from the surface),
+///   mu(phi) = a b / sqrt(b^2 cos^2 phi + a^2 sin^2 phi),
+/// from c = cos phi and s = sin phi.  When the denominator vanishes (a and b
+/// both ~0) it returns a c^2 + b s^2 instead of 0/0.  Inline: the loop's fits
+/// call it per row and iteration.
+inline double ellipse_mu(double a, double b, double c, double s) {
+  const double den = std::sqrt(b * b * c * c + a * a * s * s);
+  if (den < 1e-12) return a * c * c + b * s * s;
+  return a * b / den;
+}
 
 /// The nine shape functions of Eq. (6.1) at (xi, eta); they sum to one.
 std::array<double, 9> nine_node_shape(double xi, double eta);

@@ -20,4 +20,15 @@ double pressure_ratio_from_fits(double Fback, double Ffric, double Fbend);
 /// force a printed c implies.
 double implied_rotating_bending(double Fback, double Ffric, double Fbend_numerator, double c);
 
+/// Eq. (2.2) at one pin and width: the average pressure follows the mean strip
+/// tension (F_x + F_y)/2.  A pressure p_ref [MPa] known at back tension F_ref
+/// with bending force FB_ref (and no friction) becomes, at back tension F with
+/// bending force FB and friction force Ff (F_y = F + FB + Ff),
+///   p = p_ref (2 F + FB + Ff) / (2 F_ref + FB_ref).
+/// Evaluated in exactly that order (the loop's fits depend on its bits).
+/// Inline: the loop's fits call it per row and iteration.
+inline double pressure_at_tension(double p_ref_MPa, double F, double FB, double Ff, double F_ref, double FB_ref) {
+  return p_ref_MPa * (2 * F + FB + Ff) / (2 * F_ref + FB_ref);
+}
+
 }  // namespace drawbend::analysis

@@ -8,6 +8,8 @@
 // pressure either way provided force and width describe the same extent; the
 // functions below take the force basis explicitly so that the width used is
 // never ambiguous.
+#include <cmath>
+
 namespace drawbend::analysis {
 
 enum class ForceBasis { full_strip, half_model };
@@ -31,5 +33,13 @@ double mu_rope(double Fx_N, double Fy_N, double FB_N, double theta_rad);
 /// Eq. (5.1) generalised to any wrap: mu = (1/Theta) ln((F_fric + F_back) / F_back),
 /// where F_fric = F_y - F_x - F_B is the pure friction force.  Theta = pi/2 gives Eq. (5.1).
 double mu_from_friction(double Ffric_N, double Fback_N, double theta_rad);
+
+/// Eq. (5.1) solved for the friction force (the inverse of mu_from_friction,
+/// the capstan law of Eq. 2.3 without bending): F_fric = F_back (exp(mu Theta) - 1).
+/// Computed as exp(...) - 1, not expm1, so that the loop's fits keep their bits.
+/// Inline: the loop's Levenberg-Marquardt fits call it per row and iteration.
+inline double friction_from_mu(double mu, double Fback_N, double theta_rad) {
+  return Fback_N * (std::exp(mu * theta_rad) - 1);
+}
 
 }  // namespace drawbend::analysis

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/csv.hpp"
+
 namespace drawbend::analysis {
 
 void StribeckParams::validate(const std::string& where) const {
@@ -31,6 +33,27 @@ double stribeck_mu(double L, const StribeckParams& s) {
 
 double stribeck_mu(double v_mm_s, double p_MPa, const StribeckParams& s) {
   return stribeck_mu(lubricant_number(v_mm_s, p_MPa, s), s);
+}
+
+StribeckParams load_stribeck(const std::string& path) {
+  const CsvTable t = read_csv(path);
+  StribeckParams s;
+  int seen = 0;
+  for (const auto& r : t.rows) {
+    const std::string& name = t.text(r, "parameter");
+    const double v = t.number(r, "value");
+    if (name == "mu_BL") s.mu_BL = v;
+    else if (name == "mu_EHL") s.mu_EHL = v;
+    else if (name == "L_BL") s.L_BL = v;
+    else if (name == "L_EHL") s.L_EHL = v;
+    else if (name == "Ra") s.Ra_um = v;
+    else if (name == "eta") s.eta_Pa_s = v;
+    else throw InputError(t.where(r, "parameter") + ": unknown Stribeck parameter '" + name + "'");
+    ++seen;
+  }
+  if (seen != 6) throw InputError(path + ": expected the 6 Stribeck parameters, found " + std::to_string(seen));
+  s.validate(path);
+  return s;
 }
 
 }  // namespace drawbend::analysis

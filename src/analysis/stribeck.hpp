@@ -43,4 +43,8 @@ double stribeck_mu(double L, const StribeckParams& s);
 /// mu at a contact state: Eq. (3.2) at L from Eq. (3.1).
 double stribeck_mu(double v_mm_s, double p_MPa, const StribeckParams& s);
 
+/// The six parameters from a CSV file with columns parameter,value (names
+/// mu_BL, mu_EHL, L_BL, L_EHL, Ra, eta), validated; throws InputError (file:line).
+StribeckParams load_stribeck(const std::string& path);
+
 }  // namespace drawbend::analysis

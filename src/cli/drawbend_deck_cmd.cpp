@@ -18,6 +18,7 @@
 #include "core/csv.hpp"
 #include "core/options.hpp"
 #include "sim/drawbend_case.hpp"
+#include "sim/fe_options.hpp"
 
 namespace drawbend::cli {
 
@@ -31,6 +32,8 @@ double table_5_1_yield_rd() {
 
 int drawbend_deck_command(int argc, char** argv) {
   sim::DrawBendSpec s;
+  sim::set_quick_mesh(s);  // the chapters' quick tier (sim/fe_options.hpp)
+  s.mass_scaling = 0;      // 0: the quick tier's rule at --speed (set after parsing)
   s.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
   std::string run_dir, basis = "full";
   double back_tension = 2 * s.back_tension, bending_force = 0, yield_stress = 0;
@@ -50,7 +53,8 @@ int drawbend_deck_command(int argc, char** argv) {
   opt.add(s.element_length, "element-length", "element length along the strip in the bend zone [mm]");
   opt.add(s.across, "across", "elements across the half width");
   opt.add(s.through, "through", "elements through the thickness");
-  opt.add(s.mass_scaling, "mass-scaling", "uniform mass scaling factor");
+  opt.add(s.mass_scaling, "mass-scaling",
+          "uniform mass scaling factor (0: the quick tier's 1e4 at 100 mm/s scaled by (100/v)^2 at --speed)");
   opt.add(s.penalty, "penalty", "contact penalty scale");
   opt.add(s.hardening, "hardening", "hardening curve CSV (plastic strain, true stress [MPa])");
   opt.add(s.material, "material",
@@ -68,6 +72,9 @@ int drawbend_deck_command(int argc, char** argv) {
   if (basis != "full" && basis != "half")
     throw std::invalid_argument("--basis: expected full or half, found '" + basis + "'");
   if (s.snapshots < 1) throw std::invalid_argument("--frames: expected at least 1");
+  if (!(s.speed > 0)) throw std::invalid_argument("--speed: expected a number > 0 mm/s, found " + fmt(s.speed));
+  if (s.mass_scaling < 0) throw std::invalid_argument("--mass-scaling: expected 0 (the quick tier's rule) or > 0");
+  if (s.mass_scaling == 0) s.mass_scaling = sim::mass_scaling_for_speed(sim::kQuickMassScaling, s.speed);
   const bool full = basis == "full";
   const double to_half = full ? 0.5 : 1.0;  // given forces -> half model
   const double shown = full ? 2.0 : 1.0;    // half model -> printed basis

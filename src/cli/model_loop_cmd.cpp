@@ -16,6 +16,7 @@
 #include "core/csv.hpp"
 #include "cli/loop_cmd.hpp"
 #include "core/options.hpp"
+#include "sim/fe_options.hpp"
 #include "sim/model_loop.hpp"
 
 namespace drawbend::cli {
@@ -26,12 +27,11 @@ int model_loop_command(int argc, char** argv, const char* name) {
   s.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
   s.width = 12.7;
   s.speed = 50;
-  s.mass_scaling = 4e4;  // the quick tier at 50 mm/s (1e4 x (100/50)^2)
-  s.element_length = 1.0;
-  s.across = 2;
+  sim::set_quick_mesh(s);  // the chapters' quick tier (sim/fe_options.hpp)
+  s.mass_scaling = 0;      // 0: the quick tier's rule at --speed (set after parsing)
   std::string out, candidates = "split:0.3/0.6";
   sim::ModelLoopConfig cfg;
-  int reuse = 1;
+  bool reuse = true;
   Options opt(me, "Test modelling effects by re-running the draw-bend FE model (rotating = frictionless pin, "
                        "explicit, half strip) against measured bending forces. DATA.csv: one row per point with the "
                        "columns pin_diameter_mm, back_tension_N, bending_force_N (full strip, N; '#' comments). The "
@@ -43,11 +43,12 @@ int model_loop_command(int argc, char** argv, const char* name) {
   opt.add(cfg.fit_pin, "fit-pin", "pin diameter whose points train [mm]; the others are held out");
   opt.add(cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
   opt.add(candidates, "candidates", "comma-separated: split:B1/B2..., voce, hill48, ms:X, across:N");
-  opt.add(reuse, "reuse", "read back finished runs with the identical deck (1) or rerun (0)");
+  opt.add(reuse, "reuse", "read back finished runs with the identical deck (true) or rerun them (false)");
   opt.add(s.thickness, "thickness", "strip thickness [mm]");
   opt.add(s.width, "width", "modelled half width [mm]");
   opt.add(s.speed, "speed", "outlet speed [mm/s]");
-  opt.add(s.mass_scaling, "mass-scaling", "base mass scaling");
+  opt.add(s.mass_scaling, "mass-scaling",
+          "base mass scaling (0: the quick tier's 1e4 at 100 mm/s scaled by (100/v)^2 at --speed, 4e4 at 50 mm/s)");
   opt.add(s.element_length, "element-length", "element length along the strip [mm]");
   opt.add(s.across, "across", "elements across the half width");
   opt.add(s.hardening, "hardening", "hardening curve CSV of the base (isotropic) model");
@@ -66,7 +67,8 @@ int model_loop_command(int argc, char** argv, const char* name) {
   need(s.thickness > 0, "--thickness: expected a number > 0 mm, found " + fmt(s.thickness));
   need(s.width > 0, "--width: expected a number > 0 mm, found " + fmt(s.width));
   need(s.speed > 0, "--speed: expected a number > 0 mm/s, found " + fmt(s.speed));
-  need(s.mass_scaling >= 1, "--mass-scaling: expected a number >= 1, found " + fmt(s.mass_scaling));
+  need(s.mass_scaling == 0 || s.mass_scaling >= 1,
+       "--mass-scaling: expected 0 (the quick tier's rule) or a number >= 1, found " + fmt(s.mass_scaling));
   need(s.element_length > 0, "--element-length: expected a number > 0 mm, found " + fmt(s.element_length));
   need(s.across >= 1, "--across: expected a whole number >= 1, found " + std::to_string(s.across));
   need(std::ifstream(s.hardening).good(), "--hardening: cannot open '" + s.hardening + "'");
@@ -82,6 +84,7 @@ int model_loop_command(int argc, char** argv, const char* name) {
     }
   }
   if (!bad.empty()) throw InputError(bad);
+  if (s.mass_scaling == 0) s.mass_scaling = sim::mass_scaling_for_speed(sim::kQuickMassScaling, s.speed);
   bool on_fit = false;
   for (const auto& p : points) on_fit = on_fit || std::abs(p.pin_mm - cfg.fit_pin) < 1e-6 * cfg.fit_pin;
   if (!on_fit)
@@ -89,7 +92,7 @@ int model_loop_command(int argc, char** argv, const char* name) {
                      "pin_diameter_mm values)");
   ensure_writable_dir(out, "--out");
   cfg.run_root = out + "/runs";
-  cfg.reuse = reuse != 0;
+  cfg.reuse = reuse;
   const auto r = sim::run_model_loop(s, points, cands, cfg);
   sim::save_eval_csv(r.baseline, out + "/baseline.csv");
   sim::save_eval_csv(r.final_model, out + "/final.csv");

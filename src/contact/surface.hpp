@@ -14,9 +14,11 @@
 #include <array>
 #include <string>
 
+#include "core/vec3.hpp"
+
 namespace drawbend::contact {
 
-using Vec3 = std::array<double, 3>;
+using drawbend::Vec3;
 
 inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 

@@ -21,8 +21,7 @@ struct Frame {
   double A[2][2];
 };
 
-Frame frame(const std::array<int, 4>& f, const std::vector<double>& x, const std::vector<double>& y,
-            const std::vector<double>& z) {
+Frame frame(const std::array<int, 4>& f, const double* x, const double* y, const double* z) {
   Vec3 p[4];
   for (int q = 0; q < 4; ++q) p[q] = {x[f[q]], y[f[q]], z[f[q]]};
   Vec3 a, b;
@@ -45,12 +44,13 @@ Frame frame(const std::array<int, 4>& f, const std::vector<double>& x, const std
 }
 }  // namespace
 
-std::vector<TextureRef> texture_refs(const fe::Mesh& mesh, const std::string& faces, const std::vector<int>& nodes,
-                                     const Vec3& rd) {
+std::vector<TextureRef> texture_refs(const std::vector<std::array<int, 4>>& faces, const double* X, const double* Y,
+                                     const double* Z, const std::vector<int>& nodes, const Vec3& rd,
+                                     const std::string& name) {
   std::vector<TextureRef> refs(nodes.size());
   std::vector<bool> done(nodes.size(), false);
-  for (const auto& f : mesh.face_set(faces)) {
-    const Frame F = frame(f, mesh.x, mesh.y, mesh.z);
+  for (const auto& f : faces) {
+    const Frame F = frame(f, X, Y, Z);
     for (int q = 0; q < 4; ++q) {
       const auto it = std::lower_bound(nodes.begin(), nodes.end(), f[q]);
       if (it == nodes.end() || *it != f[q]) continue;
@@ -65,7 +65,7 @@ std::vector<TextureRef> texture_refs(const fe::Mesh& mesh, const std::string& fa
       r.inv[1][0] = -F.A[1][0] / det;
       r.inv[1][1] = F.A[0][0] / det;
       const double c1 = dot(rd, F.g1), c2 = dot(rd, F.g2), l = std::hypot(c1, c2);
-      if (!(l > 1e-9)) throw std::invalid_argument("texture: the rolling direction is normal to a face of '" + faces + "'");
+      if (!(l > 1e-9)) throw std::invalid_argument("texture: the rolling direction is normal to a face of '" + name + "'");
       r.c1 = c1 / l;
       r.c2 = c2 / l;
     }
@@ -73,8 +73,7 @@ std::vector<TextureRef> texture_refs(const fe::Mesh& mesh, const std::string& fa
   return refs;
 }
 
-Vec3 texture_axis(const TextureRef& r, const std::vector<double>& x, const std::vector<double>& y,
-                  const std::vector<double>& z) {
+Vec3 texture_axis(const TextureRef& r, const double* x, const double* y, const double* z) {
   const Frame F = frame(r.face, x, y, z);
   // In-plane deformation gradient F = A A0^-1 and its polar rotation.
   double G[2][2];

@@ -23,11 +23,12 @@
 #include <string>
 #include <vector>
 
-#include "fe/mesh.hpp"
+#include "core/vec3.hpp"
+
 
 namespace drawbend::contact {
 
-using Vec3 = std::array<double, 3>;
+using drawbend::Vec3;
 
 struct TextureRef {
   std::array<int, 4> face{};  ///< the face the node's texture follows
@@ -35,14 +36,15 @@ struct TextureRef {
   double c1 = 1, c2 = 0;      ///< initial RD in the face's initial frame (unit)
 };
 
-/// One reference per node of `nodes` (sorted node ids of face set `faces`),
-/// from the reference coordinates of `mesh` and the rolling direction `rd`.
-/// Throws std::invalid_argument when `rd` is normal to a face.
-std::vector<TextureRef> texture_refs(const fe::Mesh& mesh, const std::string& faces, const std::vector<int>& nodes,
-                                     const Vec3& rd);
+/// One reference per node of `nodes` (sorted node ids of the face set
+/// `faces`, named `name` in messages), from the reference coordinates X, Y, Z
+/// and the rolling direction `rd`.  Throws std::invalid_argument when `rd` is
+/// normal to a face.
+std::vector<TextureRef> texture_refs(const std::vector<std::array<int, 4>>& faces, const double* X, const double* Y,
+                                     const double* Z, const std::vector<int>& nodes, const Vec3& rd,
+                                     const std::string& name);
 
 /// Current unit RD of one node from current nodal coordinates.
-Vec3 texture_axis(const TextureRef& r, const std::vector<double>& x, const std::vector<double>& y,
-                  const std::vector<double>& z);
+Vec3 texture_axis(const TextureRef& r, const double* x, const double* y, const double* z);
 
 }  // namespace drawbend::contact

@@ -14,7 +14,7 @@ Options::Options(std::string program, std::string description)
     : program_(std::move(program)), description_(std::move(description)) {}
 
 void Options::add(std::string& var, const std::string& name, const std::string& help) {
-  opts_.push_back({name, help, false, [&var](const std::string& s) { var = s; }, [&var] { return var; }});
+  opts_.push_back({name, help, false, "VALUE", [&var](const std::string& s) { var = s; }, [&var] { return var; }});
 }
 
 namespace {
@@ -38,16 +38,25 @@ std::function<void(const std::string&)> numeric_setter(T& var, const std::string
 }  // namespace
 
 void Options::add(double& var, const std::string& name, const std::string& help) {
-  opts_.push_back({name, help, false, numeric_setter(var, name, "a number"), [&var] { return fmt(var, 10); }});
+  opts_.push_back({name, help, false, "VALUE", numeric_setter(var, name, "a number"), [&var] { return fmt(var, 10); }});
 }
 
 void Options::add(int& var, const std::string& name, const std::string& help) {
-  opts_.push_back({name, help, false, numeric_setter(var, name, "an integer"),
+  opts_.push_back({name, help, false, "VALUE", numeric_setter(var, name, "an integer"),
                    [&var] { return std::to_string(var); }});
 }
 
+void Options::add(bool& var, const std::string& name, const std::string& help) {
+  auto set = [&var, name](const std::string& s) {
+    if (s == "true" || s == "1") var = true;
+    else if (s == "false" || s == "0") var = false;
+    else throw std::invalid_argument("--" + name + ": expected true or false, found '" + s + "'");
+  };
+  opts_.push_back({name, help, false, "true|false", set, [&var] { return std::string(var ? "true" : "false"); }});
+}
+
 void Options::add_flag(bool& var, const std::string& name, const std::string& help) {
-  opts_.push_back({name, help, true, [&var](const std::string&) { var = true; },
+  opts_.push_back({name, help, true, "", [&var](const std::string&) { var = true; },
                    [&var] { return std::string(var ? "true" : "false"); }});
 }
 
@@ -55,7 +64,7 @@ std::string Options::usage() const {
   std::ostringstream os;
   os << "Usage: " << program_ << " [options]\n" << description_ << "\n\nOptions:\n";
   for (const auto& o : opts_)
-    os << "  --" << o.name << (o.flag ? "" : " VALUE") << "\n      " << o.help << " (default: " << o.get()
+    os << "  --" << o.name << (o.flag ? "" : " " + o.value) << "\n      " << o.help << " (default: " << o.get()
        << ")\n";
   os << "  --help\n      Print this message.\n";
   return os.str();

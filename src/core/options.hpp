@@ -14,6 +14,9 @@ class Options {
   void add(std::string& var, const std::string& name, const std::string& help);
   void add(double& var, const std::string& name, const std::string& help);
   void add(int& var, const std::string& name, const std::string& help);
+  /// An on/off option that takes a value: true or false (1 or 0 also accepted,
+  /// for older command lines); the help shows "true|false".
+  void add(bool& var, const std::string& name, const std::string& help);
   void add_flag(bool& var, const std::string& name, const std::string& help);
 
   /// Parse argv. Returns false (after printing usage) on --help; throws
@@ -26,6 +29,7 @@ class Options {
   struct Opt {
     std::string name, help;
     bool flag = false;
+    std::string value = "VALUE";  ///< how the help names the value
     std::function<void(const std::string&)> set;
     std::function<std::string()> get;
   };

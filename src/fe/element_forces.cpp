@@ -68,12 +68,7 @@ void Solver::element_forces() {
   const material::Material& mat = *m_.material;
   ElementView ev;
   ev.hex = mesh.hex.data();
-  ev.x = x_.data();
-  ev.y = y_.data();
-  ev.z = z_.data();
-  ev.vx = vx_.data();
-  ev.vy = vy_.data();
-  ev.vz = vz_.data();
+  ev.nodes = node_view();
   ev.sig = sig_.data();
   ev.state = state_.data();
   ev.hgq = hgq_.data();

@@ -111,12 +111,12 @@ int element_block(const ElementView& ev, int e0) {
   for (int a = 0; a < 8; ++a)
     for (int l = 0; l < W; ++l) {
       const int i = ev.hex[e0 + l][a];
-      set_lane(x[a], l, ev.x[i]);
-      set_lane(y[a], l, ev.y[i]);
-      set_lane(z[a], l, ev.z[i]);
-      set_lane(v[a][0], l, ev.vx[i]);
-      set_lane(v[a][1], l, ev.vy[i]);
-      set_lane(v[a][2], l, ev.vz[i]);
+      set_lane(x[a], l, ev.nodes.x[i]);
+      set_lane(y[a], l, ev.nodes.y[i]);
+      set_lane(z[a], l, ev.nodes.z[i]);
+      set_lane(v[a][0], l, ev.nodes.vx[i]);
+      set_lane(v[a][1], l, ev.nodes.vy[i]);
+      set_lane(v[a][2], l, ev.nodes.vz[i]);
     }
   HexGeometryT<T> g;
   if (!hex_geometry_t(x, y, z, g)) {

@@ -10,15 +10,17 @@
 // checks; the solver picks the widest one the CPU has.
 #include <array>
 
+#include "fe/node_view.hpp"
 #include "material/j2_isotropic.hpp"
 #include "material/material.hpp"
 
 namespace drawbend::fe {
 
 struct ElementView {
-  const std::array<int, 8>* hex = nullptr;                                    ///< connectivity
-  const double *x = nullptr, *y = nullptr, *z = nullptr;                      ///< node positions [mm]
-  const double *vx = nullptr, *vy = nullptr, *vz = nullptr;                   ///< node velocities [mm/s]
+  const std::array<int, 8>* hex = nullptr;  ///< connectivity
+  /// The nodes (Solver::node_view()); the element loop only reads their
+  /// positions x, y, z [mm] and velocities vx, vy, vz [mm/s].
+  NodeView nodes;
   double* sig = nullptr;         ///< 12 per element: the two integration points' stresses [MPa]
   double* state = nullptr;       ///< 2 * ns per element: the points' material states
   double* hgq = nullptr;         ///< 6 per element: hourglass generalised forces

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contact/surface.hpp"
+#include "core/vec3.hpp"
 #include "fe/guards.hpp"
 #include "fe/history.hpp"
 #include "fe/mesh.hpp"
@@ -16,7 +17,7 @@
 
 namespace drawbend::fe {
 
-using Vec3 = std::array<double, 3>;
+using drawbend::Vec3;  // core/vec3.hpp
 
 /// Fixed degrees of freedom (also symmetry planes: fix the normal component).
 struct FixedBC {

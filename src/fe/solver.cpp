@@ -30,7 +30,7 @@ Solver::Solver(Model& model) : m_(model) {
   x_ = mesh.x;
   y_ = mesh.y;
   z_ = mesh.z;
-  for (auto* v : {&vx_, &vy_, &vz_, &fx_, &fy_, &fz_, &mass_}) v->assign(n, 0.0);
+  for (auto* v : {&vx_, &vy_, &vz_, &fx_, &fy_, &fz_, &mass_, &ex_, &ey_, &ez_, &v0x_, &v0y_, &v0z_}) v->assign(n, 0.0);
   const auto& mat = *m_.material;
   // Two integration points per element (through the thickness): 12 stresses
   // and 2 material states each.
@@ -103,11 +103,26 @@ Solver::Solver(Model& model) : m_(model) {
         len[k] = std::min(len[k], V / A);
       }
     }
+    std::vector<int> slot;
+    for (const auto& f : faces)
+      for (int q = 0; q < 4; ++q)
+        slot.push_back(static_cast<int>(std::lower_bound(nodes.begin(), nodes.end(), f[q]) - nodes.begin()));
+    face_slot_.push_back(std::move(slot));
+    pair_faces_.push_back(&faces);
+    pair_tool_.push_back(tool_index(m_, cp.tool));
     contact_.push_back(std::move(cn));
     contact_stiffness_len_.push_back(std::move(len));
     contact_force_.emplace_back(nodes.size(), Vec3{0, 0, 0});
     const int ss = cp.friction ? cp.friction->state_size() : 0;
     friction_state_.emplace_back(nodes.size() * ss, 0.0);
+    // Corotational texture axes: each node's reference face and initial RD, from the reference mesh
+    // (only where a step turns friction on: the axes are used by friction alone).
+    texture_ref_.emplace_back();
+    const bool friction_used = std::any_of(m_.steps.begin(), m_.steps.end(), [](const Step& s) { return s.friction; });
+    if (cp.friction && friction_used && cp.texture == ContactPair::Texture::corotational)
+      texture_ref_.back() = contact::texture_refs(faces, mesh.x.data(), mesh.y.data(), mesh.z.data(), nodes,
+                                                  m_.rolling_direction, cp.faces);
+    for (auto& s : energy_scratch_) s.resize(std::max(s.size(), nodes.size()), 0.0);
   }
   tool_offset_.assign(m_.tools.size(), Vec3{0, 0, 0});
   tool_vel_.assign(m_.tools.size(), Vec3{0, 0, 0});

@@ -14,11 +14,12 @@
 #include <string>
 #include <vector>
 
-#include "contact/texture.hpp"
+#include "contact/contact.hpp"
 #include "fe/guards.hpp"
 #include "fe/model.hpp"
 #include "fe/mesh.hpp"
 #include "fe/parallel_policy.hpp"  // whether a loop forks: parallel::worth_forking
+#include "fe/step_phases.hpp"
 
 namespace drawbend::fe {
 
@@ -37,18 +38,8 @@ struct Energies {
   double balance_error() const;
 };
 
-/// Per contact node, the state the contact maps report.
-struct ContactNode {
-  int node = -1;
-  double area = 0;          ///< tributary area [mm^2]
-  double normal_force = 0;  ///< [N]
-  double pressure = 0;      ///< [MPa]
-  double depth = 0;         ///< penetration [mm]
-  Vec3 normal{0, 0, 0}, ft{0, 0, 0};  ///< tool normal; tangential force on the sheet [N]
-  double slip_speed = 0;    ///< [mm/s]
-  int surface = -1;         ///< index of the tool surface in contact (-1: none)
-  Vec3 foot{0, 0, 0};       ///< closest point on the tool [mm]
-};
+/// Per contact node, the state the contact maps report (contact/contact.hpp).
+using ContactNode = contact::ContactNode;
 
 struct Progress {
   int step_index;
@@ -124,8 +115,19 @@ class Solver {
   void load_state(const std::string& in, const std::string& source);
 
  private:
+  // The phases of a cycle that touch the solver's own state (run_step).
+  void begin_step(int index);                 ///< resolve the step's names (plan_), reset per-step state
+  NodeView node_view();
+  void check_force_driven_tools() const;      ///< throws std::invalid_argument: a tool too light for dt
+  void guard_time_step();                     ///< non-finite or collapsed time step
   void element_forces();
-  void contact_forces(double dt, bool friction);
+  contact::ContactView contact_view(std::size_t pair, bool friction, const NodeView& nodes);
+  void guard_penetration(std::size_t pair, int slot);  ///< the penetration guard for one slave node
+  /// contact::pair_forces per pair, added into ext; the penetration guard.
+  void contact_phase(double dt, bool friction, const NodeView& nodes, NodeField ext);
+  [[noreturn]] void fault_nonfinite_velocity(int node) const;
+  void account_energies(const EnergyIncrement& inc);  ///< adds the interval's energies; non-finite guard
+  void advance_time(double dt);               ///< t, cycle and the next stable step
   void compute_dt();
   /// Throws NumericalFault naming the element if the step is zero or not finite.
   void check_dt() const;
@@ -143,10 +145,17 @@ class Solver {
   std::vector<std::vector<ContactNode>> contact_;
   std::vector<std::vector<double>> contact_stiffness_len_;  // per pair, per node: adjacent element size V/A [mm]
   std::vector<std::vector<double>> friction_state_;
-  std::vector<std::vector<contact::TextureRef>> texture_ref_;  // per pair (corotational texture only), per node
+  std::vector<std::vector<contact::TextureRef>> texture_ref_;  // per pair (corotational with friction only), per node
   std::vector<std::vector<Vec3>> contact_force_;  // per pair, per contact node, force on sheet
-  std::vector<std::pair<std::string, Vec3>> reactions_, applied_;
-  std::vector<double> energy_scratch_[2];
+  // Contact pairs resolved at set-up: tool index, face list, and per face corner the slot of its node.
+  std::vector<int> pair_tool_;
+  std::vector<const std::vector<Quad>*> pair_faces_;
+  std::vector<std::vector<int>> face_slot_;
+  StepPlan plan_;         // the current step's names resolved (begin_step)
+  int plan_step_ = -1;    // the step plan_ belongs to
+  std::vector<Vec3> reactions_, applied_;  // last cycle: per reaction slot of plan_, per load of the step
+  std::vector<double> ex_, ey_, ez_, v0x_, v0y_, v0z_;  // per node: external force, velocity before the update
+  std::vector<double> energy_scratch_[2];  // contact: per node of the largest pair, stored and dissipated energy
   std::vector<double> rx_, ry_, rz_;  // per-node reactions of the last cycle
   std::vector<Vec3> slide_offset_;    // per rotation BC of the current step: slid distance [mm]
   std::vector<double> hg_ratio_;      // per element, relaxed tangent ratio (stabilisation, thickness strain)

@@ -18,9 +18,11 @@
 #include <utility>
 #include <vector>
 
+#include "core/vec3.hpp"
+
 namespace drawbend::friction {
 
-using Vec3 = std::array<double, 3>;
+using drawbend::Vec3;
 
 struct ContactState {
   double pressure = 0;    ///< normal force / tributary area [MPa]

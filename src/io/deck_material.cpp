@@ -12,7 +12,6 @@
 #include "material/linear_elastic.hpp"
 #include "friction/stribeck_law.hpp"
 #include "friction/surface_law.hpp"
-#include "study/thesis_data.hpp"
 
 namespace drawbend::io {
 
@@ -212,7 +211,7 @@ std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const
   if (t.get("table")) {
     const std::string file = c.str(t, "table", w);
     if (c.count() > before) return nullptr;
-    p = study::load_stribeck(relative_to(dir, file));
+    p = analysis::load_stribeck(relative_to(dir, file));
   } else {
     p.mu_BL = c.in_range(t, "mu_BL", w, NAN, 0.0);
     p.mu_EHL = c.in_range(t, "mu_EHL", w, NAN, 0.0);

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/csv.hpp"
+#include "core/run_output.hpp"
 #include "io/run_checkpoint.hpp"
 #include "io/vtu.hpp"
 
@@ -67,7 +68,7 @@ double signal(const fe::Solver& s, const HistorySignal& h, int element) {
 
 }  // namespace
 
-void write_contact_maps(const fe::Solver& s, const std::string& prefix) {
+void write_contact_maps(const fe::Solver& s, const std::string& dir, int snapshot) {
   const fe::Model& m = s.model();
   for (int p = 0; p < s.num_contact_pairs(); ++p) {
     const auto& cp = m.contacts[p];
@@ -75,13 +76,12 @@ void write_contact_maps(const fe::Solver& s, const std::string& prefix) {
     for (const auto& t : m.tools)
       if (t.name == cp.tool) tool = &t;
     const fe::Vec3 off = s.tool_offset(cp.tool);
-    CsvWriter w({"node", "x_mm", "y_mm", "z_mm", "x0_mm", "y0_mm", "z0_mm", "surface", "u_tool", "v_tool_mm",
-                 "pressure_MPa", "area_mm2", "normal_force_N", "tangential_force_N", "slip_speed_mm_s",
-                 "penetration_mm"});
-    w.comment("contact map: faces '" + cp.faces + "' on tool '" + cp.tool + "' at t = " + fmt(s.time()) + " s");
-    w.comment("x, y, z: current position; x0, y0, z0: reference (undeformed) position [mm]");
-    w.comment("u_tool: angle about the surface axis [deg] (cylinder, torus) or in-plane coordinate [mm] (plane); "
-              "v_tool: position along the axis [mm] (cylinder, torus) or second in-plane coordinate (plane)");
+    const std::vector<std::string> comments{
+        "contact map: faces '" + cp.faces + "' on tool '" + cp.tool + "' at t = " + fmt(s.time()) + " s",
+        "x, y, z: current position; x0, y0, z0: reference (undeformed) position [mm]",
+        "u_tool: angle about the surface axis [deg] (cylinder, torus) or in-plane coordinate [mm] (plane); "
+        "v_tool: position along the axis [mm] (cylinder, torus) or second in-plane coordinate (plane)"};
+    std::vector<run_output::ContactMapRow> rows;
     for (const auto& c : s.contact_nodes(p)) {
       const int i = c.node;
       double u = 0, v = 0;
@@ -106,12 +106,11 @@ void write_contact_maps(const fe::Solver& s, const std::string& prefix) {
         }
       }
       const double ft = std::sqrt(c.ft[0] * c.ft[0] + c.ft[1] * c.ft[1] + c.ft[2] * c.ft[2]);
-      w.row({std::to_string(i), fmt(s.x()[i], 9), fmt(s.y()[i], 9), fmt(s.z()[i], 9), fmt(m.mesh.x[i], 9),
-             fmt(m.mesh.y[i], 9), fmt(m.mesh.z[i], 9), std::to_string(c.surface),
-             fmt(u, 9), fmt(v, 9), fmt(c.pressure, 8), fmt(c.area, 8), fmt(c.normal_force, 8), fmt(ft, 8),
-             fmt(c.slip_speed, 8), fmt(c.depth, 6)});
+      rows.push_back({i, s.x()[i], s.y()[i], s.z()[i], m.mesh.x[i], m.mesh.y[i], m.mesh.z[i], c.surface, u, v,
+                      c.pressure, c.area, c.normal_force, ft, c.slip_speed, c.depth});
     }
-    w.save(prefix + "_" + std::to_string(p) + ".csv");
+    const std::filesystem::path file = std::filesystem::path(dir) / run_output::contact_map_name(snapshot, p);
+    run_output::write_contact_map(file.string(), comments, rows);
   }
 }
 
@@ -222,8 +221,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
         << fmt_shortest(deck.limits.max_cycles) << "), memory about " << fmt(deck.cost.memory_mb, 3) << " MB (limit "
         << fmt_shortest(deck.limits.max_memory_mb) << "); [limits] in the deck raises them\n";
   // History file.
-  std::vector<std::string> header{"time_s", "step", "dt_s", "kinetic_mJ", "internal_mJ", "hourglass_mJ",
-                                  "external_work_mJ", "friction_mJ", "damping_mJ", "balance_error"};
+  std::vector<std::string> header = run_output::run_history_columns();
   std::vector<int> elements;  // per signal: the tracked element of a "strain" signal
   for (const auto& h : deck.output.history) {
     header.push_back(h.name);
@@ -235,7 +233,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   auto snapshot = [&]() {
     const std::string name = "fields_" + std::to_string(rs.snap) + ".vtu";
     write_fields(solver, (fs::path(opt.out_dir) / name).string());
-    write_contact_maps(solver, (fs::path(opt.out_dir) / ("contact_" + std::to_string(rs.snap))).string());
+    write_contact_maps(solver, opt.out_dir, rs.snap);
     rs.snapshots.push_back({solver.time(), name});
     ++rs.snap;
   };
@@ -268,6 +266,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
     }
     const auto& e = solver.energies();
     if (p.time >= next_hist - 1e-15) {
+      // The run's own columns, in the order of run_output::run_history_columns().
       std::vector<std::string> row{fmt(p.time, 10), p.step->name, fmt(p.dt, 6), fmt(e.kinetic, 8), fmt(e.internal, 8),
                                    fmt(e.hourglass, 8), fmt(e.external_work, 8), fmt(e.friction, 8),
                                    fmt(e.damping, 8), fmt(e.balance_error(), 4)};
@@ -319,8 +318,8 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   } catch (const fe::NumericalFault&) {
     // Keep what was recorded up to the fault: it shows how the run got there.
     if (last_print >= 0) log << "\n";
-    hist.save((fs::path(opt.out_dir) / "history.csv").string());
-    log << "history up to the fault: " << (fs::path(opt.out_dir) / "history.csv").string() << "\n";
+    hist.save((fs::path(opt.out_dir) / run_output::kHistoryFile).string());
+    log << "history up to the fault: " << (fs::path(opt.out_dir) / run_output::kHistoryFile).string() << "\n";
     throw;
   } catch (const Halt&) {
     if (last_print >= 0) log << "\n";
@@ -337,7 +336,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
     return r;
   }
   if (last_print >= 0) log << "\n";
-  hist.save((fs::path(opt.out_dir) / "history.csv").string());
+  hist.save((fs::path(opt.out_dir) / run_output::kHistoryFile).string());
   write_pvd((fs::path(opt.out_dir) / "fields.pvd").string(), rs.snapshots);
   const auto& e = solver.energies();
   r.time = solver.time();

@@ -52,7 +52,8 @@ struct RunSummary {
 /// Write the contact map of every pair: position in global and tool
 /// coordinates (cylinder/torus: angle about the axis [deg] and axial position;
 /// plane: in-plane coordinates), pressure, area, forces, slip speed.
-void write_contact_maps(const fe::Solver& s, const std::string& prefix);
+/// Files: contact_<snapshot>_<pair>.csv in `dir` (core/run_output.hpp).
+void write_contact_maps(const fe::Solver& s, const std::string& dir, int snapshot);
 /// Write a VTU snapshot: displacement, velocity (points); stress, plastic strain,
 /// von Mises stress (cells); contact pressure (points).
 void write_fields(const fe::Solver& s, const std::string& path);

@@ -13,6 +13,7 @@
 
 #include "core/csv.hpp"
 #include "loop/effects.hpp"
+#include "loop/fast_mod.hpp"
 
 namespace drawbend::loop {
 
@@ -187,22 +188,47 @@ struct UnitProbe {
         if (sn[k] > 0) e += s1[k] * s1[k] / sn[k];
       return e;
     }
+    const Gram A = gram(xu);
+    double b1 = 0, b2 = 0;
+    for (size_t u = 0; u < ur.size(); ++u) b1 += xu[u] * ur[u], b2 += xu[u] * xu[u] * ur[u];
+    return solve(A, b1, b2);
+  }
+  /// The block-centred Gram matrix of (x, x^2) over the units.
+  struct Gram {
+    double A11, A12, A22;
+  };
+  Gram gram(const std::vector<double>& xu) const {
     s1.assign(nblocks, 0.0), s2.assign(nblocks, 0.0), sn.assign(nblocks, 0.0);
-    double b1 = 0, b2 = 0, q11 = 0, q12 = 0, q22 = 0;
+    double q11 = 0, q12 = 0, q22 = 0;
     for (size_t u = 0; u < ur.size(); ++u) {
       const double x = xu[u], x2 = x * x, n = un[u];
-      b1 += x * ur[u], b2 += x2 * ur[u];
       q11 += n * x2, q12 += n * x2 * x, q22 += n * x2 * x2;
       s1[ub[u]] += n * x, s2[ub[u]] += n * x2, sn[ub[u]] += n;
     }
-    double A11 = q11, A12 = q12, A22 = q22;
+    Gram A{q11, q12, q22};
     for (int k = 0; k < nblocks; ++k)
-      if (sn[k] > 0) A11 -= s1[k] * s1[k] / sn[k], A12 -= s1[k] * s2[k] / sn[k], A22 -= s2[k] * s2[k] / sn[k];
-    if (dof == 1) return A11 > 1e-12 ? b1 * b1 / A11 : 0.0;
-    const double det = A11 * A22 - A12 * A12;
-    if (det <= 1e-12 * std::max(1.0, A11 * A22)) return A11 > 1e-12 ? b1 * b1 / A11 : 0.0;
-    const double c1 = (A22 * b1 - A12 * b2) / det, c2 = (A11 * b2 - A12 * b1) / det;
+      if (sn[k] > 0)
+        A.A11 -= s1[k] * s1[k] / sn[k], A.A12 -= s1[k] * s2[k] / sn[k], A.A22 -= s2[k] * s2[k] / sn[k];
+    return A;
+  }
+  /// The explained sum of squares b' A^-1 b (1 or 2 regressors).
+  double solve(const Gram& A, double b1, double b2) const {
+    if (dof == 1) return A.A11 > 1e-12 ? b1 * b1 / A.A11 : 0.0;
+    const double det = A.A11 * A.A22 - A.A12 * A.A12;
+    if (det <= 1e-12 * std::max(1.0, A.A11 * A.A22)) return A.A11 > 1e-12 ? b1 * b1 / A.A11 : 0.0;
+    const double c1 = (A.A22 * b1 - A.A12 * b2) / det, c2 = (A.A11 * b2 - A.A12 * b1) / det;
     return c1 * b1 + c2 * b2;
+  }
+  /// ess() of a permutation of xu that moves x only among units of one block
+  /// with equal counts: A is then unchanged (same sums, up to rounding, far
+  /// inside the 1e-12 tie margin of the test), so only b is recomputed.
+  double ess_permuted(const std::vector<double>& xp, const Gram& A) const {
+    double b1 = 0, b2 = 0;
+    if (dof == 1)
+      for (size_t u = 0; u < ur.size(); ++u) b1 += xp[u] * ur[u];
+    else
+      for (size_t u = 0; u < ur.size(); ++u) b1 += xp[u] * ur[u], b2 += xp[u] * xp[u] * ur[u];
+    return solve(A, b1, b2);
   }
 };
 
@@ -372,12 +398,21 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     std::mt19937_64 rng(seed + 7919 * ci);
     int ge = 0, b = 0, dec = 0;
     std::vector<double> xp = xu;
+    // Permutations that keep each group in one block with equal unit counts
+    // leave the Gram matrix as it is: only x'r is recomputed per permutation.
+    bool fixed_gram = !c.categorical;
+    for (const auto& g : groups)
+      for (int u : g) fixed_gram = fixed_gram && up.ub[u] == up.ub[g[0]] && up.un[u] == up.un[g[0]];
+    const UnitProbe::Gram A = fixed_gram ? up.gram(xu) : UnitProbe::Gram{};
     const int cap = std::max(1, permutations);
+    size_t kmax = 1;
+    for (const auto& g : groups) kmax = std::max(kmax, g.size());
+    const FastMod mod(kmax);  // mod(rng(), k) == rng() % k, without the division
     for (int batch = 100; b < cap; batch = std::min(cap - b, 2 * batch)) {
       for (int j = 0; j < batch; ++j, ++b) {
         for (const auto& g : groups)  // Fisher-Yates within the group
-          for (size_t k = g.size(); k > 1; --k) std::swap(xp[g[k - 1]], xp[g[rng() % k]]);
-        if (up.ess(xp) >= res.stat * (1 - 1e-12)) ++ge;
+          for (size_t k = g.size(); k > 1; --k) std::swap(xp[g[k - 1]], xp[g[mod(rng(), k)]]);
+        if ((fixed_gram ? up.ess_permuted(xp, A) : up.ess(xp)) >= res.stat * (1 - 1e-12)) ++ge;
       }
       dec = sequential_decision(ge, b, thr);
       if (dec != 0) break;

@@ -8,6 +8,7 @@
 #include <regex>
 
 #include "core/csv.hpp"
+#include "core/run_output.hpp"
 
 namespace drawbend::loop {
 
@@ -56,7 +57,7 @@ MapLibrary MapLibrary::load_dir(const std::string& dir) {
   if (!fs::is_directory(dir)) throw InputError(dir + ": maps directory not found");
   MapLibrary lib;
   lib.source_ = "FE maps from " + dir;
-  const std::regex name(R"(pin_([0-9]+(\.[0-9]+)?)mm\.csv)");
+  const std::regex name(R"(pin_([0-9]+(\.[0-9]+)?)mm\.csv)");  // run_output::pin_map_name
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(dir)) files.push_back(e.path());
   std::sort(files.begin(), files.end());
@@ -66,12 +67,13 @@ MapLibrary MapLibrary::load_dir(const std::string& dir) {
     if (!std::regex_match(fn, m, name)) continue;
     PinMap pm;
     pm.pin_d_mm = std::stod(m[1].str());
-    const CsvTable t = read_csv(f.string());
+    const run_output::PressureColumns t = run_output::read_pressure_columns(f.string());
+    const std::string kref = run_output::kReferenceBackTension, kbend = run_output::kBendingForce;
     for (const auto& c : t.comments) {
-      const auto k = c.find("reference_back_tension_N:");
-      if (k != std::string::npos) pm.fref_N = std::stod(c.substr(k + 25));
-      const auto b = c.find("bending_force_N:");
-      if (b != std::string::npos) pm.fbend_N = std::stod(c.substr(b + 16));
+      const auto k = c.find(kref);
+      if (k != std::string::npos) pm.fref_N = std::stod(c.substr(k + kref.size()));
+      const auto b = c.find(kbend);
+      if (b != std::string::npos) pm.fbend_N = std::stod(c.substr(b + kbend.size()));
     }
     fs::path side = f;
     side.replace_extension(".ref");
@@ -79,11 +81,10 @@ MapLibrary MapLibrary::load_dir(const std::string& dir) {
     if (!(pm.fref_N > 0))
       throw InputError(f.string() + ": no reference back tension (comment '# reference_back_tension_N: N' or " +
                        side.filename().string() + ")");
-    for (const auto& r : t.rows) {
-      const double p = t.number(r, "pressure_MPa");
-      if (p <= 0) continue;  // out of contact
-      pm.map.p_MPa.push_back(p);
-      pm.map.area_mm2.push_back(2.0 * t.number(r, "area_mm2"));  // half model -> full strip
+    for (std::size_t r = 0; r < t.pressure.size(); ++r) {
+      if (t.pressure[r] <= 0) continue;  // out of contact
+      pm.map.p_MPa.push_back(t.pressure[r]);
+      pm.map.area_mm2.push_back(2.0 * t.area[r]);  // half model -> full strip
     }
     pm.map.label = "pin " + fmt(pm.pin_d_mm) + " mm, FE " + fn;
     pm.provenance = "FE contact map " + f.string() + " (half model, areas doubled)";

@@ -26,8 +26,11 @@
 namespace drawbend::loop {
 
 /// Friction coefficient in direction phi [rad] from RD on the ellipse with
-/// semi-axes mu_RD = a and mu_TD = b (Eq. 6.3): a b / sqrt(b^2 cos^2 + a^2 sin^2).
+/// semi-axes mu_RD = a and mu_TD = b (Sec. 6.4, Fig. 6.5; analysis::ellipse_mu):
+/// a b / sqrt(b^2 cos^2 + a^2 sin^2).
 double ellipse(double a, double b, double phi);
+/// The same from cos(phi) and sin(phi) (bit for bit ellipse(a, b, phi)).
+double ellipse_cs(double a, double b, double c, double s);
 
 constexpr double kWrapRad = 1.5707963267948966;  ///< 90 deg wrap (Sec. 5.6)
 constexpr double kStripWidthMm = 25.4;           ///< Sec. 5.2
@@ -43,10 +46,14 @@ struct Row {
   double fref = 0;          ///< the map's reference back tension [N]
   double lgL = 0;           ///< log10 lubricant number, centred over fixed rows
   double sliding = 0;       ///< sliding distance [mm] (0 when absent)
+  double cos_phi = 1, sin_phi = 0;  ///< cos and sin of phi (the ellipse's, computed once per row)
   double sin2 = 0;          ///< sin^2(2 phi)
   double four2 = 0;         ///< (cos 2phi - cos 6phi) / 2
   int dir = -1;             ///< index into Design::fixed_directions (fixed rows)
 };
+
+/// Sets a row's direction phi [rad] and the functions of it that predictions use.
+void set_direction(Row& r, double phi);
 
 struct Design {
   const Dataset* data = nullptr;

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
+#include <map>
 #include <iostream>
 
 #include "core/csv.hpp"
@@ -57,17 +58,32 @@ int main(int argc, char** argv) {
     const auto chapters = study::discover_chapters(chapters_src, chapters_out);
     if (chapters.empty()) throw InputError(chapters_src + ": no chapters (directories with intro.md)");
     if (!errata.empty()) {
-      std::vector<std::string> ids;
+      // Check ids per mesh tier (each chapter's values.csv states the tier it ran):
+      // a disagreement documented for one tier only is audited against the
+      // chapters that ran that tier, and not at all when none did.
+      std::map<std::string, std::vector<std::string>> ids_by_tier;
       for (const auto& ch : chapters) {
+        std::string tier = "quick";
+        const CsvTable v = read_csv(ch.out_dir + "/values.csv");
+        for (const auto& r : v.rows)
+          if (v.text(r, "key") == "tier") tier = v.text(r, "value");
         const CsvTable t = read_csv(ch.out_dir + "/checks.csv");
-        for (const auto& r : t.rows) ids.push_back(t.text(r, "id"));
+        for (const auto& r : t.rows) ids_by_tier[tier].push_back(t.text(r, "id"));
       }
       // The disagreements list sits beside the errata list and is audited the same way.
       const std::string disagreements =
           (std::filesystem::path(errata).parent_path() / "disagreements.csv").string();
       for (const std::string& list : {errata, disagreements}) {
         if (!std::filesystem::exists(list)) continue;
-        const auto dead = study::Errata::load(list).unused(ids);
+        std::map<std::string, std::pair<int, int>> seen;  // entry -> (tiers that load it, tiers where it is unused)
+        for (const auto& [tier, ids] : ids_by_tier) {
+          const auto e = study::Errata::load(list, tier);
+          for (const auto& x : e.unused({})) ++seen[x].first;
+          for (const auto& x : e.unused(ids)) ++seen[x].second;
+        }
+        std::vector<std::string> dead;
+        for (const auto& [x, n] : seen)
+          if (n.first > 0 && n.second == n.first) dead.push_back(x);
         for (const auto& d : dead) std::cerr << list << ": entry '" << d << "' matches no check\n";
         if (!dead.empty()) throw InputError(list + ": " + std::to_string(dead.size()) + " unused entries");
       }

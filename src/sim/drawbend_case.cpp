@@ -8,6 +8,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/run_output.hpp"
 #include "io/deck.hpp"
 #include "io/run_case.hpp"
 #include "sim/material_spec.hpp"
@@ -15,6 +16,9 @@
 namespace drawbend::sim {
 
 namespace fs = std::filesystem;
+using run_output::kHistoryFile;
+using run_output::mid_wrap_strain;
+using run_output::signal_name;
 
 double wrap_length(const DrawBendSpec& s) { return (s.pin_diameter / 2 + s.thickness / 2) * M_PI / 2; }
 
@@ -124,21 +128,22 @@ std::string deck_text(const DrawBendSpec& s) {
     << "velocity = [ { set = \"xmax\", direction = [0.0, 0.0, -1.0], speed = { t = [0.0, "
     << num(ramp3) << "], v = [0.0, " << num(s.speed) << "] } } ]\n\n"
     << "[output]\nfields_per_step = " << std::max(1, s.snapshots) << "\nhistory = [\n"
-    << "  { name = \"outlet_force_N\", kind = \"reaction\", target = \"xmax\", component = 2 },\n"
-    << "  { name = \"back_tension_N\", kind = \"applied\", target = \"xmin\", component = 0 },\n"
-    << "  { name = \"inlet_x_mm\", kind = \"displacement\", target = \"xmin\", component = 0 },\n"
-    << "  { name = \"pin_force_x_N\", kind = \"tool_force\", target = \"pin\", component = 0 },\n"
-    << "  { name = \"pin_force_z_N\", kind = \"tool_force\", target = \"pin\", component = 2 },\n";
+    << "  { name = \"" << signal_name(Signal::outlet_force) << "\", kind = \"reaction\", target = \"xmax\", component = 2 },\n"
+    << "  { name = \"" << signal_name(Signal::back_tension) << "\", kind = \"applied\", target = \"xmin\", component = 0 },\n"
+    << "  { name = \"" << signal_name(Signal::inlet_x) << "\", kind = \"displacement\", target = \"xmin\", component = 0 },\n"
+    << "  { name = \"" << signal_name(Signal::pin_force_x) << "\", kind = \"tool_force\", target = \"pin\", component = 0 },\n"
+    << "  { name = \"" << signal_name(Signal::pin_force_z) << "\", kind = \"tool_force\", target = \"pin\", component = 2 },\n";
   // Strain spots (Sec. 2.3.2): the centre-row elements on the contact side
   // ("inside") and the free side ("outside") at a section that passes the
   // whole wrap during the draw: it enters at a slide of d - Lw - 2 mm.
   const double xs = -(d - Lw - 2.0), ys = s.width / (2.0 * s.across), dz = t / (2.0 * s.through);
   for (int k = 0; k < 2; ++k) {
-    const char* side = k == 0 ? "inside" : "outside";
+    const Signal strain = k == 0 ? Signal::strain_inside : Signal::strain_outside;
+    const Signal plastic = k == 0 ? Signal::plastic_strain_inside : Signal::plastic_strain_outside;
     const double zs = k == 0 ? R + dz : R + t - dz;
-    o << "  { name = \"strain_" << side << "\", kind = \"strain\", point = [" << num(xs) << ", " << num(ys) << ", "
-      << num(zs) << "], component = 0 },\n"
-      << "  { name = \"plastic_strain_" << side << "\", kind = \"strain\", point = [" << num(xs) << ", " << num(ys)
+    o << "  { name = \"" << signal_name(strain) << "\", kind = \"strain\", point = [" << num(xs) << ", " << num(ys)
+      << ", " << num(zs) << "], component = 0 },\n"
+      << "  { name = \"" << signal_name(plastic) << "\", kind = \"strain\", point = [" << num(xs) << ", " << num(ys)
       << ", " << num(zs) << "], component = 1 },\n";
   }
   // Mid-wrap sections (Sec. 2.3.2, "steady strain condition"): the section
@@ -147,7 +152,7 @@ std::string deck_text(const DrawBendSpec& s) {
   // changing.  One section per element length along the refined zone.
   const double step = std::max(h, 0.5);
   for (int k = 0; k * step <= d - 1.0; ++k)
-    o << "  { name = \"eps_mid_" << k << "\", kind = \"strain\", point = [" << num(Lw / 2 - k * step) << ", "
+    o << "  { name = \"" << mid_wrap_strain(k) << "\", kind = \"strain\", point = [" << num(Lw / 2 - k * step) << ", "
       << num(ys) << ", " << num(R + t - dz) << "], component = 0 },\n";
   o << "]\n";
   return o.str();
@@ -155,32 +160,18 @@ std::string deck_text(const DrawBendSpec& s) {
 
 namespace {
 
-/// The last contact map of pair 0 written by run_case (contact_<k>_0.csv).
-fs::path last_map(const fs::path& dir) {
-  int best = -1;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    const std::string n = e.path().filename().string();
-    if (n.rfind("contact_", 0) == 0 && n.size() > 14 && n.substr(n.size() - 6) == "_0.csv") {
-      const int k = std::stoi(n.substr(8, n.size() - 14));
-      best = std::max(best, k);
-    }
-  }
-  if (best < 0) throw InputError(dir.string() + ": no contact map");
-  return dir / ("contact_" + std::to_string(best) + "_0.csv");
-}
-
 void reduce(DrawBendResult& r) {
   const fs::path dir(r.dir);
-  r.history = read_csv((dir / "history.csv").string());
+  r.history = read_csv((dir / kHistoryFile).string());
   const CsvTable& h = r.history;
   std::vector<double> t, fy;
   for (const auto& row : h.rows)
-    if (h.text(row, "step") == "draw") {
-      t.push_back(h.number(row, "time_s"));
-      fy.push_back(-h.number(row, "outlet_force_N"));  // the outlet grip pulls along -z
-      r.F_back = -h.number(row, "back_tension_N");
+    if (h.text(row, signal_name(Signal::step)) == "draw") {
+      t.push_back(h.number(row, signal_name(Signal::time)));
+      fy.push_back(-h.number(row, signal_name(Signal::outlet_force)));  // the outlet grip pulls along -z
+      r.F_back = -h.number(row, signal_name(Signal::back_tension));
     }
-  if (t.size() < 12) throw InputError(r.dir + ": too few draw-step samples in history.csv");
+  if (t.size() < 12) throw InputError(r.dir + ": too few draw-step samples in " + kHistoryFile);
   // Chapters 3-4: mean of the last third of step 3.
   const size_t n = t.size(), i3 = n - n / 3;
   double s = 0, s2 = 0;
@@ -197,14 +188,13 @@ void reduce(DrawBendResult& r) {
   r.F_out_regression = sf / m + slope * (t.back() - st / m);
   // Contact map at the end of the draw, as angle round the pin from the inlet
   // tangent point (top of the pin) and position across the width.
-  r.map_file = last_map(dir).string();
-  const CsvTable cm = read_csv(r.map_file);
-  for (const auto& row : cm.rows) {
+  r.map_file = run_output::last_contact_map(dir.string(), 0);
+  for (const auto& row : run_output::read_contact_map(r.map_file).rows) {
     MapNode q;
-    q.angle_deg = std::atan2(cm.number(row, "x_mm"), cm.number(row, "z_mm")) * 180.0 / M_PI;
-    q.y = cm.number(row, "y0_mm");  // rows are rows of the mesh: the reference y
-    q.pressure = cm.number(row, "pressure_MPa");
-    q.area = cm.number(row, "area_mm2");
+    q.angle_deg = std::atan2(row.x, row.z) * 180.0 / M_PI;
+    q.y = row.y0;  // rows are rows of the mesh: the reference y
+    q.pressure = row.pressure;
+    q.area = row.area;
     r.map.push_back(q);
   }
   const CsvTable sum = read_csv((dir / "summary.csv").string());
@@ -232,14 +222,14 @@ analysis::PressureMap DrawBendResult::pressure_map(const std::string& label) con
   return m;
 }
 
-std::vector<std::pair<double, double>> DrawBendResult::draw_series(const std::string& column, double sign) const {
+std::vector<std::pair<double, double>> DrawBendResult::draw_series(Signal column, double sign) const {
   std::vector<std::pair<double, double>> out;
   double t0 = -1;
   for (const auto& row : history.rows)
-    if (history.text(row, "step") == "draw") {
-      const double t = history.number(row, "time_s");
+    if (history.text(row, signal_name(Signal::step)) == "draw") {
+      const double t = history.number(row, signal_name(Signal::time));
       if (t0 < 0) t0 = t;
-      out.push_back({t - t0, sign * history.number(row, column)});
+      out.push_back({t - t0, sign * history.number(row, signal_name(column))});
     }
   return out;
 }
@@ -252,13 +242,13 @@ std::vector<std::pair<double, double>> DrawBendResult::wrap_strain(double fracti
   double x0 = NAN;
   std::vector<std::pair<double, const CsvRow*>> draw;  // (slide, row)
   for (const auto& row : h.rows)
-    if (h.text(row, "step") == "draw") {
-      const double x = h.number(row, "inlet_x_mm");
+    if (h.text(row, signal_name(Signal::step)) == "draw") {
+      const double x = h.number(row, signal_name(Signal::inlet_x));
       if (std::isnan(x0)) x0 = x;
       draw.push_back({x - x0, &row});
     }
   for (int k = 0;; ++k) {
-    const std::string col = "eps_mid_" + std::to_string(k);
+    const std::string col = mid_wrap_strain(k);
     if (std::find(h.header.begin(), h.header.end(), col) == h.header.end()) break;
     const double s = k * step + shift;
     // The section's strain when the slide reaches s (linear between samples).

@@ -20,8 +20,11 @@
 
 #include "analysis/new_method.hpp"
 #include "core/csv.hpp"
+#include "core/run_output.hpp"
 
 namespace drawbend::sim {
+
+using run_output::Signal;  // the history signals of a draw-bend run
 
 struct DrawBendSpec {
   std::string name = "drawbend";
@@ -81,9 +84,9 @@ struct DrawBendResult {
   double tension_rise() const { return F_out - F_back; }
   /// The map as the new method needs it (nodal pressure and area, half model).
   analysis::PressureMap pressure_map(const std::string& label) const;
-  /// A history column over the draw step: (time since the draw began [s],
-  /// sign x value), e.g. draw_series("outlet_force_N", -1) for F_Y [N].
-  std::vector<std::pair<double, double>> draw_series(const std::string& column, double sign = 1) const;
+  /// A history signal over the draw step: (time since the draw began [s],
+  /// sign x value), e.g. draw_series(Signal::outlet_force, -1) for F_Y [N].
+  std::vector<std::pair<double, double>> draw_series(run_output::Signal column, double sign = 1) const;
   /// Average contact pressure over the nodes in contact [MPa] (area weighted).
   double mean_pressure() const;
   /// Outside-surface strain at a point of the wrap against the slide in the

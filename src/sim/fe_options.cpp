@@ -2,13 +2,19 @@
 
 namespace drawbend::sim {
 
-void add_fe_options(Options& o, DrawBendSpec& base, int& run_fe, int& reuse_runs) {
-  base.element_length = 1.0;
-  base.across = 2;
-  base.through = 4;
-  base.mass_scaling = 1e4;
-  o.add(run_fe, "fe", "run the finite-element part (1) or not (0)");
-  o.add(reuse_runs, "reuse-runs", "reuse runs whose deck is unchanged (1), for development only");
+double mass_scaling_for_speed(double at_100, double v) { return at_100 * (100.0 / v) * (100.0 / v); }
+
+void set_quick_mesh(DrawBendSpec& s) {
+  s.element_length = 1.0;
+  s.across = 2;
+  s.through = 4;
+  s.mass_scaling = kQuickMassScaling;
+}
+
+void add_fe_options(Options& o, DrawBendSpec& base, bool& run_fe, bool& reuse_runs) {
+  set_quick_mesh(base);
+  o.add(run_fe, "fe", "run the finite-element part");
+  o.add(reuse_runs, "reuse-runs", "reuse runs whose deck is unchanged, for development only");
   o.add(base.element_length, "fe-element-length", "element length along the strip in the bend zone [mm]");
   o.add(base.across, "fe-across", "elements across the half width");
   o.add(base.through, "fe-through", "elements through the thickness");

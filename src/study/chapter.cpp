@@ -130,7 +130,7 @@ int Chapter::finish() {
   return failed > 0 && !allow_failures_ ? 1 : 0;
 }
 
-int run_chapter(Chapter& ch, int argc, char** argv, void (*body)(Chapter&)) {
+int run_chapter(Chapter& ch, int argc, char** argv, const std::function<void(Chapter&)>& body) {
   try {
     if (!ch.parse(argc, argv)) return 0;
     body(ch);

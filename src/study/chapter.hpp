@@ -77,7 +77,9 @@ class Chapter {
 };
 
 /// Run a chapter's body with uniform error handling: input errors print one
-/// clear message and return 2; other exceptions return 3.
-int run_chapter(Chapter& ch, int argc, char** argv, void (*body)(Chapter&));
+/// clear message and return 2; other exceptions return 3.  The body is a
+/// closure over the chapter's options struct (registered on ch.options()
+/// before the call), so a chapter needs no file-scope option variables.
+int run_chapter(Chapter& ch, int argc, char** argv, const std::function<void(Chapter&)>& body);
 
 }  // namespace drawbend::study

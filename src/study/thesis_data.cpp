@@ -70,27 +70,6 @@ const FitEntry& find_fit(const std::vector<FitEntry>& fits, const std::string& d
   throw std::out_of_range("no fit for " + dir + " " + fmt(speed) + " mm/s, " + fmt(pin) + " mm pin");
 }
 
-analysis::StribeckParams load_stribeck(const std::string& path) {
-  const CsvTable t = read_csv(path);
-  analysis::StribeckParams s;
-  int seen = 0;
-  for (const auto& r : t.rows) {
-    const std::string& name = t.text(r, "parameter");
-    const double v = t.number(r, "value");
-    if (name == "mu_BL") s.mu_BL = v;
-    else if (name == "mu_EHL") s.mu_EHL = v;
-    else if (name == "L_BL") s.L_BL = v;
-    else if (name == "L_EHL") s.L_EHL = v;
-    else if (name == "Ra") s.Ra_um = v;
-    else if (name == "eta") s.eta_Pa_s = v;
-    else throw InputError(t.where(r, "parameter") + ": unknown Stribeck parameter '" + name + "'");
-    ++seen;
-  }
-  if (seen != 6) throw InputError(path + ": expected the 6 Stribeck parameters, found " + std::to_string(seen));
-  s.validate(path);
-  return s;
-}
-
 std::vector<CaseValue> load_cases(const std::string& path, const std::string& value_column) {
   const CsvTable t = read_csv(path);
   std::vector<CaseValue> out;

@@ -40,7 +40,7 @@ std::vector<FitEntry> load_fits(const std::string& path, const std::string& sour
 const FitEntry& find_fit(const std::vector<FitEntry>& fits, const std::string& direction, double speed, double pin);
 
 /// Tables 3.1 / 3.3 (parameter,value,unit).
-analysis::StribeckParams load_stribeck(const std::string& path);
+using analysis::load_stribeck;  // analysis/stribeck.hpp
 
 /// A row of a per-case table keyed by direction, speed and pin (Tables 5.14, 5.15, 5.17, 5.18).
 struct CaseValue {

@@ -91,8 +91,9 @@ struct Block {
   ElementView view() {
     ElementView v;
     v.hex = hex.data();
-    v.x = x.data(), v.y = y.data(), v.z = z.data();
-    v.vx = vx.data(), v.vy = vy.data(), v.vz = vz.data();
+    v.nodes.n = static_cast<int>(x.size());
+    v.nodes.x = x.data(), v.nodes.y = y.data(), v.nodes.z = z.data();
+    v.nodes.vx = vx.data(), v.nodes.vy = vy.data(), v.nodes.vz = vz.data();
     v.sig = sig.data(), v.state = state.data(), v.hgq = hgq.data(), v.hg_ratio = ratio.data();
     v.corner = corner.data(), v.ie_inc = ie.data(), v.hg_inc = hg.data(), v.dt_elem = dt.data();
     v.mass_factor = mf.data();

@@ -14,6 +14,11 @@
 //  - validate(): a surface whose speed nodes are out of order (v_min > v_max),
 //    whose pressure nodes coincide, or with a NaN nodal value is refused; the
 //    default domain (p 0-80 MPa, v 6.35-101.6 mm/s) is accepted.
+//  - ellipse_mu (Sec. 6.4, Fig. 6.5) with mu_RD = 0.1, mu_TD = 0.2: RD (c = 1,
+//    s = 0) gives 0.1 and TD (c = 0, s = 1) gives 0.2 (a b / sqrt(b^2) rounds the
+//    products: relative 1e-14, a few ulps); at 45 deg
+//    0.02 / sqrt((0.01 + 0.04)/2) = 0.02/sqrt(0.025) = 0.126491106...; both
+//    coefficients zero give 0 (not 0/0).
 #define BOOST_TEST_MODULE friction_surface
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -91,4 +96,14 @@ BOOST_AUTO_TEST_CASE(node_ordering_is_validated) {
   FrictionSurface nan_node;
   nan_node.mu[4] = NAN;
   BOOST_CHECK_THROW(nan_node.validate(), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(anisotropic_ellipse) {
+  // Tolerance 1e-14: a few ulps of the products and the sqrt (the formula is not exact in binary).
+  BOOST_TEST(ellipse_mu(0.1, 0.2, 1.0, 0.0) == 0.1, tt::tolerance(1e-14));
+  BOOST_TEST(ellipse_mu(0.1, 0.2, 0.0, 1.0) == 0.2, tt::tolerance(1e-14));
+  BOOST_TEST(ellipse_mu(0.1, 0.2, 1.0, 0.0) != 0.2, tt::tolerance(1e-14));  // RD is not TD
+  const double h = std::sqrt(0.5);
+  BOOST_TEST(ellipse_mu(0.1, 0.2, h, h) == 0.02 / std::sqrt(0.025), tt::tolerance(1e-14));
+  BOOST_TEST(ellipse_mu(0.0, 0.0, h, h) == 0.0);
 }

@@ -16,11 +16,16 @@
 //    lab_reading): the loop adds a generic effect of that column (linear or
 //    saturating) with its size, SE and sign (mu increases with run order in
 //    the generator, so the sign is "increases").
+//  - FastMod (the shuffle's x % k without division) equals x % k exactly for
+//    k = 2..1000 on 0, 1, k-1, k, 2^64-1, 2^63, the multiples of k next to
+//    2^64 and 200 mt19937_64 draws per k.
 #define BOOST_TEST_MODULE loop_residuals
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <random>
 
 #include "loop/candidates.hpp"
+#include "loop/fast_mod.hpp"
 #include "loop/loop.hpp"
 #include "loop/synth.hpp"
 
@@ -141,4 +146,18 @@ BOOST_AUTO_TEST_CASE(unknown_column_gets_generic_effect) {
   BOOST_TEST(r.steps[0].params[0].value > 0);
   BOOST_TEST(r.steps[0].params[0].se > 0);
   BOOST_TEST(r.steps[0].sign.find("increases") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(fast_mod_is_exact) {
+  const std::size_t kmax = 1000;
+  const FastMod mod(kmax);
+  std::mt19937_64 rng(12345);
+  std::size_t bad = 0;
+  for (std::uint64_t k = 2; k <= kmax; ++k) {
+    const std::uint64_t top = ~std::uint64_t{0};
+    std::vector<std::uint64_t> xs = {0, 1, k - 1, k, top, std::uint64_t{1} << 63, top - top % k, top - top % k - 1};
+    for (int j = 0; j < 200; ++j) xs.push_back(rng());
+    for (std::uint64_t x : xs) bad += mod(x, k) != x % k;
+  }
+  BOOST_TEST(bad == 0u);
 }

@@ -6,6 +6,9 @@
 //    the half model (500 N, 600 N on w/2 = 10 mm) gives the same 5.5 MPa.
 //  - Eq. (2.3): F_y = F_x exp(mu Theta) + F_B recovers mu exactly (mu = 0.1, Theta = pi/2).
 //  - Eq. (5.1): F_fric = F_back (exp(mu pi/2) - 1) recovers mu.
+//  - friction_from_mu (Eq. 5.1 solved for F_fric): mu = ln 2 / (pi/2) doubles the
+//    tension, so F_back = 300 N gives F_fric = 300 N; mu = 0 gives exactly 0 N;
+//    mu_from_friction(friction_from_mu(0.12, 800, pi/2), 800, pi/2) = 0.12.
 #define BOOST_TEST_MODULE rope
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -35,4 +38,11 @@ BOOST_AUTO_TEST_CASE(mu_roundtrip) {
   BOOST_TEST(mu_from_friction(Ffric, Fx, th) == mu, tt::tolerance(1e-12));
   BOOST_CHECK_THROW(mu_rope(1000, 50, 80, th), std::domain_error);
   BOOST_CHECK_THROW(mu_from_friction(10, 0, th), std::domain_error);
+}
+
+BOOST_AUTO_TEST_CASE(friction_from_mu_inverts_eq_5_1) {
+  // Tolerances: a few ulps of exp and log (relative 1e-12).
+  BOOST_TEST(friction_from_mu(std::log(2.0) / (M_PI / 2), 300, M_PI / 2) == 300.0, tt::tolerance(1e-12));
+  BOOST_TEST(friction_from_mu(0.0, 300, M_PI / 2) == 0.0);
+  BOOST_TEST(mu_from_friction(friction_from_mu(0.12, 800, M_PI / 2), 800, M_PI / 2) == 0.12, tt::tolerance(1e-12));
 }

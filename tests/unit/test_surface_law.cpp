@@ -152,7 +152,7 @@ static contact::Vec3 moved(const std::function<contact::Vec3(const contact::Vec3
   m.y = {0, 0, 1, 1};
   m.z = {0, 0, 0, 0};
   m.face_sets["f"] = {{0, 1, 2, 3}};
-  const auto refs = contact::texture_refs(m, "f", {0, 1, 2, 3}, rd);
+  const auto refs = contact::texture_refs(m.face_set("f"), m.x.data(), m.y.data(), m.z.data(), {0, 1, 2, 3}, rd, "f");
   std::vector<double> x(4), y(4), z(4);
   for (int i = 0; i < 4; ++i) {
     const auto p = f({m.x[i], m.y[i], m.z[i]});
@@ -160,7 +160,7 @@ static contact::Vec3 moved(const std::function<contact::Vec3(const contact::Vec3
     y[i] = p[1];
     z[i] = p[2];
   }
-  const auto e = contact::texture_axis(refs[2], x, y, z);
+  const auto e = contact::texture_axis(refs[2], x.data(), y.data(), z.data());
   BOOST_TEST_MESSAGE("e1 = (" << e[0] << ", " << e[1] << ", " << e[2] << ")");
   return e;
 }

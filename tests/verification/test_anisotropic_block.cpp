@@ -12,36 +12,32 @@
 // along e2.  (This is the radial-return answer; an associated flow rule would
 // instead put the slip along the ellipse normal.)
 //
-// Problem: a 1 x 1 x 1 mm block (4 x 4 x 4 elements) is first turned rigidly
-// in-plane by theta about its vertical axis (frictionless step, no load), then
-// pressed by 10 N (10 MPa) and slid at 10 mm/s by velocities on all nodes
-// along the GLOBAL direction psi.  Friction: the mu(p, v) surface law with
-// constant nodal values mu_RD = 0.2, mu_TD = 0.1 (so mu1, mu2 are exact),
-// texture_axis = x.
-//   1. theta = 0,  psi = 30 deg, fixed:        mu(30 deg)  = 0.15119
-//   2. theta = 60, psi = 0,      fixed:        phi = 0   -> 0.2 along x
-//   3. theta = 60, psi = 0,      corotational: phi = -60 -> mu = 0.11094, along x
-//   4. theta = 60, psi = 60,     corotational: phi = 0   -> 0.2 along 60 deg
-// Checked: |F_t|/F_n within 1 % of mu(phi) and the force direction within
-// 1 deg of psi (explicit dynamics and penalty contact, as in the Coulomb block).
+// The problems with fixed material axes (a J2 block turned by theta, then
+// slid along the global direction psi, texture fixed or corotational) are
+// decks run by `verify`: decks/ellipse_*.toml, spec.toml entries ellipse_*
+// (mu(30 deg) = 0.15119 unturned; 0.2 turned with fixed axes; 0.11094 turned
+// with corotational axes across; 0.2 turned along the turned RD).
 //
 // One sheet frame (decks/block_rd30.toml): the rolling direction at 30 deg to
 // x is stated once in [sheet]; the block is Hill'48 with a back stress.
 // Friction and material must both see RD at 30 deg, and both must turn with
 // the block:
-//   5. theta = 0,  psi = 0,  fixed:        phi = -30 -> mu = 0.15119 along x;
+//   a. theta = 0,  psi = 0,  fixed:        phi = -30 -> mu = 0.15119 along x;
 //                                          material RD at 30 deg at every point
-//   6. theta = 60, psi = 90, corotational: phi = 0 -> 0.2 along y;
+//   b. theta = 60, psi = 0,  corotational: phi = -90 -> 0.1 along x;
 //                                          material RD at 90 deg at every point
-//   7. theta = 60, psi = 0,  corotational: phi = -90 -> 0.1 along x
-// The material axes: within 0.5 deg of 30 + theta (as the block's turn), ND
+// (theta = 60, psi = 90, corotational, phi = 0 -> 0.2 along y, is the deck as
+// written, run by `verify`: spec.toml entries block_rd30.*; its material axes
+// at 90 deg are those of case b.)
+// Checked: |F_t|/F_n within 1 % of mu(phi) and the force direction within
+// 1 deg of psi (explicit dynamics and penalty contact, as the Coulomb block);
+// the material axes within 0.5 deg of 30 + theta (as the block's turn), ND
 // along z within 1e-6.
 #define BOOST_TEST_MODULE anisotropic_block
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
 #include "fixtures.hpp"
-#include "friction/surface_law.hpp"
 #include "io/deck.hpp"
 #include "material/combined_plasticity.hpp"
 
@@ -50,58 +46,6 @@ using namespace verify;
 static double mu_phi(double mu1, double mu2, double phi) {
   return mu1 * mu2 / std::sqrt(mu2 * mu2 * std::cos(phi) * std::cos(phi) + mu1 * mu1 * std::sin(phi) * std::sin(phi));
 }
-
-static void slide(double theta_deg, double psi_deg, bool corotational) {
-  fe::Model m = block(1, 1, 1, 4, 4, 4, j2_linear(100, 500));
-  m.mass_scaling = 100;
-  analysis::FrictionSurface rd, td;
-  rd.mu.fill(0.2);
-  td.mu.fill(0.1);
-  auto& cp = m.add_rigid_contact("floor", {}, "zmin", std::make_shared<friction::SurfaceLaw>(rd, td, 100));
-  m.rolling_direction = {1, 0, 0};
-  cp.texture = corotational ? fe::ContactPair::Texture::corotational : fe::ContactPair::Texture::fixed;
-  const double th = theta_deg * M_PI / 180, psi = psi_deg * M_PI / 180;
-  fe::Step turn;  // trapezoidal spin: total angle = w * 0.75 T
-  turn.duration = 2e-3;
-  turn.friction = false;
-  const double w = th / (0.75 * turn.duration);
-  turn.rotations.push_back({"all", {0.5, 0.5, 0}, {0, 0, 1}, {{0, 5e-4, 1.5e-3, 2e-3}, {0, w, w, 0}}});
-  fe::Step press;
-  press.duration = 2e-3;
-  press.damping = 2e4;
-  press.forces.push_back({"zmax", {0, 0, -1}, {{0.0, 1e-3}, {0.0, 10.0}}});
-  fe::Step go;
-  go.duration = 3e-3;
-  go.forces.push_back({"zmax", {0, 0, -1}, fe::History::constant(10.0)});
-  go.velocities.push_back({"all", {1, 0, 0}, {{0.0, 5e-4}, {0.0, 10.0 * std::cos(psi)}}});
-  go.velocities.push_back({"all", {0, 1, 0}, {{0.0, 5e-4}, {0.0, 10.0 * std::sin(psi)}}});
-  m.steps = {turn, press, go};
-  fe::Solver s(m);
-  s.run();
-  const auto F = s.tool_force("floor");  // force of the block on the floor
-  const double ft = std::hypot(F[0], F[1]), fn = std::abs(F[2]);
-  const double dir = std::atan2(F[1], F[0]) * 180 / M_PI;
-  const double phi = corotational ? psi - th : psi;
-  const double expect = mu_phi(0.2, 0.1, phi);
-  // The block did turn by theta (a corner's position).
-  int a = 0, b = 0;  // the nodes at (0, 0, 0) and (1, 0, 0) in the reference configuration: the bottom RD edge
-  for (int i = 0; i < m.mesh.num_nodes(); ++i) {
-    if (std::hypot(m.mesh.x[i], m.mesh.y[i]) + std::abs(m.mesh.z[i]) < 1e-9) a = i;
-    if (std::hypot(m.mesh.x[i] - 1.0, m.mesh.y[i]) + std::abs(m.mesh.z[i]) < 1e-9) b = i;
-  }
-  const double turned = std::atan2(s.y()[b] - s.y()[a], s.x()[b] - s.x()[a]) * 180 / M_PI;
-  BOOST_TEST_MESSAGE("theta " << theta_deg << ", psi " << psi_deg << (corotational ? ", corotational" : ", fixed")
-                              << ": F_t/F_n = " << ft / fn << " (closed form " << expect << "), direction " << dir
-                              << " deg, block turned " << turned << " deg");
-  BOOST_TEST(std::abs(turned - theta_deg) < 0.5);
-  BOOST_TEST(std::abs(ft / fn - expect) < 0.01 * expect);
-  BOOST_TEST(std::abs(dir - psi_deg) < 1.0);
-}
-
-BOOST_AUTO_TEST_CASE(fixed_axes_30_deg) { slide(0, 30, false); }
-BOOST_AUTO_TEST_CASE(rotated_block_fixed_axes) { slide(60, 0, false); }
-BOOST_AUTO_TEST_CASE(rotated_block_corotational_axes) { slide(60, 0, true); }
-BOOST_AUTO_TEST_CASE(rotated_block_corotational_along_material_rd) { slide(60, 60, true); }
 
 // The deck with RD at 30 deg: turn by theta, slide along psi (global), texture fixed or corotational.
 static void sheet_frame_case(double theta_deg, double psi_deg, bool corotational) {
@@ -145,5 +89,4 @@ static void sheet_frame_case(double theta_deg, double psi_deg, bool corotational
 }
 
 BOOST_AUTO_TEST_CASE(sheet_frame_rd30_fixed) { sheet_frame_case(0, 0, false); }
-BOOST_AUTO_TEST_CASE(sheet_frame_rd30_turned_along_rd) { sheet_frame_case(60, 90, true); }
 BOOST_AUTO_TEST_CASE(sheet_frame_rd30_turned_across_rd) { sheet_frame_case(60, 0, true); }

@@ -1,0 +1,304 @@
+// Chapter 8 step 5: the cup (thesis Sec. 6.6) by the same loop.
+//
+// (a) Why is the punch force at 15 mm high?  Baseline: the Chapter 6 model
+//     (src/sim/cup_case.hpp: isotropic J2 on the Table 5.1 RD curve, Table 6.1
+//     mu(p, v), 20 kN blank holder, ASSUMED 5 mm punch and die radii).
+//     Candidates, tried one after another on top of what was accepted:
+//       - die corner radius 3 / 7.5 / 10 mm and punch corner radius 3 / 8 mm
+//         (the tool drawing, Fig. 6.12, is missing: a plausible range);
+//       - the published Voce flow curve (Hou 2020) instead of the table;
+//       - split combined hardening with the beta the bending-force loop chose
+//         on the 12.7 mm pin (not fitted on the cup);
+//       - Hill'48 with the published r-values (not fitted).
+//     A candidate's member is chosen on case 1 (6.4 mm/s) and judged on
+//     case 9 (77.1 mm/s, held out); it is accepted if the held-out error
+//     falls by more than min_gain.  Case 9 differs from case 1 only in speed,
+//     so this hold-out guards against fitting noise, not against a wrong
+//     geometry: the page says so.  Frictionless runs bound friction's share.
+// (b) The 2 x 2 attribution at 21 mm (Sec. 6.6.3): friction anisotropic
+//     (Table 6.1 RD/TD) or isotropic (the RD/TD mean at every node) crossed
+//     with von Mises or Hill'48 (published r-values, same flow curve), on the
+//     final model's tools.  Per run: the largest plastic strain within 15 deg
+//     of RD and of TD (the two bands are mirror images of the disk mesh), its
+//     angle, the RD/TD cup sizes.  The isotropic/von Mises run measures the
+//     mesh's own asymmetry (ideally none): the noise floor of the attribution.
+// Forces for the full blank [kN]; lengths mm; speeds mm/s.
+#include <cmath>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+#include "ch8_steps.hpp"
+#include "sim/case_pool.hpp"
+#include "sim/cup_case.hpp"
+
+namespace ch8 {
+
+using namespace drawbend;
+
+namespace {
+
+/// A cup model: tool radii and a material built from named parts.
+struct CupModel {
+  std::string label = "Chapter 6 model";
+  double punch_r = NAN, die_r = NAN;  ///< NaN: the deck's assumed 5 mm
+  std::string voce;                   ///< inline Voce table, empty: the deck's tabulated curve
+  double beta = -1;                   ///< split kinematic fraction, < 0: isotropic hardening
+  std::string hill;                   ///< inline Hill'48 table, empty: von Mises
+  std::string friction;               ///< sim::CupSpec::friction
+  std::string material() const {
+    if (voce.empty() && beta < 0 && hill.empty()) return "";
+    std::string m = "{ type = \"" + std::string(!hill.empty() ? "hill48" : beta >= 0 ? "j2_combined" : "j2") + "\"";
+    if (!voce.empty()) m += ", voce = " + voce;
+    if (beta >= 0) m += ", kinematic = { beta = " + fmt_shortest(beta) + " }";
+    if (!hill.empty()) m += ", hill48 = " + hill;
+    return m + " }";
+  }
+};
+
+struct CupSetup {
+  std::string deck;
+  double v1 = 0, v9 = 0, e1 = 0, e9 = 0, d_eval = 15, d_fail = 21, max_stroke = 17;
+  long cycles_per_max = 30000;  ///< cycles for the Chapter 6 stroke (17 mm)
+  int refine = 1;
+};
+
+sim::CupSpec spec_of(const CupSetup& s, const CupModel& m, double speed, double stroke) {
+  sim::CupSpec c;
+  c.deck = s.deck, c.speed = speed, c.stroke = stroke, c.refine = s.refine;
+  c.cycles = static_cast<long>(s.cycles_per_max * stroke / s.max_stroke);
+  c.punch_radius = m.punch_r, c.die_radius = m.die_r;
+  c.material = m.material();
+  c.friction = m.friction;
+  return c;
+}
+
+std::string inline_table(const std::string& file, const std::string& key) {
+  const toml::table t = toml::parse_file(file);
+  const auto* n = t["material"][key].as_table();
+  if (!n) throw InputError(file + ": no [material] " + key + " table");
+  std::ostringstream o;
+  o << *n;
+  return o.str();
+}
+
+}  // namespace
+
+void cup_loop(Chapter& c, const Config& cfg, const sim::ModelLoopResult& bending) {
+  CupSetup s;
+  s.deck = c.data("cases/cup_draw.toml");
+  const CsvTable t65 = read_csv(c.data("thesis/table_6_5.csv"));
+  const std::string sc = c.data("thesis/scalars.csv");
+  s.v1 = t65.number(t65.rows.front(), "punch_speed_mm_s");
+  s.v9 = t65.number(t65.rows.back(), "punch_speed_mm_s");
+  s.e1 = study::scalar(sc, "ch6_punch_force_exp_case1").value;
+  s.e9 = study::scalar(sc, "ch6_punch_force_exp_case9").value;
+  s.d_eval = study::scalar(sc, "ch6_punch_force_eval_displacement").value;
+  s.d_fail = study::scalar(sc, "ch6_failure_stroke").value;
+  s.max_stroke = study::scalar(sc, "ch6_max_stroke").value;
+  // The loop runs on Chapter 6's coarse mesh in both tiers (20 runs); the full
+  // tier confirms the final model and runs the attribution on Chapter 6's
+  // refined mesh (elements x 8, 160000 cycles per 17 mm), whose forces are
+  // the ones checked there.
+  s.refine = 1, s.cycles_per_max = 30000;
+  CupSetup fine = s;
+  if (cfg.full_study) fine.refine = 2, fine.cycles_per_max = 160000;
+  const double stroke = s.d_eval + 0.5;  // just past the evaluation point
+  const std::string hill = inline_table(c.data("materials/aa5754_o_hill48_hou2020.toml"), "hill48");
+  const std::string voce = inline_table(c.data("materials/aa5754_o_voce_hou2020.toml"), "voce");
+  double beta = -1;  // the bending loop's choice on the 12.7 mm pin
+  for (const auto& st : bending.steps)
+    if (st.member.rfind("split beta ", 0) == 0) beta = std::stod(st.member.substr(11));
+
+  // Runs side by side in the case pool.
+  auto run = [&](const std::vector<sim::CupSpec>& specs) {
+    std::vector<sim::CupResult> r(specs.size());
+    sim::run_cases(specs.size(), [&](std::size_t k) { r[k] = sim::draw_cup(specs[k]); });
+    return r;
+  };
+  auto f15 = [&](const sim::CupResult& r) { return sim::force_at(r, s.d_eval) / 1000; };
+  int n_runs = 0;
+  double wall = 0;
+  auto account = [&](const std::vector<sim::CupResult>& r) {
+    for (const auto& x : r) ++n_runs, wall += x.wall_seconds;
+  };
+
+  CupModel cur;
+  auto base = run({spec_of(s, cur, s.v1, stroke), spec_of(s, cur, s.v9, stroke)});
+  account(base);
+  double f1 = f15(base[0]), f9 = f15(base[1]);
+  const double base_f1 = f1, base_f9 = f9;
+  auto err = [](double f, double e) { return f / e - 1; };
+
+  auto steps = c.table({"candidate", "members_case1_kN", "chosen", "case1_kN", "case1_err_pct", "case9_kN",
+                        "case9_err_pct", "decision"},
+                       "the cup loop: punch force at " + fmt(s.d_eval) + " mm (full blank, kN); members judged on case 1 "
+                       "(" + fmt(s.v1) + " mm/s), the chosen member on case 9 (" + fmt(s.v9) + " mm/s, held out); measured " +
+                       fmt(s.e1) + " / " + fmt(s.e9) + " kN (Sec. 6.6.2); " + (s.refine > 1 ? "refined" : "coarse") + " mesh");
+  steps.row({"baseline", "", cur.label, fmt_fixed(f1, 2), pct(err(f1, s.e1)), fmt_fixed(f9, 2), pct(err(f9, s.e9)), ""});
+  auto fig = c.table({"step", "model", "case1_kN", "case9_kN"}, "punch force at 15 mm per model of the loop, for the figure");
+  fig.row({"0", "Chapter 6 model", fmt(f1, 5), fmt(f9, 5)});
+  struct Cand {
+    std::string name;
+    std::vector<std::pair<std::string, std::function<void(CupModel&)>>> members;
+  };
+  std::vector<Cand> cands;
+  {
+    Cand d{"die corner radius (ASSUMED 5 mm)", {}};
+    for (double r : {3.0, 7.5, 10.0}) d.members.push_back({"die radius " + fmt(r) + " mm", [r](CupModel& m) { m.die_r = r; }});
+    cands.push_back(d);
+    Cand p{"punch corner radius (ASSUMED 5 mm)", {}};
+    for (double r : {3.0, 8.0}) p.members.push_back({"punch radius " + fmt(r) + " mm", [r](CupModel& m) { m.punch_r = r; }});
+    cands.push_back(p);
+    cands.push_back({"Voce flow curve (Hou 2020)", {{"Voce", [voce](CupModel& m) { m.voce = voce; }}}});
+    if (beta >= 0)
+      cands.push_back({"split combined hardening (beta from the bending loop)",
+                       {{"split beta " + fmt(beta), [beta](CupModel& m) { m.beta = beta; }}}});
+    cands.push_back({"Hill'48 (Hou 2020 r-values)", {{"Hill'48", [hill](CupModel& m) { m.hill = hill; }}}});
+  }
+  int fig_rows = 1;
+  for (const auto& cand : cands) {
+    std::vector<CupModel> ms;
+    std::vector<sim::CupSpec> specs;
+    for (const auto& [name, apply] : cand.members) {
+      CupModel m = cur;
+      apply(m);
+      m.label = (cur.label == "Chapter 6 model" ? "" : cur.label + " + ") + name;
+      ms.push_back(m);
+      specs.push_back(spec_of(s, m, s.v1, stroke));
+    }
+    const auto r = run(specs);
+    account(r);
+    std::size_t best = 0;
+    std::string members;
+    for (std::size_t k = 0; k < r.size(); ++k) {
+      members += (members.empty() ? "" : "; ") + cand.members[k].first + ": " + fmt_fixed(f15(r[k]), 2);
+      if (std::abs(err(f15(r[k]), s.e1)) < std::abs(err(f15(r[best]), s.e1))) best = k;
+    }
+    const auto r9 = run({spec_of(s, ms[best], s.v9, stroke)});
+    account(r9);
+    const double g1 = f15(r[best]), g9 = f15(r9[0]);
+    const double gain = std::abs(err(f9, s.e9)) - std::abs(err(g9, s.e9));
+    const bool accept = gain > cfg.min_gain;
+    steps.row({cand.name, members, cand.members[best].first, fmt_fixed(g1, 2), pct(err(g1, s.e1)), fmt_fixed(g9, 2),
+               pct(err(g9, s.e9)),
+               accept ? "accepted (held-out error falls " + fmt_fixed(100 * gain, 1) + " points)"
+                      : "rejected (held-out error falls " + fmt_fixed(100 * gain, 1) + " points, needs > " +
+                            fmt_fixed(100 * cfg.min_gain, 0) + ")"});
+    fig.row({std::to_string(fig_rows++), cand.members[best].first + (accept ? " (accepted)" : " (rejected)"), fmt(g1, 5),
+             fmt(g9, 5)});
+    if (accept) cur = ms[best], f1 = g1, f9 = g9;
+  }
+  // Friction's share: the final model without friction (a bound, not a candidate).
+  CupModel nofric = cur;
+  nofric.friction = "none";
+  const auto rn = run({spec_of(s, nofric, s.v1, stroke)});
+  account(rn);
+  steps.row({"bound: no friction", "", cur.label == "Chapter 6 model" ? "frictionless" : cur.label + ", frictionless",
+             fmt_fixed(f15(rn[0]), 2), pct(err(f15(rn[0]), s.e1)), "", "", "not a candidate: friction's share of the force"});
+  // The final model on the checked mesh (the full tier: refined).
+  double c1 = f1, c9 = f9;
+  if (fine.refine != s.refine) {
+    // (The baseline on this mesh is Chapter 6's full tier: not run again here.)
+    const auto rf = run({spec_of(fine, cur, s.v1, stroke), spec_of(fine, cur, s.v9, stroke)});
+    account(rf);
+    c1 = f15(rf[0]), c9 = f15(rf[1]);
+    steps.row({"confirm: refined mesh", "", cur.label, fmt_fixed(c1, 2), pct(err(c1, s.e1)), fmt_fixed(c9, 2),
+               pct(err(c9, s.e9)), "the final model on the checked mesh"});
+  }
+  c.save(steps, "cup_loop_steps");
+  c.save(fig, "cup_figure");
+  c.plot("cup_loop", "cup_loop", {{"datafile", c.out("tables/cup_figure.csv")}, {"e1", fmt(s.e1)}, {"e9", fmt(s.e9)},
+                                  {"v1", fmt(s.v1)}, {"v9", fmt(s.v9)}});
+  const std::string tier = fine.refine > 1 ? " (refined mesh)" : " (coarse mesh)";
+  c.value("cup_final_model", cur.label);
+  c.value("cup_check_mesh", fine.refine > 1 ? "refined mesh (the full tier)" : "coarse mesh (the quick tier)");
+  c.value("cup_check_f1", fmt_fixed(c1, 2), "kN");
+  c.value("cup_check_f9", fmt_fixed(c9, 2), "kN");
+  c.value("cup_check_err1", pct(err(c1, s.e1)), "%");
+  c.value("cup_check_err9", pct(err(c9, s.e9)), "%");
+  c.value("cup_base_f1", fmt_fixed(base_f1, 2), "kN");
+  c.value("cup_base_f9", fmt_fixed(base_f9, 2), "kN");
+  c.value("cup_base_err1", pct(err(base_f1, s.e1)), "%");
+  c.value("cup_base_err9", pct(err(base_f9, s.e9)), "%");
+  c.value("cup_final_f1", fmt_fixed(f1, 2), "kN");
+  c.value("cup_final_f9", fmt_fixed(f9, 2), "kN");
+  c.value("cup_final_err1", pct(err(f1, s.e1)), "%");
+  c.value("cup_final_err9", pct(err(f9, s.e9)), "%");
+  c.value("cup_nofric_f1", fmt_fixed(f15(rn[0]), 2), "kN");
+  c.value("cup_friction_share", fmt_fixed(100 * (1 - f15(rn[0]) / f1), 0), "%");
+  const std::string why = "10 % of the measured force: the accuracy goal for the cup (issue 23); the thesis's own model "
+                          "came within 3 %";
+  c.checks().agree(study::Kind::measured, "ch8.cup.f15.case1", "punch force at 15 mm, case 1, final cup model" + tier, s.e1,
+                   c1, 0.10 * s.e1, "kN", why + "; the radii are chosen on this case");
+  c.checks().agree(study::Kind::measured, "ch8.cup.f15.case9", "punch force at 15 mm, case 9, final cup model" + tier, s.e9,
+                   c9, 0.10 * s.e9, "kN", why + "; held out (differs from case 1 only in speed)");
+
+  // (b) The 2 x 2 attribution at 21 mm, case 1, on the final model's tools.
+  const std::string iso_nodes = c.out("tables/table_6_1_isotropic.csv");
+  sim::write_isotropic_nodes(c.data("thesis/table_6_1.csv"), iso_nodes);
+  std::vector<CupModel> grid;
+  for (int fr = 0; fr < 2; ++fr)
+    for (int mat = 0; mat < 2; ++mat) {
+      CupModel m;
+      m.punch_r = cur.punch_r, m.die_r = cur.die_r;
+      m.friction = fr ? "" : iso_nodes;
+      m.hill = mat ? hill : "";
+      m.label = std::string(fr ? "anisotropic friction (Table 6.1)" : "isotropic friction (RD/TD mean)") + ", " +
+                (mat ? "Hill'48" : "von Mises");
+      grid.push_back(m);
+    }
+  std::vector<sim::CupSpec> gs;
+  for (const auto& m : grid) gs.push_back(spec_of(fine, m, s.v1, s.d_fail));
+  const auto ga = run(gs);
+  account(ga);
+  auto at = c.table({"friction", "material", "band_RD", "band_TD", "RD_minus_TD", "max_strain", "at_angle_from_RD_deg",
+                     "cup_size_RD_mm", "cup_size_TD_mm", "RD_minus_TD_size_mm", "hourglass_over_internal"},
+                    "2 x 2 attribution at " + fmt(s.d_fail) + " mm, case 1" + tier + ": largest plastic strain within 15 deg "
+                    "of RD and of TD, its angle, and the cup sizes along RD and TD (flange outer diameter, mm)");
+  std::vector<double> d(4), dsize(4);
+  for (std::size_t k = 0; k < 4; ++k) {
+    const auto& r = ga[k];
+    d[k] = r.band_rd - r.band_td;
+    dsize[k] = r.size_rd - r.size_td;
+    at.row({k >= 2 ? "anisotropic" : "isotropic", k % 2 ? "Hill'48" : "von Mises", fmt_fixed(r.band_rd, 4),
+            fmt_fixed(r.band_td, 4), fmt_fixed(d[k], 4), fmt_fixed(r.max_strain, 4), fmt_fixed(r.max_strain_angle, 1),
+            fmt_fixed(r.size_rd, 2), fmt_fixed(r.size_td, 2), fmt_fixed(dsize[k], 2), fmt(r.hourglass_ratio, 3)});
+  }
+  c.save(at, "cup_attribution");
+  // Each factor alone and both together, against the isotropic/von Mises run,
+  // on RD band minus TD band (> 0: the peak is along RD, where the cup failed).
+  const double fric = d[2] - d[0], mat = d[1] - d[0], both = d[3] - d[0];
+  const double noise = std::abs(d[0]);  // isotropic friction and von Mises: 0 by mirror symmetry
+  c.value("attr_fric", fmt(fric, 3));
+  c.value("attr_mat", fmt(mat, 3));
+  c.value("attr_both", fmt(both, 3));
+  c.value("attr_noise", fmt(noise, 2));
+  c.value("attr_size_fric", fmt_fixed(dsize[2] - dsize[0], 2), "mm");
+  c.value("attr_size_mat", fmt_fixed(dsize[1] - dsize[0], 2), "mm");
+  c.value("attr_size_both", fmt_fixed(dsize[3] - dsize[0], 2), "mm");
+  // Clear when one factor alone puts the peak in RD by more than three times
+  // both the other factor's shift and the mesh's own asymmetry.
+  auto clear = [&](double a, double b) { return a > 3 * std::abs(b) && a > 3 * noise; };
+  std::string answer = clear(fric, mat)  ? "frictional anisotropy: alone it moves the peak towards RD by " + fmt(fric, 2) +
+                                               ", more than three times the material's shift (" + fmt(mat, 2) + ")"
+                       : clear(mat, fric) ? "material anisotropy: alone it moves the peak towards RD by " + fmt(mat, 2) +
+                                               ", more than three times the friction's shift (" + fmt(fric, 2) + ")"
+                                          : "neither factor alone clearly (friction " + fmt(fric, 2) + ", material " +
+                                                fmt(mat, 2) + ")";
+  answer += "; with both, the peak lies along " + std::string(both > 0 ? "RD" : "TD") + " (" + fmt(both, 2) + ")";
+  c.value("attr_answer", answer);
+  // The mesh is a mirror image about 45 deg: with isotropic friction and material the
+  // two bands must agree.  Tolerance: 2 % of the band strain, the relative size of
+  // the loading's only asymmetry left (roundoff and the order of the node sums).
+  const double band0 = 0.5 * (ga[0].band_rd + ga[0].band_td);
+  c.checks().agree(study::Kind::verification, "ch8.cup.attr.symmetry",
+                   "RD band minus TD band, isotropic friction and von Mises at " + fmt(s.d_fail) + " mm" + tier, 0.0, d[0],
+                   0.02 * band0, "-",
+                   "2 % of the band strain: the quarter disk is a mirror image about 45 deg, so only roundoff and the "
+                   "order of node sums may separate the bands");
+  c.value("cup_loop_runs", std::to_string(n_runs));
+  c.value("cup_loop_wall", fmt_fixed(wall, 0), "s");
+}
+
+}  // namespace ch8

@@ -1,0 +1,44 @@
+// `drawbend block-deck [options] [--out deck.toml]`: write the block-sliding
+// deck of Chapter 6's builder (src/sim/block_case.hpp; Sec. 6.5, Fig. 6.7) for
+// any pressure, sliding speed, direction, friction law and mesh, to --out or
+// standard output.  `drawbend run deck.toml --out DIR` runs it; the history
+// columns friction_x_N, friction_y_N and normal_N give mu = F_t / F_N.
+// Units: mm, N, MPa, s.
+#include <string>
+
+#include "cli/deck_out.hpp"
+#include "core/options.hpp"
+#include "sim/block_case.hpp"
+
+namespace drawbend::cli {
+
+int block_deck_command(int argc, char** argv) {
+  sim::BlockSpec s = sim::default_block_spec(DRAWBEND_DATA_DIR);
+  std::string out;
+  Options opt("drawbend block-deck",
+              "Write the block-sliding case deck of Chapter 6 (Sec. 6.5): a cube pressed on a rigid floor and slid "
+              "in the floor plane; the floor's friction is the mu(p, v) surface of Table 6.1 unless --friction "
+              "names another law. Run it with `drawbend run DECK --out DIR`.");
+  opt.add(out, "out", "deck file to write (empty: standard output)");
+  opt.add(s.name, "name", "case name");
+  opt.add(s.pressure, "pressure", "normal pressure on the top face [MPa] (> 0)");
+  opt.add(s.speed, "speed", "sliding speed [mm/s] (> 0)");
+  opt.add(s.direction_deg, "direction", "sliding direction from RD (x) towards TD (y) [deg]");
+  opt.add(s.size, "size", "edge of the cube [mm] (> 0)");
+  opt.add(s.elements, "elements", "elements along each edge (>= 1)");
+  opt.add(s.mass_scaling, "mass-scaling", "uniform mass scaling factor (>= 1)");
+  opt.add(s.penalty, "penalty", "contact penalty scale (> 0)");
+  opt.add(s.friction, "friction",
+          "floor friction as a TOML inline table, e.g. '{ law = \"coulomb\", mu = 0.1 }' (empty: the surface law)");
+  opt.add(s.surface_nodes, "surface-nodes", "the surface law's nine nodal values (CSV, Table 6.1 format)");
+  opt.add(s.interval, "interval", "the surface law's speed-averaging interval [cycles] (>= 1)");
+  opt.add(s.hardening, "hardening", "hardening curve CSV (plastic strain, true stress [MPa])");
+  opt.add(s.press_time, "press-time", "duration of the press step [s]");
+  opt.add(s.press_ramp, "press-ramp", "load ramp of the press step [s] (< --press-time)");
+  opt.add(s.slide_time, "slide-time", "duration of the slide step [s]");
+  opt.add(s.speed_ramp, "speed-ramp", "speed ramp of the slide step [s] (< --slide-time)");
+  if (!opt.parse(argc, argv)) return 0;
+  return write_deck_out(sim::block_deck_text(s), out, "block-deck");
+}
+
+}  // namespace drawbend::cli

@@ -1,0 +1,50 @@
+// `drawbend cup-deck [options]`: write the cup-drawing deck of the chapters'
+// builder (src/sim/cup_case.hpp: quarter model of the thesis's Sec. 6.6 cup,
+// 20 kN blank holder) for any punch speed, stroke, tool radii, material,
+// friction and mesh, to standard output; run it with `drawbend run`.
+// Sample: drawbend cup-deck --die-radius 8 --material data/materials/aa5754_o_hill48_hou2020.toml > cup.toml
+// Units: mm, N, MPa, s.
+#include <cmath>
+#include <iostream>
+
+#include "core/csv.hpp"
+#include "core/options.hpp"
+#include "sim/cup_case.hpp"
+
+namespace drawbend::cli {
+
+int cup_deck_command(int argc, char** argv) {
+  sim::CupSpec s;
+  s.deck = std::string(DRAWBEND_DATA_DIR) + "/cases/cup_draw.toml";
+  double punch_radius = 0, die_radius = 0;
+  int cycles = static_cast<int>(s.cycles);
+  Options opt("drawbend cup-deck",
+              "Write a cup-drawing deck (quarter model, thesis Sec. 6.6) from the chapters' builder to standard "
+              "output; forces in its history are the quarter model's (x 4 for the full blank).");
+  opt.add(s.deck, "base", "base deck (TOML) whose mesh, tools and contacts are used");
+  opt.add(s.speed, "speed", "punch speed [mm/s] (Table 6.5: 6.4 to 101.6)");
+  opt.add(s.stroke, "stroke", "punch travel [mm]");
+  opt.add(cycles, "cycles", "cycles per stroke: sets the time step and so the mass scaling");
+  opt.add(s.refine, "refine", "the base deck's element counts times this (in-plane and through the thickness)");
+  opt.add(punch_radius, "punch-radius", "punch corner radius [mm] (0: the base deck's, an ASSUMED 5 mm)");
+  opt.add(die_radius, "die-radius", "upper-die corner radius [mm] (0: the base deck's, an ASSUMED 5 mm)");
+  opt.add(s.material, "material",
+          "material: empty = the base deck's (isotropic J2, Table 5.1 RD); a TOML inline table of [material] keys "
+          "or a TOML file with a [material] table (data/materials/*.toml)");
+  opt.add(s.friction, "friction",
+          "friction on every contact: empty = the base deck's (Table 6.1 mu(p, v), RD along x); none = "
+          "frictionless; or a Table 6.1-format nodes CSV");
+  if (!opt.parse(argc, argv)) return 0;
+  s.cycles = cycles;
+  if (!(s.speed > 0)) throw std::invalid_argument("--speed: expected a punch speed > 0 mm/s, found " + fmt(s.speed));
+  if (!(s.stroke > 0)) throw std::invalid_argument("--stroke: expected a travel > 0 mm, found " + fmt(s.stroke));
+  if (s.cycles < 100) throw std::invalid_argument("--cycles: expected at least 100, found " + std::to_string(s.cycles));
+  if (s.refine < 1 || s.refine > 8) throw std::invalid_argument("--refine: expected 1 to 8, found " + std::to_string(s.refine));
+  if (punch_radius < 0 || die_radius < 0) throw std::invalid_argument("--punch-radius/--die-radius: expected >= 0 mm");
+  if (punch_radius > 0) s.punch_radius = punch_radius;
+  if (die_radius > 0) s.die_radius = die_radius;
+  std::cout << sim::cup_deck_text(s);
+  return 0;
+}
+
+}  // namespace drawbend::cli

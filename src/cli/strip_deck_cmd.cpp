@@ -1,0 +1,47 @@
+// `drawbend strip-deck [options] [--out deck.toml]`: write the strip-draw
+// deck of Chapter 3's builder (src/sim/strip_draw_case.hpp; Sec. 3.3,
+// Fig. 3.2) for any die pressure, drawing speed, friction law and mesh, to
+// --out or standard output.  `drawbend run deck.toml --out DIR` runs it; the
+// history columns die_tangential_N and die_normal_N give mu = F_t / F_N.
+// Units: mm, N, MPa, s.
+#include <string>
+
+#include "cli/deck_out.hpp"
+#include "core/options.hpp"
+#include "sim/strip_draw_case.hpp"
+
+namespace drawbend::cli {
+
+int strip_deck_command(int argc, char** argv) {
+  sim::StripDrawSpec s = sim::default_strip_draw_spec(DRAWBEND_DATA_DIR);
+  std::string out;
+  Options opt("drawbend strip-deck",
+              "Write the strip-draw friction-test deck of Chapter 3 (Sec. 3.3): a strip section pressed by a "
+              "force-driven flat die and drawn; the die's friction is the Stribeck law of Table 3.1 unless "
+              "--friction names another law. Run it with `drawbend run DECK --out DIR`.");
+  opt.add(out, "out", "deck file to write (empty: standard output)");
+  opt.add(s.name, "name", "case name");
+  opt.add(s.pressure, "pressure", "die pressure: die force / (length x width) [MPa] (> 0)");
+  opt.add(s.speed, "speed", "drawing speed [mm/s] (> 0)");
+  opt.add(s.slide, "slide", "drawn distance after the speed ramp [mm] (> 0)");
+  opt.add(s.length, "length", "strip length under the die [mm] (> 0)");
+  opt.add(s.width, "width", "strip width [mm] (> 0)");
+  opt.add(s.thickness, "thickness", "strip thickness [mm] (> 0)");
+  opt.add(s.nx, "nx", "elements along the strip (>= 1)");
+  opt.add(s.ny, "ny", "elements across the strip (>= 1)");
+  opt.add(s.nz, "nz", "elements through the thickness (>= 1)");
+  opt.add(s.friction, "friction",
+          "die friction as a TOML inline table, e.g. '{ law = \"coulomb\", mu = 0.1 }' (empty: the Stribeck law)");
+  opt.add(s.stribeck_table, "stribeck-table", "the Stribeck law's parameters (CSV, Table 3.1 format)");
+  opt.add(s.interval, "interval", "the Stribeck law's update interval [cycles] (>= 1)");
+  opt.add(s.hardening, "hardening", "hardening curve CSV (plastic strain, true stress [MPa])");
+  opt.add(s.time_step, "time-step", "time step [s] (0: 1e-5 below 4 mm/s, 5e-7 above 40 mm/s, else 2.5e-6)");
+  opt.add(s.die_mass, "die-mass", "die mass [t] (0: omega dt = 0.5 on its contact springs)");
+  opt.add(s.press_time, "press-time", "duration of the press step [s]");
+  opt.add(s.force_ramp, "force-ramp", "die force ramp [s] (<= --press-time)");
+  opt.add(s.speed_ramp, "speed-ramp", "drawing speed ramp [s]");
+  if (!opt.parse(argc, argv)) return 0;
+  return write_deck_out(sim::strip_draw_deck_text(s), out, "strip-deck");
+}
+
+}  // namespace drawbend::cli

@@ -1,0 +1,70 @@
+#pragma once
+// The phases of one explicit cycle (fe/solver_loop.cpp reads them in order:
+// forces, contact, loads, integrate, guards, output) as functions over plain
+// views of the solver's structure-of-arrays state, and the step plan: the
+// step's node-set and tool names resolved to index arrays once, when the step
+// starts.  Nothing here allocates; the plan and the scratch arrays are sized
+// at set-up.  Units: mm, N, MPa, s, t/mm^3.
+#include <string>
+#include <vector>
+
+#include "fe/model.hpp"
+#include "fe/node_view.hpp"
+
+namespace drawbend::fe {
+
+
+/// A step's names resolved once, at its start.
+struct StepPlan {
+  /// A constraint on a node set; its reaction goes to a slot of `reaction_names`
+  /// (sets named twice share one slot: the first constraint writes it, later ones add).
+  struct Constrained {
+    const std::vector<int>* nodes = nullptr;
+    int slot = 0;
+    bool first = true;
+  };
+  struct Load {
+    const std::vector<int>* nodes = nullptr;
+    std::vector<double> weight;  ///< mass-proportional share of each node
+  };
+  std::vector<Load> loads;                      ///< one per step.forces
+  std::vector<Constrained> rotations, affine, velocities, fixed;  ///< one per BC of the step, same order
+  std::vector<std::string> reaction_names;      ///< unique set names, first appearance first
+  std::vector<Tool::Drive> drive;               ///< per tool: its drive in this step
+};
+
+/// Names -> index arrays for `step` (throws std::invalid_argument on an unknown name).
+StepPlan plan_step(const Model& m, const Step& step, const std::vector<double>& mass);
+/// The tool of that name (throws std::invalid_argument).
+int tool_index(const Model& m, const std::string& name);
+
+/// Loads: ext = the step's force loads at step time `ts` plus gravity; applied[l] = the total of load l.
+void apply_loads(const Model& m, const Step& step, const StepPlan& plan, double ts, const NodeView& v, NodeField ext,
+                 Vec3* applied);
+
+/// Integrate: v0 = v; v = a1 v + a2 (f + ext) / m.  Returns the first node with
+/// a non-finite velocity (-1: none); the nodes after it are not updated.
+int integrate_velocities(const NodeView& v, NodeField ext, double a1, double a2, NodeField v0);
+
+/// Constraints at mid-interval step time `th`: rotations (with free sliding,
+/// `slide_offset` per rotation), affine fields, velocities, fixed dofs, in that
+/// order; r = the per-node reactions, reactions = their sums per slot.
+void enforce_constraints(const Step& step, const StepPlan& plan, double th, double dt, const NodeView& v,
+                         Vec3* slide_offset, NodeField r, Vec3* reactions);
+
+/// Work of loads and reactions over the interval, kinetic energy, damping loss.
+struct EnergyIncrement {
+  double work = 0, kinetic = 0, damping = 0;
+};
+EnergyIncrement interval_energies(const NodeView& v, NodeField ext, NodeField r, NodeField v0, double dt, double c);
+
+/// Positions at t_n+1 (parallel over nodes).
+void move_nodes(const NodeView& v, double dt);
+
+/// Rigid tools: velocity-driven tools at their speed at `th`, force-driven
+/// tools as rigid masses (force at step time `ts`, the sheet's reaction
+/// `tool_force`, damping factors a1, a2), then offsets.
+void move_tools(const Model& m, const StepPlan& plan, double th, double ts, double dt, double a1, double a2,
+                const Vec3* tool_force, Vec3* tool_vel, Vec3* tool_offset);
+
+}  // namespace drawbend::fe

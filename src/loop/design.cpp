@@ -1,0 +1,214 @@
+// The loop's design: per-row quantities (cell, direction, map pressure,
+// lubricant number, ...) computed once from the data and the pressure maps,
+// and the bending force of pins without rotating-pin rows.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include "analysis/rope.hpp"
+#include "core/csv.hpp"
+#include "loop/model.hpp"
+
+namespace drawbend::loop {
+
+namespace {
+constexpr double kEtaPaS = 1.2;  // Table 3.3 (Ter Haar); enters L only as a constant factor
+bool close(double a, double b) { return std::abs(a - b) < 1e-9 * std::max(1.0, std::abs(a)); }
+}  // namespace
+
+void set_direction(Row& r, double phi) {
+  r.phi = phi;
+  r.cos_phi = std::cos(phi);
+  r.sin_phi = std::sin(phi);
+  r.sin2 = std::pow(std::sin(2 * phi), 2);
+  r.four2 = 0.5 * (std::cos(2 * phi) - std::cos(6 * phi));
+}
+
+BendingSource bending_source(const std::string& b) {
+  if (b == "linear" || b == "constant" || b == "rotating") return BendingSource::rotating;
+  if (b == "swift") return BendingSource::swift;
+  if (b == "fe") return BendingSource::fe;
+  if (b == "none") return BendingSource::none;
+  throw std::invalid_argument("--bending must be linear, constant, swift, fe or none, not '" + b + "'");
+}
+
+std::string bending_source_name(BendingSource b) {
+  switch (b) {
+    case BendingSource::rotating: return "rotating-pin rows";
+    case BendingSource::swift: return "Swift Eq. 2.1 (sigma_y 99.71 MPa, t 1.04 mm, w 25.4 mm, 90 deg)";
+    case BendingSource::fe: return "FE rotating-pin run (map file's bending_force_N)";
+    case BendingSource::none: return "none (F_B = 0: mu absorbs the bending force, an upper bound)";
+  }
+  return "?";
+}
+
+std::vector<int> Design::levels(const std::string& column, std::vector<std::string>* names) const {
+  std::vector<int> out(rows.size(), 0);
+  std::map<std::string, int> ix;
+  std::vector<std::string> nm;
+  const int k = data->extra_index(column);
+  if (k < 0 && column != "pin" && column != "direction_deg")
+    throw InputError("no categorical column '" + column + "' for a group factor");
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const Sample& s = data->rows[i];
+    const std::string v = column == "pin" ? fmt(s.pin_d_mm) : column == "direction_deg" ? fmt(s.direction_deg)
+                                                                                         : s.extra[k];
+    auto [it, fresh] = ix.emplace(v, static_cast<int>(nm.size()));
+    if (fresh) nm.push_back(v);
+    out[i] = it->second;
+  }
+  if (names) *names = nm;
+  return out;
+}
+
+std::vector<double> Design::zscore(const std::string& column) const {
+  std::vector<double> x(rows.size(), 0.0);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const Sample& s = data->rows[i];
+    double v;
+    if (column == "time_s") v = s.time_s;
+    else if (column == "sliding_distance_mm") v = s.sliding_mm;
+    else if (column == "back_tension_N") v = s.back_tension_N;
+    else if (column == "speed_mm_s") v = s.speed_mm_s;
+    else if (column == "direction_deg") v = s.direction_deg;
+    else if (column == "pin_diameter_mm") v = s.pin_d_mm;
+    else if (column == "inv_R_per_mm") v = 2 / s.pin_d_mm;
+    else {
+      const int k = data->extra_index(column);
+      if (k < 0) throw InputError("no numeric column '" + column + "' for a linear term");
+      try {
+        v = std::stod(s.extra[k]);
+      } catch (const std::exception&) {
+        throw InputError("column '" + column + "' is not numeric: no linear term");
+      }
+    }
+    x[i] = v;
+  }
+  double m = 0, q = 0;
+  for (double v : x) m += v;
+  m /= x.size();
+  for (double v : x) q += (v - m) * (v - m);
+  const double sd = std::sqrt(q / std::max<size_t>(1, x.size() - 1));
+  for (double& v : x) v = sd > 0 ? (v - m) / sd : 0.0;
+  return x;
+}
+
+Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_um, BendingSource bending) {
+  Design d;
+  d.data = &data;
+  d.maps = &maps;
+  std::set<double> pins, speeds, dirs;
+  for (const auto& s : data.rows) {
+    pins.insert(s.pin_d_mm);
+    if (!s.rotating) speeds.insert(s.speed_mm_s), dirs.insert(s.direction_deg);
+  }
+  d.fixed_directions.assign(dirs.begin(), dirs.end());
+  for (double a : d.fixed_directions)
+    d.dir_param.push_back(std::abs(a) < 1e-9 || std::abs(a - 90) < 1e-9 ? -1 : d.n_dir_params++);
+  d.direction_is_level = dirs.size() <= 2;
+  d.notes.push_back(d.direction_is_level ? "direction is a cell level (at most 2 directions: one mu per direction)"
+                                         : "directions vary (" + std::to_string(dirs.size()) +
+                                               " distinct): mu_RD and mu_TD joined by the anisotropic ellipse");
+  d.pins.assign(pins.begin(), pins.end());
+  d.speed_is_level = speeds.size() <= 3;
+  d.notes.push_back(d.speed_is_level ? "speed is a cell level (" + std::to_string(speeds.size()) + " distinct speeds)"
+                                     : "speed varies continuously (" + std::to_string(speeds.size()) +
+                                           " distinct speeds): not a cell level, a candidate");
+  const int ra = data.extra_index("pin_Ra_um");
+  std::map<std::string, int> cell_index;
+  double lg_sum = 0;
+  int n_fixed = 0;
+  for (const auto& s : data.rows) {
+    Row r;
+    r.pin = static_cast<int>(std::find_if(d.pins.begin(), d.pins.end(), [&](double p) { return close(p, s.pin_d_mm); }) -
+                             d.pins.begin());
+    r.rotating = s.rotating;
+    r.fback = s.back_tension_N;
+    r.y = s.outlet_force_N;
+    set_direction(r, s.direction_deg * M_PI / 180.0);
+    r.sliding = std::isnan(s.sliding_mm) ? 0.0 : s.sliding_mm;
+    if (!s.rotating) {
+      std::string cell = s.lubricant + (d.speed_is_level ? " | " + fmt(s.speed_mm_s) + " mm/s" : "");
+      if (d.direction_is_level) cell += s.direction_deg < 45 ? " | RD" : " | TD";
+      auto [it, fresh] = cell_index.emplace(cell, static_cast<int>(d.cells.size()));
+      if (fresh) {
+        d.cells.push_back(cell);
+        d.cell_rd.push_back(0);
+        d.cell_td.push_back(0);
+      }
+      r.cell = it->second;
+      (s.direction_deg < 45 ? d.cell_rd : d.cell_td)[r.cell] = 1;
+      const PinMap& m = maps.at(s.pin_d_mm);
+      r.pw_ref = m.S2 / m.S1;
+      r.fref = m.fref_N;
+      r.dir = static_cast<int>(std::find_if(d.fixed_directions.begin(), d.fixed_directions.end(),
+                                            [&](double a) { return close(a, s.direction_deg); }) -
+                               d.fixed_directions.begin());
+      // Lubricant number (Eq. 3.1) at the frictionless average pressure (Eq. 2.2), SI units.
+      const double p_avg = analysis::average_pressure(s.back_tension_N, s.back_tension_N, s.pin_d_mm / 2, kStripWidthMm,
+                                                      analysis::ForceBasis::full_strip);  // MPa, F_x = F_y
+      double ra_pin = 0.1;  // Table 5.2
+      if (ra >= 0) {
+        try {
+          ra_pin = std::stod(s.extra[ra]);
+        } catch (...) {
+        }
+      }
+      const double ra_comb = std::hypot(Ra_sheet_um, ra_pin) * 1e-6;
+      // Eq. 3.1 written out, not analysis::lubricant_number: that one multiplies (v 1e-3) eta where
+      // this multiplies (eta v) 1e-3, which rounds differently, and the loop's outputs keep their bits.
+      r.lgL = std::log10(kEtaPaS * std::max(s.speed_mm_s, 1e-6) * 1e-3 / (p_avg * 1e6 * ra_comb));
+      lg_sum += r.lgL;
+      ++n_fixed;
+    }
+    d.rows.push_back(r);
+  }
+  for (auto& r : d.rows)
+    if (!r.rotating) r.lgL -= lg_sum / std::max(1, n_fixed);
+  d.bend_fallback.assign(d.pins.size(), std::nan(""));
+  std::string missing, label;
+  for (size_t p = 0; p < d.pins.size(); ++p) {
+    bool rot = false, fixed = false;
+    for (const auto& r : d.rows)
+      if (r.pin == static_cast<int>(p)) (r.rotating ? rot : fixed) = true;
+    const std::string pin = fmt(d.pins[p]) + " mm";
+    if (rot) {
+      label += (label.empty() ? "" : "; ") + pin + ": line fitted to its rotating-pin rows";
+      continue;
+    }
+    if (!fixed) continue;
+    d.missing_rotating = true;
+    missing += (missing.empty() ? "" : ", ") + pin;
+    double fb = std::nan("");
+    if (bending == BendingSource::swift)
+      fb = analysis::swift_bending_force(99.71, 1.04, kStripWidthMm, d.pins[p] / 2, kWrapRad,
+                                         analysis::ForceBasis::full_strip);
+    else if (bending == BendingSource::none)
+      fb = 0;
+    else if (bending == BendingSource::fe) {
+      const PinMap& m = maps.at(d.pins[p]);
+      if (!(m.fbend_N >= 0))
+        throw InputError(m.provenance + ": --bending fe needs a '# bending_force_N: <N>' line in the map file "
+                         "(the frictionless FE run's F_Y - F_X, full strip)");
+      fb = m.fbend_N;
+    }
+    d.bend_fallback[p] = fb;
+    if (bending != BendingSource::rotating)
+      label += (label.empty() ? "" : "; ") + pin + ": NO rotating-pin rows, F_B = " + fmt(fb, 4) + " N from " +
+               bending_source_name(bending);
+  }
+  if (d.missing_rotating && bending == BendingSource::rotating)
+    throw InputError(data.path + ": no rotating-pin rows for the " + missing +
+                     " pin(s), so the bending force is unknown; choose a bending model with --bending swift (Eq. 2.1), "
+                     "--bending fe (FE maps with a bending_force_N line) or --bending none (mu absorbs F_B)");
+  d.bending_label = label;
+  if (d.missing_rotating) d.notes.insert(d.notes.begin(), "NO ROTATING-PIN ROWS for the " + missing + " pin(s): bending force from " +
+                                                               bending_source_name(bending) + " (every output says so)");
+  d.notes.push_back("bending force: " + label);
+  d.notes.push_back("pressure maps: " + maps.label());
+  return d;
+}
+
+}  // namespace drawbend::loop

@@ -1,0 +1,146 @@
+#pragma once
+// Internal to the loop's force model: the effect table.  One rule per
+// EffectKind of effects.hpp says how many friction parameters the effect has,
+// the term it adds to mu of a fixed-pin row, and the names of its parameters.
+// visit_rule is the one switch over EffectKind; its callers (layout,
+// predict_row, friction_names) pass a generic lambda, so each rule's functions
+// are called directly and inline in the fits' inner loop.  Adding an effect
+// kind means adding one rule here and one line in visit_rule.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/csv.hpp"
+#include "loop/model_parts.hpp"
+
+namespace drawbend::loop::detail {
+
+using Names = std::vector<std::string>;
+
+/// Base of the rules with one parameter.
+struct OneParam {
+  static int count(const Design&, const Effect&) { return 1; }
+};
+
+/// mu(p) = mu0 + a1 p per cell (the new method); p from the map (Eq. 2.2 scaling in predict_row).
+struct PressureMu {
+  static int count(const Design& d, const Effect&) { return static_cast<int>(d.cells.size()); }
+  static void apply(const EffectArgs& a, Terms& t) { t.a1 = a.th[a.r.cell]; }
+  static void name(const Design& d, const Effect&, const Names&, int s, Names& n) {
+    for (size_t c = 0; c < d.cells.size(); ++c) n[s + c] = "a1 [" + d.cells[c] + "] (1/MPa)";
+  }
+};
+
+/// mu (1 + beta lg L), lg L centred (Eq. 3.1's lubricant number, see make_design).
+struct Stribeck : OneParam {
+  static void apply(const EffectArgs& a, Terms& t) { t.factor += a.th[0] * a.r.lgL; }
+  static void name(const Design&, const Effect&, const Names&, int s, Names& n) { n[s] = "beta per decade of L"; }
+};
+
+/// mu (1 - beta (1 - exp(-s/lambda))), s the sliding distance.
+struct Depletion : OneParam {
+  static void apply(const EffectArgs& a, Terms& t) {
+    t.factor -= a.th[0] * (1 - std::exp(-a.r.sliding / a.e.lambda_mm));
+  }
+  static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
+    n[s] = "beta depletion (lambda = " + fmt(e.lambda_mm) + " mm)";
+  }
+};
+
+/// mu (1 + beta sin^2(2 phi)).
+struct DirectionHarmonic : OneParam {
+  static void apply(const EffectArgs& a, Terms& t) { t.factor += a.th[0] * a.r.sin2; }
+  static void name(const Design&, const Effect&, const Names&, int s, Names& n) { n[s] = "beta sin^2(2 phi)"; }
+};
+
+/// drift and generic_linear: mu (1 + beta z), z the z-score of the effect's column.
+struct Linear : OneParam {
+  static void apply(const EffectArgs& a, Terms& t) { t.factor += a.th[0] * a.f.drift_z[a.k][a.i]; }
+  static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
+    n[s] = "beta per SD of " + e.variable;
+  }
+};
+
+/// mu (1 + beta tanh(z)).
+struct Saturating : OneParam {
+  static void apply(const EffectArgs& a, Terms& t) { t.factor += a.th[0] * std::tanh(a.f.drift_z[a.k][a.i]); }
+  static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
+    n[s] = "beta tanh(z) of " + e.variable;
+  }
+};
+
+/// mu (1 + g_level), one factor per level but the first.
+struct Categorical {
+  static int count(const Design&, const Effect& e) { return std::max(0, e.n_levels - 1); }
+  static void apply(const EffectArgs& a, Terms& t) {
+    const int l = a.f.level[a.k][a.i];
+    if (l > 0) t.factor += a.th[l - 1];
+  }
+  static void name(const Design&, const Effect& e, const Names& level_names, int s, Names& n) {
+    for (int l = 1; l < e.n_levels; ++l) n[s + l - 1] = "g [" + e.variable + " = " + level_names[l] + "]";
+  }
+};
+
+/// mu (1 + g_dir) per direction level other than 0 and 90 deg.
+struct DirectionLevel {
+  static int count(const Design& d, const Effect&) { return d.n_dir_params; }
+  static void apply(const EffectArgs& a, Terms& t) {
+    if (a.r.dir >= 0 && a.d.dir_param[a.r.dir] >= 0) t.factor += a.th[a.d.dir_param[a.r.dir]];
+  }
+  static void name(const Design& d, const Effect&, const Names&, int s, Names& n) {
+    for (size_t k = 0; k < d.fixed_directions.size(); ++k)
+      if (d.dir_param[k] >= 0) n[s + d.dir_param[k]] = "g [direction " + fmt(d.fixed_directions[k]) + " deg]";
+  }
+};
+
+/// mu (1 + c1 sin^2(2 phi) + c2 (cos 2phi - cos 6phi)/2).
+struct DirectionFourier {
+  static int count(const Design&, const Effect&) { return 2; }
+  static void apply(const EffectArgs& a, Terms& t) { t.factor += a.th[0] * a.r.sin2 + a.th[1] * a.r.four2; }
+  static void name(const Design&, const Effect&, const Names&, int s, Names& n) {
+    n[s] = "c1 sin^2(2 phi)";
+    n[s + 1] = "c2 (cos 2phi - cos 6phi)/2";
+  }
+};
+
+/// mu (1 + s_pin), one factor per pin but the first.
+struct PinSurface {
+  static int count(const Design& d, const Effect&) { return static_cast<int>(d.pins.size()) - 1; }
+  static void apply(const EffectArgs& a, Terms& t) {
+    if (a.r.pin > 0) t.pinf += a.th[a.r.pin - 1];
+  }
+  static void name(const Design& d, const Effect&, const Names&, int s, Names& n) {
+    for (size_t p = 1; p < d.pins.size(); ++p) n[s + p - 1] = "s_pin " + fmt(d.pins[p]) + " mm";
+  }
+};
+
+/// Acts on the bending line (fit_bending), not on mu: no friction parameter.
+struct BendingTension {
+  static int count(const Design&, const Effect&) { return 0; }
+  static void apply(const EffectArgs&, Terms&) {}
+  static void name(const Design&, const Effect&, const Names&, int, Names&) {}
+};
+
+/// Calls f(Rule{}) with the rule of kind k: the one switch over EffectKind
+/// (-Wswitch checks that every kind has a rule).
+template <class F>
+decltype(auto) visit_rule(EffectKind k, F&& f) {
+  switch (k) {
+    case EffectKind::pressure_mu: return f(PressureMu{});
+    case EffectKind::stribeck: return f(Stribeck{});
+    case EffectKind::depletion: return f(Depletion{});
+    case EffectKind::direction_harmonic: return f(DirectionHarmonic{});
+    case EffectKind::pin_surface: return f(PinSurface{});
+    case EffectKind::drift:
+    case EffectKind::generic_linear: return f(Linear{});
+    case EffectKind::bending_tension: break;
+    case EffectKind::categorical: return f(Categorical{});
+    case EffectKind::generic_saturating: return f(Saturating{});
+    case EffectKind::direction_level: return f(DirectionLevel{});
+    case EffectKind::direction_fourier: return f(DirectionFourier{});
+  }
+  return f(BendingTension{});
+}
+
+}  // namespace drawbend::loop::detail

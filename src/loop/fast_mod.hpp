@@ -1,0 +1,30 @@
+// x % k without a division in the loop (Barrett reduction), exact for every
+// 64-bit x and 2 <= k <= kmax.  With R = floor(2^64 / k), q = floor(x R / 2^64)
+// is floor(x / k) or one less (R > 2^64/k - 1 and x < 2^64), so x - q k lies in
+// [0, 2k) and one conditional subtraction ends it.  The permutation test's
+// Fisher-Yates shuffle uses it so that its sequence is that of rng() % k.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace drawbend::loop {
+
+class FastMod {
+ public:
+  explicit FastMod(std::size_t kmax) : r_(kmax + 1, 0) {
+    for (std::size_t k = 2; k <= kmax; ++k)
+      r_[k] = ~std::uint64_t{0} / k + ((k & (k - 1)) == 0 ? 1 : 0);  // floor(2^64 / k)
+  }
+  std::uint64_t operator()(std::uint64_t x, std::size_t k) const {
+    const auto q = static_cast<std::uint64_t>((static_cast<unsigned __int128>(x) * r_[k]) >> 64);
+    const std::uint64_t r = x - q * k;
+    return r >= k ? r - k : r;
+  }
+
+ private:
+  std::vector<std::uint64_t> r_;
+};
+
+}  // namespace drawbend::loop

@@ -1,0 +1,52 @@
+#pragma once
+// Internal to the loop's force model: the force model evaluated at a row, base
+// model plus effects.  Inline, because the fits (model.cpp) call it per row and
+// Levenberg-Marquardt step.
+//   rotating pin:  F_out = F_back + F_B
+//   fixed pin:     F_out = F_back + F_B + F_fric,  F_fric = F_back (exp(mu Theta) - 1)  (Eq. 5.1)
+//   mu = (ellipse(mu_RD, mu_TD; phi) + a1 p) * factor * pinf   (terms from effect_rules.hpp)
+// with the map pressure p following the mean strip tension (Eq. 2.2, as map_pressure).
+#include <cmath>
+
+#include "analysis/friction_surface.hpp"
+#include "analysis/pressure_ratio.hpp"
+#include "analysis/rope.hpp"
+#include "loop/effect_rules.hpp"
+
+namespace drawbend::loop {
+
+namespace detail {
+
+inline double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th, int i,
+                          double* mu_out, const Row* override_row, double* p_out) {
+  const Row& r = override_row ? *override_row : d.rows[i];
+  const double bend = f.b0[r.pin] + f.b1[r.pin] * r.fback;
+  if (std::isnan(bend)) return std::nan("");
+  if (r.rotating) return r.fback + bend;
+  const int ir = L.mu_rd[r.cell], it = L.mu_td[r.cell];
+  double mu0;
+  if (ir >= 0 && it >= 0) mu0 = analysis::ellipse_mu(th[ir], th[it], r.cos_phi, r.sin_phi);
+  else mu0 = th[ir >= 0 ? ir : it];
+  if (!f.seen.empty() && ((ir >= 0 && !f.seen[ir]) || (it >= 0 && !f.seen[it]))) return std::nan("");
+  Terms t;
+  for (size_t k = 0; k < f.spec.effects.size(); ++k) {
+    const Effect& e = f.spec.effects[k];
+    const EffectArgs a{d, f, r, i, k, e, th.data() + L.eff_start[k]};
+    visit_rule(e.kind, [&](auto rule) { rule.apply(a, t); });
+  }
+  double ff = 0, mu = 0;
+  const int iters = t.a1 != 0 ? 4 : 1;
+  const double bend_ref = f.b0[r.pin] + f.b1[r.pin] * r.fref;
+  for (int k = 0; k < iters; ++k) {  // the map follows the mean tension (Eq. 2.2), friction included
+    const double p = analysis::pressure_at_tension(r.pw_ref, r.fback, bend, ff, r.fref, bend_ref);  // map_pressure
+    mu = (mu0 + t.a1 * p) * t.factor * t.pinf;
+    ff = analysis::friction_from_mu(mu, r.fback, kWrapRad);
+  }
+  if (mu_out) *mu_out = mu;
+  if (p_out) *p_out = analysis::pressure_at_tension(r.pw_ref, r.fback, bend, ff, r.fref, bend_ref);
+  return r.fback + bend + ff;
+}
+
+}  // namespace detail
+
+}  // namespace drawbend::loop

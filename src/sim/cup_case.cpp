@@ -1,0 +1,298 @@
+// The cup-drawing builder: see cup_case.hpp.
+#include "sim/cup_case.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+#include "core/csv.hpp"
+#include "fe/solver.hpp"
+#include "io/deck.hpp"
+#include "io/run_case.hpp"
+#include "material/material.hpp"
+#include "sim/material_spec.hpp"
+
+namespace drawbend::sim {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+double elapsed_s(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+toml::table* tool_table(toml::table& root, const std::string& name) {
+  if (auto* tools = root["tool"].as_array())
+    for (auto& t : *tools)
+      if (auto* tt = t.as_table(); tt && (*tt)["name"].value_or(std::string()) == name) return tt;
+  return nullptr;
+}
+
+toml::table* surface(toml::table& tool, const std::string& kind) {
+  if (auto* s = tool["surface"].as_array())
+    for (auto& x : *s)
+      if (auto* t = x.as_table(); t && (*t)["kind"].value_or(std::string()) == kind) return t;
+  return nullptr;
+}
+
+double number(toml::table& t, const char* key, const std::string& where) {
+  if (auto v = t[key].value<double>()) return *v;
+  throw InputError(where + ": expected a number '" + key + "'");
+}
+
+// The punch: flat face r <= Rw - Rp, corner torus (tube Rp, centre z = -Rp),
+// wall cylinder r = Rw below z = -Rp.  Rw (the wall radius) is kept.
+void set_punch_radius(toml::table& root, double rp, const std::string& where) {
+  auto* punch = tool_table(root, "punch");
+  toml::table *plane = punch ? surface(*punch, "plane") : nullptr, *torus = punch ? surface(*punch, "torus") : nullptr,
+              *wall = punch ? surface(*punch, "cylinder") : nullptr;
+  if (!plane || !torus || !wall) throw InputError(where + ": the punch needs plane, torus and cylinder surfaces");
+  const double rw = number(*wall, "radius", where + ": punch cylinder");
+  if (!(rp > 0 && rp < rw)) throw InputError(where + ": punch radius " + fmt(rp) + " mm must lie in (0, " + fmt(rw) + ")");
+  plane->insert_or_assign("r_max", rw - rp);
+  torus->insert_or_assign("radius", rw - rp);
+  torus->insert_or_assign("tube_radius", rp);
+  torus->insert_or_assign("origin", toml::array{0.0, 0.0, -rp});
+  wall->insert_or_assign("z_max", -rp);
+}
+
+// The upper die: flat face r >= Rh + Rd at z = t, corner torus (tube Rd,
+// centre z = t + Rd), hole cylinder r = Rh above z = t + Rd.  Rh is kept.
+void set_die_radius(toml::table& root, double rd, const std::string& where) {
+  auto* die = tool_table(root, "upper_die");
+  toml::table *plane = die ? surface(*die, "plane") : nullptr, *torus = die ? surface(*die, "torus") : nullptr,
+              *hole = die ? surface(*die, "cylinder") : nullptr;
+  if (!plane || !torus || !hole) throw InputError(where + ": the upper die needs plane, torus and cylinder surfaces");
+  const double rh = number(*hole, "radius", where + ": upper-die cylinder");
+  const auto* o = (*plane)["origin"].as_array();
+  if (!o || o->size() != 3 || !o->get(2)->value<double>()) throw InputError(where + ": upper-die plane needs an origin");
+  const double zt = *o->get(2)->value<double>();
+  if (!(rd > 0 && rd < 20)) throw InputError(where + ": die radius " + fmt(rd) + " mm must lie in (0, 20)");
+  plane->insert_or_assign("r_min", rh + rd);
+  torus->insert_or_assign("radius", rh + rd);
+  torus->insert_or_assign("tube_radius", rd);
+  torus->insert_or_assign("origin", toml::array{0.0, 0.0, zt + rd});
+  hole->insert_or_assign("z_min", zt + rd);
+}
+
+// The base deck with the spec's mesh, radii, material and friction (paths absolute).
+toml::table base_table(const CupSpec& spec, int& layers) {
+  if (spec.refine < 1) throw InputError(spec.deck + ": refine must be >= 1");
+  if (!fs::is_regular_file(spec.deck)) throw InputError(spec.deck + ": cup base deck not found");
+  toml::table root;
+  try {
+    root = toml::parse_file(spec.deck);
+  } catch (const toml::parse_error& e) {
+    throw InputError(spec.deck + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
+  }
+  const fs::path dir = fs::path(spec.deck).parent_path();
+  if (auto* mesh = root["mesh"].as_table())
+    for (const char* key : {"core", "ring", "through"})
+      if (auto* n = mesh->get(key); n && n->value<int64_t>()) {
+        const int64_t count = *n->value<int64_t>() * spec.refine;  // read before the node is replaced
+        mesh->insert_or_assign(key, count);
+        if (std::string(key) == "through") layers = static_cast<int>(count);
+      }
+  if (!spec.material.empty()) {  // the user's material over the deck's own flow curve
+    std::string curve = root["material"]["hardening"].value_or(std::string());
+    if (!curve.empty() && fs::path(curve).is_relative()) curve = (dir / curve).lexically_normal().string();
+    const std::string section = material_section(spec.material, curve);
+    root.insert_or_assign("material", *toml::parse(std::string_view(section), std::string_view("--cup-material"))["material"].as_table());
+  }
+  if (!std::isnan(spec.punch_radius)) set_punch_radius(root, spec.punch_radius, spec.deck);
+  if (!std::isnan(spec.die_radius)) set_die_radius(root, spec.die_radius, spec.deck);
+  if (!spec.friction.empty())
+    if (auto* pairs = root["contact"].as_array())
+      for (auto& p : *pairs) {
+        auto& t = *p.as_table();
+        if (spec.friction == "none") {
+          t.erase("friction");
+          continue;
+        }
+        auto* f = t["friction"].as_table();
+        if (!f || !f->get("nodes")) throw InputError(spec.deck + ": a contact pair without a Table 6.1 nodes friction");
+        f->insert_or_assign("nodes", fs::absolute(spec.friction).lexically_normal().string());
+      }
+  return root;
+}
+
+
+double tool_contact_stiffness(const fe::Model& m, const std::string& tool) {
+  double k = 0;
+  for (const auto& cp : m.contacts) {
+    if (cp.tool != tool) continue;
+    double area = 0, zmin = 1e30, zmax = -1e30;
+    for (const auto& f : m.mesh.face_set(cp.faces)) area += fe::quad_area(m.mesh.x, m.mesh.y, m.mesh.z, f);
+    for (double z : m.mesh.z) {
+      zmin = std::min(zmin, z);
+      zmax = std::max(zmax, z);
+    }
+    int layers = 0;  // distinct z levels - 1 = elements through the thickness
+    std::vector<double> zs(m.mesh.z);
+    std::sort(zs.begin(), zs.end());
+    for (std::size_t i = 1; i < zs.size(); ++i) layers += zs[i] - zs[i - 1] > 1e-9;
+    k += cp.penalty * m.material->bulk_modulus() * area / ((zmax - zmin) / std::max(1, layers));
+  }
+  return k;
+}
+
+}  // namespace
+
+CupResult draw_cup(const CupSpec& spec) {
+  const auto t_start = std::chrono::steady_clock::now();
+  const std::string deck_path = spec.deck;
+  const double speed = spec.speed, stroke = spec.stroke;
+  const long cycles = spec.cycles;
+  const std::string& vtu = spec.vtu;
+  int layers = 0;
+  const toml::table root = base_table(spec, layers);
+  std::ostringstream text;
+  text << root;
+  io::Deck deck = io::parse_deck(text.str(), deck_path);
+  fe::Model& m = deck.model;
+  if (m.steps.size() != 2) throw InputError(deck_path + ": expected two steps (clamp, draw)");
+  fe::Tool* punch = nullptr;
+  for (auto& t : m.tools)
+    if (t.name == "punch") punch = &t;
+  if (!punch) throw InputError(deck_path + ": no tool named 'punch'");
+  // Time step: the stroke in `cycles` cycles (mass scaling to target_dt).
+  const double dt = stroke / speed / cycles;
+  m.target_dt = dt / m.dt_safety;
+  const double tr = 0.02 * cycles * dt;  // the speed ramp takes 2 % of the cycles
+  punch->speed = {{0.0, tr}, {0.0, speed}};
+  m.steps[1].duration = stroke / speed + 0.5 * tr;
+  m.steps[0].duration = 400 * dt;
+  m.steps[0].damping = 1.0 / (50 * dt);  // velocities relax in ~50 cycles while clamping
+  for (auto& t : m.tools)
+    if (t.drive == fe::Tool::Drive::force) t.mass = 4.0 * tool_contact_stiffness(m, t.name) * dt * dt;  // omega dt = 0.5
+  fe::Solver s(m);
+  s.run_step(0);
+  CupResult r;
+  r.elements = m.mesh.num_elements();
+  r.layers = layers;
+  const double z0 = s.tool_offset("punch")[2];
+  const long every = std::max(1L, cycles / 400), tenth = std::max(1L, cycles / 10);
+  const long c0 = s.cycles();
+  s.run_step(1, [&](const fe::Progress& p) {
+    if ((p.cycle - c0) % tenth == 0 && p.cycle > c0) {  // progress: one line per 10 % of the stroke
+      std::ostringstream line;
+      line << "  cup " << speed << " mm/s: " << 10 * ((p.cycle - c0) / tenth) << " % of " << stroke
+           << " mm, punch force " << -4e-3 * s.tool_force("punch")[2] << " kN, left ~"
+           << static_cast<long>(elapsed_s(t_start) * (static_cast<double>(cycles) / static_cast<double>(p.cycle - c0) - 1))
+           << " s\n";
+      std::fputs(line.str().c_str(), stderr);  // one write per line: cases run side by side
+    }
+    if (p.cycle % every) return;
+    const double d = s.tool_offset("punch")[2] - z0;
+    r.curve.push_back({d, -4.0 * s.tool_force("punch")[2]});  // full blank: 4 quarters
+    r.die_force = 4.0 * std::abs(s.tool_force("lower_die")[2]);
+  });
+  r.cycles = s.cycles();
+  const auto& e = s.energies();
+  r.kinetic_ratio = e.internal > 0 ? e.kinetic / e.internal : 0;
+  r.hourglass_ratio = e.internal > 0 ? e.hourglass / e.internal : 0;
+  r.added_mass_ratio = s.added_mass() / s.physical_mass();
+  // Cup size: flange outer diameter along RD (x, on y = 0) and TD (y, on x = 0).
+  const auto& mesh = m.mesh;
+  for (int i : mesh.node_set("rim")) {
+    if (mesh.y[i] == 0.0) r.size_rd = std::max(r.size_rd, 2.0 * s.x()[i]);
+    if (mesh.x[i] == 0.0) r.size_td = std::max(r.size_td, 2.0 * s.y()[i]);
+  }
+  // Element fields (centroid, plastic strain, von Mises) and the largest
+  // plastic strain: element centroid (radius, height above the blank's start).
+  const std::vector<double> sig = s.stress();
+  for (int el = 0; el < mesh.num_elements(); ++el) {
+    const double ep = s.plastic_strain(el);
+    double cx = 0, cy = 0, cz = 0;
+    for (int a = 0; a < 8; ++a) {
+      cx += s.x()[mesh.hex[el][a]] / 8;
+      cy += s.y()[mesh.hex[el][a]] / 8;
+      cz += s.z()[mesh.hex[el][a]] / 8;
+    }
+    r.field.push_back({cx, cy, cz, ep, material::von_mises(&sig[6 * static_cast<std::size_t>(el)])});
+    const double angle = std::atan2(cy, cx) * 180.0 / std::acos(-1.0);
+    if (angle <= 15.0) r.band_rd = std::max(r.band_rd, ep);
+    if (angle >= 75.0) r.band_td = std::max(r.band_td, ep);
+    if (ep <= r.max_strain) continue;
+    r.max_strain = ep;
+    r.max_strain_r = std::hypot(cx, cy);
+    r.max_strain_z = cz;
+    r.max_strain_angle = angle;
+  }
+  if (!vtu.empty()) io::write_fields(s, vtu);
+  r.die_lift = s.tool_offset("lower_die")[2];  // how far the force-driven lower die moved
+  r.wall_seconds = elapsed_s(t_start);
+  return r;
+}
+
+double force_at(const CupResult& r, double d) {
+  for (std::size_t k = 1; k < r.curve.size(); ++k)
+    if (r.curve[k].first >= d) {
+      const auto& [d0, f0] = r.curve[k - 1];
+      const auto& [d1, f1] = r.curve[k];
+      return f0 + (f1 - f0) * (d - d0) / (d1 - d0);
+    }
+  return NAN;
+}
+
+
+std::string cup_deck_text(const CupSpec& spec) {
+  int layers = 0;
+  toml::table root = base_table(spec, layers);
+  const fs::path dir = fs::path(spec.deck).parent_path();
+  // Paths relative to the base deck become absolute: the deck is written elsewhere.
+  auto absolute = [&](toml::table& t, const char* key) {
+    if (auto v = t[key].value<std::string>(); v && fs::path(*v).is_relative())
+      t.insert_or_assign(key, (dir / *v).lexically_normal().string());
+  };
+  if (auto* m = root["material"].as_table()) absolute(*m, "hardening");
+  if (auto* pairs = root["contact"].as_array())
+    for (auto& p : *pairs)
+      if (auto* f = (*p.as_table())["friction"].as_table()) absolute(*f, "nodes");
+  // The numbers draw_cup sets on the model, as deck keys.
+  std::ostringstream text0;
+  text0 << root;
+  io::Deck deck = io::parse_deck(text0.str(), spec.deck);
+  const fe::Model& m = deck.model;
+  const double dt = spec.stroke / spec.speed / spec.cycles, tr = 0.02 * spec.cycles * dt;
+  root["numerics"].as_table()->insert_or_assign("target_dt", dt / m.dt_safety);
+  auto* steps = root["step"].as_array();
+  if (!steps || steps->size() != 2) throw InputError(spec.deck + ": expected two steps (clamp, draw)");
+  steps->get(0)->as_table()->insert_or_assign("duration", 400 * dt);
+  steps->get(0)->as_table()->insert_or_assign("damping", 1.0 / (50 * dt));
+  steps->get(1)->as_table()->insert_or_assign("duration", spec.stroke / spec.speed + 0.5 * tr);
+  auto* punch = tool_table(root, "punch");
+  if (!punch) throw InputError(spec.deck + ": no tool named 'punch'");
+  punch->insert_or_assign("speed", toml::table{{"t", toml::array{0.0, tr}}, {"v", toml::array{0.0, spec.speed}}});
+  for (const auto& t : m.tools)
+    if (t.drive == fe::Tool::Drive::force)
+      tool_table(root, t.name)->insert_or_assign("mass", 4.0 * tool_contact_stiffness(m, t.name) * dt * dt);
+  std::ostringstream o;
+  o << "# Cup-drawing deck written by drawbend's builder (src/sim/cup_case.cpp) from " << spec.deck << ".\n"
+    << "# Punch speed " << spec.speed << " mm/s, stroke " << spec.stroke << " mm in " << spec.cycles
+    << " cycles, mesh refinement " << spec.refine << ".\n# Units: mm, N, MPa, s, t/mm^3.  Rerun with: drawbend run deck.toml --out DIR\n"
+    << root << "\n";
+  return o.str();
+}
+
+void write_isotropic_nodes(const std::string& table_6_1, const std::string& out_csv) {
+  const CsvTable t = read_csv(table_6_1);
+  std::ofstream o(out_csv);
+  if (!o) throw InputError(out_csv + ": cannot write");
+  o << "# derived from " << table_6_1 << ": mu_RD = mu_TD = (mu_RD + mu_TD) / 2 at every node (isotropic friction at the\n"
+    << "# same mean level, for the attribution study of Chapter 8); units: node: -; mu_RD: -; mu_TD: -\n"
+    << "node,mu_RD,mu_TD\n";
+  for (const auto& r : t.rows) {
+    const double mu = 0.5 * (t.number(r, "mu_RD") + t.number(r, "mu_TD"));
+    o << t.text(r, "node") << "," << fmt_shortest(mu) << "," << fmt_shortest(mu) << "\n";
+  }
+  if (!o) throw InputError(out_csv + ": write failed");
+}
+
+}  // namespace drawbend::sim
