@@ -21,6 +21,7 @@
 
 #include "material/hill48.hpp"
 #include "sim/case_pool.hpp"
+#include "study/run_health.hpp"
 #include "study/chapter.hpp"
 #include "v1_cup.hpp"
 
@@ -28,9 +29,11 @@ using namespace drawbend;
 
 namespace {
 
-int g_core = 6, g_ring = 10, g_through = 3;  // quarter_disk element counts
+int g_core = 6, g_ring = 22, g_through = 3;  // quarter_disk element counts
 double g_cycles = 60000;                     // cycles over the stroke
 double g_stroke = 20.0;                      // punch travel [mm] (quick tier: to the force peak)
+double g_ramp = 10;                          // punch travel of the speed ramp [mm]
+double g_polar = -1;                         // quarter_disk polar_radius [mm] (< 0: the deck's; 0: none)
 
 std::string fmt_list(const std::vector<std::pair<double, double>>& v) {
   std::string s;
@@ -61,6 +64,8 @@ void body(study::Chapter& c) {
   v1::RunSpec spec;
   spec.core = g_core, spec.ring = g_ring, spec.through = g_through;
   spec.cycles = static_cast<long>(g_cycles), spec.stroke = g_stroke;
+  spec.polar_radius = g_polar;
+  spec.ramp = g_ramp;
   if (spec.through < 3) throw InputError("--through: at least 3 elements through the thickness (issue 19)");
   // A full draw or a partial stroke?  By its area, the blank (r = 53.75 mm) makes a wall of about
   // (53.75^2 - 30.6^2) / (2 x 30.6) = 32 mm over the 30.6 mm mid-wall radius; its rim clears the die's shoulder
@@ -75,6 +80,8 @@ void body(study::Chapter& c) {
   const double e_mesh = v1::mesh_angular_error(deck, spec, r_mid);
   c.value("mesh_error_pct", fmt_fixed(100 * e_mesh, 2), "%");
   c.value("mesh_error_r", fmt_fixed(r_mid, 1), "mm");
+  const double rp = v1::polar_start(deck, spec);  // rows are circles from here out [mm] (0: none)
+  c.value("polar_radius", fmt_fixed(rp, 1), "mm");
   const double r_min = std::min({hr.r0, hr.r45, hr.r90});  // the lowest published r-value
   const bool ears_at_axes = hr.r0 > hr.r45 && hr.r90 > hr.r45;  // what the r-values say
   c.value("r_rule", ears_at_axes ? "r0 and r90 above r45: ears at 0° and 90°, a trough at 45°"
@@ -112,6 +119,11 @@ void body(study::Chapter& c) {
   auto ft = c.table({"variant", "punch_travel_mm", "punch_force_kN"}, "Punch force (full blank) against punch travel");
   auto tt = c.table({"variant", "line_deg", "initial_radius_mm", "radius_mm", "z_mm", "thickness_mm"},
                     "Thickness along RD (0), 45 deg and TD (90) at the end, by initial radius; current radius and z");
+  auto gt = c.table({"variant", "punch_travel_mm", "region", "hourglass_work_mJ", "stored_inplane_mJ",
+                     "stored_twist_mJ", "stored_xez_mJ"},
+                    "Where the hourglass energy is (quarter blank), each tenth of the stroke: work done so far in the "
+                    "region's elements, and the energy stored in the hourglass springs by mode (xi*eta in plane, "
+                    "xi*eta twist, xi*eta*zeta)");
   auto st = c.table({"variant", "h_mean_mm", "h_max_mm", "at_deg", "h_min_mm", "at_deg", "earing_pct", "ears",
                      "troughs", "max_force_kN", "volume_change_pct", "kinetic_over_internal", "max_kinetic_over_internal",
                      "hourglass_over_internal", "energy_balance_error", "added_mass_ratio", "cycles", "elements"},
@@ -148,6 +160,9 @@ void body(study::Chapter& c) {
       ft.row({v.id, fmt_fixed(d, 4), fmt_fixed(f / 1000, 4)});
       m.fmax = std::max(m.fmax, f);
     }
+    for (const auto& g : r.hourglass_regions)
+      gt.row({v.id, fmt_fixed(g[0], 2), v1::kRegions[static_cast<int>(g[1])], fmt(g[2], 4), fmt(g[3], 4),
+              fmt(g[4], 4), fmt(g[5], 4)});
     for (const auto& q : r.thickness)
       tt.row({v.id, fmt(q[0]), fmt_fixed(q[1], 3), fmt_fixed(q[2], 3), fmt_fixed(q[3], 3), fmt_fixed(q[4], 4)});
     const auto ex = v1::extrema(drawn ? r.height : r.outline);  // ears and troughs of the checked profile
@@ -183,29 +198,52 @@ void body(study::Chapter& c) {
                      "plastic flow is isochoric; the elastic dilatation is p / K with |p| below the flow stress "
                      "(~400 MPa) and K = E / (3 (1 - 2 nu)) = 68.6 GPa: at most 0.58 %");
     c.checks().claim(study::Kind::health, "v1.quasi_static." + v.id,
-                     "kinetic/internal energy < 5 % over the draw after its first tenth (" + v.label + ")",
+                     "kinetic/internal energy < 5 % over the draw after its first tenth of punch travel (" + v.label + ")",
                      r.max_kinetic_ratio < 0.05,
                      "the fixed health limit of every run (data/thesis/README.md), here over the whole draw rather "
                      "than at its end only: mass scaling and punch speed must leave inertia negligible");
-    c.checks().claim(study::Kind::health, "v1.hourglass." + v.id, "hourglass/internal energy < 5 % at the end (" + v.label + ")",
-                     r.hourglass_ratio < 0.05, "the fixed health limit of every run (data/thesis/README.md)");
-    c.checks().claim(study::Kind::health, "v1.energy_balance." + v.id, "energy balance error < 1 % at the end (" + v.label + ")",
-                     r.balance_error < 0.01,
-                     "the fixed health limit of every run (data/thesis/README.md): work of the tools = internal + "
-                     "kinetic + hourglass + friction");
+    study::check_run_health(c.checks(), "v1." + v.id, v.label, {r.balance_error, r.kinetic_ratio, r.hourglass_ratio});
     // A fold (wrinkle) or a tear shows in the thickness lines.
     double tmin = 1e30, tmax = 0;
     for (const auto& q : r.thickness) tmin = std::min(tmin, q[4]), tmax = std::max(tmax, q[4]);
     c.value(v.id + "_tmin", fmt_fixed(tmin, 3), "mm");
     c.value(v.id + "_tmax", fmt_fixed(tmax, 3), "mm");
     const double t_hi = std::pow(53.75 / 30.6, 1.0 / (1.0 + r_min));
-    c.checks().claim(study::Kind::verification, "v1.no_fold_no_tear." + v.id,
-                     "thickness along RD, 45 deg and TD between 0.5 and " + fmt_fixed(t_hi, 2) + " mm at the end (" +
-                         v.label + ")",
-                     tmin >= 0.5 && tmax <= t_hi,
-                     "pure hoop compression of the rim from r = 53.75 to 30.6 mm thickens it at most by (53.75 / "
-                     "30.6)^(1 / (1 + r_min)) with r_min = " + fmt(r_min) + " the lowest r-value; thinner than half "
-                     "the blank is a tear (a neck at the punch nose)");
+    // Where the sheet is thinnest: on the punch nose (current radius >= 24.5 mm, mid-surface within the nose's
+    // 5 mm below the punch face, whose mid-surface is at stroke + 0.5 mm)?
+    std::array<double, 5> thin = r.thickness.front();
+    for (const auto& q : r.thickness)
+      if (q[4] < thin[4]) thin = q;
+    const bool thin_at_nose = thin[2] >= 24.5 && thin[3] >= spec.stroke - 5.5 && thin[3] <= spec.stroke + 0.5;
+    c.value(v.id + "_thin_at", "along " + fmt(thin[0]) + "°, initial radius " + fmt_fixed(thin[1], 1) +
+                                   " mm, now at r = " + fmt_fixed(thin[2], 1) + " mm, z = " + fmt_fixed(thin[3], 1) + " mm");
+    if (v.id == "hill48_r") {
+      // Stated before the run: this calibration's balanced-biaxial yield stress is 0.828 sigma_0 (published
+      // 0.975; table above), so the cup bottom and the punch nose, stretched near plane strain and biaxially,
+      // yield at a lower stress than the flange needs to draw in: the sheet necks at the punch nose and, in a
+      // full draw, may tear there.  That is a property of Hill'48 fitted to r < 1, not a numerical fault, so the
+      // 0.5 mm floor is not claimed for this variant: where it thins is.
+      c.checks().claim(study::Kind::verification, "v1.no_fold.hill48_r",
+                       "Hill'48 from r-values: thickness along RD, 45 deg and TD at most " + fmt_fixed(t_hi, 2) +
+                           " mm at the end (no fold)",
+                       tmax <= t_hi,
+                       "pure hoop compression of the rim from r = 53.75 to 30.6 mm thickens it at most by (53.75 / "
+                       "30.6)^(1 / (1 + r_min)) with r_min = " + fmt(r_min) + " the lowest r-value");
+      c.checks().claim(study::Kind::verification, "v1.hill48_r.thins_at_nose",
+                       "Hill'48 from r-values: the thinnest point of the three lines is on the punch nose",
+                       thin_at_nose,
+                       "this calibration gives sigma_b / sigma_0 = 0.828 (published 0.975): the bottom and the nose "
+                       "yield before the flange draws in, so the sheet necks at the nose (a tear there is the "
+                       "calibration's prediction, reported, not a fault)");
+    } else {
+      c.checks().claim(study::Kind::verification, "v1.no_fold_no_tear." + v.id,
+                       "thickness along RD, 45 deg and TD between 0.5 and " + fmt_fixed(t_hi, 2) + " mm at the end (" +
+                           v.label + ")",
+                       tmin >= 0.5 && tmax <= t_hi,
+                       "pure hoop compression of the rim from r = 53.75 to 30.6 mm thickens it at most by (53.75 / "
+                       "30.6)^(1 / (1 + r_min)) with r_min = " + fmt(r_min) + " the lowest r-value; thinner than half "
+                       "the blank is a tear (a neck at the punch nose)");
+    }
     if (drawn)
       c.checks().claim(study::Kind::verification, "v1.flange_out." + v.id,
                      "every rim node inside r = 41.2 mm at the end: the flange has left the holder (" + v.label + ")",
@@ -223,17 +261,23 @@ void body(study::Chapter& c) {
   double mirror = 0;  // the mesh is mirror-symmetric about 45 deg: so must the von Mises profile be
   for (std::size_t k = 0; k < pv.size(); ++k) mirror = std::max(mirror, std::abs(pv[k].second - pv[pv.size() - 1 - k].second));
   c.value("vm_mirror", fmt_fixed(mirror, 3), "mm");
-  const std::string what = drawn ? "cup height h: (h_max - h_min) / h_mean" : "flange outline r: (r_max - r_min) / (53.75 mm - r_mean)";
+  const std::string what = drawn ? "cup height" : "flange outline (rim radius)";
   c.value("profile", drawn ? "the cup height" : "the flange outline (rim radius) at the end of the partial stroke");
   c.value("heights_are", drawn ? "the predicted heights of the drawn cup"
                                : "heights of the part-drawn cup (wall and rim still in the flange) after a partial "
                                  "stroke, not the predicted cup: only the full tier draws the cup out");
+  const auto es = ext(profile("hill48_s"));
+  c.value("vm_spread", fmt_fixed(ev[1] - ev[3], 3), "mm");
+  c.value("hs_spread_tenth", fmt_fixed(0.1 * (es[1] - es[3]), 3), "mm");
   c.checks().claim(study::Kind::verification, "v1.von_mises.earing_small",
-                   "von Mises, " + what + " below the mesh's angular error at the flange's mid radius",
-                   vm_rel <= e_mesh,
-                   "an isotropic sheet has no earing; the quarter O-grid's ring elements span unequal angles "
-                   "(relative error " + fmt_fixed(100 * e_mesh, 2) + " % at r = " + fmt_fixed(r_mid, 1) +
-                       " mm, computed from the mesh before the run), the only source of a spurious one");
+                   "von Mises, " + what + ": max - min below a tenth of the Hill'48 stress-ratio cup's",
+                   ev[1] - ev[3] <= 0.1 * (es[1] - es[3]),
+                   "an isotropic sheet has no earing.  The mesh is polar wherever the sheet is drawn (rows are "
+                   "circles and ring lines radial at equal angles from " + fmt_fixed(rp, 1) + " mm out, inside the "
+                   "flat punch face; its angular error at the flange's mid radius is " + fmt_fixed(100 * e_mesh, 2) +
+                   " %, computed before the run), so a von Mises earing is numerical noise; it must stay below a "
+                   "tenth of the anisotropic earing it would blur (the stress-ratio calibration, the one that "
+                   "draws out)");
   const auto at = [](const std::vector<std::pair<double, double>>& p, double a) {
     std::pair<double, double> best = p.front();
     for (const auto& q : p)
@@ -253,6 +297,7 @@ void body(study::Chapter& c) {
   c.save(ot, "flange_outline");
   c.save(ft, "punch_force");
   c.save(tt, "thickness");
+  c.save(gt, "hourglass_regions");
   c.save(st, "summary");
   const auto& r0 = runs.front();
   c.value("elements", std::to_string(r0.elements));
@@ -276,5 +321,7 @@ int main(int argc, char** argv) {
   ch.options().add(g_through, "through", "elements through the thickness (at least 3)");
   ch.options().add(g_cycles, "cycles", "explicit cycles over the stroke (sets the mass scaling)");
   ch.options().add(g_stroke, "stroke", "punch travel [mm]");
+  ch.options().add(g_ramp, "ramp", "punch travel over which the punch accelerates uniformly from rest [mm]");
+  ch.options().add(g_polar, "polar-radius", "quarter disk: rows are circles from this radius out [mm] (< 0: the deck's, 0: none)");
   return study::run_chapter(ch, argc, argv, body);
 }

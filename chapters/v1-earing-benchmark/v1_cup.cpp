@@ -47,6 +47,8 @@ toml::table deck_table(const std::string& deck, const Variant& var, const RunSpe
   mesh->insert_or_assign("core", int64_t{spec.core});
   mesh->insert_or_assign("ring", int64_t{spec.ring});
   mesh->insert_or_assign("through", int64_t{spec.through});
+  if (spec.polar_radius == 0) mesh->erase("polar_radius");
+  if (spec.polar_radius > 0) mesh->insert_or_assign("polar_radius", spec.polar_radius);
   mat->insert_or_assign("type", var.type);
   if (var.type == "hill48") {
     toml::table h;
@@ -64,11 +66,52 @@ toml::table deck_table(const std::string& deck, const Variant& var, const RunSpe
   return root;
 }
 
+// Energy stored in the hourglass springs of every element [mJ], by mode group (in-plane xi*eta, twist
+// xi*eta, xi*eta*zeta): 32 Q^2 / K per mode (Q += dt K/64 q, power Q q), with K of the element kernel
+// (src/fe/element_kernel.hpp) on the element's current volume and half-lengths along its natural axes.
+std::vector<std::array<double, 3>> hourglass_stored(const fe::Solver& s, const fe::Mesh& mesh, double E, double nu) {
+  const double G = E / (2 * (1 + nu));
+  const auto& q = s.hourglass_forces();
+  std::vector<std::array<double, 3>> out(mesh.hex.size());
+  for (std::size_t e = 0; e < mesh.hex.size(); ++e) {
+    double ex[8], ey[8], ez[8];
+    for (int a = 0; a < 8; ++a) ex[a] = s.x()[mesh.hex[e][a]], ey[a] = s.y()[mesh.hex[e][a]], ez[a] = s.z()[mesh.hex[e][a]];
+    const double V = fe::hex_volume(ex, ey, ez);
+    // half-lengths: half the mean length of the 4 edges along xi (0-1), eta (0-3), zeta (0-4)
+    const int edges[3][4][2] = {{{0, 1}, {3, 2}, {4, 5}, {7, 6}}, {{0, 3}, {1, 2}, {4, 7}, {5, 6}}, {{0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+    double ih2[3];
+    for (int d = 0; d < 3; ++d) {
+      double len = 0;
+      for (const auto& ed : edges[d])
+        len += 0.25 * std::sqrt(std::pow(ex[ed[1]] - ex[ed[0]], 2) + std::pow(ey[ed[1]] - ey[ed[0]], 2) +
+                                std::pow(ez[ed[1]] - ez[ed[0]], 2));
+      ih2[d] = 4.0 / (len * len);
+    }
+    const double K2[3] = {E * V * ih2[0] / 3, E * V * ih2[1] / 3, G * V * (ih2[0] + ih2[1]) / 3};
+    for (int i = 0; i < 3; ++i) {
+      const double w2 = 32 * q[6 * e + i] * q[6 * e + i] / K2[i];
+      const double w3 = 32 * q[6 * e + 3 + i] * q[6 * e + 3 + i] / (E * V * ih2[i] / 9);
+      out[e][i < 2 ? 0 : 1] += w2;
+      out[e][2] += w3;
+    }
+  }
+  return out;
+}
+
 }  // namespace
+
+int region_of(double r, double z) {
+  if (r < 25.0) return 0;
+  if (r < 30.0) return 1;
+  if (r >= 41.2) return 4;
+  return z >= 11.04 ? 2 : 3;
+}
 
 CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec, const std::string& vtu) {
   std::ostringstream text;
-  text << deck_table(deck, var, spec);
+  const toml::table root = deck_table(deck, var, spec);
+  text << root;
+  const double young = root["material"]["E"].value_or(0.0), poisson = root["material"]["nu"].value_or(0.0);
   io::Deck d = io::parse_deck(text.str(), deck);
   fe::Model& m = d.model;
   if (m.steps.size() != 2) throw InputError(deck + ": expected two steps (settle, draw)");
@@ -79,7 +122,8 @@ CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec,
   // Mass scaling: the stroke in spec.cycles cycles.
   const double dt = spec.stroke / spec.speed / static_cast<double>(spec.cycles);
   m.target_dt = dt / m.dt_safety;
-  const double tr = 0.02 * static_cast<double>(spec.cycles) * dt;  // speed ramp over 2 % of the cycles
+  // speed ramp: uniform acceleration over spec.ramp mm (time 2 ramp / speed), or over 2 % of the cycles
+  const double tr = spec.ramp > 0 ? 2.0 * spec.ramp / spec.speed : 0.02 * static_cast<double>(spec.cycles) * dt;
   punch->speed = {{0.0, tr}, {0.0, spec.speed}};
   m.steps[1].duration = spec.stroke / spec.speed + 0.5 * tr;
   m.steps[0].duration = 200 * dt;
@@ -95,12 +139,32 @@ CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec,
   const long every = std::max(1L, spec.cycles / 300);
   const long c0 = s.cycles();
   int reported = 0;
+  std::vector<double> hg_work(mesh.hex.size(), 0.0);
+  const auto regions = [&](double travel) {  // where the hourglass energy is now
+    const auto stored = hourglass_stored(s, mesh, young, poisson);
+    std::array<std::array<double, 6>, 5> acc{};
+    for (std::size_t e = 0; e < mesh.hex.size(); ++e) {
+      double cx = 0, cy = 0, cz = 0;
+      for (int a = 0; a < 8; ++a) cx += s.x()[mesh.hex[e][a]] / 8, cy += s.y()[mesh.hex[e][a]] / 8, cz += s.z()[mesh.hex[e][a]] / 8;
+      auto& row = acc[region_of(std::hypot(cx, cy), cz)];
+      row[2] += hg_work[e];
+      for (int k = 0; k < 3; ++k) row[3 + k] += stored[e][k];
+    }
+    for (int g = 0; g < 5; ++g) {
+      acc[g][0] = travel, acc[g][1] = g;
+      r.hourglass_regions.push_back(acc[g]);
+    }
+  };
   s.run_step(1, [&](const fe::Progress& p) {
+    const auto& inc = s.hourglass_increments();
+    for (std::size_t e = 0; e < hg_work.size(); ++e) hg_work[e] += inc[e];
     const auto& e = s.energies();
-    if (e.internal > 0 && p.step_time > 0.1 * m.steps[1].duration) r.max_kinetic_ratio = std::max(r.max_kinetic_ratio, e.kinetic / e.internal);
-    const int tenths = static_cast<int>(10.0 * p.step_time / m.steps[1].duration);
+    const double travel = s.tool_offset("punch")[2] - z0;  // [mm]
+    if (e.internal > 0 && travel > 0.1 * spec.stroke) r.max_kinetic_ratio = std::max(r.max_kinetic_ratio, e.kinetic / e.internal);
+    const int tenths = static_cast<int>(10.0 * travel / spec.stroke + 1e-9);
     if (tenths > reported) {  // progress: one line per tenth of the stroke
       reported = tenths;
+      regions(travel);
       std::ostringstream line;
       line << "  cup " << var.id << ": " << 10 * tenths << " % of " << spec.stroke << " mm (cycle " << p.cycle - c0
            << "), punch force " << -4e-3 * s.tool_force("punch")[2] << " kN, kinetic/internal "
@@ -109,8 +173,9 @@ CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec,
       std::fputs(line.str().c_str(), stderr);
     }
     if (p.cycle % every) return;
-    r.curve.push_back({s.tool_offset("punch")[2] - z0, -4.0 * s.tool_force("punch")[2]});  // full blank
+    r.curve.push_back({travel, -4.0 * s.tool_force("punch")[2]});  // full blank
   });
+  if (reported < 10) regions(s.tool_offset("punch")[2] - z0);  // the end, when the last cycle fell short of it
   r.cycles = s.cycles();
   const auto& e = s.energies();
   r.kinetic_ratio = e.internal > 0 ? e.kinetic / e.internal : 0;
@@ -183,18 +248,28 @@ Extrema extrema(const std::vector<std::pair<double, double>>& h) {
   return x;
 }
 
+double polar_start(const std::string& deck, const RunSpec& spec) {
+  const toml::table root = deck_table(deck, Variant{}, spec);
+  const double R = root["mesh"]["radius"].value_or(0.0), cf = root["mesh"]["core_fraction"].value_or(0.5);
+  const double pr = root["mesh"]["polar_radius"].value_or(0.0), a = cf * R;
+  return pr > 0 ? a + (R - a) * std::floor(spec.ring * (pr - a) / (R - a)) / spec.ring : 0.0;
+}
+
 double mesh_angular_error(const std::string& deck, const RunSpec& spec, double r) {
-  // The ring of the O-grid (src/fe/disk.hpp): line k runs straight from the k-th core boundary point to the arc
-  // point at k/(2n) x 90 deg.  Where does it cross radius r?
-  toml::table root = toml::parse_file(deck);
+  // The ring of the O-grid (src/fe/disk.hpp): line k runs straight from the k-th core boundary point to its
+  // point at k/(2n) x 90 deg on the circle of radius rp (the rim, or the start of the polar part), then
+  // radially.  Where does it cross radius r?
+  const toml::table root = deck_table(deck, Variant{}, spec);
   const double R = root["mesh"]["radius"].value_or(0.0), cf = root["mesh"]["core_fraction"].value_or(0.5);
   const int n = spec.core;
   const double a = cf * R;
+  const double rp = polar_start(deck, spec) > 0 ? polar_start(deck, spec) : R;
+  if (r >= rp) return 0;  // radial lines at equal angles
   std::vector<double> phi;
   for (int k = 0; k <= 2 * n; ++k) {
     const double px = k <= n ? a : a * (2 * n - k) / n, py = k <= n ? a * k / n : a;
     const double th = 0.5 * kPi * k / (2 * n);
-    const double ax = R * std::cos(th), ay = R * std::sin(th);
+    const double ax = rp * std::cos(th), ay = rp * std::sin(th);
     double lo = 0, hi = 1;  // |P + s (A - P)| grows along the line
     for (int it = 0; it < 100; ++it) {
       const double sm = 0.5 * (lo + hi);
