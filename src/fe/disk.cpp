@@ -22,13 +22,30 @@ Mesh quarter_disk(const QuarterDiskSpec& s) {
     }
   auto boundary = [&](int k) { return k <= n ? core_id(n, k) : core_id(2 * n - k, n); };
   auto ring_id = [&](int k, int r) { return r == 0 ? boundary(k) : (n + 1) * (n + 1) + k * m + (r - 1); };
+  // Polar part: rows mp..m are circles, row mp at radius rp (row mp of the 0-degree line).
+  int mp = m;
+  double rp = s.radius;
+  if (s.polar_radius > 0) {
+    mp = static_cast<int>(std::floor(m * (s.polar_radius - a) / (s.radius - a)));
+    rp = a + (s.radius - a) * mp / m;
+    if (!(rp > a * std::sqrt(2.0) && s.polar_radius < s.radius))
+      throw std::invalid_argument("quarter_disk: polar_radius must lie between the core's corner and the rim by at "
+                                  "least one row");
+  }
   for (int k = 0; k <= 2 * n; ++k) {
     const double th = 0.5 * M_PI * k / (2.0 * n);
+    const double c = k == 2 * n ? 0.0 : std::cos(th), sn = k == 0 ? 0.0 : std::sin(th);
     const double bx = px[boundary(k)], by = py[boundary(k)];
-    const double cx = k == 2 * n ? 0.0 : s.radius * std::cos(th), cy = k == 0 ? 0.0 : s.radius * std::sin(th);
+    const double cx = rp * c, cy = rp * sn;  // end of the straight part (the rim without a polar part)
     for (int r = 1; r <= m; ++r) {
-      px.push_back(bx + (cx - bx) * r / m);
-      py.push_back(by + (cy - by) * r / m);
+      if (r <= mp) {
+        px.push_back(bx + (cx - bx) * r / mp);
+        py.push_back(by + (cy - by) * r / mp);
+      } else {
+        const double rr = rp + (s.radius - rp) * (r - mp) / (m - mp);
+        px.push_back(rr * c);
+        py.push_back(rr * sn);
+      }
     }
   }
   // Plan-view quads, counter-clockwise seen from +z.

@@ -84,6 +84,9 @@ class Solver {
   /// diagnostics and tests.
   const std::vector<double>& hourglass_forces() const { return hgq_; }
   const std::vector<double>& hourglass_ratio() const { return hg_ratio_; }
+  /// Hourglass work of each element in the last cycle [mJ] (sums to the
+  /// cycle's increment of energies().hourglass); for diagnostics.
+  const std::vector<double>& hourglass_increments() const { return hg_inc_; }
   double added_mass() const { return added_mass_; }   ///< mass added by scaling [t]
   double physical_mass() const { return phys_mass_; }
   /// Reaction force [N] of the boundary conditions on node set `set` in the

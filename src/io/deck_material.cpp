@@ -264,7 +264,8 @@ std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const
 
 fe::Mesh make_quarter_disk(const DeckContext& c, const toml::table& t) {
   const std::size_t before = c.count();
-  c.allowed(t, "mesh", {"kind", "radius", "thickness", "core_fraction", "core", "ring", "through"});
+  c.allowed(t, "mesh", {"kind", "radius", "thickness", "core_fraction", "core", "ring", "through",
+                          "polar_radius"});
   fe::QuarterDiskSpec s;
   s.radius = c.positive(t, "radius", "mesh");
   s.thickness = c.positive(t, "thickness", "mesh");
@@ -272,6 +273,7 @@ fe::Mesh make_quarter_disk(const DeckContext& c, const toml::table& t) {
   s.core = c.count_of(t, "core", "mesh", s.core, 1);
   s.ring = c.count_of(t, "ring", "mesh", s.ring, 1);
   s.through = c.count_of(t, "through", "mesh", s.through, 1);
+  if (t.contains("polar_radius")) s.polar_radius = c.positive(t, "polar_radius", "mesh");
   if (c.count() > before) return {};
   try {
     return fe::quarter_disk(s);

@@ -8,10 +8,14 @@
 //  - On the Table 3.1 curve mu rises as the speed falls (Sec. 3.3.2): at
 //    10 MPa, mu(1 mm/s) > mu(10 mm/s), since Eq. (3.2) falls with L = v eta/(p Ra).
 //  - Tables 3.1 and 3.3 differ only in mu_BL (0.1 against 0.131, Sec. 3.5.1).
+//  - The ESAFORM 2021 cup's Hill'48 variants (data/benchmarks/esaform2021.csv,
+//    chapter v1-earing-benchmark) use the published tests of
+//    data/materials/aa6016_t4_esaform2021.csv: r0/r45/r90 and s45/s90/sb equal.
 #define BOOST_TEST_MODULE thesis_tables
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <map>
 #include <string>
 
 #include "analysis/stribeck.hpp"
@@ -52,4 +56,33 @@ BOOST_AUTO_TEST_CASE(tables_3_1_and_3_3_differ_only_in_mu_bl) {
   BOOST_TEST(a.eta_Pa_s == b.eta_Pa_s);
   BOOST_TEST(a.mu_BL == 0.1);
   BOOST_TEST(b.mu_BL == 0.131);
+}
+
+BOOST_AUTO_TEST_CASE(esaform2021_variants_are_the_published_tests) {
+  const std::string data = std::string(DRAWBEND_DATA_DIR) + "/";
+  const CsvTable mt = read_csv(data + "materials/aa6016_t4_esaform2021.csv");
+  std::map<std::string, double> pub;  // "r0", "s45", "sb", ...
+  for (const auto& row : mt.rows) {
+    const std::string test = mt.text(row, "test"), ang = mt.text(row, "angle_deg");
+    if (test == "uniaxial") pub["s" + ang] = mt.number(row, "stress_ratio"), pub["r" + ang] = mt.number(row, "r_value");
+    if (test == "balanced_biaxial") pub["sb"] = mt.number(row, "stress_ratio");
+  }
+  const CsvTable vt = read_csv(data + "benchmarks/esaform2021.csv");
+  int seen = 0;
+  for (const auto& row : vt.rows) {
+    const std::string id = vt.text(row, "variant");
+    const char* keys_r[] = {"r0", "r45", "r90"};
+    const char* keys_s[] = {"s45", "s90", "sb"};
+    if (id == "hill48_r")
+      for (const char* k : keys_r) {
+        BOOST_TEST(vt.number(row, k) == pub.at(k));
+        ++seen;
+      }
+    if (id == "hill48_s")
+      for (const char* k : keys_s) {
+        BOOST_TEST(vt.number(row, k) == pub.at(k));
+        ++seen;
+      }
+  }
+  BOOST_TEST(seen == 6);
 }

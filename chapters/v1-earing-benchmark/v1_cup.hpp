@@ -1,0 +1,77 @@
+#pragma once
+// One ESAFORM 2021 cup (chapter v1-earing-benchmark): draw a quarter blank
+// with a material variant and measure the cup.  Units: mm, N, MPa, s.
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace v1 {
+
+/// A material variant of data/benchmarks/esaform2021.csv.
+struct Variant {
+  std::string id, type, label;
+  double r0 = 0, r45 = 0, r90 = 0;  ///< r-values (hill48 from r-values), or 0
+  double s45 = 0, s90 = 0, sb = 0;  ///< yield-stress ratios to RD (hill48 from stresses), or 0
+};
+
+/// Mesh and loading of a run.
+struct RunSpec {
+  double stroke = 45.0;  ///< punch travel [mm]
+  long cycles = 60000;   ///< cycles over the stroke (sets the mass scaling: dt = stroke / speed / cycles)
+  double ramp = 0.0;     ///< punch travel over which the punch accelerates uniformly from rest [mm] (0: 2 % of the cycles)
+  double speed = 100.0;  ///< punch speed [mm/s] (rate-independent material and Coulomb friction: only dt x speed matters)
+  int core = 8, ring = 14, through = 3;  ///< quarter_disk element counts
+  double polar_radius = -1;  ///< quarter_disk rows are circles from this radius out [mm]; 0: none; < 0: the deck's
+};
+
+struct CupResult {
+  std::vector<std::pair<double, double>> curve;  ///< (punch travel [mm], punch force of the full blank [N])
+  /// Per rim column: angle from RD [deg] (reference), cup height [mm] = outer bottom (top face at the centre)
+  /// minus the rim column's mean z.
+  std::vector<std::pair<double, double>> height;
+  /// Per rim column: angle from RD [deg] (reference), the column's mean radius [mm] (the flange outline while
+  /// the flange is under the holder: the larger the radius, the more sheet is left to draw, the higher the wall).
+  std::vector<std::pair<double, double>> outline;
+  /// Thickness lines at the end: angle (0, 45, 90), initial radius [mm], current radius [mm], current z [mm],
+  /// thickness [mm] (distance of the top node from the bottom node of the column).
+  std::vector<std::array<double, 5>> thickness;
+  /// Where the hourglass energy is, at each tenth of the stroke: punch travel [mm], region (index into
+  /// kRegions, by the element centre's current position), hourglass work done so far in the region's current
+  /// elements [mJ, quarter blank], and the energy stored in the hourglass springs by mode [mJ]: xi*eta in plane
+  /// (the element's in-plane bending), xi*eta out of plane (twist), xi*eta*zeta.
+  std::vector<std::array<double, 6>> hourglass_regions;
+  double volume_ratio = 0;  ///< current volume / initial volume of the sheet
+  double kinetic_ratio = 0, max_kinetic_ratio = 0, hourglass_ratio = 0, balance_error = 0;
+  double added_mass_ratio = 0;
+  double rim_r_max = 0;  ///< largest radius of a rim node at the end [mm] (< 41.2: the flange has left the holder)
+  double rim_z_min = 0;  ///< lowest rim node at the end [mm]
+  long cycles = 0;
+  int elements = 0, layers = 0;
+};
+
+/// Regions of the cup by the current position of an element's centre (radius r, height z; tools as in the
+/// deck): punch face r < 25, punch nose 25 <= r < 30, wall r < 41.2 above the die shoulder (z >= 11.04),
+/// die shoulder and free span r < 41.2 below it, flange r >= 41.2 (under the holder).  Units: mm.
+inline constexpr const char* kRegions[5] = {"punch face", "punch nose", "wall", "die shoulder", "flange"};
+int region_of(double r, double z);
+
+/// Draw the cup from `deck` with `variant`; writes the final fields to `vtu` when set.
+CupResult draw(const std::string& deck, const Variant& variant, const RunSpec& spec, const std::string& vtu);
+
+/// Ears (local maxima) and troughs (local minima) of a profile h(theta) on 0..90 deg mirrored about 0 and
+/// 90 deg (orthotropic symmetry): (angle, height) each.
+struct Extrema {
+  std::vector<std::pair<double, double>> ears, troughs;
+};
+Extrema extrema(const std::vector<std::pair<double, double>>& h);
+
+/// Relative departure of the quarter-disk mesh from polar symmetry: the largest |w_k / mean(w) - 1| of the
+/// angular widths w_k of the ring elements at reference radius r (before any run).
+/// Radius from which the quarter disk's rows are circles [mm] (mesh.polar_radius rounded down to a row of the
+/// 0-degree line, src/fe/disk.hpp); 0 when the deck and spec set none.
+double polar_start(const std::string& deck, const RunSpec& spec);
+
+double mesh_angular_error(const std::string& deck, const RunSpec& spec, double r);
+
+}  // namespace v1
