@@ -124,7 +124,7 @@ void body(study::Chapter& c) {
                     "Where the hourglass energy is (quarter blank), each tenth of the stroke: work done so far in the "
                     "region's elements, and the energy stored in the hourglass springs by mode (xi*eta in plane, "
                     "xi*eta twist, xi*eta*zeta)");
-  auto st = c.table({"variant", "h_mean_mm", "h_max_mm", "at_deg", "h_min_mm", "at_deg", "earing_pct", "ears",
+  auto st = c.table({"variant", "h_mean_mm", "h_max_mm", "h_max_at_deg", "h_min_mm", "h_min_at_deg", "earing_pct", "ears",
                      "troughs", "max_force_kN", "volume_change_pct", "kinetic_over_internal", "max_kinetic_over_internal",
                      "hourglass_over_internal", "energy_balance_error", "added_mass_ratio", "cycles", "elements"},
                     "ESAFORM 2021 cup: summary per material variant (h: cup height; ears/troughs of the checked profile, cup "

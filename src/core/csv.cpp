@@ -158,7 +158,12 @@ std::string csv_quote(const std::string& cell) {
   return out + "\"";
 }
 
-CsvWriter::CsvWriter(std::vector<std::string> header) : header_(std::move(header)) {}
+CsvWriter::CsvWriter(std::vector<std::string> header) : header_(std::move(header)) {
+  // The readers (parse_csv) refuse a repeated column name, so never write one.
+  for (std::size_t i = 0; i < header_.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (header_[i] == header_[j]) throw std::logic_error("CsvWriter: column '" + header_[i] + "' named twice");
+}
 void CsvWriter::comment(const std::string& line) { comments_.push_back(line); }
 void CsvWriter::row(const std::vector<std::string>& cells) {
   if (cells.size() != header_.size())

@@ -242,7 +242,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   } else {
     rs = read_checkpoint(opt.restart, deck.hash, solver);
     for (const auto& row : rs.history_rows) hist.row(row);
-    log << "restarted from " << opt.restart << " at t = " << solver.time() << " s, cycle " << solver.cycles() << "\n";
+    log << "restarted from " << opt.restart << " at t = " << solver.time() << " s, cycle " << solver.cycles() << std::endl;  // flushed: a watcher may act on it
   }
   double& next_hist = rs.next_hist;
   double& next_field = rs.next_field;

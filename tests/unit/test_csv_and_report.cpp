@@ -2,6 +2,8 @@
 // Closed-form answers:
 //  - split_csv_line("a,\"b,c\",d") = {a, "b,c", d}.
 //  - A ragged row is an InputError naming file:line; a non-number names file:line:column.
+//  - a CsvWriter with a column named twice is refused (std::logic_error): the
+//    readers refuse such a file, so a chapter must fail when it makes one;
 //  - markdown_table escapes '|'; {{key}} expands to "value unit"; an unknown key
 //    is an InputError naming the source line.
 #define BOOST_TEST_MODULE csv_and_report
@@ -42,6 +44,11 @@ BOOST_AUTO_TEST_CASE(split_and_read) {
   } catch (const InputError& e) {
     BOOST_TEST(std::string(e.what()).find(":2:") != std::string::npos);
   }
+}
+
+BOOST_AUTO_TEST_CASE(writer_refuses_a_repeated_column) {
+  BOOST_CHECK_THROW(CsvWriter({"angle_deg", "h_mm", "angle_deg"}), std::logic_error);
+  BOOST_CHECK_NO_THROW(CsvWriter({"h_max_at_deg", "h_min_at_deg"}));
 }
 
 BOOST_AUTO_TEST_CASE(markdown_expansion) {
