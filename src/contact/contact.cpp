@@ -81,8 +81,22 @@ Vec3 friction_force(const ContactView& v, int k, const ContactNode& c, const Vec
   const Vec3 ax = v.texture ? texture_axis(v.texture[k], v.x, v.y, v.z) : v.rolling_direction;
   const double an = dot(ax, n);
   Vec3 e1{ax[0] - an * n[0], ax[1] - an * n[1], ax[2] - an * n[2]};
-  const double e1n = std::sqrt(dot(e1, e1));
-  if (e1n > 1e-12) for (double& x : e1) x /= e1n;
+  double e1n = std::sqrt(dot(e1, e1));
+  if (!(e1n > 1e-12)) {
+    // RD along the normal (a fixed RD meets a wall square to it, e.g. a cup
+    // wall on the RD symmetry plane): the texture has no direction in the
+    // tangent plane.  Take the global axis least aligned with n instead; an
+    // isotropic law does not see the choice.  (Before, e1 = e2 = 0 here made
+    // the limit phi = 0, and the node's friction was never limited: it stuck.)
+    const double a0 = std::abs(n[0]), a1 = std::abs(n[1]), a2 = std::abs(n[2]);
+    const int a = a0 <= a1 && a0 <= a2 ? 0 : (a1 <= a2 ? 1 : 2);
+    e1 = {0, 0, 0};
+    e1[a] = 1;
+    const double gn = n[a];
+    for (int d = 0; d < 3; ++d) e1[d] -= gn * n[d];
+    e1n = std::sqrt(dot(e1, e1));
+  }
+  for (double& x : e1) x /= e1n;
   const Vec3 e2{n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2], n[0] * e1[1] - n[1] * e1[0]};
   friction::ContactState st;
   st.pressure = c.pressure;
