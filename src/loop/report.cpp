@@ -1,6 +1,8 @@
 // Loop outputs; see report.hpp.
 #include "loop/report.hpp"
 
+#include <algorithm>
+
 #include "loop/friction_model.hpp"
 
 #include <cmath>
@@ -49,7 +51,10 @@ CsvWriter steps_table(const LoopResult& r) {
 
 CsvWriter residuals_table(const Design& d, const LoopResult& r) {
   std::vector<std::string> h = {"line", "test_id", "pin", "resid_before_N", "resid_after_N"};
-  for (const auto& c : r.candidates) h.push_back(c.name);
+  // A candidate named like a fixed column (the categorical candidate "pin", the
+  // pin diameter as a group) gets "_candidate": a column is never named twice.
+  for (const auto& c : r.candidates)
+    h.push_back(std::find(h.begin(), h.begin() + 5, c.name) != h.begin() + 5 ? c.name + "_candidate" : c.name);
   CsvWriter w(h);
   w.comment(" held-out residual (measured - predicted outlet force, N) of the base model and of the final model;"
             " categorical candidates as level index");
