@@ -282,10 +282,13 @@ material::HardeningCurve current_curve(const DrawBendSpec& s) {
   if (const auto* vo = m["voce"].as_table())
     return material::HardeningCurve::voce((*vo)["sigma0"].value_or(0.0), (*vo)["Q"].value_or(0.0), (*vo)["b"].value_or(0.0));
   if (const auto* in = m["hardening"].as_table()) {
+    const auto* ax = (*in)["plastic_strain"].as_array();
+    const auto* ay = (*in)["true_stress_MPa"].as_array();
+    if (!ax || !ay) throw InputError("material: an inline hardening table needs plastic_strain and true_stress_MPa arrays");
     std::vector<double> x, y;
-    for (const auto& v : *(*in)["plastic_strain"].as_array()) x.push_back(v.value_or(0.0));
-    for (const auto& v : *(*in)["true_stress_MPa"].as_array()) y.push_back(v.value_or(0.0));
-    return material::HardeningCurve(x, y, "the inline curve");
+    for (const auto& v : *ax) x.push_back(v.value_or(std::nan("")));
+    for (const auto& v : *ay) y.push_back(v.value_or(std::nan("")));
+    return material::HardeningCurve(x, y, "the inline curve");  // checks lengths, finiteness, order
   }
   if (const auto f = m["hardening"].value<std::string>()) return material::HardeningCurve::load(*f);
   return material::HardeningCurve::load(s.hardening);

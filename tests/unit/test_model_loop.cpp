@@ -136,6 +136,9 @@ BOOST_AUTO_TEST_CASE(candidates_compose) {
       BOOST_TEST(R[i] + 30 * (1 - std::exp(-300 * ex[i])) == base.stress(ex[i]), boost::test_tools::tolerance(1e-12));
   BOOST_TEST(R.front() <= base.stress(0.0));
   BOOST_CHECK_THROW(sim::named_candidate("chaboche:0", DRAWBEND_DATA_DIR), InputError);
+  sim::DrawBendSpec bad = t;  // an inline curve without its arrays: an input error, not a crash
+  bad.material = "{ type = \"j2\", hardening = { plastic_strain = [0.0, 0.1] } }";
+  BOOST_CHECK_THROW(sim::named_candidate("chaboche:30", DRAWBEND_DATA_DIR).members[0].apply(bad), InputError);
 }
 
 BOOST_AUTO_TEST_CASE(nothing_held_out) {
