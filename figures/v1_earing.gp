@@ -1,9 +1,10 @@
 # ESAFORM 2021 cup: cup height against angle from RD, computed on 0-90 deg
 # (quarter model) and mirrored about RD and TD to 0-360 deg, per material variant.
 # Variables: outfile, datafile (variant,angle_from_RD_deg,value), ylab: the cup
-# height after a full draw, the flange outline (rim radius) after a partial stroke.
+# height after a full draw, the flange outline (rim radius) after a partial stroke;
+# stage: "end of stroke" or the partial stroke's travel.
 load figdir."/common.gp"
-set title "ESAFORM 2021 cup (AA6016-T4): earing profile, end of stroke"
+set title "ESAFORM 2021 cup (AA6016-T4): earing profile, ".stage
 set xlabel "angle from RD (deg)"
 set ylabel ylab
 set xrange [0:360]

@@ -307,7 +307,8 @@ void body(study::Chapter& c) {
   c.value("cycles", std::to_string(spec.cycles));
   c.plot("v1_earing", "fig_v1_earing",
          {{"datafile", c.out(drawn ? "tables/cup_height.csv" : "tables/flange_outline.csv")},
-          {"ylab", drawn ? "cup height (mm)" : "flange outline: rim radius (mm)"}});
+          {"ylab", drawn ? "cup height (mm)" : "flange outline: rim radius (mm)"},
+          {"stage", drawn ? "end of stroke" : "partial stroke of " + fmt(spec.stroke) + " mm"}});
   c.plot("v1_force", "fig_v1_force", {{"datafile", c.out("tables/punch_force.csv")}});
   c.plot("v1_thickness", "fig_v1_thickness", {{"datafile", c.out("tables/thickness.csv")}});
 }
