@@ -51,19 +51,6 @@ int count_files(const std::string& dir, const std::string& ext) {
   return n;
 }
 
-/// Distinct values of one key of the chapters' values.csv (e.g. "tier").
-std::vector<std::string> chapter_values(const std::vector<ChapterSource>& chapters, const std::string& key) {
-  std::set<std::string> s;
-  for (const auto& ch : chapters) {
-    const std::string p = ch.out_dir + "/values.csv";
-    if (!fs::exists(p)) continue;
-    const CsvTable t = read_csv(p);
-    for (const auto& r : t.rows)
-      if (t.text(r, "key") == key) s.insert(t.text(r, "value"));
-  }
-  return {s.begin(), s.end()};
-}
-
 /// Distinct program versions (git describe) recorded in the chapters' provenance.csv.
 std::vector<std::string> chapter_versions(const std::vector<ChapterSource>& chapters) {
   std::set<std::string> s;
@@ -81,6 +68,35 @@ std::string joined(const std::vector<std::string>& v, const std::string& none) {
   if (v.empty()) return none;
   std::string o;
   for (const auto& s : v) o += (o.empty() ? "" : ", ") + s;
+  return o;
+}
+
+/// The tier a chapter's values.csv states ("" when it states none).
+std::string chapter_tier(const ChapterSource& ch) {
+  const std::string p = ch.out_dir + "/values.csv";
+  if (!fs::exists(p)) return "";
+  const CsvTable t = read_csv(p);
+  for (const auto& r : t.rows)
+    if (t.text(r, "key") == "tier") return t.text(r, "value");
+  return "";
+}
+
+/// The mesh tiers of a mixed report, e.g. "full; quick for ch6-friction-model,
+/// ch8-model-loop": the tier most chapters ran, then each other tier with its chapters.
+std::string tiers_by_chapter(const std::vector<ChapterSource>& chapters) {
+  std::map<std::string, std::vector<std::string>> ids;
+  for (const auto& ch : chapters) {
+    const std::string t = chapter_tier(ch);
+    if (!t.empty()) ids[t].push_back(ch.id);
+  }
+  if (ids.empty()) return "unknown";
+  std::string main_tier;
+  std::size_t most = 0;
+  for (const auto& [t, v] : ids)
+    if (v.size() > most) most = v.size(), main_tier = t;
+  std::string o = main_tier;
+  for (const auto& [t, v] : ids)
+    if (t != main_tier) o += "; " + t + " for " + joined(v, "");
   return o;
 }
 
@@ -132,10 +148,9 @@ std::string abstract_paragraph(const std::vector<ChapterSource>& chapters) {
     }
   }
   std::ostringstream os;
-  const auto tiers = chapter_values(chapters, "tier");
   os << "This report rebuilds from source " << plural(tables, "table", "tables") << " and "
      << plural(figures, "figure", "figures") << " of the thesis in " << plural(ran, "chapter", "chapters")
-     << " (draw-bend meshes of the " << joined(tiers, "unknown") << " tier) and compares "
+     << " (mesh tier: " << tiers_by_chapter(chapters) << ") and compares "
      << plural(total.total(), "number", "numbers") << " with it. ";
   StatusCounts ours;  // our simulations against the thesis's simulations and measurements
   for (const char* k : {"simulated", "measured"})
@@ -194,7 +209,7 @@ std::string front_yaml(const std::vector<ChapterSource>& chapters, const FrontIn
   std::ostringstream os;
   os << "---\ntitle: " << yaml_quoted(title) << "\nlang: en\n"
      << "subtitle: " << yaml_quoted("Reproduces: " + info.citation) << "\n"
-     << "date: " << yaml_quoted("Mesh tier: " + joined(chapter_values(chapters, "tier"), "unknown") +
+     << "date: " << yaml_quoted("Mesh tier: " + tiers_by_chapter(chapters) +
                                 " (quick: the test suite's meshes, `make quick`; full: paper fidelity, `make`) \u00b7 "
                                 "computed by drawbend " + joined(chapter_versions(chapters), "unknown version") +
                                 " \u00b7 report assembled " + info.date)
@@ -240,12 +255,14 @@ std::string front_page(const std::vector<ChapterSource>& chapters, const FrontIn
   for (const auto& k : kind_order())
     if (by_kind.count(k)) kinds_present.push_back(k);
   os << "<div class=\"table-scroll\">\n<table class=\"summary-table\">\n<caption>Checks per chapter (number of "
-        "checks of each kind; not passing in brackets).</caption>\n<thead><tr><th>chapter</th>"
+        "checks of each kind; not passing in brackets).</caption>\n<thead><tr><th>chapter</th><th>tier</th>"
      << status_head;
   for (const auto& k : kinds_present) os << "<th class=\"num\">" << k << "</th>";
   os << "</tr></thead>\n<tbody>\n";
   for (const auto& c : all) {
-    os << "<tr><td><a href=\"#checks-" << c.ch->id << "\">" << html_escape(chapter_title(*c.ch)) << "</a></td>";
+    const std::string tier = chapter_tier(*c.ch);
+    os << "<tr><td><a href=\"#checks-" << c.ch->id << "\">" << html_escape(chapter_title(*c.ch)) << "</a></td><td>"
+       << html_escape(tier.empty() ? "\u2013" : tier) << "</td>";
     if (!c.present) {
       os << "<td colspan=\"" << 5 + kinds_present.size() << "\">not run</td></tr>\n";
       continue;

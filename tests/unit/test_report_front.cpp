@@ -39,13 +39,14 @@ BOOST_AUTO_TEST_CASE(rounding_and_units) {
   BOOST_TEST(display_value("n/a", "N", "1") == "n/a");
 }
 
-static ChapterSource chapter(const fs::path& root, const std::string& id, const std::string& checks) {
+static ChapterSource chapter(const fs::path& root, const std::string& id, const std::string& checks,
+                             const std::string& tier = "quick") {
   const fs::path src = root / "src" / id, out = root / "out" / id;
   fs::create_directories(src);
   fs::create_directories(out / "figures");
   write_file_atomic((src / "intro.md").string(), "# Chapter X \u2014 A title {#" + id + "}\n\ntext\n");
   write_file_atomic((out / "checks.csv").string(), checks);
-  write_file_atomic((out / "values.csv").string(), "key,value,unit\ntier,quick,\n");
+  write_file_atomic((out / "values.csv").string(), "key,value,unit\ntier," + tier + ",\n");
   write_file_atomic((out / "figures" / "a.svg").string(), "<svg/>");
   return {id, src.string(), out.string()};
 }
@@ -66,7 +67,7 @@ BOOST_AUTO_TEST_CASE(front_page_counts_by_kind) {
   BOOST_TEST(a.find("1 is not reproduced") != std::string::npos, a);
   BOOST_TEST(a.find("(2 checks) confirms 1 value and finds 1 erratum") != std::string::npos, a);
   BOOST_TEST(a.find("No check fails.") != std::string::npos, a);
-  BOOST_TEST(a.find("quick tier") != std::string::npos, a);
+  BOOST_TEST(a.find("(mesh tier: quick)") != std::string::npos, a);
   const std::string y = front_yaml(chs, {"*T*", "2026-01-01"}, "It's a title");
   BOOST_TEST(y.find("title: 'It''s a title'") != std::string::npos, y);
   BOOST_TEST(y.find("subtitle: 'Reproduces: *T*'") != std::string::npos, y);
@@ -93,4 +94,24 @@ BOOST_AUTO_TEST_CASE(missing_kind_column_is_unclassified) {
   BOOST_TEST(f.find("unclassified") != std::string::npos);
   BOOST_TEST(abstract_paragraph(chs).find("do not record the kind") != std::string::npos);
   BOOST_TEST(checks_html_table(t, "c").find(">yes<") != std::string::npos);
+}
+
+// A report whose chapters ran different tiers (make runs some chapters on the
+// quick tier) names the tier most chapters ran, then each other tier with its
+// chapters; the per-chapter table has a tier column.
+BOOST_AUTO_TEST_CASE(front_page_states_each_chapters_tier) {
+  const fs::path root = fs::temp_directory_path() / "drawbend_front_tier_test";
+  fs::remove_all(root);
+  const std::string head = "id,kind,quantity,thesis,ours,tolerance,unit,status,note\n";
+  std::vector<ChapterSource> chs{chapter(root, "cha", head + "a.1,simulated,F,1,1,0.1,N,pass,ok\n", "full"),
+                                 chapter(root, "chb", head + "b.1,simulated,F,1,1,0.1,N,pass,ok\n", "quick"),
+                                 chapter(root, "chc", head + "c.1,simulated,F,1,1,0.1,N,pass,ok\n", "full")};
+  const std::string a = abstract_paragraph(chs);
+  BOOST_TEST(a.find("(mesh tier: full; quick for chb)") != std::string::npos, a);
+  const std::string y = front_yaml(chs, {"*T*", "2026-01-01"}, "t");
+  BOOST_TEST(y.find("Mesh tier: full; quick for chb") != std::string::npos, y);
+  const std::string f = front_page(chs, {"*T*", "2026-01-01"});
+  BOOST_TEST(f.find("<th>tier</th>") != std::string::npos);
+  BOOST_TEST(f.find("</a></td><td>quick</td>") != std::string::npos);
+  fs::remove_all(root);
 }
