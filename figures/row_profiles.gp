@@ -6,6 +6,8 @@ set title title_text
 set xlabel "Angle round the pin from the inlet tangent point (deg)"
 set ylabel "Contact pressure (MPa)"
 set xrange [-10:100]
-set key top center
+set key below horizontal center height 1.5 samplen 2  # clear of the peaks and the x label
 n = system("head -50 ".datafile." | grep -v '^#' | head -1 | tr ',' '\\n' | wc -l") + 0
-plot for [k=2:n] datafile using 1:k with linespoints ls (k-1) ps 0.5
+# Key entries from the column names: p_y<row> -> "y = <row> mm".
+titles = system("grep -v '^#' ".datafile." | head -1 | tr ',' '\\n' | sed -e 's/^p_y\\(.*\\)$/\"y = \\1 mm\"/' -e 's/^\\([^\"].*\\)$/\"\\1\"/' | tr '\\n' ' '")
+plot for [k=2:n] datafile using 1:k with linespoints ls (k-1) ps 0.5 title word(titles, k)
