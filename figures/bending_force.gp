@@ -5,8 +5,8 @@
 # (F_back_N, F_B_ours_N), title_text.
 load figdir."/common.gp"
 set title title_text
-set xlabel "Back tension F_{back} (N, full strip)"
-set ylabel "Bending force F_B (N, full strip)"
+set xlabel "Back tension F_{back} (N, full strip)" enhanced
+set ylabel "Bending force F_B (N, full strip)" enhanced
 set key below horizontal
 set offsets graph 0.1, graph 0.1, graph 0.2, graph 0.2
 plot linefile using 1:2 with lines ls 1 title "Table 5.3 fit (measured, rotating pin)", \

@@ -4,17 +4,24 @@
 # height after a full draw, the flange outline (rim radius) after a partial stroke;
 # stage: "end of stroke" or the partial stroke's travel.
 load figdir."/common.gp"
-set title "ESAFORM 2021 cup (AA6016-T4): earing profile, ".stage
 set xlabel "angle from RD (deg)"
 set ylabel ylab
 set xrange [0:360]
 set xtics 45
+set offsets 0, 0, graph 0.05, graph 0.05  # a flat profile stays off the frame
 set key outside bottom center horizontal
 set key noautotitle
 sel(v) = (strcol(1) eq v) ? $3 : NaN
 vars = "von_mises hill48_r hill48_s"
-labels = "von~Mises Hill'48~(r-values) Hill'48~(stress~ratios)"
-plot for [i=1:3] datafile using 2:(sel(word(vars, i))) with linespoints ls i title word(labels, i), \
-     for [i=1:3] datafile using (180 - $2):(sel(word(vars, i))) with linespoints ls i notitle, \
-     for [i=1:3] datafile using (180 + $2):(sel(word(vars, i))) with linespoints ls i notitle, \
-     for [i=1:3] datafile using (360 - $2):(sel(word(vars, i))) with linespoints ls i notitle
+labels = "\"von Mises\" \"Hill'48 (r-values)\" \"Hill'48 (stress ratios)\""
+# shown: the variants drawn (indices into vars; a torn cup has no cup height);
+# note: appended to the title (which variants are left out, and why).
+if (!exists("shown")) shown = "1 2 3"
+if (!exists("note")) note = ""
+set title "ESAFORM 2021 cup (AA6016-T4): earing profile, ".stage.(note eq "" ? "" : "\n".note)
+n = words(shown)
+plot for [j=1:n] datafile using 2:(sel(word(vars, word(shown, j) + 0))) with linespoints ls (word(shown, j) + 0) \
+         title word(labels, word(shown, j) + 0), \
+     for [j=1:n] datafile using (180 - $2):(sel(word(vars, word(shown, j) + 0))) with linespoints ls (word(shown, j) + 0) notitle, \
+     for [j=1:n] datafile using (180 + $2):(sel(word(vars, word(shown, j) + 0))) with linespoints ls (word(shown, j) + 0) notitle, \
+     for [j=1:n] datafile using (360 - $2):(sel(word(vars, word(shown, j) + 0))) with linespoints ls (word(shown, j) + 0) notitle

@@ -10,7 +10,7 @@ set ylabel "thickness (mm)"
 set key top left noautotitle
 set yrange [0.7:1.4]
 vars = "von_mises hill48_r hill48_s"
-labels = "von~Mises Hill'48~(r) Hill'48~(σ)"
+labels = "\"von Mises\" \"Hill'48 (r)\" \"Hill'48 (σ)\""
 sel(v, l) = (strcol(1) eq v && $2 == l) ? $6 : NaN
 do for [l in "0 45 90"] {
   set title sprintf("%s deg from RD", l)

@@ -212,7 +212,7 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
                            fmt(r.F_back) + " N");
     c.plot("pressure_map", fig[k],
            {{"gridfile", c.out("tables/" + stem + ".dat")},
-            {"title_text", "Our pressure map, " + fmt(kPins[k]) + " mm pin, F_{back} = " +
+            {"title_text", "Our pressure map, " + fmt(kPins[k]) + " mm pin, back tension " +
                                fmt(in.back_tension(kPins[k])) + " N"}});
   }
   return m;

@@ -305,8 +305,21 @@ void body(study::Chapter& c) {
   c.value("rim_columns", std::to_string(r0.height.size()));
   c.value("stroke", fmt(spec.stroke), "mm");
   c.value("cycles", std::to_string(spec.cycles));
+  // The figure's variants: after a full draw, only the cups whose flange left the holder (a torn cup's
+  // rim height is no cup height, and its scale would flatten the others); the title names the rest.
+  std::string shown, left_out;
+  const std::vector<std::string> order{"von_mises", "hill48_r", "hill48_s"};  // the script's vars, in its order
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const auto& r = runs[idx.at(order[i])];
+    if (drawn && r.rim_r_max >= 41.2)
+      left_out += (left_out.empty() ? "" : ", ") + vars[idx.at(order[i])].label;
+    else
+      shown += (shown.empty() ? "" : " ") + std::to_string(i + 1);
+  }
   c.plot("v1_earing", "fig_v1_earing",
          {{"datafile", c.out(drawn ? "tables/cup_height.csv" : "tables/flange_outline.csv")},
+          {"shown", shown},
+          {"note", left_out.empty() ? "" : "not shown: " + left_out + " (its flange never left the holder)"},
           {"ylab", drawn ? "cup height (mm)" : "flange outline: rim radius (mm)"},
           {"stage", drawn ? "end of stroke" : "partial stroke of " + fmt(spec.stroke) + " mm"}});
   c.plot("v1_force", "fig_v1_force", {{"datafile", c.out("tables/punch_force.csv")}});

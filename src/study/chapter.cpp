@@ -83,8 +83,19 @@ void Chapter::plot(const std::string& script, const std::string& stem,
     const std::string tmp = final_file + ".tmp";
     std::string e = "outfile='" + tmp + "'; figformat='" + f + "'; tables='" + out("tables") + "'; figdir='" +
                     figures_dir_ + "'";
-    for (const auto& [k, v] : vars) e += "; " + k + "='" + v + "'";
-    const std::string cmd = gnuplot_ + " -e \"" + e + "\" '" + gp + "'";
+    // A value is a gnuplot single-quoted string ('' for a quote, e.g. "Hill'48"),
+    // and the whole -e argument sits in shell double quotes (\ " $ ` escaped).
+    for (const auto& [k, v] : vars) {
+      std::string q;
+      for (char ch : v) q += ch == '\'' ? std::string("''") : std::string(1, ch);
+      e += "; " + k + "='" + q + "'";
+    }
+    std::string shell_e;
+    for (char ch : e) {
+      if (ch == '\\' || ch == '"' || ch == '$' || ch == '`') shell_e += '\\';
+      shell_e += ch;
+    }
+    const std::string cmd = gnuplot_ + " -e \"" + shell_e + "\" '" + gp + "'";
     if (std::system(cmd.c_str()) != 0) throw std::runtime_error("gnuplot failed: " + cmd);
     fs::rename(tmp, final_file);  // atomic: a figure is complete or absent
   }

@@ -6,11 +6,19 @@
 //    readers refuse such a file, so a chapter must fail when it makes one;
 //  - markdown_table escapes '|'; {{key}} expands to "value unit"; an unknown key
 //    is an InputError naming the source line.
+//  - Chapter::plot passes a variable to gnuplot unchanged, whatever it holds:
+//    a gnuplot script that prints `label` to its outfile gets back exactly
+//    "Hill'48 \"quoted\" $HOME `x` back\\slash" (quote, double quote, $, backtick,
+//    backslash: once a bare "Hill'48" broke the command line).
 #define BOOST_TEST_MODULE csv_and_report
 #include <boost/test/unit_test.hpp>
 #include <filesystem>
 
+#include <fstream>
+#include <sstream>
+
 #include "core/csv.hpp"
+#include "study/chapter.hpp"
 #include "study/report_assembler.hpp"
 
 using namespace drawbend;
@@ -62,4 +70,22 @@ BOOST_AUTO_TEST_CASE(markdown_expansion) {
   BOOST_TEST(md.find(": Cap") != std::string::npos);
   BOOST_CHECK_THROW(study::expand_chapter("{{nope}}\n", ch), InputError);
   BOOST_CHECK_THROW(study::expand_chapter("@figure figures/none.svg | x\n", ch), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(plot_passes_variables_verbatim) {
+  const auto root = std::filesystem::temp_directory_path() / "drawbend_plot_quote_test";
+  std::filesystem::remove_all(root);
+  std::filesystem::create_directories(root / "gp");
+  std::ofstream((root / "gp" / "echo.gp").string()) << "set print outfile\nprint label\nunset print\n";
+  study::Chapter ch("chx", "plot quoting test");
+  const std::string out = (root / "out").string(), gp = (root / "gp").string();
+  const char* argv[] = {"chx", "--out", out.c_str(), "--figures", gp.c_str()};
+  BOOST_REQUIRE(ch.parse(5, const_cast<char**>(argv)));
+  const std::string label = "Hill'48 \"quoted\" $HOME `x` back\\slash";
+  ch.plot("echo", "echoed", {{"label", label}});
+  std::ifstream in((root / "out" / "figures" / "echoed.svg").string());
+  std::string line;
+  std::getline(in, line);
+  BOOST_TEST(line == label);
+  std::filesystem::remove_all(root);
 }
