@@ -115,7 +115,7 @@ void rederive_table_5_14(Chapter& c, const Inputs& in) {
                fmt(measured.range->lo) + "-" + fmt(measured.range->hi)});
       }
   c.save(w, "table_5_14");
-  c.value("t514_extrapolations", std::to_string(extrapolations));
+  c.value("t514_extrapolations", std::to_string(extrapolations) + (extrapolations == 1 ? " of them lies" : " of them lie"));
   c.value("t514_agree", std::to_string(agree514));
   c.value("t514_total", std::to_string(total514));
 }
