@@ -246,8 +246,9 @@ void body(study::Chapter& c) {
     }
     if (drawn)
       c.checks().claim(study::Kind::verification, "v1.flange_out." + v.id,
-                     "every rim node inside r = 41.2 mm at the end: the flange has left the holder (" + v.label + ")",
-                     r.rim_r_max < 41.2, "the benchmark's cup is drawn to the end of the stroke");
+                     "every rim node inside r = " + fmt(v1::kFlangeOutRadius) +
+                         " mm at the end: the flange has left the holder (" + v.label + ")",
+                     r.rim_r_max < v1::kFlangeOutRadius, "the benchmark's cup is drawn to the end of the stroke");
   }
   // Von Mises earing against the mesh bound; ears where the r-values put them.  After a full draw the
   // profile is the cup height; after a partial stroke (the quick tier) it is the flange outline, the rim's
@@ -311,7 +312,7 @@ void body(study::Chapter& c) {
   const std::vector<std::string> order{"von_mises", "hill48_r", "hill48_s"};  // the script's vars, in its order
   for (std::size_t i = 0; i < order.size(); ++i) {
     const auto& r = runs[idx.at(order[i])];
-    if (drawn && r.rim_r_max >= 41.2)
+    if (drawn && r.rim_r_max >= v1::kFlangeOutRadius)
       left_out += (left_out.empty() ? "" : ", ") + vars[idx.at(order[i])].label;
     else
       shown += (shown.empty() ? "" : " ") + std::to_string(i + 1);

@@ -103,7 +103,7 @@ std::vector<std::array<double, 3>> hourglass_stored(const fe::Solver& s, const f
 int region_of(double r, double z) {
   if (r < 25.0) return 0;
   if (r < 30.0) return 1;
-  if (r >= 41.2) return 4;
+  if (r >= kFlangeOutRadius) return 4;
   return z >= 11.04 ? 2 : 3;
 }
 

@@ -44,15 +44,19 @@ struct CupResult {
   double volume_ratio = 0;  ///< current volume / initial volume of the sheet
   double kinetic_ratio = 0, max_kinetic_ratio = 0, hourglass_ratio = 0, balance_error = 0;
   double added_mass_ratio = 0;
-  double rim_r_max = 0;  ///< largest radius of a rim node at the end [mm] (< 41.2: the flange has left the holder)
+  double rim_r_max = 0;  ///< largest radius of a rim node at the end [mm] (< kFlangeOutRadius: the flange has left the holder)
   double rim_z_min = 0;  ///< lowest rim node at the end [mm]
   long cycles = 0;
   int elements = 0, layers = 0;
 };
 
+/// Where the die shoulder ends and the flat die face under the holder begins [mm]: the die opening radius
+/// (31.2 mm) plus the shoulder radius (10 mm), as in the deck.  A rim node inside it has left the holder.
+inline constexpr double kFlangeOutRadius = 31.2 + 10.0;
+
 /// Regions of the cup by the current position of an element's centre (radius r, height z; tools as in the
-/// deck): punch face r < 25, punch nose 25 <= r < 30, wall r < 41.2 above the die shoulder (z >= 11.04),
-/// die shoulder and free span r < 41.2 below it, flange r >= 41.2 (under the holder).  Units: mm.
+/// deck): punch face r < 25, punch nose 25 <= r < 30, wall r < kFlangeOutRadius above the die shoulder
+/// (z >= 11.04), die shoulder and free span below it, flange r >= kFlangeOutRadius (under the holder).  Units: mm.
 inline constexpr const char* kRegions[5] = {"punch face", "punch nose", "wall", "die shoulder", "flange"};
 int region_of(double r, double z);
 

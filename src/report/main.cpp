@@ -16,6 +16,7 @@
 #include "core/options.hpp"
 #include "study/checks.hpp"
 #include "study/report_assembler.hpp"
+#include "study/list_audit.hpp"
 #include "study/report_front.hpp"
 
 namespace {
@@ -59,45 +60,13 @@ int main(int argc, char** argv) {
     const auto chapters = study::discover_chapters(chapters_src, chapters_out);
     if (chapters.empty()) throw InputError(chapters_src + ": no chapters (directories with intro.md)");
     if (!errata.empty()) {
-      // Check ids per mesh tier (each chapter's values.csv states the tier it ran):
-      // a disagreement documented for one tier only is audited against the
-      // chapters that ran that tier, and not at all when none did.
-      std::map<std::string, std::vector<std::string>> ids_by_tier;
-      for (const auto& ch : chapters) {
-        std::string tier = "quick";
-        const CsvTable v = read_csv(ch.out_dir + "/values.csv");
-        for (const auto& r : v.rows)
-          if (v.text(r, "key") == "tier") tier = v.text(r, "value");
-        const CsvTable t = read_csv(ch.out_dir + "/checks.csv");
-        for (const auto& r : t.rows) ids_by_tier[tier].push_back(t.text(r, "id"));
-      }
       // The disagreements list sits beside the errata list and is audited the same way.
       const std::string disagreements =
           (std::filesystem::path(errata).parent_path() / "disagreements.csv").string();
       for (const std::string& list : {errata, disagreements}) {
         if (!std::filesystem::exists(list)) continue;
-        std::map<std::string, std::pair<int, int>> seen;  // entry -> (tiers that load it, tiers where it is unused)
-        for (const auto& [tier, ids] : ids_by_tier) {
-          // An entry is audited on a tier only if its chapter (the id's first
-          // segment, e.g. "ch8") ran that tier: `make` may run one chapter on
-          // the quick tier beside full-tier others.
-          std::set<std::string> ran;
-          for (const auto& id : ids) ran.insert(id.substr(0, id.find('.')));
-          const auto e = study::Errata::load(list, tier);
-          for (const auto& x : e.unused({}))
-            if (ran.count(x.substr(0, x.find('.')))) ++seen[x].first;
-          for (const auto& x : e.unused(ids))
-            if (ran.count(x.substr(0, x.find('.')))) ++seen[x].second;
-        }
-        std::vector<std::string> dead;
-        // An entry whose chapter ran on no tier at all (a misspelt id) is dead too.
-        std::set<std::string> ran_any;
-        for (const auto& [tier, ids] : ids_by_tier)
-          for (const auto& id : ids) ran_any.insert(id.substr(0, id.find('.')));
-        for (const auto& x : study::Errata::load(list, "").unused({}))
-          if (!ran_any.count(x.substr(0, x.find('.')))) dead.push_back(x);
-        for (const auto& [x, n] : seen)
-          if (n.first > 0 && n.second == n.first) dead.push_back(x);
+        // Audited per tier, each entry on the tiers its chapter ran (study/list_audit.hpp).
+        const std::vector<std::string> dead = study::unused_list_entries(chapters, list);
         for (const auto& d : dead) std::cerr << list << ": entry '" << d << "' matches no check\n";
         if (!dead.empty()) throw InputError(list + ": " + std::to_string(dead.size()) + " unused entries");
       }

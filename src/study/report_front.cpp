@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "study/check_format.hpp"
+#include "study/list_audit.hpp"
 
 namespace drawbend::study {
 
@@ -69,16 +70,6 @@ std::string joined(const std::vector<std::string>& v, const std::string& none) {
   std::string o;
   for (const auto& s : v) o += (o.empty() ? "" : ", ") + s;
   return o;
-}
-
-/// The tier a chapter's values.csv states ("" when it states none).
-std::string chapter_tier(const ChapterSource& ch) {
-  const std::string p = ch.out_dir + "/values.csv";
-  if (!fs::exists(p)) return "";
-  const CsvTable t = read_csv(p);
-  for (const auto& r : t.rows)
-    if (t.text(r, "key") == "tier") return t.text(r, "value");
-  return "";
 }
 
 /// The mesh tiers of a mixed report, e.g. "full; quick for ch6-friction-model,

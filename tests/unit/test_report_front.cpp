@@ -12,10 +12,12 @@
 //    3 pass, 1 erratum, 1 disagree, and the abstract says so.
 #define BOOST_TEST_MODULE report_front
 #include <boost/test/unit_test.hpp>
+#include <algorithm>
 #include <filesystem>
 
 #include "core/csv.hpp"
 #include "study/check_format.hpp"
+#include "study/list_audit.hpp"
 #include "study/report_front.hpp"
 
 using namespace drawbend;
@@ -113,5 +115,30 @@ BOOST_AUTO_TEST_CASE(front_page_states_each_chapters_tier) {
   const std::string f = front_page(chs, {"*T*", "2026-01-01"});
   BOOST_TEST(f.find("<th>tier</th>") != std::string::npos);
   BOOST_TEST(f.find("</a></td><td>quick</td>") != std::string::npos);
+  fs::remove_all(root);
+}
+
+// The audit of a disagreements list (study/list_audit.hpp), chapter "cha" on
+// the full tier and "chb" on the quick tier:
+//  - "cha.1" (full) names a check of cha: used; "chb.1" (quick) one of chb: used;
+//  - "chb.2" (full only) is not audited, since chb ran no full tier;
+//  - "cha.9" (any tier) matches no check of cha, which ran: unused;
+//  - "zz.1" belongs to a chapter that ran on no tier (a misspelt id): unused.
+// So exactly {"cha.9", "zz.1"} are reported.
+BOOST_AUTO_TEST_CASE(list_audit_checks_each_entry_on_its_chapters_tiers) {
+  const fs::path root = fs::temp_directory_path() / "drawbend_list_audit_test";
+  fs::remove_all(root);
+  const std::string head = "id,kind,quantity,thesis,ours,tolerance,unit,status,note\n";
+  std::vector<ChapterSource> chs{chapter(root, "cha", head + "cha.1,simulated,F,1,2,0.1,N,disagree,x\n", "full"),
+                                 chapter(root, "chb", head + "chb.1,simulated,F,1,2,0.1,N,disagree,x\n", "quick")};
+  const std::string list = (root / "disagreements.csv").string();
+  write_file_atomic(list, "id,explanation,tier\ncha.1,why,full\nchb.1,why,quick\nchb.2,why,full\ncha.9,why,\nzz.1,why,\n");
+  BOOST_TEST(chapter_of("cha.fb.d42") == "cha");
+  BOOST_TEST(chapter_of("cha") == "cha");
+  BOOST_TEST(chapter_tier(chs[0]) == "full");
+  auto dead = unused_list_entries(chs, list);
+  std::sort(dead.begin(), dead.end());
+  BOOST_TEST(dead.size() == 2u);
+  BOOST_TEST((dead == std::vector<std::string>{"cha.9", "zz.1"}));
   fs::remove_all(root);
 }
