@@ -27,8 +27,12 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
+# Two chapters side by side: each runs its cases side by side too (one OpenMP
+# thread per case when it has several), and a chapter's last case would
+# otherwise leave a core idle.  Chapters that read another's outputs wait for
+# it (NEEDS in chapters/CMakeLists.txt).
 study: build
-	@cmake --build $(BUILD) --target study
+	@cmake --build $(BUILD) --target study -j $(JOBS)
 
 report: study
 	@cmake --build $(BUILD) --target report
