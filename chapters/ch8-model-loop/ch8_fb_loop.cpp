@@ -59,11 +59,22 @@ std::vector<sim::FbPoint> reference_points(const Inputs& in) {
 
 }  // namespace
 
-sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg) {
+sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg, const BeamTrace* trace) {
   std::vector<sim::ModelCandidate> cands;
   const std::string data_dir = c.data("");
   std::string list = cfg.candidates;
-  if (list.empty()) list = cfg.full_study ? "split:0.15/0.3/0.45/0.6/1,voce,hill48" : "split:0.3/0.6";
+  // The tier's list.  First the Armstrong-Frederick back stress that beam
+  // theory chose on the fit pin (step 2a, a 25-member grid judged on the fit
+  // pin only): its gamma, and X_sat with its two grid neighbours, chosen again
+  // by the FE on the fit pin (the beam's level is not the FE's); then split
+  // combined hardening on top of it.  The full tier adds Voce and Hill'48.
+  std::string af = "chaboche:60/90/120@60";  // without a trace: the grid's middle
+  if (trace && trace->chosen_gamma > 0) {
+    const double x = trace->chosen_x;
+    af = "chaboche:" + (x > 30 ? fmt(x - 30) + "/" : std::string()) + fmt(x) + "/" + fmt(x + 30) + "@" + fmt(trace->chosen_gamma);
+  }
+  if (list.empty()) list = af + (cfg.full_study ? ",split:0.15/0.3/0.45/0.6/1,voce,hill48" : ",split:0.3/0.6");
+  c.value("af_candidate", af);
   std::stringstream ss(list);
   for (std::string n; std::getline(ss, n, ',');)
     if (!n.empty()) cands.push_back(sim::named_candidate(n, data_dir.substr(0, data_dir.size() - 1)));

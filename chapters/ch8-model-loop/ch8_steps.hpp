@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/bending_work.hpp"
 #include "sim/drawbend_case.hpp"
 #include "sim/model_loop.hpp"
 #include "study/chapter.hpp"
@@ -43,11 +44,33 @@ struct Inputs {
   double measured(double pin, double fback) const;  ///< Table 5.3 fit [N]
 };
 
+/// One beam-theory model and its F_B per pin (full strip, N).
+struct BeamModel {
+  std::string label;
+  drawbend::analysis::BendMaterial mat;
+  std::vector<double> fb;
+};
+/// Beam theory's trace of the residual (ch8_beam_trace.cpp).
+struct BeamTrace {
+  std::vector<BeamModel> models;  ///< isotropic plane strain, plane stress, Hosford 8, AF chosen, AF in-sample
+  BeamModel best_fit, best_all;   ///< the Armstrong-Frederick member chosen on the fit pin; best on all pins
+  double chosen_x = 0, chosen_gamma = 0;  ///< best_fit's X_sat [MPa] and gamma
+  int members = 0;
+};
+
 Inputs load_inputs(Chapter& c, const Config& cfg);
 /// A relative error as a signed percentage with one decimal ("+10.6").
 inline std::string pct(double x) { return (x >= 0 ? "+" : "") + drawbend::fmt_fixed(100 * x, 1); }
 /// The bending-force loop: before/after per pin, figure, checks.  Returns the final model.
-drawbend::sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg);
+/// `trace` (may be null) leads the quick tier's chaboche candidate: the beam's
+/// choice on the fit pin and its neighbours in X_sat, chosen again by the FE.
+drawbend::sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg,
+                                                  const BeamTrace* trace = nullptr);
+/// Isotropic in plane strain and plane stress, Hosford a = 8, and the
+/// Armstrong-Frederick grid chosen on the fit pin (milliseconds per point).
+BeamTrace beam_trace(Chapter& c, const Inputs& in, const Config& cfg);
+/// The trace's table and values; `loop` (may be null) adds the FE rows.
+void save_beam_trace(Chapter& c, const Inputs& in, const BeamTrace& t, const drawbend::sim::ModelLoopResult* loop);
 /// F_B against back tension on the fit pin (slope check).
 void tension_slope(Chapter& c, const Inputs& in, const Config& cfg, const drawbend::sim::ModelLoopResult& loop);
 /// Full tier: mass scaling on every pin, elements across on the 25.4 and 42 mm pins.

@@ -11,6 +11,9 @@
 //   2. The loop: isotropic baseline; candidates fitted on the 12.7 mm pin,
 //      judged on the 25.4 and 42 mm pins (held out); before/after table,
 //      figure, F_B checks per pin.
+//   2a. (before 2) The residual traced by beam theory (analysis/bending_work.hpp): the
+//      FE against the same assumptions in a layered beam, then the transverse
+//      constraint and an Armstrong-Frederick back stress on a grid.
 //   3. F_B against back tension on the 12.7 mm pin (slope check).
 //   4. Full tier only: mass scaling on every pin; 2/4/8 elements across on
 //      the 25.4 and 42 mm pins.
@@ -30,7 +33,7 @@ int main(int argc, char** argv) {
         "width convergence; false: the quick tier");
   o.add(cfg.fit_pin, "fit-pin", "pin whose bending force trains the candidates [mm]");
   o.add(cfg.candidates, "candidates",
-        "comma-separated candidates (split:B1/B2..., chaboche:X1/X2..., voce, hill48, offset, ms:X, across:N); empty: the tier's list");
+        "comma-separated candidates (split:B1/B2..., chaboche:X1/X2...[@G1/G2...], voce, hill48, offset, ms:X, across:N); empty: the tier's list");
   o.add(cfg.numerics, "numerics",
         "the mass-scaling and width studies: true, false, or auto (as --full-study); 1, 0, -1 also accepted");
   o.add(cfg.cup, "cup", "the cup loop and the 2 x 2 attribution (step 5)");
@@ -40,9 +43,11 @@ int main(int argc, char** argv) {
     const bool numerics = cfg.run_numerics();  // a bad --numerics fails before any work
     const Inputs in = load_inputs(c, cfg);  // 1
     c.value("fe_ran", cfg.run_fe ? "yes" : "no");
-    if (!cfg.run_fe) return;
+    const BeamTrace trace = beam_trace(c, in, cfg);  // 2a: the residual traced by beam theory
+    if (!cfg.run_fe) return save_beam_trace(c, in, trace, nullptr);
     if (numerics) numerical_convergence(c, in, cfg);  // 4, first: numerics before physics
-    const auto loop = bending_force_loop(c, in, cfg);      // 2
+    const auto loop = bending_force_loop(c, in, cfg, &trace);  // 2
+    save_beam_trace(c, in, trace, &loop);                      // 2a's table with the FE rows
     tension_slope(c, in, cfg, loop);                       // 3
     if (cfg.cup) cup_loop(c, cfg, loop);                   // 5
   });

@@ -5,7 +5,7 @@
 // rotating = frictionless pin).  The points on --fit-pin train; the others are
 // held out.  Candidates (--candidates, comma separated, tried in order):
 // split:B1/B2/... (split combined hardening, beta chosen on the fit pin),
-// chaboche:X1/X2/... (one fast back stress, X chosen on the fit pin), voce,
+// chaboche:X1/X2/...[@G1/G2/...] (one back stress, X and gamma chosen on the fit pin), voce,
 // hill48, offset, ms:X (mass scaling), across:N.  FE runs are cached in
 // DIR/runs by deck hash.  Writes DIR/baseline.csv, DIR/final.csv and
 // DIR/steps.csv.  Units: mm, N, mm/s.
@@ -43,7 +43,7 @@ int model_loop_command(int argc, char** argv, const char* name) {
   opt.add(out, "out", "output directory (runs cached in OUT/runs)");
   opt.add(cfg.fit_pin, "fit-pin", "pin diameter whose points train [mm]; the others are held out");
   opt.add(cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
-  opt.add(candidates, "candidates", "comma-separated: split:B1/B2..., chaboche:X1/X2..., voce, hill48, offset, ms:X, across:N");
+  opt.add(candidates, "candidates", "comma-separated: split:B1/B2..., chaboche:X1/X2...[@G1/G2...], voce, hill48, offset, ms:X, across:N");
   opt.add(reuse, "reuse", "read back finished runs with the identical deck (true) or rerun them (false)");
   opt.add(s.thickness, "thickness", "strip thickness [mm]");
   opt.add(s.width, "width", "modelled half width [mm]");

@@ -257,7 +257,19 @@ std::string merged_material(const std::string& current, const toml::table& add) 
   const bool curve = add.contains("voce") || add.contains("swift") || add.contains("hardening");
   if (curve)
     for (const char* k : {"voce", "swift", "hardening", "yield", "tangent"}) m.erase(k);
-  for (auto&& [k, v] : add) m.insert_or_assign(k, v);
+  for (auto&& [k, v] : add) {
+    // The back-stress parts compose: split's beta and a Chaboche term are
+    // keys of one `kinematic` table, so either candidate keeps the other's.
+    const auto* cur_kin = m.get_as<toml::table>("kinematic");
+    const auto* add_kin = v.as_table();
+    if (k.str() == "kinematic" && cur_kin && add_kin) {
+      toml::table kin = *cur_kin;
+      for (auto&& [kk, vv] : *add_kin) kin.insert_or_assign(kk, vv);
+      m.insert_or_assign(k, kin);
+    } else {
+      m.insert_or_assign(k, v);
+    }
+  }
   inline_all(m);
   m.is_inline(true);
   std::ostringstream o;
@@ -294,17 +306,10 @@ material::HardeningCurve current_curve(const DrawBendSpec& s) {
   return material::HardeningCurve::load(s.hardening);
 }
 
-/// A Chaboche back stress X(eps_p) = X_sat (1 - exp(-gamma eps_p)) carved out
-/// of the flow curve: R_i = sigma_i - X(eps_i), then the non-decreasing lower
-/// envelope (the solver needs H >= 0).  Monotonic tension then follows
-/// R + X = sigma wherever the envelope does not cut, and lies below it at
-/// small strain where it does (a lower elastic limit).
+/// The chaboche candidate's material (see carved_isotropic_part).
 toml::table chaboche_material(const DrawBendSpec& s, double x_sat, double gamma) {
   const material::HardeningCurve c = current_curve(s);
-  std::vector<double> x = c.plastic_strains(), r = c.stresses();
-  for (std::size_t i = 0; i < x.size(); ++i) r[i] -= x_sat * (1.0 - std::exp(-gamma * x[i]));
-  for (std::size_t i = r.size() - 1; i-- > 0;) r[i] = std::min(r[i], r[i + 1]);
-  if (!(r.front() > 0)) throw InputError("candidate chaboche: X_sat " + fmt(x_sat) + " MPa leaves no elastic range");
+  const std::vector<double> x = c.plastic_strains(), r = carved_isotropic_part(c, x_sat, gamma);
   toml::array ax, ay;
   for (std::size_t i = 0; i < x.size(); ++i) {
     ax.push_back(x[i]);
@@ -323,18 +328,27 @@ toml::table chaboche_material(const DrawBendSpec& s, double x_sat, double gamma)
 }
 }  // namespace
 
+std::vector<double> carved_isotropic_part(const material::HardeningCurve& c, double x_sat, double gamma) {
+  const std::vector<double>& x = c.plastic_strains();
+  std::vector<double> r = c.stresses();
+  for (std::size_t i = 0; i < x.size(); ++i) r[i] -= x_sat * (1.0 - std::exp(-gamma * x[i]));
+  for (std::size_t i = r.size() - 1; i-- > 0;) r[i] = std::min(r[i], r[i + 1]);
+  if (!(r.front() > 0)) throw InputError("candidate chaboche: X_sat " + fmt(x_sat) + " MPa leaves no elastic range");
+  return r;
+}
+
 ModelCandidate named_candidate(const std::string& name, const std::string& data_dir) {
   ModelCandidate c;
   c.name = name;
   const auto colon = name.find(':');
   const std::string kind = name.substr(0, colon);
   const std::string arg = colon == std::string::npos ? "" : name.substr(colon + 1);
-  auto values = [&]() {
+  auto values_of = [&](const std::string& a) {
     std::vector<double> v;
     std::size_t pos = 0;
-    while (pos <= arg.size()) {
-      const auto slash = arg.find('/', pos);
-      const std::string tok = arg.substr(pos, slash == std::string::npos ? std::string::npos : slash - pos);
+    while (pos <= a.size()) {
+      const auto slash = a.find('/', pos);
+      const std::string tok = a.substr(pos, slash == std::string::npos ? std::string::npos : slash - pos);
       char* end = nullptr;
       const double x = std::strtod(tok.c_str(), &end);
       if (tok.empty() || *end != '\0' || !std::isfinite(x))
@@ -345,12 +359,23 @@ ModelCandidate named_candidate(const std::string& name, const std::string& data_
     }
     return v;
   };
+  auto values = [&]() { return values_of(arg); };
   if (kind == "split") {
     c.what = "split combined hardening (kinematic fraction beta fitted on the fit pin)";
     for (double b : values()) {
       if (b < 0 || b > 1) throw InputError("candidate '" + name + "': beta must lie in [0, 1]");
       c.members.push_back({"split beta " + fmt(b), [b](DrawBendSpec& s) {
-                             s.material = "{ type = \"j2_combined\", kinematic = { beta = " + fmt_shortest(b) + " } }";
+                             if (s.material.empty()) {  // the isotropic base: the deck text as it always was
+                               s.material = "{ type = \"j2_combined\", kinematic = { beta = " + fmt_shortest(b) + " } }";
+                               return;
+                             }
+                             toml::table kin;  // on a model with a back stress: beta joins it
+                             kin.insert("beta", b);
+                             toml::table add;
+                             if (material_table(s.material)["type"].value_or(std::string()) != "hill48")
+                               add.insert("type", "j2_combined");
+                             add.insert("kinematic", kin);
+                             s.material = merged_material(s.material, add);
                            }});
     }
   } else if ((kind == "voce" || kind == "hill48") && arg.empty()) {
@@ -397,20 +422,33 @@ ModelCandidate named_candidate(const std::string& name, const std::string& data_
     add.insert("swift", sw);
     c.members.push_back({"Swift at 0.2 % offset", [add](DrawBendSpec& s) { s.material = merged_material(s.material, add); }});
   } else if (kind == "chaboche") {
-    // One fast Armstrong-Frederick back stress, 95 % saturated at eps_p = 1 %
-    // (gamma = 300, an assumption: no published AA5754-O value, see
-    // data/materials/README.md): early re-yielding on unbending, which weighs
-    // most at small bending strain (large R/t).  Its size X_sat is the member.
-    constexpr double gamma = 300;
-    c.what = "Chaboche back stress (gamma 300, X_sat fitted on the fit pin) carved out of the flow curve";
-    for (double xs : values()) {
-      if (!(xs > 0)) throw InputError("candidate '" + name + "': X_sat must be > 0 MPa");
-      c.members.push_back({"Chaboche X_sat " + fmt(xs) + " MPa", [xs](DrawBendSpec& s) {
-                             toml::table add = chaboche_material(s, xs, gamma);
-                             toml::table cur = material_table(s.material);
-                             if (cur["type"].value_or(std::string()) != "hill48") add.insert("type", "j2_combined");
-                             s.material = merged_material(s.material, add);
-                           }});
+    // One Armstrong-Frederick back stress carved out of the flow curve: early
+    // re-yielding on unbending, which weighs most at small bending strain
+    // (large R/t).  chaboche:X1/X2...[@G1/G2...]: every (X_sat, gamma) pair is
+    // a member, chosen on the fit pin.  Without @ the rate is gamma = 300
+    // (95 % saturated at eps_p = 1 %), an assumption: no published AA5754-O
+    // reverse-loading data (data/materials/README.md).  With two or more
+    // points on the fit pin (level and slope against back tension) both
+    // parameters are identified there; with one point they are not, and the
+    // chosen pair is one of many that fit it.
+    const auto at = arg.find('@');
+    const std::vector<double> xs_list = values_of(arg.substr(0, at));
+    const std::vector<double> g_list = at == std::string::npos ? std::vector<double>{300.0} : values_of(arg.substr(at + 1));
+    c.what = at == std::string::npos
+                 ? "Chaboche back stress (gamma 300, X_sat fitted on the fit pin) carved out of the flow curve"
+                 : "Chaboche back stress (X_sat and gamma fitted on the fit pin) carved out of the flow curve";
+    for (double g : g_list) {
+      if (!(g > 0)) throw InputError("candidate '" + name + "': gamma must be > 0");
+      for (double xs : xs_list) {
+        if (!(xs > 0)) throw InputError("candidate '" + name + "': X_sat must be > 0 MPa");
+        const std::string label = "Chaboche X_sat " + fmt(xs) + " MPa" + (at == std::string::npos ? "" : ", gamma " + fmt(g));
+        c.members.push_back({label, [xs, g](DrawBendSpec& s) {
+                               toml::table add = chaboche_material(s, xs, g);
+                               toml::table cur = material_table(s.material);
+                               if (cur["type"].value_or(std::string()) != "hill48") add.insert("type", "j2_combined");
+                               s.material = merged_material(s.material, add);
+                             }});
+      }
     }
   } else if (kind == "ms") {
     c.what = "mass scaling (numerical: should change nothing when converged)";
@@ -426,7 +464,7 @@ ModelCandidate named_candidate(const std::string& name, const std::string& data_
       c.members.push_back({std::to_string(n) + " across", [n](DrawBendSpec& s) { s.across = n; }});
     }
   } else {
-    throw InputError("unknown candidate '" + name + "' (expected split:B1/B2..., chaboche:X1/X2..., voce, hill48, offset, ms:X, across:N)");
+    throw InputError("unknown candidate '" + name + "' (expected split:B1/B2..., chaboche:X1/X2...[@G1/G2...], voce, hill48, offset, ms:X, across:N)");
   }
   return c;
 }

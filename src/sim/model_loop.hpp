@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "material/hardening_curve.hpp"
 #include "sim/drawbend_case.hpp"
 
 namespace drawbend::sim {
@@ -103,7 +104,8 @@ ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoi
 
 /// Named candidates for the command line and the chapter:
 ///   split:B1/B2/...   split combined hardening, kinematic fraction beta (fitted on the fit pin)
-///   chaboche:X1/X2... one Armstrong-Frederick back stress, gamma 300, saturating at X (MPa),
+///   chaboche:X1/X2...[@G1/G2...] one Armstrong-Frederick back stress saturating at X (MPa), rate
+///                     gamma G (default 300), every (X, G) pair a member,
 ///                     carved out of the flow curve (R = sigma - X, its non-decreasing envelope)
 ///   voce              the published Voce flow curve (data/materials/aa5754_o_voce_hou2020.toml)
 ///   hill48            the published Hill'48 r-values (data/materials/aa5754_o_hill48_hou2020.toml)
@@ -113,6 +115,13 @@ ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoi
 ///   across:N          N elements across the half width (numerical check)
 /// Throws InputError for anything else.
 ModelCandidate named_candidate(const std::string& name, const std::string& data_dir);
+
+/// The isotropic part of the chaboche candidate: R_i = sigma_i - X_sat (1 -
+/// exp(-gamma eps_i)) on the curve's strain grid, then its non-decreasing
+/// lower envelope (the solver needs H >= 0).  Monotonic tension follows R + X
+/// = sigma where the envelope does not cut, and lies below it at small strain
+/// where it does (a lower elastic limit).  InputError if R(0) <= 0.
+std::vector<double> carved_isotropic_part(const material::HardeningCurve& c, double x_sat, double gamma);
 
 /// Write a points table (pin, back tension, measured, predicted, error, role).
 void save_eval_csv(const ModelEval& e, const std::string& path);

@@ -1,0 +1,135 @@
+#include "analysis/bending_work.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace drawbend::analysis {
+
+namespace {
+
+struct Layers {
+  std::vector<double> sig, x, p;  // stress along the strip [MPa], back stress (equivalent) [MPa], eq. plastic strain
+};
+
+class Section {
+ public:
+  Section(const BendCase& bc, const BendMaterial& m) : m_(m), n_(bc.layers) {
+    const double c = m.constraint;
+    modulus_ = c > 1 ? m.E_MPa / (1 - m.nu * m.nu) : m.E_MPa;
+    ec_ = modulus_ / (c * c);  // d s / d(c eps) for the equivalent quantities
+    z_.resize(n_);
+    for (int i = 0; i < n_; ++i) z_[i] = ((i + 0.5) / n_ - 0.5) * bc.thickness_mm;
+    dA_ = bc.width_mm * bc.thickness_mm / n_;
+  }
+  double R(double p) const { return m_.flow(p) - m_.x_sat_MPa * (1 - std::exp(-m_.gamma * p)); }
+  double dR(double p) const { return m_.dflow(p) - m_.x_sat_MPa * m_.gamma * std::exp(-m_.gamma * p); }
+
+  /// Layers after the strain increment d_eps = dm + z dk from state `a`.
+  void update(const Layers& a, double dm, double dk, Layers& out) const {
+    const double c = m_.constraint;
+    out = a;
+    for (int i = 0; i < n_; ++i) {
+      const double s_tr = (a.sig[i] + modulus_ * (dm + z_[i] * dk)) / c;
+      const double xi = s_tr - a.x[i];
+      if (std::abs(xi) - R(a.p[i]) <= 0) {
+        out.sig[i] = s_tr * c;
+        continue;
+      }
+      const double sg = xi > 0 ? 1.0 : -1.0, X0 = a.x[i], p0 = a.p[i];
+      const double lim = sg * m_.x_sat_MPa;  // the back stress's limit at this sign
+      double dp = 0;
+      for (int it = 0; it < 60; ++it) {
+        const double ex = std::exp(-m_.gamma * dp);
+        const double X = lim + (X0 - lim) * ex, dX = -(X0 - lim) * m_.gamma * ex;
+        const double g = sg * (s_tr - sg * ec_ * dp - X) - R(p0 + dp);
+        const double dg = -ec_ - sg * dX - dR(p0 + dp);
+        const double step = g / dg;
+        dp -= step;
+        if (std::abs(step) <= 1e-14 * (1 + dp)) break;
+      }
+      const double ex = std::exp(-m_.gamma * dp);
+      out.x[i] = lim + (X0 - lim) * ex;
+      out.p[i] = p0 + dp;
+      out.sig[i] = (s_tr - sg * ec_ * dp) * c;
+    }
+  }
+  double force(const Layers& l) const {
+    double f = 0;
+    for (double s : l.sig) f += s * dA_;
+    return f;
+  }
+  double moment(const Layers& l) const {
+    double mo = 0;
+    for (int i = 0; i < n_; ++i) mo += l.sig[i] * z_[i] * dA_;
+    return mo;
+  }
+  /// The membrane increment that keeps the section's force at T (bisection:
+  /// the force rises monotonically with the membrane strain).
+  double carry(const Layers& a, double dk, double T, Layers& out, double& dm) const {
+    double lo = -0.2, hi = 0.2;
+    update(a, hi, dk, out);
+    if (force(out) < T) throw std::invalid_argument("bend_unbend: the section cannot carry the tension " + std::to_string(T) + " N");
+    for (int it = 0; it < 64; ++it) {
+      dm = 0.5 * (lo + hi);
+      update(a, dm, dk, out);
+      (force(out) > T ? hi : lo) = dm;
+    }
+    dm = 0.5 * (lo + hi);
+    update(a, dm, dk, out);
+    return moment(out);
+  }
+
+ private:
+  const BendMaterial& m_;
+  int n_;
+  double modulus_ = 0, ec_ = 0, dA_ = 0;
+  std::vector<double> z_;
+};
+
+}  // namespace
+
+BendResult bend_unbend(const BendCase& bc, const BendMaterial& m) {
+  if (!(bc.pin_diameter_mm > 0 && bc.thickness_mm > 0 && bc.width_mm > 0 && bc.tension_N >= 0))
+    throw std::invalid_argument("bend_unbend: pin diameter, thickness and width must be > 0, tension >= 0");
+  if (bc.layers < 2 || bc.steps < 1) throw std::invalid_argument("bend_unbend: at least 2 layers and 1 step");
+  if (!m.flow || !m.dflow) throw std::invalid_argument("bend_unbend: no flow curve");
+  if (!(m.E_MPa > 0 && m.constraint >= 1 && m.x_sat_MPa >= 0 && m.gamma >= 0))
+    throw std::invalid_argument("bend_unbend: E > 0, constraint >= 1, X_sat >= 0 and gamma >= 0 required");
+  if (!(m.flow(0) > 0)) throw std::invalid_argument("bend_unbend: the flow curve must start above 0 MPa");
+  const Section sec(bc, m);
+  Layers a{std::vector<double>(bc.layers, 0.0), std::vector<double>(bc.layers, 0.0),
+           std::vector<double>(bc.layers, 0.0)};
+  Layers b = a;
+  double dm = 0, em = 0;
+  sec.carry(a, 0.0, bc.tension_N, b, dm);  // the straight strip under tension
+  em += dm;
+  std::swap(a, b);
+  const double kappa = 1.0 / (bc.pin_diameter_mm / 2 + bc.thickness_mm / 2);
+  double work = 0;
+  for (const double dk : {kappa / bc.steps, -kappa / bc.steps})
+    for (int k = 0; k < bc.steps; ++k) {
+      const double m0 = sec.moment(a);
+      const double m1 = sec.carry(a, dk, bc.tension_N, b, dm);
+      work += 0.5 * (m0 + m1) * dk;  // trapezoidal M dkappa
+      em += dm;
+      std::swap(a, b);
+    }
+  BendResult r;
+  r.bending_force_N = work;
+  r.max_plastic_strain = *std::max_element(a.p.begin(), a.p.end());
+  r.membrane_strain = em;
+  return r;
+}
+
+double hosford_plane_strain_factor(double a) {
+  if (!(a >= 1)) throw std::invalid_argument("hosford_plane_strain_factor: the exponent must be >= 1");
+  // For the isotropic Hosford surface the plane-strain state (d f / d s2 = 0
+  // at s3 = 0) is s2 = s1 / 2 for every a: the two terms |s2 - s1|^(a-1) and
+  // |s2|^(a-1) balance there.  Then f = s1 ((1 + 2 (1/2)^a) / 2)^(1/a).
+  return 1.0 / std::pow((1 + 2 * std::pow(0.5, a)) / 2, 1 / a);
+}
+
+}  // namespace drawbend::analysis
