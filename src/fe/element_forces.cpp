@@ -93,6 +93,7 @@ void Solver::element_forces() {
   // spin and hourglass increments use its length (zero before the first cycle).
   ev.dtp = last_dt_;
   ev.wave_speed = wave_speed_;
+  ev.material_ticks = phases_ ? &phases_->material_ticks : nullptr;
   struct Chosen {
     ElementRangeFn fn = nullptr;
     int width = 4;
@@ -124,8 +125,11 @@ void Solver::element_forces() {
     os << ": it was crushed or turned inside out (loads too fast or too large, or a time step too large)";
     throw NumericalFault(os.str());
   }
+}
+
+void Solver::nodal_sums() {
   // Nodal sums in a fixed order (the corners are sorted by element and corner).
-  const int n = mesh.num_nodes();
+  const int n = m_.mesh.num_nodes();
 #pragma omp parallel for schedule(static) if (parallel::worth_forking(n, parallel::kNodeSumNs))
   for (int i = 0; i < n; ++i) {
     double sx = 0, sy = 0, sz = 0;

@@ -102,6 +102,16 @@ inline void rotate_and_strain(const T L[3][3], double dt, T s[6], T deps[6], T w
   deps[5] = (L[2][0] + L[0][2]) * dt;
 }
 
+/// The time-stamp counter (fe/phase_times.hpp), for the per-phase split of
+/// make bench; a builtin, so no code outside this namespace (build.isa_symbols).
+inline std::uint64_t ticks() {
+#if defined(__x86_64__)
+  return __builtin_ia32_rdtsc();
+#else
+  return 0;
+#endif
+}
+
 /// Elements e0 .. e0+W-1.  Returns the lowest inverted one, or -1.
 template <int W>
 int element_block(const ElementView& ev, int e0) {
@@ -188,6 +198,7 @@ int element_block(const ElementView& ev, int e0) {
   // other materials one point at a time (each turns its own history with the
   // point's spin).
   const material::Material& mat = *ev.mat;
+  const std::uint64_t tick0 = ev.material_ticks ? ticks() : 0;
   T ratio;
   bool on_lanes = false;
   if constexpr (W > 1) {
@@ -228,6 +239,7 @@ int element_block(const ElementView& ev, int e0) {
     const double r0 = mat.tangent_ratio(&ev.sig[12 * e], st[0]), r1 = mat.tangent_ratio(&ev.sig[12 * e + 6], st[1]);
     set_lane(ratio, l, 0.5 * (r0 + r1));
   }
+  if (ev.material_ticks) __atomic_fetch_add(ev.material_ticks, ticks() - tick0, __ATOMIC_RELAXED);
   T sp[6], sm[6];
   for (int k = 0; k < 6; ++k)
     for (int l = 0; l < W; ++l) {

@@ -9,6 +9,7 @@
 // bits (fe/lanes.hpp says why), which tests/unit/test_element_kernel.cpp
 // checks; the solver picks the widest one the CPU has.
 #include <array>
+#include <cstdint>
 
 #include "fe/node_view.hpp"
 #include "material/combined_plasticity.hpp"
@@ -43,6 +44,9 @@ struct ElementView {
   double c_elastic = 0;          ///< nu / (1 - nu)
   double dtp = 0;                ///< length of the interval the velocities act over [s]
   double wave_speed = 0;         ///< dilatational wave speed [mm/s]
+  /// When set (make bench's per-phase split, fe/phase_times.hpp): += the
+  /// time-stamp-counter ticks spent in the material updates (atomic, per block).
+  std::uint64_t* material_ticks = nullptr;
 };
 
 /// Process elements [begin, end), `width` (1, 4, or 8 in the avx512 kernel)

@@ -19,6 +19,7 @@
 #include "fe/model.hpp"
 #include "fe/mesh.hpp"
 #include "fe/parallel_policy.hpp"  // whether a loop forks: parallel::worth_forking
+#include "fe/phase_times.hpp"
 #include "fe/step_phases.hpp"
 
 namespace drawbend::fe {
@@ -106,6 +107,11 @@ class Solver {
   double stable_dt() const;  ///< current critical step times the safety factor [s]
   double max_penetration() const;
 
+  /// Accumulate the wall time of each phase of the cycle into `t` (make
+  /// bench's per-phase split; nullptr, the default: not timed).  `t` must
+  /// outlive the runs; timing changes no result.
+  void time_phases(PhaseTimes* t) { phases_ = t; }
+
   /// Guards set to "warn" report here (default: kept in warnings()).
   void set_warning_handler(std::function<void(const std::string&)> h) { on_warning_ = std::move(h); }
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -123,7 +129,8 @@ class Solver {
   NodeView node_view();
   void check_force_driven_tools() const;      ///< throws std::invalid_argument: a tool too light for dt
   void guard_time_step();                     ///< non-finite or collapsed time step
-  void element_forces();
+  void element_forces();                      ///< the element loop: corner forces
+  void nodal_sums();                          ///< the corner forces summed per node (fx_, fy_, fz_)
   contact::ContactView contact_view(std::size_t pair, bool friction, const NodeView& nodes);
   void guard_penetration(std::size_t pair, int slot);  ///< the penetration guard for one slave node
   /// contact::pair_forces per pair, added into ext; the penetration guard.
@@ -169,6 +176,7 @@ class Solver {
   // Where the run is: step index, time into it, its start time (restart point).
   int step_index_ = 0;
   double step_time_ = 0, step_t_start_ = 0;
+  PhaseTimes* phases_ = nullptr;  // time_phases
   std::function<void(const std::string&)> on_warning_;
   std::vector<std::string> warnings_;
   static constexpr int kGuardIds = 8;

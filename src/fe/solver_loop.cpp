@@ -2,6 +2,7 @@
 // bodies: fe/step_phases.cpp; the element loop: fe/element_forces.cpp; contact
 // and friction: the contact module, contact/contact.hpp), the step's set-up, and the guards.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -10,6 +11,28 @@
 #include "fe/solver.hpp"
 
 namespace drawbend::fe {
+
+namespace {
+/// Adds the wall time since the previous lap to one phase of a PhaseTimes
+/// (Solver::time_phases); does nothing when there is none.
+class Laps {
+ public:
+  explicit Laps(PhaseTimes* t) : t_(t) {
+    if (t_) last_ = clock::now();
+  }
+  void operator()(double PhaseTimes::*phase) {
+    if (!t_) return;
+    const auto now = clock::now();
+    t_->*phase += std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+  }
+
+ private:
+  using clock = std::chrono::steady_clock;
+  PhaseTimes* t_;
+  clock::time_point last_;
+};
+}  // namespace
 
 void Solver::run(const std::function<void(const Progress&)>& on_cycle) {
   for (int s = step_index_; s < static_cast<int>(m_.steps.size()); ++s) run_step(s, on_cycle);
@@ -22,6 +45,7 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
   const NodeField ext{ex_.data(), ey_.data(), ez_.data()}, reaction{rx_.data(), ry_.data(), rz_.data()};
   const NodeField v_old{v0x_.data(), v0y_.data(), v0z_.data()};
   const double t_start = step_t_start_;
+  Laps lap(phases_);
   while (step_time_ < step.duration * (1 - 1e-12)) {
     const double dt = std::min(dt_, step.duration - step_time_);
     if (step.duration - step_time_ < 1e-3 * dt0_) break;  // only round-off left in this step
@@ -31,15 +55,24 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
     const double c = step.damping;
     const double a1 = (1 - 0.5 * c * dt) / (1 + 0.5 * c * dt), a2 = dt / (1 + 0.5 * c * dt);
 
-    element_forces();                                              // forces: element loop, nodal sums
+    lap(&PhaseTimes::other);
+    element_forces();                                              // forces: element loop
+    lap(&PhaseTimes::kernel);
+    nodal_sums();                                                  // their sums per node, fixed order
     apply_loads(m_, step, plan_, ts, nodes, ext, applied_.data());  // loads at t_n (and gravity)
+    lap(&PhaseTimes::nodes);
     contact_phase(dt, step.friction, nodes, ext);                   // contact and friction, into ext
+    lap(&PhaseTimes::contact);
     if (const int i = integrate_velocities(nodes, ext, a1, a2, v_old); i >= 0) fault_nonfinite_velocity(i);
     enforce_constraints(step, plan_, th, dt, nodes, slide_offset_.data(), reaction, reactions_.data());
     account_energies(interval_energies(nodes, ext, reaction, v_old, dt, c));  // guards: non-finite energy
     move_nodes(nodes, dt);                                                     // integrate: x at t_n+1
+    lap(&PhaseTimes::nodes);
     move_tools(m_, plan_, th, ts, dt, a1, a2, tool_force_.data(), tool_vel_.data(), tool_offset_.data());
+    lap(&PhaseTimes::other);
     advance_time(dt);
+    lap(&PhaseTimes::nodes);
+    if (phases_) ++phases_->cycles;
     if (on_cycle) on_cycle({index, &step, t_, step_time_, dt, cycle_});  // output: the caller's
   }
   check_step_energies(step);
