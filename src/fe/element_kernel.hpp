@@ -35,7 +35,8 @@
 // Structure (LULESH): gather -> geometry and strain rates on fixed-size locals
 // (vector lanes) -> material update (J2 and combined hardening / Hill'48 on
 // the lanes with masks; other models, and W = 1, one point at a time) ->
-// forces on fixed-size locals -> scatter into the element's corner buffer.
+// forces on fixed-size locals -> scatter into the corner slots (node-major in
+// the solver, so that its nodal sums read in order).
 #include <algorithm>
 #include <cmath>
 
@@ -300,9 +301,12 @@ int element_block(const ElementView& ev, int e0) {
       hgg[i] = R[i][0] * fh[0] + R[i][1] * fh[1] + R[i][2] * fh[2];
     }
     ehg += (hgg[0] * v[a][0] + hgg[1] * v[a][1] + hgg[2] * v[a][2]) * dtp;
-    for (int i = 0; i < 3; ++i) {
-      const T fa = -(f[a][i] + fg[i] + hgg[i]);
-      for (int l = 0; l < W; ++l) ev.corner[24 * (e0 + l) + 3 * a + i] = lane(fa, l);
+    T fa[3];
+    for (int i = 0; i < 3; ++i) fa[i] = -(f[a][i] + fg[i] + hgg[i]);
+    for (int l = 0; l < W; ++l) {
+      const int e = e0 + l;
+      double* out = ev.corner + 3 * static_cast<std::size_t>(ev.corner_slot ? ev.corner_slot[8 * e + a] : 8 * e + a);
+      for (int i = 0; i < 3; ++i) out[i] = lane(fa[i], l);
     }
   }
   for (int l = 0; l < W; ++l) {

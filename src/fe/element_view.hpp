@@ -27,7 +27,10 @@ struct ElementView {
   double* state = nullptr;       ///< 2 * ns per element: the points' material states
   double* hgq = nullptr;         ///< 6 per element: hourglass generalised forces
   double* hg_ratio = nullptr;    ///< 1 per element: relaxed tangent ratio
-  double* corner = nullptr;      ///< 24 per element: corner forces [N]
+  double* corner = nullptr;      ///< corner forces [N], 3 per corner slot
+  /// 8 per element: the slot of corner a of element e in `corner` (the solver's
+  /// are node-major, so that the nodal sums read in order); nullptr: slot 8e + a.
+  const int* corner_slot = nullptr;
   double* ie_inc = nullptr;      ///< 1 per element: internal energy increment [mJ]
   double* hg_inc = nullptr;      ///< 1 per element: hourglass energy increment [mJ]
   double* dt_elem = nullptr;     ///< 1 per element: stable time step [s]

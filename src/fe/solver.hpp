@@ -129,15 +129,16 @@ class Solver {
   NodeView node_view();
   void check_force_driven_tools() const;      ///< throws std::invalid_argument: a tool too light for dt
   void guard_time_step();                     ///< non-finite or collapsed time step
-  void element_forces();                      ///< the element loop: corner forces
-  void nodal_sums();                          ///< the corner forces summed per node (fx_, fy_, fz_)
+  void element_forces();                      ///< the element loop: corner forces into their slots
   contact::ContactView contact_view(std::size_t pair, bool friction, const NodeView& nodes);
   void guard_penetration(std::size_t pair, int slot);  ///< the penetration guard for one slave node
   /// contact::pair_forces per pair, added into ext; the penetration guard.
   void contact_phase(double dt, bool friction, const NodeView& nodes, NodeField ext);
   [[noreturn]] void fault_nonfinite_velocity(int node) const;
-  void account_energies(const EnergyIncrement& inc);  ///< adds the interval's energies; non-finite guard
-  void advance_time(double dt);               ///< t, cycle and the next stable step
+  /// Adds the interval's energies and the elements' (one pass over the
+  /// elements, which also finds their smallest stable step); non-finite guard.
+  void account_energies(const EnergyIncrement& inc);
+  void advance_time(double dt);               ///< t, cycle and the next stable step (account_energies')
   void compute_dt();
   /// Throws NumericalFault naming the element if the step is zero or not finite.
   void check_dt() const;
@@ -149,8 +150,11 @@ class Solver {
 
   Model& m_;
   NodeCorners nc_;
-  std::vector<double> x_, y_, z_, vx_, vy_, vz_, fx_, fy_, fz_, mass_;  // nodes
+  std::vector<double> x_, y_, z_, vx_, vy_, vz_, mass_;  // nodes
   std::vector<double> sig_, state_, hgq_, corner_, elem_mass_factor_, dt_elem_, ie_inc_, hg_inc_;  // elements
+  std::vector<int> corner_slot_;  // per element corner (8e + a): its slot in corner_, node-major (nc_ order)
+  bool elements_forked_ = false;  // this cycle's element loop ran on threads (parallel::worth_forking)
+  double dt_elem_min_ = 0;        // this cycle's smallest element step (account_energies)
   std::vector<Vec3> tool_offset_, tool_vel_, tool_force_;
   std::vector<std::vector<ContactNode>> contact_;
   std::vector<std::vector<double>> contact_stiffness_len_;  // per pair, per node: adjacent element size V/A [mm]
@@ -161,6 +165,8 @@ class Solver {
   std::vector<int> pair_tool_;
   std::vector<const std::vector<Quad>*> pair_faces_;
   std::vector<std::vector<int>> face_slot_;
+  std::vector<contact::SlotFaces> slot_faces_;  // per pair: each slot's faces (the area pass per node)
+  std::vector<double> face_area_scratch_;       // contact: per face of the largest pair, its area
   StepPlan plan_;         // the current step's names resolved (begin_step)
   int plan_step_ = -1;    // the step plan_ belongs to
   std::vector<Vec3> reactions_, applied_;  // last cycle: per reaction slot of plan_, per load of the step

@@ -56,17 +56,19 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
     const double a1 = (1 - 0.5 * c * dt) / (1 + 0.5 * c * dt), a2 = dt / (1 + 0.5 * c * dt);
 
     lap(&PhaseTimes::other);
-    element_forces();                                              // forces: element loop
+    element_forces();                                              // forces: element loop, into corner slots
     lap(&PhaseTimes::kernel);
-    nodal_sums();                                                  // their sums per node, fixed order
     apply_loads(m_, step, plan_, ts, nodes, ext, applied_.data());  // loads at t_n (and gravity)
     lap(&PhaseTimes::nodes);
     contact_phase(dt, step.friction, nodes, ext);                   // contact and friction, into ext
     lap(&PhaseTimes::contact);
-    if (const int i = integrate_velocities(nodes, ext, a1, a2, v_old); i >= 0) fault_nonfinite_velocity(i);
+    // Nodal sums (fixed order) and velocities at t_n+1/2, one pass over the nodes.
+    const bool fork = parallel::worth_forking(nodes.n, parallel::kNodePassNs, elements_forked_);
+    if (const int i = sum_and_integrate(nc_.start.data(), corner_.data(), nodes, ext, a1, a2, v_old, fork); i >= 0)
+      fault_nonfinite_velocity(i);
     enforce_constraints(step, plan_, th, dt, nodes, slide_offset_.data(), reaction, reactions_.data());
-    account_energies(interval_energies(nodes, ext, reaction, v_old, dt, c));  // guards: non-finite energy
-    move_nodes(nodes, dt);                                                     // integrate: x at t_n+1
+    const EnergyIncrement inc = energies_and_move(nodes, ext, reaction, v_old, dt, c);  // and x at t_n+1
+    account_energies(inc);                                                          // guards: non-finite energy
     lap(&PhaseTimes::nodes);
     move_tools(m_, plan_, th, ts, dt, a1, a2, tool_force_.data(), tool_vel_.data(), tool_offset_.data());
     lap(&PhaseTimes::other);
@@ -116,9 +118,6 @@ NodeView Solver::node_view() {
   v.vx = vx_.data();
   v.vy = vy_.data();
   v.vz = vz_.data();
-  v.fx = fx_.data();
-  v.fy = fy_.data();
-  v.fz = fz_.data();
   v.mass = mass_.data();
   v.X = m_.mesh.x.data();
   v.Y = m_.mesh.y.data();
@@ -159,7 +158,9 @@ contact::ContactView Solver::contact_view(std::size_t p, bool friction_on, const
   v.mass = n.mass;
   v.faces = pair_faces_[p]->data();
   v.num_faces = static_cast<int>(pair_faces_[p]->size());
-  v.face_slot = face_slot_[p].data();
+  v.slot_face_start = slot_faces_[p].start.data();
+  v.slot_face = slot_faces_[p].face.data();
+  v.face_area = face_area_scratch_.data();
   v.nodes = contact_[p].data();
   v.num_nodes = static_cast<int>(contact_[p].size());
   v.stiffness_len = contact_stiffness_len_[p].data();
@@ -178,7 +179,7 @@ contact::ContactView Solver::contact_view(std::size_t p, bool friction_on, const
   v.friction_state = friction_state_[p].data();
   v.texture = v.law && cp.texture == ContactPair::Texture::corotational ? texture_ref_[p].data() : nullptr;
   v.rolling_direction = m_.rolling_direction;
-  v.parallel = parallel::worth_forking(v.num_nodes, parallel::kContactNodeNs);
+  v.parallel = parallel::worth_forking(v.num_nodes, parallel::kContactNodeNs, elements_forked_);
   return v;
 }
 
@@ -234,11 +235,13 @@ void Solver::account_energies(const EnergyIncrement& inc) {
   en_.damping += inc.damping;
   en_.external_work += inc.work;
   en_.kinetic = inc.kinetic;
-  double ie = 0, eh = 0;
+  double ie = 0, eh = 0, dtmin = 1e30;
   for (int e = 0; e < m_.mesh.num_elements(); ++e) {
     ie += ie_inc_[e];
     eh += hg_inc_[e];
+    dtmin = std::min(dtmin, dt_elem_[e]);
   }
+  dt_elem_min_ = dtmin;
   if (!std::isfinite(ie + eh)) {
     std::ostringstream os;
     os << "non-finite internal or hourglass energy at t = " << t_ << " s (cycle " << cycle_ << ")";
@@ -254,9 +257,7 @@ void Solver::advance_time(double dt) {
   last_dt_ = dt;
   step_time_ += dt;
   ++cycle_;
-  double dtmin = 1e30;
-  for (double d : dt_elem_) dtmin = std::min(dtmin, d);
-  dt_ = m_.dt_safety * dtmin;
+  dt_ = m_.dt_safety * dt_elem_min_;
 }
 
 void Solver::guard_fired(const Guard& g, int id, const std::string& what) {
@@ -274,8 +275,9 @@ int Solver::nonfinite_element() const {
   for (int e = 0; e < ne; ++e) {
     for (int k = 0; k < 12; ++k)
       if (!std::isfinite(sig_[12 * e + k])) return e;
-    for (int k = 0; k < 24; ++k)
-      if (!std::isfinite(corner_[24 * e + k])) return e;
+    for (int a = 0; a < 8; ++a)
+      for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(corner_[3 * static_cast<std::size_t>(corner_slot_[8 * e + a]) + k])) return e;
   }
   return -1;
 }
