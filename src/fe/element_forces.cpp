@@ -111,7 +111,7 @@ void Solver::element_forces() {
   // independent of the block it falls in and of the thread that runs it.
   const int nb = (ne + kBlock - 1) / kBlock;
   int inverted = -1;
-  elements_forked_ = parallel::worth_forking(ne, parallel::kElementNs);
+  elements_forked_ = fork_allowed_ && parallel::worth_forking(ne, parallel::kElementNs);
 #pragma omp parallel for schedule(static) if (elements_forked_)
   for (int b = 0; b < nb; ++b) {
     const int r = kernel(ev, kBlock * b, std::min(ne, kBlock * (b + 1)), kBlock);

@@ -51,14 +51,19 @@ inline std::atomic<Mode>& mode() {
   return m;
 }
 
+/// The threads a parallel region would get.
+inline int threads() {
+#ifdef _OPENMP
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
+
 /// Whether a loop of `items` items costing `ns_per_item` each should fork;
 /// `after_fork`: the element loop of this cycle has forked.
 inline bool worth_forking(long items, double ns_per_item, bool after_fork = false) {
-#ifdef _OPENMP
-  const int threads = omp_get_max_threads();
-#else
-  const int threads = 1;
-#endif
+  const int threads = parallel::threads();
   if (threads < 2) return false;
   switch (mode().load(std::memory_order_relaxed)) {
     case Mode::always: return true;

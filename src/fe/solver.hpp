@@ -19,6 +19,7 @@
 #include "fe/model.hpp"
 #include "fe/mesh.hpp"
 #include "fe/parallel_policy.hpp"  // whether a loop forks: parallel::worth_forking
+#include "fe/fork_governor.hpp"
 #include "fe/phase_times.hpp"
 #include "fe/step_phases.hpp"
 
@@ -154,6 +155,8 @@ class Solver {
   std::vector<double> sig_, state_, hgq_, corner_, elem_mass_factor_, dt_elem_, ie_inc_, hg_inc_;  // elements
   std::vector<int> corner_slot_;  // per element corner (8e + a): its slot in corner_, node-major (nc_ order)
   bool elements_forked_ = false;  // this cycle's element loop ran on threads (parallel::worth_forking)
+  ForkGovernor governor_;         // whether forking pays on this machine now (measured)
+  bool fork_allowed_ = true;      // this cycle: governor_'s answer (always true unless parallel::Mode::model)
   double dt_elem_min_ = 0;        // this cycle's smallest element step (account_energies)
   std::vector<Vec3> tool_offset_, tool_vel_, tool_force_;
   std::vector<std::vector<ContactNode>> contact_;

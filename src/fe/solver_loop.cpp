@@ -46,7 +46,12 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
   const NodeField v_old{v0x_.data(), v0y_.data(), v0z_.data()};
   const double t_start = step_t_start_;
   Laps lap(phases_);
+  // Forking measured against not forking (fe/fork_governor.hpp), where the model decides.
+  // A cycle is timed without the caller's callback (its output would weigh on one window).
+  const bool govern = parallel::mode().load() == parallel::Mode::model && parallel::threads() > 1;
+  auto cycle_start = std::chrono::steady_clock::now();
   while (step_time_ < step.duration * (1 - 1e-12)) {
+    fork_allowed_ = !govern || governor_.allowed();
     const double dt = std::min(dt_, step.duration - step_time_);
     if (step.duration - step_time_ < 1e-3 * dt0_) break;  // only round-off left in this step
     guard_time_step();
@@ -63,7 +68,7 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
     contact_phase(dt, step.friction, nodes, ext);                   // contact and friction, into ext
     lap(&PhaseTimes::contact);
     // Nodal sums (fixed order) and velocities at t_n+1/2, one pass over the nodes.
-    const bool fork = parallel::worth_forking(nodes.n, parallel::kNodePassNs, elements_forked_);
+    const bool fork = fork_allowed_ && parallel::worth_forking(nodes.n, parallel::kNodePassNs, elements_forked_);
     if (const int i = sum_and_integrate(nc_.start.data(), corner_.data(), nodes, ext, a1, a2, v_old, fork); i >= 0)
       fault_nonfinite_velocity(i);
     enforce_constraints(step, plan_, th, dt, nodes, slide_offset_.data(), reaction, reactions_.data());
@@ -75,7 +80,10 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
     advance_time(dt);
     lap(&PhaseTimes::nodes);
     if (phases_) ++phases_->cycles;
+    if (govern)
+      governor_.after_cycle(std::chrono::duration<double>(std::chrono::steady_clock::now() - cycle_start).count());
     if (on_cycle) on_cycle({index, &step, t_, step_time_, dt, cycle_});  // output: the caller's
+    if (govern) cycle_start = std::chrono::steady_clock::now();
   }
   check_step_energies(step);
   step_index_ = index + 1;
@@ -179,7 +187,7 @@ contact::ContactView Solver::contact_view(std::size_t p, bool friction_on, const
   v.friction_state = friction_state_[p].data();
   v.texture = v.law && cp.texture == ContactPair::Texture::corotational ? texture_ref_[p].data() : nullptr;
   v.rolling_direction = m_.rolling_direction;
-  v.parallel = parallel::worth_forking(v.num_nodes, parallel::kContactNodeNs, elements_forked_);
+  v.parallel = fork_allowed_ && parallel::worth_forking(v.num_nodes, parallel::kContactNodeNs, elements_forked_);
   return v;
 }
 

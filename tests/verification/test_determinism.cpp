@@ -68,3 +68,24 @@ BOOST_AUTO_TEST_CASE(small_loops_stay_serial) {
   omp_set_num_threads(1);
   BOOST_TEST(!fe::parallel::worth_forking(64000, fe::parallel::kElementNs));
 }
+
+// The measured side of the fork decision (fe/fork_governor.hpp): where a cycle
+// with forks takes longer than one without (a busy machine), the loops stop
+// forking, and check again after a growing interval; where forks pay, they
+// fork.  Fed with made-up cycle times: 10 s forking, 1 s serial, then the reverse.
+BOOST_AUTO_TEST_CASE(fork_governor_keeps_the_faster) {
+  fe::ForkGovernor g;
+  auto run = [&](double fork_s, double serial_s, long cycles) {
+    for (long k = 0; k < cycles; ++k) g.after_cycle(g.allowed() ? fork_s : serial_s);
+  };
+  BOOST_TEST(g.allowed());  // before any measurement: as the model says
+  run(10, 1, fe::ForkGovernor::kSettle + 2 * fe::ForkGovernor::kWindow);
+  BOOST_TEST(!g.allowed());
+  BOOST_TEST(g.interval() == fe::ForkGovernor::kMinInterval);
+  run(10, 1, fe::ForkGovernor::kMinInterval + 2 * fe::ForkGovernor::kWindow);
+  BOOST_TEST(!g.allowed());
+  BOOST_TEST(g.interval() == 2 * fe::ForkGovernor::kMinInterval);  // the same winner: trials grow apart
+  run(1, 10, 2 * fe::ForkGovernor::kMinInterval + 2 * fe::ForkGovernor::kWindow);
+  BOOST_TEST(g.allowed());
+  BOOST_TEST(g.interval() == fe::ForkGovernor::kMinInterval);  // the other winner: back to often
+}
