@@ -200,14 +200,14 @@ int element_block(const ElementView& ev, int e0) {
   // point's spin).
   const material::Material& mat = *ev.mat;
   const std::uint64_t tick0 = ev.material_ticks ? ticks() : 0;
-  T ratio;
+  T ratio, snew[2][6];
   bool on_lanes = false;
   if constexpr (W > 1) {
     if (ev.j2_lanes) {
-      j2_points<W>(ev, e0, s, deps, V, ratio);
+      j2_points<W>(ev, e0, s, deps, V, ratio, snew);
       on_lanes = true;
     } else if (ev.combined_lanes) {
-      combined_points<W>(ev, e0, s, deps, spin, V, ratio);
+      combined_points<W>(ev, e0, s, deps, spin, V, ratio, snew);
       on_lanes = true;
     }
   }
@@ -241,12 +241,19 @@ int element_block(const ElementView& ev, int e0) {
     set_lane(ratio, l, 0.5 * (r0 + r1));
   }
   if (ev.material_ticks) __atomic_fetch_add(ev.material_ticks, ticks() - tick0, __ATOMIC_RELAXED);
+  // The new stresses: from the lanes, or from ev.sig where the points were updated one by one.
   T sp[6], sm[6];
-  for (int k = 0; k < 6; ++k)
+  for (int k = 0; k < 6; ++k) {
+    if (on_lanes) {
+      sp[k] = snew[0][k];
+      sm[k] = snew[1][k];
+      continue;
+    }
     for (int l = 0; l < W; ++l) {
       set_lane(sp[k], l, ev.sig[12 * (e0 + l) + k]);
       set_lane(sm[k], l, ev.sig[12 * (e0 + l) + 6 + k]);
     }
+  }
   // Internal forces: mean part (V/2)(sig+ + sig-) . B_a ...
   T smean[6], f[8][3];
   for (int k = 0; k < 6; ++k) smean[k] = 0.5 * (sp[k] + sm[k]);
