@@ -89,3 +89,26 @@ BOOST_AUTO_TEST_CASE(fork_governor_keeps_the_faster) {
   BOOST_TEST(g.allowed());
   BOOST_TEST(g.interval() == fe::ForkGovernor::kMinInterval);  // the other winner: back to often
 }
+
+// make bench's per-phase timers (fe/phase_times.hpp) only read clocks: the
+// same run timed and untimed gives the same bits, and the timed one accounts
+// for every cycle, with time in the element kernel and its material updates.
+BOOST_AUTO_TEST_CASE(phase_timers_change_nothing) {
+  omp_set_num_threads(1);
+  fe::parallel::mode() = fe::parallel::Mode::model;
+  fe::Model m1 = model(), m2 = model();
+  fe::Solver a(m1), b(m2);
+  fe::PhaseTimes t;
+  b.time_phases(&t);
+  a.run();
+  b.run();
+  BOOST_TEST(a.x() == b.x(), boost::test_tools::per_element());
+  BOOST_TEST(a.stress() == b.stress(), boost::test_tools::per_element());
+  BOOST_TEST(a.energies().internal == b.energies().internal);
+  BOOST_TEST(t.cycles == b.cycles());
+  BOOST_TEST(t.kernel > 0);
+  BOOST_TEST(t.contact > 0);
+#if defined(__x86_64__)
+  BOOST_TEST(t.material_ticks > 0u);
+#endif
+}
