@@ -44,7 +44,7 @@ bool bench_deck(const std::string& dir, CsvWriter& w) {
   }
   if (maxt < 2) return true;
   const bool ok = wall[2] <= 1.10 * wall[1];
-  std::cout << "drawbend deck: 2 threads / 1 thread = " << fmt(wall[2] / wall[1], 3)
-            << (ok ? " (ok: not slower beyond 10 % noise)\n" : " (SLOWER on 2 threads than on 1)\n");
+  std::cout << (ok ? "ok   " : "FAIL ") << "drawbend deck, 2 threads not slower than 1: 2 threads / 1 thread = "
+            << fmt(wall[2] / wall[1], 3) << (ok ? " (within 10 % noise)\n" : " (SLOWER on 2 threads)\n");
   return ok;
 }

@@ -8,14 +8,15 @@
 // Cost = (wall(long run) - wall(short run)) / (extra cycles x elements), which
 // removes set-up time.  Then the quick draw-bend deck's wall time on 1 and 2
 // threads, which must not be slower on 2 (bench_deck.cpp; not with --quick).
-// The CPU model and the element kernel head the output.  Results go to
-// build/bench/results.csv (--out; --help lists the options).  `--bar-material NAME` times only the 1,600-element
-// bar on one thread with another material (bar_material(): the lane versions
-// of the material models are compared on it).
+// The CPU model and the element kernel head the output; each case's
+// per-phase split on one thread follows its timings (bench_phases.cpp), and a
+// Markdown table with the issue-22 goals, each ok or FAIL, closes the solver
+// part (bench_summary.cpp).  The models: bench_models.hpp.  Results go to
+// build/bench/results.csv (--out; --help lists the options).
+// `--bar-material NAME` times only the 1,600-element bar on one thread with
+// another material (the lane versions of the material models are compared on it).
 #include <omp.h>
 
-#include <chrono>
-#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -23,92 +24,15 @@
 #include "bench_deck.hpp"
 #include "bench_friction.hpp"
 #include "bench_material.hpp"
+#include "bench_models.hpp"
+#include "bench_phases.hpp"
+#include "bench_summary.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
 #include "fe/element_view.hpp"
 #include "fe/solver.hpp"
-#include "material/combined_plasticity.hpp"
-#include "material/j2_isotropic.hpp"
 
 using namespace drawbend;
-
-namespace {
-
-/// The bar's material (--bar-material): J2 isotropic (the default, the
-/// reference figures), or CombinedPlasticity on the same curve and elastic
-/// constants: "split" (beta = 0.3), "chaboche" (one Armstrong-Frederick term,
-/// C = 5000 MPa, gamma = 40), "hill48" (Hill'48 from r = 0.65 / 0.65 / 0.72,
-/// isotropic hardening) or "hill48_chaboche" (both).  Empty for an unknown name.
-std::shared_ptr<const material::Material> bar_material(const std::string& name) {
-  const double E = 70000.0, nu = 0.33, rho = 2.7e-9;
-  const material::HardeningCurve curve({0.0, 1.0}, {100.0, 600.0});
-  const material::Hill48 hill = material::Hill48::from_r_values(0.65, 0.65, 0.72);
-  material::KinematicHardening split, chab, none;
-  split.beta = 0.3;
-  chab.chaboche = {{5000.0, 40.0}};
-  if (name == "j2") return std::make_shared<material::J2Isotropic>(E, nu, rho, curve);
-  if (name == "split") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, split);
-  if (name == "chaboche") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, chab);
-  if (name == "hill48") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, none, hill);
-  if (name == "hill48_chaboche") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, chab, hill);
-  return nullptr;
-}
-
-fe::Model bar(int nx, int ny, int nz, std::shared_ptr<const material::Material> mat = nullptr) {
-  fe::Model m;
-  const double h = 1.0;  // 1 mm elements
-  m.mesh = fe::structured_block(fe::uniform_lines(0, nx * h, nx), fe::uniform_lines(0, ny * h, ny),
-                                fe::uniform_lines(0, nz * h, nz));
-  m.material = mat ? std::move(mat) : bar_material("j2");
-  fe::Step s;
-  s.duration = 1.0;  // long; runs are cut by cycle count
-  s.fixed = {{"xmin", {true, true, true}}, {"xmax", {false, true, true}}};
-  s.velocities.push_back({"xmax", {1, 0, 0}, fe::History::constant(20000.0)});
-  m.steps.push_back(s);
-  return m;
-}
-
-fe::Model strip_on_pin() {
-  fe::Model m;
-  // 1.04 mm thick, 12.7 mm half-width strip over a 12.7 mm pin: 100 x 8 x 4 = 3,200 elements in the
-  // refined zone plus 2 x 25 x 8 x 4 coarse = 4,800 in all.
-  m.mesh = fe::structured_block(fe::piecewise_lines({-40, -12.5, 12.5, 40}, {25, 100, 25}), fe::uniform_lines(0, 12.7, 8),
-                                fe::uniform_lines(0, 1.04, 4));
-  m.material = std::make_shared<material::J2Isotropic>(70000.0, 0.33, 2.7e-9,
-                                                       material::HardeningCurve({0.0, 1.0}, {100.0, 600.0}));
-  contact::Surface c;
-  c.kind = contact::Surface::Kind::cylinder;
-  c.origin = {0, 0, -6.35};
-  c.axis = {0, 1, 0};
-  c.R = 6.35;
-  m.add_rigid_contact("pin", c, "zmin", std::make_shared<friction::Coulomb>(0.1));
-  fe::Step s;
-  s.duration = 1.0;
-  s.fixed = {{"ymin", {false, true, false}}};
-  s.forces.push_back({"xmin", {-1, 0, 0}, fe::History::constant(750.0)});
-  s.velocities.push_back({"xmax", {1, 0, 0}, fe::History::constant(50.0)});
-  m.steps.push_back(s);
-  m.mass_scaling = 100;
-  return m;
-}
-
-double seconds(fe::Model m, long cycles) {
-  fe::Solver s(m);
-  const auto t0 = std::chrono::steady_clock::now();
-  bool stop = false;
-  try {
-    s.run_step(0, [&](const fe::Progress& p) {
-      if (p.cycle >= cycles && !stop) {
-        stop = true;
-        throw std::runtime_error("done");
-      }
-    });
-  } catch (const std::runtime_error&) {
-  }
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   // 1. Options (--help lists them; an unknown option is an error, exit 2).
@@ -163,9 +87,13 @@ int main(int argc, char** argv) {
             << width << " elements side by side)\n";
   const int maxt = omp_get_num_procs();
   if (friction_only || material_only) cases.clear();
+  std::vector<CaseResult> results;
   for (auto& c : cases) {
     const long ne = c.model.mesh.num_elements();
     const long base = std::max(20L, 2000000L / ne), extra = std::max(50L, (quick ? 4000000L : 20000000L) / ne);
+    CaseResult r;
+    r.name = c.name;
+    r.elements = ne;
     for (int threads : {1, 2}) {
       if (threads > maxt || (threads > 1 && !bar_mat.empty())) continue;
       omp_set_num_threads(threads);
@@ -174,7 +102,10 @@ int main(int argc, char** argv) {
       std::cout << c.name << ": " << ne << " elements, " << threads << " thread(s): " << fmt(ns, 4)
                 << " ns per element-cycle\n";
       w.row({c.name, std::to_string(ne), std::to_string(threads), fmt(ns, 5)});
+      (threads == 1 ? r.ns1 : r.ns2) = ns;
     }
+    if (bar_mat.empty()) r.split = bench_phases(c.name, c.model, extra, w);
+    results.push_back(r);
   }
   bool deck_ok = true;
   if (!bar_mat.empty()) {
@@ -184,6 +115,7 @@ int main(int argc, char** argv) {
   }
   if (!friction_only && !material_only && !quick)
     deck_ok = bench_deck((dir / "scratch").string(), w);
+  if (!results.empty()) print_summary(cpu, isa, width, results);
   if (solver_only) {
     w.save(out);
     std::cout << "written " << out << "\n";

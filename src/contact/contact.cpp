@@ -45,6 +45,18 @@ double face_area(const double* x, const double* y, const double* z, const std::a
   return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 }
 
+SlotFaces slot_faces(const int* face_slot, int num_faces, int num_slots) {
+  SlotFaces sf;
+  sf.start.assign(num_slots + 1, 0);
+  for (int c = 0; c < 4 * num_faces; ++c) ++sf.start[face_slot[c] + 1];
+  for (int k = 0; k < num_slots; ++k) sf.start[k + 1] += sf.start[k];
+  sf.face.resize(sf.start.back());
+  std::vector<int> fill(sf.start.begin(), sf.start.end() - 1);
+  for (int f = 0; f < num_faces; ++f)  // ascending faces, so each slot's list is ascending
+    for (int q = 0; q < 4; ++q) sf.face[fill[face_slot[4 * f + q]]++] = f;
+  return sf;
+}
+
 namespace {
 
 /// The deepest surface of the tool at node position x (-1: none within reach).
@@ -156,18 +168,24 @@ void node_forces(const ContactView& v, int k, double dt) {
 }  // namespace
 
 int pair_forces(const ContactView& v, double dt, double penetration_limit, const PairTotals& totals) {
-  // Tributary areas on the current configuration (sequential: fixed order).
-  for (int k = 0; k < v.num_nodes; ++k) v.nodes[k].area = 0;
-  for (int f = 0; f < v.num_faces; ++f) {
-    const double A = face_area(v.x, v.y, v.z, v.faces[f]);
-    for (int q = 0; q < 4; ++q) v.nodes[v.face_slot[4 * f + q]].area += 0.25 * A;
-  }
   const int nn = v.num_nodes;
-  // Per-node energies, summed afterwards in a fixed order (deterministic).
-  std::fill(v.stored, v.stored + nn, 0.0);
-  std::fill(v.dissipated, v.dissipated + nn, 0.0);
-#pragma omp parallel for schedule(static) if (v.parallel)
-  for (int k = 0; k < nn; ++k) node_forces(v, k, dt);
+#pragma omp parallel if (v.parallel)
+  {
+    // The faces' areas on the current configuration, then per node its
+    // tributary area (a quarter of each of its faces, in ascending face order,
+    // SlotFaces), its energies (summed below in a fixed order) and forces.
+#pragma omp for schedule(static)
+    for (int f = 0; f < v.num_faces; ++f) v.face_area[f] = face_area(v.x, v.y, v.z, v.faces[f]);
+#pragma omp for schedule(static)
+    for (int k = 0; k < nn; ++k) {
+      double area = 0;
+      for (int j = v.slot_face_start[k]; j < v.slot_face_start[k + 1]; ++j) area += 0.25 * v.face_area[v.slot_face[j]];
+      v.nodes[k].area = area;
+      v.stored[k] = 0;
+      v.dissipated[k] = 0;
+      node_forces(v, k, dt);
+    }
+  }
   int deep = -1;
   for (int k = 0; k < nn; ++k) {
     *totals.friction += v.dissipated[k];

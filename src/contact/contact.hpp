@@ -8,6 +8,7 @@
 // pressure, damping, friction return) is described in contact/contact.cpp.
 // Units: mm, N, MPa, s, t.
 #include <array>
+#include <vector>
 
 #include "contact/surface.hpp"
 #include "contact/texture.hpp"
@@ -37,7 +38,9 @@ struct ContactView {
   // The pair's slave side, resolved at set-up.
   const std::array<int, 4>* faces = nullptr;  ///< the face set
   int num_faces = 0;
-  const int* face_slot = nullptr;             ///< 4 per face: the slot in `nodes` of each corner
+  const int* slot_face_start = nullptr;       ///< per slot + 1: where its faces start in slot_face (SlotFaces)
+  const int* slot_face = nullptr;             ///< the faces of each slot, ascending
+  double* face_area = nullptr;                ///< per face: scratch, its current area [mm^2]
   ContactNode* nodes = nullptr;               ///< unique slave nodes, sorted by node id
   int num_nodes = 0;
   const double* stiffness_len = nullptr;      ///< per slot: element size normal to the face [mm]
@@ -66,6 +69,17 @@ struct PairTotals {
   double* stored = nullptr;     ///< += stored penalty energy [mJ]
   Vec3* tool_force = nullptr;   ///< -= the forces on the sheet: the force on the tool [N]
 };
+
+/// Each slot's faces in ascending order (compressed rows: slot k's are
+/// face[start[k]] .. face[start[k+1]-1]), built once from a pair's face_slot
+/// (4 per face: the slot of each corner).
+/// A node's tributary area is then summed by the node itself, face by face in
+/// the order a pass over the faces would add them: the same bits, on any
+/// number of threads.
+struct SlotFaces {
+  std::vector<int> start, face;
+};
+SlotFaces slot_faces(const int* face_slot, int num_faces, int num_slots);
 
 /// Area of a (possibly warped) quadrilateral face: half the cross product of its diagonals [mm^2].
 double face_area(const double* x, const double* y, const double* z, const std::array<int, 4>& f);

@@ -253,9 +253,9 @@ inline void combined_tangent_ratio(const CombinedParams& P, const T s[6], const 
 /// spin (spin[gp]) when the material uses it.
 template <int W, class T>
 inline void combined_points(const ElementView& ev, int e0, const T s[2][6], const T deps[2][6], const T spin[2][3],
-                            const T& V, T& ratio) {
+                            const T& V, T& ratio, T snew[2][6]) {
   const bool turn = ev.spin && ev.dtp != 0.0;
-  lane_points<W>(ev, e0, s, deps, V, ratio, [&](int gp, T* sn, T& r) {
+  lane_points<W>(ev, e0, s, deps, V, ratio, snew, [&](int gp, T* sn, T& r) {
     CombinedState<T> st;
     T Q[3][3];
     move_state<W, false>(ev, e0, gp, st);

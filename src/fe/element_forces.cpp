@@ -1,5 +1,6 @@
 // The element loop's driver (member of fe::Solver): the element kernel over
-// all elements, four side by side, then the nodal sums in a fixed order.
+// all elements, four or eight side by side, into node-major corner slots that
+// the node pass (fe/step_phases.hpp: sum_and_integrate) sums in a fixed order.
 // The element itself is described in fe/element_kernel.hpp.
 #include <algorithm>
 #include <cstdlib>
@@ -77,6 +78,7 @@ void Solver::element_forces() {
   ev.hgq = hgq_.data();
   ev.hg_ratio = hg_ratio_.data();
   ev.corner = corner_.data();
+  ev.corner_slot = corner_slot_.data();
   ev.ie_inc = ie_inc_.data();
   ev.hg_inc = hg_inc_.data();
   ev.dt_elem = dt_elem_.data();
@@ -93,6 +95,7 @@ void Solver::element_forces() {
   // spin and hourglass increments use its length (zero before the first cycle).
   ev.dtp = last_dt_;
   ev.wave_speed = wave_speed_;
+  ev.material_ticks = phases_ ? &phases_->material_ticks : nullptr;
   struct Chosen {
     ElementRangeFn fn = nullptr;
     int width = 4;
@@ -108,7 +111,8 @@ void Solver::element_forces() {
   // independent of the block it falls in and of the thread that runs it.
   const int nb = (ne + kBlock - 1) / kBlock;
   int inverted = -1;
-#pragma omp parallel for schedule(static) if (parallel::worth_forking(ne, parallel::kElementNs))
+  elements_forked_ = fork_allowed_ && parallel::worth_forking(ne, parallel::kElementNs);
+#pragma omp parallel for schedule(static) if (elements_forked_)
   for (int b = 0; b < nb; ++b) {
     const int r = kernel(ev, kBlock * b, std::min(ne, kBlock * (b + 1)), kBlock);
     if (r >= 0) {
@@ -123,21 +127,6 @@ void Solver::element_forces() {
     for (int a = 0; a < 8; ++a) os << " " << mesh.hex[inverted][a];
     os << ": it was crushed or turned inside out (loads too fast or too large, or a time step too large)";
     throw NumericalFault(os.str());
-  }
-  // Nodal sums in a fixed order (the corners are sorted by element and corner).
-  const int n = mesh.num_nodes();
-#pragma omp parallel for schedule(static) if (parallel::worth_forking(n, parallel::kNodeSumNs))
-  for (int i = 0; i < n; ++i) {
-    double sx = 0, sy = 0, sz = 0;
-    for (int k = nc_.start[i]; k < nc_.start[i + 1]; ++k) {
-      const double* cc = &corner_[3 * nc_.corner[k]];
-      sx += cc[0];
-      sy += cc[1];
-      sz += cc[2];
-    }
-    fx_[i] = sx;
-    fy_[i] = sy;
-    fz_[i] = sz;
   }
 }
 

@@ -35,7 +35,8 @@
 // Structure (LULESH): gather -> geometry and strain rates on fixed-size locals
 // (vector lanes) -> material update (J2 and combined hardening / Hill'48 on
 // the lanes with masks; other models, and W = 1, one point at a time) ->
-// forces on fixed-size locals -> scatter into the element's corner buffer.
+// forces on fixed-size locals -> scatter into the corner slots (node-major in
+// the solver, so that its nodal sums read in order).
 #include <algorithm>
 #include <cmath>
 
@@ -100,6 +101,16 @@ inline void rotate_and_strain(const T L[3][3], double dt, T s[6], T deps[6], T w
   deps[3] = (L[0][1] + L[1][0]) * dt;
   deps[4] = (L[1][2] + L[2][1]) * dt;
   deps[5] = (L[2][0] + L[0][2]) * dt;
+}
+
+/// The time-stamp counter (fe/phase_times.hpp), for the per-phase split of
+/// make bench; a builtin, so no code outside this namespace (build.isa_symbols).
+inline std::uint64_t ticks() {
+#if defined(__x86_64__)
+  return __builtin_ia32_rdtsc();
+#else
+  return 0;
+#endif
 }
 
 /// Elements e0 .. e0+W-1.  Returns the lowest inverted one, or -1.
@@ -188,14 +199,15 @@ int element_block(const ElementView& ev, int e0) {
   // other materials one point at a time (each turns its own history with the
   // point's spin).
   const material::Material& mat = *ev.mat;
-  T ratio;
+  const std::uint64_t tick0 = ev.material_ticks ? ticks() : 0;
+  T ratio, snew[2][6];
   bool on_lanes = false;
   if constexpr (W > 1) {
     if (ev.j2_lanes) {
-      j2_points<W>(ev, e0, s, deps, V, ratio);
+      j2_points<W>(ev, e0, s, deps, V, ratio, snew);
       on_lanes = true;
     } else if (ev.combined_lanes) {
-      combined_points<W>(ev, e0, s, deps, spin, V, ratio);
+      combined_points<W>(ev, e0, s, deps, spin, V, ratio, snew);
       on_lanes = true;
     }
   }
@@ -228,12 +240,20 @@ int element_block(const ElementView& ev, int e0) {
     const double r0 = mat.tangent_ratio(&ev.sig[12 * e], st[0]), r1 = mat.tangent_ratio(&ev.sig[12 * e + 6], st[1]);
     set_lane(ratio, l, 0.5 * (r0 + r1));
   }
+  if (ev.material_ticks) __atomic_fetch_add(ev.material_ticks, ticks() - tick0, __ATOMIC_RELAXED);
+  // The new stresses: from the lanes, or from ev.sig where the points were updated one by one.
   T sp[6], sm[6];
-  for (int k = 0; k < 6; ++k)
+  for (int k = 0; k < 6; ++k) {
+    if (on_lanes) {
+      sp[k] = snew[0][k];
+      sm[k] = snew[1][k];
+      continue;
+    }
     for (int l = 0; l < W; ++l) {
       set_lane(sp[k], l, ev.sig[12 * (e0 + l) + k]);
       set_lane(sm[k], l, ev.sig[12 * (e0 + l) + 6 + k]);
     }
+  }
   // Internal forces: mean part (V/2)(sig+ + sig-) . B_a ...
   T smean[6], f[8][3];
   for (int k = 0; k < 6; ++k) smean[k] = 0.5 * (sp[k] + sm[k]);
@@ -288,9 +308,12 @@ int element_block(const ElementView& ev, int e0) {
       hgg[i] = R[i][0] * fh[0] + R[i][1] * fh[1] + R[i][2] * fh[2];
     }
     ehg += (hgg[0] * v[a][0] + hgg[1] * v[a][1] + hgg[2] * v[a][2]) * dtp;
-    for (int i = 0; i < 3; ++i) {
-      const T fa = -(f[a][i] + fg[i] + hgg[i]);
-      for (int l = 0; l < W; ++l) ev.corner[24 * (e0 + l) + 3 * a + i] = lane(fa, l);
+    T fa[3];
+    for (int i = 0; i < 3; ++i) fa[i] = -(f[a][i] + fg[i] + hgg[i]);
+    for (int l = 0; l < W; ++l) {
+      const int e = e0 + l;
+      double* out = ev.corner + 3 * static_cast<std::size_t>(ev.corner_slot ? ev.corner_slot[8 * e + a] : 8 * e + a);
+      for (int i = 0; i < 3; ++i) out[i] = lane(fa[i], l);
     }
   }
   for (int l = 0; l < W; ++l) {

@@ -9,6 +9,7 @@
 // bits (fe/lanes.hpp says why), which tests/unit/test_element_kernel.cpp
 // checks; the solver picks the widest one the CPU has.
 #include <array>
+#include <cstdint>
 
 #include "fe/node_view.hpp"
 #include "material/combined_plasticity.hpp"
@@ -26,7 +27,10 @@ struct ElementView {
   double* state = nullptr;       ///< 2 * ns per element: the points' material states
   double* hgq = nullptr;         ///< 6 per element: hourglass generalised forces
   double* hg_ratio = nullptr;    ///< 1 per element: relaxed tangent ratio
-  double* corner = nullptr;      ///< 24 per element: corner forces [N]
+  double* corner = nullptr;      ///< corner forces [N], 3 per corner slot
+  /// 8 per element: the slot of corner a of element e in `corner` (the solver's
+  /// are node-major, so that the nodal sums read in order); nullptr: slot 8e + a.
+  const int* corner_slot = nullptr;
   double* ie_inc = nullptr;      ///< 1 per element: internal energy increment [mJ]
   double* hg_inc = nullptr;      ///< 1 per element: hourglass energy increment [mJ]
   double* dt_elem = nullptr;     ///< 1 per element: stable time step [s]
@@ -43,6 +47,9 @@ struct ElementView {
   double c_elastic = 0;          ///< nu / (1 - nu)
   double dtp = 0;                ///< length of the interval the velocities act over [s]
   double wave_speed = 0;         ///< dilatational wave speed [mm/s]
+  /// When set (make bench's per-phase split, fe/phase_times.hpp): += the
+  /// time-stamp-counter ticks spent in the material updates (atomic, per block).
+  std::uint64_t* material_ticks = nullptr;
 };
 
 /// Process elements [begin, end), `width` (1, 4, or 8 in the avx512 kernel)

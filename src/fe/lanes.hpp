@@ -14,6 +14,9 @@
 //  - reassociation (-ffast-math, -fassociative-math): never used.
 #include <algorithm>
 #include <cmath>
+#if defined(__AVX__)
+#include <immintrin.h>
+#endif
 
 namespace drawbend::fe {
 
@@ -47,10 +50,27 @@ inline void set_lane(T& v, int l, double x) {
 
 /// r = the square root of each lane of v (IEEE, correctly rounded: as
 /// std::sqrt).  Written through a reference: returning a 32-byte vector by
-/// value would change the ABI between the baseline and AVX builds.
+/// value would change the ABI between the baseline and AVX builds.  In the
+/// AVX2 and AVX-512 kernels one vector instruction (vsqrtpd) does all lanes:
+/// a correctly rounded square root has one answer, so the bits are those of
+/// std::sqrt lane by lane, which GCC otherwise emits as one vsqrtsd per lane.
+/// Always inlined, so the kernels' objects define no copy of it (a copy with
+/// AVX instructions must never be the one the baseline code calls).
 inline void lane_sqrt(const double& v, double& r) { r = std::sqrt(v); }
 template <class T>
-inline void lane_sqrt(const T& v, T& r) {
+__attribute__((always_inline)) inline void lane_sqrt(const T& v, T& r) {
+#if defined(__AVX512F__)
+  if constexpr (sizeof(T) == 64) {
+    r = _mm512_mask_sqrt_pd(v, static_cast<__mmask8>(0xff), v);  // all lanes (_mm512_sqrt_pd: a GCC 12 false warning)
+    return;
+  }
+#endif
+#if defined(__AVX__)
+  if constexpr (sizeof(T) == 32) {
+    r = _mm256_sqrt_pd(v);
+    return;
+  }
+#endif
   for (int l = 0; l < static_cast<int>(sizeof(T) / sizeof(double)); ++l) r[l] = std::sqrt(v[l]);
 }
 

@@ -75,14 +75,15 @@ inline void proximity_ratio(const T& f, const T& plastic, T& ratio) {
 /// lanes: for each point, point(gp, sn, r) updates sn (in: the rotated stress
 /// s[gp], out: the new stress) and the point's state in ev.state, and sets r,
 /// its tangent ratio; here the stress power by the midpoint rule into
-/// ev.ie_inc, the new stresses into ev.sig and the mean ratio.  The bits of
-/// the scalar section.
+/// ev.ie_inc, the new stresses into ev.sig and into `snew` (so that the
+/// element's forces read them from registers, not back from ev.sig) and the
+/// mean ratio.  The bits of the scalar section.
 template <int W, class T, class Point>
 inline void lane_points(const ElementView& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio,
-                        Point&& point) {
+                        T snew[2][6], Point&& point) {
   T ie = {}, r[2];
   for (int gp = 0; gp < 2; ++gp) {
-    T sn[6];
+    T* sn = snew[gp];
     for (int k = 0; k < 6; ++k) sn[k] = s[gp][k];
     point(gp, sn, r[gp]);
     T w = {};
@@ -180,8 +181,9 @@ inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, T& ra
 /// The material section of element_block<W> for J2 isotropic (lane_points):
 /// the plastic strains from and to ev.state.
 template <int W, class T>
-inline void j2_points(const ElementView& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio) {
-  lane_points<W>(ev, e0, s, deps, V, ratio, [&](int gp, T* sn, T& r) {
+inline void j2_points(const ElementView& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio,
+                      T snew[2][6]) {
+  lane_points<W>(ev, e0, s, deps, V, ratio, snew, [&](int gp, T* sn, T& r) {
     T ep;
     for (int l = 0; l < W; ++l) set_lane(ep, l, ev.state[2 * (e0 + l) + gp]);
     j2_update<W>(ev.j2, deps[gp], sn, ep);

@@ -12,7 +12,6 @@ struct NodeView {
   int n = 0;
   double *x = nullptr, *y = nullptr, *z = nullptr;     ///< current positions [mm]
   double *vx = nullptr, *vy = nullptr, *vz = nullptr;  ///< velocities [mm/s]
-  const double *fx = nullptr, *fy = nullptr, *fz = nullptr;  ///< internal (element) forces [N]
   const double* mass = nullptr;                        ///< lumped masses [t]
   const double *X = nullptr, *Y = nullptr, *Z = nullptr;     ///< reference positions [mm]
 };

@@ -13,12 +13,19 @@
 // an AVX-512 machine with `make bench`; a rough figure is enough: it only has
 // to tell a 50-microsecond loop from a millisecond one).
 //
+// A loop that runs in a cycle whose element loop has already forked pays
+// less: libgomp's threads spin for a while (GOMP_SPINCOUNT, 300,000 by
+// default) after a region before they sleep, so its fork finds them awake,
+// and a late worker has already delayed that cycle.  Such a loop forks when
+// it saves kHotForkNs (`after_fork`).
+//
 // What that gives (2 threads): the element loop forks from about 800
-// elements; the nodal sum from about 33,000 nodes; contact from about 3,300
-// contact nodes; the nodal position update never at the sizes of this study.
-// A model below these sizes runs serially, so it is never slower on 2
-// threads than on 1.  Results never depend on the decision: every parallel
-// loop writes its own items and every total is summed in a fixed order.
+// elements; the node pass (nodal sums and integration) from about 2,500
+// nodes when the element loop forked in that cycle (the 8,000-element bar,
+// the 4,800-element strip), else from 25,000; contact from about 3,300
+// contact nodes.  A model below these sizes runs serially, so it is never
+// slower on 2 threads than on 1.  Results never depend on the decision: every
+// parallel loop writes its own items and every total is summed in a fixed order.
 #include <atomic>
 
 #ifdef _OPENMP
@@ -29,11 +36,12 @@ namespace drawbend::fe::parallel {
 
 /// Modelled cost of one item [ns] of each parallel loop of the solver.
 inline constexpr double kElementNs = 250;      ///< element kernel, per element (J2, one thread)
-inline constexpr double kNodeSumNs = 6;        ///< nodal sum of the corner forces, per node
-inline constexpr double kNodeUpdateNs = 1.5;   ///< position update, per node
+inline constexpr double kNodePassNs = 8;       ///< nodal sum of the corner forces and integration, per node
 inline constexpr double kContactNodeNs = 60;   ///< penetration, penalty and friction, per contact node
 /// Pessimistic cost of one parallel region [ns] (fork, join, a late worker).
 inline constexpr double kForkNs = 100000;
+/// The same for a region in a cycle whose element loop forked (threads awake).
+inline constexpr double kHotForkNs = 10000;
 
 /// Override of the model, for tests that must run every loop in parallel
 /// (determinism across thread counts) or none.
@@ -43,20 +51,26 @@ inline std::atomic<Mode>& mode() {
   return m;
 }
 
-/// Whether a loop of `items` items costing `ns_per_item` each should fork.
-inline bool worth_forking(long items, double ns_per_item) {
+/// The threads a parallel region would get.
+inline int threads() {
 #ifdef _OPENMP
-  const int threads = omp_get_max_threads();
+  return omp_get_max_threads();
 #else
-  const int threads = 1;
+  return 1;
 #endif
+}
+
+/// Whether a loop of `items` items costing `ns_per_item` each should fork;
+/// `after_fork`: the element loop of this cycle has forked.
+inline bool worth_forking(long items, double ns_per_item, bool after_fork = false) {
+  const int threads = parallel::threads();
   if (threads < 2) return false;
   switch (mode().load(std::memory_order_relaxed)) {
     case Mode::always: return true;
     case Mode::never: return false;
     case Mode::model: break;
   }
-  return static_cast<double>(items) * ns_per_item * (1.0 - 1.0 / threads) > kForkNs;
+  return static_cast<double>(items) * ns_per_item * (1.0 - 1.0 / threads) > (after_fork ? kHotForkNs : kForkNs);
 }
 
 }  // namespace drawbend::fe::parallel

@@ -31,7 +31,7 @@ Solver::Solver(Model& model) : m_(model) {
   x_ = mesh.x;
   y_ = mesh.y;
   z_ = mesh.z;
-  for (auto* v : {&vx_, &vy_, &vz_, &fx_, &fy_, &fz_, &mass_, &ex_, &ey_, &ez_, &v0x_, &v0y_, &v0z_}) v->assign(n, 0.0);
+  for (auto* v : {&vx_, &vy_, &vz_, &mass_, &ex_, &ey_, &ez_, &v0x_, &v0y_, &v0z_}) v->assign(n, 0.0);
   const auto& mat = *m_.material;
   // Two integration points per element (through the thickness): 12 stresses
   // and 2 material states each.
@@ -40,6 +40,10 @@ Solver::Solver(Model& model) : m_(model) {
   hgq_.assign(6 * ne, 0.0);
   hg_ratio_.assign(ne, 1.0);
   corner_.assign(24 * ne, 0.0);
+  // Node-major corner slots: node i's corners at slots nc_.start[i] .. start[i+1]-1,
+  // in the order the nodal sum has always added them (ascending element, corner).
+  corner_slot_.assign(8 * static_cast<std::size_t>(ne), 0);
+  for (int k = 0; k < static_cast<int>(nc_.corner.size()); ++k) corner_slot_[nc_.corner[k]] = k;
   ie_inc_.assign(ne, 0.0);
   hg_inc_.assign(ne, 0.0);
   dt_elem_.assign(ne, 0.0);
@@ -82,6 +86,9 @@ Solver::Solver(Model& model) : m_(model) {
     std::vector<ContactNode> cn(nodes.size());
     for (std::size_t k = 0; k < nodes.size(); ++k) cn[k].node = nodes[k];
     face_slot_.push_back(std::move(springs.face_slot));
+    slot_faces_.push_back(contact::slot_faces(face_slot_.back().data(), static_cast<int>(faces.size()),
+                                              static_cast<int>(nodes.size())));
+    face_area_scratch_.resize(std::max(face_area_scratch_.size(), faces.size()), 0.0);
     pair_faces_.push_back(&faces);
     pair_tool_.push_back(tool_index(m_, cp.tool));
     contact_.push_back(std::move(cn));

@@ -19,6 +19,8 @@
 #include "fe/model.hpp"
 #include "fe/mesh.hpp"
 #include "fe/parallel_policy.hpp"  // whether a loop forks: parallel::worth_forking
+#include "fe/fork_governor.hpp"
+#include "fe/phase_times.hpp"
 #include "fe/step_phases.hpp"
 
 namespace drawbend::fe {
@@ -106,6 +108,11 @@ class Solver {
   double stable_dt() const;  ///< current critical step times the safety factor [s]
   double max_penetration() const;
 
+  /// Accumulate the wall time of each phase of the cycle into `t` (make
+  /// bench's per-phase split; nullptr, the default: not timed).  `t` must
+  /// outlive the runs; timing changes no result.
+  void time_phases(PhaseTimes* t) { phases_ = t; }
+
   /// Guards set to "warn" report here (default: kept in warnings()).
   void set_warning_handler(std::function<void(const std::string&)> h) { on_warning_ = std::move(h); }
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -123,14 +130,16 @@ class Solver {
   NodeView node_view();
   void check_force_driven_tools() const;      ///< throws std::invalid_argument: a tool too light for dt
   void guard_time_step();                     ///< non-finite or collapsed time step
-  void element_forces();
+  void element_forces();                      ///< the element loop: corner forces into their slots
   contact::ContactView contact_view(std::size_t pair, bool friction, const NodeView& nodes);
   void guard_penetration(std::size_t pair, int slot);  ///< the penetration guard for one slave node
   /// contact::pair_forces per pair, added into ext; the penetration guard.
   void contact_phase(double dt, bool friction, const NodeView& nodes, NodeField ext);
   [[noreturn]] void fault_nonfinite_velocity(int node) const;
-  void account_energies(const EnergyIncrement& inc);  ///< adds the interval's energies; non-finite guard
-  void advance_time(double dt);               ///< t, cycle and the next stable step
+  /// Adds the interval's energies and the elements' (one pass over the
+  /// elements, which also finds their smallest stable step); non-finite guard.
+  void account_energies(const EnergyIncrement& inc);
+  void advance_time(double dt);               ///< t, cycle and the next stable step (account_energies')
   void compute_dt();
   /// Throws NumericalFault naming the element if the step is zero or not finite.
   void check_dt() const;
@@ -142,8 +151,13 @@ class Solver {
 
   Model& m_;
   NodeCorners nc_;
-  std::vector<double> x_, y_, z_, vx_, vy_, vz_, fx_, fy_, fz_, mass_;  // nodes
+  std::vector<double> x_, y_, z_, vx_, vy_, vz_, mass_;  // nodes
   std::vector<double> sig_, state_, hgq_, corner_, elem_mass_factor_, dt_elem_, ie_inc_, hg_inc_;  // elements
+  std::vector<int> corner_slot_;  // per element corner (8e + a): its slot in corner_, node-major (nc_ order)
+  bool elements_forked_ = false;  // this cycle's element loop ran on threads (parallel::worth_forking)
+  ForkGovernor governor_;         // whether forking pays on this machine now (measured)
+  bool fork_allowed_ = true;      // this cycle: governor_'s answer (always true unless parallel::Mode::model)
+  double dt_elem_min_ = 0;        // this cycle's smallest element step (account_energies)
   std::vector<Vec3> tool_offset_, tool_vel_, tool_force_;
   std::vector<std::vector<ContactNode>> contact_;
   std::vector<std::vector<double>> contact_stiffness_len_;  // per pair, per node: adjacent element size V/A [mm]
@@ -154,6 +168,8 @@ class Solver {
   std::vector<int> pair_tool_;
   std::vector<const std::vector<Quad>*> pair_faces_;
   std::vector<std::vector<int>> face_slot_;
+  std::vector<contact::SlotFaces> slot_faces_;  // per pair: each slot's faces (the area pass per node)
+  std::vector<double> face_area_scratch_;       // contact: per face of the largest pair, its area
   StepPlan plan_;         // the current step's names resolved (begin_step)
   int plan_step_ = -1;    // the step plan_ belongs to
   std::vector<Vec3> reactions_, applied_;  // last cycle: per reaction slot of plan_, per load of the step
@@ -169,6 +185,7 @@ class Solver {
   // Where the run is: step index, time into it, its start time (restart point).
   int step_index_ = 0;
   double step_time_ = 0, step_t_start_ = 0;
+  PhaseTimes* phases_ = nullptr;  // time_phases
   std::function<void(const std::string&)> on_warning_;
   std::vector<std::string> warnings_;
   static constexpr int kGuardIds = 8;

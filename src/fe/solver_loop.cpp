@@ -2,6 +2,7 @@
 // bodies: fe/step_phases.cpp; the element loop: fe/element_forces.cpp; contact
 // and friction: the contact module, contact/contact.hpp), the step's set-up, and the guards.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -10,6 +11,28 @@
 #include "fe/solver.hpp"
 
 namespace drawbend::fe {
+
+namespace {
+/// Adds the wall time since the previous lap to one phase of a PhaseTimes
+/// (Solver::time_phases); does nothing when there is none.
+class Laps {
+ public:
+  explicit Laps(PhaseTimes* t) : t_(t) {
+    if (t_) last_ = clock::now();
+  }
+  void operator()(double PhaseTimes::*phase) {
+    if (!t_) return;
+    const auto now = clock::now();
+    t_->*phase += std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+  }
+
+ private:
+  using clock = std::chrono::steady_clock;
+  PhaseTimes* t_;
+  clock::time_point last_;
+};
+}  // namespace
 
 void Solver::run(const std::function<void(const Progress&)>& on_cycle) {
   for (int s = step_index_; s < static_cast<int>(m_.steps.size()); ++s) run_step(s, on_cycle);
@@ -22,7 +45,13 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
   const NodeField ext{ex_.data(), ey_.data(), ez_.data()}, reaction{rx_.data(), ry_.data(), rz_.data()};
   const NodeField v_old{v0x_.data(), v0y_.data(), v0z_.data()};
   const double t_start = step_t_start_;
+  Laps lap(phases_);
+  // Forking measured against not forking (fe/fork_governor.hpp), where the model decides.
+  // A cycle is timed without the caller's callback (its output would weigh on one window).
+  const bool govern = parallel::mode().load() == parallel::Mode::model && parallel::threads() > 1;
+  auto cycle_start = std::chrono::steady_clock::now();
   while (step_time_ < step.duration * (1 - 1e-12)) {
+    fork_allowed_ = !govern || governor_.allowed();
     const double dt = std::min(dt_, step.duration - step_time_);
     if (step.duration - step_time_ < 1e-3 * dt0_) break;  // only round-off left in this step
     guard_time_step();
@@ -31,16 +60,30 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
     const double c = step.damping;
     const double a1 = (1 - 0.5 * c * dt) / (1 + 0.5 * c * dt), a2 = dt / (1 + 0.5 * c * dt);
 
-    element_forces();                                              // forces: element loop, nodal sums
+    lap(&PhaseTimes::other);
+    element_forces();                                              // forces: element loop, into corner slots
+    lap(&PhaseTimes::kernel);
     apply_loads(m_, step, plan_, ts, nodes, ext, applied_.data());  // loads at t_n (and gravity)
+    lap(&PhaseTimes::nodes);
     contact_phase(dt, step.friction, nodes, ext);                   // contact and friction, into ext
-    if (const int i = integrate_velocities(nodes, ext, a1, a2, v_old); i >= 0) fault_nonfinite_velocity(i);
+    lap(&PhaseTimes::contact);
+    // Nodal sums (fixed order) and velocities at t_n+1/2, one pass over the nodes.
+    const bool fork = fork_allowed_ && parallel::worth_forking(nodes.n, parallel::kNodePassNs, elements_forked_);
+    if (const int i = sum_and_integrate(nc_.start.data(), corner_.data(), nodes, ext, a1, a2, v_old, fork); i >= 0)
+      fault_nonfinite_velocity(i);
     enforce_constraints(step, plan_, th, dt, nodes, slide_offset_.data(), reaction, reactions_.data());
-    account_energies(interval_energies(nodes, ext, reaction, v_old, dt, c));  // guards: non-finite energy
-    move_nodes(nodes, dt);                                                     // integrate: x at t_n+1
+    const EnergyIncrement inc = energies_and_move(nodes, ext, reaction, v_old, dt, c);  // and x at t_n+1
+    account_energies(inc);                                                          // guards: non-finite energy
+    lap(&PhaseTimes::nodes);
     move_tools(m_, plan_, th, ts, dt, a1, a2, tool_force_.data(), tool_vel_.data(), tool_offset_.data());
+    lap(&PhaseTimes::other);
     advance_time(dt);
+    lap(&PhaseTimes::nodes);
+    if (phases_) ++phases_->cycles;
+    if (govern)
+      governor_.after_cycle(std::chrono::duration<double>(std::chrono::steady_clock::now() - cycle_start).count());
     if (on_cycle) on_cycle({index, &step, t_, step_time_, dt, cycle_});  // output: the caller's
+    if (govern) cycle_start = std::chrono::steady_clock::now();
   }
   check_step_energies(step);
   step_index_ = index + 1;
@@ -83,9 +126,6 @@ NodeView Solver::node_view() {
   v.vx = vx_.data();
   v.vy = vy_.data();
   v.vz = vz_.data();
-  v.fx = fx_.data();
-  v.fy = fy_.data();
-  v.fz = fz_.data();
   v.mass = mass_.data();
   v.X = m_.mesh.x.data();
   v.Y = m_.mesh.y.data();
@@ -126,7 +166,9 @@ contact::ContactView Solver::contact_view(std::size_t p, bool friction_on, const
   v.mass = n.mass;
   v.faces = pair_faces_[p]->data();
   v.num_faces = static_cast<int>(pair_faces_[p]->size());
-  v.face_slot = face_slot_[p].data();
+  v.slot_face_start = slot_faces_[p].start.data();
+  v.slot_face = slot_faces_[p].face.data();
+  v.face_area = face_area_scratch_.data();
   v.nodes = contact_[p].data();
   v.num_nodes = static_cast<int>(contact_[p].size());
   v.stiffness_len = contact_stiffness_len_[p].data();
@@ -145,7 +187,7 @@ contact::ContactView Solver::contact_view(std::size_t p, bool friction_on, const
   v.friction_state = friction_state_[p].data();
   v.texture = v.law && cp.texture == ContactPair::Texture::corotational ? texture_ref_[p].data() : nullptr;
   v.rolling_direction = m_.rolling_direction;
-  v.parallel = parallel::worth_forking(v.num_nodes, parallel::kContactNodeNs);
+  v.parallel = fork_allowed_ && parallel::worth_forking(v.num_nodes, parallel::kContactNodeNs, elements_forked_);
   return v;
 }
 
@@ -201,11 +243,13 @@ void Solver::account_energies(const EnergyIncrement& inc) {
   en_.damping += inc.damping;
   en_.external_work += inc.work;
   en_.kinetic = inc.kinetic;
-  double ie = 0, eh = 0;
+  double ie = 0, eh = 0, dtmin = 1e30;
   for (int e = 0; e < m_.mesh.num_elements(); ++e) {
     ie += ie_inc_[e];
     eh += hg_inc_[e];
+    dtmin = std::min(dtmin, dt_elem_[e]);
   }
+  dt_elem_min_ = dtmin;
   if (!std::isfinite(ie + eh)) {
     std::ostringstream os;
     os << "non-finite internal or hourglass energy at t = " << t_ << " s (cycle " << cycle_ << ")";
@@ -221,9 +265,7 @@ void Solver::advance_time(double dt) {
   last_dt_ = dt;
   step_time_ += dt;
   ++cycle_;
-  double dtmin = 1e30;
-  for (double d : dt_elem_) dtmin = std::min(dtmin, d);
-  dt_ = m_.dt_safety * dtmin;
+  dt_ = m_.dt_safety * dt_elem_min_;
 }
 
 void Solver::guard_fired(const Guard& g, int id, const std::string& what) {
@@ -241,8 +283,9 @@ int Solver::nonfinite_element() const {
   for (int e = 0; e < ne; ++e) {
     for (int k = 0; k < 12; ++k)
       if (!std::isfinite(sig_[12 * e + k])) return e;
-    for (int k = 0; k < 24; ++k)
-      if (!std::isfinite(corner_[24 * e + k])) return e;
+    for (int a = 0; a < 8; ++a)
+      for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(corner_[3 * static_cast<std::size_t>(corner_slot_[8 * e + a]) + k])) return e;
   }
   return -1;
 }

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "fe/parallel_policy.hpp"  // parallel::worth_forking
 
 namespace drawbend::fe {
 
@@ -74,18 +73,27 @@ void apply_loads(const Model& m, const Step& step, const StepPlan& plan, double 
     }
 }
 
-int integrate_velocities(const NodeView& v, NodeField ext, double a1, double a2, NodeField v0) {
+int sum_and_integrate(const int* start, const double* corner, const NodeView& v, NodeField ext, double a1, double a2,
+                      NodeField v0, bool parallel) {
+  int bad = v.n;
+#pragma omp parallel for schedule(static) reduction(min : bad) if (parallel)
   for (int i = 0; i < v.n; ++i) {
+    double fx = 0, fy = 0, fz = 0;
+    for (int k = start[i]; k < start[i + 1]; ++k) {
+      fx += corner[3 * k];
+      fy += corner[3 * k + 1];
+      fz += corner[3 * k + 2];
+    }
     v0.x[i] = v.vx[i];
     v0.y[i] = v.vy[i];
     v0.z[i] = v.vz[i];
     const double im = 1.0 / v.mass[i];
-    v.vx[i] = a1 * v.vx[i] + a2 * (v.fx[i] + ext.x[i]) * im;
-    v.vy[i] = a1 * v.vy[i] + a2 * (v.fy[i] + ext.y[i]) * im;
-    v.vz[i] = a1 * v.vz[i] + a2 * (v.fz[i] + ext.z[i]) * im;
-    if (!(std::isfinite(v.vx[i]) && std::isfinite(v.vy[i]) && std::isfinite(v.vz[i]))) return i;
+    v.vx[i] = a1 * v.vx[i] + a2 * (fx + ext.x[i]) * im;
+    v.vy[i] = a1 * v.vy[i] + a2 * (fy + ext.y[i]) * im;
+    v.vz[i] = a1 * v.vz[i] + a2 * (fz + ext.z[i]) * im;
+    if (!(std::isfinite(v.vx[i]) && std::isfinite(v.vy[i]) && std::isfinite(v.vz[i]))) bad = std::min(bad, i);
   }
-  return -1;
+  return bad < v.n ? bad : -1;
 }
 
 namespace {
@@ -180,7 +188,7 @@ void enforce_constraints(const Step& step, const StepPlan& plan, double th, doub
   }
 }
 
-EnergyIncrement interval_energies(const NodeView& v, NodeField ext, NodeField r, NodeField v0, double dt, double c) {
+EnergyIncrement energies_and_move(const NodeView& v, NodeField ext, NodeField r, NodeField v0, double dt, double c) {
   // The damping force -c m v_mid,free (v_free: before the boundary conditions,
   // v_free = v - r dt/m) does work -c m v_mid,free . v_mid dt; on a fixed
   // node v_mid = 0 and the reaction takes the damping force, so it removes
@@ -194,18 +202,11 @@ EnergyIncrement interval_energies(const NodeView& v, NodeField ext, NodeField r,
       const double h = 0.5 * dt / v.mass[i];
       e.damping += c * v.mass[i] * ((mx - h * r.x[i]) * mx + (my - h * r.y[i]) * my + (mz - h * r.z[i]) * mz) * dt;
     }
-  }
-  return e;
-}
-
-void move_nodes(const NodeView& v, double dt) {
-  const int n = v.n;
-#pragma omp parallel for schedule(static) if (parallel::worth_forking(n, parallel::kNodeUpdateNs))
-  for (int i = 0; i < n; ++i) {
     v.x[i] += dt * v.vx[i];
     v.y[i] += dt * v.vy[i];
     v.z[i] += dt * v.vz[i];
   }
+  return e;
 }
 
 void move_tools(const Model& m, const StepPlan& plan, double th, double ts, double dt, double a1, double a2,

@@ -42,9 +42,14 @@ int tool_index(const Model& m, const std::string& name);
 void apply_loads(const Model& m, const Step& step, const StepPlan& plan, double ts, const NodeView& v, NodeField ext,
                  Vec3* applied);
 
-/// Integrate: v0 = v; v = a1 v + a2 (f + ext) / m.  Returns the first node with
-/// a non-finite velocity (-1: none); the nodes after it are not updated.
-int integrate_velocities(const NodeView& v, NodeField ext, double a1, double a2, NodeField v0);
+/// The node pass, one per node: f = the node's corner forces summed in their
+/// fixed order (`corner`, node-major: 3 doubles per slot, node i's slots
+/// start[i] .. start[i+1]-1, ascending element and corner), then v0 = v;
+/// v = a1 v + a2 (f + ext) / m.  Over threads when `parallel` (each node is
+/// its own, so the results do not depend on it).  Returns the lowest node with
+/// a non-finite velocity (-1: none).
+int sum_and_integrate(const int* start, const double* corner, const NodeView& v, NodeField ext, double a1, double a2,
+                      NodeField v0, bool parallel);
 
 /// Constraints at mid-interval step time `th`: rotations (with free sliding,
 /// `slide_offset` per rotation), affine fields, velocities, fixed dofs, in that
@@ -56,10 +61,10 @@ void enforce_constraints(const Step& step, const StepPlan& plan, double th, doub
 struct EnergyIncrement {
   double work = 0, kinetic = 0, damping = 0;
 };
-EnergyIncrement interval_energies(const NodeView& v, NodeField ext, NodeField r, NodeField v0, double dt, double c);
-
-/// Positions at t_n+1 (parallel over nodes).
-void move_nodes(const NodeView& v, double dt);
+/// The interval's energies, summed over the nodes in order (one thread: the
+/// sums keep their bits), and in the same pass the positions at t_n+1,
+/// x += dt v.
+EnergyIncrement energies_and_move(const NodeView& v, NodeField ext, NodeField r, NodeField v0, double dt, double c);
 
 /// Rigid tools: velocity-driven tools at their speed at `th`, force-driven
 /// tools as rigid masses (force at step time `ts`, the sheet's reaction

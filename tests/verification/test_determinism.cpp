@@ -52,15 +52,63 @@ BOOST_AUTO_TEST_CASE(one_and_two_threads_identical) {
 // The thread default (issue 22): on 2 threads the quick draw-bend deck's loops
 // (400 elements, 765 nodes, about 150 contact nodes) are too small to fork,
 // so it cannot run slower on 2 threads than on 1; a 64,000-element bar forks.
+// The node pass of a cycle whose element loop forked forks from 2,500 nodes
+// (the 8,000-element bar's 10,302), not at the 1,600-element bar's 2,214.
 BOOST_AUTO_TEST_CASE(small_loops_stay_serial) {
   omp_set_num_threads(2);
   fe::parallel::mode() = fe::parallel::Mode::model;
   BOOST_TEST(!fe::parallel::worth_forking(400, fe::parallel::kElementNs));
-  BOOST_TEST(!fe::parallel::worth_forking(765, fe::parallel::kNodeSumNs));
-  BOOST_TEST(!fe::parallel::worth_forking(765, fe::parallel::kNodeUpdateNs));
+  BOOST_TEST(!fe::parallel::worth_forking(765, fe::parallel::kNodePassNs));
   BOOST_TEST(!fe::parallel::worth_forking(153, fe::parallel::kContactNodeNs));
   BOOST_TEST(fe::parallel::worth_forking(64000, fe::parallel::kElementNs));
-  BOOST_TEST(fe::parallel::worth_forking(74169, fe::parallel::kNodeSumNs));
+  BOOST_TEST(fe::parallel::worth_forking(74169, fe::parallel::kNodePassNs));
+  BOOST_TEST(!fe::parallel::worth_forking(2214, fe::parallel::kNodePassNs, true));
+  BOOST_TEST(fe::parallel::worth_forking(10302, fe::parallel::kNodePassNs, true));
+  BOOST_TEST(!fe::parallel::worth_forking(10302, fe::parallel::kNodePassNs, false));
   omp_set_num_threads(1);
   BOOST_TEST(!fe::parallel::worth_forking(64000, fe::parallel::kElementNs));
+}
+
+// The measured side of the fork decision (fe/fork_governor.hpp): where a cycle
+// with forks takes longer than one without (a busy machine), the loops stop
+// forking, and check again after a growing interval; where forks pay, they
+// fork.  Fed with made-up cycle times: 10 s forking, 1 s serial, then the reverse.
+BOOST_AUTO_TEST_CASE(fork_governor_keeps_the_faster) {
+  fe::ForkGovernor g;
+  auto run = [&](double fork_s, double serial_s, long cycles) {
+    for (long k = 0; k < cycles; ++k) g.after_cycle(g.allowed() ? fork_s : serial_s);
+  };
+  BOOST_TEST(g.allowed());  // before any measurement: as the model says
+  run(10, 1, fe::ForkGovernor::kSettle + 2 * fe::ForkGovernor::kWindow);
+  BOOST_TEST(!g.allowed());
+  BOOST_TEST(g.interval() == fe::ForkGovernor::kMinInterval);
+  run(10, 1, fe::ForkGovernor::kMinInterval + 2 * fe::ForkGovernor::kWindow);
+  BOOST_TEST(!g.allowed());
+  BOOST_TEST(g.interval() == 2 * fe::ForkGovernor::kMinInterval);  // the same winner: trials grow apart
+  run(1, 10, 2 * fe::ForkGovernor::kMinInterval + 2 * fe::ForkGovernor::kWindow);
+  BOOST_TEST(g.allowed());
+  BOOST_TEST(g.interval() == fe::ForkGovernor::kMinInterval);  // the other winner: back to often
+}
+
+// make bench's per-phase timers (fe/phase_times.hpp) only read clocks: the
+// same run timed and untimed gives the same bits, and the timed one accounts
+// for every cycle, with time in the element kernel and its material updates.
+BOOST_AUTO_TEST_CASE(phase_timers_change_nothing) {
+  omp_set_num_threads(1);
+  fe::parallel::mode() = fe::parallel::Mode::model;
+  fe::Model m1 = model(), m2 = model();
+  fe::Solver a(m1), b(m2);
+  fe::PhaseTimes t;
+  b.time_phases(&t);
+  a.run();
+  b.run();
+  BOOST_TEST(a.x() == b.x(), boost::test_tools::per_element());
+  BOOST_TEST(a.stress() == b.stress(), boost::test_tools::per_element());
+  BOOST_TEST(a.energies().internal == b.energies().internal);
+  BOOST_TEST(t.cycles == b.cycles());
+  BOOST_TEST(t.kernel > 0);
+  BOOST_TEST(t.contact > 0);
+#if defined(__x86_64__)
+  BOOST_TEST(t.material_ticks > 0u);
+#endif
 }

@@ -1,0 +1,82 @@
+// make bench: the models it times (bench_models.hpp).  The bar and the strip
+// are those of the reference figures of issue 22.
+#include "bench_models.hpp"
+
+#include <chrono>
+
+#include "fe/solver.hpp"
+#include "material/combined_plasticity.hpp"
+#include "material/j2_isotropic.hpp"
+
+using namespace drawbend;
+
+// The materials and models: bench_models.hpp says what each is.
+std::shared_ptr<const material::Material> bar_material(const std::string& name) {
+  const double E = 70000.0, nu = 0.33, rho = 2.7e-9;
+  const material::HardeningCurve curve({0.0, 1.0}, {100.0, 600.0});
+  const material::Hill48 hill = material::Hill48::from_r_values(0.65, 0.65, 0.72);
+  material::KinematicHardening split, chab, none;
+  split.beta = 0.3;
+  chab.chaboche = {{5000.0, 40.0}};
+  if (name == "j2") return std::make_shared<material::J2Isotropic>(E, nu, rho, curve);
+  if (name == "split") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, split);
+  if (name == "chaboche") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, chab);
+  if (name == "hill48") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, none, hill);
+  if (name == "hill48_chaboche") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, chab, hill);
+  return nullptr;
+}
+
+fe::Model bar(int nx, int ny, int nz, std::shared_ptr<const material::Material> mat) {
+  fe::Model m;
+  const double h = 1.0;  // 1 mm elements
+  m.mesh = fe::structured_block(fe::uniform_lines(0, nx * h, nx), fe::uniform_lines(0, ny * h, ny),
+                                fe::uniform_lines(0, nz * h, nz));
+  m.material = mat ? std::move(mat) : bar_material("j2");
+  fe::Step s;
+  s.duration = 1.0;  // long; runs are cut by cycle count
+  s.fixed = {{"xmin", {true, true, true}}, {"xmax", {false, true, true}}};
+  s.velocities.push_back({"xmax", {1, 0, 0}, fe::History::constant(20000.0)});
+  m.steps.push_back(s);
+  return m;
+}
+
+fe::Model strip_on_pin() {
+  fe::Model m;
+  // 1.04 mm thick, 12.7 mm half-width strip over a 12.7 mm pin: 100 x 8 x 4 = 3,200 elements in the
+  // refined zone plus 2 x 25 x 8 x 4 coarse = 4,800 in all.
+  m.mesh = fe::structured_block(fe::piecewise_lines({-40, -12.5, 12.5, 40}, {25, 100, 25}), fe::uniform_lines(0, 12.7, 8),
+                                fe::uniform_lines(0, 1.04, 4));
+  m.material = std::make_shared<material::J2Isotropic>(70000.0, 0.33, 2.7e-9,
+                                                       material::HardeningCurve({0.0, 1.0}, {100.0, 600.0}));
+  contact::Surface c;
+  c.kind = contact::Surface::Kind::cylinder;
+  c.origin = {0, 0, -6.35};
+  c.axis = {0, 1, 0};
+  c.R = 6.35;
+  m.add_rigid_contact("pin", c, "zmin", std::make_shared<friction::Coulomb>(0.1));
+  fe::Step s;
+  s.duration = 1.0;
+  s.fixed = {{"ymin", {false, true, false}}};
+  s.forces.push_back({"xmin", {-1, 0, 0}, fe::History::constant(750.0)});
+  s.velocities.push_back({"xmax", {1, 0, 0}, fe::History::constant(50.0)});
+  m.steps.push_back(s);
+  m.mass_scaling = 100;
+  return m;
+}
+
+namespace {
+struct Done {};  // the cycle budget is spent (not a std::exception: a solver fault must not pass for it)
+}  // namespace
+
+double seconds(fe::Model m, long cycles, fe::PhaseTimes* phases) {
+  fe::Solver s(m);
+  s.time_phases(phases);
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    s.run_step(0, [&](const fe::Progress& p) {
+      if (p.cycle >= cycles) throw Done{};
+    });
+  } catch (const Done&) {
+  }
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}

@@ -1,0 +1,28 @@
+#pragma once
+// make bench: the models it times (bench_models.cpp) and the clock it times
+// them with.  Units: mm, N, MPa, s, t/mm^3.
+#include <memory>
+#include <string>
+
+#include "fe/model.hpp"
+#include "fe/phase_times.hpp"
+
+/// The bar's material (--bar-material): J2 isotropic (the default, the
+/// reference figures), or CombinedPlasticity on the same curve and elastic
+/// constants: "split" (beta = 0.3), "chaboche" (one Armstrong-Frederick term,
+/// C = 5000 MPa, gamma = 40), "hill48" (Hill'48 from r = 0.65 / 0.65 / 0.72,
+/// isotropic hardening) or "hill48_chaboche" (both).  nullptr for an unknown name.
+std::shared_ptr<const drawbend::material::Material> bar_material(const std::string& name);
+
+/// A structured bar of nx x ny x nz 1 mm hexahedra (J2 with linear hardening
+/// unless `mat`), one end fixed, the other pulled axially at 20 m/s.
+drawbend::fe::Model bar(int nx, int ny, int nz, std::shared_ptr<const drawbend::material::Material> mat = nullptr);
+
+/// A draw-bend-sized strip with contact: 1.04 mm thick, 12.7 mm half-width,
+/// drawn over a 12.7 mm pin with Coulomb friction (4,800 elements).
+drawbend::fe::Model strip_on_pin();
+
+/// Wall seconds of a solver built on a copy of `m` running `cycles` cycles of
+/// its first step (set-up included); with `phases`, the cycle's phases are
+/// also timed into it (fe/phase_times.hpp).
+double seconds(drawbend::fe::Model m, long cycles, drawbend::fe::PhaseTimes* phases = nullptr);

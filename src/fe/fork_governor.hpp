@@ -1,0 +1,50 @@
+#pragma once
+// Whether the solver's loops may fork into threads now, from their measured
+// cost (issue 22: "decide whether a loop forks from its measured or modelled
+// cost").  The model (fe/parallel_policy.hpp) says which loops are large
+// enough to fork on an idle machine; this governor measures whether forking
+// them pays on the machine as it is, and lets them fork only while it does.
+//
+// Why.  On a shared 2-core machine whose other core runs another job, every
+// join waits for a worker the scheduler has put aside: with a long job on the
+// other core, the 1,600-element bar ran 25 times slower on 2 threads than on
+// 1 (4,946 against 201 ns per element-cycle, 2026-11-26).  No fixed model can
+// see that; a measurement can.
+//
+// How.  Windows of kWindow cycles are timed alternately with forking allowed
+// and forbidden; the faster wins and holds for `interval` cycles, which
+// doubles (up to kMaxInterval) each time the same mode wins again and falls
+// back to kMinInterval when the other one does.  A wrong trial therefore
+// costs a few cycles in thousands.  The first kSettle cycles (first touch of
+// the arrays) are not timed.
+//
+// Results never depend on it: every parallel loop of the solver gives the
+// same bits on any number of threads.  Not used when parallel::mode() is not
+// `model` (tests that force every loop to fork, or none), nor on one thread.
+namespace drawbend::fe {
+
+class ForkGovernor {
+ public:
+  static constexpr int kSettle = 8;        ///< cycles before the first trial
+  static constexpr int kWindow = 8;        ///< cycles per trial window
+  static constexpr long kMinInterval = 64;     ///< cycles between trials, at first
+  static constexpr long kMaxInterval = 16384;  ///< ... at most
+
+  /// May the loops fork in the coming cycle (as far as the measurement goes)?
+  bool allowed() const { return phase_ == Phase::trial_serial ? false : (phase_ == Phase::trial_fork || fork_); }
+
+  /// The wall time [s] of the cycle just run, with allowed() as it was.
+  void after_cycle(double seconds);
+
+  long interval() const { return interval_; }  ///< cycles until the next trial (for tests)
+
+ private:
+  enum class Phase { settle, trial_fork, trial_serial, hold };
+  Phase phase_ = Phase::settle;
+  bool fork_ = true;  // the mode that won the last trial (forking, before any)
+  int count_ = 0;     // cycles into the current phase
+  double t_fork_ = 0, t_serial_ = 0;
+  long interval_ = kMinInterval;
+};
+
+}  // namespace drawbend::fe
