@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # contact-sheet.sh: look at figures before calling a report change done.
 # Lays out the given SVG/PNG figures two per row on one HTML page and
-# screenshots it with headless Chromium (installed by scripts/install-deps.sh).
+# screenshots it with headless Chromium (Debian package chromium; not installed
+# by scripts/install-deps.sh, since neither make nor make test needs it).
 #   scripts/contact-sheet.sh OUT.png FIG1.svg [FIG2.svg ...]
 # Example (Chapter 5's figures after `make test`):
 #   scripts/contact-sheet.sh /tmp/ch5.png build/chapters/ch5-measured/figures/fig_5_1[234].svg

@@ -54,7 +54,10 @@ struct BeamModel {
 struct BeamTrace {
   std::vector<BeamModel> models;  ///< isotropic plane strain, plane stress, Hosford 8, AF chosen, AF in-sample
   BeamModel best_fit, best_all;   ///< the Armstrong-Frederick member chosen on the fit pin; best on all pins
+  BeamModel best_slow;            ///< the member chosen on the fit pin among gamma <= 30 (slow back stresses)
   double chosen_x = 0, chosen_gamma = 0;  ///< best_fit's X_sat [MPa] and gamma
+  double slope_meas = 0;                  ///< Table 5.3's slope on the fit pin
+  double slope_lo = 0, slope_hi = 0;      ///< the members' range of dF_B/dF_back on the fit pin over Table 5.3's range
   int members = 0;
 };
 

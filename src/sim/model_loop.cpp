@@ -257,19 +257,7 @@ std::string merged_material(const std::string& current, const toml::table& add) 
   const bool curve = add.contains("voce") || add.contains("swift") || add.contains("hardening");
   if (curve)
     for (const char* k : {"voce", "swift", "hardening", "yield", "tangent"}) m.erase(k);
-  for (auto&& [k, v] : add) {
-    // The back-stress parts compose: split's beta and a Chaboche term are
-    // keys of one `kinematic` table, so either candidate keeps the other's.
-    const auto* cur_kin = m.get_as<toml::table>("kinematic");
-    const auto* add_kin = v.as_table();
-    if (k.str() == "kinematic" && cur_kin && add_kin) {
-      toml::table kin = *cur_kin;
-      for (auto&& [kk, vv] : *add_kin) kin.insert_or_assign(kk, vv);
-      m.insert_or_assign(k, kin);
-    } else {
-      m.insert_or_assign(k, v);
-    }
-  }
+  for (auto&& [k, v] : add) m.insert_or_assign(k, v);
   inline_all(m);
   m.is_inline(true);
   std::ostringstream o;
@@ -365,17 +353,8 @@ ModelCandidate named_candidate(const std::string& name, const std::string& data_
     for (double b : values()) {
       if (b < 0 || b > 1) throw InputError("candidate '" + name + "': beta must lie in [0, 1]");
       c.members.push_back({"split beta " + fmt(b), [b](DrawBendSpec& s) {
-                             if (s.material.empty()) {  // the isotropic base: the deck text as it always was
-                               s.material = "{ type = \"j2_combined\", kinematic = { beta = " + fmt_shortest(b) + " } }";
-                               return;
-                             }
-                             toml::table kin;  // on a model with a back stress: beta joins it
-                             kin.insert("beta", b);
-                             toml::table add;
-                             if (material_table(s.material)["type"].value_or(std::string()) != "hill48")
-                               add.insert("type", "j2_combined");
-                             add.insert("kinematic", kin);
-                             s.material = merged_material(s.material, add);
+                             // replaces the model's material, and with it a Chaboche back stress
+                             s.material = "{ type = \"j2_combined\", kinematic = { beta = " + fmt_shortest(b) + " } }";
                            }});
     }
   } else if ((kind == "voce" || kind == "hill48") && arg.empty()) {
@@ -443,6 +422,7 @@ ModelCandidate named_candidate(const std::string& name, const std::string& data_
         if (!(xs > 0)) throw InputError("candidate '" + name + "': X_sat must be > 0 MPa");
         const std::string label = "Chaboche X_sat " + fmt(xs) + " MPa" + (at == std::string::npos ? "" : ", gamma " + fmt(g));
         c.members.push_back({label, [xs, g](DrawBendSpec& s) {
+                               // replaces split's beta: the solver takes one form of back stress
                                toml::table add = chaboche_material(s, xs, g);
                                toml::table cur = material_table(s.material);
                                if (cur["type"].value_or(std::string()) != "hill48") add.insert("type", "j2_combined");

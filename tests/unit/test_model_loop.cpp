@@ -122,7 +122,18 @@ BOOST_AUTO_TEST_CASE(candidates_compose) {
   sim::named_candidate("chaboche:30", DRAWBEND_DATA_DIR).members[0].apply(ch);
   const toml::table mc = table(ch.material);
   BOOST_TEST(mc["type"].value_or(std::string()) == "j2_combined");
-  BOOST_TEST(!mc["kinematic"].as_table()->contains("beta"));
+  BOOST_TEST(!mc["kinematic"].as_table()->contains("beta"));  // replaces split's back stress
+  // chaboche:X1/X2@G1/G2: every (X, G) pair is a member, G outer.
+  const sim::ModelCandidate grid = sim::named_candidate("chaboche:60/90@30/120", DRAWBEND_DATA_DIR);
+  BOOST_TEST(grid.members.size() == 4u);
+  BOOST_TEST(grid.members[1].label == "Chaboche X_sat 90 MPa, gamma 30");
+  sim::DrawBendSpec g = t;
+  grid.members[3].apply(g);
+  const toml::table mg = table(g.material);
+  BOOST_TEST((*mg["kinematic"]["gamma"].as_array())[0].value_or(0.0) == 120.0);
+  BOOST_TEST((*mg["kinematic"]["C"].as_array())[0].value_or(0.0) == 90.0 * 120.0);
+  BOOST_CHECK_THROW(sim::named_candidate("chaboche:60@0", DRAWBEND_DATA_DIR), InputError);
+  BOOST_CHECK_THROW(sim::named_candidate("chaboche:60@x", DRAWBEND_DATA_DIR), InputError);
   BOOST_TEST((*mc["kinematic"]["C"].as_array())[0].value_or(0.0) == 9000.0);
   BOOST_TEST((*mc["kinematic"]["gamma"].as_array())[0].value_or(0.0) == 300.0);
   std::vector<double> ex, R;
