@@ -7,11 +7,11 @@ load figdir."/common.gp"
 set title "Bending force per pin: error against the measured fit"
 set xlabel "pin radius / strip thickness R/t (pins 12.7, 25.4, 42 mm)"
 set ylabel "F_{B} predicted / measured - 1 (%)" enhanced
-set key top left
-set yrange [-20:70]
+set key bottom right
+set yrange [-40:70]
 set xrange [4:22]
 set object 1 rect from graph 0, first -10 to graph 1, first 10 fc rgb "#e8f3e8" fs solid noborder behind
-set label 1 "goal: within 10 %" at graph 0.6, first -7
+set label 1 "goal: within 10 %" at graph 0.03, first 6
 set xzeroaxis lt 0
 plot datafile using 1:(100*($3/$2-1)) with linespoints ls 2 title "FE, isotropic (before)", \
      ''       using 1:(100*($4/$2-1)) with linespoints ls 3 title "FE, after the loop", \
