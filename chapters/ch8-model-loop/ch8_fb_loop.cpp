@@ -59,7 +59,7 @@ std::vector<sim::FbPoint> reference_points(const Inputs& in) {
 
 }  // namespace
 
-sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg, const BeamTrace* trace) {
+sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg, const BeamTrace& trace) {
   std::vector<sim::ModelCandidate> cands;
   const std::string data_dir = c.data("");
   std::string list = cfg.candidates;
@@ -71,13 +71,12 @@ sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Conf
   // Chaboche term are exclusive in the solver's kinematic table (a later one
   // replaces the earlier), so split is not in the lists (--candidates
   // split:... runs it alone, as before).
-  std::string af = "chaboche:60/90/120@60";  // without a trace: the grid's middle
-  if (trace && trace->chosen_gamma > 0) {
-    const double x = trace->chosen_x;
-    af = "chaboche:" + (x > 30 ? fmt(x - 30) + "/" : std::string()) + fmt(x) + "/" + fmt(x + 30) + "@" + fmt(trace->chosen_gamma);
-  }
-  if (list.empty()) list = af + (cfg.full_study ? ",voce,hill48" : "");
-  c.value("af_candidate", af);
+  const double x = trace.chosen_x;
+  const std::string af = "chaboche:" + (x > 30 ? fmt(x - 30) + "/" : std::string()) + fmt(x) + "/" + fmt(x + 30) + "@" +
+                         fmt(trace.chosen_gamma);
+  const bool tier_list = list.empty();
+  if (tier_list) list = af + (cfg.full_study ? ",voce,hill48" : "");
+  c.value("af_candidate", tier_list ? af : "not run: --candidates " + list + " replaced the tier's list");
   std::stringstream ss(list);
   for (std::string n; std::getline(ss, n, ',');)
     if (!n.empty()) cands.push_back(sim::named_candidate(n, data_dir.substr(0, data_dir.size() - 1)));
@@ -132,7 +131,7 @@ sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Conf
     row.push_back(pct(f.rel_error()));
     tab.row(row);
     fig.row({fmt(rt, 4), fmt(pts[k].bending_N, 5), fmt(b.predicted_N, 5), fmt(f.predicted_N, 5), fmt(pts[k].pin_mm),
-             trace ? fmt(trace->models[0].fb[k], 5) : "NaN", trace ? fmt(trace->best_fit.fb[k], 5) : "NaN"});
+             fmt(trace.models[0].fb[k], 5), fmt(trace.best_fit.fb[k], 5)});
     const std::string d = fmt(pts[k].pin_mm);
     c.value("fb_meas_d" + d, fmt_fixed(pts[k].bending_N, 1), "N");
     c.value("fb_iso_d" + d, fmt_fixed(b.predicted_N, 1), "N");

@@ -65,10 +65,10 @@ Inputs load_inputs(Chapter& c, const Config& cfg);
 /// A relative error as a signed percentage with one decimal ("+10.6").
 inline std::string pct(double x) { return (x >= 0 ? "+" : "") + drawbend::fmt_fixed(100 * x, 1); }
 /// The bending-force loop: before/after per pin, figure, checks.  Returns the final model.
-/// `trace` (may be null) leads the quick tier's chaboche candidate: the beam's
-/// choice on the fit pin and its neighbours in X_sat, chosen again by the FE.
+/// `trace` leads the tier's chaboche candidate: the beam's choice on the fit
+/// pin and its neighbours in X_sat, chosen again by the FE.
 drawbend::sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg,
-                                                  const BeamTrace* trace = nullptr);
+                                                  const BeamTrace& trace);
 /// Isotropic in plane strain and plane stress, Hosford a = 8, and the
 /// Armstrong-Frederick grid chosen on the fit pin (milliseconds per point).
 BeamTrace beam_trace(Chapter& c, const Inputs& in, const Config& cfg);

@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
     const BeamTrace trace = beam_trace(c, in, cfg);  // 2a: the residual traced by beam theory
     if (!cfg.run_fe) return save_beam_trace(c, in, trace, nullptr);
     if (numerics) numerical_convergence(c, in, cfg);  // 4, first: numerics before physics
-    const auto loop = bending_force_loop(c, in, cfg, &trace);  // 2
+    const auto loop = bending_force_loop(c, in, cfg, trace);  // 2
     save_beam_trace(c, in, trace, &loop);                      // 2a's table with the FE rows
     tension_slope(c, in, cfg, loop);                       // 3
     if (cfg.cup) cup_loop(c, cfg, loop);                   // 5

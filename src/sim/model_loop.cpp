@@ -406,10 +406,10 @@ ModelCandidate named_candidate(const std::string& name, const std::string& data_
     // (large R/t).  chaboche:X1/X2...[@G1/G2...]: every (X_sat, gamma) pair is
     // a member, chosen on the fit pin.  Without @ the rate is gamma = 300
     // (95 % saturated at eps_p = 1 %), an assumption: no published AA5754-O
-    // reverse-loading data (data/materials/README.md).  With two or more
-    // points on the fit pin (level and slope against back tension) both
-    // parameters are identified there; with one point they are not, and the
-    // chosen pair is one of many that fit it.
+    // reverse-loading data (data/materials/README.md).  One point on the fit
+    // pin does not identify both parameters: the chosen pair is one of many
+    // that fit it (Chapter 8's beam trace shows how far they differ on the
+    // other pins).
     const auto at = arg.find('@');
     const std::vector<double> xs_list = values_of(arg.substr(0, at));
     const std::vector<double> g_list = at == std::string::npos ? std::vector<double>{300.0} : values_of(arg.substr(at + 1));
