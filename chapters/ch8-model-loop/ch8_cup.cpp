@@ -7,8 +7,11 @@
 //       - die corner radius 3 / 7.5 / 10 mm and punch corner radius 3 / 8 mm
 //         (the tool drawing, Fig. 6.12, is missing: a plausible range);
 //       - the published Voce flow curve (Hou 2020) instead of the table;
-//       - split combined hardening with the beta the bending-force loop chose
-//         on the 12.7 mm pin (not fitted on the cup);
+//       - combined hardening as the bending-force loop chose it on the
+//         12.7 mm pin (not fitted on the cup): its Armstrong-Frederick back
+//         stress (X_sat, gamma), carved out of the cup's current flow curve
+//         as in the draw-bend model (sim::carved_isotropic_part), or its
+//         split beta when --candidates ran split;
 //       - Hill'48 with the published r-values (not fitted).
 //     A candidate's member is chosen on case 1 (6.4 mm/s) and judged on
 //     case 9 (77.1 mm/s, held out); it is accepted if the held-out error
@@ -24,6 +27,7 @@
 //     mesh's own asymmetry (ideally none): the noise floor of the attribution.
 // Forces for the full blank [kN]; lengths mm; speeds mm/s.
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include <toml++/toml.h>
@@ -31,6 +35,7 @@
 #include "ch8_steps.hpp"
 #include "sim/case_pool.hpp"
 #include "sim/cup_case.hpp"
+#include "material/hardening_curve.hpp"
 
 namespace ch8 {
 
@@ -44,15 +49,42 @@ struct CupModel {
   double punch_r = NAN, die_r = NAN;  ///< NaN: the deck's assumed 5 mm
   std::string voce;                   ///< inline Voce table, empty: the deck's tabulated curve
   double beta = -1;                   ///< split kinematic fraction, < 0: isotropic hardening
+  double x_sat = 0, gamma = 0;        ///< Armstrong-Frederick back stress [MPa, -]; x_sat 0: none
+  std::string curve;                  ///< the tabulated flow curve the back stress is carved from (CSV)
   std::string hill;                   ///< inline Hill'48 table, empty: von Mises
   std::string friction;               ///< sim::CupSpec::friction
+  bool combined() const { return beta >= 0 || x_sat > 0; }
   std::string material() const {
-    if (voce.empty() && beta < 0 && hill.empty()) return "";
-    std::string m = "{ type = \"" + std::string(!hill.empty() ? "hill48" : beta >= 0 ? "j2_combined" : "j2") + "\"";
-    if (!voce.empty()) m += ", voce = " + voce;
-    if (beta >= 0) m += ", kinematic = { beta = " + fmt_shortest(beta) + " }";
+    if (voce.empty() && !combined() && hill.empty()) return "";
+    std::string m = "{ type = \"" + std::string(!hill.empty() ? "hill48" : combined() ? "j2_combined" : "j2") + "\"";
+    if (x_sat > 0) {
+      m += ", " + back_stress();
+    } else {
+      if (!voce.empty()) m += ", voce = " + voce;
+      if (beta >= 0) m += ", kinematic = { beta = " + fmt_shortest(beta) + " }";
+    }
     if (!hill.empty()) m += ", hill48 = " + hill;
     return m + " }";
+  }
+  /// The flow curve (Voce when chosen, else `curve`) less the back stress's
+  /// saturation, as an inline table, and the back stress itself.
+  std::string back_stress() const {
+    material::HardeningCurve c = material::HardeningCurve::load(curve);
+    if (!voce.empty()) {
+      const std::string doc = "v = " + voce;
+      const toml::table t = toml::parse(std::string_view(doc));
+      c = material::HardeningCurve::voce(t["v"]["sigma0"].value_or(0.0), t["v"]["Q"].value_or(0.0),
+                                         t["v"]["b"].value_or(0.0));
+    }
+    const std::vector<double>& x = c.plastic_strains();
+    const std::vector<double> r = sim::carved_isotropic_part(c, x_sat, gamma);
+    std::string px, py;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      px += (i ? ", " : "") + fmt_shortest(x[i]);
+      py += (i ? ", " : "") + fmt_shortest(r[i]);
+    }
+    return "hardening = { plastic_strain = [" + px + "], true_stress_MPa = [" + py + "] }, kinematic = { C = [" +
+           fmt_shortest(gamma * x_sat) + "], gamma = [" + fmt_shortest(gamma) + "] }";
   }
 };
 
@@ -106,13 +138,26 @@ void cup_loop(Chapter& c, const Config& cfg, const sim::ModelLoopResult& bending
   const double stroke = s.d_eval + 0.5;  // just past the evaluation point
   const std::string hill = inline_table(c.data("materials/aa5754_o_hill48_hou2020.toml"), "hill48");
   const std::string voce = inline_table(c.data("materials/aa5754_o_voce_hou2020.toml"), "voce");
-  double beta = -1;  // the bending loop's choice on the 12.7 mm pin
-  for (const auto& st : bending.steps)  // the chosen member's material, read as TOML (split form only)
+  // The bending loop's combined hardening, chosen on the 12.7 mm pin: split's
+  // beta or the back stress (X_sat = C / gamma, one term), read from the
+  // accepted members' materials (TOML inline tables).
+  double beta = -1, x_sat = 0, gamma = 0;
+  for (const auto& st : bending.steps)
     if (!st.spec.material.empty() && st.spec.material.front() == '{') {
       const std::string doc = "m = " + st.spec.material;
       const toml::table t = toml::parse(std::string_view(doc));
-      if (const auto b = t["m"]["kinematic"]["beta"].value<double>()) beta = *b;
+      if (const auto b = t["m"]["kinematic"]["beta"].value<double>()) beta = *b, x_sat = 0;
+      const auto C = t["m"]["kinematic"]["C"][0].value<double>();
+      const auto g = t["m"]["kinematic"]["gamma"][0].value<double>();
+      if (C && g && *g > 0) x_sat = *C / *g, gamma = *g, beta = -1;
     }
+  std::string rd_curve;  // the cup deck's own flow curve (a CSV path relative to the deck)
+  {
+    const toml::table deck = toml::parse_file(s.deck);
+    const auto h = deck["material"]["hardening"].value<std::string>();
+    if (!h) throw InputError(s.deck + ": [material] hardening: expected the path of a flow-curve CSV");
+    rd_curve = (std::filesystem::path(s.deck).parent_path() / *h).lexically_normal().string();
+  }
 
   // Runs side by side in the case pool.
   auto run = [&](const std::vector<sim::CupSpec>& specs) {
@@ -158,6 +203,10 @@ void cup_loop(Chapter& c, const Config& cfg, const sim::ModelLoopResult& bending
     if (beta >= 0)
       cands.push_back({"split combined hardening (beta from the bending loop)",
                        {{"split beta " + fmt(beta), [beta](CupModel& m) { m.beta = beta; }}}});
+    if (x_sat > 0)
+      cands.push_back({"back stress (X_sat, gamma from the bending loop)",
+                       {{"back stress X_sat " + fmt(x_sat) + " MPa, gamma " + fmt(gamma),
+                         [x_sat, gamma, rd_curve](CupModel& m) { m.x_sat = x_sat, m.gamma = gamma, m.curve = rd_curve; }}}});
     cands.push_back({"Hill'48 (Hou 2020 r-values)", {{"Hill'48", [hill](CupModel& m) { m.hill = hill; }}}});
   }
   int fig_rows = 1;
