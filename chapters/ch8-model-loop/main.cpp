@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
   auto& o = ch.options();
   drawbend::sim::add_fe_options(o, cfg.base, cfg.run_fe, cfg.reuse_runs);
   o.add(cfg.full_study, "full-study",
-        "true: the full tier's candidates (beta grid, Voce, Hill'48), the slope of the final model, mass scaling and "
+        "true: the full tier's candidates (back stress, Voce, Hill'48), the slope of the final model, mass scaling and "
         "width convergence; false: the quick tier");
   o.add(cfg.fit_pin, "fit-pin", "pin whose bending force trains the candidates [mm]");
   o.add(cfg.candidates, "candidates",

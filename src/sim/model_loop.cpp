@@ -273,10 +273,9 @@ toml::node_view<const toml::node> file_key(const toml::table& file_material, con
 }
 
 
-/// The flow curve a spec's material uses: its swift, voce or hardening key
-/// (a CSV path or an inline table), else the spec's default table.
-material::HardeningCurve current_curve(const DrawBendSpec& s) {
-  const toml::table m = material_table(s.material);
+/// The flow curve of a [material] table: its swift, voce or hardening key (a
+/// CSV path or an inline table), else `default_table` (a CSV path).
+material::HardeningCurve curve_of(const toml::table& m, const std::string& default_table) {
   if (const auto* sw = m["swift"].as_table())
     return material::HardeningCurve::swift((*sw)["K"].value_or(0.0), (*sw)["e0"].value_or(0.0), (*sw)["n"].value_or(0.0));
   if (const auto* vo = m["voce"].as_table())
@@ -291,13 +290,14 @@ material::HardeningCurve current_curve(const DrawBendSpec& s) {
     return material::HardeningCurve(x, y, "the inline curve");  // checks lengths, finiteness, order
   }
   if (const auto f = m["hardening"].value<std::string>()) return material::HardeningCurve::load(*f);
-  return material::HardeningCurve::load(s.hardening);
+  return material::HardeningCurve::load(default_table);
 }
 
-/// The chaboche candidate's material (see carved_isotropic_part).
-toml::table chaboche_material(const DrawBendSpec& s, double x_sat, double gamma) {
-  const material::HardeningCurve c = current_curve(s);
-  const std::vector<double> x = c.plastic_strains(), r = carved_isotropic_part(c, x_sat, gamma);
+/// The flow curve a spec's material uses (curve_of on its material).
+material::HardeningCurve current_curve(const DrawBendSpec& s) { return curve_of(material_table(s.material), s.hardening); }
+
+/// An inline hardening table of plastic strains x and stresses r.
+toml::table hardening_table(const std::vector<double>& x, const std::vector<double>& r) {
   toml::array ax, ay;
   for (std::size_t i = 0; i < x.size(); ++i) {
     ax.push_back(x[i]);
@@ -306,6 +306,36 @@ toml::table chaboche_material(const DrawBendSpec& s, double x_sat, double gamma)
   toml::table h;
   h.insert("plastic_strain", ax);
   h.insert("true_stress_MPa", ay);
+  return h;
+}
+
+/// A new flow curve (`add`'s swift or voce) on a model with Chaboche back
+/// stresses: the curve is the monotonic response, so it is carved by the
+/// model's back-stress terms (X_k = C_k / gamma_k) as the chaboche candidate
+/// carves the table, and goes in as an inline hardening table.  Otherwise the
+/// back stress would come on top of the new curve and raise every flow stress
+/// by X_sat.  `add` unchanged when the model has no Chaboche terms.
+toml::table carved_curve(const DrawBendSpec& s, toml::table add) {
+  const toml::table cur = material_table(s.material);
+  const auto* C = cur["kinematic"]["C"].as_array();
+  const auto* g = cur["kinematic"]["gamma"].as_array();
+  if (!C || !g || C->size() != g->size() || C->empty()) return add;
+  material::HardeningCurve c = curve_of(add, s.hardening);
+  std::vector<double> r;
+  for (std::size_t k = 0; k < C->size(); ++k) {
+    const double gk = (*g)[k].value_or(0.0), xk = (*C)[k].value_or(0.0) / gk;
+    r = carved_isotropic_part(c, xk, gk);
+    c = material::HardeningCurve(c.plastic_strains(), r, "the carved curve");
+  }
+  for (const char* k : {"voce", "swift"}) add.erase(k);
+  add.insert_or_assign("hardening", hardening_table(c.plastic_strains(), c.stresses()));
+  return add;
+}
+
+/// The chaboche candidate's material (see carved_isotropic_part).
+toml::table chaboche_material(const DrawBendSpec& s, double x_sat, double gamma) {
+  const material::HardeningCurve c = current_curve(s);
+  const toml::table h = hardening_table(c.plastic_strains(), carved_isotropic_part(c, x_sat, gamma));
   toml::table k;
   k.insert("C", toml::array{gamma * x_sat});
   k.insert("gamma", toml::array{gamma});
@@ -374,9 +404,9 @@ ModelCandidate named_candidate(const std::string& name, const std::string& data_
       add.insert("hill48", *file_key(fm, f, "hill48").node());
     }
     c.members.push_back({kind == "voce" ? "Voce flow curve" : "Hill'48", [add](DrawBendSpec& s) {
-                           toml::table a = add;
-                           // hill48 on a combined model keeps its back stress (hill48 takes `kinematic`)
-                           s.material = merged_material(s.material, a);
+                           // hill48 on a combined model keeps its back stress (hill48 takes `kinematic`);
+                           // Voce on it is carved by that back stress
+                           s.material = merged_material(s.material, carved_curve(s, add));
                          }});
   } else if (kind == "offset" && arg.empty()) {
     // The low-strain flow curve: Table 5.1's 0.2 % offset yield stress is the
@@ -399,7 +429,8 @@ ModelCandidate named_candidate(const std::string& name, const std::string& data_
     sw.insert("n", law.n);
     toml::table add;
     add.insert("swift", sw);
-    c.members.push_back({"Swift at 0.2 % offset", [add](DrawBendSpec& s) { s.material = merged_material(s.material, add); }});
+    c.members.push_back({"Swift at 0.2 % offset",
+                         [add](DrawBendSpec& s) { s.material = merged_material(s.material, carved_curve(s, add)); }});
   } else if (kind == "chaboche") {
     // One Armstrong-Frederick back stress carved out of the flow curve: early
     // re-yielding on unbending, which weighs most at small bending strain

@@ -20,6 +20,12 @@
 //    term C = 300 * 30 = 9000 MPa, gamma = 300, and carves R = sigma - X out
 //    of the tabulated RD curve: R non-decreasing, R + X = sigma at eps_p = 0.5
 //    (the envelope cuts only at small strain), R(0) <= sigma(0) - 0;
+//  - Voce (and offset) on top of a back stress "chaboche:30@100" carve the new
+//    curve too: the model's hardening becomes an inline table R with
+//    R + 30 (1 - exp(-100 eps_p)) = Voce(eps_p) = 100.4 + 183.6 (1 - exp(-14.09
+//    eps_p)) at the curve's last point (eps_p >= 0.5), no voce key, and the back stress kept
+//    (C = 3000 MPa, gamma = 100); without the carving every flow stress would
+//    rise by up to X_sat;
 //  - a loop whose points all lie on the fit pin has nothing held out: an
 //    input error before any run.
 #define BOOST_TEST_MODULE model_loop
@@ -150,6 +156,29 @@ BOOST_AUTO_TEST_CASE(candidates_compose) {
   sim::DrawBendSpec bad = t;  // an inline curve without its arrays: an input error, not a crash
   bad.material = "{ type = \"j2\", hardening = { plastic_strain = [0.0, 0.1] } }";
   BOOST_CHECK_THROW(sim::named_candidate("chaboche:30", DRAWBEND_DATA_DIR).members[0].apply(bad), InputError);
+
+  // Voce / offset on a back stress: the new curve is carved by it.
+  sim::DrawBendSpec af = t;
+  sim::named_candidate("chaboche:30@100", DRAWBEND_DATA_DIR).members[0].apply(af);
+  for (const char* kind : {"voce", "offset"}) {
+    sim::DrawBendSpec w = af;
+    sim::named_candidate(kind, DRAWBEND_DATA_DIR).members[0].apply(w);
+    const toml::table mw = table(w.material);
+    BOOST_TEST(!mw.contains("voce"));
+    BOOST_TEST(!mw.contains("swift"));
+    BOOST_TEST((*mw["kinematic"]["C"].as_array())[0].value_or(0.0) == 3000.0);
+    BOOST_TEST((*mw["kinematic"]["gamma"].as_array())[0].value_or(0.0) == 100.0);
+    std::vector<double> wx, wr;
+    for (const auto& v : *mw["hardening"]["plastic_strain"].as_array()) wx.push_back(v.value_or(0.0));
+    for (const auto& v : *mw["hardening"]["true_stress_MPa"].as_array()) wr.push_back(v.value_or(0.0));
+    BOOST_REQUIRE(wx.size() == wr.size());
+    BOOST_REQUIRE(wx.size() > 2);
+    BOOST_TEST(wx.back() >= 0.5);
+    const std::size_t i = wx.size() - 1;  // large strain: the envelope does not cut there
+    const double monotonic = std::string(kind) == "voce" ? 100.4 + 183.6 * (1 - std::exp(-14.09 * wx[i]))
+                                                         : K * std::pow(e0 + wx[i], n);
+    BOOST_TEST(wr[i] + 30 * (1 - std::exp(-100 * wx[i])) == monotonic, boost::test_tools::tolerance(1e-9));
+  }
 }
 
 BOOST_AUTO_TEST_CASE(nothing_held_out) {
