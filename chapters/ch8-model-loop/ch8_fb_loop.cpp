@@ -67,7 +67,7 @@ sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Conf
   // theory chose on the fit pin (step 2a, a 25-member grid judged on the fit
   // pin only): its gamma, and X_sat with its two grid neighbours, chosen again
   // by the FE on the fit pin (the beam's level is not the FE's).  The full
-  // tier adds Voce and Hill'48 on top.  Split combined hardening (beta) and a
+  // tier and `make` (--next-candidates) go on with Voce and Hill'48.  Split combined hardening (beta) and a
   // Chaboche term are exclusive in the solver's kinematic table (a later one
   // replaces the earlier), so split is not in the lists (--candidates
   // split:... runs it alone, as before).
@@ -75,8 +75,12 @@ sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Conf
   const std::string af = "chaboche:" + (x > 30 ? fmt(x - 30) + "/" : std::string()) + fmt(x) + "/" + fmt(x + 30) + "@" +
                          fmt(trace.chosen_gamma);
   const bool tier_list = list.empty();
-  if (tier_list) list = af + (cfg.full_study ? ",voce,hill48" : "");
+  if (tier_list) list = af + (cfg.run_next() ? ",voce,hill48" : "");
   c.value("af_candidate", tier_list ? af : "not run: --candidates " + list + " replaced the tier's list");
+  c.value("next_ran", !tier_list       ? "no: --candidates replaced the tier's list"
+                      : cfg.run_next() ? "yes (Voce, then Hill'48, after the back stress)"
+                                       : "no (the back stress alone, for the test suite's time; `make` and the full "
+                                         "tier go on with Voce and Hill'48)");
   std::stringstream ss(list);
   for (std::string n; std::getline(ss, n, ',');)
     if (!n.empty()) cands.push_back(sim::named_candidate(n, data_dir.substr(0, data_dir.size() - 1)));

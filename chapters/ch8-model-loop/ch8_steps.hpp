@@ -24,14 +24,21 @@ struct Config {
   std::string candidates;   ///< comma-separated candidate names; empty: the tier's list
   bool cup = true;                ///< the cup loop and attribution (step 5)
   std::string numerics = "auto";  ///< the numerical studies: true, false, or auto (= full_study)
+  std::string next = "auto";      ///< Voce and Hill'48 after the back stress: true, false, or auto (= full_study)
 
   /// Whether step 4 (the numerical studies) runs; throws std::invalid_argument
   /// naming --numerics on a value other than true/false/auto (or 1/0/-1).
-  bool run_numerics() const {
-    if (numerics == "true" || numerics == "1") return true;
-    if (numerics == "false" || numerics == "0") return false;
-    if (numerics == "auto" || numerics == "-1") return full_study;
-    throw std::invalid_argument("--numerics: expected true, false or auto, found '" + numerics + "'");
+  bool run_numerics() const { return tri_state(numerics, "--numerics"); }
+  /// Whether the tier's list goes on after the back stress with Voce and
+  /// Hill'48 (std::invalid_argument naming --next-candidates as above).
+  bool run_next() const { return tri_state(next, "--next-candidates"); }
+
+ private:
+  bool tri_state(const std::string& v, const char* option) const {
+    if (v == "true" || v == "1") return true;
+    if (v == "false" || v == "0") return false;
+    if (v == "auto" || v == "-1") return full_study;
+    throw std::invalid_argument(std::string(option) + ": expected true, false or auto, found '" + v + "'");
   }
 };
 

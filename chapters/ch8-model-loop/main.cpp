@@ -36,11 +36,15 @@ int main(int argc, char** argv) {
         "comma-separated candidates (split:B1/B2..., chaboche:X1/X2...[@G1/G2...], voce, hill48, offset, ms:X, across:N); empty: the tier's list");
   o.add(cfg.numerics, "numerics",
         "the mass-scaling and width studies: true, false, or auto (as --full-study); 1, 0, -1 also accepted");
+  o.add(cfg.next, "next-candidates",
+        "after the back stress the loop tries Voce, then Hill'48 (the full tier's list) on this run's mesh: true, "
+        "false, or auto (as --full-study); 1, 0, -1 also accepted");
   o.add(cfg.cup, "cup", "the cup loop and the 2 x 2 attribution (step 5)");
   o.add(cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
   return drawbend::study::run_chapter(ch, argc, argv, [&cfg](drawbend::study::Chapter& c) {
     using namespace ch8;
-    const bool numerics = cfg.run_numerics();  // a bad --numerics fails before any work
+    const bool numerics = cfg.run_numerics();  // a bad --numerics or --next-candidates fails before any work
+    cfg.run_next();
     const Inputs in = load_inputs(c, cfg);  // 1
     c.value("fe_ran", cfg.run_fe ? "yes" : "no");
     const BeamTrace trace = beam_trace(c, in, cfg);  // 2a: the residual traced by beam theory
