@@ -239,8 +239,9 @@ std::vector<PeerResult> bench_calculix(const std::string& dir, CsvWriter& w, boo
     try {
       if (!peers.empty()) {  // the larger bar only when it is quick enough
         const PeerResult& p = peers.front();
-        const double est = p.note.empty() ? (p.ccx_wall[0] + p.ccx_wall[1]) * r.elements / p.elements : 1e30;
+        const double est = (p.ccx_wall[0] + p.ccx_wall[1]) * r.elements / p.elements;
         if (quick) r.note = "skipped (--quick)";
+        else if (!p.note.empty()) r.note = "skipped (" + p.name + " did not run)";
         else if (est > kMaxEstimate) r.note = "skipped: ccx estimated at " + fmt(est, 2) + " s";
       }
       if (r.note.empty()) {
@@ -266,7 +267,7 @@ std::vector<PeerResult> bench_calculix(const std::string& dir, CsvWriter& w, boo
     w.row({"calculix_" + name, std::to_string(r.elements), "1", fmt(r.ccx_ns, 5)});
     w.row({name + "_ccx_window", std::to_string(r.elements), "1", fmt(r.ours_ns, 5)});
     w.comment("CalculiX ccx " + r.version + " " + name + ": ratio ccx/ours " + fmt(r.ccx_ns / r.ours_ns, 3) +
-              " per element-cycle; steps ccx " + fmt(r.ccx_dt, 4) + " s, ours " + fmt(r.ours_dt, 4) +
+              " per element-cycle (CPU " + fmt(r.ccx_cpu_ns / r.ours_cpu_ns, 3) + "); steps ccx " + fmt(r.ccx_dt, 4) + " s, ours " + fmt(r.ours_dt, 4) +
               " s; RF_x on xmin ccx " + fmt(r.ccx_rf[0], 4) + " N, ours " + fmt(r.ours_rf[0], 4) + " N");
   }
   return peers;
