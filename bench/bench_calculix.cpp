@@ -9,9 +9,9 @@
 // the matrix structure, and its one output at the end).  ccx is timed as a
 // child process (wall clock around fork and wait; CPU = user + system from
 // wait4), ours in this process (best of kOursRepeats: ours is cheap to repeat,
-// ccx is not).  ccx's time includes what it does per increment besides the
-// elements (it cannot be switched off): its increment bookkeeping and the
-// result routine's general path.  ccx's explicit step picks its own stable
+// ccx is not).  ccx's time includes whatever else it does per increment
+// (its general nonlinear driver, one iteration per explicit increment; about
+// a tenth of its CPU time is system time; not profiled further).  ccx's explicit step picks its own stable
 // increment (about 0.38 l/c for 1 mm cubes, ours 0.8 l/c), so it takes about
 // twice our cycles for the same window: the summary gives the ratio per
 // element-cycle and per simulated time.
