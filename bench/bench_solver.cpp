@@ -13,6 +13,8 @@
 // Markdown table with the issue-22 goals, each ok or FAIL, closes the solver
 // part (bench_summary.cpp).  The models: bench_models.hpp.  Results go to
 // build/bench/results.csv (--out; --help lists the options).
+// Then, if CalculiX's ccx is on PATH, the same bar in its explicit solver on
+// the same simulated window, as a ratio (bench_calculix.cpp; optional).
 // `--bar-material NAME` times only the 1,600-element bar on one thread with
 // another material (the lane versions of the material models are compared on it).
 #include <omp.h>
@@ -21,6 +23,7 @@
 #include <iostream>
 #include <memory>
 
+#include "bench_calculix.hpp"
 #include "bench_deck.hpp"
 #include "bench_friction.hpp"
 #include "bench_material.hpp"
@@ -37,7 +40,7 @@ using namespace drawbend;
 int main(int argc, char** argv) {
   // 1. Options (--help lists them; an unknown option is an error, exit 2).
   std::string out = "build/bench/results.csv", bar_mat;
-  bool quick = false, friction_only = false, material_only = false, solver_only = false;
+  bool quick = false, friction_only = false, material_only = false, solver_only = false, calculix_only = false;
   Options opt("bench_solver", "make bench: the explicit solver's cost per element-cycle (ns), the material updates, "
                               "the friction laws and the quick draw-bend deck on 1 and 2 threads");
   opt.add(out, "out", "results CSV (its folder also gets friction_cost.csv and the deck's scratch runs)");
@@ -45,6 +48,7 @@ int main(int argc, char** argv) {
   opt.add_flag(friction_only, "friction", "only the friction-law cost");
   opt.add_flag(material_only, "materials", "only the material updates");
   opt.add_flag(solver_only, "solver", "only the element-cycle costs (and the deck unless --quick)");
+  opt.add_flag(calculix_only, "calculix", "only CalculiX (ccx) and ours on the same bar, if ccx is installed");
   opt.add(bar_mat, "bar-material",
           "only the 1,600-element bar on 1 thread with this material: j2, split, chaboche, hill48 or hill48_chaboche");
   try {
@@ -86,7 +90,7 @@ int main(int argc, char** argv) {
   std::cout << "CPU: " << cpu << " (" << omp_get_num_procs() << " processors)\nelement kernel: " << isa << " ("
             << width << " elements side by side)\n";
   const int maxt = omp_get_num_procs();
-  if (friction_only || material_only) cases.clear();
+  if (friction_only || material_only || calculix_only) cases.clear();
   std::vector<CaseResult> results;
   for (auto& c : cases) {
     const long ne = c.model.mesh.num_elements();
@@ -113,10 +117,13 @@ int main(int argc, char** argv) {
     std::cout << "written " << out << "\n";
     return 0;
   }
-  if (!friction_only && !material_only && !quick)
+  if (!friction_only && !material_only && !calculix_only && !quick)
     deck_ok = bench_deck((dir / "scratch").string(), w);
+  std::vector<PeerResult> peers;
+  if (!friction_only && !material_only) peers = bench_calculix((dir / "scratch").string(), w, quick);
   if (!results.empty()) print_summary(cpu, isa, width, results);
-  if (solver_only) {
+  if (!friction_only && !material_only) print_calculix_summary(peers, !find_ccx().empty());
+  if (solver_only || calculix_only) {
     w.save(out);
     std::cout << "written " << out << "\n";
     return deck_ok ? 0 : 1;

@@ -3,7 +3,11 @@
 # Idempotent and non-interactive; safe to run on every `make`.
 set -euo pipefail
 # clang and libclang-rt-dev: libFuzzer for the parser fuzzers (tests/fuzz).
-PKGS=(cmake g++ make libeigen3-dev libboost-test-dev libtomlplusplus-dev gnuplot-nox pandoc clang libclang-rt-dev)
+# calculix-ccx: CalculiX's solver (Debian 2.20-1 on bookworm), an independent
+# peer that `make bench` times on the same bar as ours (bench/bench_calculix.cpp);
+# optional: the bench says so and carries on without it.
+PKGS=(cmake g++ make libeigen3-dev libboost-test-dev libtomlplusplus-dev gnuplot-nox pandoc clang libclang-rt-dev
+      calculix-ccx)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
