@@ -51,6 +51,7 @@ full:
 
 # Solver cost per element-cycle at 1 and 2 threads -> build/bench/results.csv
 bench: build
+	@bash scripts/install-deps.sh --bench
 	@cmake --build $(BUILD) --target bench
 
 # Rewrite the regression gold files from the current code (review the diff!).

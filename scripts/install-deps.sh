@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # Install the Debian packages drawbend needs, only those missing.
 # Idempotent and non-interactive; safe to run on every `make`.
+# Usage: install-deps.sh [--bench]   (--bench: also what `make bench` uses)
 set -euo pipefail
 # clang and libclang-rt-dev: libFuzzer for the parser fuzzers (tests/fuzz).
-# calculix-ccx: CalculiX's solver (Debian 2.20-1 on bookworm), an independent
-# peer that `make bench` times on the same bar as ours (bench/bench_calculix.cpp);
-# optional: the bench says so and carries on without it.
-PKGS=(cmake g++ make libeigen3-dev libboost-test-dev libtomlplusplus-dev gnuplot-nox pandoc clang libclang-rt-dev
-      calculix-ccx)
+PKGS=(cmake g++ make libeigen3-dev libboost-test-dev libtomlplusplus-dev gnuplot-nox pandoc clang libclang-rt-dev)
+# --bench (`make bench`): calculix-ccx, CalculiX's solver (Debian 2.20-1 on
+# bookworm), an independent peer that the bench times on the same bar as ours
+# (bench/bench_calculix.cpp).  Only there: it pulls in OpenMPI and SPOOLES,
+# which `make` and `make test` do not need; the bench says so and carries on
+# without it.
+if [ "${1:-}" = "--bench" ]; then PKGS+=(calculix-ccx); fi
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
