@@ -18,7 +18,8 @@ class FastMod {
       r_[k] = ~std::uint64_t{0} / k + ((k & (k - 1)) == 0 ? 1 : 0);  // floor(2^64 / k)
   }
   std::uint64_t operator()(std::uint64_t x, std::size_t k) const {
-    const auto q = static_cast<std::uint64_t>((static_cast<unsigned __int128>(x) * r_[k]) >> 64);
+    __extension__ using u128 = unsigned __int128;  // a GCC/Clang extension: no -Wpedantic warning
+    const auto q = static_cast<std::uint64_t>((static_cast<u128>(x) * r_[k]) >> 64);
     const std::uint64_t r = x - q * k;
     return r >= k ? r - k : r;
   }
