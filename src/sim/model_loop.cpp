@@ -323,7 +323,11 @@ toml::table carved_curve(const DrawBendSpec& s, toml::table add) {
   material::HardeningCurve c = curve_of(add, s.hardening);
   std::vector<double> r;
   for (std::size_t k = 0; k < C->size(); ++k) {
-    const double gk = (*g)[k].value_or(0.0), xk = (*C)[k].value_or(0.0) / gk;
+    const double gk = (*g)[k].value_or(0.0);
+    if (!(gk > 0))  // gamma 0 is linear (Prager) hardening: no saturation X_sat to carve
+      throw InputError("material: a new flow curve cannot be carved by the linear kinematic term C = " +
+                       fmt((*C)[k].value_or(0.0)) + " MPa with gamma " + fmt(gk) + " (no saturated back stress)");
+    const double xk = (*C)[k].value_or(0.0) / gk;
     r = carved_isotropic_part(c, xk, gk);
     c = material::HardeningCurve(c.plastic_strains(), r, "the carved curve");
   }

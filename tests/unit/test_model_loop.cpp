@@ -25,7 +25,7 @@
 //    R + 30 (1 - exp(-100 eps_p)) = Voce(eps_p) = 100.4 + 183.6 (1 - exp(-14.09
 //    eps_p)) at the curve's last point (eps_p >= 0.5), no voce key, and the back stress kept
 //    (C = 3000 MPa, gamma = 100); without the carving every flow stress would
-//    rise by up to X_sat;
+//    rise by up to X_sat; on a linear term (gamma 0) it is an InputError;
 //  - a loop whose points all lie on the fit pin has nothing held out: an
 //    input error before any run.
 #define BOOST_TEST_MODULE model_loop
@@ -179,6 +179,11 @@ BOOST_AUTO_TEST_CASE(candidates_compose) {
                                                          : K * std::pow(e0 + wx[i], n);
     BOOST_TEST(wr[i] + 30 * (1 - std::exp(-100 * wx[i])) == monotonic, boost::test_tools::tolerance(1e-9));
   }
+  // A linear kinematic term (gamma 0, valid in a deck) has no X_sat: Voce on it is an input error.
+  sim::DrawBendSpec lin = t;
+  lin.material = "{ type = \"j2_combined\", kinematic = { C = [500.0], gamma = [0.0] } }";
+  BOOST_CHECK_EXCEPTION(sim::named_candidate("voce", DRAWBEND_DATA_DIR).members[0].apply(lin), InputError,
+                        [](const InputError& e) { return std::string(e.what()).find("linear kinematic") != std::string::npos; });
 }
 
 BOOST_AUTO_TEST_CASE(nothing_held_out) {
