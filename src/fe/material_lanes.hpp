@@ -36,6 +36,18 @@ inline int curve_segment(const CurveTable& c, double ep) {
   return k;
 }
 
+/// curve_segment(c, ep), searched from segment k instead of the bins: the
+/// same segment (the one with x[k] <= ep < x[k+1] inside the table, 0 and last
+/// at its ends), cheaper when k is that of a nearby strain.
+inline int curve_segment_from(const CurveTable& c, double ep, int k) {
+  if (ep >= c.x[c.last]) return c.last;
+  if (ep <= 0.0) return 0;
+  if (k >= c.last) k = c.last - 1;
+  while (ep >= c.x[k + 1]) ++k;
+  while (k > 0 && ep < c.x[k]) --k;
+  return k;
+}
+
 /// Lane l's segment k: its start strain, start stress and slope.
 template <int W, class T>
 inline void gather_segment(const CurveTable& c, const int k[W], T& xk, T& yk, T& hk) {
@@ -48,9 +60,7 @@ inline void gather_segment(const CurveTable& c, const int k[W], T& xk, T& yk, T&
 
 template <int W, class M>
 inline bool any_lane(const M& m) {
-  bool any = false;
-  for (int l = 0; l < W; ++l) any = any || m[l] != 0;
-  return any;
+  return any_set(m);
 }
 
 /// sy = HardeningCurve::stress(ep) and hk = slope(ep) of W plastic strains.
@@ -98,9 +108,12 @@ inline void lane_points(const ElementView& ev, int e0, const T s[2][6], const T 
 }
 
 /// One integration point of W elements: trial stress from s and d, radial
-/// return; s and ep are updated in place (J2Isotropic::update_point).
+/// return; s and ep are updated in place (J2Isotropic::update_point).  Returns
+/// whether k holds each lane's last curve segment (a start for the search of
+/// the new strain's segment, curve_segment_from); not when every lane stayed
+/// below the initial yield stress, which needs no curve.
 template <int W, class T>
-inline void j2_update(const J2Params& P, const T d[6], T s[6], T& ep) {
+inline bool j2_update(const J2Params& P, const T d[6], T s[6], T& ep, int k[W]) {
   using M = decltype(T{} < T{});
   const T lt = P.lambda * (d[0] + d[1] + d[2]);
   const double g2 = 2.0 * P.G;
@@ -116,9 +129,8 @@ inline void j2_update(const J2Params& P, const T d[6], T s[6], T& ep) {
   const M below_initial = q2 <= P.y0_sq;
   if (!any_lane<W>(~below_initial)) {  // all lanes below the initial yield stress
     s[0] = t0, s[1] = t1, s[2] = t2, s[3] = t3, s[4] = t4, s[5] = t5;
-    return;
+    return false;
   }
-  int k[W];
   for (int l = 0; l < W; ++l) k[l] = curve_segment(P.curve, ep[l]);
   T xk, yk, hk;
   gather_segment<W>(P.curve, k, xk, yk, hk);
@@ -126,7 +138,7 @@ inline void j2_update(const J2Params& P, const T d[6], T s[6], T& ep) {
   const M elastic = below_initial | (q2 <= sy * sy);
   if (!any_lane<W>(~elastic)) {
     s[0] = t0, s[1] = t1, s[2] = t2, s[3] = t3, s[4] = t4, s[5] = t5;
-    return;
+    return true;
   }
   // Plastic lanes: q_tr - 3G (e - ep) = sigma_y(e), segment by segment.
   T q;
@@ -160,14 +172,19 @@ inline void j2_update(const J2Params& P, const T d[6], T s[6], T& ep) {
   s[4] = elastic ? t4 : f * t4;
   s[5] = elastic ? t5 : f * t5;
   ep = elastic ? ep : e;
+  return true;
 }
 
 /// ratio = J2Isotropic::tangent_ratio() of W points (stress s, plastic strain
-/// ep).  Through a reference, as lane_sqrt (fe/lanes.hpp): no vector return.
+/// ep); k: the segments j2_update left (nullptr: none).  Through a reference,
+/// as lane_sqrt (fe/lanes.hpp): no vector return.
 template <int W, class T>
-inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, T& ratio) {
-  T sy, hk;
-  curve_at<W>(P.curve, ep, sy, hk);
+inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, const int* hint, T& ratio) {
+  int k[W];
+  for (int l = 0; l < W; ++l) k[l] = hint ? curve_segment_from(P.curve, ep[l], hint[l]) : curve_segment(P.curve, ep[l]);
+  T xk, yk, hk;
+  gather_segment<W>(P.curve, k, xk, yk, hk);
+  const T sy = yk + hk * (ep - xk);
   const T p = (s[0] + s[1] + s[2]) * (1.0 / 3.0);
   const T a0 = s[0] - p, a1 = s[1] - p, a2 = s[2] - p;
   const T q2 = 1.5 * (a0 * a0 + a1 * a1 + a2 * a2) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
@@ -186,9 +203,10 @@ inline void j2_points(const ElementView& ev, int e0, const T s[2][6], const T de
   lane_points<W>(ev, e0, s, deps, V, ratio, snew, [&](int gp, T* sn, T& r) {
     T ep;
     for (int l = 0; l < W; ++l) set_lane(ep, l, ev.state[2 * (e0 + l) + gp]);
-    j2_update<W>(ev.j2, deps[gp], sn, ep);
+    int k[W];
+    const bool have_k = j2_update<W>(ev.j2, deps[gp], sn, ep, k);
     for (int l = 0; l < W; ++l) ev.state[2 * (e0 + l) + gp] = lane(ep, l);
-    j2_tangent_ratio<W>(ev.j2, sn, ep, r);
+    j2_tangent_ratio<W>(ev.j2, sn, ep, have_k ? k : nullptr, r);
   });
 }
 
