@@ -160,6 +160,7 @@ int element_block(const ElementView& ev, int e0) {
   }
   // Local velocities, mean and thickness-linear velocity gradients.
   T vl[8][3], Ln[3][3] = {}, LCl[3][3] = {}, cx[8], cy[8];
+#pragma GCC unroll 8
   for (int a = 0; a < 8; ++a) {
     for (int i = 0; i < 3; ++i) vl[a][i] = R[0][i] * v[a][0] + R[1][i] * v[a][1] + R[2][i] * v[a][2];
     for (int i = 0; i < 3; ++i)
