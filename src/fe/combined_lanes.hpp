@@ -244,8 +244,7 @@ inline void combined_tangent_ratio(const CombinedParams& P, const T s[6], const 
   isotropic_from_curve(P, sy, R);
   hill_equivalent(P.hill, xi, q);
   const T f = q / R;
-  const T plastic = H / (P.E + H);
-  proximity_ratio(f, plastic, ratio);
+  proximity_ratio(f, H, P.E, ratio);
 }
 
 /// The material section of element_block<W> for CombinedPlasticity

@@ -147,8 +147,10 @@ int element_block(const ElementView& ev, int e0) {
   const T(*R)[3] = g.R;
   // Hourglass vectors gamma_alpha,a = h_alpha,a - (h_alpha . x) . B_a.
   T gam[4][8];
+#pragma GCC unroll 4
   for (int al = 0; al < 4; ++al) {
     T hx = {}, hy = {}, hz = {};
+#pragma GCC unroll 8
     for (int b = 0; b < 8; ++b) {
       hx += kHg[al][b] * x[b];
       hy += kHg[al][b] * y[b];
@@ -158,6 +160,7 @@ int element_block(const ElementView& ev, int e0) {
   }
   // Local velocities, mean and thickness-linear velocity gradients.
   T vl[8][3], Ln[3][3] = {}, LCl[3][3] = {}, cx[8], cy[8];
+#pragma GCC unroll 8
   for (int a = 0; a < 8; ++a) {
     for (int i = 0; i < 3; ++i) vl[a][i] = R[0][i] * v[a][0] + R[1][i] * v[a][1] + R[2][i] * v[a][2];
     for (int i = 0; i < 3; ++i)
@@ -324,11 +327,15 @@ int element_block(const ElementView& ev, int e0) {
       for (int i = 0; i < 3; ++i) out[i] = lane(fa[i], l);
     }
   }
+  // The stable time step, len / c sqrt(mass factor), on the lanes.
+  T mf, smf, len;
+  for (int l = 0; l < W; ++l) set_lane(mf, l, ev.mass_factor[e0 + l]);
+  lane_sqrt(mf, smf);
+  hex_stable_length_t(g.h, len);
+  const T dte = len / ev.wave_speed * smf;
   for (int l = 0; l < W; ++l) {
-    const int e = e0 + l;
-    ev.hg_inc[e] = lane(ehg, l);
-    const double len = hex_stable_length(lane(g.h[0], l), lane(g.h[1], l), lane(g.h[2], l));
-    ev.dt_elem[e] = len / ev.wave_speed * std::sqrt(ev.mass_factor[e]);
+    ev.hg_inc[e0 + l] = lane(ehg, l);
+    ev.dt_elem[e0 + l] = lane(dte, l);
   }
   return -1;
 }

@@ -38,6 +38,7 @@ template <class T>
 inline void volume_derivatives_t(const T x[8], const T y[8], const T z[8], T dvdx[8], T dvdy[8], T dvdz[8]) {
   static constexpr int p[8][6] = {{1, 2, 3, 4, 5, 7}, {2, 3, 0, 5, 6, 4}, {3, 0, 1, 6, 7, 5}, {0, 1, 2, 7, 4, 6},
                                   {7, 6, 5, 0, 3, 1}, {4, 7, 6, 1, 0, 2}, {5, 4, 7, 2, 1, 3}, {6, 5, 4, 3, 2, 0}};
+#pragma GCC unroll 8
   for (int a = 0; a < 8; ++a) {
     const int* q = p[a];
     volu_der(x[q[0]], x[q[1]], x[q[2]], x[q[3]], x[q[4]], x[q[5]], y[q[0]], y[q[1]], y[q[2]], y[q[3]], y[q[4]],
@@ -65,6 +66,7 @@ inline bool hex_geometry_t(const T x[8], const T y[8], const T z[8], HexGeometry
   }
   // Jacobian columns at the centre: dx/dxi = sum_a x_a xi_a / 8, etc.
   T J[3][3] = {};
+#pragma GCC unroll 8
   for (int a = 0; a < 8; ++a) {
     const double n[3] = {kXiN[a] * 0.125, kEtaN[a] * 0.125, kZetaN[a] * 0.125};
     for (int k = 0; k < 3; ++k) {
@@ -90,6 +92,15 @@ inline bool hex_geometry_t(const T x[8], const T y[8], const T z[8], HexGeometry
   }
   for (int c = 0; c < 3; ++c) lane_sqrt(T(J[0][c] * J[0][c] + J[1][c] * J[1][c] + J[2][c] * J[2][c]), g.h[c]);
   return true;
+}
+
+/// hex_stable_length (hex8.hpp) of W elements: 2 min(h), the first smallest
+/// as std::min({h0, h1, h2}) picks it, so every lane has its bits.
+template <class T>
+inline void hex_stable_length_t(const T h[3], T& len) {
+  T m = h[1] < h[0] ? h[1] : h[0];
+  m = h[2] < m ? h[2] : m;
+  len = 2.0 * m;
 }
 
 }  // namespace drawbend::fe::DRAWBEND_ISA

@@ -36,6 +36,18 @@ inline int curve_segment(const CurveTable& c, double ep) {
   return k;
 }
 
+/// curve_segment(c, ep), searched from segment k instead of the bins: the
+/// same segment (the one with x[k] <= ep < x[k+1] inside the table, 0 and last
+/// at its ends), cheaper when k is that of a nearby strain.
+inline int curve_segment_from(const CurveTable& c, double ep, int k) {
+  if (ep >= c.x[c.last]) return c.last;
+  if (ep <= 0.0) return 0;
+  if (k >= c.last) k = c.last - 1;
+  while (ep >= c.x[k + 1]) ++k;
+  while (k > 0 && ep < c.x[k]) --k;
+  return k;
+}
+
 /// Lane l's segment k: its start strain, start stress and slope.
 template <int W, class T>
 inline void gather_segment(const CurveTable& c, const int k[W], T& xk, T& yk, T& hk) {
@@ -48,9 +60,7 @@ inline void gather_segment(const CurveTable& c, const int k[W], T& xk, T& yk, T&
 
 template <int W, class M>
 inline bool any_lane(const M& m) {
-  bool any = false;
-  for (int l = 0; l < W; ++l) any = any || m[l] != 0;
-  return any;
+  return any_set(m);
 }
 
 /// sy = HardeningCurve::stress(ep) and hk = slope(ep) of W plastic strains.
@@ -63,12 +73,26 @@ inline void curve_at(const CurveTable& c, const T& ep, T& sy, T& hk) {
   sy = yk + hk * (ep - xk);
 }
 
-/// ratio = material::yield_proximity_ratio(f, plastic), by masks.
+/// ratio = material::yield_proximity_ratio(f, plastic), by masks, with
+/// plastic = H / (E + H).  The divisions only where a lane needs them: plastic
+/// if some f is above 0.90, the blend if some f lies between 0.90 and 0.98
+/// (or is NaN); a lane's bits are the same either way.
 template <class T>
-inline void proximity_ratio(const T& f, const T& plastic, T& ratio) {
+inline void proximity_ratio(const T& f, const T& H, double E, T& ratio) {
+  using M = decltype(T{} < T{});
   const T one = T{} + 1.0;
+  const M low = f <= 0.90, high = f >= 0.98;
+  if (!any_set(~low)) {
+    ratio = one;
+    return;
+  }
+  const T plastic = H / (E + H);
+  if (!any_set(~(low | high))) {
+    ratio = low ? one : plastic;
+    return;
+  }
   const T between = 1.0 + (plastic - 1.0) * (f - 0.90) / 0.08;
-  ratio = f <= 0.90 ? one : (f >= 0.98 ? plastic : between);
+  ratio = low ? one : (high ? plastic : between);
 }
 
 /// The material section of element_block<W> shared by the models on the
@@ -97,10 +121,24 @@ inline void lane_points(const ElementView& ev, int e0, const T s[2][6], const T 
   ratio = 0.5 * (r[0] + r[1]);
 }
 
-/// One integration point of W elements: trial stress from s and d, radial
-/// return; s and ep are updated in place (J2Isotropic::update_point).
+/// Curve segments of W lanes: k and its start strain, start stress and slope.
 template <int W, class T>
-inline void j2_update(const J2Params& P, const T d[6], T s[6], T& ep) {
+struct LaneSegments {
+  int k[W];
+  T x, y, h;
+};
+
+/// One integration point of W elements: trial stress from s and d, radial
+/// return; s and ep are updated in place (J2Isotropic::update_point).  Returns
+/// whether seg holds each lane's last curve segment (a start for the search of
+/// the new strain's segment, curve_segment_from); not when every lane stayed
+/// below the initial yield stress, which needs no curve.
+template <int W, class T>
+inline bool j2_update(const J2Params& P, const T d[6], T s[6], T& ep, LaneSegments<W, T>& seg) {
+  int* k = seg.k;
+  T& xk = seg.x;
+  T& yk = seg.y;
+  T& hk = seg.h;
   using M = decltype(T{} < T{});
   const T lt = P.lambda * (d[0] + d[1] + d[2]);
   const double g2 = 2.0 * P.G;
@@ -116,17 +154,15 @@ inline void j2_update(const J2Params& P, const T d[6], T s[6], T& ep) {
   const M below_initial = q2 <= P.y0_sq;
   if (!any_lane<W>(~below_initial)) {  // all lanes below the initial yield stress
     s[0] = t0, s[1] = t1, s[2] = t2, s[3] = t3, s[4] = t4, s[5] = t5;
-    return;
+    return false;
   }
-  int k[W];
   for (int l = 0; l < W; ++l) k[l] = curve_segment(P.curve, ep[l]);
-  T xk, yk, hk;
   gather_segment<W>(P.curve, k, xk, yk, hk);
   const T sy = yk + hk * (ep - xk);
   const M elastic = below_initial | (q2 <= sy * sy);
   if (!any_lane<W>(~elastic)) {
     s[0] = t0, s[1] = t1, s[2] = t2, s[3] = t3, s[4] = t4, s[5] = t5;
-    return;
+    return true;
   }
   // Plastic lanes: q_tr - 3G (e - ep) = sigma_y(e), segment by segment.
   T q;
@@ -160,22 +196,35 @@ inline void j2_update(const J2Params& P, const T d[6], T s[6], T& ep) {
   s[4] = elastic ? t4 : f * t4;
   s[5] = elastic ? t5 : f * t5;
   ep = elastic ? ep : e;
+  return true;
 }
 
 /// ratio = J2Isotropic::tangent_ratio() of W points (stress s, plastic strain
-/// ep).  Through a reference, as lane_sqrt (fe/lanes.hpp): no vector return.
+/// ep); hint: the segments j2_update left (nullptr: none), whose table values
+/// serve again where no lane's segment changed.  Through a reference, as
+/// lane_sqrt (fe/lanes.hpp): no vector return.
 template <int W, class T>
-inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, T& ratio) {
-  T sy, hk;
-  curve_at<W>(P.curve, ep, sy, hk);
+inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, const LaneSegments<W, T>* hint, T& ratio) {
+  int k[W];
+  bool same = hint != nullptr;
+  for (int l = 0; l < W; ++l) {
+    k[l] = hint ? curve_segment_from(P.curve, ep[l], hint->k[l]) : curve_segment(P.curve, ep[l]);
+    same = same && k[l] == hint->k[l];
+  }
+  T xk, yk, hk;
+  if (same) {
+    xk = hint->x, yk = hint->y, hk = hint->h;
+  } else {
+    gather_segment<W>(P.curve, k, xk, yk, hk);
+  }
+  const T sy = yk + hk * (ep - xk);
   const T p = (s[0] + s[1] + s[2]) * (1.0 / 3.0);
   const T a0 = s[0] - p, a1 = s[1] - p, a2 = s[2] - p;
   const T q2 = 1.5 * (a0 * a0 + a1 * a1 + a2 * a2) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
   T q;
   lane_sqrt(q2, q);
   const T f = q / sy;
-  const T plastic = hk / (P.E + hk);
-  proximity_ratio(f, plastic, ratio);
+  proximity_ratio(f, hk, P.E, ratio);
 }
 
 /// The material section of element_block<W> for J2 isotropic (lane_points):
@@ -186,9 +235,10 @@ inline void j2_points(const ElementView& ev, int e0, const T s[2][6], const T de
   lane_points<W>(ev, e0, s, deps, V, ratio, snew, [&](int gp, T* sn, T& r) {
     T ep;
     for (int l = 0; l < W; ++l) set_lane(ep, l, ev.state[2 * (e0 + l) + gp]);
-    j2_update<W>(ev.j2, deps[gp], sn, ep);
+    LaneSegments<W, T> seg;
+    const bool have_seg = j2_update<W>(ev.j2, deps[gp], sn, ep, seg);
     for (int l = 0; l < W; ++l) ev.state[2 * (e0 + l) + gp] = lane(ep, l);
-    j2_tangent_ratio<W>(ev.j2, sn, ep, r);
+    j2_tangent_ratio<W>(ev.j2, sn, ep, have_seg ? &seg : nullptr, r);
   });
 }
 
