@@ -112,12 +112,33 @@ void Solver::element_forces() {
   const int nb = (ne + kBlock - 1) / kBlock;
   int inverted = -1;
   elements_forked_ = fork_allowed_ && parallel::worth_forking(ne, parallel::kElementNs);
-#pragma omp parallel for schedule(static) if (elements_forked_)
-  for (int b = 0; b < nb; ++b) {
-    const int r = kernel(ev, kBlock * b, std::min(ne, kBlock * (b + 1)), kBlock);
-    if (r >= 0) {
+  // Then, in the same parallel region, the elements' energy increments and
+  // smallest time step per chunk of kSumChunk elements, in order
+  // (account_energies sums the chunks in order): bits independent of threads.
+  const int nchunk = (ne + kSumChunk - 1) / kSumChunk;
+  double* partial = elem_partial_.data();
+#pragma omp parallel if (elements_forked_)
+  {
+#pragma omp for schedule(static)
+    for (int b = 0; b < nb; ++b) {
+      const int r = kernel(ev, kBlock * b, std::min(ne, kBlock * (b + 1)), kBlock);
+      if (r >= 0) {
 #pragma omp critical
-      inverted = inverted < 0 ? r : std::min(inverted, r);
+        inverted = inverted < 0 ? r : std::min(inverted, r);
+      }
+    }
+#pragma omp for schedule(static)
+    for (int ch = 0; ch < nchunk; ++ch) {
+      double ie = 0, eh = 0, dtmin = 1e30;
+      const int end = std::min(ne, (ch + 1) * kSumChunk);
+      for (int e = ch * kSumChunk; e < end; ++e) {
+        ie += ie_inc_[e];
+        eh += hg_inc_[e];
+        dtmin = std::min(dtmin, dt_elem_[e]);
+      }
+      partial[3 * ch] = ie;
+      partial[3 * ch + 1] = eh;
+      partial[3 * ch + 2] = dtmin;
     }
   }
   if (inverted >= 0) {

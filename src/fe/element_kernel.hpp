@@ -68,23 +68,6 @@ inline void inverse3(const T M[3][3], T Mi[3][3]) {
   Mi[2][2] = (M[0][0] * M[1][1] - M[0][1] * M[1][0]) * id;
 }
 
-/// out = R A R^T (to_local false: local to global) or R^T A R (to_local true).
-template <bool to_local, class T>
-inline void rotate(const T R[3][3], const T A[3][3], T out[3][3]) {
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      T sacc = {};
-      for (int k = 0; k < 3; ++k)
-        for (int m = 0; m < 3; ++m) {
-          if constexpr (to_local)
-            sacc += R[k][i] * A[k][m] * R[m][j];
-          else
-            sacc += R[i][k] * A[k][m] * R[j][m];
-        }
-      out[i][j] = sacc;
-    }
-}
-
 /// Jaumann rotation of one point's stress s (in place) over dt, its strain
 /// increment deps (engineering shear) and its spin w = (W_01, W_12, W_20),
 /// from the mid-interval gradient L.  The material turns its own back stresses
@@ -145,8 +128,13 @@ int element_block(const ElementView& ev, int e0) {
   }
   const T V = g.volume;
   const T(*R)[3] = g.R;
-  // Hourglass vectors gamma_alpha,a = h_alpha,a - (h_alpha . x) . B_a.
-  T gam[4][8];
+  // Hourglass vectors gamma_alpha,a = h_alpha,a - (h_alpha . x) . B_a are
+  // never formed: every sum over the corners that uses them is split into the
+  // part on the base vectors (signs, so additions only) and the part on B_a,
+  // which reuses the velocity gradient (Flanagan & Belytschko 1981):
+  //   sum_a v_a gamma_alpha,a = sum_a h_alpha,a v_a - L_mean hx_alpha,
+  // with hx_alpha = sum_b h_alpha,b x_b (the mode's coordinates).
+  T hxa[4][3];
 #pragma GCC unroll 4
   for (int al = 0; al < 4; ++al) {
     T hx = {}, hy = {}, hz = {};
@@ -156,28 +144,48 @@ int element_block(const ElementView& ev, int e0) {
       hy += kHg[al][b] * y[b];
       hz += kHg[al][b] * z[b];
     }
-    for (int a = 0; a < 8; ++a) gam[al][a] = kHg[al][a] - (hx * g.B[0][a] + hy * g.B[1][a] + hz * g.B[2][a]);
+    hxa[al][0] = hx, hxa[al][1] = hy, hxa[al][2] = hz;
   }
-  // Local velocities, mean and thickness-linear velocity gradients.
-  T vl[8][3], Ln[3][3] = {}, LCl[3][3] = {}, cx[8], cy[8];
+  // Mean velocity gradient L_mean = sum_a v_a (x) B_a.
+  T Ln[3][3] = {};
 #pragma GCC unroll 8
-  for (int a = 0; a < 8; ++a) {
-    for (int i = 0; i < 3; ++i) vl[a][i] = R[0][i] * v[a][0] + R[1][i] * v[a][1] + R[2][i] * v[a][2];
+  for (int a = 0; a < 8; ++a)
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) Ln[i][j] += v[a][i] * g.B[j][a];
-    cx[a] = gam[1][a] / (8.0 * g.h[0]);  // zeta*xi mode: d/dx of the zeta-linear part
-    cy[a] = gam[0][a] / (8.0 * g.h[1]);  // eta*zeta mode: d/dy
-    for (int i = 0; i < 3; ++i) {
-      LCl[i][0] += vl[a][i] * cx[a];
-      LCl[i][1] += vl[a][i] * cy[a];
-    }
+  // The modes' velocities, global (gv) and local (R^T gv): sum_a v_a gamma_alpha,a.
+  T gl[4][3];
+#pragma GCC unroll 4
+  for (int al = 0; al < 4; ++al) {
+    T hv[3] = {};
+#pragma GCC unroll 8
+    for (int a = 0; a < 8; ++a)
+      for (int i = 0; i < 3; ++i) hv[i] += kHg[al][a] * v[a][i];
+    T gv[3];
+    for (int i = 0; i < 3; ++i) gv[i] = hv[i] - (Ln[i][0] * hxa[al][0] + Ln[i][1] * hxa[al][1] + Ln[i][2] * hxa[al][2]);
+    for (int i = 0; i < 3; ++i) gl[al][i] = R[0][i] * gv[0] + R[1][i] * gv[1] + R[2][i] * gv[2];
   }
+  // Thickness-linear gradient, local, at zeta = 1/sqrt3 (the points' zeta
+  // folded in): LCl_i0 = zeta sum_a vl_a,i gamma_zx,a / 8h_x, LCl_i1 likewise with gamma_yz / 8h_y.
+  const T i8h[2] = {0.125 / g.h[0], 0.125 / g.h[1]};
+  const T zi8h[2] = {kZg * i8h[0], kZg * i8h[1]};
   T rbar;
   for (int l = 0; l < W; ++l) set_lane(rbar, l, ev.hg_ratio[e0 + l]);
   const T c = rbar * ev.c_elastic + (1.0 - rbar);
-  LCl[2][2] = -c * (LCl[0][0] + LCl[1][1]);
-  T LC[3][3];
-  rotate<false>(R, LCl, LC);  // R LCl R^T
+  T LCl[3][2];
+  for (int i = 0; i < 3; ++i) {
+    LCl[i][0] = gl[1][i] * zi8h[0];
+    LCl[i][1] = gl[0][i] * zi8h[1];
+  }
+  const T LCl22 = -c * (LCl[0][0] + LCl[1][1]);
+  // LC = R LCl R^T, with LCl's third column (0, 0, LCl22).
+  T RL[3][3], LC[3][3];
+  for (int i = 0; i < 3; ++i) {
+    RL[i][0] = R[i][0] * LCl[0][0] + R[i][1] * LCl[1][0] + R[i][2] * LCl[2][0];
+    RL[i][1] = R[i][0] * LCl[0][1] + R[i][1] * LCl[1][1] + R[i][2] * LCl[2][1];
+    RL[i][2] = R[i][2] * LCl22;
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) LC[i][j] = RL[i][0] * R[j][0] + RL[i][1] * R[j][1] + RL[i][2] * R[j][2];
   // Mid-interval geometry: L_mid = L (I - dt/2 L_mean)^-1 (exact for rigid rotation).
   T M[3][3], Mi[3][3];
   for (int i = 0; i < 3; ++i)
@@ -185,13 +193,17 @@ int element_block(const ElementView& ev, int e0) {
   inverse3(M, Mi);
   // The two integration points: Jaumann rotation and strain increment ...
   T s[2][6], deps[2][6], spin[2][3];
+  // L_mid at zeta = +-1/sqrt3: (L_mean +- zeta L_C) M^-1 = L_mean M^-1 +- zeta (L_C M^-1).
+  T LnM[3][3], LCM[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      LnM[i][j] = Ln[i][0] * Mi[0][j] + Ln[i][1] * Mi[1][j] + Ln[i][2] * Mi[2][j];
+      LCM[i][j] = LC[i][0] * Mi[0][j] + LC[i][1] * Mi[1][j] + LC[i][2] * Mi[2][j];
+    }
   for (int gp = 0; gp < 2; ++gp) {
-    const double zeta = gp == 0 ? kZg : -kZg;
-    T Lg[3][3], Lmid[3][3];
+    T Lmid[3][3];
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) Lg[i][j] = Ln[i][j] + zeta * LC[i][j];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) Lmid[i][j] = Lg[i][0] * Mi[0][j] + Lg[i][1] * Mi[1][j] + Lg[i][2] * Mi[2][j];
+      for (int j = 0; j < 3; ++j) Lmid[i][j] = gp == 0 ? LnM[i][j] + LCM[i][j] : LnM[i][j] - LCM[i][j];
     for (int k = 0; k < 6; ++k)
       for (int l = 0; l < W; ++l) set_lane(s[gp][k], l, ev.sig[12 * (e0 + l) + 6 * gp + k]);
     rotate_and_strain(Lmid, dtp, s[gp], deps[gp], spin[gp]);
@@ -257,46 +269,28 @@ int element_block(const ElementView& ev, int e0) {
       set_lane(sm[k], l, ev.sig[12 * (e0 + l) + 6 + k]);
     }
   }
-  // Internal forces: mean part (V/2)(sig+ + sig-) . B_a ...
-  T smean[6], f[8][3];
-  for (int k = 0; k < 6; ++k) smean[k] = 0.5 * (sp[k] + sm[k]);
-  for (int a = 0; a < 8; ++a) {
-    const T b0 = g.B[0][a], b1 = g.B[1][a], b2 = g.B[2][a];
-    f[a][0] = V * (smean[0] * b0 + smean[3] * b1 + smean[5] * b2);
-    f[a][1] = V * (smean[3] * b0 + smean[1] * b1 + smean[4] * b2);
-    f[a][2] = V * (smean[5] * b0 + smean[4] * b1 + smean[2] * b2);
-  }
-  // ... plus the thickness-linear part (V/2) Dl : LCl(v), Dl = R^T (sig+ - sig-)/sqrt3 R.
-  const T dg[3][3] = {{kZg * (sp[0] - sm[0]), kZg * (sp[3] - sm[3]), kZg * (sp[5] - sm[5])},
-                      {kZg * (sp[3] - sm[3]), kZg * (sp[1] - sm[1]), kZg * (sp[4] - sm[4])},
-                      {kZg * (sp[5] - sm[5]), kZg * (sp[4] - sm[4]), kZg * (sp[2] - sm[2])}};
-  T Dl[3][3];
-  rotate<true>(R, dg, Dl);  // R^T dg R
-  // Remaining hourglass modes (xi*eta, xi*eta*zeta), corotational, physical stiffness.
+  // The remaining hourglass modes (xi*eta, xi*eta*zeta): corotational, with
+  // the physical stiffness of the elastic moduli.  They keep the elastic
+  // modulus: bending is carried by the integration points, and a stiffness
+  // that followed yielding would pump energy into these modes as material
+  // streams through a bend (elastic -> plastic -> elastic), which a
+  // draw-bend strip does.
   const T rnew = rbar + kRelax * (ratio - rbar);
   for (int l = 0; l < W; ++l) ev.hg_ratio[e0 + l] = lane(rnew, l);
-  // The remaining modes keep the elastic modulus: bending is carried by the
-  // integration points, and a stiffness that follows yielding would pump
-  // energy into these modes as material streams through a bend (elastic ->
-  // plastic -> elastic), which a draw-bend strip does.
   const double Er = ev.E0;
   const T ih2[3] = {1.0 / (g.h[0] * g.h[0]), 1.0 / (g.h[1] * g.h[1]), 1.0 / (g.h[2] * g.h[2])};
-  T q[2][3] = {};
-  for (int a = 0; a < 8; ++a)
-    for (int i = 0; i < 3; ++i) {
-      q[0][i] += vl[a][i] * gam[2][a];
-      q[1][i] += vl[a][i] * gam[3][a];
-    }
+  const T* q[2] = {gl[2], gl[3]};  // the modes' local velocities
   T Q[6], Qo[6];  // [mode xi*eta: 3][mode xi*eta*zeta: 3], now and before this step
   for (int k = 0; k < 6; ++k) {
     for (int l = 0; l < W; ++l) set_lane(Q[k], l, ev.hgq[6 * (e0 + l) + k]);
     Qo[k] = Q[k];
   }
+  const T kq = (dtp * ev.hourglass / 64.0) * V;
   for (int i = 0; i < 3; ++i) {
-    const T K2 = i < 2 ? Er * V * ih2[i] / 3.0 : ev.G0 * V * (ih2[0] + ih2[1]) / 3.0;
-    const T K3 = Er * V * ih2[i] / 9.0;
-    Q[i] += dtp * ev.hourglass * K2 / 64.0 * q[0][i];
-    Q[3 + i] += dtp * ev.hourglass * K3 / 64.0 * q[1][i];
+    const T K2 = i < 2 ? (Er / 3.0) * ih2[i] : (ev.G0 / 3.0) * (ih2[0] + ih2[1]);
+    const T K3 = (Er / 9.0) * ih2[i];
+    Q[i] += kq * K2 * q[0][i];
+    Q[3 + i] += kq * K3 * q[1][i];
   }
   for (int k = 0; k < 6; ++k)
     for (int l = 0; l < W; ++l) ev.hgq[6 * (e0 + l) + k] = lane(Q[k], l);
@@ -308,19 +302,52 @@ int element_block(const ElementView& ev, int e0) {
   T ehg = {};
   for (int k = 0; k < 3; ++k)
     ehg += (0.5 * (Qo[k] + Q[k]) * q[0][k] + 0.5 * (Qo[3 + k] + Q[3 + k]) * q[1][k]) * dtp;
+  // Internal forces, f_a = -(V sigma_mean B_a + sum_alpha C_alpha gamma_alpha,a),
+  // with the modes' global force vectors C_alpha:
+  //  - thickness-linear part (V/2) Dl : LCl(v), Dl = R^T (sig+ - sig-)/sqrt3 R
+  //    (symmetric), on the modes zeta*xi (C_1) and eta*zeta (C_0);
+  //  - the hourglass forces R Q on the modes xi*eta (C_2) and xi*eta*zeta (C_3).
+  // With gamma_alpha,a = h_alpha,a - hx_alpha . B_a, f_a = -(Mf B_a + sum_alpha C_alpha h_alpha,a),
+  // Mf = V sigma_mean - sum_alpha C_alpha (x) hx_alpha.
+  T dg[6];
+  for (int k = 0; k < 6; ++k) dg[k] = sp[k] - sm[k];  // the 1/sqrt3 goes into kx, ky below
+  const T DG[3][3] = {{dg[0], dg[3], dg[5]}, {dg[3], dg[1], dg[4]}, {dg[5], dg[4], dg[2]}};
+  T GR[3][3];  // dg R
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) GR[i][j] = DG[i][0] * R[0][j] + DG[i][1] * R[1][j] + DG[i][2] * R[2][j];
+  constexpr int kDi[6] = {0, 0, 1, 0, 1, 2}, kDj[6] = {0, 1, 1, 2, 2, 2};  // Dl's upper triangle
+  T Dl[6];  // R^T dg R: 00, 01, 11, 02, 12, 22
+  for (int k = 0; k < 6; ++k) {
+    const int i = kDi[k], j = kDj[k];
+    Dl[k] = R[0][i] * GR[0][j] + R[1][i] * GR[1][j] + R[2][i] * GR[2][j];
+  }
+  const T &Dl00 = Dl[0], &Dl01 = Dl[1], &Dl11 = Dl[2], &Dl02 = Dl[3], &Dl12 = Dl[4], &Dl22 = Dl[5];
+  const T hv = 0.5 * V;
+  const T kx = hv * zi8h[0], ky = hv * zi8h[1];
+  // Local force vectors of the modes zeta*xi (on gamma_1 / 8h_x) and eta*zeta (gamma_0 / 8h_y).
+  const T K1[3] = {kx * (Dl00 - c * Dl22), kx * Dl01, kx * Dl02};
+  const T K0[3] = {ky * Dl01, ky * (Dl11 - c * Dl22), ky * Dl12};
+  T C[4][3];
+  for (int i = 0; i < 3; ++i) {
+    C[0][i] = R[i][0] * K0[0] + R[i][1] * K0[1] + R[i][2] * K0[2];
+    C[1][i] = R[i][0] * K1[0] + R[i][1] * K1[1] + R[i][2] * K1[2];
+    C[2][i] = R[i][0] * Q[0] + R[i][1] * Q[1] + R[i][2] * Q[2];
+    C[3][i] = R[i][0] * Q[3] + R[i][1] * Q[4] + R[i][2] * Q[5];
+  }
+  T smean[6];
+  for (int k = 0; k < 6; ++k) smean[k] = 0.5 * (sp[k] + sm[k]);
+  const T SM[3][3] = {{smean[0], smean[3], smean[5]}, {smean[3], smean[1], smean[4]}, {smean[5], smean[4], smean[2]}};
+  T Mf[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      Mf[i][j] = V * SM[i][j] - (C[0][i] * hxa[0][j] + C[1][i] * hxa[1][j] + C[2][i] * hxa[2][j] + C[3][i] * hxa[3][j]);
+#pragma GCC unroll 8
   for (int a = 0; a < 8; ++a) {
-    const T fc[3] = {0.5 * V * (Dl[0][0] * cx[a] + Dl[0][1] * cy[a] - c * Dl[2][2] * cx[a]),
-                     0.5 * V * (Dl[1][0] * cx[a] + Dl[1][1] * cy[a] - c * Dl[2][2] * cy[a]),
-                     0.5 * V * (Dl[2][0] * cx[a] + Dl[2][1] * cy[a])};
-    T fh[3];
-    for (int i = 0; i < 3; ++i) fh[i] = Q[i] * gam[2][a] + Q[3 + i] * gam[3][a];
-    T fg[3], hgg[3];
-    for (int i = 0; i < 3; ++i) {
-      fg[i] = R[i][0] * fc[0] + R[i][1] * fc[1] + R[i][2] * fc[2];
-      hgg[i] = R[i][0] * fh[0] + R[i][1] * fh[1] + R[i][2] * fh[2];
-    }
+    const T b0 = g.B[0][a], b1 = g.B[1][a], b2 = g.B[2][a];
     T fa[3];
-    for (int i = 0; i < 3; ++i) fa[i] = -(f[a][i] + fg[i] + hgg[i]);
+    for (int i = 0; i < 3; ++i)
+      fa[i] = -(Mf[i][0] * b0 + Mf[i][1] * b1 + Mf[i][2] * b2 +
+                (kHg[0][a] * C[0][i] + kHg[1][a] * C[1][i] + kHg[2][a] * C[2][i] + kHg[3][a] * C[3][i]));
     for (int l = 0; l < W; ++l) {
       const int e = e0 + l;
       double* out = ev.corner + 3 * static_cast<std::size_t>(ev.corner_slot ? ev.corner_slot[8 * e + a] : 8 * e + a);

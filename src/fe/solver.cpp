@@ -45,6 +45,8 @@ Solver::Solver(Model& model) : m_(model) {
   corner_slot_.assign(8 * static_cast<std::size_t>(ne), 0);
   for (int k = 0; k < static_cast<int>(nc_.corner.size()); ++k) corner_slot_[nc_.corner[k]] = k;
   ie_inc_.assign(ne, 0.0);
+  elem_partial_.assign(3 * static_cast<std::size_t>((ne + kSumChunk - 1) / kSumChunk), 0.0);
+  node_partial_.assign(3 * static_cast<std::size_t>((n + kSumChunk - 1) / kSumChunk), 0.0);
   hg_inc_.assign(ne, 0.0);
   dt_elem_.assign(ne, 0.0);
   elem_mass_factor_.assign(ne, m_.mass_scaling);

@@ -176,6 +176,7 @@ class Solver {
   std::vector<double> ex_, ey_, ez_, v0x_, v0y_, v0z_;  // per node: external force, velocity before the update
   std::vector<double> energy_scratch_[2];  // contact: per node of the largest pair, stored and dissipated energy
   std::vector<double> rx_, ry_, rz_;  // per-node reactions of the last cycle
+  std::vector<double> elem_partial_, node_partial_;  // per chunk of kSumChunk: element (ie, hg, dt) and node energy sums
   std::vector<Vec3> slide_offset_;    // per rotation BC of the current step: slid distance [mm]
   std::vector<double> hg_ratio_;      // per element, relaxed tangent ratio (stabilisation, thickness strain)
   Energies en_;

@@ -72,7 +72,7 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
     if (const int i = sum_and_integrate(nc_.start.data(), corner_.data(), nodes, ext, a1, a2, v_old, fork); i >= 0)
       fault_nonfinite_velocity(i);
     enforce_constraints(step, plan_, th, dt, nodes, slide_offset_.data(), reaction, reactions_.data());
-    const EnergyIncrement inc = energies_and_move(nodes, ext, reaction, v_old, dt, c);  // and x at t_n+1
+    const EnergyIncrement inc = energies_and_move(nodes, ext, reaction, v_old, dt, c, node_partial_.data(), fork);  // and x at t_n+1
     account_energies(inc);                                                          // guards: non-finite energy
     lap(&PhaseTimes::nodes);
     move_tools(m_, plan_, th, ts, dt, a1, a2, tool_force_.data(), tool_vel_.data(), tool_offset_.data());
@@ -243,11 +243,11 @@ void Solver::account_energies(const EnergyIncrement& inc) {
   en_.damping += inc.damping;
   en_.external_work += inc.work;
   en_.kinetic = inc.kinetic;
-  double ie = 0, eh = 0, dtmin = 1e30;
-  for (int e = 0; e < m_.mesh.num_elements(); ++e) {
-    ie += ie_inc_[e];
-    eh += hg_inc_[e];
-    dtmin = std::min(dtmin, dt_elem_[e]);
+  double ie = 0, eh = 0, dtmin = 1e30;  // the element loop's chunk sums (element_forces), in order
+  for (std::size_t ch = 0; ch < elem_partial_.size(); ch += 3) {
+    ie += elem_partial_[ch];
+    eh += elem_partial_[ch + 1];
+    dtmin = std::min(dtmin, elem_partial_[ch + 2]);
   }
   dt_elem_min_ = dtmin;
   if (!std::isfinite(ie + eh)) {

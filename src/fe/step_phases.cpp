@@ -188,23 +188,38 @@ void enforce_constraints(const Step& step, const StepPlan& plan, double th, doub
   }
 }
 
-EnergyIncrement energies_and_move(const NodeView& v, NodeField ext, NodeField r, NodeField v0, double dt, double c) {
+EnergyIncrement energies_and_move(const NodeView& v, NodeField ext, NodeField r, NodeField v0, double dt, double c,
+                                  double* partial, bool parallel) {
   // The damping force -c m v_mid,free (v_free: before the boundary conditions,
   // v_free = v - r dt/m) does work -c m v_mid,free . v_mid dt; on a fixed
   // node v_mid = 0 and the reaction takes the damping force, so it removes
   // no energy there.
-  EnergyIncrement e;
-  for (int i = 0; i < v.n; ++i) {
-    const double mx = 0.5 * (v.vx[i] + v0.x[i]), my = 0.5 * (v.vy[i] + v0.y[i]), mz = 0.5 * (v.vz[i] + v0.z[i]);
-    e.work += ((ext.x[i] + r.x[i]) * mx + (ext.y[i] + r.y[i]) * my + (ext.z[i] + r.z[i]) * mz) * dt;
-    e.kinetic += 0.5 * v.mass[i] * (v.vx[i] * v.vx[i] + v.vy[i] * v.vy[i] + v.vz[i] * v.vz[i]);
-    if (c > 0) {
-      const double h = 0.5 * dt / v.mass[i];
-      e.damping += c * v.mass[i] * ((mx - h * r.x[i]) * mx + (my - h * r.y[i]) * my + (mz - h * r.z[i]) * mz) * dt;
+  const int nchunk = (v.n + kSumChunk - 1) / kSumChunk;
+#pragma omp parallel for schedule(static) if (parallel)
+  for (int ch = 0; ch < nchunk; ++ch) {
+    double work = 0, kinetic = 0, damping = 0;
+    const int end = std::min(v.n, (ch + 1) * kSumChunk);
+    for (int i = ch * kSumChunk; i < end; ++i) {
+      const double mx = 0.5 * (v.vx[i] + v0.x[i]), my = 0.5 * (v.vy[i] + v0.y[i]), mz = 0.5 * (v.vz[i] + v0.z[i]);
+      work += ((ext.x[i] + r.x[i]) * mx + (ext.y[i] + r.y[i]) * my + (ext.z[i] + r.z[i]) * mz) * dt;
+      kinetic += 0.5 * v.mass[i] * (v.vx[i] * v.vx[i] + v.vy[i] * v.vy[i] + v.vz[i] * v.vz[i]);
+      if (c > 0) {
+        const double h = 0.5 * dt / v.mass[i];
+        damping += c * v.mass[i] * ((mx - h * r.x[i]) * mx + (my - h * r.y[i]) * my + (mz - h * r.z[i]) * mz) * dt;
+      }
+      v.x[i] += dt * v.vx[i];
+      v.y[i] += dt * v.vy[i];
+      v.z[i] += dt * v.vz[i];
     }
-    v.x[i] += dt * v.vx[i];
-    v.y[i] += dt * v.vy[i];
-    v.z[i] += dt * v.vz[i];
+    partial[3 * ch] = work;
+    partial[3 * ch + 1] = kinetic;
+    partial[3 * ch + 2] = damping;
+  }
+  EnergyIncrement e;
+  for (int ch = 0; ch < nchunk; ++ch) {
+    e.work += partial[3 * ch];
+    e.kinetic += partial[3 * ch + 1];
+    e.damping += partial[3 * ch + 2];
   }
   return e;
 }

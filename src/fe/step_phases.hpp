@@ -61,10 +61,17 @@ void enforce_constraints(const Step& step, const StepPlan& plan, double th, doub
 struct EnergyIncrement {
   double work = 0, kinetic = 0, damping = 0;
 };
-/// The interval's energies, summed over the nodes in order (one thread: the
-/// sums keep their bits), and in the same pass the positions at t_n+1,
-/// x += dt v.
-EnergyIncrement energies_and_move(const NodeView& v, NodeField ext, NodeField r, NodeField v0, double dt, double c);
+/// The fixed chunk of the solver's reductions: a total over nodes or
+/// elements is summed in order inside each chunk of kSumChunk items, then
+/// over the chunks in order, so its bits depend on neither the thread count
+/// nor the schedule (issue 22).
+inline constexpr int kSumChunk = 256;
+
+/// The interval's energies, summed in fixed chunks (kSumChunk), and in the
+/// same pass the positions at t_n+1, x += dt v; on the threads when `parallel`.
+/// `partial`: room for 3 values per chunk.
+EnergyIncrement energies_and_move(const NodeView& v, NodeField ext, NodeField r, NodeField v0, double dt, double c,
+                                  double* partial, bool parallel);
 
 /// Rigid tools: velocity-driven tools at their speed at `th`, force-driven
 /// tools as rigid masses (force at step time `ts`, the sheet's reaction

@@ -29,11 +29,14 @@ struct Spin {
 template <class T>
 inline void rotate_symmetric(const T& w01, const T& w12, const T& w20, double dt, T s[6]) {
   const T S[3][3] = {{s[0], s[3], s[5]}, {s[3], s[1], s[4]}, {s[5], s[4], s[2]}};
-  const T zero = {};
-  const T W[3][3] = {{zero, w01, -w20}, {-w01, zero, w12}, {w20, -w12, zero}};
+  // WS = W S with W = [[0, w01, -w20], [-w01, 0, w12], [w20, -w12, 0]] (its
+  // zeros left out: only the sign of a zero result could differ).
   T WS[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) WS[i][j] = W[i][0] * S[0][j] + W[i][1] * S[1][j] + W[i][2] * S[2][j];
+  for (int j = 0; j < 3; ++j) {
+    WS[0][j] = w01 * S[1][j] - w20 * S[2][j];
+    WS[1][j] = w12 * S[2][j] - w01 * S[0][j];
+    WS[2][j] = w20 * S[0][j] - w12 * S[1][j];
+  }
   // W S - S W = WS + (WS)^T since W is skew and S symmetric.
   s[0] += dt * 2 * WS[0][0];
   s[1] += dt * 2 * WS[1][1];
