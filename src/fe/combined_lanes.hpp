@@ -41,23 +41,23 @@ struct CombinedState {
 template <int W, bool to_state, class T>
 inline void move_state(const ElementView& ev, int e0, int gp, CombinedState<T>& st) {
   const CombinedParams& P = ev.combined;
-  for (int l = 0; l < W; ++l) {
-    double* p = ev.state + (2 * static_cast<std::size_t>(e0 + l) + gp) * ev.ns;
-    auto move = [&](T& v, int i) {
-      if constexpr (to_state)
-        p[i] = lane(v, l);
-      else
-        set_lane(v, l, p[i]);
-    };
-    move(st.ep, 0);
-    for (int k = 0; k < P.nback; ++k)
-      for (int c = 0; c < 6; ++c) move(st.back[k][c], 1 + 6 * k + c);
-    if (P.aniso)
-      for (int i = 0; i < 3; ++i) {
-        move(st.rd[i], 1 + 6 * P.nback + i);
-        move(st.nd[i], 4 + 6 * P.nback + i);
-      }
-  }
+  double* p[W];
+  for (int l = 0; l < W; ++l) p[l] = ev.state + (2 * static_cast<std::size_t>(e0 + l) + gp) * ev.ns;
+  auto move = [&](T& v, int i) {
+    if constexpr (to_state) {
+      for (int l = 0; l < W; ++l) p[l][i] = lane(v, l);
+    } else {
+      from_lanes(v, [&](int l) { return p[l][i]; });
+    }
+  };
+  move(st.ep, 0);
+  for (int k = 0; k < P.nback; ++k)
+    for (int c = 0; c < 6; ++c) move(st.back[k][c], 1 + 6 * k + c);
+  if (P.aniso)
+    for (int i = 0; i < 3; ++i) {
+      move(st.rd[i], 1 + 6 * P.nback + i);
+      move(st.nd[i], 4 + 6 * P.nback + i);
+    }
 }
 
 /// R = isotropic_stress(ep) from s = the curve's stress at ep.

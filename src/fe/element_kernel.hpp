@@ -103,16 +103,16 @@ int element_block(const ElementView& ev, int e0) {
   const double dtp = ev.dtp;
   // Gather.
   T x[8], y[8], z[8], v[8][3];
-  for (int a = 0; a < 8; ++a)
-    for (int l = 0; l < W; ++l) {
-      const int i = ev.hex[e0 + l][a];
-      set_lane(x[a], l, ev.nodes.x[i]);
-      set_lane(y[a], l, ev.nodes.y[i]);
-      set_lane(z[a], l, ev.nodes.z[i]);
-      set_lane(v[a][0], l, ev.nodes.vx[i]);
-      set_lane(v[a][1], l, ev.nodes.vy[i]);
-      set_lane(v[a][2], l, ev.nodes.vz[i]);
-    }
+  for (int a = 0; a < 8; ++a) {
+    int n[W];
+    for (int l = 0; l < W; ++l) n[l] = ev.hex[e0 + l][a];
+    from_lanes(x[a], [&](int l) { return ev.nodes.x[n[l]]; });
+    from_lanes(y[a], [&](int l) { return ev.nodes.y[n[l]]; });
+    from_lanes(z[a], [&](int l) { return ev.nodes.z[n[l]]; });
+    from_lanes(v[a][0], [&](int l) { return ev.nodes.vx[n[l]]; });
+    from_lanes(v[a][1], [&](int l) { return ev.nodes.vy[n[l]]; });
+    from_lanes(v[a][2], [&](int l) { return ev.nodes.vz[n[l]]; });
+  }
   HexGeometryT<T> g;
   if (!hex_geometry_t(x, y, z, g)) {
     if constexpr (W == 1) {
@@ -169,7 +169,7 @@ int element_block(const ElementView& ev, int e0) {
   const T i8h[2] = {0.125 / g.h[0], 0.125 / g.h[1]};
   const T zi8h[2] = {kZg * i8h[0], kZg * i8h[1]};
   T rbar;
-  for (int l = 0; l < W; ++l) set_lane(rbar, l, ev.hg_ratio[e0 + l]);
+  from_lanes(rbar, [&](int l) { return ev.hg_ratio[e0 + l]; });
   const T c = rbar * ev.c_elastic + (1.0 - rbar);
   T LCl[3][2];
   for (int i = 0; i < 3; ++i) {
@@ -205,7 +205,7 @@ int element_block(const ElementView& ev, int e0) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) Lmid[i][j] = gp == 0 ? LnM[i][j] + LCM[i][j] : LnM[i][j] - LCM[i][j];
     for (int k = 0; k < 6; ++k)
-      for (int l = 0; l < W; ++l) set_lane(s[gp][k], l, ev.sig[12 * (e0 + l) + 6 * gp + k]);
+      from_lanes(s[gp][k], [&](int l) { return ev.sig[12 * (e0 + l) + 6 * gp + k]; });
     rotate_and_strain(Lmid, dtp, s[gp], deps[gp], spin[gp]);
   }
   // ... the material update, with the stress power increment per unit volume
@@ -264,10 +264,8 @@ int element_block(const ElementView& ev, int e0) {
       sm[k] = snew[1][k];
       continue;
     }
-    for (int l = 0; l < W; ++l) {
-      set_lane(sp[k], l, ev.sig[12 * (e0 + l) + k]);
-      set_lane(sm[k], l, ev.sig[12 * (e0 + l) + 6 + k]);
-    }
+    from_lanes(sp[k], [&](int l) { return ev.sig[12 * (e0 + l) + k]; });
+    from_lanes(sm[k], [&](int l) { return ev.sig[12 * (e0 + l) + 6 + k]; });
   }
   // The remaining hourglass modes (xi*eta, xi*eta*zeta): corotational, with
   // the physical stiffness of the elastic moduli.  They keep the elastic
@@ -282,7 +280,7 @@ int element_block(const ElementView& ev, int e0) {
   const T* q[2] = {gl[2], gl[3]};  // the modes' local velocities
   T Q[6], Qo[6];  // [mode xi*eta: 3][mode xi*eta*zeta: 3], now and before this step
   for (int k = 0; k < 6; ++k) {
-    for (int l = 0; l < W; ++l) set_lane(Q[k], l, ev.hgq[6 * (e0 + l) + k]);
+    from_lanes(Q[k], [&](int l) { return ev.hgq[6 * (e0 + l) + k]; });
     Qo[k] = Q[k];
   }
   const T kq = (dtp * ev.hourglass / 64.0) * V;
@@ -356,7 +354,7 @@ int element_block(const ElementView& ev, int e0) {
   }
   // The stable time step, len / c sqrt(mass factor), on the lanes.
   T mf, smf, len;
-  for (int l = 0; l < W; ++l) set_lane(mf, l, ev.mass_factor[e0 + l]);
+  from_lanes(mf, [&](int l) { return ev.mass_factor[e0 + l]; });
   lane_sqrt(mf, smf);
   hex_stable_length_t(g.h, len);
   const T dte = len / ev.wave_speed * smf;

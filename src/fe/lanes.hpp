@@ -14,6 +14,8 @@
 //  - reassociation (-ffast-math, -fassociative-math): never used.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <utility>
 #if defined(__AVX__)
 #include <immintrin.h>
 #endif
@@ -46,6 +48,25 @@ inline double lane(const T& v, int l) {
 template <class T>
 inline void set_lane(T& v, int l, double x) {
   v[l] = x;
+}
+
+/// v = (f(0), f(1), ..., f(W-1)): a vector built in registers from W scalars
+/// (element loads and inserts).  Setting the lanes one by one with set_lane()
+/// makes GCC write W scalars to the stack and read them back as one vector, a
+/// load that store forwarding cannot serve: it stalls for every vector so
+/// gathered (the node gather, the stresses, the hourglass forces).  Use this,
+/// not a set_lane() loop, for every vector the kernel gathers.
+template <class F>
+__attribute__((always_inline)) inline void from_lanes(double& v, F&& f) {
+  v = f(0);
+}
+template <class T, class F, std::size_t... L>
+__attribute__((always_inline)) inline void from_lanes_seq(T& v, F& f, std::index_sequence<L...>) {
+  v = T{f(static_cast<int>(L))...};
+}
+template <class T, class F>
+__attribute__((always_inline)) inline void from_lanes(T& v, F&& f) {
+  from_lanes_seq(v, f, std::make_index_sequence<sizeof(T) / sizeof(double)>{});
 }
 
 /// r = the square root of each lane of v (IEEE, correctly rounded: as

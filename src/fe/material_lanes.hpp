@@ -51,11 +51,9 @@ inline int curve_segment_from(const CurveTable& c, double ep, int k) {
 /// Lane l's segment k: its start strain, start stress and slope.
 template <int W, class T>
 inline void gather_segment(const CurveTable& c, const int k[W], T& xk, T& yk, T& hk) {
-  for (int l = 0; l < W; ++l) {
-    set_lane(xk, l, c.x[k[l]]);
-    set_lane(yk, l, c.y[k[l]]);
-    set_lane(hk, l, c.h[k[l]]);
-  }
+  from_lanes(xk, [&](int l) { return c.x[k[l]]; });
+  from_lanes(yk, [&](int l) { return c.y[k[l]]; });
+  from_lanes(hk, [&](int l) { return c.h[k[l]]; });
 }
 
 template <int W, class M>
@@ -173,7 +171,7 @@ inline bool j2_update(const J2Params& P, const T d[6], T s[6], T& ep, LaneSegmen
   for (;;) {
     const T et = start + r / (P.g3 + hk);
     T end;
-    for (int l = 0; l < W; ++l) set_lane(end, l, k[l] + 1 <= P.curve.last ? P.curve.x[k[l] + 1] : kInf);
+    from_lanes(end, [&](int l) { return k[l] + 1 <= P.curve.last ? P.curve.x[k[l] + 1] : kInf; });
     e = active ? et : e;
     const M cross = active & ~(et <= end);
     if (!any_lane<W>(cross)) break;
@@ -234,7 +232,7 @@ inline void j2_points(const ElementView& ev, int e0, const T s[2][6], const T de
                       T snew[2][6]) {
   lane_points<W>(ev, e0, s, deps, V, ratio, snew, [&](int gp, T* sn, T& r) {
     T ep;
-    for (int l = 0; l < W; ++l) set_lane(ep, l, ev.state[2 * (e0 + l) + gp]);
+    from_lanes(ep, [&](int l) { return ev.state[2 * (e0 + l) + gp]; });
     LaneSegments<W, T> seg;
     const bool have_seg = j2_update<W>(ev.j2, deps[gp], sn, ep, seg);
     for (int l = 0; l < W; ++l) ev.state[2 * (e0 + l) + gp] = lane(ep, l);
