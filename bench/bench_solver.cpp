@@ -7,8 +7,9 @@
 // sized model with contact (strip over a pin, about 4,000 elements).
 // Cost = (wall(long run) - wall(short run)) / (extra cycles x elements), which
 // removes set-up time; each wall time is the shortest of kRepeats runs (one
-// with --quick), as interference only adds time.  Then the quick draw-bend deck's wall time on 1 and 2
-// threads, which must not be slower on 2 (bench_deck.cpp; not with --quick).
+// with --quick), as interference only adds time.  Then the quick draw-bend
+// deck's wall time on 1 and 2 threads, which must not be slower on 2
+// (bench_deck.cpp; not with --quick).
 // The CPU model and the element kernel head the output; each case's
 // per-phase split on one thread follows its timings (bench_phases.cpp), and a
 // Markdown table with the issue-22 goals, each ok or FAIL, closes the solver
