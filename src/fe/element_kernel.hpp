@@ -169,7 +169,7 @@ int element_block(const ElementView& ev, int e0) {
   const T i8h[2] = {0.125 / g.h[0], 0.125 / g.h[1]};
   const T zi8h[2] = {kZg * i8h[0], kZg * i8h[1]};
   T rbar;
-  from_lanes(rbar, [&](int l) { return ev.hg_ratio[e0 + l]; });
+  load_records<1>(ev.hg_ratio + e0, &rbar);
   const T c = rbar * ev.c_elastic + (1.0 - rbar);
   T LCl[3][2];
   for (int i = 0; i < 3; ++i) {
@@ -193,6 +193,7 @@ int element_block(const ElementView& ev, int e0) {
   inverse3(M, Mi);
   // The two integration points: Jaumann rotation and strain increment ...
   T s[2][6], deps[2][6], spin[2][3];
+  load_records<12>(ev.sig + 12 * static_cast<std::size_t>(e0), &s[0][0]);
   // L_mid at zeta = +-1/sqrt3: (L_mean +- zeta L_C) M^-1 = L_mean M^-1 +- zeta (L_C M^-1).
   T LnM[3][3], LCM[3][3];
   for (int i = 0; i < 3; ++i)
@@ -204,8 +205,6 @@ int element_block(const ElementView& ev, int e0) {
     T Lmid[3][3];
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) Lmid[i][j] = gp == 0 ? LnM[i][j] + LCM[i][j] : LnM[i][j] - LCM[i][j];
-    for (int k = 0; k < 6; ++k)
-      from_lanes(s[gp][k], [&](int l) { return ev.sig[12 * (e0 + l) + 6 * gp + k]; });
     rotate_and_strain(Lmid, dtp, s[gp], deps[gp], spin[gp]);
   }
   // ... the material update, with the stress power increment per unit volume
@@ -257,16 +256,9 @@ int element_block(const ElementView& ev, int e0) {
   }
   if (ev.material_ticks) __atomic_fetch_add(ev.material_ticks, ticks() - tick0, __ATOMIC_RELAXED);
   // The new stresses: from the lanes, or from ev.sig where the points were updated one by one.
-  T sp[6], sm[6];
-  for (int k = 0; k < 6; ++k) {
-    if (on_lanes) {
-      sp[k] = snew[0][k];
-      sm[k] = snew[1][k];
-      continue;
-    }
-    from_lanes(sp[k], [&](int l) { return ev.sig[12 * (e0 + l) + k]; });
-    from_lanes(sm[k], [&](int l) { return ev.sig[12 * (e0 + l) + 6 + k]; });
-  }
+  if (!on_lanes) load_records<12>(ev.sig + 12 * static_cast<std::size_t>(e0), &snew[0][0]);
+  const T* sp = snew[0];
+  const T* sm = snew[1];
   // The remaining hourglass modes (xi*eta, xi*eta*zeta): corotational, with
   // the physical stiffness of the elastic moduli.  They keep the elastic
   // modulus: bending is carried by the integration points, and a stiffness
@@ -274,15 +266,13 @@ int element_block(const ElementView& ev, int e0) {
   // streams through a bend (elastic -> plastic -> elastic), which a
   // draw-bend strip does.
   const T rnew = rbar + kRelax * (ratio - rbar);
-  for (int l = 0; l < W; ++l) ev.hg_ratio[e0 + l] = lane(rnew, l);
+  store_records<1>(ev.hg_ratio + e0, &rnew);
   const double Er = ev.E0;
   const T ih2[3] = {1.0 / (g.h[0] * g.h[0]), 1.0 / (g.h[1] * g.h[1]), 1.0 / (g.h[2] * g.h[2])};
   const T* q[2] = {gl[2], gl[3]};  // the modes' local velocities
   T Q[6], Qo[6];  // [mode xi*eta: 3][mode xi*eta*zeta: 3], now and before this step
-  for (int k = 0; k < 6; ++k) {
-    from_lanes(Q[k], [&](int l) { return ev.hgq[6 * (e0 + l) + k]; });
-    Qo[k] = Q[k];
-  }
+  load_records<6>(ev.hgq + 6 * static_cast<std::size_t>(e0), Q);
+  for (int k = 0; k < 6; ++k) Qo[k] = Q[k];
   const T kq = (dtp * ev.hourglass / 64.0) * V;
   for (int i = 0; i < 3; ++i) {
     const T K2 = i < 2 ? (Er / 3.0) * ih2[i] : (ev.G0 / 3.0) * (ih2[0] + ih2[1]);
@@ -290,8 +280,7 @@ int element_block(const ElementView& ev, int e0) {
     Q[i] += kq * K2 * q[0][i];
     Q[3 + i] += kq * K3 * q[1][i];
   }
-  for (int k = 0; k < 6; ++k)
-    for (int l = 0; l < W; ++l) ev.hgq[6 * (e0 + l) + k] = lane(Q[k], l);
+  store_records<6>(ev.hgq + 6 * static_cast<std::size_t>(e0), Q);
   // Hourglass energy by the midpoint rule, as the stress power above:
   // sum_a (R fh_a) . v_a = sum_a fh_a . vl_a = Q . q, with the mean of the
   // generalised forces before and after this step.  With the new Q alone the
@@ -354,14 +343,12 @@ int element_block(const ElementView& ev, int e0) {
   }
   // The stable time step, len / c sqrt(mass factor), on the lanes.
   T mf, smf, len;
-  from_lanes(mf, [&](int l) { return ev.mass_factor[e0 + l]; });
+  load_records<1>(ev.mass_factor + e0, &mf);
   lane_sqrt(mf, smf);
   hex_stable_length_t(g.h, len);
   const T dte = len / ev.wave_speed * smf;
-  for (int l = 0; l < W; ++l) {
-    ev.hg_inc[e0 + l] = lane(ehg, l);
-    ev.dt_elem[e0 + l] = lane(dte, l);
-  }
+  store_records<1>(ev.hg_inc + e0, &ehg);
+  store_records<1>(ev.dt_elem + e0, &dte);
   return -1;
 }
 }  // namespace kernel

@@ -18,6 +18,7 @@
 #include <limits>
 
 #include "fe/element_view.hpp"
+#include "fe/lane_records.hpp"
 #include "fe/lanes.hpp"
 
 namespace drawbend::fe::DRAWBEND_ISA::kernel {
@@ -111,19 +112,19 @@ inline void lane_points(const ElementView& ev, int e0, const T s[2][6], const T 
     T w = {};
     for (int k = 0; k < 6; ++k) w += 0.5 * (s[gp][k] + sn[k]) * deps[gp][k];
     ie += w;
-    for (int l = 0; l < W; ++l)
-      for (int k = 0; k < 6; ++k) ev.sig[12 * (e0 + l) + 6 * gp + k] = lane(sn[k], l);
   }
+  store_records<12>(ev.sig + 12 * static_cast<std::size_t>(e0), &snew[0][0]);
   const T iev = 0.5 * V * ie;
-  for (int l = 0; l < W; ++l) ev.ie_inc[e0 + l] = lane(iev, l);
+  store_records<1>(ev.ie_inc + e0, &iev);
   ratio = 0.5 * (r[0] + r[1]);
 }
 
-/// Curve segments of W lanes: k and its start strain, start stress and slope.
+/// Curve segments of W lanes: k and its start strain, start stress, slope
+/// and end strain (the next point's strain; infinity on the last segment).
 template <int W, class T>
 struct LaneSegments {
   int k[W];
-  T x, y, h;
+  T x, y, h, end;
 };
 
 /// One integration point of W elements: trial stress from s and d, radial
@@ -154,8 +155,13 @@ inline bool j2_update(const J2Params& P, const T d[6], T s[6], T& ep, LaneSegmen
     s[0] = t0, s[1] = t1, s[2] = t2, s[3] = t3, s[4] = t4, s[5] = t5;
     return false;
   }
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  auto end_of = [&](T& end) {
+    from_lanes(end, [&](int l) { return k[l] + 1 <= P.curve.last ? P.curve.x[k[l] + 1] : kInf; });
+  };
   for (int l = 0; l < W; ++l) k[l] = curve_segment(P.curve, ep[l]);
   gather_segment<W>(P.curve, k, xk, yk, hk);
+  end_of(seg.end);
   const T sy = yk + hk * (ep - xk);
   const M elastic = below_initial | (q2 <= sy * sy);
   if (!any_lane<W>(~elastic)) {
@@ -167,11 +173,9 @@ inline bool j2_update(const J2Params& P, const T d[6], T s[6], T& ep, LaneSegmen
   lane_sqrt(q2, q);
   T start = ep, r = q - sy, e = ep;
   M active = ~elastic;
-  constexpr double kInf = std::numeric_limits<double>::infinity();
   for (;;) {
     const T et = start + r / (P.g3 + hk);
-    T end;
-    from_lanes(end, [&](int l) { return k[l] + 1 <= P.curve.last ? P.curve.x[k[l] + 1] : kInf; });
+    const T end = seg.end;
     e = active ? et : e;
     const M cross = active & ~(et <= end);
     if (!any_lane<W>(cross)) break;
@@ -179,6 +183,7 @@ inline bool j2_update(const J2Params& P, const T d[6], T s[6], T& ep, LaneSegmen
       if (cross[l]) ++k[l];
     T xn, yn, hn;
     gather_segment<W>(P.curve, k, xn, yn, hn);
+    end_of(seg.end);  // every lane's: k moved only where it crossed
     xk = cross ? xn : xk;
     yk = cross ? yn : yk;
     hk = cross ? hn : hk;
@@ -199,15 +204,29 @@ inline bool j2_update(const J2Params& P, const T d[6], T s[6], T& ep, LaneSegmen
 
 /// ratio = J2Isotropic::tangent_ratio() of W points (stress s, plastic strain
 /// ep); hint: the segments j2_update left (nullptr: none), whose table values
-/// serve again where no lane's segment changed.  Through a reference, as
-/// lane_sqrt (fe/lanes.hpp): no vector return.
+/// serve again where no lane's segment changed.  When every lane is well
+/// inside the initial yield surface (q^2 <= P.ratio_one_q2, ep >= 0) the
+/// ratio is 1 without the curve (J2Isotropic::LaneParams says why).  Through
+/// a reference, as lane_sqrt (fe/lanes.hpp): no vector return.
 template <int W, class T>
 inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, const LaneSegments<W, T>* hint, T& ratio) {
+  const T p = (s[0] + s[1] + s[2]) * (1.0 / 3.0);
+  const T a0 = s[0] - p, a1 = s[1] - p, a2 = s[2] - p;
+  const T q2 = 1.5 * (a0 * a0 + a1 * a1 + a2 * a2) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+  if (!any_set(~((q2 <= P.ratio_one_q2) & (ep >= 0.0)))) {
+    ratio = T{} + 1.0;
+    return;
+  }
+  // The hint's segment is ep's own (what curve_segment gives) where
+  // x[k] <= ep < x[k+1] (ep >= x[last] on the last): then no lane searches.
+  bool same = hint != nullptr && !any_set(~((ep >= hint->x) & (ep < hint->end)));
   int k[W];
-  bool same = hint != nullptr;
-  for (int l = 0; l < W; ++l) {
+  for (int l = 0; l < W && !same; ++l) {
     k[l] = hint ? curve_segment_from(P.curve, ep[l], hint->k[l]) : curve_segment(P.curve, ep[l]);
-    same = same && k[l] == hint->k[l];
+  }
+  if (!same && hint) {
+    same = true;
+    for (int l = 0; l < W; ++l) same = same && k[l] == hint->k[l];
   }
   T xk, yk, hk;
   if (same) {
@@ -216,9 +235,6 @@ inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, const
     gather_segment<W>(P.curve, k, xk, yk, hk);
   }
   const T sy = yk + hk * (ep - xk);
-  const T p = (s[0] + s[1] + s[2]) * (1.0 / 3.0);
-  const T a0 = s[0] - p, a1 = s[1] - p, a2 = s[2] - p;
-  const T q2 = 1.5 * (a0 * a0 + a1 * a1 + a2 * a2) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
   T q;
   lane_sqrt(q2, q);
   const T f = q / sy;
@@ -230,14 +246,14 @@ inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, const
 template <int W, class T>
 inline void j2_points(const ElementView& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio,
                       T snew[2][6]) {
+  T ep[2];  // the points' plastic strains (one state value per point)
+  load_records<2>(ev.state + 2 * static_cast<std::size_t>(e0), ep);
   lane_points<W>(ev, e0, s, deps, V, ratio, snew, [&](int gp, T* sn, T& r) {
-    T ep;
-    from_lanes(ep, [&](int l) { return ev.state[2 * (e0 + l) + gp]; });
     LaneSegments<W, T> seg;
-    const bool have_seg = j2_update<W>(ev.j2, deps[gp], sn, ep, seg);
-    for (int l = 0; l < W; ++l) ev.state[2 * (e0 + l) + gp] = lane(ep, l);
-    j2_tangent_ratio<W>(ev.j2, sn, ep, have_seg ? &seg : nullptr, r);
+    const bool have_seg = j2_update<W>(ev.j2, deps[gp], sn, ep[gp], seg);
+    j2_tangent_ratio<W>(ev.j2, sn, ep[gp], have_seg ? &seg : nullptr, r);
   });
+  store_records<2>(ev.state + 2 * static_cast<std::size_t>(e0), ep);
 }
 
 }  // namespace drawbend::fe::DRAWBEND_ISA::kernel

@@ -40,11 +40,21 @@ class J2Isotropic final : public Material {
   /// The constants of update_point() and tangent_ratio() as plain numbers, for
   /// the element kernel's lane version of both (fe/material_lanes.hpp), which
   /// gives their bits.  Valid while this material lives.
+  /// ratio_one_q2: a q^2 at or below which tangent_ratio() is exactly 1 for
+  /// any ep >= 0, so the lanes need no curve look-up, square root or division
+  /// for it.  Why: the curve is non-decreasing from ep = 0 (checked when it is
+  /// built), so sigma_y(ep) >= sigma_y(0) = y0, and the rounding of
+  /// stress_on() keeps that (a sum of non-negative terms); with
+  /// q^2 <= 0.81 y0^2 (1 - 1e-9), f = sqrt(q2) / sigma_y <= 0.9 (1 - 4.9e-10)
+  /// after the square root's and the division's roundings (each 1.1e-16), and
+  /// yield_proximity_ratio(f <= 0.90) is 1.
   struct LaneParams {
-    double lambda, G, g3, y0_sq, E;
+    double lambda, G, g3, y0_sq, E, ratio_one_q2;
     HardeningCurve::Table curve;
   };
-  LaneParams lane_params() const noexcept { return {el_.lambda, el_.G, g3_, y0_sq_, el_.E, curve_.table()}; }
+  LaneParams lane_params() const noexcept {
+    return {el_.lambda, el_.G, g3_, y0_sq_, el_.E, 0.81 * y0_sq_ * (1.0 - 1e-9), curve_.table()};
+  }
   const IsotropicElasticity& elasticity() const { return el_; }
 
  private:

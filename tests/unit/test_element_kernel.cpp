@@ -7,7 +7,10 @@
 //    forces, stresses, material states, hourglass forces and ratios, energy
 //    increments and stable time steps; for J2 isotropic and for Hill'48 with a
 //    Chaboche back stress (whose state holds back stresses and axes that turn
-//    with the spin).
+//    with the spin).  Every per-element record (stresses, states, hourglass
+//    forces, ratio, energies, steps) passes through the lanes' record
+//    transposes (fe/lane_records.hpp: 1, 2, 6 and 12 values per element), so a
+//    misplaced value there fails this comparison.
 //  - J2 on the lanes (fe/material_lanes.hpp): a block mixing elastic points,
 //    points below the initial yield stress, plastic points and points whose
 //    increment crosses several curve points gives the scalar bits.
