@@ -62,14 +62,51 @@ inline bool any_lane(const M& m) {
   return any_set(m);
 }
 
+/// Curve segments of W lanes: k and its start strain, start stress, slope
+/// and end strain (the next point's strain; infinity on the last segment).
+template <int W, class T>
+struct LaneSegments {
+  int k[W];
+  T x, y, h, end;
+};
+
+/// seg.end = each lane's segment end: the next point's strain, infinity on the last.
+template <int W, class T>
+inline void segment_ends(const CurveTable& c, LaneSegments<W, T>& seg) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  from_lanes(seg.end, [&](int l) { return seg.k[l] + 1 <= c.last ? c.x[seg.k[l] + 1] : kInf; });
+}
+
+/// seg = the segments of W plastic strains (curve_segment of each lane) with
+/// their table values.  Where every lane lies in lane 0's segment k
+/// (x[k] <= ep < x[k+1], or ep >= x[last] on the last), the usual case in a
+/// block of neighbouring elements, that is one search and four broadcasts;
+/// otherwise a search and a table read per lane.  The same values either way.
+template <int W, class T>
+inline void find_segments(const CurveTable& c, const T& ep, LaneSegments<W, T>& seg) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const int k0 = curve_segment(c, ep[0]);
+  const double x0 = c.x[k0], end0 = k0 < c.last ? c.x[k0 + 1] : kInf;
+  if (!any_set(~((ep >= x0) & (ep < end0)))) {
+    for (int l = 0; l < W; ++l) seg.k[l] = k0;
+    from_lanes(seg.x, [&](int) { return x0; });
+    from_lanes(seg.y, [&](int) { return c.y[k0]; });
+    from_lanes(seg.h, [&](int) { return c.h[k0]; });
+    from_lanes(seg.end, [&](int) { return end0; });
+    return;
+  }
+  for (int l = 0; l < W; ++l) seg.k[l] = curve_segment(c, ep[l]);
+  gather_segment<W>(c, seg.k, seg.x, seg.y, seg.h);
+  segment_ends(c, seg);
+}
+
 /// sy = HardeningCurve::stress(ep) and hk = slope(ep) of W plastic strains.
 template <int W, class T>
 inline void curve_at(const CurveTable& c, const T& ep, T& sy, T& hk) {
-  int k[W];
-  for (int l = 0; l < W; ++l) k[l] = curve_segment(c, ep[l]);
-  T xk, yk;
-  gather_segment<W>(c, k, xk, yk, hk);
-  sy = yk + hk * (ep - xk);
+  LaneSegments<W, T> seg;
+  find_segments<W>(c, ep, seg);
+  hk = seg.h;
+  sy = seg.y + hk * (ep - seg.x);
 }
 
 /// ratio = material::yield_proximity_ratio(f, plastic), by masks, with
@@ -119,14 +156,6 @@ inline void lane_points(const ElementView& ev, int e0, const T s[2][6], const T 
   ratio = 0.5 * (r[0] + r[1]);
 }
 
-/// Curve segments of W lanes: k and its start strain, start stress, slope
-/// and end strain (the next point's strain; infinity on the last segment).
-template <int W, class T>
-struct LaneSegments {
-  int k[W];
-  T x, y, h, end;
-};
-
 /// One integration point of W elements: trial stress from s and d, radial
 /// return; s and ep are updated in place (J2Isotropic::update_point).  Returns
 /// whether seg holds each lane's last curve segment (a start for the search of
@@ -155,13 +184,7 @@ inline bool j2_update(const J2Params& P, const T d[6], T s[6], T& ep, LaneSegmen
     s[0] = t0, s[1] = t1, s[2] = t2, s[3] = t3, s[4] = t4, s[5] = t5;
     return false;
   }
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  auto end_of = [&](T& end) {
-    from_lanes(end, [&](int l) { return k[l] + 1 <= P.curve.last ? P.curve.x[k[l] + 1] : kInf; });
-  };
-  for (int l = 0; l < W; ++l) k[l] = curve_segment(P.curve, ep[l]);
-  gather_segment<W>(P.curve, k, xk, yk, hk);
-  end_of(seg.end);
+  find_segments<W>(P.curve, ep, seg);
   const T sy = yk + hk * (ep - xk);
   const M elastic = below_initial | (q2 <= sy * sy);
   if (!any_lane<W>(~elastic)) {
@@ -183,7 +206,7 @@ inline bool j2_update(const J2Params& P, const T d[6], T s[6], T& ep, LaneSegmen
       if (cross[l]) ++k[l];
     T xn, yn, hn;
     gather_segment<W>(P.curve, k, xn, yn, hn);
-    end_of(seg.end);  // every lane's: k moved only where it crossed
+    segment_ends(P.curve, seg);  // every lane's: k moved only where it crossed
     xk = cross ? xn : xk;
     yk = cross ? yn : yk;
     hk = cross ? hn : hk;
@@ -219,21 +242,23 @@ inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, const
   }
   // The hint's segment is ep's own (what curve_segment gives) where
   // x[k] <= ep < x[k+1] (ep >= x[last] on the last): then no lane searches.
+  // Without one, find_segments.
   bool same = hint != nullptr && !any_set(~((ep >= hint->x) & (ep < hint->end)));
-  int k[W];
-  for (int l = 0; l < W && !same; ++l) {
-    k[l] = hint ? curve_segment_from(P.curve, ep[l], hint->k[l]) : curve_segment(P.curve, ep[l]);
-  }
-  if (!same && hint) {
-    same = true;
-    for (int l = 0; l < W; ++l) same = same && k[l] == hint->k[l];
-  }
   T xk, yk, hk;
-  if (same) {
-    xk = hint->x, yk = hint->y, hk = hint->h;
-  } else {
-    gather_segment<W>(P.curve, k, xk, yk, hk);
+  if (!same && hint) {
+    int k[W];
+    same = true;
+    for (int l = 0; l < W; ++l) {
+      k[l] = curve_segment_from(P.curve, ep[l], hint->k[l]);
+      same = same && k[l] == hint->k[l];
+    }
+    if (!same) gather_segment<W>(P.curve, k, xk, yk, hk);
+  } else if (!hint) {
+    LaneSegments<W, T> seg;
+    find_segments<W>(P.curve, ep, seg);
+    xk = seg.x, yk = seg.y, hk = seg.h;
   }
+  if (same) xk = hint->x, yk = hint->y, hk = hint->h;
   const T sy = yk + hk * (ep - xk);
   T q;
   lane_sqrt(q2, q);

@@ -13,6 +13,7 @@ struct NodeView {
   double *x = nullptr, *y = nullptr, *z = nullptr;     ///< current positions [mm]
   double *vx = nullptr, *vy = nullptr, *vz = nullptr;  ///< velocities [mm/s]
   const double* mass = nullptr;                        ///< lumped masses [t]
+  const double* inv_mass = nullptr;                    ///< 1.0 / mass, once (the same bits as dividing each cycle)
   const double *X = nullptr, *Y = nullptr, *Z = nullptr;     ///< reference positions [mm]
 };
 

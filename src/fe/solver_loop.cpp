@@ -127,6 +127,7 @@ NodeView Solver::node_view() {
   v.vy = vy_.data();
   v.vz = vz_.data();
   v.mass = mass_.data();
+  v.inv_mass = inv_mass_.data();
   v.X = m_.mesh.x.data();
   v.Y = m_.mesh.y.data();
   v.Z = m_.mesh.z.data();

@@ -84,14 +84,20 @@ int sum_and_integrate(const int* start, const double* corner, const NodeView& v,
       fy += corner[3 * k + 1];
       fz += corner[3 * k + 2];
     }
-    v0.x[i] = v.vx[i];
-    v0.y[i] = v.vy[i];
-    v0.z[i] = v.vz[i];
-    const double im = 1.0 / v.mass[i];
-    v.vx[i] = a1 * v.vx[i] + a2 * (fx + ext.x[i]) * im;
-    v.vy[i] = a1 * v.vy[i] + a2 * (fy + ext.y[i]) * im;
-    v.vz[i] = a1 * v.vz[i] + a2 * (fz + ext.z[i]) * im;
-    if (!(std::isfinite(v.vx[i]) && std::isfinite(v.vy[i]) && std::isfinite(v.vz[i]))) bad = std::min(bad, i);
+    // In locals: the arrays may alias as far as the compiler knows, and it
+    // would otherwise read each velocity back after storing it.
+    const double ux = v.vx[i], uy = v.vy[i], uz = v.vz[i];
+    v0.x[i] = ux;
+    v0.y[i] = uy;
+    v0.z[i] = uz;
+    const double im = v.inv_mass[i];
+    const double nx = a1 * ux + a2 * (fx + ext.x[i]) * im;
+    const double ny = a1 * uy + a2 * (fy + ext.y[i]) * im;
+    const double nz = a1 * uz + a2 * (fz + ext.z[i]) * im;
+    v.vx[i] = nx;
+    v.vy[i] = ny;
+    v.vz[i] = nz;
+    if (!(std::isfinite(nx) && std::isfinite(ny) && std::isfinite(nz))) bad = std::min(bad, i);
   }
   return bad < v.n ? bad : -1;
 }
