@@ -335,11 +335,12 @@ int element_block(const ElementView& ev, int e0) {
     for (int i = 0; i < 3; ++i)
       fa[i] = -(Mf[i][0] * b0 + Mf[i][1] * b1 + Mf[i][2] * b2 +
                 (kHg[0][a] * C[0][i] + kHg[1][a] * C[1][i] + kHg[2][a] * C[2][i] + kHg[3][a] * C[3][i]));
+    double* out[W];
     for (int l = 0; l < W; ++l) {
       const int e = e0 + l;
-      double* out = ev.corner + 3 * static_cast<std::size_t>(ev.corner_slot ? ev.corner_slot[8 * e + a] : 8 * e + a);
-      for (int i = 0; i < 3; ++i) out[i] = lane(fa[i], l);
+      out[l] = ev.corner + kCornerStride * static_cast<std::size_t>(ev.corner_slot ? ev.corner_slot[8 * e + a] : 8 * e + a);
     }
+    store_slots<W>(out, fa);
   }
   // The stable time step, len / c sqrt(mass factor), on the lanes.
   T mf, smf, len;

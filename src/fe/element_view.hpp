@@ -18,6 +18,11 @@
 
 namespace drawbend::fe {
 
+/// Doubles per corner slot: fx, fy, fz [N] and one that stays zero, so that a
+/// slot is one 32-byte store in the vector kernels (fe/lane_records.hpp); the
+/// nodal sum (fe/step_phases.cpp) reads the first three.
+inline constexpr int kCornerStride = 4;
+
 struct ElementView {
   const std::array<int, 8>* hex = nullptr;  ///< connectivity
   /// The nodes (Solver::node_view()); the element loop only reads their
@@ -27,7 +32,7 @@ struct ElementView {
   double* state = nullptr;       ///< 2 * ns per element: the points' material states
   double* hgq = nullptr;         ///< 6 per element: hourglass generalised forces
   double* hg_ratio = nullptr;    ///< 1 per element: relaxed tangent ratio
-  double* corner = nullptr;      ///< corner forces [N], 3 per corner slot
+  double* corner = nullptr;      ///< corner forces [N], kCornerStride per corner slot
   /// 8 per element: the slot of corner a of element e in `corner` (the solver's
   /// are node-major, so that the nodal sums read in order); nullptr: slot 8e + a.
   const int* corner_slot = nullptr;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "fe/contact_springs.hpp"
+#include "fe/element_view.hpp"
 #include "fe/hex8.hpp"
 #include "material/sheet_frame.hpp"
 
@@ -39,7 +40,7 @@ Solver::Solver(Model& model) : m_(model) {
   state_.assign(static_cast<std::size_t>(ne) * 2 * mat.state_size(), 0.0);
   hgq_.assign(6 * ne, 0.0);
   hg_ratio_.assign(ne, 1.0);
-  corner_.assign(24 * ne, 0.0);
+  corner_.assign(8 * kCornerStride * static_cast<std::size_t>(ne), 0.0);
   // Node-major corner slots: node i's corners at slots nc_.start[i] .. start[i+1]-1,
   // in the order the nodal sum has always added them (ascending element, corner).
   corner_slot_.assign(8 * static_cast<std::size_t>(ne), 0);

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "fe/contact_springs.hpp"
+#include "fe/element_view.hpp"
 #include "fe/solver.hpp"
 
 namespace drawbend::fe {
@@ -286,7 +287,7 @@ int Solver::nonfinite_element() const {
       if (!std::isfinite(sig_[12 * e + k])) return e;
     for (int a = 0; a < 8; ++a)
       for (int k = 0; k < 3; ++k)
-        if (!std::isfinite(corner_[3 * static_cast<std::size_t>(corner_slot_[8 * e + a]) + k])) return e;
+        if (!std::isfinite(corner_[kCornerStride * static_cast<std::size_t>(corner_slot_[8 * e + a]) + k])) return e;
   }
   return -1;
 }

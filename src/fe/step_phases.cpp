@@ -7,6 +7,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "fe/element_view.hpp"
+
 
 namespace drawbend::fe {
 
@@ -80,9 +82,9 @@ int sum_and_integrate(const int* start, const double* corner, const NodeView& v,
   for (int i = 0; i < v.n; ++i) {
     double fx = 0, fy = 0, fz = 0;
     for (int k = start[i]; k < start[i + 1]; ++k) {
-      fx += corner[3 * k];
-      fy += corner[3 * k + 1];
-      fz += corner[3 * k + 2];
+      fx += corner[kCornerStride * k];
+      fy += corner[kCornerStride * k + 1];
+      fz += corner[kCornerStride * k + 2];
     }
     // In locals: the arrays may alias as far as the compiler knows, and it
     // would otherwise read each velocity back after storing it.

@@ -43,7 +43,7 @@ void apply_loads(const Model& m, const Step& step, const StepPlan& plan, double 
                  Vec3* applied);
 
 /// The node pass, one per node: f = the node's corner forces summed in their
-/// fixed order (`corner`, node-major: 3 doubles per slot, node i's slots
+/// fixed order (`corner`, node-major: kCornerStride doubles per slot, node i's slots
 /// start[i] .. start[i+1]-1, ascending element and corner), then v0 = v;
 /// v = a1 v + a2 (f + ext) / m.  Over threads when `parallel` (each node is
 /// its own, so the results do not depend on it).  Returns the lowest node with

@@ -95,7 +95,7 @@ struct Block {
     hgq.resize(6 * n);
     for (double& q : hgq) q = 0.1 * u(rng);
     ratio.assign(n, 1.0);
-    corner.assign(24 * n, 0.0);
+    corner.assign(8 * kCornerStride * n, 0.0);
     ie.assign(n, 0.0);
     hg.assign(n, 0.0);
     dt.assign(n, 0.0);
