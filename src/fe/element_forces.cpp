@@ -82,7 +82,7 @@ void Solver::element_forces() {
   ev.ie_inc = ie_inc_.data();
   ev.hg_inc = hg_inc_.data();
   ev.dt_elem = dt_elem_.data();
-  ev.mass_factor = elem_mass_factor_.data();
+  ev.sqrt_mass_factor = elem_sqrt_mass_factor_.data();
   ev.mat = &mat;
   bind_lanes(ev);
   ev.ns = mat.state_size();

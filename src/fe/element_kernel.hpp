@@ -343,9 +343,8 @@ int element_block(const ElementView& ev, int e0) {
     store_slots<W>(out, fa);
   }
   // The stable time step, len / c sqrt(mass factor), on the lanes.
-  T mf, smf, len;
-  load_records<1>(ev.mass_factor + e0, &mf);
-  lane_sqrt(mf, smf);
+  T smf, len;
+  load_records<1>(ev.sqrt_mass_factor + e0, &smf);
   hex_stable_length_t(g.h, len);
   const T dte = len / ev.wave_speed * smf;
   store_records<1>(ev.hg_inc + e0, &ehg);

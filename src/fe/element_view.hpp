@@ -39,7 +39,7 @@ struct ElementView {
   double* ie_inc = nullptr;      ///< 1 per element: internal energy increment [mJ]
   double* hg_inc = nullptr;      ///< 1 per element: hourglass energy increment [mJ]
   double* dt_elem = nullptr;     ///< 1 per element: stable time step [s]
-  const double* mass_factor = nullptr;  ///< 1 per element: mass scaling factor
+  const double* sqrt_mass_factor = nullptr;  ///< 1 per element: sqrt of its mass scaling factor (set once)
   const material::Material* mat = nullptr;
   int ns = 0;                    ///< material state size per point
   bool spin = false;             ///< the material rotates its own state (Material::uses_spin)

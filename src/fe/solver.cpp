@@ -81,6 +81,8 @@ Solver::Solver(Model& model) : m_(model) {
     added_mass_ += me * (elem_mass_factor_[e] - 1.0);
     for (int a = 0; a < 8; ++a) mass_[mesh.hex[e][a]] += me * elem_mass_factor_[e] / 8.0;
   }
+  elem_sqrt_mass_factor_.resize(elem_mass_factor_.size());
+  for (std::size_t e = 0; e < elem_mass_factor_.size(); ++e) elem_sqrt_mass_factor_[e] = std::sqrt(elem_mass_factor_[e]);
   inv_mass_.resize(mass_.size());
   for (std::size_t i = 0; i < mass_.size(); ++i) inv_mass_[i] = 1.0 / mass_[i];
   // Contact pairs: unique slave nodes, tributary faces, penalty length scale.

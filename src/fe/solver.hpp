@@ -154,6 +154,7 @@ class Solver {
   std::vector<double> x_, y_, z_, vx_, vy_, vz_, mass_;  // nodes
   std::vector<double> inv_mass_;                         // 1 / mass_, set with it
   std::vector<double> sig_, state_, hgq_, corner_, elem_mass_factor_, dt_elem_, ie_inc_, hg_inc_;  // elements
+  std::vector<double> elem_sqrt_mass_factor_;  // sqrt of elem_mass_factor_, set with it (the element loop's time step)
   std::vector<int> corner_slot_;  // per element corner (8e + a): its slot in corner_, node-major (nc_ order)
   bool elements_forked_ = false;  // this cycle's element loop ran on threads (parallel::worth_forking)
   ForkGovernor governor_;         // whether forking pays on this machine now (measured)

@@ -53,7 +53,9 @@ int sum_and_integrate(const int* start, const double* corner, const NodeView& v,
 
 /// Constraints at mid-interval step time `th`: rotations (with free sliding,
 /// `slide_offset` per rotation), affine fields, velocities, fixed dofs, in that
-/// order; r = the per-node reactions, reactions = their sums per slot.
+/// order; r = the per-node reactions, reactions = their sums per slot.  r must
+/// be zero at every node outside the plan's constraints (zero it when the
+/// step starts): only the constrained nodes' entries are reset here.
 void enforce_constraints(const Step& step, const StepPlan& plan, double th, double dt, const NodeView& v,
                          Vec3* slide_offset, NodeField r, Vec3* reactions);
 

@@ -99,7 +99,7 @@ struct Block {
     ie.assign(n, 0.0);
     hg.assign(n, 0.0);
     dt.assign(n, 0.0);
-    mf.assign(n, 100.0);
+    mf.assign(n, 10.0);  // sqrt of a mass factor of 100
   }
   ElementView view() {
     ElementView v;
@@ -109,7 +109,7 @@ struct Block {
     v.nodes.vx = vx.data(), v.nodes.vy = vy.data(), v.nodes.vz = vz.data();
     v.sig = sig.data(), v.state = state.data(), v.hgq = hgq.data(), v.hg_ratio = ratio.data();
     v.corner = corner.data(), v.ie_inc = ie.data(), v.hg_inc = hg.data(), v.dt_elem = dt.data();
-    v.mass_factor = mf.data();
+    v.sqrt_mass_factor = mf.data();
     v.mat = &mat;
     v.ns = mat.state_size();
     v.spin = mat.uses_spin();
