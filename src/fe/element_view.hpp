@@ -18,10 +18,12 @@
 
 namespace drawbend::fe {
 
-/// Doubles per corner slot: fx, fy, fz [N] and one that stays zero, so that a
-/// slot is one 32-byte store in the vector kernels (fe/lane_records.hpp); the
-/// nodal sum (fe/step_phases.cpp) reads the first three.
-inline constexpr int kCornerStride = 4;
+/// Doubles per corner slot: fx, fy, fz [N].  (Four, with a zero, would make a
+/// slot one 32-byte store in the vector kernels: no faster on the 1,600-element
+/// bar than the two stores of fe/lane_records.hpp, and 5 % slower on the
+/// 64,000-element bar, whose corner buffer then outgrows the caches by a third
+/// more: make bench, 2026-11-27.)
+inline constexpr int kCornerStride = 3;
 
 struct ElementView {
   const std::array<int, 8>* hex = nullptr;  ///< connectivity

@@ -182,23 +182,31 @@ __attribute__((always_inline)) inline void store_records(double* p, const T in[N
     for (int l = 0; l < W; ++l) p[N * l + k] = in[k][l];
 }
 
-/// Corner slots (fe/element_view.hpp, kCornerStride = 4 doubles): lane l's
-/// force (f[0], f[1], f[2]) and a zero into the slot at out[l], one 32-byte
-/// store per lane after an in-register transpose in the AVX2 and AVX-512
-/// kernels (not three element stores); the scalar kernel stores the three.
+/// Corner slots (fe/element_view.hpp, kCornerStride doubles): lane l's force
+/// (f[0], f[1], f[2]) into the slot at out[l]: after an in-register transpose
+/// in the AVX2 and AVX-512 kernels, two stores per lane (one with a zero
+/// fourth double if slots are four wide), not three element stores with
+/// their extractions; the scalar kernel stores the three.
 template <int W>
 __attribute__((always_inline)) inline void store_slots(double* const out[1], const double f[3]) {
   for (int i = 0; i < 3; ++i) out[0][i] = f[i];
 }
 template <int W, class T>
 __attribute__((always_inline)) inline void store_slots(double* const out[W], const T f[3]) {
-  static_assert(kCornerStride == 4, "a slot is one 4-double store");
 #if defined(__AVX512F__)
   if constexpr (W == 8) {
     __m512d r[8];
     for (int k = 0; k < 8; ++k) r[k] = k < 3 ? static_cast<__m512d>(f[k]) : _mm512_setzero_pd();
     records_detail::transpose8(r);
-    for (int l = 0; l < 8; ++l) _mm256_storeu_pd(out[l], _mm512_maskz_extractf64x4_pd(0xf, r[l], 0));
+    for (int l = 0; l < 8; ++l) {
+      const __m256d row = _mm512_maskz_extractf64x4_pd(0xf, r[l], 0);
+      if constexpr (kCornerStride == 4) {
+        _mm256_storeu_pd(out[l], row);
+      } else {
+        _mm_storeu_pd(out[l], _mm256_castpd256_pd128(row));
+        _mm_store_sd(out[l] + 2, _mm256_extractf128_pd(row, 1));
+      }
+    }
     return;
   }
 #endif
@@ -206,7 +214,14 @@ __attribute__((always_inline)) inline void store_slots(double* const out[W], con
   if constexpr (W == 4) {
     __m256d r[4] = {f[0], f[1], f[2], _mm256_setzero_pd()};
     records_detail::transpose4(r);
-    for (int l = 0; l < 4; ++l) _mm256_storeu_pd(out[l], r[l]);
+    for (int l = 0; l < 4; ++l) {
+      if constexpr (kCornerStride == 4) {
+        _mm256_storeu_pd(out[l], r[l]);
+      } else {
+        _mm_storeu_pd(out[l], _mm256_castpd256_pd128(r[l]));
+        _mm_store_sd(out[l] + 2, _mm256_extractf128_pd(r[l], 1));
+      }
+    }
     return;
   }
 #endif
