@@ -176,6 +176,7 @@ class Solver {
   int plan_step_ = -1;    // the step plan_ belongs to
   std::vector<Vec3> reactions_, applied_;  // last cycle: per reaction slot of plan_, per load of the step
   std::vector<double> ex_, ey_, ez_, v0x_, v0y_, v0z_;  // per node: external force, velocity before the update
+  std::vector<int> ext_nodes_;  // the step's load-set and contact nodes: where apply_loads resets ext
   std::vector<double> energy_scratch_[2];  // contact: per node of the largest pair, stored and dissipated energy
   std::vector<double> rx_, ry_, rz_;  // per-node reactions of the last cycle
   std::vector<double> elem_partial_, node_partial_;  // per chunk of kSumChunk: element (ie, hg, dt) and node energy sums

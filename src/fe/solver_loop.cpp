@@ -64,7 +64,7 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
     lap(&PhaseTimes::other);
     element_forces();                                              // forces: element loop, into corner slots
     lap(&PhaseTimes::kernel);
-    apply_loads(m_, step, plan_, ts, nodes, ext, applied_.data());  // loads at t_n (and gravity)
+    apply_loads(m_, step, plan_, ts, nodes, ext, applied_.data(), ext_nodes_);  // loads at t_n (and gravity)
     lap(&PhaseTimes::nodes);
     contact_phase(dt, step.friction, nodes, ext);                   // contact and friction, into ext
     lap(&PhaseTimes::contact);
@@ -116,6 +116,17 @@ void Solver::begin_step(int index) {
   rx_.assign(n, 0.0);
   ry_.assign(n, 0.0);
   rz_.assign(n, 0.0);
+  // External forces: zero, and the nodes where loads and contact set them,
+  // which apply_loads resets each cycle instead of every node.
+  ex_.assign(n, 0.0);
+  ey_.assign(n, 0.0);
+  ez_.assign(n, 0.0);
+  ext_nodes_.clear();
+  for (const auto& load : plan_.loads) ext_nodes_.insert(ext_nodes_.end(), load.nodes->begin(), load.nodes->end());
+  for (const auto& pair : contact_)
+    for (const auto& c : pair) ext_nodes_.push_back(c.node);
+  std::sort(ext_nodes_.begin(), ext_nodes_.end());
+  ext_nodes_.erase(std::unique(ext_nodes_.begin(), ext_nodes_.end()), ext_nodes_.end());
 }
 
 NodeView Solver::node_view() {

@@ -50,10 +50,15 @@ StepPlan plan_step(const Model& m, const Step& step, const std::vector<double>& 
 }
 
 void apply_loads(const Model& m, const Step& step, const StepPlan& plan, double ts, const NodeView& v, NodeField ext,
-                 Vec3* applied) {
-  std::fill(ext.x, ext.x + v.n, 0.0);
-  std::fill(ext.y, ext.y + v.n, 0.0);
-  std::fill(ext.z, ext.z + v.n, 0.0);
+                 Vec3* applied, const std::vector<int>& reset) {
+  const bool gravity = m.gravity != Vec3{0, 0, 0};
+  if (gravity) {
+    std::fill(ext.x, ext.x + v.n, 0.0);
+    std::fill(ext.y, ext.y + v.n, 0.0);
+    std::fill(ext.z, ext.z + v.n, 0.0);
+  } else {
+    for (int i : reset) ext.x[i] = ext.y[i] = ext.z[i] = 0.0;
+  }
   for (std::size_t l = 0; l < step.forces.size(); ++l) {
     const auto& fl = step.forces[l];
     const auto& set = *plan.loads[l].nodes;
@@ -67,7 +72,7 @@ void apply_loads(const Model& m, const Step& step, const StepPlan& plan, double 
     }
     applied[l] = {F * fl.direction[0], F * fl.direction[1], F * fl.direction[2]};
   }
-  if (m.gravity != Vec3{0, 0, 0})
+  if (gravity)
     for (int i = 0; i < v.n; ++i) {
       ext.x[i] += v.mass[i] * m.gravity[0];
       ext.y[i] += v.mass[i] * m.gravity[1];

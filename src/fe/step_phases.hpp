@@ -39,8 +39,11 @@ StepPlan plan_step(const Model& m, const Step& step, const std::vector<double>& 
 int tool_index(const Model& m, const std::string& name);
 
 /// Loads: ext = the step's force loads at step time `ts` plus gravity; applied[l] = the total of load l.
+/// `reset`: the nodes whose ext the last cycle may have set (the step's load
+/// sets and the contact nodes); without gravity only they are zeroed first,
+/// so ext must be zero at every other node (zero it when the step starts).
 void apply_loads(const Model& m, const Step& step, const StepPlan& plan, double ts, const NodeView& v, NodeField ext,
-                 Vec3* applied);
+                 Vec3* applied, const std::vector<int>& reset);
 
 /// The node pass, one per node: f = the node's corner forces summed in their
 /// fixed order (`corner`, node-major: kCornerStride doubles per slot, node i's slots
