@@ -184,8 +184,8 @@ __attribute__((always_inline)) inline void store_records(double* p, const T in[N
 
 /// Corner slots (fe/element_view.hpp, kCornerStride doubles): lane l's force
 /// (f[0], f[1], f[2]) into the slot at out[l]: after an in-register transpose
-/// in the AVX2 and AVX-512 kernels, two stores per lane (one with a zero
-/// fourth double if slots are four wide), not three element stores with
+/// in the AVX2 and AVX-512 kernels, two stores per lane (16 bytes and 8: the
+/// row's first three doubles, store_part), not three element stores with
 /// their extractions; the scalar kernel stores the three.
 template <int W>
 __attribute__((always_inline)) inline void store_slots(double* const out[1], const double f[3]) {
@@ -193,20 +193,13 @@ __attribute__((always_inline)) inline void store_slots(double* const out[1], con
 }
 template <int W, class T>
 __attribute__((always_inline)) inline void store_slots(double* const out[W], const T f[3]) {
+  static_assert(kCornerStride == 3, "a slot is the three force components");
 #if defined(__AVX512F__)
   if constexpr (W == 8) {
     __m512d r[8];
     for (int k = 0; k < 8; ++k) r[k] = k < 3 ? static_cast<__m512d>(f[k]) : _mm512_setzero_pd();
     records_detail::transpose8(r);
-    for (int l = 0; l < 8; ++l) {
-      const __m256d row = _mm512_maskz_extractf64x4_pd(0xf, r[l], 0);
-      if constexpr (kCornerStride == 4) {
-        _mm256_storeu_pd(out[l], row);
-      } else {
-        _mm_storeu_pd(out[l], _mm256_castpd256_pd128(row));
-        _mm_store_sd(out[l] + 2, _mm256_extractf128_pd(row, 1));
-      }
-    }
+    for (int l = 0; l < 8; ++l) records_detail::store_part(out[l], _mm512_maskz_extractf64x4_pd(0xf, r[l], 0), 3);
     return;
   }
 #endif
@@ -214,14 +207,7 @@ __attribute__((always_inline)) inline void store_slots(double* const out[W], con
   if constexpr (W == 4) {
     __m256d r[4] = {f[0], f[1], f[2], _mm256_setzero_pd()};
     records_detail::transpose4(r);
-    for (int l = 0; l < 4; ++l) {
-      if constexpr (kCornerStride == 4) {
-        _mm256_storeu_pd(out[l], r[l]);
-      } else {
-        _mm_storeu_pd(out[l], _mm256_castpd256_pd128(r[l]));
-        _mm_store_sd(out[l] + 2, _mm256_extractf128_pd(r[l], 1));
-      }
-    }
+    for (int l = 0; l < 4; ++l) records_detail::store_part(out[l], r[l], 3);
     return;
   }
 #endif
