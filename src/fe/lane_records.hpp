@@ -5,6 +5,7 @@
 // consecutive elements' records as vectors, one element per lane, and writes
 // them back.
 #include <cstring>
+#include <type_traits>
 
 #include "fe/element_view.hpp"
 #include "fe/lanes.hpp"
@@ -71,6 +72,48 @@ __attribute__((always_inline)) inline void transpose4(__m256d r[4]) {
   r[3] = _mm256_permute2f128_pd(t1, t3, 0x31);
 }
 #endif
+#if defined(__AVX512F__)
+/// Columns C .. C+7 of the 8 x N block of records at p (row l: record l) into
+/// out[C ..], then the next columns.  Unrolled at compile time (a template per
+/// column block): as a run-time loop GCC moved each block's vectors through a
+/// stack buffer and a `rep movsq` into out[], whose later vector reads then
+/// missed store forwarding.
+template <int N, int C, class T>
+__attribute__((always_inline)) inline void load_columns8(const double* p, T out[N]) {
+  if constexpr (C < N) {
+    constexpr int w = N - C < 8 ? N - C : 8;
+    __m512d r[8];
+    for (int l = 0; l < 8; ++l)
+      r[l] = w == 8 ? _mm512_loadu_pd(p + N * l + C)
+                    : _mm512_maskz_loadu_pd(static_cast<__mmask8>((1u << w) - 1), p + N * l + C);
+    transpose8(r);
+    for (int k = 0; k < w; ++k) out[C + k] = r[k];
+    load_columns8<N, C + 8>(p, out);
+  }
+}
+/// in[C .. C+7] into columns C .. C+7 of the 8 x N block at p, then the next
+/// columns (compile-time unrolled, as load_columns8).
+template <int N, int C, class T>
+__attribute__((always_inline)) inline void store_columns8(double* p, const T in[N]) {
+  if constexpr (C < N) {
+    constexpr int w = N - C < 8 ? N - C : 8;
+    __m512d r[8];
+    for (int k = 0; k < 8; ++k) r[k] = k < w ? static_cast<__m512d>(in[C + k]) : _mm512_setzero_pd();
+    transpose8(r);
+    for (int l = 0; l < 8; ++l) {  // row l: element l's w values, without masked stores
+      double* q = p + N * l + C;
+      if constexpr (w == 8) {
+        _mm512_storeu_pd(q, r[l]);
+      } else {
+        const __m256d lo = _mm512_maskz_extractf64x4_pd(0xf, r[l], 0);  // (the masked form: as transpose8)
+        store_part(q, lo, w < 4 ? w : 4);
+        if constexpr (w > 4) store_part(q + 4, _mm512_maskz_extractf64x4_pd(0xf, r[l], 1), w - 4);
+      }
+    }
+    store_columns8<N, C + 8>(p, in);
+  }
+}
+#endif
 }  // namespace records_detail
 
 template <int N>
@@ -94,15 +137,7 @@ __attribute__((always_inline)) inline void load_records(const double* p, T out[N
 #endif
 #if defined(__AVX512F__)
   if constexpr (W == 8) {
-    for (int c = 0; c < N; c += 8) {  // columns c .. c+7 of the 8 x N block
-      const int w = N - c < 8 ? N - c : 8;
-      __m512d r[8];
-      for (int l = 0; l < 8; ++l)
-        r[l] = w == 8 ? _mm512_loadu_pd(p + N * l + c)
-                      : _mm512_maskz_loadu_pd(static_cast<__mmask8>((1u << w) - 1), p + N * l + c);
-      records_detail::transpose8(r);
-      for (int k = 0; k < w; ++k) out[c + k] = r[k];
-    }
+    records_detail::load_columns8<N, 0>(p, out);
     return;
   }
 #endif
@@ -147,22 +182,7 @@ __attribute__((always_inline)) inline void store_records(double* p, const T in[N
 #endif
 #if defined(__AVX512F__)
   if constexpr (W == 8) {
-    for (int c = 0; c < N; c += 8) {
-      const int w = N - c < 8 ? N - c : 8;
-      __m512d r[8];
-      for (int k = 0; k < 8; ++k) r[k] = k < w ? static_cast<__m512d>(in[c + k]) : _mm512_setzero_pd();
-      records_detail::transpose8(r);
-      for (int l = 0; l < 8; ++l) {  // row l: element l's w values, without masked stores
-        double* q = p + N * l + c;
-        if (w == 8) {
-          _mm512_storeu_pd(q, r[l]);
-          continue;
-        }
-        const __m256d lo = _mm512_maskz_extractf64x4_pd(0xf, r[l], 0);  // (the masked form: as transpose8)
-        records_detail::store_part(q, lo, w < 4 ? w : 4);
-        if (w > 4) records_detail::store_part(q + 4, _mm512_maskz_extractf64x4_pd(0xf, r[l], 1), w - 4);
-      }
-    }
+    records_detail::store_columns8<N, 0>(p, in);
     return;
   }
 #endif
@@ -183,10 +203,13 @@ __attribute__((always_inline)) inline void store_records(double* p, const T in[N
 }
 
 /// Corner slots (fe/element_view.hpp, kCornerStride doubles): lane l's force
-/// (f[0], f[1], f[2]) into the slot at out[l]: after an in-register transpose
-/// in the AVX2 and AVX-512 kernels, two stores per lane (16 bytes and 8: the
-/// row's first three doubles, store_part), not three element stores with
-/// their extractions; the scalar kernel stores the three.
+/// (f[0], f[1], f[2]) into the slot at out[l], two stores per lane (16 bytes:
+/// the pair (f[0], f[1]); 8 bytes: f[2]).  In the AVX2 and AVX-512 kernels the
+/// pairs come from one interleave of f[0] and f[1] (unpacklo: the even lanes'
+/// pairs, unpackhi: the odd ones'), each stored straight from its 128-bit
+/// part; f[2] is stored from its 128-bit parts as low and high halves.  No
+/// full transpose: three vectors need none (an 8x8 transpose took 24 shuffles
+/// per corner for these three rows).  The scalar kernel stores the three.
 template <int W>
 __attribute__((always_inline)) inline void store_slots(double* const out[1], const double f[3]) {
   for (int i = 0; i < 3; ++i) out[0][i] = f[i];
@@ -196,18 +219,40 @@ __attribute__((always_inline)) inline void store_slots(double* const out[W], con
   static_assert(kCornerStride == 3, "a slot is the three force components");
 #if defined(__AVX512F__)
   if constexpr (W == 8) {
-    __m512d r[8];
-    for (int k = 0; k < 8; ++k) r[k] = k < 3 ? static_cast<__m512d>(f[k]) : _mm512_setzero_pd();
-    records_detail::transpose8(r);
-    for (int l = 0; l < 8; ++l) records_detail::store_part(out[l], _mm512_maskz_extractf64x4_pd(0xf, r[l], 0), 3);
+    constexpr __mmask8 kAll = 0xff;  // (the masked forms: as transpose8)
+    const __m512d even = _mm512_maskz_unpacklo_pd(kAll, f[0], f[1]);  // part k: (f0, f1) of lane 2k
+    const __m512d odd = _mm512_maskz_unpackhi_pd(kAll, f[0], f[1]);   // part k: of lane 2k + 1
+    const __m512d z = f[2];
+    const auto part = [](__m512d v, auto k) {  // 128-bit part k
+      return _mm_castps_pd(_mm512_maskz_extractf32x4_ps(0xf, _mm512_castpd_ps(v), decltype(k)::value));
+    };
+    const auto store3 = [&](auto k) {
+      constexpr int l = 2 * decltype(k)::value;
+      _mm_storeu_pd(out[l], part(even, k));
+      _mm_storeu_pd(out[l + 1], part(odd, k));
+      const __m128d zk = part(z, k);
+      _mm_storel_pd(out[l] + 2, zk);
+      _mm_storeh_pd(out[l + 1] + 2, zk);
+    };
+    store3(std::integral_constant<int, 0>{});
+    store3(std::integral_constant<int, 1>{});
+    store3(std::integral_constant<int, 2>{});
+    store3(std::integral_constant<int, 3>{});
     return;
   }
 #endif
 #if defined(__AVX__)
   if constexpr (W == 4) {
-    __m256d r[4] = {f[0], f[1], f[2], _mm256_setzero_pd()};
-    records_detail::transpose4(r);
-    for (int l = 0; l < 4; ++l) records_detail::store_part(out[l], r[l], 3);
+    const __m256d even = _mm256_unpacklo_pd(f[0], f[1]), odd = _mm256_unpackhi_pd(f[0], f[1]);
+    const __m128d z0 = _mm256_castpd256_pd128(f[2]), z1 = _mm256_extractf128_pd(f[2], 1);
+    _mm_storeu_pd(out[0], _mm256_castpd256_pd128(even));
+    _mm_storeu_pd(out[1], _mm256_castpd256_pd128(odd));
+    _mm_storeu_pd(out[2], _mm256_extractf128_pd(even, 1));
+    _mm_storeu_pd(out[3], _mm256_extractf128_pd(odd, 1));
+    _mm_storel_pd(out[0] + 2, z0);
+    _mm_storeh_pd(out[1] + 2, z0);
+    _mm_storel_pd(out[2] + 2, z1);
+    _mm_storeh_pd(out[3] + 2, z1);
     return;
   }
 #endif
