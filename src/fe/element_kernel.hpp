@@ -39,6 +39,7 @@
 // the solver, so that its nodal sums read in order).
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "fe/combined_lanes.hpp"
 #include "fe/element_view.hpp"
@@ -101,17 +102,35 @@ template <int W>
 int element_block(const ElementView& ev, int e0) {
   using T = typename Lanes<W>::type;
   const double dtp = ev.dtp;
-  // Gather.
+  // Gather.  Where each corner's nodes run on with the lanes (element e0 + l
+  // has node n + l at every corner: a row of a structured block, numbered as
+  // mesh.cpp numbers them), each vector is one load of W consecutive values;
+  // otherwise one load per lane.  The same values either way.
   T x[8], y[8], z[8], v[8][3];
-  for (int a = 0; a < 8; ++a) {
-    int n[W];
-    for (int l = 0; l < W; ++l) n[l] = ev.hex[e0 + l][a];
-    from_lanes(x[a], [&](int l) { return ev.nodes.x[n[l]]; });
-    from_lanes(y[a], [&](int l) { return ev.nodes.y[n[l]]; });
-    from_lanes(z[a], [&](int l) { return ev.nodes.z[n[l]]; });
-    from_lanes(v[a][0], [&](int l) { return ev.nodes.vx[n[l]]; });
-    from_lanes(v[a][1], [&](int l) { return ev.nodes.vy[n[l]]; });
-    from_lanes(v[a][2], [&](int l) { return ev.nodes.vz[n[l]]; });
+  bool run = W > 1;
+  for (int l = 1; l < W; ++l)
+    for (int a = 0; a < 8; ++a) run = run && ev.hex[e0 + l][a] == ev.hex[e0][a] + l;
+  if (run) {
+    for (int a = 0; a < 8; ++a) {
+      const int n = ev.hex[e0][a];
+      std::memcpy(&x[a], ev.nodes.x + n, sizeof(T));
+      std::memcpy(&y[a], ev.nodes.y + n, sizeof(T));
+      std::memcpy(&z[a], ev.nodes.z + n, sizeof(T));
+      std::memcpy(&v[a][0], ev.nodes.vx + n, sizeof(T));
+      std::memcpy(&v[a][1], ev.nodes.vy + n, sizeof(T));
+      std::memcpy(&v[a][2], ev.nodes.vz + n, sizeof(T));
+    }
+  } else {
+    for (int a = 0; a < 8; ++a) {
+      int n[W];
+      for (int l = 0; l < W; ++l) n[l] = ev.hex[e0 + l][a];
+      from_lanes(x[a], [&](int l) { return ev.nodes.x[n[l]]; });
+      from_lanes(y[a], [&](int l) { return ev.nodes.y[n[l]]; });
+      from_lanes(z[a], [&](int l) { return ev.nodes.z[n[l]]; });
+      from_lanes(v[a][0], [&](int l) { return ev.nodes.vx[n[l]]; });
+      from_lanes(v[a][1], [&](int l) { return ev.nodes.vy[n[l]]; });
+      from_lanes(v[a][2], [&](int l) { return ev.nodes.vz[n[l]]; });
+    }
   }
   HexGeometryT<T> g;
   if (!hex_geometry_t(x, y, z, g)) {
