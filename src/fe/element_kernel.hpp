@@ -97,6 +97,24 @@ inline std::uint64_t ticks() {
 #endif
 }
 
+/// Whether hex[l][a] = hex[0][a] + l for every lane l and corner a: each
+/// connectivity row as one vector of 8 ints, its difference from row 0 against
+/// l, and the mismatches or-ed (no branch per corner).
+template <int W>
+inline bool nodes_run_on(const std::array<int, 8>* hex) {
+  using I8 = int __attribute__((vector_size(32)));
+  I8 r0, bad = {};
+  std::memcpy(&r0, hex[0].data(), sizeof(I8));
+  for (int l = 1; l < W; ++l) {
+    I8 rl;
+    std::memcpy(&rl, hex[l].data(), sizeof(I8));
+    bad |= (rl - r0) ^ l;
+  }
+  int any = 0;
+  for (int a = 0; a < 8; ++a) any |= bad[a];
+  return any == 0;
+}
+
 /// Elements e0 .. e0+W-1.  Returns the lowest inverted one, or -1.
 template <int W>
 int element_block(const ElementView& ev, int e0) {
@@ -107,10 +125,7 @@ int element_block(const ElementView& ev, int e0) {
   // mesh.cpp numbers them), each vector is one load of W consecutive values;
   // otherwise one load per lane.  The same values either way.
   T x[8], y[8], z[8], v[8][3];
-  bool run = W > 1;
-  for (int l = 1; l < W; ++l)
-    for (int a = 0; a < 8; ++a) run = run && ev.hex[e0 + l][a] == ev.hex[e0][a] + l;
-  if (run) {
+  if (W > 1 && nodes_run_on<W>(ev.hex + e0)) {
     for (int a = 0; a < 8; ++a) {
       const int n = ev.hex[e0][a];
       std::memcpy(&x[a], ev.nodes.x + n, sizeof(T));
