@@ -254,14 +254,16 @@ template <int W, class T>
 inline void combined_points(const ElementView& ev, int e0, const T s[2][6], const T deps[2][6], const T spin[2][3],
                             const T& V, T& ratio, T snew[2][6]) {
   const bool turn = ev.spin && ev.dtp != 0.0;
-  lane_points<W>(ev, e0, s, deps, V, ratio, snew, [&](int gp, T* sn, T& r) {
-    CombinedState<T> st;
-    T Q[3][3];
-    move_state<W, false>(ev, e0, gp, st);
-    combined_update<W>(ev.combined, deps[gp], spin[gp], ev.dtp, turn, sn, st, Q);
-    move_state<W, true>(ev, e0, gp, st);
-    combined_tangent_ratio<W>(ev.combined, sn, st, Q, r);
-  });
+  CombinedState<T> st[2];
+  T Q[2][3][3];
+  lane_points<W>(
+      ev, e0, s, deps, V, ratio, snew,
+      [&](int gp, T* sn) {
+        move_state<W, false>(ev, e0, gp, st[gp]);
+        combined_update<W>(ev.combined, deps[gp], spin[gp], ev.dtp, turn, sn, st[gp], Q[gp]);
+        move_state<W, true>(ev, e0, gp, st[gp]);
+      },
+      [&](int gp, const T* sn, T& r) { combined_tangent_ratio<W>(ev.combined, sn, st[gp], Q[gp], r); });
 }
 
 }  // namespace drawbend::fe::DRAWBEND_ISA::kernel

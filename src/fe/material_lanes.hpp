@@ -132,20 +132,26 @@ inline void proximity_ratio(const T& f, const T& H, double E, T& ratio) {
 }
 
 /// The material section of element_block<W> shared by the models on the
-/// lanes: for each point, point(gp, sn, r) updates sn (in: the rotated stress
-/// s[gp], out: the new stress) and the point's state in ev.state, and sets r,
-/// its tangent ratio; here the stress power by the midpoint rule into
-/// ev.ie_inc, the new stresses into ev.sig and into `snew` (so that the
-/// element's forces read them from registers, not back from ev.sig) and the
-/// mean ratio.  The bits of the scalar section.
-template <int W, class T, class Point>
+/// lanes: for each point, update(gp, sn) updates sn (in: the rotated stress
+/// s[gp], out: the new stress) and the point's state in ev.state, and
+/// ratio_of(gp, sn, r) sets r, its tangent ratio; here the stress power by
+/// the midpoint rule into ev.ie_inc, the new stresses into ev.sig and into
+/// `snew` (so that the element's forces read them from registers, not back
+/// from ev.sig) and the mean ratio.  The bits of the scalar section.  Both
+/// points are updated before either's ratio: the updates are independent
+/// chains of square roots and divisions, and side by side the processor can
+/// overlap them.
+template <int W, class T, class Update, class RatioOf>
 inline void lane_points(const ElementView& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio,
-                        T snew[2][6], Point&& point) {
+                        T snew[2][6], Update&& update, RatioOf&& ratio_of) {
   T ie = {}, r[2];
   for (int gp = 0; gp < 2; ++gp) {
-    T* sn = snew[gp];
-    for (int k = 0; k < 6; ++k) sn[k] = s[gp][k];
-    point(gp, sn, r[gp]);
+    for (int k = 0; k < 6; ++k) snew[gp][k] = s[gp][k];
+    update(gp, snew[gp]);
+  }
+  for (int gp = 0; gp < 2; ++gp) ratio_of(gp, snew[gp], r[gp]);
+  for (int gp = 0; gp < 2; ++gp) {
+    const T* sn = snew[gp];
     T w = {};
     for (int k = 0; k < 6; ++k) w += 0.5 * (s[gp][k] + sn[k]) * deps[gp][k];
     ie += w;
@@ -273,11 +279,12 @@ inline void j2_points(const ElementView& ev, int e0, const T s[2][6], const T de
                       T snew[2][6]) {
   T ep[2];  // the points' plastic strains (one state value per point)
   load_records<2>(ev.state + 2 * static_cast<std::size_t>(e0), ep);
-  lane_points<W>(ev, e0, s, deps, V, ratio, snew, [&](int gp, T* sn, T& r) {
-    LaneSegments<W, T> seg;
-    const bool have_seg = j2_update<W>(ev.j2, deps[gp], sn, ep[gp], seg);
-    j2_tangent_ratio<W>(ev.j2, sn, ep[gp], have_seg ? &seg : nullptr, r);
-  });
+  LaneSegments<W, T> seg[2];
+  bool have_seg[2];
+  lane_points<W>(
+      ev, e0, s, deps, V, ratio, snew,
+      [&](int gp, T* sn) { have_seg[gp] = j2_update<W>(ev.j2, deps[gp], sn, ep[gp], seg[gp]); },
+      [&](int gp, const T* sn, T& r) { j2_tangent_ratio<W>(ev.j2, sn, ep[gp], have_seg[gp] ? &seg[gp] : nullptr, r); });
   store_records<2>(ev.state + 2 * static_cast<std::size_t>(e0), ep);
 }
 
