@@ -12,7 +12,10 @@
 // see that; a measurement can.
 //
 // How.  Windows of kWindow cycles are timed alternately with forking allowed
-// and forbidden; the faster wins and holds for `interval` cycles, which
+// and forbidden; the window with the shorter median cycle wins (not the
+// shorter sum: one cycle in which the host takes a core for milliseconds,
+// seen in this guest at 13 times a normal cycle, would otherwise decide the
+// trial) and holds for `interval` cycles, which
 // doubles (up to kMaxInterval) each time the same mode wins again and falls
 // back to kMinInterval when the other one does.  A wrong trial therefore
 // costs a few cycles in thousands.  The first kSettle cycles (first touch of
@@ -43,7 +46,7 @@ class ForkGovernor {
   Phase phase_ = Phase::settle;
   bool fork_ = true;  // the mode that won the last trial (forking, before any)
   int count_ = 0;     // cycles into the current phase
-  double t_fork_ = 0, t_serial_ = 0;
+  double t_fork_[kWindow] = {}, t_serial_[kWindow] = {};  // the trial windows' cycle times [s]
   long interval_ = kMinInterval;
 };
 

@@ -96,6 +96,25 @@ BOOST_AUTO_TEST_CASE(fork_governor_keeps_the_faster) {
   BOOST_TEST(g.interval() == fe::ForkGovernor::kMinInterval);  // the other winner: back to often
 }
 
+// One slow cycle does not decide a trial: each window is judged by its
+// median cycle.  Forking at 1 s a cycle, with one cycle of the fork window at
+// 100 s (the host took a core), against 1.5 s serial: forking wins (the sum
+// would say 107 s against 12 s).  The reverse spike, one serial cycle at
+// 0.01 s, does not make serial win either.
+BOOST_AUTO_TEST_CASE(fork_governor_one_slow_cycle_does_not_decide) {
+  fe::ForkGovernor g;
+  for (long k = 0; k < fe::ForkGovernor::kSettle; ++k) g.after_cycle(1.0);
+  long fork_cycle = 0;
+  for (long k = 0; k < 2 * fe::ForkGovernor::kWindow; ++k)
+    g.after_cycle(g.allowed() ? (++fork_cycle == 3 ? 100.0 : 1.0) : 1.5);
+  BOOST_TEST(g.allowed());
+  BOOST_TEST(g.interval() == 2 * fe::ForkGovernor::kMinInterval);  // forking won again (it held before any trial)
+  long serial_cycle = 0;
+  for (long k = 0; k < 2 * fe::ForkGovernor::kMinInterval + 2 * fe::ForkGovernor::kWindow; ++k)
+    g.after_cycle(g.allowed() ? 1.0 : (++serial_cycle == 2 ? 0.01 : 1.5));
+  BOOST_TEST(g.allowed());
+}
+
 // make bench's per-phase timers (fe/phase_times.hpp) only read clocks: the
 // same run timed and untimed gives the same bits, and the timed one accounts
 // for every cycle, with time in the element kernel and its material updates.
