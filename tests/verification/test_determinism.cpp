@@ -100,7 +100,8 @@ BOOST_AUTO_TEST_CASE(fork_governor_keeps_the_faster) {
 // median cycle.  Forking at 1 s a cycle, with one cycle of the fork window at
 // 100 s (the host took a core), against 1.5 s serial: forking wins (the sum
 // would say 107 s against 12 s).  The reverse spike, one serial cycle at
-// 0.01 s, does not make serial win either.
+// 0.01 s, does not make serial win either (as it would if the fastest cycle
+// of each window decided).
 BOOST_AUTO_TEST_CASE(fork_governor_one_slow_cycle_does_not_decide) {
   fe::ForkGovernor g;
   for (long k = 0; k < fe::ForkGovernor::kSettle; ++k) g.after_cycle(1.0);
