@@ -33,8 +33,13 @@ void print_summary(const std::string& cpu, const std::string& isa, int width, co
       const double limit = isa == "avx512" ? 100 : 160;
       goal("bar 1,600, 1 thread <= " + fmt(limit, 3) + " ns (" + isa + ")", c.ns1 <= limit, fmt(c.ns1, 3) + " ns");
     }
-    if (c.name == "drawbend_4800" && c.ns1 > 0)
-      goal("strip with contact, 1 thread <= 120 ns", c.ns1 <= 120, fmt(c.ns1, 3) + " ns");
+    if (c.name == "drawbend_4800" && c.ns1 > 0) {
+      if (isa == "avx512")
+        goal("strip with contact, 1 thread <= 120 ns (avx512)", c.ns1 <= 120, fmt(c.ns1, 3) + " ns");
+      else  // the issue sets this goal for AVX-512 machines only
+        std::cout << "n/a  strip with contact, 1 thread <= 120 ns: a goal for the avx512 kernel; " << isa << " here: "
+                  << fmt(c.ns1, 3) << " ns\n";
+    }
     if (c.elements >= 8000 && c.ns1 > 0 && c.ns2 > 0)
       goal(c.name + ", 2 threads >= 1.8x 1 thread", c.ns1 / c.ns2 >= 1.8, fmt(c.ns1 / c.ns2, 3) + "x");
   }
