@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "sim/drawbend_case.hpp"
+#include "sim/fe_options.hpp"
 
 using namespace drawbend;
 
@@ -27,7 +28,13 @@ std::string cpu_model() {
 }
 
 bool bench_deck(const std::string& dir, CsvWriter& w) {
-  sim::DrawBendSpec s;  // the defaults of `drawbend drawbend-deck`
+  // The defaults of `drawbend drawbend-deck` (src/cli/drawbend_deck_cmd.cpp):
+  // the quick tier's mesh (400 elements, 765 nodes), its mass scaling at the
+  // default speed, the RD curve.  Before 2026-11-27 this took DrawBendSpec's
+  // own mesh, a finer deck than the one users meet first.
+  sim::DrawBendSpec s;
+  sim::set_quick_mesh(s);
+  s.mass_scaling = sim::mass_scaling_for_speed(sim::kQuickMassScaling, s.speed);
   s.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
   double wall[3] = {0, 0, 0};
   const int maxt = std::min(2, omp_get_num_procs());
