@@ -28,14 +28,11 @@ std::string cpu_model() {
 }
 
 bool bench_deck(const std::string& dir, CsvWriter& w) {
-  // The defaults of `drawbend drawbend-deck` (src/cli/drawbend_deck_cmd.cpp):
-  // the quick tier's mesh (400 elements, 765 nodes), its mass scaling at the
+  // The defaults of `drawbend drawbend-deck` (sim::quick_deck_spec): the
+  // quick tier's mesh (400 elements, 765 nodes), its mass scaling at the
   // default speed, the RD curve.  Before 2026-11-27 this took DrawBendSpec's
   // own mesh, a finer deck than the one users meet first.
-  sim::DrawBendSpec s;
-  sim::set_quick_mesh(s);
-  s.mass_scaling = sim::mass_scaling_for_speed(sim::kQuickMassScaling, s.speed);
-  s.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
+  const sim::DrawBendSpec s = sim::quick_deck_spec();
   double wall[3] = {0, 0, 0};
   const int maxt = std::min(2, omp_get_num_procs());
   for (int threads = 1; threads <= maxt; ++threads) {

@@ -31,10 +31,8 @@ double table_5_1_yield_rd() {
 }  // namespace
 
 int drawbend_deck_command(int argc, char** argv) {
-  sim::DrawBendSpec s;
-  sim::set_quick_mesh(s);  // the chapters' quick tier (sim/fe_options.hpp)
-  s.mass_scaling = 0;      // 0: the quick tier's rule at --speed (set after parsing)
-  s.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
+  sim::DrawBendSpec s = sim::quick_deck_spec();  // the chapters' quick tier (sim/fe_options.hpp)
+  s.mass_scaling = 0;  // 0: the quick tier's rule at --speed (set after parsing)
   std::string run_dir, basis = "full";
   double back_tension = 2 * s.back_tension, bending_force = 0, yield_stress = 0;
   int threads = 0;

@@ -1,5 +1,7 @@
 #include "sim/fe_options.hpp"
 
+#include <string>
+
 namespace drawbend::sim {
 
 double mass_scaling_for_speed(double at_100, double v) { return at_100 * (100.0 / v) * (100.0 / v); }
@@ -9,6 +11,14 @@ void set_quick_mesh(DrawBendSpec& s) {
   s.across = 2;
   s.through = 4;
   s.mass_scaling = kQuickMassScaling;
+}
+
+DrawBendSpec quick_deck_spec() {
+  DrawBendSpec s;
+  set_quick_mesh(s);
+  s.mass_scaling = mass_scaling_for_speed(kQuickMassScaling, s.speed);
+  s.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
+  return s;
 }
 
 void add_fe_options(Options& o, DrawBendSpec& base, bool& run_fe, bool& reuse_runs) {

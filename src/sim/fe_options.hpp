@@ -23,6 +23,11 @@ double mass_scaling_for_speed(double at_100, double v);
 /// another speed pass it through mass_scaling_for_speed).
 void set_quick_mesh(DrawBendSpec& s);
 
+/// The deck `drawbend drawbend-deck` starts from, and the one `make bench`
+/// times: the quick mesh, its mass scaling at the spec's default speed
+/// (mass_scaling_for_speed), the RD hardening curve of data/materials.
+DrawBendSpec quick_deck_spec();
+
 /// Set the quick-tier mesh on `base` and register --fe, --reuse-runs,
 /// --fe-element-length, --fe-across, --fe-through and --fe-mass-scaling
 /// (--fe and --reuse-runs take true or false).
