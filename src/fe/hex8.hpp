@@ -37,7 +37,7 @@ inline constexpr double kEtaN[8] = {-1, -1, 1, 1, -1, -1, 1, 1};
 inline constexpr double kZetaN[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
 
 /// dV/dx_a, dV/dy_a, dV/dz_a of the trilinear hexahedron (exact), following
-/// Flanagan & Belytschko (1981) as written in LULESH.
+/// Flanagan & Belytschko (1981), in the Walsh form of fe/hex8_geometry.hpp.
 void volume_derivatives(const double x[8], const double y[8], const double z[8], double dvdx[8], double dvdy[8],
                         double dvdz[8]);
 

@@ -165,7 +165,7 @@ void Solver::compute_dt() {
     double ex[8], ey[8], ez[8];
     gather(x_, y_, z_, mesh.hex[e], ex, ey, ez);
     HexGeometry g;
-    hex_geometry(ex, ey, ez, g);
+    if (!hex_geometry(ex, ey, ez, g)) throw std::invalid_argument("element " + std::to_string(e) + " is inverted");
     dt_elem_[e] = hex_stable_length(g) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
     dtmin = std::min(dtmin, dt_elem_[e]);
   }

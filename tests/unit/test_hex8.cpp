@@ -4,12 +4,16 @@
 //    volume of a distorted hexahedron; V = (1/3) sum_a x_a . dV/dx_a equals it too.
 //  - Consistency: sum_a B_a = 0 and sum_a x_a (x) B_a = I (linear fields are
 //    differentiated exactly), for any shape.
+//  - The Walsh transform of fe/hex8_geometry.hpp: W_k = sum_a h_k(a) u_a
+//    for each Walsh function h_k, and walsh8_back_t(W) + W_0 = 8 u (the
+//    Hadamard matrix squared is 8 I), exact on integers.
 //  - A unit cube has B_a = (xi_a, eta_a, zeta_a)/4, half-lengths 0.5, and
 //    stable length 2 min(h) = 1 (= V / A_max).
 #define BOOST_TEST_MODULE hex8
 #include <boost/test/unit_test.hpp>
 
 #include "fe/hex8.hpp"
+#include "fe/hex8_geometry.hpp"
 #include "fe/mesh.hpp"
 
 using namespace drawbend::fe;
@@ -47,6 +51,30 @@ BOOST_AUTO_TEST_CASE(volume_derivative_matches_finite_difference) {
   HexGeometry g;
   BOOST_TEST(hex_geometry(x, y, z, g));
   BOOST_TEST(g.volume == hex_volume(x, y, z), tt::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(walsh_transform_and_its_transpose) {
+  const double u[8] = {3, -7, 11, 2, -5, 13, 1, -4};
+  double W[8], back[8];
+  baseline::walsh8_t(u, W);
+  const double* n[3] = {kXiN, kEtaN, kZetaN};
+  for (int k = 0; k < 8; ++k) {
+    double want = 0;
+    for (int a = 0; a < 8; ++a) {
+      // h_k: 1, xi, eta, zeta, xi*eta, eta*zeta, zeta*xi, xi*eta*zeta
+      const double h[8] = {1, n[0][a], n[1][a], n[2][a], n[0][a] * n[1][a], n[1][a] * n[2][a], n[2][a] * n[0][a],
+                           n[0][a] * n[1][a] * n[2][a]};
+      want += h[k] * u[a];
+    }
+    BOOST_TEST(W[k] == want);
+  }
+  for (int al = 0; al < 4; ++al) {  // kHg's modes are Walsh functions
+    double want = 0;
+    for (int a = 0; a < 8; ++a) want += kHg[al][a] * u[a];
+    BOOST_TEST(W[baseline::kWalshOfMode[al]] == want);
+  }
+  baseline::walsh8_back_t(W, back);
+  for (int a = 0; a < 8; ++a) BOOST_TEST(back[a] + W[0] == 8 * u[a]);
 }
 
 BOOST_AUTO_TEST_CASE(consistency) {
