@@ -33,10 +33,11 @@
 // defines element_range.
 //
 // Structure (LULESH): gather -> geometry (in Walsh form, fe/hex8_geometry.hpp)
-// and strain rates on fixed-size locals (vector lanes) -> material update (J2 and combined hardening / Hill'48 on
-// the lanes with masks; other models, and W = 1, one point at a time) ->
-// forces on fixed-size locals -> scatter into the corner slots (node-major in
-// the solver, so that its nodal sums read in order).
+// and strain rates on fixed-size locals (vector lanes) -> material update (J2
+// and combined hardening / Hill'48 on the lanes with masks; other models, and
+// W = 1, one point at a time) -> forces on fixed-size locals -> scatter into
+// the corner slots (node-major in the solver, so that its nodal sums read in
+// order).
 #include <algorithm>
 #include <cmath>
 #include <cstring>
