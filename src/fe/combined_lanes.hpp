@@ -92,10 +92,13 @@ inline void combined_residual(const CombinedParams& P, const T ts[6], const T an
   f = q - R;
 }
 
-/// dl of the plastic lanes: the bracket, then the Illinois secant, as update().
+/// dl of the plastic lanes: the bracket, then the Illinois secant, as update();
+/// xa and Ra: xi and R at each lane's dl (the residual's last evaluation
+/// there, kept by mask as a lane leaves the loop, so that nothing is
+/// evaluated again; update() keeps its last evaluation too).
 template <int W, class T, class M>
 inline void combined_return(const CombinedParams& P, const T ts[6], const T an[3][6], const T& ep, const T& s_ep,
-                            const T& f0, const M& plastic, T& dl) {
+                            const T& f0, const M& plastic, T& dl, T xa[6], T& Ra) {
   T xi[6], R, lo = {}, flo = f0, hi = f0 / (3.0 * P.G), fhi;
   combined_residual<W>(P, ts, an, ep, s_ep, hi, xi, R, fhi);
   M active = plastic & (fhi > 0.0);
@@ -108,7 +111,9 @@ inline void combined_return(const CombinedParams& P, const T ts[6], const T an[3
     fhi = active ? fn : fhi;
     active = active & (fhi > 0.0);
   }
-  dl = hi;
+  dl = hi;  // every lane's xi and R are at its hi: a lane out of the bracket loop kept its hi
+  for (int c = 0; c < 6; ++c) xa[c] = xi[c];
+  Ra = R;
   active = plastic & (fhi != 0.0);
   const T one = T{} + 1.0, minus_one = T{} - 1.0;
   T side = {};
@@ -118,6 +123,8 @@ inline void combined_return(const CombinedParams& P, const T ts[6], const T an[3
     T fx;
     combined_residual<W>(P, ts, an, ep, s_ep, x, xi, R, fx);
     dl = active ? x : dl;
+    for (int c = 0; c < 6; ++c) xa[c] = active ? xi[c] : xa[c];
+    Ra = active ? R : Ra;
     const T tol = 1e-13 * R;  // |fx| <= tol as two comparisons (the same for every fx, NaN included)
     const M done = (fx == 0.0) | ((fx <= tol) & (-fx <= tol)) | (hi - lo <= 1e-15 * hi);
     const M go = active & ~done;
@@ -174,9 +181,8 @@ inline void combined_update(const CombinedParams& P, const T d[6], const T w[3],
     for (int c = 0; c < 6; ++c) s[c] = tr[c];
     return;
   }
-  T dl, xi[6], Rv, f;
-  combined_return<W>(P, ts, an, st.ep, s_ep, f0, plastic, dl);
-  combined_residual<W>(P, ts, an, st.ep, s_ep, dl, xi, Rv, f);  // xi and R at the accepted dl
+  T dl, xi[6], Rv;
+  combined_return<W>(P, ts, an, st.ep, s_ep, f0, plastic, dl, xi, Rv);  // with xi and R at the accepted dl
   // Back stresses from the flow direction T M xi / R, and the stress.
   const double F = P.hill.F, G = P.hill.G, H = P.hill.H;
   const T n[6] = {((G + H) * xi[0] - H * xi[1] - G * xi[2]) / Rv,
@@ -233,17 +239,22 @@ inline void combined_tangent_ratio(const CombinedParams& P, const T s[6], const 
     sheet_transform<true>(Q, xi, l);
     for (int c = 0; c < 6; ++c) xi[c] = l[c];
   }
-  // Monotonic uniaxial tangent: the curve's slope plus each Chaboche C exp(-gamma eps_p).
+  // Monotonic uniaxial tangent: the curve's slope plus each Chaboche C exp(-gamma eps_p),
+  // only where some lane needs it (f above 0.90, or NaN): below, the ratio is 1 without H.
   T sy, H, R, q;
   curve_at<W>(P.curve, st.ep, sy, H);
+  isotropic_from_curve(P, sy, R);
+  hill_equivalent(P.hill, xi, q);
+  const T f = q / R;
+  if (!any_set(~(f <= 0.90))) {
+    ratio = T{} + 1.0;
+    return;
+  }
   for (int k = 0; k < P.nterms; ++k) {
     T e;
     lane_exp(-P.gamma[k] * st.ep, e);
     H += P.C[k] * e;
   }
-  isotropic_from_curve(P, sy, R);
-  hill_equivalent(P.hill, xi, q);
-  const T f = q / R;
   proximity_ratio(f, H, P.E, ratio);
 }
 

@@ -246,7 +246,8 @@ void CombinedPlasticity::update(const double deps[6], const Spin& spin, double s
       }
     }
   }
-  residual(dl, xi, Rv);  // xi and R at the accepted dl
+  // xi and Rv are at the accepted dl: every way out of the loops above leaves
+  // dl at the residual's last evaluation.
   // 4. Back stresses from the flow direction T M xi / R, and the stress.
   double n[6];
   {
@@ -298,9 +299,11 @@ double CombinedPlasticity::tangent_ratio(const double* sigma, const double* stat
   }
   // Monotonic uniaxial tangent: the curve's slope for the split form; the
   // isotropic slope plus each back stress's C exp(-gamma eps_p) for Chaboche.
+  const double f = equivalent(xi) / isotropic_stress(ep);
+  if (f <= 0.90) return 1.0;  // yield_proximity_ratio's value without the tangent
   double H = curve_.slope(ep);
   for (const auto& t : kin_.chaboche) H += t.C * std::exp(-t.gamma * ep);
-  return yield_proximity_ratio(equivalent(xi) / isotropic_stress(ep), H / (el_.E + H));
+  return yield_proximity_ratio(f, H / (el_.E + H));
 }
 
 std::string CombinedPlasticity::describe() const {
