@@ -66,8 +66,9 @@ inline void isotropic_from_curve(const CombinedParams& P, const T& s, T& R) {
   R = P.beta > 0 ? P.s0 + (1.0 - P.beta) * (s - P.s0) : s;
 }
 
-/// The residual lambda of update(): f = sigma_bar(xi(dl)) - R(ep + dl), with
-/// xi and R; ts: the trial stress, an: the back stresses (sheet axes).
+/// The residual lambda of update(): f = (sigma_bar(xi(dl)) - R(ep + dl)) (1 +
+/// kappa (F + G + H)), with xi and R; ts: the trial stress, an: the back
+/// stresses (sheet axes).
 template <int W, class T>
 inline void combined_residual(const CombinedParams& P, const T ts[6], const T an[3][6], const T& ep, const T& s_ep,
                               const T& dl, T xi[6], T& R, T& f) {
@@ -89,7 +90,8 @@ inline void combined_residual(const CombinedParams& P, const T ts[6], const T an
   hill_solve_relative(P.hill, kappa, xstar, xi);
   T q;
   hill_equivalent(P.hill, xi, q);
-  f = q - R;
+  const double c_lin = P.hill.F + P.hill.G + P.hill.H;  // update() says why
+  f = (q - R) * (1.0 + kappa * c_lin);
 }
 
 /// dl of the plastic lanes: the bracket, then the Illinois secant, as update();
