@@ -252,9 +252,13 @@ inline void combined_tangent_ratio(const CombinedParams& P, const T s[6], const 
     ratio = T{} + 1.0;
     return;
   }
+  // The exponentials lane by lane, and only in the lanes that use them:
+  // proximity_ratio selects 1 where f <= 0.90 whatever H is.
   for (int k = 0; k < P.nterms; ++k) {
-    T e;
-    lane_exp(-P.gamma[k] * st.ep, e);
+    const T v = -P.gamma[k] * st.ep;
+    T e = {};
+    for (int l = 0; l < W; ++l)
+      if (!(lane(f, l) <= 0.90)) set_lane(e, l, std::exp(lane(v, l)));
     H += P.C[k] * e;
   }
   proximity_ratio(f, H, P.E, ratio);
