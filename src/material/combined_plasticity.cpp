@@ -200,7 +200,9 @@ void CombinedPlasticity::update(const double deps[6], const Spin& spin, double s
   // 3. Plastic: the scalar consistency condition in dl, bracketed and solved.
   const double s_ep = curve_.stress(ep);
   // The residual is sigma_bar(xi) - R times 1 + kappa (F + G + H), positive
-  // for kappa >= 0, so the root stays.  For von Mises, where T M is 3/2 on
+  // for kappa >= 0 (F + G + H is half the trace of T M, whose two non-zero
+  // eigenvalues are positive for every Hill'48 that validate() accepts), so
+  // the root stays.  For von Mises, where T M is 3/2 on
   // the deviators, the product is q* - R - 3 G dl - (kinematic hardening):
   // linear in dl on a curve segment of the isotropic and split forms, where
   // the plain residual q* / (1 + 3 kappa / 2) - R is not, so the secant lands
