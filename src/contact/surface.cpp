@@ -56,12 +56,15 @@ bool penetration(const Surface& s, const Vec3& offset, const Vec3& x, double sea
       if (rr == 0.0) return false;
       const Vec3 er = {radial[0] / rr, radial[1] / rr, radial[2] / rr};
       const double dr = rr - s.R;  // in the meridional plane: (dr, za) from the tube centre
+      // Far outside the tube: dist >= |dr| and >= |za| (hypot rounds faithfully), so
+      // then g = dist - r > search too; the same answer without hypot and atan2.
+      if (std::abs(dr) - s.r > search || std::abs(za) - s.r > search) return false;
       const double dist = std::hypot(dr, za);
       if (dist == 0.0) return false;
+      const double g = dist - s.r;
+      if (g > search || g < -search) return false;  // before the angle: the answer does not depend on the order
       const double angle = std::atan2(za, dr);
       if (angle < s.a_min || angle > s.a_max) return false;
-      const double g = dist - s.r;
-      if (g > search || g < -search) return false;
       depth = -g;
       const double c = dr / dist, sn = za / dist;
       n = {c * er[0] + sn * s.axis[0], c * er[1] + sn * s.axis[1], c * er[2] + sn * s.axis[2]};
