@@ -242,18 +242,13 @@ inline void combined_tangent_ratio(const CombinedParams& P, const T s[6], const 
     for (int c = 0; c < 6; ++c) xi[c] = l[c];
   }
   // Monotonic uniaxial tangent: the curve's slope plus each Chaboche C exp(-gamma eps_p),
-  // only where some lane needs it (f above 0.90, or NaN): below, the ratio is 1 without H.
+  // the exponentials lane by lane and only in the lanes that use them (f above
+  // 0.90, or NaN): proximity_ratio selects 1 where f <= 0.90 whatever H is.
   T sy, H, R, q;
   curve_at<W>(P.curve, st.ep, sy, H);
   isotropic_from_curve(P, sy, R);
   hill_equivalent(P.hill, xi, q);
   const T f = q / R;
-  if (!any_set(~(f <= 0.90))) {
-    ratio = T{} + 1.0;
-    return;
-  }
-  // The exponentials lane by lane, and only in the lanes that use them:
-  // proximity_ratio selects 1 where f <= 0.90 whatever H is.
   for (int k = 0; k < P.nterms; ++k) {
     const T v = -P.gamma[k] * st.ep;
     T e = {};

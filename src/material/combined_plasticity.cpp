@@ -202,8 +202,8 @@ void CombinedPlasticity::update(const double deps[6], const Spin& spin, double s
   // The residual is sigma_bar(xi) - R times 1 + kappa (F + G + H), positive
   // for kappa >= 0 (F + G + H is half the trace of T M, whose two non-zero
   // eigenvalues are positive for every Hill'48 that validate() accepts), so
-  // the root stays.  For von Mises, where T M is 3/2 on
-  // the deviators, the product is q* - R - 3 G dl - (kinematic hardening):
+  // the root stays.  For von Mises, where T M is 3/2 on the deviators, the
+  // product is q* - R - 3 G dl - (kinematic hardening):
   // linear in dl on a curve segment of the isotropic and split forms, where
   // the plain residual q* / (1 + 3 kappa / 2) - R is not, so the secant lands
   // on the root at its first step (2 evaluations instead of 6 in make bench's

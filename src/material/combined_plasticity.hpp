@@ -32,9 +32,9 @@
 // found by a bracketed, safeguarded secant (Illinois) iteration to round-off
 // (no step-size restriction), on the residual times 1 + kappa (F + G + H):
 // the same root, and for von Mises a residual linear in dl on a curve segment
-// (isotropic and split forms), so that the secant's first step lands on it.  For the split form the secant dS makes the
-// monotonic uniaxial back stress telescope to beta (sigma(eps_p) - sigma_0)
-// exactly.  Hill'48 is evaluated in the sheet axes carried in the state.
+// (isotropic and split forms), so that the secant's first step lands on it.
+// For the split form the secant dS makes the monotonic uniaxial back stress
+// telescope to beta (sigma(eps_p) - sigma_0) exactly.  Hill'48 is evaluated in the sheet axes carried in the state.
 //
 // Objectivity (material/objectivity.hpp): update() rotates every back stress
 // and the sheet axes with the point's spin before the return mapping, the same
