@@ -89,6 +89,7 @@ sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Conf
   lc.min_gain = cfg.min_gain;
   lc.run_root = c.out("runs");
   lc.reuse = cfg.reuse_runs != 0;
+  lc.runs_from = cfg.run_folders();
   const auto pts = reference_points(in);
   const sim::ModelLoopResult r = sim::run_model_loop(in.base, pts, cands, lc);
 
@@ -174,7 +175,7 @@ void tension_slope(Chapter& c, const Inputs& in, const Config& cfg, const sim::M
   for (double f : fx) specs.push_back(sim::spec_for_point(in.base, {cfg.fit_pin, f, 0, ""}));
   if (final_too)
     for (double f : fx) specs.push_back(sim::spec_for_point(loop.final_spec, {cfg.fit_pin, f, 0, ""}));
-  const auto runs = sim::run_cached(specs, c.out("runs"), cfg.reuse_runs != 0);
+  const auto runs = sim::run_cached(specs, c.out("runs"), cfg.reuse_runs != 0, nullptr, cfg.run_folders());
   const std::size_t n = fx.size();
   auto tab = c.table({"F_back_N", "measured_N", "isotropic_N", "isotropic_u_N", "final_N", "final_u_N"},
                      "F_B against back tension on the " + fmt(cfg.fit_pin) + " mm pin (full strip, N): Table 5.3's fit, "

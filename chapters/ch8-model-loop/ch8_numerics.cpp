@@ -49,7 +49,7 @@ void numerical_convergence(Chapter& c, const Inputs& in, const Config& cfg) {
       across_pin.push_back(k);
     }
   }
-  const auto runs = sim::run_cached(specs, c.out("runs"), cfg.reuse_runs != 0);
+  const auto runs = sim::run_cached(specs, c.out("runs"), cfg.reuse_runs != 0, nullptr, cfg.run_folders());
 
   const double tol = 0.03;  // see the top of this file
   auto t1 = c.table({"pin_mm", "mass_scaling", "F_B_N", "change_vs_finest_pct", "err_vs_measured_pct", "KE_IE",

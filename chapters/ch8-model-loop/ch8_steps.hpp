@@ -18,6 +18,20 @@ using drawbend::study::Chapter;
 struct Config {
   drawbend::sim::DrawBendSpec base;  ///< quick-tier mesh from sim/fe_options (mass scaling at 100 mm/s)
   bool run_fe = true, reuse_runs = false;
+  /// Comma-separated folders of runs made before this chapter (Chapter 5's
+  /// runs/ in the build: its baselines are this chapter's); a case whose deck
+  /// is one of theirs but for the name is read there, not rerun.
+  std::string runs_from;
+  std::vector<std::string> run_folders() const {
+    std::vector<std::string> out;
+    std::size_t a = 0;
+    for (std::size_t b; a <= runs_from.size(); a = b + 1) {
+      b = runs_from.find(',', a);
+      if (b == std::string::npos) b = runs_from.size();
+      if (b > a) out.push_back(runs_from.substr(a, b - a));
+    }
+    return out;
+  }
   bool full_study = false;  ///< the full tier's candidates, slopes and numerical studies
   double fit_pin = 12.7;    ///< the training pin [mm]
   double min_gain = 0.03;   ///< required fall of the held-out RMS relative error

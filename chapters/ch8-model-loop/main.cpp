@@ -28,6 +28,9 @@ int main(int argc, char** argv) {
   ch8::Config cfg;  // the chapter's options
   auto& o = ch.options();
   drawbend::sim::add_fe_options(o, cfg.base, cfg.run_fe, cfg.reuse_runs);
+  o.add(cfg.runs_from, "runs-from",
+        "comma-separated folders of runs made before by the same build (CMake passes Chapter 5's runs/ and runs it "
+        "first); a case whose deck is one of theirs but for its name is read there, not rerun");
   o.add(cfg.full_study, "full-study",
         "true: the full tier's candidates (back stress, Voce, Hill'48), the slope of the final model, mass scaling and "
         "width convergence; false: the quick tier");

@@ -70,7 +70,8 @@ void run_cases(std::size_t n, const std::function<void(std::size_t)>& f, const s
     if (e) std::rethrow_exception(e);
 }
 
-std::vector<DrawBendResult> run_drawbend_all(const std::vector<CaseJob>& jobs, bool reuse) {
+std::vector<DrawBendResult> run_drawbend_all(const std::vector<CaseJob>& jobs, bool reuse,
+                                             const std::vector<std::string>& runs_from) {
   std::vector<DrawBendResult> out(jobs.size());
   std::vector<double> cost;  // ~ elements x cycles ~ (wrap / h) x across x through x (slide / speed) / sqrt(ms)
   for (const auto& j : jobs) {
@@ -91,14 +92,18 @@ std::vector<DrawBendResult> run_drawbend_all(const std::vector<CaseJob>& jobs, b
       std::lock_guard<std::mutex> lock(io);
       std::cout << "  FE: " << jobs[i].spec.name << " (pin " << jobs[i].spec.pin_diameter << " mm) started\n" << std::flush;
     }
-    out[i] = run_drawbend(jobs[i].spec, jobs[i].dir, reuse);
+    out[i] = run_drawbend(jobs[i].spec, jobs[i].dir, reuse, true, runs_from);
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::lock_guard<std::mutex> lock(io);
     ++n_done;
     cost_done += cost[i];
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << "  FE: " << jobs[i].spec.name << " (pin " << jobs[i].spec.pin_diameter << " mm) done in " << static_cast<int>(s + 0.5) << " s (" << n_done << "/"
-              << jobs.size() << " cases";
+    std::cout << "  FE: " << jobs[i].spec.name << " (pin " << jobs[i].spec.pin_diameter << " mm) ";
+    if (out[i].dir != jobs[i].dir)
+      std::cout << "read from " << out[i].dir << ", the same deck run before";
+    else
+      std::cout << "done in " << static_cast<int>(s + 0.5) << " s";
+    std::cout << " (" << n_done << "/" << jobs.size() << " cases";
     if (n_done < jobs.size() && cost_done > 0)
       std::cout << ", about " << static_cast<int>(elapsed * (cost_all - cost_done) / cost_done + 0.5) << " s left";
     std::cout << ")\n" << std::flush;

@@ -38,7 +38,9 @@ struct CaseJob {
 };
 
 /// run_drawbend for every job, concurrently; a line on stdout as each case
-/// starts and ends (with its wall time).  Results in job order.
-std::vector<DrawBendResult> run_drawbend_all(const std::vector<CaseJob>& jobs, bool reuse);
+/// starts and ends (with its wall time, or the run it was read from when
+/// run_drawbend found it under `runs_from`).  Results in job order.
+std::vector<DrawBendResult> run_drawbend_all(const std::vector<CaseJob>& jobs, bool reuse,
+                                             const std::vector<std::string>& runs_from = {});
 
 }  // namespace drawbend::sim

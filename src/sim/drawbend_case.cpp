@@ -280,15 +280,55 @@ double DrawBendResult::mean_pressure() const {
   return a > 0 ? f / a : 0.0;
 }
 
-DrawBendResult run_drawbend(const DrawBendSpec& s, const std::string& dir, bool reuse, bool quiet) {
+namespace {
+
+/// The case name of a deck our builder wrote: the quoted value of the first
+/// `name = "..."` line after `[case]`; "" if there is none.
+std::string case_name(const std::string& text) {
+  const std::string head = "\n[case]\nname = \"";
+  const std::size_t a = text.find(head);
+  if (a == std::string::npos) return "";
+  const std::size_t b = a + head.size(), e = text.find('"', b);
+  return e == std::string::npos ? "" : text.substr(b, e - b);
+}
+
+}  // namespace
+
+std::string find_same_run(const DrawBendSpec& s, const std::vector<std::string>& roots) {
+  for (const auto& root : roots) {
+    std::error_code ec;
+    std::vector<fs::path> dirs;
+    for (fs::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec))
+      if (it->is_directory(ec)) dirs.push_back(it->path());
+    std::sort(dirs.begin(), dirs.end());  // the first by name, whatever order the file system lists
+    for (const auto& d : dirs) {
+      if (!fs::exists(d / "summary.csv", ec) || !fs::exists(d / "deck.toml", ec)) continue;
+      const std::string other = read_file((d / "deck.toml").string());
+      DrawBendSpec t = s;
+      t.name = case_name(other);
+      if (!t.name.empty() && deck_text(t) == other) return d.string();
+    }
+  }
+  return "";
+}
+
+DrawBendResult run_drawbend(const DrawBendSpec& s, const std::string& dir, bool reuse, bool quiet,
+                            const std::vector<std::string>& runs_from) {
   const std::string text = deck_text(s);
-  fs::create_directories(dir);
   const fs::path deck_path = fs::path(dir) / "deck.toml";
   DrawBendResult r;
   r.spec = s;
   r.dir = dir;
   const bool cached = reuse && fs::exists(deck_path) && read_file(deck_path.string()) == text &&
                       fs::exists(fs::path(dir) / "summary.csv");
+  if (!cached && !runs_from.empty()) {
+    if (std::string same = find_same_run(s, runs_from); !same.empty()) {
+      r.dir = same;
+      reduce(r);
+      return r;
+    }
+  }
+  fs::create_directories(dir);
   if (!cached) {
     fs::remove(fs::path(dir) / "summary.csv");
     write_file_atomic(deck_path.string(), text);

@@ -102,9 +102,22 @@ struct DrawBendResult {
   double steady_strain_slide(double band, double fraction) const;
 };
 
+/// A finished run of the same case under one of `roots` (each a folder of run
+/// directories, such as another chapter's runs/): a directory whose deck.toml
+/// is, byte for byte, the deck of `s` under that directory's own case name,
+/// with a summary (written last, so the run completed).  The first such
+/// directory by root, then by name; "" if none.  Unreadable roots are skipped.
+std::string find_same_run(const DrawBendSpec& s, const std::vector<std::string>& roots);
+
 /// Write the deck to `dir`/deck.toml, run it (one line of progress per step
 /// unless quiet) and reduce it.  With `reuse`, a run whose directory already
 /// holds the identical deck and a complete summary is read, not rerun.
-DrawBendResult run_drawbend(const DrawBendSpec& s, const std::string& dir, bool reuse = false, bool quiet = true);
+/// Otherwise, if find_same_run(s, runs_from) finds the case already run
+/// elsewhere (a chapter that ran before this one in the same build: NEEDS in
+/// chapters/CMakeLists.txt), that run is read in place (the result's dir is
+/// its directory) and nothing is written to `dir`: every case is
+/// deterministic, so a second run would give the same bits.
+DrawBendResult run_drawbend(const DrawBendSpec& s, const std::string& dir, bool reuse = false, bool quiet = true,
+                            const std::vector<std::string>& runs_from = {});
 
 }  // namespace drawbend::sim

@@ -52,7 +52,7 @@ std::vector<FbPoint> read_fb_points(const std::string& csv_path) {
 }
 
 std::vector<DrawBendResult> run_cached(std::vector<DrawBendSpec> specs, const std::string& run_root, bool reuse,
-                                       double* wall_s) {
+                                       double* wall_s, const std::vector<std::string>& runs_from) {
   std::vector<CaseJob> jobs;
   std::vector<std::size_t> job_of;
   std::map<std::string, std::size_t> index;
@@ -66,7 +66,7 @@ std::vector<DrawBendResult> run_cached(std::vector<DrawBendSpec> specs, const st
     }
     job_of.push_back(it->second);
   }
-  const auto res = run_drawbend_all(jobs, reuse);
+  const auto res = run_drawbend_all(jobs, reuse, runs_from);
   if (wall_s)
     for (const auto& r : res) *wall_s += r.wall_seconds;
   std::vector<DrawBendResult> out;
@@ -108,7 +108,7 @@ class Runner {
       std::cout << "model loop: " << todo.size() << " FE case(s) to run or read (" << done_.size()
                 << " done so far)\n"
                 << std::flush;
-      const auto res = run_cached(todo, cfg_.run_root, cfg_.reuse, &wall_);
+      const auto res = run_cached(todo, cfg_.run_root, cfg_.reuse, &wall_, cfg_.runs_from);
       for (const auto& r : res) done_[deck_text(r.spec)] = {2.0 * r.tension_rise(), 2.0 * r.F_out_std, r.dir};
     }
     std::vector<PointResult> out;

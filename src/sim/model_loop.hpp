@@ -79,6 +79,9 @@ struct ModelLoopConfig {
   double min_gain = 0.03;  ///< required fall of the held-out RMS relative error
   std::string run_root;    ///< where run directories go
   bool reuse = true;
+  /// Folders of runs made before (another chapter's runs/): a case whose deck
+  /// is one of theirs but for the name is read there (sim::find_same_run).
+  std::vector<std::string> runs_from;
 };
 
 struct ModelLoopResult {
@@ -93,7 +96,7 @@ struct ModelLoopResult {
 /// text> (the spec's name is set to "fb"); identical decks run once.  Results
 /// in spec order.  `wall_s`, if given, gets the sum of the new runs' wall times.
 std::vector<DrawBendResult> run_cached(std::vector<DrawBendSpec> specs, const std::string& run_root, bool reuse,
-                                       double* wall_s = nullptr);
+                                       double* wall_s = nullptr, const std::vector<std::string>& runs_from = {});
 
 /// The spec for one point: `base` at the point's pin with half the back tension.
 DrawBendSpec spec_for_point(const DrawBendSpec& base, const FbPoint& p);

@@ -7,6 +7,13 @@
 //  - Cases 2 and 5 throw: the other cases still run (6 of 8 done), and the
 //    exception rethrown is case 2's (the first by case order).
 //  - Each case sees max(1, hardware threads / workers) OpenMP threads.
+//  - A case run before under another name (sim::find_same_run): in a folder
+//    holding runs "a" and "b" with the deck of spec s under the names
+//    "ch5_base" and "other", and a summary each (s: the quick draw-bend deck,
+//    sim::quick_deck_spec), s under the name "fb" is
+//    found in "a" (the first by name); with the back tension 1 N higher,
+//    nowhere (""); with "a"'s summary gone, in "b"; with a byte then added to
+//    "b"'s deck, nowhere; a folder that does not exist is skipped.
 #define BOOST_TEST_MODULE case_pool
 #include <boost/test/unit_test.hpp>
 
@@ -22,6 +29,11 @@
 #endif
 
 #include "sim/case_pool.hpp"
+#include "sim/fe_options.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
 
 using drawbend::sim::run_cases;
 
@@ -72,3 +84,36 @@ BOOST_AUTO_TEST_CASE(threads_per_case) {
   for (int t : seen) BOOST_TEST(t == std::max(1, hw / 2));
 }
 #endif
+
+BOOST_AUTO_TEST_CASE(same_run_found_under_another_name) {
+  namespace fs = std::filesystem;
+  using drawbend::sim::DrawBendSpec;
+  using drawbend::sim::deck_text;
+  using drawbend::sim::find_same_run;
+  const fs::path root = fs::temp_directory_path() / ("drawbend_same_run_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  auto write = [](const fs::path& f, const std::string& text) {
+    fs::create_directories(f.parent_path());
+    std::ofstream(f) << text;
+  };
+  DrawBendSpec s = drawbend::sim::quick_deck_spec();  // the quick draw-bend deck (sim/fe_options.hpp)
+  DrawBendSpec a = s, b = s;
+  a.name = "ch5_base";
+  b.name = "other";
+  write(root / "a" / "deck.toml", deck_text(a));
+  write(root / "a" / "summary.csv", "quantity,value,unit\n");
+  write(root / "b" / "deck.toml", deck_text(b));
+  write(root / "b" / "summary.csv", "quantity,value,unit\n");
+  s.name = "fb";
+  const std::vector<std::string> roots = {(root / "missing").string(), root.string()};
+  BOOST_TEST(find_same_run(s, roots) == (root / "a").string());
+  DrawBendSpec t = s;
+  t.back_tension += 1.0;
+  BOOST_TEST(find_same_run(t, roots) == "");
+  fs::remove(root / "a" / "summary.csv");
+  BOOST_TEST(find_same_run(s, roots) == (root / "b").string());
+  write(root / "b" / "deck.toml", deck_text(b) + "#");
+  BOOST_TEST(find_same_run(s, roots) == "");
+  BOOST_TEST(find_same_run(s, {}) == "");
+  fs::remove_all(root);
+}
