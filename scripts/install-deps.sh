@@ -3,8 +3,9 @@
 # Idempotent and non-interactive; safe to run on every `make`.
 # Usage: install-deps.sh [--bench]   (--bench: also what `make bench` uses)
 set -euo pipefail
-# clang and libclang-rt-dev: libFuzzer for the parser fuzzers (tests/fuzz).
-PKGS=(cmake g++ make libeigen3-dev libboost-test-dev libtomlplusplus-dev gnuplot-nox pandoc clang libclang-rt-dev)
+# clang and libclang-rt-dev: libFuzzer for the parser fuzzers (tests/fuzz); with
+# libomp-dev (OpenMP for clang) also the sanitizer build (tests/sanitize/run.sh).
+PKGS=(cmake g++ make libeigen3-dev libboost-test-dev libtomlplusplus-dev gnuplot-nox pandoc clang libclang-rt-dev libomp-dev)
 # --bench (`make bench`): calculix-ccx, CalculiX's solver (Debian 2.20-1 on
 # bookworm), an independent peer that the bench times on the same bar as ours
 # (bench/bench_calculix.cpp).  Only there: it pulls in OpenMPI and SPOOLES,

@@ -70,9 +70,11 @@ std::vector<std::string> Errata::unused(const std::vector<std::string>& ids) con
   std::vector<std::string> out;
   for (const auto& [id, ex] : exact_)
     if (std::find(ids.begin(), ids.end(), id) == ids.end()) out.push_back(id);
-  for (const auto& [p, ex] : prefix_)
+  for (const auto& entry : prefix_) {
+    const std::string& p = entry.first;  // not a structured binding: clang 14 cannot capture one in a lambda
     if (std::none_of(ids.begin(), ids.end(), [&](const std::string& i) { return i.rfind(p, 0) == 0; }))
       out.push_back(p + "*");
+  }
   return out;
 }
 

@@ -368,7 +368,9 @@ BOOST_AUTO_TEST_CASE(j2_on_lanes_every_branch_gives_the_scalar_bits) {
 
 BOOST_AUTO_TEST_CASE(combined_on_lanes_every_branch_and_reversal_give_the_scalar_bits) {
   const int ne = 37;
-  for (const auto& [name, m] : combined_models()) {
+  for (const auto& named : combined_models()) {
+    const auto& name = named.first;
+    const auto& m = named.second;  // not a structured binding: clang 14 cannot capture one in a lambda
     BOOST_TEST_CONTEXT(name) {
       std::vector<double> fresh;
       const auto one = run_reversal(&baseline::element_range, 1, *m, &fresh);
