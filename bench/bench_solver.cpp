@@ -18,7 +18,8 @@
 // Then, if CalculiX's ccx is on PATH, the same bar in its explicit solver on
 // the same simulated window, as a ratio (bench_calculix.cpp; optional).
 // `--bar-material NAME` times only the 1,600-element bar on one thread with
-// another material (the lane versions of the material models are compared on it).
+// another material (the lane versions of the material models are compared on it);
+// `--case NAME` times only that case, on 1 and 2 threads, with its phases.
 #include <omp.h>
 
 #include <algorithm>
@@ -44,7 +45,7 @@ constexpr int kRepeats = 3;  // runs per timing, the shortest kept
 
 int main(int argc, char** argv) {
   // 1. Options (--help lists them; an unknown option is an error, exit 2).
-  std::string out = "build/bench/results.csv", bar_mat;
+  std::string out = "build/bench/results.csv", bar_mat, only;
   bool quick = false, friction_only = false, material_only = false, solver_only = false, calculix_only = false;
   Options opt("bench_solver", "make bench: the explicit solver's cost per element-cycle (ns), the material updates, "
                               "the friction laws and the quick draw-bend deck on 1 and 2 threads");
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
   opt.add_flag(material_only, "materials", "only the material updates");
   opt.add_flag(solver_only, "solver", "only the element-cycle costs (and the deck unless --quick)");
   opt.add_flag(calculix_only, "calculix", "only CalculiX (ccx) and ours on the same bar, if ccx is installed");
+  opt.add(only, "case", "only this case of the element-cycle costs: bar_1600, bar_8000, drawbend_4800 or bar_64000");
   opt.add(bar_mat, "bar-material",
           "only the 1,600-element bar on 1 thread with this material: j2, split, chaboche, hill48 or hill48_chaboche");
   try {
@@ -75,7 +77,14 @@ int main(int argc, char** argv) {
     fe::Model model;
   };
   std::vector<Case> cases = {{"bar_1600", bar(40, 8, 5)}, {"bar_8000", bar(100, 16, 5)}, {"drawbend_4800", strip_on_pin()}};
-  if (!quick) cases.push_back({"bar_64000", bar(200, 40, 8)});
+  if (!quick || only == "bar_64000") cases.push_back({"bar_64000", bar(200, 40, 8)});
+  if (!only.empty()) {
+    std::erase_if(cases, [&](const Case& c) { return c.name != only; });
+    if (cases.empty()) {
+      std::cerr << "bench_solver: --case '" << only << "' is not bar_1600, bar_8000, drawbend_4800 or bar_64000\n";
+      return 2;
+    }
+  }
   if (!bar_mat.empty()) {
     auto m = bar_material(bar_mat);
     if (!m) {
@@ -124,7 +133,7 @@ int main(int argc, char** argv) {
     results.push_back(r);
   }
   bool deck_ok = true;
-  if (!bar_mat.empty()) {
+  if (!bar_mat.empty() || !only.empty()) {
     w.save(out);
     std::cout << "written " << out << "\n";
     return 0;
