@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/bending_work.hpp"
+#include "core/csv.hpp"
 #include "sim/drawbend_case.hpp"
 #include "sim/model_loop.hpp"
 #include "study/chapter.hpp"
@@ -24,12 +25,8 @@ struct Config {
   std::string runs_from;
   std::vector<std::string> run_folders() const {
     std::vector<std::string> out;
-    std::size_t a = 0;
-    for (std::size_t b; a <= runs_from.size(); a = b + 1) {
-      b = runs_from.find(',', a);
-      if (b == std::string::npos) b = runs_from.size();
-      if (b > a) out.push_back(runs_from.substr(a, b - a));
-    }
+    for (auto& f : drawbend::split_csv_line(runs_from))
+      if (!f.empty()) out.push_back(std::move(f));
     return out;
   }
   bool full_study = false;  ///< the full tier's candidates, slopes and numerical studies

@@ -176,6 +176,14 @@ __attribute__((noinline)) void scatter_forces(const ElementView& ev, int e0, con
   }
 }
 
+/// A prefetch hint (RW: 1 for a line to be written) for base[i], in integer
+/// arithmetic: a pointer past an array's end, or from a null view in the
+/// tests, is never formed.
+template <int RW, class P>
+__attribute__((always_inline)) inline void hint(const P* base, std::size_t i) {
+  __builtin_prefetch(reinterpret_cast<const void*>(reinterpret_cast<std::uintptr_t>(base) + sizeof(P) * i), RW, 3);
+}
+
 /// Prefetch hints for the block after this one (elements e0+W .. e0+2W-1)
 /// and the node rows two blocks on, where the nodes run on with the lanes
 /// (nodes_run_on: corner a of element e0 + l is node hex[e0][a] + l).  Only
@@ -190,13 +198,6 @@ __attribute__((noinline)) void scatter_forces(const ElementView& ev, int e0, con
 /// L2 cache).  Hints for the next block's corner slots as well (eight
 /// scattered lines) changed nothing measurable, so there are none.  Hints
 /// change no result: they load nothing into a register.
-/// A hint for the line at `base` + `count` doubles, in integer arithmetic (a
-/// pointer past an array's end, or from a null view in the tests, is never formed).
-template <int RW>
-__attribute__((always_inline)) inline void hint(const void* base, std::size_t count) {
-  __builtin_prefetch(reinterpret_cast<const void*>(reinterpret_cast<std::uintptr_t>(base) + 8 * count), RW, 3);
-}
-
 template <int W>
 __attribute__((always_inline)) inline void prefetch_next(const ElementView& ev, int e0) {
   constexpr int kLine = 8;  // doubles per 64-byte line
@@ -209,7 +210,7 @@ __attribute__((always_inline)) inline void prefetch_next(const ElementView& ev, 
   hint<1>(ev.hg_inc, n1 + W);
   hint<1>(ev.dt_elem, n1 + W);
   hint<0>(ev.sqrt_mass_factor, n1 + W);
-  hint<0>(ev.hex, 4 * (n1 + W));  // 4 doubles' bytes per row of 8 ints
+  hint<0>(ev.hex, n1 + W);
   for (int a = 0; a < 8; a += 2) {
     const std::size_t n = static_cast<std::size_t>(ev.hex[e0][a]) + 2 * W;
     hint<0>(ev.nodes.x, n);

@@ -82,7 +82,7 @@ std::vector<DrawBendResult> run_drawbend_all(const std::vector<CaseJob>& jobs, b
   std::mutex io;
   // Progress: cases done of all, and the time left, estimated from the wall
   // time so far and the share of the estimated cost still to run.
-  const double cost_all = std::accumulate(cost.begin(), cost.end(), 0.0);
+  double cost_all = std::accumulate(cost.begin(), cost.end(), 0.0);
   double cost_done = 0;
   std::size_t n_done = 0;
   const auto start = std::chrono::steady_clock::now();
@@ -96,7 +96,10 @@ std::vector<DrawBendResult> run_drawbend_all(const std::vector<CaseJob>& jobs, b
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::lock_guard<std::mutex> lock(io);
     ++n_done;
-    cost_done += cost[i];
+    if (out[i].dir != jobs[i].dir)
+      cost_all -= cost[i];  // read, not run: no part of the time the rest will take
+    else
+      cost_done += cost[i];
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << "  FE: " << jobs[i].spec.name << " (pin " << jobs[i].spec.pin_diameter << " mm) ";
     if (out[i].dir != jobs[i].dir)

@@ -113,8 +113,8 @@ std::string find_same_run(const DrawBendSpec& s, const std::vector<std::string>&
 /// unless quiet) and reduce it.  With `reuse`, a run whose directory already
 /// holds the identical deck and a complete summary is read, not rerun.
 /// Otherwise, if find_same_run(s, runs_from) finds the case already run
-/// elsewhere (a chapter that ran before this one in the same build: NEEDS in
-/// chapters/CMakeLists.txt), that run is read in place (the result's dir is
+/// elsewhere (a chapter that ran before this one in the same build: RUNS_FROM
+/// in chapters/CMakeLists.txt), that run is read in place (the result's dir is
 /// its directory) and nothing is written to `dir`: every case is
 /// deterministic, so a second run would give the same bits.
 DrawBendResult run_drawbend(const DrawBendSpec& s, const std::string& dir, bool reuse = false, bool quiet = true,

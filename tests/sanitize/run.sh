@@ -9,8 +9,8 @@
 # Any sanitizer report fails the run (-fno-sanitize-recover=all, ASan aborts;
 # halt_on_error for the one check that recovers, float-cast-overflow, so that
 # ubsan.supp can name a library's known case).
-# The compiler: clang++ if installed (it builds this in about 60 % of g++'s
-# time, CMakeLists.txt), else the default; DRAWBEND_SANITIZE_CXX overrides.
+# The compiler: clang++ if installed (this script took about 65 % of g++'s
+# time and CPU with it, CMakeLists.txt), else the default; DRAWBEND_SANITIZE_CXX overrides.
 # Usage: run.sh SOURCE_DIR BUILD_DIR
 set -euo pipefail
 src=$1 bld=$2
