@@ -13,24 +13,26 @@
 
 using namespace drawbend;
 
-PhaseSplit bench_phases(const std::string& name, const fe::Model& m, long cycles, CsvWriter& w) {
-  omp_set_num_threads(1);
+PhaseSplit bench_phases(const std::string& name, const fe::Model& m, long cycles, CsvWriter& w, int threads) {
+  omp_set_num_threads(threads);
   fe::PhaseTimes t;
   seconds(m, cycles, &t);
   const double per = 1e9 / (static_cast<double>(t.cycles) * m.mesh.num_elements());
   PhaseSplit s;
-  s.material = static_cast<double>(t.material_ticks) * fe::seconds_per_tick() * per;
+  if (threads == 1) s.material = static_cast<double>(t.material_ticks) * fe::seconds_per_tick() * per;
   s.kernel = t.kernel * per - s.material;
   s.nodes = t.nodes * per;
   s.contact = t.contact * per;
   s.other = t.other * per;
   s.total = s.kernel + s.material + s.nodes + s.contact + s.other;
-  std::cout << name << ": per phase, 1 thread, ns per element-cycle: element kernel " << fmt(s.kernel, 3)
-            << " + material " << fmt(s.material, 3) << " + node passes " << fmt(s.nodes, 3) << " + contact "
-            << fmt(s.contact, 3) << " + other " << fmt(s.other, 2) << " = " << fmt(s.total, 4) << "\n";
+  std::cout << name << ": per phase, " << threads << (threads == 1 ? " thread" : " threads")
+            << ", ns per element-cycle: element kernel " << fmt(s.kernel, 3)
+            << (threads == 1 ? " + material " + fmt(s.material, 3) : std::string(" (with material)"))
+            << " + node passes " << fmt(s.nodes, 3) << " + contact " << fmt(s.contact, 3) << " + other "
+            << fmt(s.other, 2) << " = " << fmt(s.total, 4) << "\n";
   const std::string ne = std::to_string(m.mesh.num_elements());
   for (const auto& [phase, ns] : {std::pair<const char*, double>{"kernel", s.kernel}, {"material", s.material},
                                   {"nodes", s.nodes}, {"contact", s.contact}, {"other", s.other}})
-    w.row({name + "." + phase, ne, "1", fmt(ns, 4)});
+    if (threads == 1 || std::string(phase) != "material") w.row({name + "." + phase, ne, std::to_string(threads), fmt(ns, 4)});
   return s;
 }

@@ -2,7 +2,8 @@
 // files (issue 17), as loop_cmd.cpp runs it: parse_measured, the map library
 // (the analytic stand-in for the data's pins), make_design, run_loop (19
 // permutations, to stay fast) and write_loop_outputs (tables, summary and
-// loop.md; no figures, so no gnuplot).  Any input must end normally or with an
+// loop.md; no figures, so no gnuplot) into $TMPDIR/fuzz_loop_PID (run.sh sets
+// TMPDIR to the fuzz build's tmp/).  Any input must end normally or with an
 // exception, which `drawbend loop` turns into exit 2 or 3; a crash, a
 // sanitizer report or a hang (-timeout) is a failure.
 #include <unistd.h>

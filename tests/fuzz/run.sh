@@ -13,6 +13,9 @@ if ! command -v clang++ >/dev/null; then
 fi
 cmake -S "$src/tests/fuzz" -B "$bld" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug >/dev/null
 cmake --build "$bld" -j "$(nproc 2>/dev/null || echo 2)" >/dev/null
+# fuzz_loop writes its outputs under the temporary folder: keep them in the
+# build folder, not one /tmp/fuzz_loop_PID per run.
+mkdir -p "$bld/tmp"
 for t in deck csv loop; do
   work=$bld/corpus_$t
   rm -rf "$work"
@@ -21,7 +24,7 @@ for t in deck csv loop; do
   set +e
   dict=$src/tests/fuzz/$t.dict
   [ -f "$dict" ] || dict=$src/tests/fuzz/csv.dict  # the loop reads CSV
-  "$bld/fuzz_$t" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
+  TMPDIR="$bld/tmp" "$bld/fuzz_$t" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
     -artifact_prefix="$bld/crash_$t-" -dict="$dict" "$work" >"$bld/fuzz_$t.log" 2>&1
   rc=$?
   set -e

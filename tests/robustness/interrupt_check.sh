@@ -37,7 +37,10 @@ interrupt() {
   set -e
   tr '\r' '\n' <"$work/log" | grep -v '^ *$' | tail -3
   if [ "$rc" != "$want" ]; then echo "FAILED: SIG$sig gave exit $rc, expected $want"; exit 1; fi
-  grep -qE "^interrupted at t = [0-9.e+-]+ s, cycle [0-9]+; continue with: drawbend run .* --out $b --restart $b/checkpoint.bin\$" \
+  # The run folder as literal text in the pattern: a path may hold + or . (say, build-g++).
+  local eb
+  eb=$(printf '%s' "$b" | sed 's/[][\.*^$+?(){}|]/\\&/g')
+  grep -qE "^interrupted at t = [0-9.e+-]+ s, cycle [0-9]+; continue with: drawbend run .* --out $eb --restart $eb/checkpoint.bin\$" \
     "$work/log" || { echo "FAILED: no 'interrupted at ...; continue with: ...' line"; exit 1; }
   echo "SIG$sig: exit $rc as expected"
 }
