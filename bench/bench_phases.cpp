@@ -14,9 +14,11 @@
 using namespace drawbend;
 
 PhaseSplit bench_phases(const std::string& name, const fe::Model& m, long cycles, CsvWriter& w, int threads) {
+  const int before = omp_get_max_threads();
   omp_set_num_threads(threads);
   fe::PhaseTimes t;
   seconds(m, cycles, &t);
+  omp_set_num_threads(before);
   const double per = 1e9 / (static_cast<double>(t.cycles) * m.mesh.num_elements());
   PhaseSplit s;
   if (threads == 1) s.material = static_cast<double>(t.material_ticks) * fe::seconds_per_tick() * per;
@@ -33,6 +35,7 @@ PhaseSplit bench_phases(const std::string& name, const fe::Model& m, long cycles
   const std::string ne = std::to_string(m.mesh.num_elements());
   for (const auto& [phase, ns] : {std::pair<const char*, double>{"kernel", s.kernel}, {"material", s.material},
                                   {"nodes", s.nodes}, {"contact", s.contact}, {"other", s.other}})
-    if (threads == 1 || std::string(phase) != "material") w.row({name + "." + phase, ne, std::to_string(threads), fmt(ns, 4)});
+    if (threads == 1 || std::string(phase) != "material")
+      w.row({name + "." + phase, ne, std::to_string(threads), fmt(ns, 4)});
   return s;
 }

@@ -12,9 +12,10 @@ struct PhaseSplit {
   double kernel = 0, material = 0, nodes = 0, contact = 0, other = 0, total = 0;
 };
 
-/// Runs `cycles` cycles of `m` on `threads` threads with the phase timers on,
-/// prints the split as one line and appends rows "<name>.<phase>" (elements,
-/// threads, ns per element-cycle) to `w`.  The timers cost a little (a clock
+/// Runs `cycles` cycles of `m` on `threads` threads (then restores the OpenMP
+/// thread count) with the phase timers on, prints the split as one line and
+/// appends rows "<name>.<phase>" (elements, threads, ns per element-cycle) to
+/// `w`.  The timers cost a little (a clock
 /// read per phase, a counter read per element block), so the headline
 /// figures come from untimed runs, not from this one.  On more than one
 /// thread the material ticks add up the threads' CPU time, not wall time, so

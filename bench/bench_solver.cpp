@@ -130,13 +130,12 @@ int main(int argc, char** argv) {
       (threads == 1 ? r.ns1 : r.ns2) = ns;
     }
     if (bar_mat.empty()) {
-      // The 2-thread split (which phase keeps two threads from halving the
-      // time), then the 1-thread one, which leaves one thread set as before.
-      if (maxt >= 2) bench_phases(c.name, c.model, extra, w, 2);
       r.split = bench_phases(c.name, c.model, extra, w);
+      if (maxt >= 2) bench_phases(c.name, c.model, extra, w, 2);  // which phase keeps 2 threads from 2x
     }
     results.push_back(r);
   }
+  omp_set_num_threads(1);  // what follows runs on one thread unless it sets its own
   bool deck_ok = true;
   if (!bar_mat.empty() || !only.empty()) {
     w.save(out);

@@ -14,7 +14,8 @@ fi
 cmake -S "$src/tests/fuzz" -B "$bld" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug >/dev/null
 cmake --build "$bld" -j "$(nproc 2>/dev/null || echo 2)" >/dev/null
 # fuzz_loop writes its outputs under the temporary folder: keep them in the
-# build folder, not one /tmp/fuzz_loop_PID per run.
+# build folder (emptied each time), not one /tmp/fuzz_loop_PID per run.
+rm -rf "$bld/tmp"
 mkdir -p "$bld/tmp"
 for t in deck csv loop; do
   work=$bld/corpus_$t
