@@ -119,9 +119,9 @@ inline bool nodes_run_on(const std::array<int, 8>* hex) {
 
 /// The mean velocity gradient Ln and the modes' coordinates hxa and local
 /// velocities gl (R^T sum_a v_a gamma_alpha,a) from the corner velocities v.
-/// Out of line, as scatter_forces.
+/// Out of line on AVX2, as scatter_forces (DRAWBEND_OUTLINE, fe/lanes.hpp).
 template <class T>
-__attribute__((noinline)) void velocity_gradient(const HexWalshT<T>& g, const T v[3][8], T hxa[4][3], T Ln[3][3],
+DRAWBEND_OUTLINE void velocity_gradient(const HexWalshT<T>& g, const T v[3][8], T hxa[4][3], T Ln[3][3],
                                                  T gl[4][3]) {
   T Vw[3][8];
   for (int i = 0; i < 3; ++i) walsh8_t(v[i], Vw[i]);
@@ -147,12 +147,13 @@ __attribute__((noinline)) void velocity_gradient(const HexWalshT<T>& g, const T 
 /// The corner forces of elements e0 .. e0+W-1 into their slots.  In Walsh
 /// form f_a = -(Mf B_a + sum_alpha C_alpha h_alpha,a) = -sum_k h_k(a) F_k,
 /// with F_k = inv Mf G_k (k = 1..6) plus C_alpha on the modes' functions
-/// (walsh8_back_t).  Out of line, as velocity_gradient and hex_walsh_t:
-/// GCC then spills less of the block (AVX2 kernel on Zen 1, bar 1,600, one
-/// thread: 265 ns with the three out of line, 279 with hex_walsh_t alone,
-/// 291 with all inline; moving the points' strains out too: 270).
+/// (walsh8_back_t).  Out of line on AVX2, as velocity_gradient and
+/// hex_walsh_t: GCC then spills less of the block (AVX2 kernel on Zen 1, bar
+/// 1,600, one thread: 265 ns with the three out of line, 279 with hex_walsh_t
+/// alone, 291 with all inline; moving the points' strains out too: 270).
+/// Inlined on AVX-512, which has twice the registers (DRAWBEND_OUTLINE, fe/lanes.hpp).
 template <int W, class T>
-__attribute__((noinline)) void scatter_forces(const ElementView& ev, int e0, const HexWalshT<T>& g, const T Mf[3][3],
+DRAWBEND_OUTLINE void scatter_forces(const ElementView& ev, int e0, const HexWalshT<T>& g, const T Mf[3][3],
                                               const T C[4][3]) {
   T Mf_inv[3][3];
   for (int i = 0; i < 3; ++i)

@@ -119,10 +119,11 @@ struct HexWalshT {
 
 /// Walsh sums, volume gradient, V, the corotational frame and half-lengths.
 /// Returns false, with only the volume set, when the volume of any lane is
-/// not positive.  Out of line on purpose: inlined into the element
-/// kernel's block, GCC spills more (fe/element_kernel.hpp, scatter_forces).
+/// not positive.  Out of line on purpose where vectors have 16 registers:
+/// inlined into the element kernel's block, GCC spills more there
+/// (DRAWBEND_OUTLINE, fe/lanes.hpp).
 template <class T>
-__attribute__((noinline)) inline bool hex_walsh_t(const T x[8], const T y[8], const T z[8], HexWalshT<T>& g) {
+DRAWBEND_OUTLINE bool hex_walsh_t(const T x[8], const T y[8], const T z[8], HexWalshT<T>& g) {
   walsh_volume_gradient_t(x, y, z, g.X, g.G);
   T v192 = {};
   for (int i = 0; i < 3; ++i) v192 += g.X[i][1] * g.G[i][1] + g.X[i][5] * g.G[i][5];
