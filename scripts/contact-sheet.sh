@@ -15,7 +15,7 @@ fi
 out=$1
 shift
 browser=$(command -v chromium || command -v chromium-browser || true)
-[ -n "$browser" ] || { echo "$0: chromium not found (run scripts/install-deps.sh)" >&2; exit 2; }
+[ -n "$browser" ] || { echo "$0: chromium not found (install the Debian package: sudo apt-get install chromium)" >&2; exit 2; }
 page=$(mktemp --suffix=.html)
 trap 'rm -f "$page"' EXIT
 {
