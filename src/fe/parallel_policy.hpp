@@ -17,14 +17,27 @@
 // less: libgomp's threads spin for a while (GOMP_SPINCOUNT, 300,000 by
 // default) after a region before they sleep, so its fork finds them awake,
 // and a late worker has already delayed that cycle.  Such a loop forks when
-// it saves kHotForkNs (`after_fork`).
+// it saves kHotForkNs (`after_fork`).  Run serially after a forked element
+// loop, the node pass also costs more than on one thread: half the corner
+// forces it sums were written by the other core and come from its cache.
+// Forked, each thread sums mostly the nodes of its own elements.  Measured
+// (Zen 4, 2026-11-29, 2 threads, kHotForkNs 2,000 against 10,000 before):
+// bar 1,600 (serial node pass before) 49-56 ns per element-cycle against
+// 62-67 in 4 alternations, its node pass 10-12 ns in 3 of them (27 in the
+// fourth) against 15-18 (about 16 on one thread); the draw-bend deck
+// (`drawbend drawbend-deck --draw-length 4`) with 12 elements across (1,488
+// elements, 2,080 nodes) 4.6-5.4 s against 5.9-9.5, on one thread 6.7-7.5;
+// with 8 across (992 elements, 1,440 nodes) 3.1-4.0 s against 3.7-5.7, on
+// one thread 4.5-5.2.  Before, each of these decks ran slower on 2 threads
+// than on 1 in one of its 4 runs (9.5 s against 7.2; 5.7 against 4.6).  The
+// same bits either way (the runs' histories compared byte for byte).
 //
 // What that gives (2 threads): the element loop forks from about 800
-// elements; the node pass (nodal sums and integration) from about 2,500
-// nodes when the element loop forked in that cycle (the 8,000-element bar,
-// the 4,800-element strip), else from 25,000; contact from about 3,300
-// contact nodes.  A model below these sizes runs serially, so it is never
-// slower on 2 threads than on 1.  Results never depend on the decision: every
+// elements; the node pass (nodal sums and integration) from about 500
+// nodes when the element loop forked in that cycle, so in practice
+// whenever it did, else from 25,000; contact from about 70 contact nodes
+// when the element loop forked, else from about 3,300.  A model below these
+// sizes runs serially, so it is never slower on 2 threads than on 1.  Results never depend on the decision: every
 // parallel loop writes its own items and every total is summed in a fixed order.
 #include <atomic>
 
@@ -41,7 +54,7 @@ inline constexpr double kContactNodeNs = 60;   ///< penetration, penalty and fri
 /// Pessimistic cost of one parallel region [ns] (fork, join, a late worker).
 inline constexpr double kForkNs = 100000;
 /// The same for a region in a cycle whose element loop forked (threads awake).
-inline constexpr double kHotForkNs = 10000;
+inline constexpr double kHotForkNs = 2000;
 
 /// Override of the model, for tests that must run every loop in parallel
 /// (determinism across thread counts) or none.

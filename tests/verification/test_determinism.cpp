@@ -58,8 +58,11 @@ BOOST_AUTO_TEST_CASE(one_and_two_threads_identical) {
 // The thread default (issue 22): on 2 threads the quick draw-bend deck's loops
 // (400 elements, 765 nodes, about 150 contact nodes) are too small to fork,
 // so it cannot run slower on 2 threads than on 1; a 64,000-element bar forks.
-// The node pass of a cycle whose element loop forked forks from 2,500 nodes
-// (the 8,000-element bar's 10,302), not at the 1,600-element bar's 2,214.
+// The node pass of a cycle whose element loop forked forks from 500 nodes
+// (the 1,600-element bar's 2,214 too: run serially it would sum corner
+// forces from the other core's cache; fe/parallel_policy.hpp), not at 400;
+// without the element loop's fork only from 25,000 (not at the 8,000-element
+// bar's 10,302).
 BOOST_AUTO_TEST_CASE(small_loops_stay_serial) {
   omp_set_num_threads(2);
   fe::parallel::mode() = fe::parallel::Mode::model;
@@ -68,7 +71,8 @@ BOOST_AUTO_TEST_CASE(small_loops_stay_serial) {
   BOOST_TEST(!fe::parallel::worth_forking(153, fe::parallel::kContactNodeNs));
   BOOST_TEST(fe::parallel::worth_forking(64000, fe::parallel::kElementNs));
   BOOST_TEST(fe::parallel::worth_forking(74169, fe::parallel::kNodePassNs));
-  BOOST_TEST(!fe::parallel::worth_forking(2214, fe::parallel::kNodePassNs, true));
+  BOOST_TEST(fe::parallel::worth_forking(2214, fe::parallel::kNodePassNs, true));
+  BOOST_TEST(!fe::parallel::worth_forking(400, fe::parallel::kNodePassNs, true));
   BOOST_TEST(fe::parallel::worth_forking(10302, fe::parallel::kNodePassNs, true));
   BOOST_TEST(!fe::parallel::worth_forking(10302, fe::parallel::kNodePassNs, false));
   omp_set_num_threads(1);
