@@ -122,7 +122,7 @@ inline bool nodes_run_on(const std::array<int, 8>* hex) {
 /// Out of line on AVX2, as scatter_forces (DRAWBEND_OUTLINE, fe/lanes.hpp).
 template <class T>
 DRAWBEND_OUTLINE void velocity_gradient(const HexWalshT<T>& g, const T v[3][8], T hxa[4][3], T Ln[3][3],
-                                                 T gl[4][3]) {
+                                        T gl[4][3]) {
   T Vw[3][8];
   for (int i = 0; i < 3; ++i) walsh8_t(v[i], Vw[i]);
   for (int al = 0; al < 4; ++al)
@@ -154,7 +154,7 @@ DRAWBEND_OUTLINE void velocity_gradient(const HexWalshT<T>& g, const T v[3][8], 
 /// Inlined on AVX-512, which has twice the registers (DRAWBEND_OUTLINE, fe/lanes.hpp).
 template <int W, class T>
 DRAWBEND_OUTLINE void scatter_forces(const ElementView& ev, int e0, const HexWalshT<T>& g, const T Mf[3][3],
-                                              const T C[4][3]) {
+                                     const T C[4][3]) {
   T Mf_inv[3][3];
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) Mf_inv[i][j] = Mf[i][j] * g.inv;

@@ -28,7 +28,8 @@
 // (`drawbend drawbend-deck --draw-length 4`) with 12 elements across (1,488
 // elements, 2,080 nodes) 4.6-5.4 s against 5.9-9.5, on one thread 6.7-7.5;
 // with 8 across (992 elements, 1,440 nodes) 3.1-4.0 s against 3.7-5.7, on
-// one thread 4.5-5.2.  Before, each of these decks ran slower on 2 threads
+// one thread 4.5-5.2 (its contact loop, about 290 contact nodes, now forks
+// too, so these runs measured that as well).  Before, each of these decks ran slower on 2 threads
 // than on 1 in one of its 4 runs (9.5 s against 7.2; 5.7 against 4.6).  The
 // same bits either way (the runs' histories compared byte for byte).
 //
@@ -37,8 +38,9 @@
 // nodes when the element loop forked in that cycle, so in practice
 // whenever it did, else from 25,000; contact from about 70 contact nodes
 // when the element loop forked, else from about 3,300.  A model below these
-// sizes runs serially, so it is never slower on 2 threads than on 1.  Results never depend on the decision: every
-// parallel loop writes its own items and every total is summed in a fixed order.
+// sizes runs serially, so it is never slower on 2 threads than on 1.  Results
+// never depend on the decision: every parallel loop writes its own items and
+// every total is summed in a fixed order.
 #include <atomic>
 
 #ifdef _OPENMP
