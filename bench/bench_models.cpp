@@ -68,7 +68,7 @@ namespace {
 struct Done {};  // the cycle budget is spent (not a std::exception: a solver fault must not pass for it)
 }  // namespace
 
-double seconds(fe::Model m, long cycles, fe::PhaseTimes* phases) {
+double seconds(fe::Model m, long cycles, fe::PhaseTimes* phases, double* forked_share) {
   fe::Solver s(m);
   s.time_phases(phases);
   const auto t0 = std::chrono::steady_clock::now();
@@ -78,5 +78,7 @@ double seconds(fe::Model m, long cycles, fe::PhaseTimes* phases) {
     });
   } catch (const Done&) {
   }
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (forked_share) *forked_share = s.cycles() > 0 ? static_cast<double>(s.forked_cycles()) / s.cycles() : 0;
+  return wall;
 }

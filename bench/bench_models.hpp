@@ -24,5 +24,7 @@ drawbend::fe::Model strip_on_pin();
 
 /// Wall seconds of a solver built on a copy of `m` running `cycles` cycles of
 /// its first step (set-up included); with `phases`, the cycle's phases are
-/// also timed into it (fe/phase_times.hpp).
-double seconds(drawbend::fe::Model m, long cycles, drawbend::fe::PhaseTimes* phases = nullptr);
+/// also timed into it (fe/phase_times.hpp); with `forked_share`, the share of
+/// the cycles whose element loop ran on threads (0 to 1) is stored there.
+double seconds(drawbend::fe::Model m, long cycles, drawbend::fe::PhaseTimes* phases = nullptr,
+               double* forked_share = nullptr);

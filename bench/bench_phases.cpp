@@ -17,7 +17,8 @@ PhaseSplit bench_phases(const std::string& name, const fe::Model& m, long cycles
   const int before = omp_get_max_threads();
   omp_set_num_threads(threads);
   fe::PhaseTimes t;
-  seconds(m, cycles, &t);
+  double forked = 0;
+  seconds(m, cycles, &t, &forked);
   omp_set_num_threads(before);
   const double per = 1e9 / (static_cast<double>(t.cycles) * m.mesh.num_elements());
   PhaseSplit s;
@@ -31,7 +32,9 @@ PhaseSplit bench_phases(const std::string& name, const fe::Model& m, long cycles
             << ", ns per element-cycle: element kernel " << fmt(s.kernel, 3)
             << (threads == 1 ? " + material " + fmt(s.material, 3) : std::string(" (with material)"))
             << " + node passes " << fmt(s.nodes, 3) << " + contact " << fmt(s.contact, 3) << " + other "
-            << fmt(s.other, 2) << " = " << fmt(s.total, 4) << "\n";
+            << fmt(s.other, 2) << " = " << fmt(s.total, 4);
+  if (threads > 1) std::cout << " (element loop forked in " << fmt(100 * forked, 3) << " % of the cycles)";
+  std::cout << "\n";
   const std::string ne = std::to_string(m.mesh.num_elements());
   for (const auto& [phase, ns] : {std::pair<const char*, double>{"kernel", s.kernel}, {"material", s.material},
                                   {"nodes", s.nodes}, {"contact", s.contact}, {"other", s.other}})

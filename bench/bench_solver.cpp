@@ -11,7 +11,9 @@
 // deck's wall time on 1 and 2 threads, which must not be slower on 2
 // (bench_deck.cpp; not with --quick).
 // The CPU model and the element kernel head the output; each case's
-// per-phase split on 1 and 2 threads follows its timings (bench_phases.cpp), and a
+// per-phase split on 1 and 2 threads follows its timings (bench_phases.cpp);
+// on 2 threads also the share of cycles whose element loop forked and the
+// host's capacity for two threads that share nothing (bench_host.cpp); and a
 // Markdown table with the issue-22 goals, each ok or FAIL, closes the solver
 // part (bench_summary.cpp).  The models: bench_models.hpp.  Results go to
 // build/bench/results.csv (--out; --help lists the options).
@@ -30,6 +32,7 @@
 #include "bench_calculix.hpp"
 #include "bench_deck.hpp"
 #include "bench_friction.hpp"
+#include "bench_host.hpp"
 #include "bench_material.hpp"
 #include "bench_models.hpp"
 #include "bench_phases.hpp"
@@ -118,16 +121,28 @@ int main(int argc, char** argv) {
       // The shortest of kRepeats runs each: interference from the rest of the
       // machine (another guest on the host, a daemon) only ever adds time, and
       // it falls mostly on the 2-thread runs, which need both cores at once.
-      double t_short = 1e300, t_long = 1e300;
+      double t_short = 1e300, t_long = 1e300, forked = 0;  // forked: share of the kept long run's cycles
       for (int k = 0; k < (quick ? 1 : kRepeats); ++k) {
         t_short = std::min(t_short, seconds(c.model, base));
-        t_long = std::min(t_long, seconds(c.model, base + extra));
+        double share = 0;
+        const double t = seconds(c.model, base + extra, nullptr, &share);
+        if (t < t_long) t_long = t, forked = share;
       }
       const double ns = (t_long - t_short) / (static_cast<double>(extra) * ne) * 1e9;
       std::cout << c.name << ": " << ne << " elements, " << threads << " thread(s): " << fmt(ns, 4)
-                << " ns per element-cycle\n";
+                << " ns per element-cycle";
+      if (threads > 1) std::cout << " (element loop forked in " << fmt(100 * forked, 3) << " % of the cycles)";
+      std::cout << "\n";
       w.row({c.name, std::to_string(ne), std::to_string(threads), fmt(ns, 5)});
       (threads == 1 ? r.ns1 : r.ns2) = ns;
+      if (threads > 1) {
+        // What the host gave two threads that share nothing, just now
+        // (bench_host.hpp): a reference for the 2-thread figure above.
+        r.forked = forked;
+        r.capacity = two_core_capacity(c.model, std::max(20L, extra / 2), quick ? 1 : kRepeats);
+        std::cout << c.name << ": two 1-thread runs at once did " << fmt(r.capacity, 3)
+                  << "x the work of one (the host's capacity for 2 threads now)\n";
+      }
     }
     if (bar_mat.empty()) {
       r.split = bench_phases(c.name, c.model, extra, w);

@@ -11,6 +11,8 @@ struct CaseResult {
   std::string name;
   long elements = 0;
   double ns1 = 0, ns2 = 0;
+  double forked = 0;    ///< share of the kept 2-thread run's cycles whose element loop forked (0 to 1)
+  double capacity = 0;  ///< the host's capacity for 2 threads right after (bench_host.hpp; 0: not measured)
   PhaseSplit split;
 };
 
@@ -18,6 +20,7 @@ struct CaseResult {
 /// and one line per goal of issue 22 with "ok" or "FAIL": the 1,600-element
 /// bar on one thread (100 ns with the AVX-512 kernel, 160 ns otherwise), the
 /// strip on one thread (120 ns), the 2-thread speed-up at 8,000 elements and
-/// more (1.8x).  The goals inform; they do not set the exit status (timings
-/// on a shared machine are noisy).
+/// more (1.8x; the line also gives the share of cycles forked and the host's
+/// capacity for 2 threads, bench_host.hpp).  The goals inform; they do not
+/// set the exit status (timings on a shared machine are noisy).
 void print_summary(const std::string& cpu, const std::string& isa, int width, const std::vector<CaseResult>& cases);

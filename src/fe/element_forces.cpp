@@ -95,7 +95,6 @@ void Solver::element_forces() {
   // spin and hourglass increments use its length (zero before the first cycle).
   ev.dtp = last_dt_;
   ev.wave_speed = wave_speed_;
-  ev.material_ticks = phases_ ? &phases_->material_ticks : nullptr;
   struct Chosen {
     ElementRangeFn fn = nullptr;
     int width = 4;
@@ -112,6 +111,12 @@ void Solver::element_forces() {
   const int nb = (ne + kBlock - 1) / kBlock;
   int inverted = -1;
   elements_forked_ = fork_allowed_ && parallel::worth_forking(ne, parallel::kElementNs);
+  // The material's ticks (make bench's split) on one thread only: forked, the
+  // threads' atomic adds to one counter would bounce its cache line between
+  // the cores every block (bar 8,000, 2 threads, 2026-11-29: the timed element
+  // loop took 55 ns per element-cycle with them, 38.5-40.8 without),
+  // and bench_phases reports a forked element loop whole anyway.
+  ev.material_ticks = phases_ && !elements_forked_ ? &phases_->material_ticks : nullptr;
   // Then, in the same parallel region, the elements' energy increments and
   // smallest time step per chunk of kSumChunk elements, in order
   // (account_energies sums the chunks in order): bits independent of threads.

@@ -1,8 +1,10 @@
 // The fork governor's state machine (fe/fork_governor.hpp): settle, then
-// trial windows forking and serial, then hold the winner.
+// trial windows forking and serial, then hold the winner (a doubling hold,
+// cut to kBudget times what the trial cost).
 #include "fe/fork_governor.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 
 namespace drawbend::fe {
@@ -35,9 +37,14 @@ void ForkGovernor::after_cycle(double seconds) {
     case Phase::trial_serial: {
       t_serial_[count_ - 1] = seconds;
       if (count_ < kWindow) break;
-      const bool fork = median(t_fork_) < median(t_serial_);
-      interval_ = fork == fork_ ? std::min(2 * interval_, kMaxInterval) : kMinInterval;
+      const double m_fork = median(t_fork_), m_serial = median(t_serial_);
+      const bool fork = m_fork < m_serial;
+      growth_ = fork == fork_ ? std::min(2 * growth_, kMaxInterval) : kMinInterval;
       fork_ = fork;
+      // The hold no longer than kBudget x the trial's cost (fe/fork_governor.hpp).
+      const double win = std::max(std::min(m_fork, m_serial), 1e-9), lose = std::max(m_fork, m_serial);
+      const double budget = kBudget * kWindow * (lose - win) / win;  // cycles of the winner
+      interval_ = budget >= static_cast<double>(growth_) ? growth_ : std::max(kMinInterval, std::lround(budget));
       start(Phase::hold);
       break;
     }

@@ -15,11 +15,29 @@
 // and forbidden; the window with the shorter median cycle wins (not the
 // shorter sum: one cycle in which the host takes a core for milliseconds,
 // seen in this guest at 13 times a normal cycle, would otherwise decide the
-// trial) and holds for `interval` cycles, which
-// doubles (up to kMaxInterval) each time the same mode wins again and falls
-// back to kMinInterval when the other one does.  A wrong trial therefore
-// costs a few cycles in thousands.  The first kSettle cycles (first touch of
-// the arrays) are not timed.
+// trial) and holds until the next trial.  The hold doubles (up to
+// kMaxInterval) each time the same mode wins again and falls back to
+// kMinInterval when the other one does, so a wrong trial costs a few cycles
+// in thousands; but it never exceeds kBudget times what the trial cost.  A
+// trial runs kWindow cycles in the losing mode, so it costs kWindow x
+// (loser's median - winner's median) over holding; the hold is cut to
+// kBudget times that, in cycles of the winner's median (at least
+// kMinInterval).  Where the two modes are close, a wrong decision costs
+// little and trials stay frequent; where one mode is far slower, trials
+// become rare, as before.
+//
+// Why the cut (2026-11-29).  On the Zen 4 guest the strip of `make bench`
+// had stretches of seconds in which its forked cycles took 470-540 us
+// against 406-430 serial, and 227-240 forked at other times, in the same
+// process and on the same data.  Serial rightly won those trials, but the
+// doubling hold had grown to 4,096 cycles (1.7 s) after a few, so the run
+// went on serially for that long after forking paid again.  Those trials
+// cost 8 x 70 us; the cut holds for 136 cycles (56 ms).  Where forking pays
+// (227 against 410 us) the cut is 639 cycles (0.15 s; it was up to 16,384),
+// so trials cost 1 % of a forked run.  Where forking was 25 times slower (45
+// against 0.41 ms, another job on the other core) the cut is above
+// kMaxInterval, so the hold doubles as before.  The first kSettle cycles
+// (first touch of the arrays) are not timed.
 //
 // Results never depend on it: every parallel loop of the solver gives the
 // same bits on any number of threads.  Not used when parallel::mode() is not
@@ -32,6 +50,7 @@ class ForkGovernor {
   static constexpr int kWindow = 8;        ///< cycles per trial window
   static constexpr long kMinInterval = 64;     ///< cycles between trials, at first
   static constexpr long kMaxInterval = 16384;  ///< ... at most
+  static constexpr double kBudget = 100;       ///< a hold lasts at most kBudget times its trial's cost
 
   /// May the loops fork in the coming cycle (as far as the measurement goes)?
   bool allowed() const { return phase_ == Phase::trial_serial ? false : (phase_ == Phase::trial_fork || fork_); }
@@ -47,7 +66,8 @@ class ForkGovernor {
   bool fork_ = true;  // the mode that won the last trial (forking, before any)
   int count_ = 0;     // cycles into the current phase
   double t_fork_[kWindow] = {}, t_serial_[kWindow] = {};  // the trial windows' cycle times [s]
-  long interval_ = kMinInterval;
+  long growth_ = kMinInterval;    // the doubling hold (before the cut)
+  long interval_ = kMinInterval;  // the hold: growth_, cut to kBudget x the last trial's cost
 };
 
 }  // namespace drawbend::fe

@@ -69,6 +69,9 @@ class Solver {
   double time() const { return t_; }
   double dt() const { return dt_; }
   long cycles() const { return cycle_; }
+  /// Cycles whose element loop ran on threads (make bench: how much of a run
+  /// the fork model and governor let fork; fe/fork_governor.hpp).
+  long forked_cycles() const { return forked_cycles_; }
   const std::vector<double>& x() const { return x_; }
   const std::vector<double>& y() const { return y_; }
   const std::vector<double>& z() const { return z_; }
@@ -186,6 +189,7 @@ class Solver {
   double last_dt_ = 0;  // length of the interval that produced the current velocities
   double t_ = 0, dt_ = 0, dt0_ = 0, added_mass_ = 0, phys_mass_ = 0, wave_speed_ = 0;
   long cycle_ = 0;
+  long forked_cycles_ = 0;  // forked_cycles()
   // Where the run is: step index, time into it, its start time (restart point).
   int step_index_ = 0;
   double step_time_ = 0, step_t_start_ = 0;

@@ -63,6 +63,7 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
 
     lap(&PhaseTimes::other);
     element_forces();                                              // forces: element loop, into corner slots
+    forked_cycles_ += elements_forked_;
     lap(&PhaseTimes::kernel);
     apply_loads(m_, step, plan_, ts, nodes, ext, applied_.data(), ext_nodes_);  // loads at t_n (and gravity)
     lap(&PhaseTimes::nodes);

@@ -82,7 +82,9 @@ BOOST_AUTO_TEST_CASE(small_loops_stay_serial) {
 // The measured side of the fork decision (fe/fork_governor.hpp): where a cycle
 // with forks takes longer than one without (a busy machine), the loops stop
 // forking, and check again after a growing interval; where forks pay, they
-// fork.  Fed with made-up cycle times: 10 s forking, 1 s serial, then the reverse.
+// fork.  Fed with made-up cycle times: 10 s forking, 1 s serial, then the
+// reverse.  A trial there costs 8 x 9 s, so the cut (100 x 72 s / 1 s = 7,200
+// cycles) is above the doubling hold, which decides: 64, 128, 64.
 BOOST_AUTO_TEST_CASE(fork_governor_keeps_the_faster) {
   fe::ForkGovernor g;
   auto run = [&](double fork_s, double serial_s, long cycles) {
@@ -100,10 +102,41 @@ BOOST_AUTO_TEST_CASE(fork_governor_keeps_the_faster) {
   BOOST_TEST(g.interval() == fe::ForkGovernor::kMinInterval);  // the other winner: back to often
 }
 
+// Where the two modes are close, the hold stops growing at kBudget times what
+// a trial costs (kBudget 100, kWindow 8).  Forking 1.2 s against 1 s serial:
+// serial wins every trial, each costs 8 x 0.2 s, so the hold is cut to
+// 100 x 1.6 / 1 = 160 cycles: 64, 128, then 160, 160 (doubling alone: 256,
+// 512).  Forking 1 s against 1.05 s: the cut is 100 x 8 x 0.05 = 40 cycles,
+// below the least hold: 64 at every trial.
+BOOST_AUTO_TEST_CASE(fork_governor_holds_no_longer_than_its_trials_pay) {
+  using G = fe::ForkGovernor;
+  G g;
+  auto run = [&](double fork_s, double serial_s, long cycles) {
+    for (long k = 0; k < cycles; ++k) g.after_cycle(g.allowed() ? fork_s : serial_s);
+  };
+  run(1.2, 1, G::kSettle + 2 * G::kWindow);
+  BOOST_TEST(!g.allowed());
+  BOOST_TEST(g.interval() == 64);
+  for (long expected : {128L, 160L, 160L}) {
+    run(1.2, 1, g.interval() + 2 * G::kWindow);
+    BOOST_TEST(!g.allowed());
+    BOOST_TEST(g.interval() == expected);
+  }
+  run(1, 1.05, g.interval() + 2 * G::kWindow);
+  BOOST_TEST(g.allowed());
+  BOOST_TEST(g.interval() == 64);
+  for (int k = 0; k < 3; ++k) {
+    run(1, 1.05, g.interval() + 2 * G::kWindow);
+    BOOST_TEST(g.allowed());
+    BOOST_TEST(g.interval() == 64);
+  }
+}
+
 // One slow cycle does not decide a trial: each window is judged by its
 // median cycle.  Forking at 1 s a cycle, with one cycle of the fork window at
 // 100 s (the host took a core), against 1.5 s serial: forking wins (the sum
-// would say 107 s against 12 s).  The reverse spike, one serial cycle at
+// would say 107 s against 12 s); the cut, 100 x 8 x 0.5 = 400 cycles, is above
+// the doubling hold, 128.  The reverse spike, one serial cycle at
 // 0.01 s, does not make serial win either (as it would if the fastest cycle
 // of each window decided).
 BOOST_AUTO_TEST_CASE(fork_governor_one_slow_cycle_does_not_decide) {
