@@ -113,8 +113,8 @@ void Solver::element_forces() {
   elements_forked_ = fork_allowed_ && parallel::worth_forking(ne, parallel::kElementNs);
   // The material's ticks (make bench's split) on one thread only: forked, the
   // threads' atomic adds to one counter would bounce its cache line between
-  // the cores every block (bar 8,000, 2 threads, 2026-11-29: the timed element
-  // loop took 55 ns per element-cycle with them, 38.5-40.8 without),
+  // the cores every block (bar 8,000, 2 threads, 2026-11-29: the per-phase
+  // run's element loop took 55 ns per element-cycle with them, 38.5-40.8 without),
   // and bench_phases reports a forked element loop whole anyway.
   ev.material_ticks = phases_ && !elements_forked_ ? &phases_->material_ticks : nullptr;
   // Then, in the same parallel region, the elements' energy increments and

@@ -15,16 +15,18 @@
 // and forbidden; the window with the shorter median cycle wins (not the
 // shorter sum: one cycle in which the host takes a core for milliseconds,
 // seen in this guest at 13 times a normal cycle, would otherwise decide the
-// trial) and holds until the next trial.  The hold doubles (up to
-// kMaxInterval) each time the same mode wins again and falls back to
-// kMinInterval when the other one does, so a wrong trial costs a few cycles
-// in thousands; but it never exceeds kBudget times what the trial cost.  A
-// trial runs kWindow cycles in the losing mode, so it costs kWindow x
-// (loser's median - winner's median) over holding; the hold is cut to
-// kBudget times that, in cycles of the winner's median (at least
-// kMinInterval).  Where the two modes are close, a wrong decision costs
-// little and trials stay frequent; where one mode is far slower, trials
-// become rare, as before.
+// trial) and holds until the next trial.  The hold is the shorter of two:
+// a doubling hold, which doubles (up to kMaxInterval) each time the same
+// mode wins again and falls back to kMinInterval when the other one does, so
+// a wrong trial costs a few cycles in thousands; and a cut, kBudget times
+// what the trial cost.  A trial runs kWindow cycles in the losing mode, so it
+// costs kWindow x (loser's median - winner's median) over holding; the cut
+// is kBudget times that, in cycles of the winner's median (at least
+// kMinInterval).  Both are worked out afresh at each trial.  Where the two
+// modes are close, a wrong decision costs little and trials stay frequent;
+// where one mode is more than 21.5 times slower (kBudget x kWindow x 20.5 >
+// kMaxInterval), the cut is above kMaxInterval and the doubling hold decides
+// alone, as it did before the cut; in between, trials take 1 % of the run.
 //
 // Why the cut (2026-11-29).  On the Zen 4 guest the strip of `make bench`
 // had stretches of seconds in which its forked cycles took 470-540 us
@@ -33,11 +35,11 @@
 // doubling hold had grown to 4,096 cycles (1.7 s) after a few, so the run
 // went on serially for that long after forking paid again.  Those trials
 // cost 8 x 70 us; the cut holds for 136 cycles (56 ms).  Where forking pays
-// (227 against 410 us) the cut is 639 cycles (0.15 s; it was up to 16,384),
-// so trials cost 1 % of a forked run.  Where forking was 25 times slower (45
-// against 0.41 ms, another job on the other core) the cut is above
-// kMaxInterval, so the hold doubles as before.  The first kSettle cycles
-// (first touch of the arrays) are not timed.
+// (227 against 410 us) the cut is 645 cycles (0.15 s; the doubling hold grew
+// to 16,384), so trials cost 1 % of a forked run.  Where forking was 110
+// times slower (45 against 0.41 ms a cycle, with `make` running on this
+// machine) the cut is above kMaxInterval.  The first kSettle cycles (first
+// touch of the arrays) are not timed.
 //
 // Results never depend on it: every parallel loop of the solver gives the
 // same bits on any number of threads.  Not used when parallel::mode() is not
