@@ -7,9 +7,9 @@
 // sized model with contact (strip over a pin, about 4,000 elements).
 // Cost = (wall(long run) - wall(short run)) / (extra cycles x elements), which
 // removes set-up time; each wall time is the shortest of kRepeats runs (one
-// with --quick), as interference only adds time.  Then the quick draw-bend
-// deck's wall time on 1 and 2 threads, which must not be slower on 2
-// (bench_deck.cpp; not with --quick).
+// with --quick), as interference only adds time, the 1- and 2-thread runs
+// taking turns.  Then the quick draw-bend deck's wall time on 1 and 2
+// threads, which must not be slower on 2 (bench_deck.cpp; not with --quick).
 // The CPU model and the element kernel head the output; each case's
 // per-phase split on 1 and 2 threads follows its timings (bench_phases.cpp);
 // on 2 threads also the share of cycles whose element loop forked and the
@@ -115,34 +115,43 @@ int main(int argc, char** argv) {
     CaseResult r;
     r.name = c.name;
     r.elements = ne;
-    for (int threads : {1, 2}) {
-      if (threads > maxt || (threads > 1 && !bar_mat.empty())) continue;
-      omp_set_num_threads(threads);
-      // The shortest of kRepeats runs each: interference from the rest of the
-      // machine (another guest on the host, a daemon) only ever adds time, and
-      // it falls mostly on the 2-thread runs, which need both cores at once.
-      double t_short = 1e300, t_long = 1e300, forked = 0;  // forked: share of the kept long run's cycles
-      for (int k = 0; k < (quick ? 1 : kRepeats); ++k) {
-        t_short = std::min(t_short, seconds(c.model, base));
+    // The shortest of kRepeats runs each: interference from the rest of the
+    // machine (another guest on the host, a daemon) only ever adds time, and
+    // it falls mostly on the 2-thread runs, which need both cores at once.
+    // The thread counts take turns, repeat by repeat, so that the 1- and
+    // 2-thread figures come from the same minute: the host's speed drifts
+    // (2026-11-29, Zen 4: bar 1,600 on one thread 86 ns timed, then its
+    // per-phase run a minute later 117).
+    const int nthreads = bar_mat.empty() ? std::min(2, maxt) : 1;
+    double t_short[2] = {1e300, 1e300}, t_long[2] = {1e300, 1e300};
+    double forked = 0;  // share of the kept 2-thread long run's cycles
+    for (int k = 0; k < (quick ? 1 : kRepeats); ++k)
+      for (int threads = 1; threads <= nthreads; ++threads) {
+        omp_set_num_threads(threads);
+        t_short[threads - 1] = std::min(t_short[threads - 1], seconds(c.model, base));
         double share = 0;
         const double t = seconds(c.model, base + extra, nullptr, &share);
-        if (t < t_long) t_long = t, forked = share;
+        if (t < t_long[threads - 1]) {
+          t_long[threads - 1] = t;
+          if (threads > 1) forked = share;
+        }
       }
-      const double ns = (t_long - t_short) / (static_cast<double>(extra) * ne) * 1e9;
+    for (int threads = 1; threads <= nthreads; ++threads) {
+      const double ns = (t_long[threads - 1] - t_short[threads - 1]) / (static_cast<double>(extra) * ne) * 1e9;
       std::cout << c.name << ": " << ne << " elements, " << threads << " thread(s): " << fmt(ns, 4)
                 << " ns per element-cycle";
       if (threads > 1) std::cout << " (element loop forked in " << fmt(100 * forked, 3) << " % of the cycles)";
       std::cout << "\n";
       w.row({c.name, std::to_string(ne), std::to_string(threads), fmt(ns, 5)});
       (threads == 1 ? r.ns1 : r.ns2) = ns;
-      if (threads > 1) {
-        // What the host gave two threads that share nothing, just now
-        // (bench_host.hpp): a reference for the 2-thread figure above.
-        r.forked = forked;
-        r.capacity = two_core_capacity(c.model, std::max(20L, extra / 2), quick ? 1 : kRepeats);
-        std::cout << c.name << ": two 1-thread runs at once did " << fmt(r.capacity, 3)
-                  << "x the work of one (the host's capacity for 2 threads now)\n";
-      }
+    }
+    if (nthreads > 1) {
+      // What the host gave two threads that share nothing, just now
+      // (bench_host.hpp): a reference for the 2-thread figure above.
+      r.forked = forked;
+      r.capacity = two_core_capacity(c.model, std::max(20L, extra / 2), quick ? 1 : kRepeats);
+      std::cout << c.name << ": two 1-thread runs at once did " << fmt(r.capacity, 3)
+                << "x the work of one (the host's capacity for 2 threads now)\n";
     }
     if (bar_mat.empty()) {
       r.split = bench_phases(c.name, c.model, extra, w);
