@@ -122,16 +122,19 @@ void Solver::element_forces() {
   // (account_energies sums the chunks in order): bits independent of threads.
   const int nchunk = (ne + kSumChunk - 1) / kSumChunk;
   double* partial = elem_partial_.data();
+  // The blocks in static shares, one per thread, stolen at the end
+  // (fe/work_shares.hpp): the same bits whoever runs a block.
+  element_shares_.reset(nb, elements_forked_ ? parallel::threads() : 1);
 #pragma omp parallel if (elements_forked_)
   {
-#pragma omp for schedule(static)
-    for (int b = 0; b < nb; ++b) {
-      const int r = kernel(ev, kBlock * b, std::min(ne, kBlock * (b + 1)), kBlock);
+    element_shares_.run(parallel::thread_num(), [&](int b0, int b1) {
+      const int r = kernel(ev, kBlock * b0, std::min(ne, kBlock * b1), kBlock);
       if (r >= 0) {
 #pragma omp critical
         inverted = inverted < 0 ? r : std::min(inverted, r);
       }
-    }
+    });
+#pragma omp barrier
 #pragma omp for schedule(static)
     for (int ch = 0; ch < nchunk; ++ch) {
       double ie = 0, eh = 0, dtmin = 1e30;

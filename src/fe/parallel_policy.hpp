@@ -75,6 +75,15 @@ inline int threads() {
 #endif
 }
 
+/// This thread's number in its team (0 outside a parallel region).
+inline int thread_num() {
+#ifdef _OPENMP
+  return omp_get_thread_num();
+#else
+  return 0;
+#endif
+}
+
 /// Whether a loop of `items` items costing `ns_per_item` each should fork;
 /// `after_fork`: the element loop of this cycle has forked.
 inline bool worth_forking(long items, double ns_per_item, bool after_fork = false) {

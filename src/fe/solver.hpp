@@ -22,6 +22,7 @@
 #include "fe/fork_governor.hpp"
 #include "fe/phase_times.hpp"
 #include "fe/step_phases.hpp"
+#include "fe/work_shares.hpp"
 
 namespace drawbend::fe {
 
@@ -161,6 +162,7 @@ class Solver {
   std::vector<int> corner_slot_;  // per element corner (8e + a): its slot in corner_, node-major (nc_ order)
   bool elements_forked_ = false;  // this cycle's element loop ran on threads (parallel::worth_forking)
   ForkGovernor governor_;         // whether forking pays on this machine now (measured)
+  parallel::WorkShares element_shares_;  // the element loop's blocks: static shares, stolen at the end
   bool fork_allowed_ = true;      // this cycle: governor_'s answer (always true unless parallel::Mode::model)
   double dt_elem_min_ = 0;        // this cycle's smallest element step (account_energies)
   std::vector<Vec3> tool_offset_, tool_vel_, tool_force_;

@@ -11,7 +11,9 @@
 #include <boost/test/unit_test.hpp>
 #include <omp.h>
 
+#include <algorithm>
 #include <utility>
+#include <vector>
 
 #include "fixtures.hpp"
 
@@ -79,6 +81,39 @@ BOOST_AUTO_TEST_CASE(small_loops_stay_serial) {
   BOOST_TEST(!fe::parallel::worth_forking(10302, fe::parallel::kNodePassNs, false));
   omp_set_num_threads(1);
   BOOST_TEST(!fe::parallel::worth_forking(64000, fe::parallel::kElementNs));
+}
+
+// The element loop's schedule (fe/work_shares.hpp): static shares, stolen at
+// the end.  Closed form: every item of [0, n) runs exactly once, for any n,
+// number of shares and team size (fewer threads than shares included); one
+// thread alone (a worker that never arrives) runs them in order 0 .. n-1,
+// share after share; two threads that take turns chunk by chunk, the second
+// starting on share 1, also run each item once.
+BOOST_AUTO_TEST_CASE(work_shares_run_every_item_once) {
+  fe::parallel::WorkShares w;
+  for (const int n : {0, 1, 7, 64, 1000, 1001}) {
+    for (const int shares : {1, 2, 3}) {
+      w.reset(n, shares);
+      std::vector<int> order;
+      w.run(0, [&](int b, int e) {
+        for (int i = b; i < e; ++i) order.push_back(i);
+      });
+      std::vector<int> expect(static_cast<std::size_t>(n));
+      for (int i = 0; i < n; ++i) expect[static_cast<std::size_t>(i)] = i;
+      BOOST_TEST(order == expect, boost::test_tools::per_element());
+      // Two threads on the shares at once (real threads: timing decides who steals).
+      w.reset(n, shares);
+      std::vector<int> hits(static_cast<std::size_t>(n), 0);
+#pragma omp parallel num_threads(2)
+      w.run(omp_get_thread_num(), [&](int b, int e) {
+        for (int i = b; i < e; ++i) {
+#pragma omp atomic
+          ++hits[static_cast<std::size_t>(i)];
+        }
+      });
+      BOOST_TEST(std::count(hits.begin(), hits.end(), 1) == n);
+    }
+  }
 }
 
 // The measured side of the fork decision (fe/fork_governor.hpp): where a cycle
