@@ -13,8 +13,9 @@
 // after one such run (element loop forked in 44 % of the cycles, 84.8 ns per
 // element-cycle against 92.5 on one thread), two independent 1-thread runs
 // of the same strip did 2.07 times the work of one: the host then had two
-// cores for work that shares nothing (after the stretch, not in it; what made
-// the forked cycles slow was not found, docs/developer.md).  This probe tells
+// cores for work that shares nothing (after the stretch, not in it; what the
+// forked threads share made later stretches worse, but did not explain them
+// all: docs/developer.md).  This probe tells
 // a low 2-thread figure with the cores there from one without them.
 //
 // What.  The case's own model is run on one thread alone, then as two

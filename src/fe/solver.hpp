@@ -162,8 +162,9 @@ class Solver {
   std::vector<int> corner_slot_;  // per element corner (8e + a): its slot in corner_, node-major (nc_ order)
   bool elements_forked_ = false;  // this cycle's element loop ran on threads (parallel::worth_forking)
   ForkGovernor governor_;         // whether forking pays on this machine now (measured)
-  parallel::WorkShares element_shares_;  // the element loop's blocks: static shares, stolen at the end
   bool fork_allowed_ = true;      // this cycle: governor_'s answer (always true unless parallel::Mode::model)
+  // The element loop's blocks: a share per thread, stolen at the end (fe/work_shares.hpp).
+  parallel::WorkShares element_shares_;
   double dt_elem_min_ = 0;        // this cycle's smallest element step (account_energies)
   std::vector<Vec3> tool_offset_, tool_vel_, tool_force_;
   std::vector<std::vector<ContactNode>> contact_;

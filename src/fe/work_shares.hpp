@@ -3,22 +3,29 @@
 // independent and write only their own outputs (the element loop: every block
 // of elements writes its own corner slots and records, fe/element_forces.cpp).
 //
-// The loop's range [0, n) is cut into one contiguous share per thread, as
-// schedule(static) cuts it, and each share into chunks.  Thread t claims the
+// The loop's range [0, n) is cut into one contiguous share per thread (as a
+// static schedule cuts it, give or take one item at each boundary), and each
+// share into chunks.  Thread t claims the
 // chunks of share t in order, from the share's counter, so it runs the same
 // items cycle after cycle and their data stay in its core's cache (a dynamic
 // schedule over the whole range lost that: see docs/developer.md).  A thread
 // done with its own share goes on to claim the next share's unclaimed chunks.
-// So a worker that enters the region late, or runs slowly for a while on a
-// shared host, holds the other thread at the join for the chunks it has not
-// started, not for its whole share.
+// So when a worker enters the region late, or runs slowly for a while on a
+// shared host, the other thread runs the chunks it has not started, and
+// waits at the join for at most the chunk the worker is in.
 //
 // Results never depend on which thread runs a chunk: the items write their
 // own outputs, and nothing is summed across them here.  With one thread (the
 // region not forked) the chunks run in order, share after share: 0 .. n-1.
+// run() returns when nothing is left to claim, not when every chunk is done:
+// a caller that reads the loop's outputs waits at a barrier first.
 #include <algorithm>
 #include <atomic>
+#include <climits>
+#include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <stdexcept>
 
 namespace drawbend::fe::parallel {
 
@@ -26,7 +33,10 @@ class WorkShares {
  public:
   /// Cut [0, n) into `shares` contiguous shares, each into chunks of about
   /// 1/kChunksPerShare of it (at least one item).  Serially, before the region.
+  /// n is at most INT_MAX / 2: a counter runs past its share's end by at most
+  /// one chunk per thread, and must not overflow.
   void reset(int n, int shares) {
+    if (n < 0 || n > INT_MAX / 2) throw std::length_error("WorkShares: n must be in 0 .. INT_MAX / 2");
     shares = std::max(1, shares);
     if (shares > capacity_) {
       share_ = std::make_unique<Share[]>(static_cast<std::size_t>(shares));
@@ -34,7 +44,7 @@ class WorkShares {
     }
     num_shares_ = shares;
     for (int s = 0; s < shares; ++s) {
-      const long b = static_cast<long>(n) * s / shares, e = static_cast<long>(n) * (s + 1) / shares;
+      const std::int64_t b = std::int64_t{n} * s / shares, e = std::int64_t{n} * (s + 1) / shares;
       share_[s].next.store(static_cast<int>(b), std::memory_order_relaxed);
       share_[s].end = static_cast<int>(e);
     }

@@ -12,6 +12,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -83,35 +84,51 @@ BOOST_AUTO_TEST_CASE(small_loops_stay_serial) {
   BOOST_TEST(!fe::parallel::worth_forking(64000, fe::parallel::kElementNs));
 }
 
-// The element loop's schedule (fe/work_shares.hpp): static shares, stolen at
-// the end.  Closed form: every item of [0, n) runs exactly once, for any n,
-// number of shares and team size (fewer threads than shares included); one
-// thread alone (a worker that never arrives) runs them in order 0 .. n-1,
-// share after share; two threads that take turns chunk by chunk, the second
-// starting on share 1, also run each item once.
+// The element loop's schedule (fe/work_shares.hpp): a share per thread,
+// stolen at the end.  Closed form, for n = 0, 1, 7, 64, 1000, 1001 and 1, 2
+// or 3 shares:
+//  - thread 0 alone (a worker that never arrives) runs 0 .. n-1 in order;
+//  - the last thread alone runs its own share first, then the shares from
+//    0 on: [share S-1], [share 0], ..., [share S-2], each in order;
+//  - two threads at once, each item doing some work so that both claim
+//    chunks while the other does (which thread takes which chunk is the
+//    timing's): every item exactly once.
 BOOST_AUTO_TEST_CASE(work_shares_run_every_item_once) {
   fe::parallel::WorkShares w;
   for (const int n : {0, 1, 7, 64, 1000, 1001}) {
     for (const int shares : {1, 2, 3}) {
-      w.reset(n, shares);
-      std::vector<int> order;
-      w.run(0, [&](int b, int e) {
-        for (int i = b; i < e; ++i) order.push_back(i);
-      });
-      std::vector<int> expect(static_cast<std::size_t>(n));
-      for (int i = 0; i < n; ++i) expect[static_cast<std::size_t>(i)] = i;
-      BOOST_TEST(order == expect, boost::test_tools::per_element());
-      // Two threads on the shares at once (real threads: timing decides who steals).
+      auto bounds = [&](int s) { return std::pair<int, int>{n * s / shares, n * (s + 1) / shares}; };
+      for (const int t : {0, shares - 1}) {
+        w.reset(n, shares);
+        std::vector<int> order, expect;
+        w.run(t, [&](int b, int e) {
+          for (int i = b; i < e; ++i) order.push_back(i);
+        });
+        for (int k = 0; k < shares; ++k) {
+          const auto [b, e] = bounds((t + k) % shares);
+          for (int i = b; i < e; ++i) expect.push_back(i);
+        }
+        BOOST_TEST(order == expect, boost::test_tools::per_element());
+      }
+      // Two threads at once: some tens of microseconds of work per item keep both claiming.
       w.reset(n, shares);
       std::vector<int> hits(static_cast<std::size_t>(n), 0);
+      std::vector<double> sink(2, 0.0);
 #pragma omp parallel num_threads(2)
-      w.run(omp_get_thread_num(), [&](int b, int e) {
-        for (int i = b; i < e; ++i) {
+      {
+        const int me = omp_get_thread_num();
+        w.run(me, [&](int b, int e) {
+          for (int i = b; i < e; ++i) {
 #pragma omp atomic
-          ++hits[static_cast<std::size_t>(i)];
-        }
-      });
+            ++hits[static_cast<std::size_t>(i)];
+            double x = i;
+            for (int r = 0; r < 20000; ++r) x = x * 0.999999 + 1e-9;
+            sink[static_cast<std::size_t>(me)] += x;
+          }
+        });
+      }
       BOOST_TEST(std::count(hits.begin(), hits.end(), 1) == n);
+      BOOST_TEST(std::isfinite(sink[0] + sink[1]));  // the work is used, so it is done
     }
   }
 }
