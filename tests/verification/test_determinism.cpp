@@ -12,7 +12,6 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -128,7 +127,8 @@ BOOST_AUTO_TEST_CASE(work_shares_run_every_item_once) {
         });
       }
       BOOST_TEST(std::count(hits.begin(), hits.end(), 1) == n);
-      BOOST_TEST(std::isfinite(sink[0] + sink[1]));  // the work is used, so it is done
+      volatile double keep = sink[0] + sink[1];  // the work is used, so it is done (not a check)
+      (void)keep;
     }
   }
 }
@@ -210,7 +210,7 @@ BOOST_AUTO_TEST_CASE(fork_governor_one_slow_cycle_does_not_decide) {
 // make bench's per-phase timers (fe/phase_times.hpp) only read clocks: the
 // same run timed and untimed, on `threads` threads in `mode`, gives the same
 // bits, and the timed one accounts for every cycle.  Returns the timers and
-// the timed run's forked cycles.
+// the timed run's serial cycles (those whose element loop did not fork).
 static std::pair<fe::PhaseTimes, long> timed_run_matches_untimed(int threads, fe::parallel::Mode mode) {
   omp_set_num_threads(threads);
   fe::parallel::mode() = mode;
