@@ -105,6 +105,18 @@ std::vector<double> piecewise_lines(const std::vector<double>& bp, const std::ve
   return v;
 }
 
+BlockOrder block_order(int ex, int ey, int ez) {
+  const int e[3] = {ex, ey, ez};
+  // The slowest axis: the most elements; a tie keeps the later axis (z, then y).
+  int slow = 2;
+  for (int a : {1, 0})
+    if (e[a] > e[slow]) slow = a;
+  const int p = slow == 0 ? 1 : 0, q = slow == 2 ? 1 : 2;  // the other two, in x, y, z order
+  const int fast = e[q] > e[p] ? q : p;                     // the longer of them (a tie: the earlier)
+  if (e[fast] < kMinRow || slow == 2) return {{0, 1, 2}};
+  return {{fast, fast == p ? q : p, slow}};
+}
+
 Mesh structured_block(const std::vector<double>& xs, const std::vector<double>& ys, const std::vector<double>& zs) {
   for (const auto* l : {&xs, &ys, &zs}) {
     if (l->size() < 2) throw std::invalid_argument("structured_block: each direction needs >= 2 lines");
@@ -112,7 +124,13 @@ Mesh structured_block(const std::vector<double>& xs, const std::vector<double>& 
       if (!((*l)[i] > (*l)[i - 1])) throw std::invalid_argument("structured_block: lines must increase strictly");
   }
   const int nx = static_cast<int>(xs.size()), ny = static_cast<int>(ys.size()), nz = static_cast<int>(zs.size());
-  auto id = [&](int i, int j, int k) { return i + nx * (j + ny * k); };
+  const BlockOrder order = block_order(nx - 1, ny - 1, nz - 1);
+  const int lines[3] = {nx, ny, nz};
+  int stride[3];
+  stride[order.axis[0]] = 1;
+  stride[order.axis[1]] = lines[order.axis[0]];
+  stride[order.axis[2]] = lines[order.axis[0]] * lines[order.axis[1]];
+  auto id = [&](int i, int j, int k) { return i * stride[0] + j * stride[1] + k * stride[2]; };
   Mesh m;
   m.x.resize(nx * ny * nz);
   m.y.resize(m.x.size());
@@ -124,11 +142,18 @@ Mesh structured_block(const std::vector<double>& xs, const std::vector<double>& 
         m.y[id(i, j, k)] = ys[j];
         m.z[id(i, j, k)] = zs[k];
       }
-  for (int k = 0; k + 1 < nz; ++k)
-    for (int j = 0; j + 1 < ny; ++j)
-      for (int i = 0; i + 1 < nx; ++i)
+  // Elements in the nodes' order: the fastest axis innermost.
+  int c[3];
+  int& a0 = c[order.axis[0]];
+  int& a1 = c[order.axis[1]];
+  int& a2 = c[order.axis[2]];
+  for (a2 = 0; a2 + 1 < lines[order.axis[2]]; ++a2)
+    for (a1 = 0; a1 + 1 < lines[order.axis[1]]; ++a1)
+      for (a0 = 0; a0 + 1 < lines[order.axis[0]]; ++a0) {
+        const int i = c[0], j = c[1], k = c[2];
         m.hex.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
                          id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+      }
   m.element_block.assign(m.hex.size(), 0);
   auto& all = m.node_sets["all"];
   for (int n = 0; n < m.num_nodes(); ++n) all.push_back(n);
@@ -143,6 +168,7 @@ Mesh structured_block(const std::vector<double>& xs, const std::vector<double>& 
         if (k == 0) m.node_sets["zmin"].push_back(n);
         if (k == nz - 1) m.node_sets["zmax"].push_back(n);
       }
+  for (auto& [name, set] : m.node_sets) std::sort(set.begin(), set.end());  // ascending, whatever the order
   // Boundary faces with outward normals.
   for (int k = 0; k + 1 < nz; ++k)
     for (int j = 0; j + 1 < ny; ++j) {

@@ -34,8 +34,35 @@ struct NodeCorners {
   static NodeCorners build(const Mesh& m);
 };
 
+/// The numbering of a structured block: axis[0] runs fastest, axis[2]
+/// slowest (0 = x, 1 = y, 2 = z).
+struct BlockOrder {
+  int axis[3];
+};
+
+/// Elements that a row on the fastest axis must hold before block_order puts
+/// that axis first: the AVX-512 kernel's lane count, so that each of its
+/// blocks of eight elements lies on one row of consecutive nodes and loads as
+/// vectors (fe/element_kernel.hpp: nodes_run_on).  Fixed, not the running
+/// kernel's width: the numbering, and so every result's bits, must not depend
+/// on the instruction set.
+inline constexpr int kMinRow = 8;
+
+/// The numbering of a block of ex x ey x ez elements.  As built (x fastest,
+/// then y, then z), unless the axis with the most elements is not z and the
+/// longer of the other two has at least kMinRow elements: then that one runs
+/// fastest, the remaining one next, and the longest slowest.  Why: with the
+/// longest axis slowest, the contiguous halves that the threads take of the
+/// elements and of the nodes meet on the block's smallest cross-section (bar
+/// of 100 x 16 x 5 elements: 102 nodes instead of about 1,800), so less data
+/// passes between the cores every cycle (docs/developer.md, the slow
+/// stretches); it is also the classic numbering across the short side for
+/// a narrow bandwidth.  Ties keep the as-built order: the later axis slowest,
+/// the earlier fastest.
+BlockOrder block_order(int ex, int ey, int ez);
+
 /// A structured block on the coordinate lines xs x ys x zs (each strictly
-/// increasing).  Node sets: xmin, xmax, ymin, ymax, zmin, zmax, all.  Face
+/// increasing), numbered by block_order (nodes and elements alike).  Node sets: xmin, xmax, ymin, ymax, zmin, zmax, all.  Face
 /// sets with outward normals: xmin, xmax, ymin, ymax, zmin, zmax.
 Mesh structured_block(const std::vector<double>& xs, const std::vector<double>& ys, const std::vector<double>& zs);
 
