@@ -11,9 +11,13 @@
 // reactions) are not saved.  Doubles are stored as raw bytes, so a restarted
 // run continues bit for bit.
 //
-// Layout: "drawbend-solver-state 1\n", then a fixed sequence of blocks, each a
-// 64-bit count followed by that many 8-byte values.  A count that does not
-// match the solver being restored (another deck or mesh) is an error.
+// Layout: "drawbend-solver-state 2\n", the mesh's fingerprint (64 bits,
+// fe::mesh_fingerprint), then a fixed sequence of blocks, each a 64-bit count
+// followed by that many 8-byte values.  A count that does not match the
+// solver being restored (another deck or mesh) is an error, and so is
+// another fingerprint: the same counts on another numbering (format 1 had no
+// fingerprint, and a structured block that fe::block_order numbers anew,
+// since 2026-11-29, would have restored its state onto the wrong nodes).
 #include <cstring>
 #include <stdexcept>
 
@@ -24,7 +28,8 @@ namespace drawbend::fe {
 
 namespace {
 
-constexpr const char* kMagic = "drawbend-solver-state 1\n";
+constexpr const char* kMagic = "drawbend-solver-state 2\n";
+constexpr const char* kMagicV1 = "drawbend-solver-state 1\n";
 
 struct Writer {
   std::string& out;
@@ -71,6 +76,7 @@ struct Reader {
 void Solver::save_state(std::string& out) const {
   out = kMagic;
   Writer w{out};
+  w.count(mesh_fingerprint(m_.mesh));
   const double scalars[] = {t_, dt_, dt0_, last_dt_, static_cast<double>(cycle_), static_cast<double>(step_index_),
                             step_time_, step_t_start_};
   w.doubles(scalars, std::size(scalars));
@@ -93,9 +99,17 @@ void Solver::save_state(std::string& out) const {
 }
 
 void Solver::load_state(const std::string& in, const std::string& source) {
+  if (in.compare(0, std::strlen(kMagicV1), kMagicV1) == 0)
+    throw InputError(source + ": checkpoint of format 1, without the mesh's fingerprint (drawbend before 2026-11-29, "
+                     "whose structured blocks may be numbered otherwise): run the deck again from the start");
   if (in.compare(0, std::strlen(kMagic), kMagic) != 0)
-    throw InputError(source + ": not a drawbend checkpoint (expected the header 'drawbend-solver-state 1')");
+    throw InputError(source + ": not a drawbend checkpoint (expected the header 'drawbend-solver-state 2')");
   Reader r{in, source, std::strlen(kMagic)};
+  const std::uint64_t fp = r.count(), here = mesh_fingerprint(m_.mesh);
+  if (fp != here)
+    throw InputError(source + ": checkpoint does not match this case's mesh (fingerprint " + std::to_string(fp) +
+                     ", this mesh " + std::to_string(here) +
+                     "): another mesh, or the same one numbered otherwise by another drawbend version");
   double scalars[8];
   r.doubles(scalars, 8, "the time and step counters");
   t_ = scalars[0];

@@ -4,6 +4,7 @@
 // Node numbering inside an element follows VTK_HEXAHEDRON: nodes 0-3 the
 // bottom face counter-clockwise seen from +zeta, nodes 4-7 the top face.
 #include <array>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -26,6 +27,14 @@ struct Mesh {
   void validate() const;  ///< indices in range, positive volumes; throws std::invalid_argument
 };
 
+/// A 64-bit fingerprint (FNV-1a) of the mesh's numbering and geometry: the
+/// node and element counts, every element's 8 node numbers and every node's
+/// reference coordinates, byte for byte.  Two meshes with the same counts
+/// but another numbering (fe::block_order) or another coordinate differ in
+/// it (but for the 2^-64 chance of a collision).  A checkpoint stores it,
+/// so that a state is never restored onto another numbering (fe/checkpoint.cpp).
+std::uint64_t mesh_fingerprint(const Mesh& m);
+
 /// Node-to-element-corner adjacency in CSR form, sorted by (element, corner),
 /// so that nodal sums run in a fixed order whatever the thread count.
 struct NodeCorners {
@@ -41,11 +50,14 @@ struct BlockOrder {
 };
 
 /// Elements that a row on the fastest axis must hold before block_order puts
-/// that axis first: the AVX-512 kernel's lane count, so that each of its
-/// blocks of eight elements lies on one row of consecutive nodes and loads as
-/// vectors (fe/element_kernel.hpp: nodes_run_on).  Fixed, not the running
-/// kernel's width: the numbering, and so every result's bits, must not depend
-/// on the instruction set.
+/// that axis first: the AVX-512 kernel's lane count.  A row of 8 or 16 (any
+/// multiple of 8: the blocks start at multiples of 8) puts each block of
+/// eight elements on one row of consecutive nodes, which loads as vectors
+/// (fe/element_kernel.hpp: nodes_run_on); another row of at least 8 has a
+/// block across the end of a row now and then, which takes the per-lane
+/// gather (a row of 12: one block in three).  Fixed, not the running
+/// kernel's width: the numbering, and so every result's bits, must not
+/// depend on the instruction set.
 inline constexpr int kMinRow = 8;
 
 /// The numbering of a block of ex x ey x ez elements.  As built (x fastest,
@@ -57,8 +69,10 @@ inline constexpr int kMinRow = 8;
 /// of 100 x 16 x 5 elements: 102 nodes instead of about 1,800), so less data
 /// passes between the cores every cycle (docs/developer.md, the slow
 /// stretches); it is also the classic numbering across the short side for
-/// a narrow bandwidth.  Ties keep the as-built order: the later axis slowest,
-/// the earlier fastest.
+/// a narrow bandwidth.  Ties keep the tied axes in their as-built order: of
+/// two axes tied for the most elements the later runs slowest (x = y > z
+/// still reorders, to x, z, y), of two tied for the fastest the earlier
+/// runs fastest.
 BlockOrder block_order(int ex, int ey, int ez);
 
 /// A structured block on the coordinate lines xs x ys x zs (each strictly

@@ -15,19 +15,28 @@
 //    n + 1 wherever element e has node n; the elements [0, 4000) and
 //    [4000, 8000), the halves that two threads take, share exactly the
 //    17 x 6 = 102 nodes of the plane x = 50 (numbered x fastest they would
-//    share 1,717 or more: the planes of z between the halves);
+//    share 1,818: a staircase of two half planes of z between the halves);
 //  - node sets ascending, xmin has 17 x 6 = 102 nodes all at x = 0; each face
 //    set covers its side's area with outward normals;
-//  - the block of 50 x 2 x 4 is numbered as built: node i + 51 (j + 3 k).
+//  - the block of 50 x 2 x 4 is numbered as built: node i + 51 (j + 3 k);
+//  - a checkpoint (fe::Solver::save_state) restores onto the same mesh, and
+//    is refused with an InputError naming the mesh onto the same block with
+//    its node numbers reversed (same counts, another numbering: what a
+//    change of block_order does to an old checkpoint), and refused with its
+//    own message when its header says format 1 (no fingerprint).
 #define BOOST_TEST_MODULE block_mesh
 #include <boost/test/unit_test.hpp>
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "core/csv.hpp"
 #include "fe/mesh.hpp"
+#include "fe/solver.hpp"
+#include "material/linear_elastic.hpp"
 
 using namespace drawbend;
 namespace tt = boost::test_tools;
@@ -121,4 +130,55 @@ BOOST_AUTO_TEST_CASE(narrow_strip_as_built) {
         BOOST_TEST((m.x[n] == i && m.y[n] == j && m.z[n] == k));
       }
   BOOST_TEST((m.hex[1][0] == 1 && m.hex[50][0] == 51));
+}
+
+namespace {
+fe::Model small_block() {
+  fe::Model m;
+  m.mesh = fe::structured_block(fe::uniform_lines(0, 10, 10), fe::uniform_lines(0, 8, 8), fe::uniform_lines(0, 1, 1));
+  m.material = std::make_shared<material::LinearElastic>(70000.0, 0.33, 2.7e-9);
+  fe::Step s;
+  s.duration = 2e-6;
+  s.velocities.push_back({"xmax", {1, 0, 0}, fe::History::constant(100.0)});
+  m.steps.push_back(s);
+  return m;
+}
+
+bool names_mesh(const InputError& e) { return std::string(e.what()).find("mesh") != std::string::npos; }
+bool names_format_1(const InputError& e) { return std::string(e.what()).find("format 1") != std::string::npos; }
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(checkpoint_of_another_numbering_is_refused) {
+  fe::Model m = small_block();
+  fe::Solver a(m);
+  a.run();
+  std::string state;
+  a.save_state(state);
+  fe::Model same = small_block();
+  fe::Solver b(same);
+  BOOST_CHECK_NO_THROW(b.load_state(state, "same"));
+  BOOST_TEST(b.x() == a.x(), tt::per_element());
+  // The same block, node n numbered N - 1 - n.
+  fe::Model rev = small_block();
+  fe::Mesh& r = rev.mesh;
+  const int N = r.num_nodes();
+  std::reverse(r.x.begin(), r.x.end());
+  std::reverse(r.y.begin(), r.y.end());
+  std::reverse(r.z.begin(), r.z.end());
+  for (auto& h : r.hex)
+    for (int& n : h) n = N - 1 - n;
+  for (auto& [name, set] : r.node_sets) {
+    for (int& n : set) n = N - 1 - n;
+    std::sort(set.begin(), set.end());
+  }
+  for (auto& [name, faces] : r.face_sets)
+    for (auto& q : faces)
+      for (int& n : q) n = N - 1 - n;
+  BOOST_TEST(fe::mesh_fingerprint(r) != fe::mesh_fingerprint(m.mesh));
+  fe::Solver c(rev);
+  BOOST_CHECK_EXCEPTION(c.load_state(state, "reversed"), InputError, names_mesh);
+  std::string v1 = state;
+  v1.replace(0, std::string("drawbend-solver-state 2\n").size(), "drawbend-solver-state 1\n");
+  fe::Solver d(same);
+  BOOST_CHECK_EXCEPTION(d.load_state(v1, "v1"), InputError, names_format_1);
 }
