@@ -22,6 +22,7 @@
 #include <stdexcept>
 
 #include "core/csv.hpp"
+#include "core/hash.hpp"
 #include "fe/solver.hpp"
 
 namespace drawbend::fe {
@@ -107,9 +108,8 @@ void Solver::load_state(const std::string& in, const std::string& source) {
   Reader r{in, source, std::strlen(kMagic)};
   const std::uint64_t fp = r.count(), here = mesh_fingerprint(m_.mesh);
   if (fp != here)
-    throw InputError(source + ": checkpoint does not match this case's mesh (fingerprint " + std::to_string(fp) +
-                     ", this mesh " + std::to_string(here) +
-                     "): another mesh, or the same one numbered otherwise by another drawbend version");
+    throw InputError(source + ": checkpoint does not match this case's mesh (fingerprint " + hex64(fp) + ", this mesh " +
+                     hex64(here) + "): another mesh, or the same one numbered otherwise by another drawbend version");
   double scalars[8];
   r.doubles(scalars, 8, "the time and step counters");
   t_ = scalars[0];

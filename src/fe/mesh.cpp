@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/hash.hpp"
+
 namespace drawbend::fe {
 
 namespace {
@@ -75,16 +77,12 @@ void Mesh::validate() const {
 }
 
 std::uint64_t mesh_fingerprint(const Mesh& m) {
-  std::uint64_t h = 1469598103934665603ULL;  // FNV-1a, 64 bits
-  auto bytes = [&h](const void* p, std::size_t n) {
-    const auto* b = static_cast<const unsigned char*>(p);
-    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ULL;
-  };
+  std::uint64_t h = fnv1a64({});
+  auto bytes = [&h](const void* p, std::size_t n) { h = fnv1a64({static_cast<const char*>(p), n}, h); };
   const std::int64_t counts[2] = {m.num_nodes(), m.num_elements()};
   bytes(counts, sizeof counts);
-  if (!m.hex.empty()) bytes(m.hex.data(), m.hex.size() * sizeof(m.hex[0]));
-  for (const auto* v : {&m.x, &m.y, &m.z})
-    if (!v->empty()) bytes(v->data(), v->size() * sizeof(double));
+  bytes(m.hex.data(), m.hex.size() * sizeof(m.hex[0]));
+  for (const auto* v : {&m.x, &m.y, &m.z}) bytes(v->data(), v->size() * sizeof(double));
   return h;
 }
 

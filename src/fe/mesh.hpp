@@ -27,7 +27,7 @@ struct Mesh {
   void validate() const;  ///< indices in range, positive volumes; throws std::invalid_argument
 };
 
-/// A 64-bit fingerprint (FNV-1a) of the mesh's numbering and geometry: the
+/// A 64-bit fingerprint (FNV-1a, core/hash.hpp) of the mesh's numbering and geometry: the
 /// node and element counts, every element's 8 node numbers and every node's
 /// reference coordinates, byte for byte.  Two meshes with the same counts
 /// but another numbering (fe::block_order) or another coordinate differ in
@@ -76,8 +76,9 @@ inline constexpr int kMinRow = 8;
 BlockOrder block_order(int ex, int ey, int ez);
 
 /// A structured block on the coordinate lines xs x ys x zs (each strictly
-/// increasing), numbered by block_order (nodes and elements alike).  Node sets: xmin, xmax, ymin, ymax, zmin, zmax, all.  Face
-/// sets with outward normals: xmin, xmax, ymin, ymax, zmin, zmax.
+/// increasing), numbered by block_order (nodes and elements alike).  Node
+/// sets (ascending): xmin, xmax, ymin, ymax, zmin, zmax, all.  Face sets with
+/// outward normals: xmin, xmax, ymin, ymax, zmin, zmax.
 Mesh structured_block(const std::vector<double>& xs, const std::vector<double>& ys, const std::vector<double>& zs);
 
 /// Coordinate lines: n equal intervals from a to b.
