@@ -68,13 +68,14 @@ inline void isotropic_from_curve(const CombinedParams& P, const T& s, T& R) {
 
 /// The residual lambda of update(): f = (sigma_bar(xi(dl)) - R(ep + dl)) (1 +
 /// kappa (F + G + H)), with xi and R; ts: the trial stress, an: the back
-/// stresses (sheet axes).
+/// stresses (sheet axes); seg: the curve segments of a nearby strain, on
+/// return those of ep + dl (curve_at_near: the values of curve_at).
 template <int W, class T>
 inline void combined_residual(const CombinedParams& P, const T ts[6], const T an[3][6], const T& ep, const T& s_ep,
-                              const T& dl, T xi[6], T& R, T& f) {
+                              const T& dl, LaneSegments<W, T>& seg, T xi[6], T& R, T& f) {
   T kin = {}, s_dl, h;
   T xstar[6] = {ts[0], ts[1], ts[2], ts[3], ts[4], ts[5]};
-  curve_at<W>(P.curve, ep + dl, s_dl, h);
+  curve_at_near<W>(P.curve, ep + dl, seg, s_dl, h);
   if (P.beta > 0) {
     for (int c = 0; c < 6; ++c) xstar[c] -= an[0][c];
     kin = P.beta * (s_dl - s_ep);
@@ -97,19 +98,21 @@ inline void combined_residual(const CombinedParams& P, const T ts[6], const T an
 /// dl of the plastic lanes: the bracket, then the Illinois secant, as update();
 /// xa and Ra: xi and R at each lane's dl (the residual's last evaluation
 /// there, kept by mask as a lane leaves the loop, so that nothing is
-/// evaluated again; update() keeps its last evaluation too).
+/// evaluated again; update() keeps its last evaluation too).  seg: in, the
+/// segments of ep; out, those of the last strain evaluated (each evaluation
+/// searches from the one before: the iterates close in on the root).
 template <int W, class T, class M>
 inline void combined_return(const CombinedParams& P, const T ts[6], const T an[3][6], const T& ep, const T& s_ep,
-                            const T& f0, const M& plastic, T& dl, T xa[6], T& Ra) {
+                            const T& f0, const M& plastic, LaneSegments<W, T>& seg, T& dl, T xa[6], T& Ra) {
   T xi[6], R, lo = {}, flo = f0, hi = f0 / (3.0 * P.G), fhi;
-  combined_residual<W>(P, ts, an, ep, s_ep, hi, xi, R, fhi);
+  combined_residual<W>(P, ts, an, ep, s_ep, hi, seg, xi, R, fhi);
   M active = plastic & (fhi > 0.0);
   for (int it = 0; it < 200 && any_lane<W>(active); ++it) {
     lo = active ? hi : lo;
     flo = active ? fhi : flo;
     hi = active ? hi * 2.0 : hi;
     T fn;
-    combined_residual<W>(P, ts, an, ep, s_ep, hi, xi, R, fn);
+    combined_residual<W>(P, ts, an, ep, s_ep, hi, seg, xi, R, fn);
     fhi = active ? fn : fhi;
     active = active & (fhi > 0.0);
   }
@@ -123,7 +126,7 @@ inline void combined_return(const CombinedParams& P, const T ts[6], const T an[3
     T x = hi - fhi * (hi - lo) / (fhi - flo);
     x = (x > lo) & (x < hi) ? x : 0.5 * (lo + hi);
     T fx;
-    combined_residual<W>(P, ts, an, ep, s_ep, x, xi, R, fx);
+    combined_residual<W>(P, ts, an, ep, s_ep, x, seg, xi, R, fx);
     dl = active ? x : dl;
     for (int c = 0; c < 6; ++c) xa[c] = active ? xi[c] : xa[c];
     Ra = active ? R : Ra;
@@ -144,10 +147,12 @@ inline void combined_return(const CombinedParams& P, const T ts[6], const T an[3
 
 /// CombinedPlasticity::update() of one point of W elements: s (in: the
 /// rotated stress) and st updated in place; Q: the sheet axes (Hill'48).
-/// `turn`: the spin w over dt rotates the back stresses and axes.
+/// `turn`: the spin w over dt rotates the back stresses and axes.  seg: out,
+/// curve segments of strains near the new plastic strains (a hint for
+/// combined_tangent_ratio).
 template <int W, class T>
 inline void combined_update(const CombinedParams& P, const T d[6], const T w[3], double dt, bool turn, T s[6],
-                            CombinedState<T>& st, T Q[3][3]) {
+                            CombinedState<T>& st, T Q[3][3], LaneSegments<W, T>& seg) {
   using M = decltype(T{} < T{});
   const int nb = P.nback;
   if (turn)
@@ -174,7 +179,9 @@ inline void combined_update(const CombinedParams& P, const T d[6], const T w[3],
     for (int k = 0; k < nb; ++k) xs[c] -= an[k][c];
   }
   T s_ep, h, R0, q0;
-  curve_at<W>(P.curve, st.ep, s_ep, h);
+  find_segments<W>(P.curve, st.ep, seg);
+  h = seg.h;
+  s_ep = seg.y + h * (st.ep - seg.x);  // curve_at
   isotropic_from_curve(P, s_ep, R0);
   hill_equivalent(P.hill, xs, q0);
   const T f0 = q0 - R0;
@@ -184,7 +191,7 @@ inline void combined_update(const CombinedParams& P, const T d[6], const T w[3],
     return;
   }
   T dl, xi[6], Rv;
-  combined_return<W>(P, ts, an, st.ep, s_ep, f0, plastic, dl, xi, Rv);  // with xi and R at the accepted dl
+  combined_return<W>(P, ts, an, st.ep, s_ep, f0, plastic, seg, dl, xi, Rv);  // with xi and R at the accepted dl
   // Back stresses from the flow direction T M xi / R, and the stress.
   const double F = P.hill.F, G = P.hill.G, H = P.hill.H;
   const T n[6] = {((G + H) * xi[0] - H * xi[1] - G * xi[2]) / Rv,
@@ -195,7 +202,7 @@ inline void combined_update(const CombinedParams& P, const T d[6], const T w[3],
                   P.hill.M * xi[5] / Rv};
   T sl[6] = {xi[0], xi[1], xi[2], xi[3], xi[4], xi[5]};
   T s_dl = s_ep;
-  if (P.beta > 0) curve_at<W>(P.curve, st.ep + dl, s_dl, h);
+  if (P.beta > 0) curve_at_near<W>(P.curve, st.ep + dl, seg, s_dl, h);
   for (int k = 0; k < nb; ++k) {
     T a, incr;
     if (P.beta > 0) {
@@ -226,10 +233,11 @@ inline void combined_update(const CombinedParams& P, const T d[6], const T w[3],
 }
 
 /// ratio = CombinedPlasticity::tangent_ratio() of W points (stress s, state
-/// st, sheet axes Q after the update).
+/// st, sheet axes Q after the update); seg: curve segments of nearby strains
+/// (combined_update's), used up.
 template <int W, class T>
 inline void combined_tangent_ratio(const CombinedParams& P, const T s[6], const CombinedState<T>& st, const T Q[3][3],
-                                   T& ratio) {
+                                   LaneSegments<W, T>& seg, T& ratio) {
   T xi[6];
   for (int c = 0; c < 6; ++c) {
     T alpha = {};
@@ -245,7 +253,7 @@ inline void combined_tangent_ratio(const CombinedParams& P, const T s[6], const 
   // the exponentials lane by lane and only in the lanes that use them (f above
   // 0.90, or NaN): proximity_ratio selects 1 where f <= 0.90 whatever H is.
   T sy, H, R, q;
-  curve_at<W>(P.curve, st.ep, sy, H);
+  curve_at_near<W>(P.curve, st.ep, seg, sy, H);
   isotropic_from_curve(P, sy, R);
   hill_equivalent(P.hill, xi, q);
   const T f = q / R;
@@ -268,14 +276,15 @@ inline void combined_points(const ElementView& ev, int e0, const T s[2][6], cons
   const bool turn = ev.spin && ev.dtp != 0.0;
   CombinedState<T> st[2];
   T Q[2][3][3];
+  LaneSegments<W, T> seg[2];
   lane_points<W>(
       ev, e0, s, deps, V, ratio, snew,
       [&](int gp, T* sn) {
         move_state<W, false>(ev, e0, gp, st[gp]);
-        combined_update<W>(ev.combined, deps[gp], spin[gp], ev.dtp, turn, sn, st[gp], Q[gp]);
+        combined_update<W>(ev.combined, deps[gp], spin[gp], ev.dtp, turn, sn, st[gp], Q[gp], seg[gp]);
         move_state<W, true>(ev, e0, gp, st[gp]);
       },
-      [&](int gp, const T* sn, T& r) { combined_tangent_ratio<W>(ev.combined, sn, st[gp], Q[gp], r); });
+      [&](int gp, const T* sn, T& r) { combined_tangent_ratio<W>(ev.combined, sn, st[gp], Q[gp], seg[gp], r); });
 }
 
 }  // namespace drawbend::fe::DRAWBEND_ISA::kernel

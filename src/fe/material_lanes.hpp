@@ -39,10 +39,12 @@ inline int curve_segment(const CurveTable& c, double ep) {
 
 /// curve_segment(c, ep), searched from segment k instead of the bins: the
 /// same segment (the one with x[k] <= ep < x[k+1] inside the table, 0 and last
-/// at its ends), cheaper when k is that of a nearby strain.
+/// at its ends; a NaN's is curve_segment's), cheaper when k is that of a
+/// nearby strain.
 inline int curve_segment_from(const CurveTable& c, double ep, int k) {
   if (ep >= c.x[c.last]) return c.last;
   if (ep <= 0.0) return 0;
+  if (!(ep == ep)) return curve_segment(c, ep);
   if (k >= c.last) k = c.last - 1;
   while (ep >= c.x[k + 1]) ++k;
   while (k > 0 && ep < c.x[k]) --k;
@@ -100,11 +102,40 @@ inline void find_segments(const CurveTable& c, const T& ep, LaneSegments<W, T>& 
   segment_ends(c, seg);
 }
 
+/// seg = find_segments(c, e, seg) of W strains e, with hint the segments of
+/// nearby strains (of find_segments or of this function): where every lane
+/// lies in its hint's segment (x[k] <= e < x[k+1], or e >= x[last] on the
+/// last), the hint itself, with no search and no table read; otherwise each
+/// lane searched from its hint's k (curve_segment_from, the same segment).
+/// The same values as find_segments.  seg may be hint.
+template <int W, class T>
+inline void find_segments_near(const CurveTable& c, const T& e, const LaneSegments<W, T>& hint,
+                               LaneSegments<W, T>& seg) {
+  if (!any_set(~((e >= hint.x) & (e < hint.end)))) {
+    if (&seg != &hint) seg = hint;
+    return;
+  }
+  int k[W];
+  for (int l = 0; l < W; ++l) k[l] = curve_segment_from(c, e[l], hint.k[l]);
+  for (int l = 0; l < W; ++l) seg.k[l] = k[l];
+  gather_segment<W>(c, seg.k, seg.x, seg.y, seg.h);
+  segment_ends(c, seg);
+}
+
 /// sy = HardeningCurve::stress(ep) and hk = slope(ep) of W plastic strains.
 template <int W, class T>
 inline void curve_at(const CurveTable& c, const T& ep, T& sy, T& hk) {
   LaneSegments<W, T> seg;
   find_segments<W>(c, ep, seg);
+  hk = seg.h;
+  sy = seg.y + hk * (ep - seg.x);
+}
+
+/// curve_at(c, ep, sy, hk) with seg (in: the segments of nearby strains, out:
+/// ep's own; find_segments_near): the same values.
+template <int W, class T>
+inline void curve_at_near(const CurveTable& c, const T& ep, LaneSegments<W, T>& seg, T& sy, T& hk) {
+  find_segments_near<W>(c, ep, seg, seg);
   hk = seg.h;
   sy = seg.y + hk * (ep - seg.x);
 }
