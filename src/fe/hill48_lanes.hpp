@@ -67,29 +67,18 @@ inline void sheet_frame(const T w[3], double dt, bool turn, T rd[3], T nd[3], T 
 }
 
 /// transform(Q, v, out, to_local): out = Q A Q^T (to_local) or Q^T A Q, A the
-/// symmetric tensor of the Voigt vector v (tensor shears).
+/// symmetric tensor of the Voigt vector v (tensor shears), as P (A P^T).
 template <bool to_local, class T>
 inline void sheet_transform(const T Q[3][3], const T v[6], T out[6]) {
   const T A[3][3] = {{v[0], v[3], v[5]}, {v[3], v[1], v[4]}, {v[5], v[4], v[2]}};
-  T B[3][3];
+  T P[3][3], C[3][3];
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      T s = {};
-      for (int k = 0; k < 3; ++k)
-        for (int m = 0; m < 3; ++m) {
-          if constexpr (to_local)
-            s += Q[i][k] * A[k][m] * Q[j][m];
-          else
-            s += Q[k][i] * A[k][m] * Q[m][j];
-        }
-      B[i][j] = s;
-    }
-  out[0] = B[0][0];
-  out[1] = B[1][1];
-  out[2] = B[2][2];
-  out[3] = 0.5 * (B[0][1] + B[1][0]);
-  out[4] = 0.5 * (B[1][2] + B[2][1]);
-  out[5] = 0.5 * (B[2][0] + B[0][2]);
+    for (int k = 0; k < 3; ++k) P[i][k] = to_local ? Q[i][k] : Q[k][i];
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j) C[k][j] = A[k][0] * P[j][0] + A[k][1] * P[j][1] + A[k][2] * P[j][2];
+  constexpr int I[6] = {0, 1, 2, 0, 1, 2}, J[6] = {0, 1, 2, 1, 2, 0};
+  for (int n = 0; n < 6; ++n)
+    out[n] = P[I[n]][0] * C[0][J[n]] + P[I[n]][1] * C[1][J[n]] + P[I[n]][2] * C[2][J[n]];
 }
 
 /// equivalent(x): q = sigma_bar(x), Hill'48 in the sheet axes.

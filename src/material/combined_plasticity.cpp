@@ -34,20 +34,20 @@ void to_matrix(const double v[6], double A[3][3]) {
   A[1][2] = A[2][1] = v[4];
   A[2][0] = A[0][2] = v[5];
 }
+// As P (A P^T) with P = Q or Q^T: 45 multiplications where the sum over
+// Q_ik A_km Q_jm term by term took 162 (fe/hill48_lanes.hpp's sheet_transform,
+// the same arithmetic in the same order).  B is symmetric, so its upper
+// triangle gives the shears.
 void transform(const double Q[3][3], const double v[6], double out[6], bool to_local) {
-  double A[3][3], B[3][3];
+  double A[3][3], P[3][3], C[3][3];
   to_matrix(v, A);
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      double s = 0;
-      for (int k = 0; k < 3; ++k)
-        for (int m = 0; m < 3; ++m) s += to_local ? Q[i][k] * A[k][m] * Q[j][m] : Q[k][i] * A[k][m] * Q[m][j];
-      B[i][j] = s;
-    }
-  out[0] = B[0][0]; out[1] = B[1][1]; out[2] = B[2][2];
-  out[3] = 0.5 * (B[0][1] + B[1][0]);
-  out[4] = 0.5 * (B[1][2] + B[2][1]);
-  out[5] = 0.5 * (B[2][0] + B[0][2]);
+    for (int k = 0; k < 3; ++k) P[i][k] = to_local ? Q[i][k] : Q[k][i];
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j) C[k][j] = A[k][0] * P[j][0] + A[k][1] * P[j][1] + A[k][2] * P[j][2];
+  constexpr int I[6] = {0, 1, 2, 0, 1, 2}, J[6] = {0, 1, 2, 1, 2, 0};
+  for (int n = 0; n < 6; ++n)
+    out[n] = P[I[n]][0] * C[0][J[n]] + P[I[n]][1] * C[1][J[n]] + P[I[n]][2] * C[2][J[n]];
 }
 void cross(const double a[3], const double b[3], double c[3]) {
   c[0] = a[1] * b[2] - a[2] * b[1];
