@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/deck_out.hpp"
+#include "cli/threads.hpp"
 #include "core/options.hpp"
 #include "sim/block_case.hpp"
 
@@ -37,8 +38,10 @@ int block_deck_command(int argc, char** argv) {
   opt.add(s.press_ramp, "press-ramp", "load ramp of the press step [s] (< --press-time)");
   opt.add(s.slide_time, "slide-time", "duration of the slide step [s]");
   opt.add(s.speed_ramp, "speed-ramp", "speed ramp of the slide step [s] (< --slide-time)");
+  int threads = 0;
+  opt.add(threads, "threads", "OpenMP threads written into the deck's [numerics] for `drawbend run` (0: none written, the default)");
   if (!opt.parse(argc, argv)) return 0;
-  return write_deck_out(sim::block_deck_text(s), out, "block-deck");
+  return write_deck_out(deck_with_threads(sim::block_deck_text(s), threads), out, "block-deck");
 }
 
 }  // namespace drawbend::cli

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "cli/threads.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
 #include "sim/cup_case.hpp"
@@ -34,7 +35,10 @@ int cup_deck_command(int argc, char** argv) {
   opt.add(s.friction, "friction",
           "friction on every contact: empty = the base deck's (Table 6.1 mu(p, v), RD along x); none = "
           "frictionless; or a Table 6.1-format nodes CSV");
+  int threads = 0;
+  opt.add(threads, "threads", "OpenMP threads written into the deck's [numerics] for `drawbend run` (0: none written, the default)");
   if (!opt.parse(argc, argv)) return 0;
+  check_threads(threads);
   s.cycles = cycles;
   if (!(s.speed > 0)) throw std::invalid_argument("--speed: expected a punch speed > 0 mm/s, found " + fmt(s.speed));
   if (!(s.stroke > 0)) throw std::invalid_argument("--stroke: expected a travel > 0 mm, found " + fmt(s.stroke));
@@ -43,7 +47,7 @@ int cup_deck_command(int argc, char** argv) {
   if (punch_radius < 0 || die_radius < 0) throw std::invalid_argument("--punch-radius/--die-radius: expected >= 0 mm");
   if (punch_radius > 0) s.punch_radius = punch_radius;
   if (die_radius > 0) s.die_radius = die_radius;
-  std::cout << sim::cup_deck_text(s);
+  std::cout << deck_with_threads(sim::cup_deck_text(s), threads);
   return 0;
 }
 

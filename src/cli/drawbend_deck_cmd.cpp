@@ -15,6 +15,7 @@
 #endif
 
 #include "analysis/rope.hpp"
+#include "cli/threads.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
 #include "sim/drawbend_case.hpp"
@@ -64,9 +65,11 @@ int drawbend_deck_command(int argc, char** argv) {
   opt.add(bending_force, "bending-force",
           "F_B [N] on the --basis for mu by Eq. (2.3), e.g. F_Y - F_X of a frictionless run (0: Swift's Eq. (2.1))");
   opt.add(yield_stress, "yield-stress", "yield stress [MPa] of Swift's F_B estimate (0: Table 5.1, RD)");
-  opt.add(threads, "threads", "OpenMP threads of the run (0: OMP_NUM_THREADS or all)");
+  opt.add(threads, "threads",
+          "OpenMP threads of the run (0: OMP_NUM_THREADS or all); without --run, written into the deck's [numerics]");
   opt.add(run_dir, "run", "run the deck into this directory instead of printing it");
   if (!opt.parse(argc, argv)) return 0;
+  check_threads(threads);
   if (basis != "full" && basis != "half")
     throw std::invalid_argument("--basis: expected full or half, found '" + basis + "'");
   if (s.snapshots < 1) throw std::invalid_argument("--frames: expected at least 1");
@@ -81,12 +84,10 @@ int drawbend_deck_command(int argc, char** argv) {
   if (run_dir.empty()) {
     std::cout << "# back_tension in this deck is on the half model: " << fmt(s.back_tension, 6) << " N ("
               << fmt(back_tension, 6) << " N on the " << tag << ")\n"
-              << sim::deck_text(s);
+              << deck_with_threads(sim::deck_text(s), threads);
     return 0;
   }
-#ifdef _OPENMP
-  if (threads > 0) omp_set_num_threads(threads);
-#endif
+  apply_threads(threads);
   const sim::DrawBendResult r = sim::run_drawbend(s, run_dir, false, false);
   const double FX = shown * r.F_back, FY = shown * r.F_out, theta = M_PI / 2;
   std::cout << "forces on the " << tag << " (the model is the half strip" << (full ? ", doubled" : "") << "):\n"

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "cli/exit_codes.hpp"
+#include "cli/threads.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
 #include "loop/export.hpp"
@@ -28,7 +29,7 @@ int export_main(int argc, char** argv) {
   opt.add(threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all; the export itself is serial)");
   return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
-    if (threads > 0) omp_set_num_threads(threads);
+    apply_threads(threads);
     const loop::ExportModel m = loop::read_friction_model(path);
     loop::ExportResult r;
     std::string ext;

@@ -10,6 +10,7 @@
 // Exit codes: 0 ok, 2 bad input, 3 numerical failure.
 #include "cli/exit_codes.hpp"
 #include "cli/loop_cmd.hpp"
+#include "cli/threads.hpp"
 
 #include <omp.h>
 
@@ -119,7 +120,7 @@ int loop_main(int argc, char** argv) {
   }
   return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
-    if (threads > 0) omp_set_num_threads(threads);
+    apply_threads(threads);
     const BendingSource bsrc = bending_source(bending);  // throws on an unknown name
     lo.bending_linear = bending != "constant";
     lo.progress = true;
@@ -175,7 +176,7 @@ int synth_main(int argc, char** argv) {
   opt.add(threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all)");
   return with_exit_codes([&] {
     if (!opt.parse(argc, argv)) return 0;
-    if (threads > 0) omp_set_num_threads(threads);
+    apply_threads(threads);
     ensure_writable_dir(out, "--out");
     if (from_thesis) {
       const Dataset d = thesis_dataset(data_dir + "/thesis", points);

@@ -17,6 +17,7 @@
 #include "io/deck.hpp"
 #include "io/run_case.hpp"
 #include "cli/exit_codes.hpp"
+#include "cli/threads.hpp"
 
 namespace drawbend::cli {
 int drawbend_deck_command(int argc, char** argv);
@@ -101,6 +102,7 @@ int main(int argc, char** argv) {
   opt.add(halt, "halt-after-cycles", "stop after the first checkpoint at or beyond this cycle (tests restarts)");
   return cli::with_exit_codes([&] {
     if (!opt.parse(argc - (help ? 1 : 2), argv + (help ? 1 : 2))) return 0;
+    cli::check_threads(ro.threads);
     ro.quiet = quiet;
     if (!(ro.progress_every_s > 0) || !std::isfinite(ro.progress_every_s))
       throw std::invalid_argument("--progress-every must be a positive number of seconds");

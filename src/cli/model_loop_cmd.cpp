@@ -16,6 +16,7 @@
 
 #include "core/csv.hpp"
 #include "cli/loop_cmd.hpp"
+#include "sim/case_pool.hpp"
 #include "core/options.hpp"
 #include "sim/fe_options.hpp"
 #include "sim/model_loop.hpp"
@@ -53,6 +54,10 @@ int model_loop_command(int argc, char** argv, const char* name) {
   opt.add(s.element_length, "element-length", "element length along the strip [mm]");
   opt.add(s.across, "across", "elements across the half width");
   opt.add(s.hardening, "hardening", "hardening curve CSV of the base (isotropic) model");
+  int threads = 0;
+  opt.add(threads, "threads",
+          "threads of the FE runs in all: cases side by side times threads within a case (0: DRAWBEND_JOBS cases "
+          "side by side on all hardware threads)");
   if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
     if (!opt.parse(argc, argv)) return 0;
     throw InputError(me + ": missing DATA.csv (columns pin_diameter_mm, back_tension_N, bending_force_N; --help lists "
@@ -74,6 +79,7 @@ int model_loop_command(int argc, char** argv, const char* name) {
   need(s.across >= 1, "--across: expected a whole number >= 1, found " + std::to_string(s.across));
   need(std::ifstream(s.hardening).good(), "--hardening: cannot open '" + s.hardening + "'");
   need(cfg.min_gain >= 0, "--min-gain: expected a number >= 0, found " + fmt(cfg.min_gain));
+  need(threads >= 0, "--threads: expected a whole number >= 0 (0: the default), found " + std::to_string(threads));
   std::vector<sim::ModelCandidate> cands;
   std::stringstream ss(candidates);
   for (std::string tok; std::getline(ss, tok, ',');) {
@@ -85,6 +91,7 @@ int model_loop_command(int argc, char** argv, const char* name) {
     }
   }
   if (!bad.empty()) throw InputError(bad);
+  sim::set_case_threads(threads);
   if (s.mass_scaling == 0) s.mass_scaling = sim::mass_scaling_for_speed(sim::kQuickMassScaling, s.speed);
   bool on_fit = false;
   for (const auto& p : points) on_fit = on_fit || std::abs(p.pin_mm - cfg.fit_pin) < 1e-6 * cfg.fit_pin;

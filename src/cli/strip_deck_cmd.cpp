@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/deck_out.hpp"
+#include "cli/threads.hpp"
 #include "core/options.hpp"
 #include "sim/strip_draw_case.hpp"
 
@@ -40,8 +41,10 @@ int strip_deck_command(int argc, char** argv) {
   opt.add(s.press_time, "press-time", "duration of the press step [s]");
   opt.add(s.force_ramp, "force-ramp", "die force ramp [s] (<= --press-time)");
   opt.add(s.speed_ramp, "speed-ramp", "drawing speed ramp [s]");
+  int threads = 0;
+  opt.add(threads, "threads", "OpenMP threads written into the deck's [numerics] for `drawbend run` (0: none written, the default)");
   if (!opt.parse(argc, argv)) return 0;
-  return write_deck_out(sim::strip_draw_deck_text(s), out, "strip-deck");
+  return write_deck_out(deck_with_threads(sim::strip_draw_deck_text(s), threads), out, "strip-deck");
 }
 
 }  // namespace drawbend::cli

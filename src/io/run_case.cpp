@@ -220,6 +220,12 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
     log << "  estimate: about " << fmt(deck.cost.cycles, 3) << " cycles at the initial step (limit "
         << fmt_shortest(deck.limits.max_cycles) << "), memory about " << fmt(deck.cost.memory_mb, 3) << " MB (limit "
         << fmt_shortest(deck.limits.max_memory_mb) << "); [limits] in the deck raises them\n";
+  log << "  threads: " << omp_get_max_threads() << " ("
+      << (opt.threads > 0    ? "--threads"
+          : deck.threads > 0 ? "the deck's [numerics] threads"
+                             : "the process's OpenMP default: OMP_NUM_THREADS, a case pool's share, else every "
+                               "hardware thread")
+      << ")\n";
   // History file.
   std::vector<std::string> header = run_output::run_history_columns();
   std::vector<int> elements;  // per signal: the tracked element of a "strain" signal

@@ -22,10 +22,17 @@ int hardware_threads() {
 #ifdef _OPENMP
   return std::max(1, omp_get_num_procs());
 #else
-  return std::max(1u, std::thread::hardware_concurrency());
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 #endif
 }
+std::atomic<int> g_case_threads{0};  // set_case_threads(); 0: the hardware threads
+int pool_threads() {
+  const int n = g_case_threads.load();
+  return n > 0 ? n : hardware_threads();
+}
 }  // namespace
+
+void set_case_threads(int n) { g_case_threads.store(std::max(0, n)); }
 
 int default_case_jobs() {
   if (const char* e = std::getenv("DRAWBEND_JOBS")) {
@@ -33,7 +40,7 @@ int default_case_jobs() {
     if (j >= 1) return j;
     std::cerr << "warning: DRAWBEND_JOBS='" << e << "' is not a positive integer; using the hardware threads\n";
   }
-  return hardware_threads();
+  return pool_threads();
 }
 
 void run_cases(std::size_t n, const std::function<void(std::size_t)>& f, const std::vector<double>& cost, int jobs) {
@@ -42,8 +49,9 @@ void run_cases(std::size_t n, const std::function<void(std::size_t)>& f, const s
   std::iota(order.begin(), order.end(), std::size_t{0});
   if (cost.size() == n)
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
-  const int nw = static_cast<int>(std::min<std::size_t>(n, static_cast<std::size_t>(std::max(1, jobs))));
-  const int threads_each = std::max(1, hardware_threads() / nw);
+  const int cap = g_case_threads.load() > 0 ? std::min(jobs, g_case_threads.load()) : jobs;
+  const int nw = static_cast<int>(std::min<std::size_t>(n, static_cast<std::size_t>(std::max(1, cap))));
+  const int threads_each = std::max(1, pool_threads() / nw);
   std::vector<std::exception_ptr> err(n);
   std::atomic<std::size_t> next{0};
   auto worker = [&]() {

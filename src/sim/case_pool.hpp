@@ -13,7 +13,7 @@
 // running cases have finished (the first by case order).
 //
 // jobs: DRAWBEND_JOBS from the environment if set (1 = one case at a time),
-// otherwise the number of hardware threads.
+// otherwise the number of hardware threads; set_case_threads() caps both.
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -23,11 +23,17 @@
 
 namespace drawbend::sim {
 
-/// Concurrent cases: DRAWBEND_JOBS, else hardware threads (>= 1).
+/// Concurrent cases: DRAWBEND_JOBS, else the pool's threads (>= 1).
 int default_case_jobs();
 
-/// Run f(0..n-1), `jobs` at a time, largest `cost` first (cost may be empty).
-/// Each call sees omp_get_max_threads() = max(1, hardware threads / jobs).
+/// The threads the pool may use in all, cases side by side times each one's
+/// OpenMP threads: n > 0 caps them at n (`model-loop --threads N`), also
+/// against DRAWBEND_JOBS; 0, the default, is the hardware threads.
+void set_case_threads(int n);
+
+/// Run f(0..n-1), `jobs` at a time (at most the pool's threads), largest
+/// `cost` first (cost may be empty).  Each call sees omp_get_max_threads() =
+/// max(1, the pool's threads / the cases side by side).
 void run_cases(std::size_t n, const std::function<void(std::size_t)>& f, const std::vector<double>& cost = {},
                int jobs = default_case_jobs());
 

@@ -7,6 +7,11 @@
 //  - Cases 2 and 5 throw: the other cases still run (6 of 8 done), and the
 //    exception rethrown is case 2's (the first by case order).
 //  - Each case sees max(1, hardware threads / workers) OpenMP threads.
+//  - set_case_threads(n) caps the threads in all (`model-loop --threads`):
+//    with n = 1 and 2 jobs asked for, 6 cases run one at a time (never two
+//    at once) with 1 OpenMP thread each; with n = 3 and 3 jobs, 3 threads
+//    each for 1 case and 1 each for 3 cases; set_case_threads(0) restores
+//    the hardware threads.
 //  - A case run before under another name (sim::find_same_run): in a folder
 //    holding runs "a" and "b" with the deck of spec s under the names
 //    "ch5_base" and "other", and a summary each (s: the quick draw-bend deck,
@@ -17,7 +22,9 @@
 #define BOOST_TEST_MODULE case_pool
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -84,6 +91,49 @@ BOOST_AUTO_TEST_CASE(threads_per_case) {
   for (int t : seen) BOOST_TEST(t == std::max(1, hw / 2));
 }
 #endif
+
+BOOST_AUTO_TEST_CASE(thread_budget_caps_cases_and_threads) {
+  using drawbend::sim::set_case_threads;
+  auto run = [](std::size_t n, int jobs, int& most_at_once, std::vector<int>& threads) {
+    std::mutex m;
+    int now = 0;
+    most_at_once = 0;
+    threads.clear();
+    run_cases(n, [&](std::size_t) {
+      {
+        std::lock_guard<std::mutex> lock(m);
+        most_at_once = std::max(most_at_once, ++now);
+#ifdef _OPENMP
+        threads.push_back(omp_get_max_threads());
+#else
+        threads.push_back(1);
+#endif
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));  // long enough to overlap if allowed
+      std::lock_guard<std::mutex> lock(m);
+      --now;
+    }, {}, jobs);
+  };
+  int most = 0;
+  std::vector<int> threads;
+  set_case_threads(1);
+  run(6, 2, most, threads);
+  BOOST_TEST(most == 1);
+  BOOST_TEST(threads.size() == 6u);
+  for (int t : threads) BOOST_TEST(t == 1);
+  set_case_threads(3);
+#ifdef _OPENMP
+  run(1, 3, most, threads);
+  BOOST_TEST(threads == std::vector<int>{3}, boost::test_tools::per_element());
+#endif
+  run(3, 3, most, threads);
+  for (int t : threads) BOOST_TEST(t == 1);
+  set_case_threads(0);
+#ifdef _OPENMP
+  run(1, 1, most, threads);
+  BOOST_TEST(threads == std::vector<int>{omp_get_num_procs()}, boost::test_tools::per_element());
+#endif
+}
 
 BOOST_AUTO_TEST_CASE(same_run_found_under_another_name) {
   namespace fs = std::filesystem;

@@ -1,0 +1,57 @@
+#pragma once
+// `--threads N` of every drawbend command (issue 22, item 5).  N >= 0, 0
+// meaning the default (OMP_NUM_THREADS, else every hardware thread; a deck's
+// own [numerics] threads for `run`).  A negative N is an input error (exit 2),
+// not the default in disguise.
+//   - Commands that compute (loop, synth, export, drawbend-deck --run) set the
+//     OpenMP threads with apply_threads();
+//   - `run` passes N to io::run_case() (the deck's value when N = 0);
+//   - `model-loop` (and `loop --model fe`) gives its FE runs N threads in all
+//     (sim::set_case_threads: cases side by side, threads within a case);
+//   - commands that write a deck (block-deck, strip-deck, cup-deck, and
+//     drawbend-deck without --run) write N into the deck's [numerics] threads,
+//     so that `drawbend run` of that deck uses it (deck_with_threads).
+#include <string>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "core/csv.hpp"
+
+namespace drawbend::cli {
+
+/// Throws an InputError unless n >= 0.
+inline void check_threads(int n) {
+  if (n < 0)
+    throw InputError("--threads: expected a whole number >= 0 (0: the default), found " + std::to_string(n));
+}
+
+/// check_threads(n), then n OpenMP threads if n > 0.
+inline void apply_threads(int n) {
+  check_threads(n);
+#ifdef _OPENMP
+  if (n > 0) omp_set_num_threads(n);
+#endif
+}
+
+/// A deck's text with `threads = n` as the first key of its [numerics] table
+/// (appended as a table of its own if the deck has none); the text as it was
+/// for n = 0.  For decks written by our builders, which never set threads.
+inline std::string deck_with_threads(const std::string& text, int n) {
+  check_threads(n);
+  if (n == 0) return text;
+  const std::string line = "threads = " + std::to_string(n) + "  # OpenMP threads of `drawbend run` (--threads)\n";
+  const std::string head = "[numerics]\n";
+  std::size_t at = std::string::npos;
+  if (text.rfind(head, 0) == 0)
+    at = 0;
+  else if (const std::size_t p = text.find('\n' + head); p != std::string::npos)
+    at = p + 1;
+  if (at == std::string::npos) return text + (text.empty() || text.back() == '\n' ? "\n" : "\n\n") + head + line;
+  std::string out = text;
+  out.insert(at + head.size(), line);
+  return out;
+}
+
+}  // namespace drawbend::cli
