@@ -141,7 +141,11 @@ void node_forces(const ContactView& v, int k, double dt) {
   const int surf = closest_surface(v, {v.x[i], v.y[i], v.z[i]}, L, best, n, foot);
   Vec3& F = v.force[k];
   if (surf < 0) {
-    c = ContactNode{i, c.area};
+    // Out of contact: the node's state reset (area kept).  A node already
+    // reset is left as it is: only the contact branch below, and a
+    // checkpoint's copy of a reset state, make its surface >= 0 or its other
+    // fields non-zero, so the bits are the same.
+    if (c.surface >= 0) c = ContactNode{i, c.area};
     F = {0, 0, 0};
     return;
   }

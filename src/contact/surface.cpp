@@ -41,9 +41,9 @@ bool penetration(const Surface& s, const Vec3& offset, const Vec3& x, double sea
       const Vec3 radial = axpy(-za, s.axis, d);
       const double rr = norm(radial);
       if (rr == 0.0) return false;
-      const Vec3 er = {radial[0] / rr, radial[1] / rr, radial[2] / rr};
       const double g = s.inside ? s.R - rr : rr - s.R;  // distance on the free side
       if (g > search || g < -search) return false;
+      const Vec3 er = {radial[0] / rr, radial[1] / rr, radial[2] / rr};  // (only past the test: most nodes are far)
       depth = -g;
       n = s.inside ? Vec3{-er[0], -er[1], -er[2]} : er;
       foot = axpy(s.R, er, axpy(za, s.axis, o));
@@ -54,7 +54,6 @@ bool penetration(const Surface& s, const Vec3& offset, const Vec3& x, double sea
       const Vec3 radial = axpy(-za, s.axis, d);
       const double rr = norm(radial);
       if (rr == 0.0) return false;
-      const Vec3 er = {radial[0] / rr, radial[1] / rr, radial[2] / rr};
       const double dr = rr - s.R;  // in the meridional plane: (dr, za) from the tube centre
       // Far outside the tube: dist >= |dr| and >= |za| (hypot rounds faithfully), so
       // then g = dist - r > search too; the same answer without hypot and atan2.
@@ -65,6 +64,7 @@ bool penetration(const Surface& s, const Vec3& offset, const Vec3& x, double sea
       if (g > search || g < -search) return false;  // before the angle: the answer does not depend on the order
       const double angle = std::atan2(za, dr);
       if (angle < s.a_min || angle > s.a_max) return false;
+      const Vec3 er = {radial[0] / rr, radial[1] / rr, radial[2] / rr};
       depth = -g;
       const double c = dr / dist, sn = za / dist;
       n = {c * er[0] + sn * s.axis[0], c * er[1] + sn * s.axis[1], c * er[2] + sn * s.axis[2]};
