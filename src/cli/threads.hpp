@@ -35,23 +35,12 @@ inline void apply_threads(int n) {
 #endif
 }
 
-/// A deck's text with `threads = n` as the first key of its [numerics] table
-/// (appended as a table of its own if the deck has none); the text as it was
-/// for n = 0.  For decks written by our builders, which never set threads.
-inline std::string deck_with_threads(const std::string& text, int n) {
-  check_threads(n);
-  if (n == 0) return text;
-  const std::string line = "threads = " + std::to_string(n) + "  # OpenMP threads of `drawbend run` (--threads)\n";
-  const std::string head = "[numerics]\n";
-  std::size_t at = std::string::npos;
-  if (text.rfind(head, 0) == 0)
-    at = 0;
-  else if (const std::size_t p = text.find('\n' + head); p != std::string::npos)
-    at = p + 1;
-  if (at == std::string::npos) return text + (text.empty() || text.back() == '\n' ? "\n" : "\n\n") + head + line;
-  std::string out = text;
-  out.insert(at + head.size(), line);
-  return out;
-}
+/// A deck's text with `threads = n` in its [numerics] table: the table's own
+/// `threads` line replaced if it has one (a cup deck's --base may), else the
+/// line inserted as the table's first key, else a [numerics] table appended;
+/// the text as it was for n = 0.  The result is parsed again, and a deck in
+/// which numerics.threads is not n (a layout this line-based edit does not
+/// know) is an error, never a deck that `drawbend run` would refuse.
+std::string deck_with_threads(const std::string& text, int n);
 
 }  // namespace drawbend::cli

@@ -223,8 +223,8 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   log << "  threads: " << omp_get_max_threads() << " ("
       << (opt.threads > 0    ? "--threads"
           : deck.threads > 0 ? "the deck's [numerics] threads"
-                             : "the process's OpenMP default: OMP_NUM_THREADS, a case pool's share, else every "
-                               "hardware thread")
+                             : "set by the process: OMP_NUM_THREADS, the calling command (drawbend-deck --run "
+                               "--threads) or a case pool's share, else every hardware thread")
       << ")\n";
   // History file.
   std::vector<std::string> header = run_output::run_history_columns();

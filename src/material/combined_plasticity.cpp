@@ -36,8 +36,9 @@ void to_matrix(const double v[6], double A[3][3]) {
 }
 // As P (A P^T) with P = Q or Q^T: 45 multiplications where the sum over
 // Q_ik A_km Q_jm term by term took 162 (fe/hill48_lanes.hpp's sheet_transform,
-// the same arithmetic in the same order).  B is symmetric, so its upper
-// triangle gives the shears.
+// the same arithmetic in the same order).  B is symmetric in exact
+// arithmetic, so one entry of each off-diagonal pair gives its shear (B01,
+// B12, B20; the term-by-term form averaged both).
 void transform(const double Q[3][3], const double v[6], double out[6], bool to_local) {
   double A[3][3], P[3][3], C[3][3];
   to_matrix(v, A);

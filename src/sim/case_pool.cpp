@@ -49,9 +49,10 @@ void run_cases(std::size_t n, const std::function<void(std::size_t)>& f, const s
   std::iota(order.begin(), order.end(), std::size_t{0});
   if (cost.size() == n)
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
-  const int cap = g_case_threads.load() > 0 ? std::min(jobs, g_case_threads.load()) : jobs;
+  const int budget = g_case_threads.load();
+  const int cap = budget > 0 ? std::min(jobs, budget) : jobs;
   const int nw = static_cast<int>(std::min<std::size_t>(n, static_cast<std::size_t>(std::max(1, cap))));
-  const int threads_each = std::max(1, pool_threads() / nw);
+  const int threads_each = std::max(1, (budget > 0 ? budget : hardware_threads()) / nw);
   std::vector<std::exception_ptr> err(n);
   std::atomic<std::size_t> next{0};
   auto worker = [&]() {
@@ -67,8 +68,14 @@ void run_cases(std::size_t n, const std::function<void(std::size_t)>& f, const s
       }
     }
   };
-  if (nw == 1) {
+  if (nw == 1) {  // on the calling thread: its OpenMP setting restored after
+#ifdef _OPENMP
+    const int before = omp_get_max_threads();
+#endif
     worker();
+#ifdef _OPENMP
+    omp_set_num_threads(before);
+#endif
   } else {
     std::vector<std::thread> pool;
     for (int w = 0; w < nw; ++w) pool.emplace_back(worker);

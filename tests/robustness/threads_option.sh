@@ -7,6 +7,9 @@
 #  - block-deck, strip-deck, cup-deck and drawbend-deck (without --run) with
 #    --threads 2 write "threads = 2" as a key of the deck's [numerics] table,
 #    and without --threads write no threads key (the decks as before);
+#  - cup-deck --threads 2 on a --base deck whose [numerics] already has
+#    threads = 3 replaces that key (one threads key, = 2), and `drawbend run`
+#    reads the deck and says "threads: 2 (the deck's [numerics] threads)";
 #  - `drawbend run` of the block deck written with --threads 1 runs, and its
 #    log says "threads: 1 (the deck's [numerics] threads)"; with --threads 2
 #    on the command line it says "threads: 2 (--threads)".
@@ -55,6 +58,19 @@ for cmd in block-deck strip-deck cup-deck drawbend-deck; do
   "$db" $cmd > "$tmp/$cmd.plain.toml" 2> /dev/null
   if grep -q '^threads' "$tmp/$cmd.plain.toml"; then bad "$cmd without --threads wrote a threads key"; fi
 done
+
+data=$(cd "$(dirname "$0")/../../data" && pwd)
+sed -e "s#\"\.\./#\"$data/#g" -e 's/^\[numerics\]$/[numerics]\nthreads = 3/' "$data/cases/cup_draw.toml" > "$tmp/cup_base.toml"
+grep -q '^threads = 3' "$tmp/cup_base.toml" || bad "the test's base deck has no threads = 3"
+"$db" cup-deck --base "$tmp/cup_base.toml" --threads 2 --stroke 1 --cycles 600 > "$tmp/cup_t.toml" || bad "cup-deck --base --threads 2: exit $?"
+if [ "$(grep -c '^threads' "$tmp/cup_t.toml")" = 1 ] && in_numerics "$tmp/cup_t.toml"; then
+  echo "ok   cup-deck --base (threads = 3) --threads 2: one threads key, = 2"
+else
+  bad "cup-deck --base --threads 2: $(grep -n '^threads' "$tmp/cup_t.toml" | tr '\n' ' ')"
+fi
+"$db" run "$tmp/cup_t.toml" --out "$tmp/cup_run" --quiet > "$tmp/cup_run.log" 2>&1 || bad "run of that cup deck: exit $?"
+grep -q "threads: 2 (the deck's \[numerics\] threads)" "$tmp/cup_run.log" && echo "ok   run of that cup deck: threads: 2" ||
+  bad "cup run log: $(grep -m3 -E 'threads|error' "$tmp/cup_run.log")"
 
 "$db" block-deck --threads 1 --out "$tmp/block1.toml" > /dev/null || bad "block-deck --threads 1 --out"
 "$db" run "$tmp/block1.toml" --out "$tmp/run1" --quiet > "$tmp/run1.log" 2>&1 || bad "run of the --threads 1 deck: exit $?"
