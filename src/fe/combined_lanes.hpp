@@ -180,8 +180,7 @@ inline void combined_update(const CombinedParams& P, const T d[6], const T w[3],
   }
   T s_ep, h, R0, q0;
   find_segments<W>(P.curve, st.ep, seg);
-  h = seg.h;
-  s_ep = seg.y + h * (st.ep - seg.x);  // curve_at
+  curve_value(seg, st.ep, s_ep, h);  // curve_at, keeping ep's segments
   isotropic_from_curve(P, s_ep, R0);
   hill_equivalent(P.hill, xs, q0);
   const T f0 = q0 - R0;

@@ -102,24 +102,25 @@ inline void find_segments(const CurveTable& c, const T& ep, LaneSegments<W, T>& 
   segment_ends(c, seg);
 }
 
-/// seg = find_segments(c, e, seg) of W strains e, with hint the segments of
-/// nearby strains (of find_segments or of this function): where every lane
-/// lies in its hint's segment (x[k] <= e < x[k+1], or e >= x[last] on the
-/// last), the hint itself, with no search and no table read; otherwise each
-/// lane searched from its hint's k (curve_segment_from, the same segment).
-/// The same values as find_segments.  seg may be hint.
+/// seg = the segments of W strains e (the values find_segments gives), from
+/// seg = the segments of nearby strains (of find_segments or of this
+/// function): where every lane lies in its segment (x[k] <= e < x[k+1], or
+/// e >= x[last] on the last), seg stays as it is, with no search and no table
+/// read; otherwise each lane is searched from its k (curve_segment_from, the
+/// same segment).
 template <int W, class T>
-inline void find_segments_near(const CurveTable& c, const T& e, const LaneSegments<W, T>& hint,
-                               LaneSegments<W, T>& seg) {
-  if (!any_set(~((e >= hint.x) & (e < hint.end)))) {
-    if (&seg != &hint) seg = hint;
-    return;
-  }
-  int k[W];
-  for (int l = 0; l < W; ++l) k[l] = curve_segment_from(c, e[l], hint.k[l]);
-  for (int l = 0; l < W; ++l) seg.k[l] = k[l];
+inline void find_segments_near(const CurveTable& c, const T& e, LaneSegments<W, T>& seg) {
+  if (!any_set(~((e >= seg.x) & (e < seg.end)))) return;
+  for (int l = 0; l < W; ++l) seg.k[l] = curve_segment_from(c, e[l], seg.k[l]);
   gather_segment<W>(c, seg.k, seg.x, seg.y, seg.h);
   segment_ends(c, seg);
+}
+
+/// sy = HardeningCurve::stress(ep) and hk = slope(ep) on ep's segments seg.
+template <int W, class T>
+inline void curve_value(const LaneSegments<W, T>& seg, const T& ep, T& sy, T& hk) {
+  hk = seg.h;
+  sy = seg.y + hk * (ep - seg.x);
 }
 
 /// sy = HardeningCurve::stress(ep) and hk = slope(ep) of W plastic strains.
@@ -127,17 +128,15 @@ template <int W, class T>
 inline void curve_at(const CurveTable& c, const T& ep, T& sy, T& hk) {
   LaneSegments<W, T> seg;
   find_segments<W>(c, ep, seg);
-  hk = seg.h;
-  sy = seg.y + hk * (ep - seg.x);
+  curve_value(seg, ep, sy, hk);
 }
 
 /// curve_at(c, ep, sy, hk) with seg (in: the segments of nearby strains, out:
 /// ep's own; find_segments_near): the same values.
 template <int W, class T>
 inline void curve_at_near(const CurveTable& c, const T& ep, LaneSegments<W, T>& seg, T& sy, T& hk) {
-  find_segments_near<W>(c, ep, seg, seg);
-  hk = seg.h;
-  sy = seg.y + hk * (ep - seg.x);
+  find_segments_near<W>(c, ep, seg);
+  curve_value(seg, ep, sy, hk);
 }
 
 /// ratio = material::yield_proximity_ratio(f, plastic), by masks, with
