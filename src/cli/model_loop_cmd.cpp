@@ -16,6 +16,7 @@
 
 #include "core/csv.hpp"
 #include "cli/loop_cmd.hpp"
+#include "cli/threads.hpp"
 #include "sim/case_pool.hpp"
 #include "core/options.hpp"
 #include "sim/fe_options.hpp"
@@ -79,7 +80,7 @@ int model_loop_command(int argc, char** argv, const char* name) {
   need(s.across >= 1, "--across: expected a whole number >= 1, found " + std::to_string(s.across));
   need(std::ifstream(s.hardening).good(), "--hardening: cannot open '" + s.hardening + "'");
   need(cfg.min_gain >= 0, "--min-gain: expected a number >= 0, found " + fmt(cfg.min_gain));
-  need(threads >= 0, "--threads: expected a whole number >= 0 (0: the default), found " + std::to_string(threads));
+  need(good_threads(threads), bad_threads(threads));
   std::vector<sim::ModelCandidate> cands;
   std::stringstream ss(candidates);
   for (std::string tok; std::getline(ss, tok, ',');) {

@@ -30,7 +30,6 @@ std::string deck_with_threads(const std::string& text, int n) {
     lines.push_back("[numerics]");
     lines.push_back(line);
   } else {
-    std::size_t at = head + 1;
     bool replaced = false;
     for (std::size_t i = head + 1; i < lines.size() && trimmed(lines[i]).rfind("[", 0) != 0; ++i) {
       const std::string t = trimmed(lines[i]);
@@ -41,7 +40,7 @@ std::string deck_with_threads(const std::string& text, int n) {
         break;
       }
     }
-    if (!replaced) lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(at), line);
+    if (!replaced) lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(head + 1), line);
   }
   std::string out;
   for (const auto& l : lines) out += l + "\n";

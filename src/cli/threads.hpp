@@ -1,8 +1,9 @@
 #pragma once
-// `--threads N` of every drawbend command (issue 22, item 5).  N >= 0, 0
-// meaning the default (OMP_NUM_THREADS, else every hardware thread; a deck's
-// own [numerics] threads for `run`).  A negative N is an input error (exit 2),
-// not the default in disguise.
+// `--threads N` of every drawbend command (issue 22, item 5).  N from 0 to
+// io::kMaxThreads, 0 meaning the default (OMP_NUM_THREADS, else every
+// hardware thread; a deck's own [numerics] threads for `run`).  Another N is
+// an input error (exit 2): a negative one is not the default in disguise, and
+// a huge one is not handed to libgomp to crash on.
 //   - Commands that compute (loop, synth, export, drawbend-deck --run) set the
 //     OpenMP threads with apply_threads();
 //   - `run` passes N to io::run_case() (the deck's value when N = 0);
@@ -18,13 +19,22 @@
 #endif
 
 #include "core/csv.hpp"
+#include "io/deck.hpp"
 
 namespace drawbend::cli {
 
-/// Throws an InputError unless n >= 0.
+/// Whether --threads n is one (0 .. io::kMaxThreads).
+inline bool good_threads(int n) { return n >= 0 && n <= io::kMaxThreads; }
+
+/// The message of a bad --threads n.
+inline std::string bad_threads(int n) {
+  return "--threads: expected a whole number from 0 (the default) to " + std::to_string(io::kMaxThreads) +
+         ", found " + std::to_string(n);
+}
+
+/// Throws an InputError unless good_threads(n).
 inline void check_threads(int n) {
-  if (n < 0)
-    throw InputError("--threads: expected a whole number >= 0 (0: the default), found " + std::to_string(n));
+  if (!good_threads(n)) throw InputError(bad_threads(n));
 }
 
 /// check_threads(n), then n OpenMP threads if n > 0.

@@ -160,6 +160,11 @@ void read_numerics(const DeckContext& c, const toml::table& t, Deck& d) {
   m.target_dt = c.in_range(t, "target_dt", "numerics", 0.0, 0.0);
   m.hourglass = c.in_range(t, "hourglass", "numerics", 1.0, 0.0);
   d.threads = c.count_of(t, "threads", "numerics", 0, 0);
+  if (d.threads > kMaxThreads) {
+    c.bad(*t.get("threads"), "numerics.threads",
+          "expected at most " + std::to_string(kMaxThreads) + " OpenMP threads, found " + std::to_string(d.threads));
+    d.threads = 0;
+  }
 }
 
 void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out) {

@@ -11,6 +11,12 @@
 
 namespace drawbend::io {
 
+/// The most OpenMP threads a deck's [numerics] threads or any command's
+/// --threads may ask for.  More is an input error: libgomp could not create
+/// them (100,000 on a model whose loops fork ended in a segmentation fault,
+/// 2026-11-29), and no machine this runs on has more hardware threads.
+inline constexpr int kMaxThreads = 1024;
+
 /// What to record while a case runs.
 struct HistorySignal {
   std::string name;     ///< column name

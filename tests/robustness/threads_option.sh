@@ -2,8 +2,10 @@
 # `--threads N` on every drawbend command (issue 22, item 5; cli/threads.hpp).
 # Answers:
 #  - N = -1 is an input error on each of the nine commands: exit 2 and the
-#    message "--threads: expected a whole number >= 0", before any work (no
-#    run folder is made);
+#    message "--threads: expected a whole number from 0", before any work (no
+#    run folder is made); so is N = 1025, one above io::kMaxThreads (run,
+#    block-deck), and a deck with [numerics] threads = 1025 names its
+#    file:line: key (100,000 threads crashed libgomp on a model that forks);
 #  - block-deck, strip-deck, cup-deck and drawbend-deck (without --run) with
 #    --threads 2 write "threads = 2" as a key of the deck's [numerics] table,
 #    and without --threads write no threads key (the decks as before);
@@ -28,13 +30,21 @@ neg() {  # neg NAME ARGS...: exit 2 with the --threads message
   shift
   out=$("$db" "$@" 2>&1)
   rc=$?
-  if [ "$rc" != 2 ] || ! grep -q -- "--threads: expected a whole number >= 0" <<< "$out"; then
+  if [ "$rc" != 2 ] || ! grep -q -- "--threads: expected a whole number from 0" <<< "$out"; then
     bad "$name --threads -1: exit $rc, output: $(head -3 <<< "$out")"
   else
     echo "ok   $name --threads -1: exit 2, $(grep -m1 -- '--threads' <<< "$out")"
   fi
 }
 neg run run "$tmp/block.toml" --out "$tmp/run_neg" --threads -1
+out=$("$db" run "$tmp/block.toml" --out "$tmp/run_big" --threads 1025 2>&1); rc=$?
+[ $rc = 2 ] && grep -q -- "to 1024, found 1025" <<< "$out" && echo "ok   run --threads 1025: exit 2" || bad "run --threads 1025: exit $rc: $out"
+out=$("$db" block-deck --threads 1025 2>&1); rc=$?
+[ $rc = 2 ] && grep -q -- "to 1024, found 1025" <<< "$out" && echo "ok   block-deck --threads 1025: exit 2" || bad "block-deck --threads 1025: exit $rc"
+sed 's/^\[numerics\]$/[numerics]\nthreads = 1025/' "$tmp/block.toml" > "$tmp/block_big.toml"
+out=$("$db" run "$tmp/block_big.toml" --out "$tmp/run_big2" 2>&1); rc=$?
+[ $rc = 2 ] && grep -q "block_big.toml:[0-9]*.*numerics.threads.*at most 1024" <<< "$out" &&
+  echo "ok   a deck's threads = 1025: exit 2, $(grep -m1 'numerics.threads' <<< "$out")" || bad "deck threads = 1025: exit $rc: $out"
 [ -e "$tmp/run_neg" ] && bad "run --threads -1 made its output folder"
 neg drawbend-deck drawbend-deck --threads -1 --run "$tmp/dd_neg"
 [ -e "$tmp/dd_neg" ] && bad "drawbend-deck --threads -1 made its run folder"
