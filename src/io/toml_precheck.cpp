@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string_view>
 
 #include "core/csv.hpp"
 
@@ -35,12 +36,16 @@ void precheck_table_headers(const std::string& text, const std::string& path) {
                      }());
   };
   bool line_start = true;
+  // Whether the text being read is a value (after '=', or an array's
+  // element), not a key: a '.' there belongs to a number, not a dotted key.
+  bool in_value = false;
   for (std::size_t i = 0; i < n; ++i) {
     const char c = text[i];
     if (c == '\n') {
       ++line;
       line_start = true;
       col0 = i + 1;
+      if (open.empty()) in_value = false;
       continue;
     }
     if (c == ' ' || c == '\t' || c == '\r') continue;
@@ -51,7 +56,18 @@ void precheck_table_headers(const std::string& text, const std::string& path) {
       while (i + 1 < n && text[i + 1] != '\n') ++i;
       continue;
     }
-    if (c == '"' || c == '\'') {
+    // A quote starts a string only where TOML lets one begin: at the start of
+    // a line, after a space, '=', '[', '{' or ',', or after the '.' of a
+    // dotted key.  Glued to a bare value (`x = 0"abc`, `x = 1."abc"`), toml++
+    // 3.3.0 reads it as part of that value and tests each following
+    // character against its whitespace table until a terminator, which is
+    // undefined behaviour for many non-ASCII code points (the fuzzer's fourth
+    // finding, tests/fuzz/README.md): so the text after such a quote is lexed
+    // as bare text, where non-ASCII is refused.
+    const char before = i == 0 ? '\n' : text[i - 1];
+    const bool string_may_start = std::string_view(" \t\r\n=[{,").find(before) != std::string_view::npos ||
+                                  (before == '.' && !in_value);
+    if ((c == '"' || c == '\'') && string_may_start) {
       const bool multi = i + 2 < n && text[i + 1] == c && text[i + 2] == c;
       const std::string close = multi ? std::string(3, c) : std::string(1, c);
       std::size_t j = i + (multi ? 3 : 1);
@@ -84,12 +100,16 @@ void precheck_table_headers(const std::string& text, const std::string& path) {
         throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(i - col0 + 1) +
                          ": TOML syntax error: expected a table name after '" + text.substr(i, j - i) +
                          "', found " + (j >= n ? std::string("the end of the file") : text[j] == '\n' ? std::string("the end of the line") : "'" + std::string(1, text[j]) + "'"));
-      // The rest of the header is scanned like any text (its second '[' and
-      // closing brackets balance out), so a non-ASCII byte in it is caught too.
+      // The rest of the header is scanned like any text, a key (its closing
+      // brackets close no value), so a non-ASCII byte in it is caught too.
+      if (text[i + 1] == '[') ++i;
       continue;
     }
+    if (c == '=') in_value = true;
+    if (c == ',' && !open.empty()) in_value = open.back() == '[';  // an inline table's next key
     if (c == '[' || c == '{') {
       open += c;
+      in_value = c == '[';  // an array's elements are values; an inline table starts with a key
     } else if ((c == ']' || c == '}') && !open.empty()) {
       // toml++ 3.3.0 also asserts on a '}' where an array expects a value.
       const char want = open.back() == '[' ? ']' : '}';
@@ -98,6 +118,7 @@ void precheck_table_headers(const std::string& text, const std::string& path) {
                          ": TOML syntax error: expected '" + std::string(1, want) + "' to close the '" +
                          std::string(1, open.back()) + "', found '" + std::string(1, c) + "'");
       open.pop_back();
+      in_value = true;  // the rest of the enclosing value
     }
   }
 }
