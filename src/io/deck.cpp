@@ -15,7 +15,7 @@
 #include "io/deck_limits.hpp"
 #include "io/deck_material.hpp"
 #include "io/deck_sections.hpp"
-#include "io/toml_precheck.hpp"
+#include "io/toml_read.hpp"
 
 namespace drawbend::io {
 
@@ -198,15 +198,7 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
   // A UTF-8 byte-order mark, as editors on Windows write it, is not part of the TOML.
   const bool bom = text_in.rfind("\xEF\xBB\xBF", 0) == 0;
   const std::string& text = bom ? text_in.substr(3) : text_in;
-  precheck_table_headers(text, path);
-  toml::table root;
-  try {
-    root = toml::parse(text, path);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream os;
-    os << path << ":" << e.source().begin.line << ":" << e.source().begin.column << ": TOML syntax error: " << e.description();
-    throw InputError(os.str());
-  }
+  const toml::table root = parse_toml(text, path);
   InputProblems problems(path);
   const DeckContext c(path, problems);
   c.allowed(root, "deck", {"case", "mesh", "material", "sheet", "numerics", "guards", "tool", "contact", "step",

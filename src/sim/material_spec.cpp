@@ -6,6 +6,7 @@
 #include <toml++/toml.h>
 
 #include "core/csv.hpp"
+#include "io/toml_read.hpp"
 
 namespace drawbend::sim {
 
@@ -26,26 +27,19 @@ std::string material_section(const std::string& material, const std::string& def
            "\"\n";
   toml::table m;
   {
+    const bool file = material.front() != '{' && std::filesystem::is_regular_file(material);
+    toml::table root;
     try {
-      if (material.front() != '{' && std::filesystem::is_regular_file(material)) {
-        toml::table file = toml::parse_file(material);
-        const auto* t = file["material"].as_table();
-        if (!t) throw InputError(material + ": expected a [material] table");
-        m = *t;
-      } else {
-        const std::string doc = "material = " + material;
-        toml::table wrapper = toml::parse(std::string_view(doc), std::string_view("--material"));
-        const auto* t = wrapper["material"].as_table();
-        if (!t) throw InputError("--material: expected a TOML inline table such as { type = \"j2_combined\", "
-                                 "kinematic = { beta = 0.5 } } or the path of a TOML file with a [material] table");
-        m = *t;
-      }
-    } catch (const toml::parse_error& e) {
-      std::ostringstream os;
-      os << (material.front() == '{' ? std::string("--material") : material) << ":" << e.source().begin.line << ": "
-         << e.description() << " (expected a TOML inline table or a file with a [material] table)";
-      throw InputError(os.str());
+      root = file ? io::parse_toml_file(material) : io::parse_toml("material = " + material, "--material");
+    } catch (const InputError& e) {
+      throw InputError(std::string(e.what()) + " (expected a TOML inline table or a file with a [material] table)");
     }
+    const auto* t = root["material"].as_table();
+    if (!t && file) throw InputError(material + ": expected a [material] table");
+    if (!t)
+      throw InputError("--material: expected a TOML inline table such as { type = \"j2_combined\", "
+                       "kinematic = { beta = 0.5 } } or the path of a TOML file with a [material] table");
+    m = *t;
   }
   if (!m.contains("type")) m.insert("type", "j2");
   if (!m.contains("E")) m.insert("E", 70000.0);

@@ -17,6 +17,8 @@
 
 #include <toml++/toml.h>
 
+#include "io/toml_read.hpp"
+
 namespace drawbend::sim {
 
 std::vector<FbPoint> read_fb_points(const std::string& csv_path) {
@@ -232,13 +234,13 @@ namespace {
 toml::table material_table(const std::string& material) {
   if (material.empty()) return toml::table{{"type", "j2"}};
   if (material.front() != '{') {
-    toml::table file = toml::parse_file(material);
+    toml::table file = io::parse_toml_file(material);
     if (const auto* t = file["material"].as_table()) return *t;
     throw InputError(material + ": expected a [material] table");
   }
-  const std::string doc = "material = " + material;
-  toml::table w = toml::parse(std::string_view(doc));
-  return *w["material"].as_table();
+  toml::table w = io::parse_toml("material = " + material, "--material");
+  if (const auto* t = w["material"].as_table()) return *t;
+  throw InputError("--material: expected a TOML inline table, found " + material);
 }
 
 void inline_all(toml::table& t) {
