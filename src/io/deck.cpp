@@ -15,7 +15,7 @@
 #include "io/deck_limits.hpp"
 #include "io/deck_material.hpp"
 #include "io/deck_sections.hpp"
-#include "io/toml_read.hpp"
+#include "core/toml_read.hpp"
 
 namespace drawbend::io {
 

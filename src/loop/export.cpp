@@ -27,6 +27,7 @@
 #include <toml++/toml.h>
 
 #include "core/csv.hpp"
+#include "core/toml_read.hpp"
 #include "friction/surface_law.hpp"
 
 namespace drawbend::loop {
@@ -89,12 +90,7 @@ std::vector<std::vector<double>> tabulate(const analysis::FrictionSurface& s, co
 }  // namespace
 
 ExportModel read_friction_model(const std::string& path) {
-  toml::table t;
-  try {
-    t = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw InputError(path + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
-  }
+  const toml::table t = parse_toml_file(path);
   const auto* f = t["friction"].as_table();
   if (!f) throw InputError(path + ": no [friction] table (write it with `drawbend loop`)");
   const auto law = (*f)["law"].value<std::string>();

@@ -15,7 +15,7 @@
 #include "fe/solver.hpp"
 #include "io/deck.hpp"
 #include "io/run_case.hpp"
-#include "io/toml_read.hpp"
+#include "core/toml_read.hpp"
 #include "material/material.hpp"
 #include "sim/material_spec.hpp"
 
@@ -87,7 +87,7 @@ void set_die_radius(toml::table& root, double rd, const std::string& where) {
 toml::table base_table(const CupSpec& spec, int& layers) {
   if (spec.refine < 1) throw InputError(spec.deck + ": refine must be >= 1");
   if (!fs::is_regular_file(spec.deck)) throw InputError(spec.deck + ": cup base deck not found");
-  toml::table root = io::parse_toml_file(spec.deck);
+  toml::table root = parse_toml_file(spec.deck);
   const fs::path dir = fs::path(spec.deck).parent_path();
   if (auto* mesh = root["mesh"].as_table())
     for (const char* key : {"core", "ring", "through"})
@@ -100,7 +100,7 @@ toml::table base_table(const CupSpec& spec, int& layers) {
     std::string curve = root["material"]["hardening"].value_or(std::string());
     if (!curve.empty() && fs::path(curve).is_relative()) curve = (dir / curve).lexically_normal().string();
     const std::string section = material_section(spec.material, curve);
-    root.insert_or_assign("material", *io::parse_toml(section, "--cup-material")["material"].as_table());
+    root.insert_or_assign("material", *parse_toml(section, "--cup-material")["material"].as_table());
   }
   if (!std::isnan(spec.punch_radius)) set_punch_radius(root, spec.punch_radius, spec.deck);
   if (!std::isnan(spec.die_radius)) set_die_radius(root, spec.die_radius, spec.deck);

@@ -6,7 +6,7 @@
 #include <toml++/toml.h>
 
 #include "core/csv.hpp"
-#include "io/toml_read.hpp"
+#include "core/toml_read.hpp"
 
 namespace drawbend::sim {
 
@@ -30,7 +30,7 @@ std::string material_section(const std::string& material, const std::string& def
     const bool file = material.front() != '{' && std::filesystem::is_regular_file(material);
     toml::table root;
     try {
-      root = file ? io::parse_toml_file(material) : io::parse_toml("material = " + material, "--material");
+      root = file ? parse_toml_file(material) : parse_toml("material = " + material, "--material");
     } catch (const InputError& e) {
       throw InputError(std::string(e.what()) + " (expected a TOML inline table or a file with a [material] table)");
     }

@@ -17,7 +17,7 @@
 
 #include <toml++/toml.h>
 
-#include "io/toml_read.hpp"
+#include "core/toml_read.hpp"
 
 namespace drawbend::sim {
 
@@ -234,11 +234,11 @@ namespace {
 toml::table material_table(const std::string& material) {
   if (material.empty()) return toml::table{{"type", "j2"}};
   if (material.front() != '{') {
-    toml::table file = io::parse_toml_file(material);
+    toml::table file = parse_toml_file(material);
     if (const auto* t = file["material"].as_table()) return *t;
     throw InputError(material + ": expected a [material] table");
   }
-  toml::table w = io::parse_toml("material = " + material, "--material");
+  toml::table w = parse_toml("material = " + material, "--material");
   if (const auto* t = w["material"].as_table()) return *t;
   throw InputError("--material: expected a TOML inline table, found " + material);
 }

@@ -33,6 +33,7 @@
 
 #include "core/csv.hpp"
 #include "core/run_output.hpp"
+#include "core/toml_read.hpp"
 
 namespace fs = std::filesystem;
 using namespace drawbend;
@@ -149,10 +150,9 @@ std::vector<Problem> read_spec(const std::string& path, std::vector<std::string>
     return {};
   }
   try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    problems.push_back(path + ":" + std::to_string(e.source().begin.line) + ": TOML syntax error: " +
-                       std::string(e.description()));
+    root = parse_toml_file(path);
+  } catch (const InputError& e) {
+    problems.push_back(e.what());
     return {};
   }
   r.allowed(root, "spec", {"problem"});

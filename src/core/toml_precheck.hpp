@@ -10,10 +10,10 @@
 // 3.3.0's whitespace test is undefined behaviour for many of them).
 #include <string>
 
-namespace drawbend::io {
+namespace drawbend {
 
 /// Throws InputError "path:line:column: TOML syntax error: ..." for a table
 /// header whose opening bracket is not followed by a key.
 void precheck_table_headers(const std::string& text, const std::string& path);
 
-}  // namespace drawbend::io
+}  // namespace drawbend

@@ -3,14 +3,14 @@
 // files and inline tables, `cup-deck --base` decks.  toml++ 3.3.0 (Debian 12)
 // asserts on some malformed input, or with NDEBUG has undefined behaviour
 // (tests/fuzz/README.md, findings 1-4), so the text first goes through
-// precheck_table_headers (io/toml_precheck.hpp); then every syntax error,
+// precheck_table_headers (core/toml_precheck.hpp); then every syntax error,
 // ours or toml++'s, is an InputError "where:line:column: TOML syntax error:
 // ..." (exit 2 in the commands).
 #include <string>
 
 #include <toml++/toml.h>
 
-namespace drawbend::io {
+namespace drawbend {
 
 /// Parses TOML `text`; `where` names it in messages (a path, or an option
 /// such as "--material").  A leading UTF-8 byte-order mark is skipped.
@@ -20,4 +20,4 @@ toml::table parse_toml(const std::string& text, const std::string& where);
 /// InputError if it cannot be read.
 toml::table parse_toml_file(const std::string& path);
 
-}  // namespace drawbend::io
+}  // namespace drawbend

@@ -1,12 +1,12 @@
 // Parsing user TOML safely; see toml_read.hpp.
-#include "io/toml_read.hpp"
+#include "core/toml_read.hpp"
 
 #include <sstream>
 
 #include "core/csv.hpp"
-#include "io/toml_precheck.hpp"
+#include "core/toml_precheck.hpp"
 
-namespace drawbend::io {
+namespace drawbend {
 
 toml::table parse_toml(const std::string& text_in, const std::string& where) {
   // A UTF-8 byte-order mark, as editors on Windows write it, is not part of the TOML.
@@ -25,4 +25,4 @@ toml::table parse_toml(const std::string& text_in, const std::string& where) {
 
 toml::table parse_toml_file(const std::string& path) { return parse_toml(read_file(path), path); }
 
-}  // namespace drawbend::io
+}  // namespace drawbend

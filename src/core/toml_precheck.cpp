@@ -1,4 +1,4 @@
-#include "io/toml_precheck.hpp"
+#include "core/toml_precheck.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -6,7 +6,7 @@
 
 #include "core/csv.hpp"
 
-namespace drawbend::io {
+namespace drawbend {
 
 namespace {
 bool key_start(char c) {
@@ -129,4 +129,4 @@ void precheck_table_headers(const std::string& text, const std::string& path) {
   }
 }
 
-}  // namespace drawbend::io
+}  // namespace drawbend
