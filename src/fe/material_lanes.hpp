@@ -236,7 +236,10 @@ inline bool j2_update(const J2Params& P, const T d[6], T s[6], T& ep, LaneSegmen
     const T et = start + r / (P.g3 + hk);
     const T end = seg.end;
     e = active ? et : e;
-    const M cross = active & ~(et <= end);
+    // Never past the last segment (end = +inf): a NaN et would cross forever
+    // and read past the table (J2Isotropic::update_point says why; the bits
+    // of every finite et are as before).
+    const M cross = active & ~(et <= end) & (end < std::numeric_limits<double>::infinity());
     if (!any_lane<W>(cross)) break;
     for (int l = 0; l < W; ++l)
       if (cross[l]) ++k[l];

@@ -249,7 +249,8 @@ void Solver::fault_nonfinite_velocity(int node) const {
   std::ostringstream os;
   os << "non-finite velocity (NaN or Inf) at node " << node << " at t = " << t_ << " s (cycle " << cycle_ << ")";
   if (const int e = nonfinite_element(); e >= 0) os << "; element " << e << " has a non-finite stress or force";
-  os << ": the solution diverged (time step too large for a stiffness: penalty, hourglass, tool mass?)";
+  os << ": the solution diverged (a load far beyond what the sheet can carry, or a time step too large for a "
+        "stiffness: penalty, hourglass, tool mass?)";
   throw NumericalFault(os.str());
 }
 

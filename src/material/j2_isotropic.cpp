@@ -47,7 +47,11 @@ inline void J2Isotropic::update_point(const double d[6], double s[6], double* st
   for (;;) {
     e = start + r / (g3_ + curve_.segment_slope(k));
     const double end = curve_.segment_end(k);          // +inf on the extrapolated segment
-    if (e <= end) break;
+    // The last segment ends the search whatever e is: a NaN e (a non-finite
+    // strain increment, from loads no step can carry) would otherwise walk
+    // k off the table.  The NaN stress then reaches the run's non-finite
+    // guard (exit 3), and every finite e gives the same bits as before.
+    if (e <= end || std::isinf(end)) break;
     ++k;
     start = end;
     r = q - g3_ * (start - ep) - curve_.segment_stress(k);

@@ -227,6 +227,22 @@ BOOST_AUTO_TEST_CASE(perfect_plasticity_closed_form) {
   BOOST_TEST(s[XY] == 150.0 / std::sqrt(3.0), tt::tolerance(1e-12));
 }
 
+// A non-finite strain increment (a load no sheet can carry): the return stops
+// on the curve's last segment and hands the NaN on, where the run's
+// non-finite guard reports it.  Before 2026-11-29 the segment search walked
+// off the table (a segmentation fault in `drawbend run`).
+BOOST_AUTO_TEST_CASE(non_finite_increment_stops_on_the_last_segment) {
+  const J2Isotropic j2(E, NU, RHO, HardeningCurve({0.0, 0.01, 0.05, 0.1}, {100.0, 150.0, 200.0, 230.0}));
+  for (const double bad : {std::nan(""), HUGE_VAL}) {
+    V6 s{};
+    double ep = 0.02;
+    const double d[6] = {bad, 0.0, 0.0, 0.0, 0.0, 0.0};
+    j2.update(d, s.data(), &ep);
+    BOOST_TEST(!std::isfinite(s[XX]));
+    BOOST_TEST(std::isnan(ep));
+  }
+}
+
 BOOST_AUTO_TEST_CASE(unloading_is_elastic) {
   const HardeningCurve c = rd_curve();
   const J2Isotropic j2(E, NU, RHO, c);
