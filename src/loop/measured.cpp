@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/csv.hpp"
+#include "core/strip_limits.hpp"
 
 namespace drawbend::loop {
 
@@ -73,11 +74,8 @@ std::string decimal_point(const std::string& cell) {
   return parse_number(t, v, why) ? t : cell;
 }
 
-// The largest force a strip draw-bend test can carry: a 25.4 mm x 1.04 mm
-// AA5754-O strip breaks near 6.5 kN (UTS ~ 245 MPa), and even a 50 mm x 5 mm
-// steel strip at 1500 MPa only reaches 4e5 N.  Beyond 1e6 N a value is a unit
-// or typing error, and one such row would dominate every least-squares fit.
-constexpr double kMaxForceN = 1e6;
+// The largest force a strip draw-bend test can carry (core/strip_limits.hpp says why).
+constexpr double kMaxForceN = kMaxStripForceN;
 
 // Numeric extra columns: when every non-empty cell reads as a number and some
 // are NaN or infinite, those cells are problems (the row is dropped) instead

@@ -17,6 +17,7 @@
 
 #include <toml++/toml.h>
 
+#include "core/strip_limits.hpp"
 #include "core/toml_read.hpp"
 
 namespace drawbend::sim {
@@ -42,6 +43,12 @@ std::vector<FbPoint> read_fb_points(const std::string& csv_path) {
     if (p.pin_mm <= 0) problems.push_back(t.where(r, "pin_diameter_mm") + ": must be > 0 mm");
     if (p.back_tension_N <= 0) problems.push_back(t.where(r, "back_tension_N") + ": must be > 0 N");
     if (p.bending_N <= 0) problems.push_back(t.where(r, "bending_force_N") + ": must be > 0 N");
+    // The same bound as `drawbend loop` (core/strip_limits.hpp): before it, a
+    // back tension of 1e300 N went into the FE decks as a load.
+    for (const auto& [col, v] : {std::pair{"back_tension_N", p.back_tension_N}, std::pair{"bending_force_N", p.bending_N}})
+      if (v > kMaxStripForceN)
+        problems.push_back(t.where(r, col) + ": expected a force below " + fmt(kMaxStripForceN) +
+                           " N (a strip test; check the units), found " + fmt(v) + " N");
     out.push_back(p);
   }
   if (out.empty() && problems.empty()) problems.push_back(t.path + ": no data rows");
