@@ -112,6 +112,21 @@ void precheck_table_headers(const std::string& text, const std::string& path) {
       if (text[i + 1] == '[') ++i;
       continue;
     }
+    // A bare value of 10 characters with '-' 5th and 8th (a date's shape),
+    // then a space, one digit and a terminator: toml++ 3.3.0 takes it for a
+    // date-time written with a space, reads the digit, and asserts that the
+    // next character is not a terminator (with NDEBUG an assumption, so
+    // undefined behaviour; the fuzzer's sixth finding, `x = 1979-05-27 1`).
+    // Never valid TOML: a date-time's time has two digits and a colon.
+    if (in_value && c >= '0' && c <= '9' && std::string_view(" \t=[{,").find(before) != std::string_view::npos) {
+      auto terminator = [&](std::size_t k) { return std::string_view(" \t\r\n\v\f]},#").find(text[k]) != std::string_view::npos; };
+      std::size_t j = i;
+      while (j < n && !terminator(j)) ++j;
+      if (j - i == 10 && text[i + 4] == '-' && text[i + 7] == '-' && j + 2 < n && text[j] == ' ' &&
+          text[j + 1] >= '0' && text[j + 1] <= '9' && terminator(j + 2))
+        throw InputError(at(i) + "expected a date, or a date-time such as 1979-05-27 07:32:00, found '" +
+                         text.substr(i, j + 2 - i) + "'");
+    }
     if (c == '=') in_value = true;
     if (c == ',' && !open.empty()) in_value = open.back() == '[';  // an inline table's next key
     if (c == '[' || c == '{') {
