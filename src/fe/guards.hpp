@@ -11,13 +11,14 @@
 // | non-finite       | a velocity (so a force or stress) is NaN or Inf              | every cycle, fused into the velocity update |
 // | inverted         | an element's volume or Jacobian is not positive               | every cycle, in the element loop |
 // | dt_collapse      | time step < dt_collapse x the initial step                    | every cycle    |
+// | tool travel      | a tool moves more than the smallest element in one cycle     | every cycle    |
 // | penetration      | contact depth > penetration x element size normal to the face | every cycle, in the contact loop |
 // | hourglass_ratio  | hourglass energy > hourglass_ratio x internal energy          | end of each step |
 // | kinetic_ratio    | kinetic energy > kinetic_ratio x internal energy, in a step marked quasi_static | end of each step |
 // | energy_balance   | energy balance error (Energies::balance_error) > energy_balance | end of each step |
 //
-// Non-finite values and inverted elements are always errors: nothing after
-// them can be trusted.  The defaults let every shipped deck, chapter and
+// Non-finite values, inverted elements and a tool's travel are always errors:
+// nothing after them can be trusted.  The defaults let every shipped deck, chapter and
 // verification problem pass with a margin.
 #include <stdexcept>
 #include <string>

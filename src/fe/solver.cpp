@@ -59,7 +59,9 @@ Solver::Solver(Model& model) : m_(model) {
     const double V = hex_volume(ex, ey, ez);
     HexGeometry g;
     if (!hex_geometry(ex, ey, ez, g)) throw std::invalid_argument("element " + std::to_string(e) + " is inverted");
-    const double dt_e = hex_stable_length(g) / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
+    const double length = hex_stable_length(g);
+    min_length_ = e == 0 ? length : std::min(min_length_, length);
+    const double dt_e = length / wave_speed_ * std::sqrt(elem_mass_factor_[e]);
     if (m_.target_dt > 0 && m_.dt_safety * dt_e < m_.target_dt)
       elem_mass_factor_[e] *= std::pow(m_.target_dt / (m_.dt_safety * dt_e), 2);
     // Material state; an anisotropic material gets the sheet axes: the model's

@@ -134,6 +134,7 @@ class Solver {
   NodeView node_view();
   void check_force_driven_tools() const;      ///< throws std::invalid_argument: a tool too light for dt
   void guard_time_step();                     ///< non-finite or collapsed time step
+  void guard_tool_travel(double dt) const;    ///< a tool moved past the smallest element in one cycle
   void element_forces();                      ///< the element loop: corner forces into their slots
   contact::ContactView contact_view(std::size_t pair, bool friction, const NodeView& nodes);
   void guard_penetration(std::size_t pair, int slot);  ///< the penetration guard for one slave node
@@ -191,6 +192,7 @@ class Solver {
   Energies en_;
   double last_dt_ = 0;  // length of the interval that produced the current velocities
   double t_ = 0, dt_ = 0, dt0_ = 0, added_mass_ = 0, phys_mass_ = 0, wave_speed_ = 0;
+  double min_length_ = 0;  ///< the smallest element's stable length in the initial mesh [mm] (guard_tool_travel)
   long cycle_ = 0;
   long forked_cycles_ = 0;  // forked_cycles()
   // Where the run is: step index, time into it, its start time (restart point).

@@ -78,6 +78,7 @@ void Solver::run_step(int index, const std::function<void(const Progress&)>& on_
     account_energies(inc);                                                          // guards: non-finite energy
     lap(&PhaseTimes::nodes);
     move_tools(m_, plan_, th, ts, dt, a1, a2, tool_force_.data(), tool_vel_.data(), tool_offset_.data());
+    guard_tool_travel(dt);
     lap(&PhaseTimes::other);
     advance_time(dt);
     lap(&PhaseTimes::nodes);
@@ -232,6 +233,26 @@ void Solver::contact_phase(double dt, bool friction, const NodeView& nodes, Node
       ext.y[i] += contact_force_[p][k][1];
       ext.z[i] += contact_force_[p][k][2];
     }
+}
+
+void Solver::guard_tool_travel(double dt) const {
+  // A tool that moves past a whole element in one cycle has left the contact
+  // behind: a node it passes through is never found inside it, so the run
+  // would go on as if the tool were not there (a die driven by 1e20 N flew
+  // off and `drawbend run` ended with exit 0, 2026-11-29).  Even a physical
+  // tool that fast outruns the (mass-scaled) wave speed, which is what the
+  // stable step is made of, so no sound deck comes near this limit.
+  for (std::size_t k = 0; k < m_.tools.size(); ++k) {
+    const Vec3& v = tool_vel_[k];
+    const double travel = dt * std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(travel <= min_length_)) {
+      std::ostringstream os;
+      os << "tool '" << m_.tools[k].name << "' moved " << travel << " mm in one cycle at t = " << t_ << " s (cycle "
+         << cycle_ << "), more than the smallest element (" << min_length_
+         << " mm): the contact cannot follow it (a tool load or speed far beyond what the model can carry)";
+      throw NumericalFault(os.str());
+    }
+  }
 }
 
 void Solver::guard_time_step() {
