@@ -59,6 +59,33 @@ void precheck_table_headers(const std::string& text, const std::string& path) {
       while (i + 1 < n && text[i + 1] != '\n') ++i;
       continue;
     }
+    // In a value, a token that is not a string, an array or an inline table
+    // (a number, a date, true, inf ...) is read by toml++ 3.3.0 up to the
+    // next terminator, each character tested against its whitespace table:
+    // undefined behaviour for many non-ASCII code points, quotes and '='
+    // included (`x = 0"abc`, `x = 5="abc`: the fuzzer's fourth and seventh
+    // findings).  So the whole token is bare text here, where non-ASCII is
+    // refused.
+    auto terminator = [&](std::size_t k) {
+      return std::string_view(" \t\r\n\v\f]},#").find(text[k]) != std::string_view::npos;
+    };
+    if (in_value && std::string_view("\"'[{]},=").find(c) == std::string_view::npos) {
+      std::size_t j = i;
+      for (; j < n && !terminator(j); ++j)
+        if (static_cast<unsigned char>(text[j]) >= 0x80) non_ascii(j);
+      // A date's shape (10 characters, '-' 5th and 8th), a space, one digit
+      // and a terminator: toml++ takes it for a date-time written with a
+      // space, reads the digit and asserts that the next character is not a
+      // terminator (with NDEBUG an assumption, so undefined behaviour; the
+      // sixth finding, `x = 1979-05-27 1`).  Never valid TOML: a date-time's
+      // time has two digits and a colon.
+      if (c >= '0' && c <= '9' && j - i == 10 && text[i + 4] == '-' && text[i + 7] == '-' && j + 2 < n &&
+          text[j] == ' ' && text[j + 1] >= '0' && text[j + 1] <= '9' && terminator(j + 2))
+        throw InputError(at(i) + "expected a date, or a date-time such as 1979-05-27 07:32:00, found '" +
+                         text.substr(i, j + 2 - i) + "'");
+      i = j - 1;
+      continue;
+    }
     // A quote starts a string only where TOML lets one begin: at the start of
     // a line, after a space, '=', '[', '{' or ',', or after the '.' of a
     // dotted key.  Glued to a bare value (`x = 0"abc`, `x = 1."abc"`), toml++
@@ -111,21 +138,6 @@ void precheck_table_headers(const std::string& text, const std::string& path) {
       // brackets close no value), so a non-ASCII byte in it is caught too.
       if (text[i + 1] == '[') ++i;
       continue;
-    }
-    // A bare value of 10 characters with '-' 5th and 8th (a date's shape),
-    // then a space, one digit and a terminator: toml++ 3.3.0 takes it for a
-    // date-time written with a space, reads the digit, and asserts that the
-    // next character is not a terminator (with NDEBUG an assumption, so
-    // undefined behaviour; the fuzzer's sixth finding, `x = 1979-05-27 1`).
-    // Never valid TOML: a date-time's time has two digits and a colon.
-    if (in_value && c >= '0' && c <= '9' && std::string_view(" \t=[{,").find(before) != std::string_view::npos) {
-      auto terminator = [&](std::size_t k) { return std::string_view(" \t\r\n\v\f]},#").find(text[k]) != std::string_view::npos; };
-      std::size_t j = i;
-      while (j < n && !terminator(j)) ++j;
-      if (j - i == 10 && text[i + 4] == '-' && text[i + 7] == '-' && j + 2 < n && text[j] == ' ' &&
-          text[j + 1] >= '0' && text[j + 1] <= '9' && terminator(j + 2))
-        throw InputError(at(i) + "expected a date, or a date-time such as 1979-05-27 07:32:00, found '" +
-                         text.substr(i, j + 2 - i) + "'");
     }
     if (c == '=') in_value = true;
     if (c == ',' && !open.empty()) in_value = open.back() == '[';  // an inline table's next key

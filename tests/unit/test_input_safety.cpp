@@ -120,6 +120,9 @@ BOOST_AUTO_TEST_CASE(bad_table_headers_are_syntax_errors) {
   BOOST_TEST(d7.find("h.toml:1:6: TOML syntax error: expected a date") != std::string::npos);
   const std::string d8 = message_of([] { io::parse_deck("x = 1979-05-27 07:32:00\ny = 1979-05-27\n", "h.toml"); });
   BOOST_TEST(d8.find("TOML syntax error") == std::string::npos);
+  // A quote after an '=' glued to a value (the fuzzer's seventh finding).
+  const std::string q7 = message_of([] { io::parse_deck("ka =5=\"pNNp\xce\xa9N\"\n", "h.toml"); });
+  BOOST_TEST(q7.find("h.toml:1:12: TOML syntax error: expected ASCII outside strings and comments, found the byte 0xce") != std::string::npos);
   // Quotes where TOML lets strings begin still open strings.
   const std::string s = message_of([] {
     io::parse_deck("a.\"\xce\xbc\" = 1\nb = [\"\xce\xbc\",\"\xce\xbc\"]\nc = {d=\"\xce\xbc\",e.\"\xce\xbc\"={}}\ne=\"\xce\xbc\"\n[[f.\"\xce\xbc\"]]\n[g.\"\xce\xbc\"]\n", "h.toml");
