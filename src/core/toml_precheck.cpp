@@ -69,7 +69,7 @@ void precheck_table_headers(const std::string& text, const std::string& path) {
     auto terminator = [&](std::size_t k) {
       return std::string_view(" \t\r\n\v\f]},#").find(text[k]) != std::string_view::npos;
     };
-    if (in_value && std::string_view("\"'[{]},=").find(c) == std::string_view::npos) {
+    if (in_value && !terminator(i) && std::string_view("\"'[{]},=").find(c) == std::string_view::npos) {
       std::size_t j = i;
       for (; j < n && !terminator(j); ++j)
         if (static_cast<unsigned char>(text[j]) >= 0x80) non_ascii(j);

@@ -123,6 +123,10 @@ BOOST_AUTO_TEST_CASE(bad_table_headers_are_syntax_errors) {
   // A quote after an '=' glued to a value (the fuzzer's seventh finding).
   const std::string q7 = message_of([] { io::parse_deck("ka =5=\"pNNp\xce\xa9N\"\n", "h.toml"); });
   BOOST_TEST(q7.find("h.toml:1:12: TOML syntax error: expected ASCII outside strings and comments, found the byte 0xce") != std::string::npos);
+  // A vertical tab or form feed in a value (both end a bare value for toml++):
+  // the pre-check looped on them for ever (the suite's 5 s fuzz run, 2026-11-29).
+  const std::string vt = message_of([] { io::parse_deck("x = \v1\ny = \f\n", "h.toml"); });
+  BOOST_TEST(vt.find("h.toml:1:") != std::string::npos);
   // Quotes where TOML lets strings begin still open strings.
   const std::string s = message_of([] {
     io::parse_deck("a.\"\xce\xbc\" = 1\nb = [\"\xce\xbc\",\"\xce\xbc\"]\nc = {d=\"\xce\xbc\",e.\"\xce\xbc\"={}}\ne=\"\xce\xbc\"\n[[f.\"\xce\xbc\"]]\n[g.\"\xce\xbc\"]\n", "h.toml");
