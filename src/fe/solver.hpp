@@ -133,6 +133,7 @@ class Solver {
   void begin_step(int index);                 ///< resolve the step's names (plan_), reset per-step state
   NodeView node_view();
   void check_force_driven_tools() const;      ///< throws std::invalid_argument: a tool too light for dt
+  void check_damping(const Step& step) const; ///< throws std::invalid_argument: damping x dt >= 2
   void guard_time_step();                     ///< non-finite or collapsed time step
   void guard_tool_travel(double dt) const;    ///< a tool moved past the smallest element in one cycle
   void element_forces();                      ///< the element loop: corner forces into their slots

@@ -101,6 +101,7 @@ void Solver::begin_step(int index) {
   reactions_.assign(plan_.reaction_names.size(), Vec3{0, 0, 0});
   applied_.assign(step.forces.size(), Vec3{0, 0, 0});
   check_force_driven_tools();
+  check_damping(step);
   // A step starts afresh, or continues from a checkpoint (load_state) where it was.
   const bool resume = index == step_index_ && step_time_ > 0;
   if (!resume) {
@@ -146,6 +147,24 @@ NodeView Solver::node_view() {
   v.Y = m_.mesh.y.data();
   v.Z = m_.mesh.z.data();
   return v;
+}
+
+void Solver::check_damping(const Step& step) const {
+  // The damped central difference v+ = a1 v- + a2 F/m has a1 = (1 - c dt/2) /
+  // (1 + c dt/2): at c dt >= 2 it is zero or negative, so every cycle stops
+  // or reverses every velocity, and the run ends without deforming (damping =
+  // 1e300 on a strip deck ran to exit 0 with a strip that never moved,
+  // 2026-11-29).  Damping for dynamic relaxation is near twice the lowest
+  // eigenfrequency, orders of magnitude below 2/dt (the shipped decks: c dt
+  // about 1e-4), and the step only shrinks, so checking at the step's start suffices.
+  if (step.damping * dt_ >= 2.0) {
+    std::ostringstream os;
+    os << "step '" << step.name << "': damping = " << step.damping << " 1/s with the stable time step " << dt_
+       << " s gives c dt = " << step.damping * dt_ << ", at or above 2, where the damped central difference stops "
+       << "or reverses every velocity each cycle; use damping below " << 2.0 / dt_ << " 1/s (dynamic relaxation "
+       << "damps near twice the lowest eigenfrequency)";
+    throw std::invalid_argument(os.str());
+  }
 }
 
 void Solver::check_force_driven_tools() const {
