@@ -21,6 +21,7 @@
 
 #include "core/csv.hpp"
 #include "core/options.hpp"
+#include "core/strip_limits.hpp"
 #include "loop/loop.hpp"
 #include "loop/report.hpp"
 #include "loop/synth.hpp"
@@ -177,6 +178,21 @@ int synth_main(int argc, char** argv) {
   return with_exit_codes([&] {
     if (!opt.parse(argc, argv)) return 0;
     apply_threads(threads);
+    // Sizes and noise a draw-bend data set can have (before 2026-11-29,
+    // --rows-per-test -5 ended in "cannot create std::vector larger than
+    // max_size()" with exit 3, 1e8 ran for minutes, and --noise -1 wrote data).
+    auto bad = [](const std::string& what) { throw InputError(what); };
+    if (!(so.noise_N >= 0 && so.noise_N <= kMaxStripForceN))
+      bad("--noise: expected a noise sd in [0, " + fmt(kMaxStripForceN) + "] N (a strip test), found " + fmt(so.noise_N));
+    if (so.tests_per_pin < 1 || so.tests_per_pin > 10000)
+      bad("--tests-per-pin: expected 1 to 10000 tests, found " + std::to_string(so.tests_per_pin));
+    if (so.rows_per_test < 1 || so.rows_per_test > 10000)
+      bad("--rows-per-test: expected 1 to 10000 rows, found " + std::to_string(so.rows_per_test));
+    if (static_cast<double>(so.tests_per_pin) * so.rows_per_test > 1e6)
+      bad("--tests-per-pin x --rows-per-test: expected at most 1e6 rows per pin, found " +
+          fmt(static_cast<double>(so.tests_per_pin) * so.rows_per_test));
+    if (from_thesis && (points < 2 || points > 10000))
+      bad("--points: expected 2 to 10000 rows per thesis fit, found " + std::to_string(points));
     ensure_writable_dir(out, "--out");
     if (from_thesis) {
       const Dataset d = thesis_dataset(data_dir + "/thesis", points);
@@ -188,6 +204,11 @@ int synth_main(int argc, char** argv) {
     const MapLibrary maps = maps_for(maps_dir, {12.7, 25.4, 42.0});
     SynthTruth truth;
     const Dataset d = synthesize(so, maps, truth);
+    // The hidden law's amplitude is the law's own unit: check what it made.
+    for (const auto& r : d.rows)
+      if (!(std::isfinite(r.outlet_force_N) && std::abs(r.outlet_force_N) <= kMaxStripForceN))
+        bad("--amplitude " + fmt(so.amplitude) + " with --noise " + fmt(so.noise_N) + ": an outlet force of " +
+            fmt(r.outlet_force_N) + " N, beyond a strip test (" + fmt(kMaxStripForceN) + " N); choose a smaller amplitude");
     write_measured(out + "/data.csv", d);
     write_file_atomic(out + "/truth.json", truth_json(truth));
     std::cout << "wrote " << out << "/data.csv (" << d.rows.size() << " rows) and " << out << "/truth.json\n";
