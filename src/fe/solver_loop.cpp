@@ -102,7 +102,9 @@ void Solver::begin_step(int index) {
   applied_.assign(step.forces.size(), Vec3{0, 0, 0});
   check_force_driven_tools();
   check_damping(step);
-  if (step.duration < 1e-3 * dt0_ && !(index == step_index_ && step_time_ > 0)) {
+  // A step starts afresh, or continues from a checkpoint (load_state) where it was.
+  const bool resume = index == step_index_ && step_time_ > 0;
+  if (!resume && step.duration < 1e-3 * dt0_) {
     // run_step treats what is left of a step below 1e-3 of the initial time
     // step as round-off: such a step simulates nothing (duration = 1e-300
     // ran to exit 0 without a word, 2026-11-29).
@@ -112,8 +114,6 @@ void Solver::begin_step(int index) {
     warnings_.push_back(os.str());
     if (on_warning_) on_warning_(os.str());
   }
-  // A step starts afresh, or continues from a checkpoint (load_state) where it was.
-  const bool resume = index == step_index_ && step_time_ > 0;
   if (!resume) {
     slide_offset_.assign(step.rotations.size(), Vec3{0, 0, 0});
     step_t_start_ = t_;

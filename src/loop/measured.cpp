@@ -74,8 +74,6 @@ std::string decimal_point(const std::string& cell) {
   return parse_number(t, v, why) ? t : cell;
 }
 
-// The largest force a strip draw-bend test can carry (core/strip_limits.hpp says why).
-constexpr double kMaxForceN = kMaxStripForceN;
 
 // Numeric extra columns: when every non-empty cell reads as a number and some
 // are NaN or infinite, those cells are problems (the row is dropped) instead
@@ -215,8 +213,8 @@ Dataset parse_measured(const std::string& text, const std::string& path) {
                                           " (a test without sliding measures no friction)");
       for (const char* f : {"back_tension_N", "outlet_force_N"}) {
         const double v = std::string(f) == "back_tension_N" ? s.back_tension_N : s.outlet_force_N;
-        if (v > kMaxForceN)
-          problem(lineno, f, "expected a force below " + fmt(kMaxForceN) + " N (a strip test; check the units), found " +
+        if (v > kMaxStripForceN)
+          problem(lineno, f, "expected a force below " + fmt(kMaxStripForceN) + " N (a strip test; check the units), found " +
                                  fmt(v) + " N");
       }
       if (s.direction_deg < 0 || s.direction_deg > 90)
