@@ -6,6 +6,10 @@ set -euo pipefail
 # clang and libclang-rt-dev: libFuzzer for the parser fuzzers (tests/fuzz); with
 # libomp-dev (OpenMP for clang) also the sanitizer build (tests/sanitize/run.sh).
 PKGS=(cmake g++ make libeigen3-dev libboost-test-dev libtomlplusplus-dev gnuplot-nox pandoc clang libclang-rt-dev libomp-dev)
+# slurmctld, slurmd, slurm-client and munge: the test cluster.executors starts
+# a single-node Slurm on this machine to run cases through the slurm executor
+# (tests/cluster/; never started outside that test).
+PKGS+=(slurmctld slurmd slurm-client munge)
 # --bench (`make bench`): calculix-ccx, CalculiX's solver (Debian 2.20-1 on
 # bookworm), an independent peer that the bench times on the same bar as ours
 # (bench/bench_calculix.cpp).  Only there: it pulls in OpenMPI and SPOOLES,

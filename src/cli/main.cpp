@@ -24,6 +24,7 @@ int drawbend_deck_command(int argc, char** argv);
 int block_deck_command(int argc, char** argv);
 int strip_deck_command(int argc, char** argv);
 int cup_deck_command(int argc, char** argv);
+int plan_command(int argc, char** argv);
 }
 
 namespace {
@@ -51,6 +52,7 @@ int main(int argc, char** argv) {
       "  block-deck [--out FILE]      write a block-sliding deck (Chapter 6, mu(p, v) surface)\n"
       "  strip-deck [--out FILE]      write a strip-draw deck (Chapter 3, Stribeck law)\n"
       "  cup-deck                     write a cup-drawing deck (thesis Sec. 6.6; radii, material, friction)\n"
+      "  plan DECK_OR_FOLDER...       predicted CPU time, memory and makespan of decks (docs/cluster.md)\n"
       "  loop DATA.csv --out DIR      close the loop on measured draw-bend data (writes loop.md)\n"
       "  model-loop DATA.csv --out DIR  re-run the draw-bend FE model with candidate effects\n"
       "  synth --out DIR              synthetic draw-bend data with a hidden law, or the thesis data\n"
@@ -70,12 +72,13 @@ int main(int argc, char** argv) {
   if (cmd == "block-deck") return cli::with_exit_codes([&] { return cli::block_deck_command(argc - 1, argv + 1); });
   if (cmd == "strip-deck") return cli::with_exit_codes([&] { return cli::strip_deck_command(argc - 1, argv + 1); });
   if (cmd == "cup-deck") return cli::with_exit_codes([&] { return cli::cup_deck_command(argc - 1, argv + 1); });
+  if (cmd == "plan") return cli::with_exit_codes([&] { return cli::plan_command(argc - 1, argv + 1); });
   if (cmd == "model-loop") return cli::with_exit_codes([&] { return cli::model_loop_command(argc - 1, argv + 1); });
   if (cmd == "loop") return cli::loop_main(argc - 1, argv + 1);    // loop_cmd.cpp
   if (cmd == "synth") return cli::synth_main(argc - 1, argv + 1);  // loop_cmd.cpp
   if (cmd == "export") return cli::export_main(argc - 1, argv + 1);  // export_cmd.cpp
   if (cmd != "run") {
-    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, drawbend-deck, block-deck, strip-deck, cup-deck, model-loop, loop, synth, export; see drawbend --help)\n";
+    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, drawbend-deck, block-deck, strip-deck, cup-deck, model-loop, loop, synth, export, plan; see drawbend --help)\n";
     return 2;
   }
   // `drawbend run --help` prints the options below without a deck.

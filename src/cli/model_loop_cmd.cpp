@@ -18,6 +18,7 @@
 #include "cli/loop_cmd.hpp"
 #include "cli/threads.hpp"
 #include "sim/case_pool.hpp"
+#include "sim/executor.hpp"
 #include "core/options.hpp"
 #include "sim/fe_options.hpp"
 #include "sim/model_loop.hpp"
@@ -59,6 +60,10 @@ int model_loop_command(int argc, char** argv, const char* name) {
   opt.add(threads, "threads",
           "threads of the FE runs in all: cases side by side times threads within a case (0: DRAWBEND_JOBS cases "
           "side by side on all hardware threads)");
+  std::string executor_spec;
+  opt.add(executor_spec, "executor",
+          "where the FE runs go: local (this machine's pool), slurm (sbatch/srun jobs), command:TEMPLATE (a launcher "
+          "with {drawbend} {deck} {dir} {cores}); default DRAWBEND_EXECUTOR, else local (docs/cluster.md)");
   if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
     if (!opt.parse(argc, argv)) return 0;
     throw InputError(me + ": missing DATA.csv (columns pin_diameter_mm, back_tension_N, bending_force_N; --help lists "
@@ -90,6 +95,11 @@ int model_loop_command(int argc, char** argv, const char* name) {
     } catch (const InputError& e) {
       need(false, std::string("--candidates: ") + e.what());
     }
+  }
+  try {
+    sim::set_executor(sim::parse_executor(executor_spec));
+  } catch (const std::invalid_argument& e) {
+    need(false, e.what());
   }
   if (!bad.empty()) throw InputError(bad);
   sim::set_case_threads(threads);

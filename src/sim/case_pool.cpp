@@ -1,5 +1,7 @@
 #include "sim/case_pool.hpp"
 
+#include "sim/executor.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -125,7 +127,7 @@ std::vector<DrawBendResult> run_drawbend_all(const std::vector<CaseJob>& jobs, b
     if (n_done < jobs.size() && cost_done > 0)
       std::cout << ", about " << static_cast<int>(elapsed * (cost_all - cost_done) / cost_done + 0.5) << " s left";
     std::cout << ")\n" << std::flush;
-  }, cost);
+  }, cost, executor_jobs(executor(), default_case_jobs()));
   return out;
 }
 

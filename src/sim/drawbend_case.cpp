@@ -11,6 +11,8 @@
 #include "core/run_output.hpp"
 #include "io/deck.hpp"
 #include "io/run_case.hpp"
+#include "sim/cost_model.hpp"
+#include "sim/executor.hpp"
 #include "sim/material_spec.hpp"
 
 namespace drawbend::sim {
@@ -333,12 +335,17 @@ DrawBendResult run_drawbend(const DrawBendSpec& s, const std::string& dir, bool 
     fs::remove(fs::path(dir) / "summary.csv");
     write_file_atomic(deck_path.string(), text);
     io::Deck deck = io::parse_deck(text, deck_path.string());
-    io::RunOptions ro;
-    ro.out_dir = dir;
-    ro.quiet = quiet;
-    std::ostringstream log;
-    io::run_case(deck, ro, quiet ? static_cast<std::ostream&>(log) : std::cout);
-    write_file_atomic((fs::path(dir) / "run.log").string(), log.str());
+    if (const ExecutorConfig& e = executor(); e.kind != ExecutorKind::local) {
+      // The same run as a file-level job elsewhere (executor.hpp).
+      run_deck_external(e, s.name, dir, job_needs(predict_case(deck), 1));
+    } else {
+      io::RunOptions ro;
+      ro.out_dir = dir;
+      ro.quiet = quiet;
+      std::ostringstream log;
+      io::run_case(deck, ro, quiet ? static_cast<std::ostream&>(log) : std::cout);
+      write_file_atomic((fs::path(dir) / "run.log").string(), log.str());
+    }
   }
   reduce(r);
   return r;

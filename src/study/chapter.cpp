@@ -28,12 +28,16 @@ Chapter::Chapter(std::string id, std::string description)
   options_.add(tier_, "tier",
                "mesh tier of this run, quick or full: a documented disagreement may hold for one tier only "
                "(column `tier` of data/thesis/disagreements.csv); the full tier's FULL_ARGS pass --tier full");
+  options_.add(executor_, "executor",
+               "where this chapter's draw-bend FE cases run: local (default), slurm, or command:TEMPLATE; sets "
+               "DRAWBEND_EXECUTOR for this process (src/sim/executor.hpp, docs/cluster.md)");
   options_.add_flag(allow_failures_, "allow-failures",
                     "exit 0 even when checks fail (the report still shows them); used by `make`");
 }
 
 bool Chapter::parse(int argc, char** argv) {
   if (!options_.parse(argc, argv)) return false;
+  if (!executor_.empty()) setenv("DRAWBEND_EXECUTOR", executor_.c_str(), 1);  // read by sim::executor()
   fs::create_directories(out_dir_ + "/tables");
   fs::create_directories(out_dir_ + "/figures");
   Errata errata = Errata::load(data("thesis/errata.csv"));  // first: a missing data dir names errata.csv

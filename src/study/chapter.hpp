@@ -68,6 +68,7 @@ class Chapter {
  private:
   std::string id_, data_dir_, out_dir_, figures_dir_, gnuplot_ = "gnuplot";
   bool allow_failures_ = false;
+  std::string executor_;  ///< --executor: where draw-bend cases run (not echoed: outputs do not depend on it)
   std::string figure_format_ = "svg";  ///< svg, or png/pdf written beside each SVG (the report embeds the SVG)
   std::string tier_ = "quick";  ///< mesh tier of the run: selects the disagreements that apply (quick, full)
   Options options_;

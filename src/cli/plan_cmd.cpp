@@ -1,0 +1,140 @@
+// `drawbend plan DECK_OR_FOLDER... [--nodes N] [--cores C]`: what the cases
+// will cost before they run (sim/cost_model.hpp).  Every deck.toml found (a
+// deck file, or the run folders under a folder, searched recursively) is read
+// with the deck reader and listed with its elements, predicted cycles, CPU
+// time and memory; then the total CPU-hours and the makespan on N nodes of C
+// cores by the largest-first schedule of the case pool.  Where a folder holds
+// a finished run (summary.csv), its measured wall time and the ratio of
+// predicted to measured CPU time are listed too, with their median and worst:
+// how well the model predicts on this machine.
+//
+//   drawbend plan build/chapters --nodes 4 --cores 2
+//   drawbend plan my.toml
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "core/csv.hpp"
+#include "core/options.hpp"
+#include "io/deck.hpp"
+#include "sim/cost_model.hpp"
+
+namespace drawbend::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Row {
+  std::string deck;
+  sim::CasePrediction p;
+  double measured_cpu = NAN;  ///< wall time x threads of a finished run [s]
+};
+
+/// A finished run's CPU seconds: summary.csv's wall_time x the threads its log names.
+double measured_cpu(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_regular_file(dir / "summary.csv", ec)) return NAN;
+  double wall = NAN;
+  try {
+    const CsvTable t = read_csv((dir / "summary.csv").string());
+    for (const auto& row : t.rows)
+      if (t.text(row, "quantity") == "wall_time") wall = t.number(row, "value");
+  } catch (const std::exception&) {
+    return NAN;
+  }
+  int threads = 1;
+  if (fs::is_regular_file(dir / "run.log", ec)) {
+    std::istringstream in(read_file((dir / "run.log").string()));
+    for (std::string l; std::getline(in, l);)
+      if (l.rfind("  threads: ", 0) == 0) threads = std::max(1, std::atoi(l.c_str() + 11));
+  }
+  return wall * threads;
+}
+
+void collect(const fs::path& p, std::vector<fs::path>& decks) {
+  std::error_code ec;
+  if (fs::is_regular_file(p, ec)) {
+    decks.push_back(p);
+    return;
+  }
+  if (!fs::is_directory(p, ec)) throw InputError(p.string() + ": not a deck file or a folder");
+  for (fs::recursive_directory_iterator it(p, fs::directory_options::skip_permission_denied, ec), end;
+       !ec && it != end; it.increment(ec))
+    if (it->path().filename() == "deck.toml" && it->is_regular_file(ec)) decks.push_back(it->path());
+  std::sort(decks.begin(), decks.end());
+}
+
+}  // namespace
+
+int plan_command(int argc, char** argv) {
+  int nodes = 1, cores = 2;
+  Options opt("drawbend plan DECK_OR_FOLDER...",
+              "Predicted CPU time and memory of every deck (a deck file, or every deck.toml under a folder), the "
+              "total CPU-hours and the makespan on N nodes of C cores (largest case first, one case per node on "
+              "all its cores); measured against finished runs where a folder holds one. Example: drawbend plan "
+              "build/chapters --nodes 4 --cores 2");
+  opt.add(nodes, "nodes", "nodes of the cluster (>= 1)");
+  opt.add(cores, "cores", "cores per node (>= 1)");
+  std::vector<std::string> paths;
+  std::vector<char*> rest{argv[0]};
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.rfind("-", 0) == 0) {
+      rest.push_back(argv[i]);
+      if (a != "--help" && a != "-h" && i + 1 < argc) rest.push_back(argv[++i]);
+    } else {
+      paths.push_back(a);
+    }
+  }
+  if (!opt.parse(static_cast<int>(rest.size()), rest.data())) return 0;
+  if (nodes < 1 || nodes > 100000) throw InputError("--nodes: expected a whole number from 1 to 100000");
+  if (cores < 1 || cores > 4096) throw InputError("--cores: expected a whole number from 1 to 4096");
+  if (paths.empty()) throw InputError("drawbend plan: name a deck or a folder of run folders (--help)");
+  std::vector<fs::path> decks;
+  for (const auto& p : paths) collect(p, decks);
+  if (decks.empty()) throw InputError("drawbend plan: no deck.toml under " + paths.front());
+  std::vector<Row> rows;
+  for (const auto& d : decks) {
+    Row r;
+    r.deck = d.string();
+    const io::Deck deck = io::read_deck(d.string());  // exit 2 with file:line: key on a bad deck
+    r.p = sim::predict_case(deck);
+    r.measured_cpu = measured_cpu(d.parent_path());
+    rows.push_back(r);
+  }
+  std::cout << "deck,elements,cycles_predicted,cpu_s_predicted,memory_mb,cpu_s_measured,predicted_over_measured\n";
+  std::vector<double> cpu, ratio;
+  for (const auto& r : rows) {
+    cpu.push_back(r.p.cpu_seconds);
+    std::cout << r.deck << "," << r.p.elements << "," << fmt(r.p.cycles, 4) << "," << fmt(r.p.cpu_seconds, 4) << ","
+              << fmt(r.p.memory_mb, 3) << ",";
+    if (std::isfinite(r.measured_cpu) && r.measured_cpu > 0) {
+      ratio.push_back(r.p.cpu_seconds / r.measured_cpu);
+      std::cout << fmt(r.measured_cpu, 4) << "," << fmt(ratio.back(), 3);
+    } else {
+      std::cout << ",";
+    }
+    std::cout << "\n";
+  }
+  double total = 0;
+  for (double c : cpu) total += c;
+  std::cout << "# " << rows.size() << " cases, " << fmt(total / 3600, 3) << " CPU-hours predicted (model: "
+            << sim::kNsPerElementCycle << " ns per element-cycle x elements x predicted cycles)\n";
+  std::cout << "# makespan on " << nodes << " node(s) x " << cores << " core(s): "
+            << fmt(sim::makespan_seconds(cpu, nodes, cores) / 60, 3) << " min (largest first)\n";
+  if (!ratio.empty()) {
+    std::sort(ratio.begin(), ratio.end());
+    const double median = ratio.size() % 2 ? ratio[ratio.size() / 2]
+                                           : 0.5 * (ratio[ratio.size() / 2 - 1] + ratio[ratio.size() / 2]);
+    const double worst = std::max(ratio.back(), 1 / ratio.front());
+    std::cout << "# predicted / measured CPU over " << ratio.size() << " finished runs: median " << fmt(median, 3)
+              << ", range " << fmt(ratio.front(), 3) << " to " << fmt(ratio.back(), 3) << " (worst factor "
+              << fmt(worst, 3) << ")\n";
+  }
+  return 0;
+}
+
+}  // namespace drawbend::cli

@@ -1,0 +1,43 @@
+#include "sim/cost_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <queue>
+
+namespace drawbend::sim {
+
+CasePrediction predict_case(const io::Deck& d) {
+  CasePrediction p;
+  p.name = d.model.name;
+  p.elements = d.model.mesh.num_elements();
+  p.cycles = d.cost.cycles;
+  p.cpu_seconds = p.elements * p.cycles * kNsPerElementCycle * 1e-9;
+  p.memory_mb = d.cost.memory_mb;
+  return p;
+}
+
+JobNeeds job_needs(const CasePrediction& p, int cores) {
+  JobNeeds n;
+  n.cores = std::max(1, cores);
+  n.memory_mb = kFixedMemoryMb + 2 * p.memory_mb;
+  n.minutes = std::max(kMinMinutes, kTimeFactor * p.cpu_seconds / 60.0);
+  return n;
+}
+
+double makespan_seconds(std::vector<double> cpu, int nodes, int cores, double eff) {
+  std::sort(cpu.begin(), cpu.end(), std::greater<double>());
+  const double speedup = cores <= 1 ? 1.0 : std::max(1.0, cores * eff);
+  std::priority_queue<double, std::vector<double>, std::greater<double>> free_at;  // each node's finish time
+  for (int k = 0; k < std::max(1, nodes); ++k) free_at.push(0);
+  double end = 0;
+  for (double c : cpu) {
+    const double t = free_at.top() + c / speedup;
+    free_at.pop();
+    free_at.push(t);
+    end = std::max(end, t);
+  }
+  return end;
+}
+
+}  // namespace drawbend::sim
