@@ -46,7 +46,7 @@ std::vector<double> printed(const std::vector<double>& c) {
 
 // Max relative error |poly - law| / law of printed coefficients over p in the
 // domain and v in [v0, v1], on an n x n grid.
-double rel_error(const std::vector<double>& c, const analysis::FrictionSurface& s, double v0, double v1, int n = 81) {
+double rel_error(const std::vector<double>& c, const analysis::FrictionSurface& s, double v0, double v1, int n = 161) {
   double e = 0;
   for (int a = 0; a < n; ++a)
     for (int b = 0; b < n; ++b) {
@@ -109,25 +109,41 @@ ExportResult export_openradioss(const ExportModel& m, const ExportOptions& o) {
   else dirs = {direction_surface(m, o.direction)};
   const double v0 = o.band_v_min != 0 || o.band_v_max != 0 ? o.band_v_min : m.rd.v_min;
   const double v1 = o.band_v_min != 0 || o.band_v_max != 0 ? o.band_v_max : m.rd.v_max;
-  // The fewest equal speed bands (1 to 8) whose fits all stay within the bound.
-  std::vector<double> edges;
+  // Speed bands: the data's edges are band edges when the fitted range crosses
+  // them (the law is flat in v beyond them, with a kink at the edge); then the
+  // worst band is halved until every band is within the bound (at most 8).
+  std::vector<double> edges{v0};
+  for (double e : {m.rd.v_min, m.rd.v_max})
+    if (e > v0 && e < v1) edges.push_back(e);
+  edges.push_back(v1);
   std::vector<std::vector<std::vector<double>>> coef;  // [band][direction]
-  double worst = 0;
-  for (int nb = 1; nb <= 8; ++nb) {
-    edges.assign(1, v0);
-    for (int k = 1; k <= nb; ++k) edges.push_back(k == nb ? v1 : std::stod(num(v0 + (v1 - v0) * k / nb, 6)));
-    coef.assign(nb, {});
-    worst = 0;
-    for (int k = 0; k < nb; ++k)
-      for (const auto& s : dirs) {
-        coef[k].push_back(printed(radioss_fit(s, edges[k], edges[k + 1])));
-        worst = std::max(worst, rel_error(coef[k].back(), s, edges[k], edges[k + 1]));
-      }
-    if (worst <= o.max_rel_error) break;
+  std::vector<double> err;                              // per band
+  auto fit_band = [&](size_t k) {
+    std::vector<std::vector<double>> c;
+    double e = 0;
+    for (const auto& s : dirs) {
+      c.push_back(printed(radioss_fit(s, edges[k], edges[k + 1])));
+      e = std::max(e, rel_error(c.back(), s, edges[k], edges[k + 1]));
+    }
+    return std::make_pair(c, e);
+  };
+  for (size_t k = 0; k + 1 < edges.size(); ++k) {
+    auto [c, e] = fit_band(k);
+    coef.push_back(c);
+    err.push_back(e);
+  }
+  double worst = *std::max_element(err.begin(), err.end());
+  while (worst > o.max_rel_error && coef.size() < 8) {
+    const size_t k = std::max_element(err.begin(), err.end()) - err.begin();
+    edges.insert(edges.begin() + k + 1, std::stod(num(0.5 * (edges[k] + edges[k + 1]), 6)));
+    coef.insert(coef.begin() + k + 1, std::vector<std::vector<double>>());
+    err.insert(err.begin() + k + 1, 0.0);
+    for (size_t j : {k, k + 1}) std::tie(coef[j], err[j]) = fit_band(j);
+    worst = *std::max_element(err.begin(), err.end());
   }
   if (worst > o.max_rel_error)
     throw std::runtime_error("OpenRadioss: the generalized viscous law misses the friction model by " +
-                             fmt(100 * worst, 3) + " % (relative) even in 8 speed bands; the bound is " +
+                             fmt(100 * worst, 3) + " % (relative) even in " + std::to_string(coef.size()) + " speed bands; the bound is " +
                              fmt(100 * o.max_rel_error, 3) + " % (--max-rel-error), or narrow --speed-band");
   r.bands = static_cast<int>(coef.size());
   r.max_error = worst;
