@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 
@@ -325,6 +326,8 @@ ExportResult export_lsdyna(const ExportModel& m, const ExportOptions& o) {
       << " (RD), LC2 = table " << tables[1] << " (TD),\n"
       << "$ on the slave (sheet) side; direction 1 is the sheet's material direction (OA = 0 deg from it):\n"
       << "$ set the sheet elements' material axes along RD.  FS/FD of card 2 are not used for the sheet.\n"
+      << "$ The master-side cards (FS1_M ...) repeat the sheet's tables; how LS-DYNA combines the two sides\n"
+      << "$ and reads OA/A/B was not checked against a solver here: check both on a block slide first.\n"
       << "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ORTHO_FRICTION_ID\n$      CID\n" << ifield(o.contact_id, 10)
       << "\n$     SSID      MSID     SSTYP     MSTYP    SBOXID    MBOXID       SPR       MPR\n" << ids << "\n"
       << "$       FS        FD        DC        VC       VDC    PENCHK        BT        DT\n"
@@ -430,20 +433,27 @@ std::string write_exports(const std::vector<std::string>& tomls, const std::stri
         "header states the data range, the behaviour outside it and its error against the law.\n\n"
      << "| model | file | error against the law |\n|---|---|---|\n";
   for (const auto& t : tomls) {
-    const ExportModel m = read_friction_model(t);
+    const std::string name = std::filesystem::path(t).filename().string();
+    ExportModel m;
+    try {
+      m = read_friction_model(t);
+    } catch (const std::exception& e) {  // a model the exports cannot take: said, the loop's other outputs stand
+      std::cerr << "warning: no exports of " << name << ": " << e.what() << "\n";
+      md << "| `" << name << "` | none written | " << e.what() << " |\n";
+      continue;
+    }
     for (const auto& f : list) {
       ExportResult r;
       try {
         r = export_to(f, m, o);
-      } catch (const std::runtime_error& e) {  // the polynomial cannot meet its bound: say so, write nothing
-        md << "| `" << std::filesystem::path(t).filename().string() << "` | not written (" << f << ") | " << e.what()
-           << " |\n";
+      } catch (const std::exception& e) {  // e.g. the polynomial cannot meet its bound: said, nothing written
+        std::cerr << "warning: no " << f << " export of " << name << ": " << e.what() << "\n";
+        md << "| `" << name << "` | not written (" << f << ") | " << e.what() << " |\n";
         continue;
       }
       const std::string out = export_path(t, f);
       write_file_atomic(out, r.text);
-      md << "| `" << std::filesystem::path(t).filename().string() << "` | `"
-         << std::filesystem::path(out).filename().string() << "` | "
+      md << "| `" << name << "` | `" << std::filesystem::path(out).filename().string() << "` | "
          << (f == "openradioss" ? "max relative " + fmt(100 * r.max_error, 3) + " % (" + std::to_string(r.bands) + " speed band(s))"
                                 : "max abs(mu - law) " + fmt(r.max_error, 3))
          << (m.td_copied ? "; TD copied from RD (no TD data)" : "") << (m.rd_copied ? "; RD copied from TD (no RD data)" : "")
