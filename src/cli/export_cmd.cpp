@@ -1,10 +1,9 @@
-// drawbend export FRICTION_MODEL.toml --to lsdyna|openradioss|abaqus [--out FILE]
+// drawbend export FRICTION_MODEL.toml --to lsdyna|openradioss|abaqus [options]
 //   Writes the friction model identified by `drawbend loop` (friction_model.toml
 //   and its nodes CSV) as a deck fragment of another solver, with the error of
 //   the written table or polynomial against our law (loop/export.hpp).
-// Exit codes: 0 ok, 2 bad input, 3 numerical failure.
-#include <omp.h>
-
+// Exit codes: 0 ok, 2 bad input (the option named), 3 numerical failure (the
+// OpenRadioss polynomial cannot meet its error bound).
 #include <iostream>
 
 #include "cli/exit_codes.hpp"
@@ -16,33 +15,50 @@
 namespace drawbend::cli {
 
 int export_main(int argc, char** argv) {
+  const char* usage =
+      "usage: drawbend export friction_model.toml --to lsdyna|openradioss|abaqus [--parts SHEET,TOOL] "
+      "[--direction rd|td|mean|ortho] [--out FILE] (--help lists the options)\n";
   if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
-    std::cerr << "usage: drawbend export friction_model.toml --to lsdyna|openradioss|abaqus [--out FILE] [--threads N]\n";
-    return argc >= 2 && std::string(argv[1]) == "--help" ? 0 : 2;
+    if (argc >= 2 && std::string(argv[1]) == "--help") {
+      std::cout << usage;
+      return 0;
+    }
+    std::cerr << usage;
+    return 2;
   }
   const std::string path = argv[1];
-  std::string to, out;
+  std::string to, out, parts, rd_vector, band;
   int threads = 0;
+  loop::ExportOptions eo;
   Options opt("drawbend export FRICTION_MODEL.toml", "Export an identified friction model to another solver.");
   opt.add(to, "to", "lsdyna, openradioss or abaqus");
   opt.add(out, "out", "output file (default: friction_<to>.k|.rad|.inp next to the model)");
+  opt.add(parts, "parts", "SHEET,TOOL part IDs (required for openradioss; lsdyna SSID,MSID)");
+  opt.add(eo.direction, "direction",
+          "rd, td or mean: one isotropic law (openradioss, lsdyna, abaqus explicit); ortho: both directions "
+          "(openradioss Idir = 1, lsdyna ORTHO_FRICTION); abaqus standard always writes both");
+  opt.add(rd_vector, "rd-vector", "X,Y,Z rolling direction in the deck's axes (OpenRadioss /FRIC_ORIENT; default 1,0,0)");
+  opt.add(eo.friction_id, "id", "/FRICTION ID (OpenRadioss; speed bands take ID, ID+1, ...) and LS-DYNA contact ID");
+  opt.add(band, "speed-band", "MIN,MAX sliding speeds [mm/s] the OpenRadioss polynomial is fitted over (default: the data's)");
+  opt.add(eo.max_rel_error, "max-rel-error", "bound of the OpenRadioss fit's relative error per speed band (0.001 to 0.5)");
+  opt.add(eo.abaqus_product, "abaqus", "standard (anisotropic table) or explicit (isotropic table)");
   opt.add(threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all; the export itself is serial)");
   return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
     apply_threads(threads);
+    if (to.empty()) throw std::invalid_argument("--to: expected lsdyna, openradioss or abaqus");
+    loop::set_list_options(eo, parts, rd_vector, band);
+    eo.contact_id = eo.friction_id;
+    eo.validate(to == "lsdyna" || to == "openradioss" || to == "abaqus" ? to : "lsdyna");
     const loop::ExportModel m = loop::read_friction_model(path);
-    loop::ExportResult r;
-    std::string ext;
-    if (to == "lsdyna") r = loop::export_lsdyna(m), ext = ".k";
-    else if (to == "openradioss") r = loop::export_openradioss(m), ext = ".rad";
-    else if (to == "abaqus") r = loop::export_abaqus(m), ext = ".inp";
-    else throw std::invalid_argument("--to must be lsdyna, openradioss or abaqus, not '" + to + "'");
-    if (out.empty()) {
-      const auto slash = path.find_last_of('/');
-      out = (slash == std::string::npos ? std::string() : path.substr(0, slash + 1)) + "friction_" + to + ext;
-    }
+    const loop::ExportResult r = loop::export_to(to, m, eo);
+    if (out.empty()) out = loop::export_path(path, to);
     write_file_atomic(out, r.text);
-    std::cout << "wrote " << out << " (" << to << "; max |mu - law| = " << fmt(r.max_error, 3) << " over the domain)\n";
+    std::cout << "wrote " << out << " (" << to << "; "
+              << (to == "openradioss" ? "max relative error " + fmt(100 * r.max_error, 3) + " % in " +
+                                            std::to_string(r.bands) + " speed band(s)"
+                                      : "max |mu - law| = " + fmt(r.max_error, 3))
+              << (m.td_copied ? "; TD copied from RD: the data had no TD rows" : "") << ")\n";
     return 0;
   });
 }

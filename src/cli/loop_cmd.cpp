@@ -106,6 +106,12 @@ int loop_main(int argc, char** argv) {
           "rotating-pin rows: swift (Eq. 2.1), fe (the FE map's bending_force_N) or none (F_B = 0)");
   opt.add(figures, "figures", "directory of the gnuplot scripts (empty: no figures)");
   opt.add(gnuplot, "gnuplot", "gnuplot executable");
+  std::string exports = "lsdyna,openradioss,abaqus", export_parts = "1,2";
+  loop::ExportOptions eo;
+  opt.add(exports, "export", "friction-model exports written next to friction_model.toml: none or a list of lsdyna, "
+                             "openradioss, abaqus (drawbend export --help for the other options)");
+  opt.add(export_parts, "parts", "SHEET,TOOL part IDs written in the exports (OpenRadioss needs them)");
+  opt.add(eo.direction, "direction", "direction of the isotropic exports: rd, td, mean (ortho: both, see drawbend export)");
   std::string model_help = "empirical";
   opt.add(model_help, "model",
           "empirical (this analysis-level loop) or fe: re-run the draw-bend FE model with candidate effects "
@@ -126,6 +132,10 @@ int loop_main(int argc, char** argv) {
     lo.bending_linear = bending != "constant";
     lo.progress = true;
     lo.seed = static_cast<std::uint64_t>(seed);
+    loop::set_list_options(eo, export_parts, "", "");
+    eo.validate("lsdyna");
+    if (exports != "none")  // the list checked before the analysis, not after it
+      (void)loop::write_exports({}, exports, eo);
     ensure_writable_dir(out, "--out");  // before the analysis, not after it
     const Dataset data = read_measured(data_path);
     if (!data.format_note.empty()) std::cout << data_path << ": " << data.format_note << "\n";
@@ -143,7 +153,7 @@ int loop_main(int argc, char** argv) {
       throw std::runtime_error("the base model's held-out RMS is " +
                                (r.cv.empty() ? std::string("missing") : fmt(r.cv.front().rms)) +
                                ": the data cannot be analysed (no outputs written)");
-    write_loop_outputs(d, r, out, figures, gnuplot);
+    write_loop_outputs(d, r, out, figures, gnuplot, exports, eo);
     if (!std::isfinite(r.cv.back().rms))
       throw std::runtime_error("the held-out error is not finite: rows that no model can predict");
     std::cout << "bending: " << r.bending << "\nbase held-out RMS " << fmt(r.cv.front().rms, 4) << " N; "

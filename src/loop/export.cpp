@@ -1,93 +1,226 @@
-// Friction-model export to LS-DYNA, OpenRadioss and Abaqus; see export.hpp.
+// Friction-model export: the model file, the options, LS-DYNA and Abaqus; see
+// export.hpp.  The OpenRadioss writer is export_radioss.cpp.
 //
-// Manual pages the formats follow:
-//  * LS-DYNA Keyword User's Manual Vol. I, *CONTACT, Card 2: FS = -2 takes the
-//    friction coefficient from the table FD (*DEFINE_TABLE: one value per
-//    curve, here the contact pressure; each *DEFINE_CURVE mu against the
-//    relative sliding speed); *DEFINE_FRICTION_ORIENTATION for direction-dependent
-//    coefficients.  Keyword summary used: https://2021.help.altair.com/2021/hwsolvers/
-//    rad/topics/solvers/rad/contact_automatic_surface_to_surface_lsdyna_r.htm and
-//    https://2021.help.altair.com/2021/hwdesktop/hm/topics/pre_processing/entities/frictions_r.htm
-//  * OpenRadioss / Radioss Starter /FRICTION (Ifric, Idir, C1-C6, Fric, VISF):
-//    https://2021.help.altair.com/2021/hwsolvers/rad/topics/solvers/rad/friction_starter_r.htm
-//    and the friction formulations of the interfaces (generalized viscous law,
-//    Ifric = 1): https://2021.help.altair.com/2021/hwsolvers/rad/topics/solvers/rad/friction_interface_r.htm
-//    orthotropic directions: .../fric_orient_starter_r.htm (/FRIC_ORIENT).
-//  * Abaqus Keywords Reference, *FRICTION (ANISOTROPIC: data lines mu_1, mu_2,
-//    slip rate, contact pressure, temperature, field variables; linear
-//    interpolation between tabulated points).
+// Layouts followed (each file's header names its keyword):
+//  * LS-DYNA Keyword User's Manual Vol. I: *CONTACT (card 1 SSID MSID SSTYP
+//    MSTYP ..., card 2 FS FD DC VC VDC PENCHK BT DT, card 3 SFS SFM SST MST
+//    SFST SFMT FSF VSF; 8 fields of 10 characters); FS = 2: FD is the ID of a
+//    *DEFINE_TABLE giving mu from the contact pressure (the table's values) and
+//    the relative sliding speed (each curve's abscissa), read by the
+//    SURFACE_TO_SURFACE and ONE_WAY_SURFACE_TO_SURFACE contacts with the shell
+//    thickness offset.  _ORTHO_FRICTION: four more cards (FS1 FD1 DC1 VC1 LC1 OA
+//    A B for direction 1 of the slave side, FS2 FD2 DC2 VC2 LC2 for direction 2,
+//    then the same two for the master side); LC1/LC2 a table whose values are
+//    sliding speeds and whose curves give mu against pressure.  *DEFINE_TABLE:
+//    card TBID SFA OFFA (10 characters each), then one value per line (20
+//    characters); *DEFINE_CURVE: LCID SIDR SFA SFO OFFA OFFO DATTYP, then
+//    abscissa and ordinate in 20-character fields.
+//  * Abaqus Keywords Reference, *FRICTION: ANISOTROPIC with DEPENDENCIES = 0
+//    data lines mu_1, mu_2, slip-rate, contact pressure (then temperature and
+//    field variables); isotropic: mu, slip rate, contact pressure.  Outside the
+//    tabulated range of an independent variable Abaqus holds the end value
+//    (piecewise-linear, constant beyond the ends).  Anisotropic friction is an
+//    Abaqus/Standard feature for this form; Abaqus/Explicit takes the isotropic
+//    table (or a VFRIC/VFRICTION user subroutine, not written here).
 #include "loop/export.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <sstream>
+#include <stdexcept>
 
-#include <Eigen/Dense>
 #include <toml++/toml.h>
 
 #include "core/csv.hpp"
 #include "core/toml_read.hpp"
 #include "friction/surface_law.hpp"
+#include "loop/export_detail.hpp"
 
 namespace drawbend::loop {
 
-namespace {
+namespace detail {
 
-std::string num(double v, int prec = 6) {
-  char b[64];
+std::string num(double v, int prec) {
+  char b[512];
   std::snprintf(b, sizeof b, "%.*g", prec, v);
   return b;
 }
 
-std::string field(double v, int width) {  // fixed-width field (one blank at least) with the most digits
-  for (int prec = width - 1; prec >= 1; --prec) {
+std::string field(double v, int width, int max_digits) {
+  for (int prec = std::min(width - 1, max_digits); prec >= 1; --prec) {
     const std::string s = num(v, prec);
     if (static_cast<int>(s.size()) < width) return std::string(width - s.size(), ' ') + s;
   }
-  return num(v, 1);
+  throw std::runtime_error("number " + num(v, 6) + " does not fit in a field of " + std::to_string(width));
 }
 
-std::vector<double> grid(double a, double b, int n) {
+std::string ifield(long v, int width) {
+  const std::string s = std::to_string(v);
+  if (static_cast<int>(s.size()) > width) throw std::invalid_argument("ID " + s + " is wider than its field");
+  return std::string(width - s.size(), ' ') + s;
+}
+
+double as_printed(double v, int width, int max_digits) { return std::stod(field(v, width, max_digits)); }
+
+std::vector<double> grid(double a, double b, int n, int width) {
   std::vector<double> g(n);
-  for (int k = 0; k < n; ++k) g[k] = n > 1 ? a + (b - a) * k / (n - 1) : a;
+  for (int k = 0; k < n; ++k) g[k] = as_printed(n > 1 ? a + (b - a) * k / (n - 1) : a, width, 8);
+  g.front() = a;  // the domain's ends exactly (they are printed with all their digits below)
+  g.back() = b;
   return g;
 }
 
-// Bilinear interpolation in a table mu[i][j] over ps[i], vs[j] (both solvers
-// interpolate linearly between tabulated points).
-double bilinear(const std::vector<double>& ps, const std::vector<double>& vs,
-                const std::vector<std::vector<double>>& mu, double p, double v) {
-  auto locate = [](const std::vector<double>& x, double t, size_t& i, double& w) {
+double bilinear(const std::vector<double>& xs, const std::vector<double>& ys, const std::vector<std::vector<double>>& f,
+                double x, double y) {
+  auto locate = [](const std::vector<double>& g, double t, size_t& i, double& w) {
+    t = std::clamp(t, g.front(), g.back());
     i = 0;
-    while (i + 2 < x.size() && t > x[i + 1]) ++i;
-    w = (t - x[i]) / (x[i + 1] - x[i]);
+    while (i + 2 < g.size() && t > g[i + 1]) ++i;
+    w = (t - g[i]) / (g[i + 1] - g[i]);
   };
   size_t i, j;
   double a, b;
-  locate(ps, p, i, a);
-  locate(vs, v, j, b);
-  return (1 - a) * ((1 - b) * mu[i][j] + b * mu[i][j + 1]) + a * ((1 - b) * mu[i + 1][j] + b * mu[i + 1][j + 1]);
+  locate(xs, x, i, a);
+  locate(ys, y, j, b);
+  return (1 - a) * ((1 - b) * f[i][j] + b * f[i][j + 1]) + a * ((1 - b) * f[i + 1][j] + b * f[i + 1][j + 1]);
 }
 
-// Max error of a representation f against the law on a grid 4x finer than n.
-template <class F>
-double check_error(const analysis::FrictionSurface& s, F f, int n = 11) {
-  double e = 0;
-  for (double p : grid(s.p_min, s.p_max, 4 * (n - 1) + 1))
-    for (double v : grid(s.v_min, s.v_max, 4 * (n - 1) + 1)) e = std::max(e, std::abs(f(p, v) - s(p, v)));
-  return e;
-}
-
-std::vector<std::vector<double>> tabulate(const analysis::FrictionSurface& s, const std::vector<double>& ps,
-                                          const std::vector<double>& vs, int prec) {
-  std::vector<std::vector<double>> t(ps.size(), std::vector<double>(vs.size()));
-  for (size_t i = 0; i < ps.size(); ++i)
-    for (size_t j = 0; j < vs.size(); ++j) t[i][j] = std::stod(num(s(ps[i], vs[j]), prec));  // as printed
+Table make_table_n(const analysis::FrictionSurface& s, int width, int n) {
+  Table t;
+  {
+    t.ps = grid(s.p_min, s.p_max, n, width);
+    t.vs = grid(s.v_min, s.v_max, n, width);
+    t.mu.assign(n, std::vector<double>(n));
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) t.mu[i][j] = as_printed(law_mu(s, t.ps[i], t.vs[j]), width, 8);
+    t.max_error = 0;
+    const int fine = 4 * (n - 1) + 1;
+    for (int a = 0; a < fine; ++a)
+      for (int b = 0; b < fine; ++b) {
+        const double p = s.p_min + (s.p_max - s.p_min) * a / (fine - 1), v = s.v_min + (s.v_max - s.v_min) * b / (fine - 1);
+        t.max_error = std::max(t.max_error, std::abs(bilinear(t.ps, t.vs, t.mu, p, v) - law_mu(s, p, v)));
+      }
+  }
   return t;
 }
 
+Table make_table(const analysis::FrictionSurface& s, int width, double tol) {
+  Table t;
+  for (int n = 11; n <= 201; n += 10)
+    if ((t = make_table_n(s, width, n)).max_error <= tol) break;
+  return t;
+}
+
+std::string range_text(const analysis::FrictionSurface& s) {
+  return "p " + fmt_shortest(s.p_min) + " to " + fmt_shortest(s.p_max) + " MPa, v " + fmt_shortest(s.v_min) + " to " +
+         fmt_shortest(s.v_max) + " mm/s";
+}
+
+std::string provenance(const ExportModel& m, const std::string& c, const std::string& direction) {
+  std::ostringstream h;
+  h << c << " friction model: " << m.source;
+  if (!m.data.empty()) h << ", identified by `drawbend loop` from " << m.data;
+  if (!m.lubricant.empty()) h << ", lubricant " << m.lubricant;
+  h << "\n" << c << " units: N, mm, s, MPa (pressure MPa, sliding speed mm/s); declare them in your deck.\n"
+    << c << " data range (the law's domain): " << range_text(m.rd) << ".\n"
+    << c << " the law (drawbend's surface law): mu_RD(p, v), mu_TD(p, v) nine-node surfaces, p and v CLAMPED to\n"
+    << c << "   that domain (the edge value outside it), mu >= 0.\n";
+  if (m.td_copied && direction != "rd")
+    h << c << " NOTE: the data had no TD rows: TD is a COPY of RD here, not a measurement.\n";
+  if (m.rd_copied && direction != "td")
+    h << c << " NOTE: the data had no RD rows: RD is a COPY of TD here, not a measurement.\n";
+  return h.str();
+}
+
+}  // namespace detail
+
+using namespace detail;
+
+double law_mu(const analysis::FrictionSurface& s, double p, double v) {
+  return std::max(0.0, s(std::clamp(p, s.p_min, s.p_max), std::clamp(v, s.v_min, s.v_max)));
+}
+
+analysis::FrictionSurface direction_surface(const ExportModel& m, const std::string& d) {
+  if (d == "rd") return m.rd;
+  if (d == "td") return m.td;
+  if (d != "mean") throw std::invalid_argument("--direction must be rd, td, mean or ortho, not '" + d + "'");
+  analysis::FrictionSurface s = m.rd;
+  for (int k = 0; k < 9; ++k) s.mu[k] = 0.5 * (m.rd.mu[k] + m.td.mu[k]);
+  return s;
+}
+
+void ExportOptions::validate(const std::string& format) const {
+  auto bad = [](const std::string& opt, const std::string& what) { throw std::invalid_argument(opt + ": " + what); };
+  if (direction != "rd" && direction != "td" && direction != "mean" && direction != "ortho")
+    bad("--direction", "expected rd, td, mean or ortho, found '" + direction + "'");
+  if (format == "openradioss" && (sheet_part <= 0 || tool_part <= 0))
+    bad("--parts", "OpenRadioss needs the part IDs of the sheet and the tool (--parts SHEET,TOOL, positive integers): "
+                   "its starter drops a pair with part ID 0 without a word");
+  if (sheet_part < 0 || tool_part < 0 || sheet_part > 999999999 || tool_part > 999999999)
+    bad("--parts", "expected part IDs from 1 to 999999999");
+  if (sheet_part > 0 && sheet_part == tool_part) bad("--parts", "the sheet and the tool need different part IDs");
+  if (friction_id < 1 || friction_id > 99999999) bad("--id", "expected an ID from 1 to 99999999, found " + std::to_string(friction_id));
+  if (contact_id < 1 || contact_id > 9999999) bad("--id", "expected an ID from 1 to 9999999");
+  const double n = std::hypot(rd_vector[0], rd_vector[1], rd_vector[2]);
+  if (!(std::isfinite(n) && n > 1e-12 && n < 1e12)) bad("--rd-vector", "expected a finite non-zero vector X,Y,Z");
+  if (!(std::isfinite(max_rel_error) && max_rel_error >= 0.001 && max_rel_error <= 0.5))
+    bad("--max-rel-error", "expected a fraction from 0.001 to 0.5, found " + fmt_shortest(max_rel_error));
+  if (!(std::isfinite(band_v_min) && std::isfinite(band_v_max) && band_v_min >= 0 && band_v_max < 1e7))
+    bad("--speed-band", "expected finite speeds from 0 to 1e7 mm/s");
+  if ((band_v_min != 0 || band_v_max != 0) && !(band_v_min < band_v_max))
+    bad("--speed-band", "expected MIN < MAX, found " + fmt_shortest(band_v_min) + "," + fmt_shortest(band_v_max));
+  if (abaqus_product != "standard" && abaqus_product != "explicit")
+    bad("--abaqus", "expected standard or explicit, found '" + abaqus_product + "'");
+}
+
+namespace {
+std::vector<double> numbers(const std::string& text, const std::string& opt, size_t n, bool integers) {
+  std::vector<double> v;
+  std::stringstream ss(text);
+  for (std::string item; std::getline(ss, item, ',');) {
+    size_t used = 0;
+    double x = NAN;
+    try {
+      x = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    while (used < item.size() && item[used] == ' ') ++used;
+    if (item.empty() || used != item.size() || !std::isfinite(x) || (integers && x != std::floor(x)))
+      throw std::invalid_argument(opt + ": expected " + std::to_string(n) + (integers ? " integers" : " finite numbers") +
+                                  " separated by commas, found '" + text + "'");
+    v.push_back(x);
+  }
+  if (v.size() != n)
+    throw std::invalid_argument(opt + ": expected " + std::to_string(n) + " values separated by commas, found '" + text + "'");
+  return v;
+}
 }  // namespace
+
+void set_list_options(ExportOptions& o, const std::string& parts, const std::string& rd_vector,
+                      const std::string& speed_band) {
+  if (!parts.empty()) {
+    const auto v = numbers(parts, "--parts", 2, true);
+    if (!(v[0] >= 1 && v[1] >= 1 && v[0] <= 999999999 && v[1] <= 999999999))
+      throw std::invalid_argument("--parts: expected part IDs from 1 to 999999999, found '" + parts + "'");
+    o.sheet_part = static_cast<int>(v[0]);
+    o.tool_part = static_cast<int>(v[1]);
+  }
+  if (!rd_vector.empty()) {
+    const auto v = numbers(rd_vector, "--rd-vector", 3, false);
+    o.rd_vector = {v[0], v[1], v[2]};
+  }
+  if (!speed_band.empty()) {
+    const auto v = numbers(speed_band, "--speed-band", 2, false);
+    if (!(v[0] > 0 && v[0] < v[1] && v[1] < 1e7))
+      throw std::invalid_argument("--speed-band: expected 0 < MIN < MAX < 1e7 mm/s, found '" + speed_band + "'");
+    o.band_v_min = v[0];
+    o.band_v_max = v[1];
+  }
+}
 
 ExportModel read_friction_model(const std::string& path) {
   const toml::table t = parse_toml_file(path);
@@ -106,109 +239,228 @@ ExportModel read_friction_model(const std::string& path) {
   const std::filesystem::path file = std::filesystem::path(path).parent_path() / *nodes;
   ExportModel m;
   std::tie(m.rd, m.td) = friction::load_surface_nodes(file.string(), d);
+  try {
+    m.rd.validate();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(path + ": " + e.what());
+  }
   m.source = path;
+  if (const auto* mt = t["model"].as_table()) {
+    m.data = (*mt)["data"].value<std::string>().value_or("");
+    m.lubricant = (*mt)["lubricant"].value<std::string>().value_or("");
+    m.td_copied = (*mt)["td_copied_from_rd"].value<bool>().value_or(false);
+    m.rd_copied = (*mt)["rd_copied_from_td"].value<bool>().value_or(false);
+  } else {
+    m.td_copied = m.rd.mu == m.td.mu;  // no [model] table: identical directions, TD taken as the copy
+  }
   return m;
 }
 
-std::vector<double> radioss_fit(const analysis::FrictionSurface& s) {
-  const auto ps = grid(s.p_min, s.p_max, 21), vs = grid(s.v_min, s.v_max, 21);
-  Eigen::MatrixXd A(ps.size() * vs.size(), 6);
-  Eigen::VectorXd b(A.rows());
-  int k = 0;
-  for (double p : ps)
-    for (double v : vs) {
-      A.row(k) << 1, p, v, p * v, p * p, v * v;
-      b[k++] = s(p, v);
-    }
-  const Eigen::VectorXd c = A.colPivHouseholderQr().solve(b);
-  return {c[0], c[1], c[2], c[3], c[4], c[5]};
-}
-
-double radioss_mu(const std::vector<double>& c, double p, double v) {
-  return c[0] + c[1] * p + c[2] * v + c[3] * p * v + c[4] * p * p + c[5] * v * v;
-}
-
-ExportResult export_lsdyna(const ExportModel& m, int n_p, int n_v) {
+ExportResult export_lsdyna(const ExportModel& m, const ExportOptions& o) {
+  o.validate("lsdyna");
   ExportResult r;
   r.format = "lsdyna";
-  const auto ps = grid(m.rd.p_min, m.rd.p_max, n_p), vs = grid(m.rd.v_min, m.rd.v_max, n_v);
-  std::ostringstream o;
-  int curve = 9001;
-  for (int dir = 0; dir < 2; ++dir) {
-    const auto& s = dir == 0 ? m.rd : m.td;
-    const auto tab = tabulate(s, ps, vs, 7);
-    r.max_error = std::max(r.max_error, check_error(s, [&](double p, double v) { return bilinear(ps, vs, tab, p, v); }, n_p));
-    const int table = dir == 0 ? 9000 : 9100;
-    o << "$ mu(p, v) " << (dir == 0 ? "RD" : "TD") << ": table " << table << ", values = contact pressure [MPa], "
-      << "curves = mu against sliding speed [mm/s]\n*DEFINE_TABLE\n$     TBID\n" << field(table, 10) << "\n";
-    for (double p : ps) o << field(p, 20) << "\n";
-    for (size_t i = 0; i < ps.size(); ++i) {
-      o << "*DEFINE_CURVE\n$     LCID\n" << field(curve++, 10) << "\n";
-      for (size_t j = 0; j < vs.size(); ++j) o << field(vs[j], 20) << field(tab[i][j], 20) << "\n";
+  const bool ortho = o.direction == "ortho";
+  const int base = o.contact_id * 1000;  // table IDs base+1.., curve IDs base+101..
+  // Flat ends: the first and last rows/columns repeated at 0 and 10x the
+  // domain's upper end, so that any interpolation or extrapolation rule gives
+  // the clamped law up to there (stated in the header).
+  auto extend = [](std::vector<double> g, double hi) {
+    if (g.front() > 0) g.insert(g.begin(), 0.0);
+    g.push_back(hi);
+    return g;
+  };
+  std::ostringstream body;
+  int curve = base + 101;
+  std::vector<int> tables;
+  auto write_table = [&](const analysis::FrictionSurface& s, bool values_are_pressure, const std::string& what) {
+    const Table t = make_table(s, 20, 2e-5);
+    r.max_error = std::max(r.max_error, t.max_error);
+    const auto ps = extend(t.ps, 10 * s.p_max), vs = extend(t.vs, 10 * s.v_max);
+    const int id = base + 1 + static_cast<int>(tables.size());
+    tables.push_back(id);
+    const auto& outer = values_are_pressure ? ps : vs;
+    const auto& inner = values_are_pressure ? vs : ps;
+    body << "$ table " << id << ": " << what << "; values = "
+         << (values_are_pressure ? "contact pressure [MPa], curves = mu against sliding speed [mm/s]"
+                                 : "sliding speed [mm/s], curves = mu against contact pressure [MPa]")
+         << "\n*DEFINE_TABLE\n$     TBID\n" << ifield(id, 10) << "\n";
+    for (double x : outer) body << field(x, 20) << "\n";
+    for (double x : outer) {
+      body << "*DEFINE_CURVE\n$     LCID      SIDR       SFA       SFO\n" << ifield(curve++, 10) << ifield(0, 10)
+           << field(1, 10) << field(1, 10) << "\n$                 A1                  O1\n";
+      for (double y : inner) {
+        const double p = values_are_pressure ? x : y, v = values_are_pressure ? y : x;
+        body << field(y, 20) << field(law_mu(s, p, v), 20, 8) << "\n";
+      }
     }
+  };
+  if (ortho) {
+    write_table(m.rd, false, "LC1, mu along direction 1 (RD)");
+    write_table(m.td, false, std::string("LC2, mu along direction 2 (TD)") + (m.td_copied ? ", COPIED from RD (no TD data)" : ""));
+  } else {
+    write_table(direction_surface(m, o.direction), true,
+                "mu(p, v) for FS = 2, direction " + o.direction + (m.td_copied && o.direction != "rd" ? " (TD copied from RD)" : ""));
   }
   std::ostringstream h;
-  h << "$ drawbend export: friction model " << m.source << " (units N, mm, s, MPa)\n"
-    << "$ *CONTACT card 2: FS = -2, FD = 9000 (the RD table); TD table 9100 for the orthotropic pair\n"
-    << "$ (*DEFINE_FRICTION_ORIENTATION, angle 90 deg from the rolling direction).\n"
-    << "$ Linear interpolation of this table differs from the nine-node law by at most " << num(r.max_error, 3)
-    << " in mu over p " << num(m.rd.p_min) << "-" << num(m.rd.p_max) << " MPa, v " << num(m.rd.v_min) << "-"
-    << num(m.rd.v_max) << " mm/s.\n";
-  r.text = h.str() + o.str();
-  return r;
-}
-
-ExportResult export_openradioss(const ExportModel& m) {
-  ExportResult r;
-  r.format = "openradioss";
-  std::vector<double> c[2];
-  for (int dir = 0; dir < 2; ++dir) {
-    const auto& s = dir == 0 ? m.rd : m.td;
-    c[dir] = radioss_fit(s);
-    for (double& x : c[dir]) x = std::stod(field(x, 10));  // as printed
-    r.max_error = std::max(r.max_error, check_error(s, [&](double p, double v) { return radioss_mu(c[dir], p, v); }));
+  h << "*KEYWORD\n$ drawbend export to LS-DYNA (keyword format, 10-character fields; tables 20-character)\n"
+    << provenance(m, "$", o.direction)
+    << "$ tables: mu at the printed grid points, linear between them; max |mu - law| over the domain "
+    << num(r.max_error, 3) << ".\n"
+    << "$ outside the domain the tables hold the edge values (flat end points at p = 0 and 10 p_max, v = 0 and\n"
+    << "$ 10 v_max) = the law's clamp; beyond 10 p_max or 10 v_max LS-DYNA's own end rule applies.\n";
+  const std::string ids = ifield(o.sheet_part, 10) + ifield(o.tool_part, 10) + ifield(3, 10) + ifield(3, 10);
+  if (!ortho) {
+    h << "$ isotropic, direction " << o.direction << " (--direction rd|td|mean; ortho for the orthotropic form).\n"
+      << "$ FS = 2, FD = table " << tables[0] << ": read by *CONTACT_SURFACE_TO_SURFACE and\n"
+      << "$ *CONTACT_ONE_WAY_SURFACE_TO_SURFACE (and their FORMING_ forms) with the shell thickness offset; other\n"
+      << "$ contact types do not read the table.  SSID/MSID = sheet/tool part IDs (--parts, SSTYP = MSTYP = 3).\n"
+      << "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ID\n$      CID\n" << ifield(o.contact_id, 10) << "\n"
+      << "$     SSID      MSID     SSTYP     MSTYP    SBOXID    MBOXID       SPR       MPR\n" << ids << "\n"
+      << "$       FS        FD        DC        VC       VDC    PENCHK        BT        DT\n"
+      << field(2, 10) << ifield(tables[0], 10) << field(0, 10) << field(0, 10) << field(0, 10) << "\n"
+      << "$      SFS       SFM       SST       MST      SFST      SFMT       FSF       VSF\n"
+      << field(1, 10) << field(1, 10) << "\n";
+  } else {
+    h << "$ orthotropic: *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ORTHO_FRICTION, LC1 = table " << tables[0]
+      << " (RD), LC2 = table " << tables[1] << " (TD),\n"
+      << "$ on the slave (sheet) side; direction 1 is the sheet's material direction (OA = 0 deg from it):\n"
+      << "$ set the sheet elements' material axes along RD.  FS/FD of card 2 are not used for the sheet.\n"
+      << "$ The master-side cards (FS1_M ...) repeat the sheet's tables; how LS-DYNA combines the two sides\n"
+      << "$ and reads OA/A/B was not checked against a solver here: check both on a block slide first.\n"
+      << "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ORTHO_FRICTION_ID\n$      CID\n" << ifield(o.contact_id, 10)
+      << "\n$     SSID      MSID     SSTYP     MSTYP    SBOXID    MBOXID       SPR       MPR\n" << ids << "\n"
+      << "$       FS        FD        DC        VC       VDC    PENCHK        BT        DT\n"
+      << field(0, 10) << field(0, 10) << "\n"
+      << "$      SFS       SFM       SST       MST      SFST      SFMT       FSF       VSF\n"
+      << field(1, 10) << field(1, 10) << "\n"
+      << "$    FS1_S     FD1_S     DC1_S     VC1_S     LC1_S      OA_S       A_S       B_S\n"
+      << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(tables[0], 10) << field(0, 10) << "\n"
+      << "$    FS2_S     FD2_S     DC2_S     VC2_S     LC2_S\n"
+      << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(tables[1], 10) << "\n"
+      << "$    FS1_M     FD1_M     DC1_M     VC1_M     LC1_M      OA_M       A_M       B_M\n"
+      << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(tables[0], 10) << field(0, 10) << "\n"
+      << "$    FS2_M     FD2_M     DC2_M     VC2_M     LC2_M\n"
+      << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(tables[1], 10) << "\n";
   }
-  std::ostringstream o;
-  o << "# drawbend export: friction model " << m.source << " (unit system N, mm, s, MPa: declare it with /UNIT)\n"
-    << "# generalized viscous law (Ifric = 1): mu = Fric + C1 p + C2 v + C3 p v + C4 p^2 + C5 v^2,\n"
-    << "# p contact pressure [MPa], v sliding speed [mm/s]; least-squares fit to the nine-node surface,\n"
-    << "# max |error| " << num(r.max_error, 3) << " in mu over p " << num(m.rd.p_min) << "-" << num(m.rd.p_max)
-    << " MPa, v " << num(m.rd.v_min) << "-" << num(m.rd.v_max) << " mm/s.\n"
-    << "# Idir = 1: first coefficient block direction 1 = RD, second = TD (orient with /FRIC_ORIENT).\n"
-    << "# Replace the part IDs (0) with yours.\n"
-    << "/FRICTION/1\ndrawbend friction model\n"
-    << "#    Ifric    Ifiltr     Xfreq     Iform\n         1         0         0         0\n";
-  auto block = [&](const std::vector<double>& k) {
-    o << "#       C1        C2        C3        C4        C5\n"
-      << field(k[1], 10) << field(k[2], 10) << field(k[3], 10) << field(k[4], 10) << field(k[5], 10) << "\n"
-      << "#       C6      Fric      VISF\n" << field(0, 10) << field(k[0], 10) << field(1, 10) << "\n";
-  };
-  block(c[0]);  // default (RD)
-  o << "#grpart_ID1grpart_ID2  part_ID1  part_ID2      Idir\n         0         0         0         0         1\n";
-  block(c[0]);
-  block(c[1]);
-  r.text = o.str();
+  if (o.sheet_part == 0 || o.tool_part == 0)
+    h << "$ SET BY HAND: SSID and MSID are 0 (no --parts given): put your sheet and tool part IDs.\n";
+  r.text = h.str() + body.str() + "*END\n";
   return r;
 }
 
-ExportResult export_abaqus(const ExportModel& m, int n_p, int n_v) {
+ExportResult export_abaqus(const ExportModel& m, const ExportOptions& o) {
+  o.validate("abaqus");
   ExportResult r;
   r.format = "abaqus";
-  const auto ps = grid(m.rd.p_min, m.rd.p_max, n_p), vs = grid(m.rd.v_min, m.rd.v_max, n_v);
-  const auto trd = tabulate(m.rd, ps, vs, 7), ttd = tabulate(m.td, ps, vs, 7);
-  r.max_error = std::max(check_error(m.rd, [&](double p, double v) { return bilinear(ps, vs, trd, p, v); }, n_p),
-                         check_error(m.td, [&](double p, double v) { return bilinear(ps, vs, ttd, p, v); }, n_p));
-  std::ostringstream o;
-  o << "** drawbend export: friction model " << m.source << " (units N, mm, s, MPa)\n"
-    << "** mu_1 along the first local slip direction (RD), mu_2 across it (TD); slip rate [mm/s], contact pressure\n"
-    << "** [MPa]; linear interpolation differs from the nine-node law by at most " << num(r.max_error, 3) << " in mu.\n"
-    << "** Put under your *SURFACE INTERACTION; orient direction 1 with the contact's local axes (RD).\n"
-    << "*FRICTION, ANISOTROPIC\n";
-  for (size_t i = 0; i < ps.size(); ++i)
-    for (size_t j = 0; j < vs.size(); ++j)
-      o << num(trd[i][j], 7) << ", " << num(ttd[i][j], 7) << ", " << num(vs[j], 7) << ", " << num(ps[i], 7) << "\n";
-  r.text = o.str();
+  const bool explicit_ = o.abaqus_product == "explicit";
+  std::string dir = o.direction;
+  if (!explicit_) dir = "ortho";
+  else if (dir == "ortho") throw std::invalid_argument("--direction: Abaqus/Explicit takes an isotropic table here (rd, td or mean)");
+  std::ostringstream h, b;
+  h << "** drawbend export to Abaqus/" << (explicit_ ? "Explicit" : "Standard") << " (--abaqus standard|explicit)\n"
+    << provenance(m, "**", dir);
+  if (!explicit_) {
+    // one grid for both columns: the finer of the two directions' grids
+    const int n = static_cast<int>(std::max(make_table(m.rd, 20, 2e-5).ps.size(), make_table(m.td, 20, 2e-5).ps.size()));
+    const Table trd = make_table_n(m.rd, 20, n), ttd = make_table_n(m.td, 20, n);
+    const Table& g = trd;
+    for (size_t i = 0; i < g.ps.size(); ++i)
+      for (size_t j = 0; j < g.vs.size(); ++j) {
+        const double mu1 = as_printed(law_mu(m.rd, g.ps[i], g.vs[j]), 20, 8);
+        const double mu2 = as_printed(law_mu(m.td, g.ps[i], g.vs[j]), 20, 8);
+        b << num(mu1, 8) << ", " << num(mu2, 8) << ", " << num(g.vs[j], 10) << ", " << num(g.ps[i], 10) << "\n";
+      }
+    r.max_error = std::max(trd.max_error, ttd.max_error);
+    h << "** *FRICTION, ANISOTROPIC (Abaqus/Standard): data lines mu_1 (along the first local slip direction =\n"
+      << "**   RD), mu_2 (TD), slip rate [mm/s], contact pressure [MPa]; " << g.ps.size() << " pressures x "
+      << g.vs.size() << " slip rates.\n"
+      << "** linear between points, the end value beyond the table (= the law's clamp); max |mu - law| "
+      << num(r.max_error, 3) << ".\n"
+      << "** SET BY HAND: put it under your *SURFACE INTERACTION and orient the contact's first local\n"
+      << "**   direction along RD (*ORIENTATION on the slave surface).  Abaqus/Explicit: --abaqus explicit.\n"
+      << "*FRICTION, ANISOTROPIC\n";
+  } else {
+    const auto s = direction_surface(m, dir);
+    const Table t = make_table(s, 20, 2e-5);
+    r.max_error = t.max_error;
+    for (size_t i = 0; i < t.ps.size(); ++i)
+      for (size_t j = 0; j < t.vs.size(); ++j)
+        b << num(t.mu[i][j], 8) << ", " << num(t.vs[j], 10) << ", " << num(t.ps[i], 10) << "\n";
+    h << "** *FRICTION isotropic, direction " << dir << " (--direction rd|td|mean): data lines mu, slip rate [mm/s],\n"
+      << "**   contact pressure [MPa]; " << t.ps.size() << " pressures x " << t.vs.size() << " slip rates.\n"
+      << "** linear between points, the end value beyond the table (= the law's clamp); max |mu - law| "
+      << num(r.max_error, 3) << ".\n"
+      << "** Anisotropic friction in Abaqus/Explicit needs a VFRIC/VFRICTION user subroutine (not written).\n"
+      << "** SET BY HAND: put it under your *SURFACE INTERACTION.\n"
+      << "*FRICTION\n";
+  }
+  r.text = h.str() + b.str();
   return r;
+}
+
+ExportResult export_to(const std::string& format, const ExportModel& m, const ExportOptions& o) {
+  if (format == "lsdyna") return export_lsdyna(m, o);
+  if (format == "openradioss") return export_openradioss(m, o);
+  if (format == "abaqus") return export_abaqus(m, o);
+  throw std::invalid_argument("--to must be lsdyna, openradioss or abaqus, not '" + format + "'");
+}
+
+std::string export_path(const std::string& toml_path, const std::string& format) {
+  const std::filesystem::path p(toml_path);
+  std::string stem = p.stem().string();
+  const std::string head = "friction_model";
+  const std::string rest = stem.rfind(head, 0) == 0 ? stem.substr(head.size()) : "_" + stem;
+  const std::string ext = format == "lsdyna" ? ".k" : format == "openradioss" ? ".rad" : ".inp";
+  return (p.parent_path() / ("friction_" + format + rest + ext)).string();
+}
+
+std::string write_exports(const std::vector<std::string>& tomls, const std::string& formats, const ExportOptions& o) {
+  std::vector<std::string> list;
+  if (formats != "none") {
+    std::stringstream ss(formats);
+    for (std::string f; std::getline(ss, f, ',');) {
+      if (f != "lsdyna" && f != "openradioss" && f != "abaqus")
+        throw std::invalid_argument("--export: expected none or a list of lsdyna, openradioss, abaqus; found '" + f + "'");
+      list.push_back(f);
+    }
+  }
+  std::ostringstream md;
+  md << "\n## Exports to other solvers\n\n";
+  if (list.empty()) return md.str() + "None written (--export none); `drawbend export` writes them later.\n";
+  md << "Written with `drawbend export` defaults (direction " << o.direction << ", parts " << o.sheet_part << ","
+     << o.tool_part << ": set yours with `drawbend export FILE.toml --to FORMAT --parts SHEET,TOOL`). Each file's "
+        "header states the data range, the behaviour outside it and its error against the law.\n\n"
+     << "| model | file | error against the law |\n|---|---|---|\n";
+  for (const auto& t : tomls) {
+    const std::string name = std::filesystem::path(t).filename().string();
+    ExportModel m;
+    try {
+      m = read_friction_model(t);
+    } catch (const std::exception& e) {  // a model the exports cannot take: said, the loop's other outputs stand
+      std::cerr << "warning: no exports of " << name << ": " << e.what() << "\n";
+      md << "| `" << name << "` | none written | " << e.what() << " |\n";
+      continue;
+    }
+    for (const auto& f : list) {
+      ExportResult r;
+      try {
+        r = export_to(f, m, o);
+      } catch (const std::exception& e) {  // e.g. the polynomial cannot meet its bound: said, nothing written
+        std::cerr << "warning: no " << f << " export of " << name << ": " << e.what() << "\n";
+        md << "| `" << name << "` | not written (" << f << ") | " << e.what() << " |\n";
+        continue;
+      }
+      const std::string out = export_path(t, f);
+      write_file_atomic(out, r.text);
+      md << "| `" << name << "` | `" << std::filesystem::path(out).filename().string() << "` | "
+         << (f == "openradioss" ? "max relative " + fmt(100 * r.max_error, 3) + " % (" + std::to_string(r.bands) + " speed band(s))"
+                                : "max abs(mu - law) " + fmt(r.max_error, 3))
+         << (m.td_copied ? "; TD copied from RD (no TD data)" : "") << (m.rd_copied ? "; RD copied from TD (no RD data)" : "")
+         << " |\n";
+    }
+  }
+  return md.str();
 }
 
 }  // namespace drawbend::loop

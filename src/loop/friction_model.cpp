@@ -15,6 +15,16 @@ namespace drawbend::loop {
 
 namespace {
 
+std::string toml_escape(const std::string& t) {  // a TOML basic string's content
+  std::string r;
+  for (char c : t) {
+    if (c == '"' || c == '\\') r += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) continue;  // no control characters in a name
+    r += c;
+  }
+  return r;
+}
+
 std::vector<std::string> split_cell(const std::string& c) {
   std::vector<std::string> out;
   size_t a = 0;
@@ -136,8 +146,8 @@ FrictionModel identify_friction(const Design& d, const LoopResult& r) {
       fs.rows += static_cast<int>(P[k].size());
     }
     // A direction without rows takes the other's nodes (stated in the note).
-    if (P[0].empty()) fs.rd = fs.td;
-    if (P[1].empty()) fs.td = fs.rd;
+    if (P[0].empty()) fs.rd = fs.td, fs.rd_copied = true;
+    if (P[1].empty()) fs.td = fs.rd, fs.td_copied = true;
     m.surfaces.push_back(fs);
   }
   return m;
@@ -196,10 +206,13 @@ std::string write_friction_outputs(const Design& d, const LoopResult& r, const F
          << ", p_max = " << fmt(s.rd.p_max, 8) << ", v_min = " << fmt(s.rd.v_min, 8) << ", v_max = "
          << fmt(s.rd.v_max, 8) << ", interval = 100 }\n"
          << "# (or this file's [friction] table as [contact.friction]); outside the domain the solver clamps.\n"
-         << "# Export: drawbend export friction_model.toml --to lsdyna|openradioss|abaqus\n\n[friction]\n"
+         << "# Export: drawbend export friction_model" << tag << ".toml --to lsdyna|openradioss|abaqus --parts SHEET,TOOL\n\n[friction]\n"
          << "law = \"surface\"\nnodes = \"" << nodes << "\"\np_min = " << fmt(s.rd.p_min, 8) << "\np_max = "
          << fmt(s.rd.p_max, 8) << "\nv_min = " << fmt(s.rd.v_min, 8) << "\nv_max = " << fmt(s.rd.v_max, 8)
-         << "\ninterval = 100\n";
+         << "\ninterval = 100\n\n# where it came from (read by `drawbend export` for the exported files' headers)\n[model]\n"
+         << "data = \"" << toml_escape(d.data->path) << "\"\nlubricant = \"" << toml_escape(s.lubricant)
+         << "\"\ntd_copied_from_rd = " << (s.td_copied ? "true" : "false") << "\nrd_copied_from_td = "
+         << (s.rd_copied ? "true" : "false") << "\n";
     write_file_atomic(out + "/friction_model" + tag + ".toml", toml.str());
     md << "Lubricant " << s.lubricant << " (`friction_model" << tag << ".toml`, `" << nodes << "`): domain p "
        << fmt(s.rd.p_min, 4) << "–" << fmt(s.rd.p_max, 4) << " MPa (the rows' force-weighted map pressures), v "

@@ -12,7 +12,8 @@
 //    identified), said in the output;
 //  * friction_model.toml: a [friction] table in the deck format of
 //    data/cases/README.md (law = "surface", nodes CSV, domain), usable as a
-//    [[contact]] friction of a `drawbend run` deck.
+//    [[contact]] friction of a `drawbend run` deck; its [model] table names
+//    the data file, the lubricant and a direction copied for lack of rows.
 // Units: MPa, mm/s, N.
 #include <string>
 #include <vector>
@@ -33,6 +34,7 @@ struct FittedSurface {
   analysis::FrictionSurface rd, td;  ///< same domain
   double rms_rd = 0, rms_td = 0;      ///< fit error of the nodes against the model's mu
   int rows = 0, speeds = 0;
+  bool rd_copied = false, td_copied = false;  ///< a direction without rows took the other's nodes
   std::string note;
 };
 

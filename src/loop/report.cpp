@@ -77,7 +77,8 @@ CsvWriter problems_table(const Dataset& d) {
 }
 
 std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::string& out,
-                               const std::string& figdir, const std::string& gnuplot) {
+                               const std::string& figdir, const std::string& gnuplot, const std::string& exports,
+                               const ExportOptions& eo) {
   fs::create_directories(out + "/tables");
   fs::create_directories(out + "/figures");
   candidates_table(r).save(out + "/tables/candidates.csv");
@@ -155,6 +156,12 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
     }
   const FrictionModel fm = identify_friction(d, r);
   m << write_friction_outputs(d, r, fm, out);
+  {
+    std::vector<std::string> tomls;
+    for (size_t k = 0; k < fm.surfaces.size(); ++k)
+      tomls.push_back(out + "/friction_model" + (k == 0 ? std::string() : "_" + lubricant_tag(fm.surfaces[k].lubricant)) + ".toml");
+    m << write_exports(tomls, exports, eo);
+  }
   if (!figdir.empty()) {  // one surface plot per lubricant and direction (our own script, in the output)
     for (size_t k = 0; k < fm.surfaces.size(); ++k)
       for (const char* dir : {"RD", "TD"}) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/csv.hpp"
+#include "loop/export.hpp"
 #include "loop/loop.hpp"
 
 namespace drawbend::loop {
@@ -18,8 +19,11 @@ CsvWriter residuals_table(const Design& d, const LoopResult& r);
 CsvWriter problems_table(const Dataset& d);
 
 /// Write everything under out_dir.  figures_dir: directory of the gnuplot
-/// scripts (empty: no figures).  Returns the Markdown page text.
+/// scripts (empty: no figures).  exports: "none" or a comma list of
+/// lsdyna, openradioss, abaqus written next to each friction_model*.toml
+/// with `eo` (loop/export.hpp) and named in loop.md.  Returns the Markdown page text.
 std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::string& out_dir,
-                               const std::string& figures_dir, const std::string& gnuplot = "gnuplot");
+                               const std::string& figures_dir, const std::string& gnuplot = "gnuplot",
+                               const std::string& exports = "none", const ExportOptions& eo = {});
 
 }  // namespace drawbend::loop

@@ -1,0 +1,224 @@
+// OpenRadioss export: /FRICTION with the generalized viscous law and
+// /FRIC_ORIENT (see export.hpp for the contract).
+//
+// Layout: OpenRadioss's own reader definition,
+// hm_cfg_files/config/CFG/radioss2020/FRICTION/friction.cfg (format radioss2020):
+//   /FRICTION/fric_ID
+//   title                                              (100 characters)
+//   Ifric Ifiltr Xfreq Iform                           %10d%10d%20lg%10d
+//   C1 C2 C3 C4 C5                                     5 x %20lg
+//   C6 Fric VIS_F                                      3 x %20lg
+//   per pair: grpart_ID1 grpart_ID2 part_ID1 part_ID2 (blank) Idir
+//                                                      %10d%10d%10d%10d 10 blanks %10d
+//             C1..C5 and C6 Fric VIS_F of direction 1, and of direction 2 when Idir = 1.
+// and fric_orient.cfg:
+//   /FRIC_ORIENT/ID, title, then per part "%10d%10d" (grpart_ID, part_ID) and
+//   VX VY VZ skew_ID phi Iorth as %20lg%20lg%20lg%10d%20lg%10d.
+// The engine (engine/source/interfaces/int07/i7for3.F, MFROT = 1) evaluates
+//   mu = Fric + (C1 + C4 P) P + (C2 + C3 P) V + C5 V^2,  mu = max(mu, 1e-30),
+// with P = -F_N / (area of the main segment) and V the tangential speed.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include <Eigen/Dense>
+
+#include "core/csv.hpp"
+#include "loop/export.hpp"
+#include "loop/export_detail.hpp"
+
+namespace drawbend::loop {
+
+using namespace detail;
+
+double radioss_mu(const std::vector<double>& c, double p, double v) {
+  return c[0] + (c[1] + c[4] * p) * p + (c[2] + c[3] * p) * v + c[5] * v * v;
+}
+
+namespace {
+
+std::vector<double> printed(const std::vector<double>& c) {
+  std::vector<double> r(c.size());
+  for (size_t k = 0; k < c.size(); ++k) r[k] = as_printed(c[k], 20, 10);
+  return r;
+}
+
+// Max relative error |poly - law| / law of printed coefficients over p in the
+// domain and v in [v0, v1], on an n x n grid.
+double rel_error(const std::vector<double>& c, const analysis::FrictionSurface& s, double v0, double v1, int n = 161) {
+  double e = 0;
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      const double p = s.p_min + (s.p_max - s.p_min) * a / (n - 1), v = v0 + (v1 - v0) * b / (n - 1);
+      const double law = law_mu(s, p, v);
+      e = std::max(e, std::abs(std::max(radioss_mu(c, p, v), 0.0) - law) / std::max(law, 1e-4));
+    }
+  return e;
+}
+
+}  // namespace
+
+// Lawson's algorithm: weighted least squares whose weights grow where the
+// relative residual is large converges to the minimax (Chebyshev) fit.  In
+// scaled coordinates x, y in [-1, 1] (the same quadratic space), converted to
+// the monomials of p and v at the end.
+std::vector<double> radioss_fit(const analysis::FrictionSurface& s, double v0, double v1) {
+  const int n = 41;
+  const double a = 2 / (s.p_max - s.p_min), b = -(s.p_max + s.p_min) / (s.p_max - s.p_min);
+  const double c = 2 / (v1 - v0), d = -(v1 + v0) / (v1 - v0);
+  Eigen::MatrixXd A(n * n, 6);
+  Eigen::VectorXd rhs(n * n), w = Eigen::VectorXd::Constant(n * n, 1.0 / (n * n));
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double x = -1 + 2.0 * i / (n - 1), y = -1 + 2.0 * j / (n - 1);
+      const double p = (x - b) / a, v = (y - d) / c;
+      const double law = std::max(law_mu(s, p, v), 1e-4);
+      A.row(i * n + j) << 1 / law, x / law, y / law, x * y / law, x * x / law, y * y / law;
+      rhs[i * n + j] = 1;
+    }
+  Eigen::VectorXd best;
+  double best_err = INFINITY;
+  for (int it = 0; it < 300; ++it) {
+    const Eigen::VectorXd sw = w.cwiseSqrt();
+    const Eigen::VectorXd k = (sw.asDiagonal() * A).colPivHouseholderQr().solve(sw.asDiagonal() * rhs);
+    const Eigen::VectorXd r = (A * k - rhs).cwiseAbs();
+    if (r.maxCoeff() < best_err) best_err = r.maxCoeff(), best = k;
+    w = w.cwiseProduct(r);
+    const double sum = w.sum();
+    if (!(sum > 0)) break;
+    w /= sum;
+  }
+  const Eigen::VectorXd& k = best;
+  // mu = k0 + k1 x + k2 y + k3 x y + k4 x^2 + k5 y^2 with x = a p + b, y = c v + d
+  return {k[0] + k[1] * b + k[2] * d + k[3] * b * d + k[4] * b * b + k[5] * d * d,
+          k[1] * a + k[3] * a * d + 2 * k[4] * a * b,
+          k[2] * c + k[3] * b * c + 2 * k[5] * c * d,
+          k[3] * a * c,
+          k[4] * a * a,
+          k[5] * c * c};
+}
+
+ExportResult export_openradioss(const ExportModel& m, const ExportOptions& o) {
+  o.validate("openradioss");
+  ExportResult r;
+  r.format = "openradioss";
+  const bool ortho = o.direction == "ortho";
+  std::vector<analysis::FrictionSurface> dirs;
+  if (ortho) dirs = {m.rd, m.td};
+  else dirs = {direction_surface(m, o.direction)};
+  const double v0 = o.band_v_min != 0 || o.band_v_max != 0 ? o.band_v_min : m.rd.v_min;
+  const double v1 = o.band_v_min != 0 || o.band_v_max != 0 ? o.band_v_max : m.rd.v_max;
+  // Speed bands: the data's edges are band edges when the fitted range crosses
+  // them (the law is flat in v beyond them, with a kink at the edge); then the
+  // worst band is halved until every band is within the bound (at most 8).
+  std::vector<double> edges{v0};
+  for (double e : {m.rd.v_min, m.rd.v_max})
+    if (e > v0 && e < v1) edges.push_back(e);
+  edges.push_back(v1);
+  std::vector<std::vector<std::vector<double>>> coef;  // [band][direction]
+  std::vector<double> err;                              // per band
+  auto fit_band = [&](size_t k) {
+    std::vector<std::vector<double>> c;
+    double e = 0;
+    for (const auto& s : dirs) {
+      c.push_back(printed(radioss_fit(s, edges[k], edges[k + 1])));
+      e = std::max(e, rel_error(c.back(), s, edges[k], edges[k + 1]));
+    }
+    return std::make_pair(c, e);
+  };
+  for (size_t k = 0; k + 1 < edges.size(); ++k) {
+    auto [c, e] = fit_band(k);
+    coef.push_back(c);
+    err.push_back(e);
+  }
+  double worst = *std::max_element(err.begin(), err.end());
+  while (worst > o.max_rel_error && coef.size() < 8) {
+    const size_t k = std::max_element(err.begin(), err.end()) - err.begin();
+    edges.insert(edges.begin() + k + 1, std::stod(num(0.5 * (edges[k] + edges[k + 1]), 6)));
+    coef.insert(coef.begin() + k + 1, std::vector<std::vector<double>>());
+    err.insert(err.begin() + k + 1, 0.0);
+    for (size_t j : {k, k + 1}) std::tie(coef[j], err[j]) = fit_band(j);
+    worst = *std::max_element(err.begin(), err.end());
+  }
+  if (worst > o.max_rel_error)
+    throw std::runtime_error("OpenRadioss: the generalized viscous law misses the friction model by " +
+                             fmt(100 * worst, 3) + " % (relative) even in " + std::to_string(coef.size()) + " speed bands; the bound is " +
+                             fmt(100 * o.max_rel_error, 3) + " % (--max-rel-error), or narrow --speed-band");
+  r.bands = static_cast<int>(coef.size());
+  r.max_error = worst;
+  auto poly_at = [&](int dir, double p, double v) {  // the band's polynomial as a reader picks it
+    int k = 0;
+    while (k + 1 < r.bands && v > edges[k + 1]) ++k;
+    return std::max(radioss_mu(coef[k][dir], p, v), 0.0);
+  };
+  for (size_t dd = 0; dd < dirs.size(); ++dd)
+    for (int a = 0; a <= 60; ++a)
+      for (int b = 0; b <= 60; ++b) {
+        const double p = 2 * dirs[dd].p_max * a / 60, v = 5 * dirs[dd].v_max * b / 60;
+        r.max_error_outside = std::max(r.max_error_outside, std::abs(poly_at(static_cast<int>(dd), p, v) - law_mu(dirs[dd], p, v)));
+      }
+
+  std::ostringstream h;
+  const std::string rel = fmt(std::ceil(1000 * 100 * worst) / 1000, 4);
+  h << "# drawbend export to OpenRadioss (format radioss2020: friction.cfg, fric_orient.cfg)\n"
+    << provenance(m, "#", o.direction)
+    << "# law written: /FRICTION Ifric = 1 (generalized viscous), Iform = 2 (stiffness, incremental),\n"
+    << "#   mu = Fric + C1 p + C2 v + C3 p v + C4 p^2 + C5 v^2, p contact pressure [MPa], v sliding speed [mm/s];\n"
+    << "#   fitted to the law over p " << fmt_shortest(m.rd.p_min) << " to " << fmt_shortest(m.rd.p_max) << " MPa, v "
+    << fmt_shortest(v0) << " to " << fmt_shortest(v1) << " mm/s (--speed-band), minimising the largest relative error.\n"
+    << "# max relative error inside the fitted range: " << rel << " %\n"
+    << "# outside it the polynomial EXTRAPOLATES (OpenRadioss has no clamp; the law holds the edge value):\n"
+    << "#   max |mu - law| over p 0 to " << fmt_shortest(2 * m.rd.p_max) << " MPa, v 0 to " << fmt_shortest(5 * m.rd.v_max)
+    << " mm/s: " << fmt(r.max_error_outside, 3) << "; keep p and v in the range above.\n";
+  if (r.bands > 1) {
+    h << "# one quadratic misses the law by more than " << fmt(100 * o.max_rel_error, 3) << " %: " << r.bands
+      << " speed bands, one /FRICTION each; point your interface (fric_ID) at the band of your process speeds:\n";
+  }
+  for (int k = 0; k < r.bands; ++k)
+    h << "# band " << k + 1 << ": /FRICTION/" << o.friction_id + k << " for v " << fmt_shortest(edges[k]) << " to "
+      << fmt_shortest(edges[k + 1]) << " mm/s\n";
+  if (ortho)
+    h << "# direction: orthotropic pair, Idir = 1 (direction 1 = RD, direction 2 = TD, /FRIC_ORIENT below).\n"
+      << "#   KNOWN: in an OpenRadioss engine test (block on plate, TYPE7) Idir = 1 with Iform = 2 gave the law\n"
+      << "#   sliding along TD but only Fric of direction 1 along RD (C1-C5 lost); Idir = 1 needs shell parts.\n"
+      << "#   The isotropic form (--direction rd|td|mean) gave the law within 0.3 %.  Check before use.\n";
+  else
+    h << "# direction: isotropic pair law for " << o.direction << " (--direction rd|td|mean|ortho).\n";
+  h << "# interfaces that honour /FRICTION: /INTER/TYPE7, TYPE24, TYPE25 (also 11, 19): set fric_ID (columns\n"
+    << "#   91-100 of the Ifric card of /INTER/TYPE7) to the /FRICTION ID.  Units of the deck: N, mm, s (/BEGIN).\n"
+    << "# parts: sheet " << o.sheet_part << ", tool " << o.tool_part
+    << " (--parts); the engine takes p = nodal normal force / area of the main\n"
+    << "#   (tool) segment: mesh the tool about as fine as the sheet.  Iform = 1 (viscous) caps the friction\n"
+    << "#   force at sqrt(2 K m VIS_F) v: measured 25-51 % of mu F_N on a block of real density.\n";
+  std::ostringstream o_;
+  auto block = [&](const std::vector<double>& c) {
+    o_ << "#                 C1                  C2                  C3                  C4                  C5\n"
+       << field(c[1], 20, 10) << field(c[2], 20, 10) << field(c[3], 20, 10) << field(c[4], 20, 10) << field(c[5], 20, 10) << "\n"
+       << "#                 C6                FRIC               VIS_F\n"
+       << field(0, 20) << field(c[0], 20, 10) << field(1, 20) << "\n";
+  };
+  for (int k = 0; k < r.bands; ++k) {
+    o_ << "/FRICTION/" << o.friction_id + k << "\n"
+       << "drawbend " << (m.lubricant.empty() ? std::string("friction model") : m.lubricant) << " " << o.direction
+       << " v " << fmt_shortest(edges[k]) << "-" << fmt_shortest(edges[k + 1]) << " mm/s\n"
+       << "#    Ifric    Ifiltr               Xfreq     Iform\n"
+       << ifield(1, 10) << ifield(0, 10) << field(0, 20) << ifield(2, 10) << "\n";
+    block(coef[k][0]);  // default law of the pairs not listed
+    o_ << "#grpartID1 grpartID2   partID1   partID2                IDIR\n"
+       << ifield(0, 10) << ifield(0, 10) << ifield(o.sheet_part, 10) << ifield(o.tool_part, 10) << std::string(10, ' ')
+       << ifield(ortho ? 1 : 0, 10) << "\n";
+    block(coef[k][0]);
+    if (ortho) block(coef[k][1]);
+  }
+  const double vn = std::hypot(o.rd_vector[0], o.rd_vector[1], o.rd_vector[2]);
+  o_ << "/FRIC_ORIENT/" << o.friction_id << "\nrolling direction of the sheet part " << o.sheet_part << "\n"
+     << "#GRPART_ID   PART_ID\n" << ifield(0, 10) << ifield(o.sheet_part, 10) << "\n"
+     << "#                 VX                  VY                  VZ   SKEW_ID                 PHI     IORTH\n"
+     << field(o.rd_vector[0] / vn, 20) << field(o.rd_vector[1] / vn, 20) << field(o.rd_vector[2] / vn, 20)
+     << ifield(0, 10) << field(0, 20) << ifield(0, 10) << "\n";
+  r.text = h.str() + o_.str();
+  return r;
+}
+
+}  // namespace drawbend::loop
