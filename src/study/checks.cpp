@@ -24,6 +24,8 @@ std::string to_string(Kind k) {
     case Kind::rederived: return "rederived";
     case Kind::simulated: return "simulated";
     case Kind::measured: return "measured";
+    case Kind::fitted: return "fitted";
+    case Kind::selected: return "selected";
     case Kind::verification: return "verification";
     case Kind::health: return "health";
     case Kind::software: return "software";

@@ -19,7 +19,14 @@
 //   rederived     the thesis's own arithmetic (a printed value from other
 //                 printed values); a documented miss is an erratum
 //   simulated     our simulations against the thesis's simulation results
-//   measured      our simulations against the thesis's measurements
+//   measured      our simulations against the thesis's measurements, blind:
+//                 no parameter was fitted to this number and no model was
+//                 chosen on it (the only kind the report counts as agreement
+//                 with measurement)
+//   fitted        a measured number a parameter of the compared model was
+//                 fitted to (in-sample: agreement here is by construction)
+//   selected      a measured number used to accept or reject a model (a
+//                 candidate, a member, a tool radius); not blind either
 //   verification  solver against a closed form or against our own input law
 //   health        energy balance, hourglass share and similar invariants
 //   software      our own data pipeline (generated files, input hygiene)
@@ -35,7 +42,7 @@ namespace drawbend::study {
 enum class Status { pass, fail, erratum, disagree };
 std::string to_string(Status s);
 
-enum class Kind { rederived, simulated, measured, verification, health, software };
+enum class Kind { rederived, simulated, measured, fitted, selected, verification, health, software };
 std::string to_string(Kind k);
 
 struct Check {

@@ -85,8 +85,8 @@ BOOST_AUTO_TEST_CASE(claims_prefixes_nan_and_audit) {
   BOOST_TEST(study::to_string(c.claim(study::Kind::simulated, "c.claim2", "q", false, "r").status) == "fail");
   BOOST_TEST(study::to_string(c.agree(study::Kind::health, "a.b.health", "q", 1.0, 2.0, 0.1, "", "r").status) == "fail");
   BOOST_CHECK_THROW(c.claim(static_cast<study::Kind>(99), "c.bad_kind", "q", true, "r"), std::logic_error);
-  for (auto k : {study::Kind::rederived, study::Kind::simulated, study::Kind::measured, study::Kind::verification,
-                 study::Kind::health, study::Kind::software})
+  for (auto k : {study::Kind::rederived, study::Kind::simulated, study::Kind::measured, study::Kind::fitted,
+                 study::Kind::selected, study::Kind::verification, study::Kind::health, study::Kind::software})
     BOOST_TEST(!study::to_string(k).empty());
   const auto dead = e.unused({"a.b.x", "c.claim", "w.passes"});
   BOOST_TEST(dead.size() == 1u);
