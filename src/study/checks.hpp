@@ -33,6 +33,7 @@
 // Only `rederived` checks are excused by errata.csv; a miss of any other kind
 // can only be a documented disagreement (an FE comparison that misses is never
 // a thesis erratum).  The kind is a required argument: no default exists.
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -82,6 +83,13 @@ class Checks {
                         double tolerance, const std::string& unit, const std::string& reason);
   /// A yes/no claim of the thesis tested on numbers (1 = true, 0 = false).
   const Check& claim(Kind kind, const std::string& id, const std::string& quantity, bool ours, const std::string& reason);
+
+  /// Replace every {{key}} in the checks' notes (the documented errata and
+  /// disagreements) by `lookup(key)`, the run's value of that key (the
+  /// chapter's values.csv), so that a note quotes this run's numbers, per
+  /// tier.  A key the run does not hold throws InputError naming the check
+  /// and the key: a note cannot quote a number the run did not produce.
+  void fill_notes(const std::function<const std::string*(const std::string& key)>& lookup);
 
   const std::vector<Check>& all() const { return checks_; }
   int count(Status s) const;
