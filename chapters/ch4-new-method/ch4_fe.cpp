@@ -176,6 +176,7 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
              fmt_fixed(FT.back(), 1), t42.text(b, "c"), fmt_fixed(cs.back(), 4), fmt_fixed(mu_conv.back(), 4),
              fmt_fixed(P_avg.back(), 2)});
     c.value("FB_d" + d, fmt_fixed(FB.back(), 1), "N");
+    c.value("FB_vs_thesis_d" + d, fmt_fixed(100 * (FB.back() / t41.number(a, "FB_N") - 1), 1), "%");
     c.value("FT_d" + d, fmt_fixed(FT.back(), 1), "N");
     c.value("c_d" + d, fmt_fixed(cs.back(), 3));
     c.value("mufe_d" + d, fmt_fixed(mu_conv.back(), 4));

@@ -90,6 +90,10 @@ BeamTrace beam_trace(Chapter&, const Inputs& in, const Config& cfg) {
   const auto& range = *fit.range;  // Table 5.3's F_back range
   double slope_lo = e_fit, slope_hi = -e_fit;
   int members = 0;
+  // The member each pin alone would choose (the leave-one-pin-out folds fit
+  // on a pin other than the fit pin, and choose their grid point there).
+  std::vector<double> e_on(in.pins.size(), e_fit);
+  std::vector<std::pair<double, double>> af_on(in.pins.size(), {0.0, 0.0});
   for (double g : gs)
     for (double x : xs) {
       BeamModel m{"", {}, {}};
@@ -105,6 +109,8 @@ BeamTrace beam_trace(Chapter&, const Inputs& in, const Config& cfg) {
       double ea = 0;
       for (std::size_t k = 0; k < in.pins.size(); ++k) ea = std::max(ea, std::abs(err(m.fb[k], k)));
       if (ef < e_fit) e_fit = ef, best_fit = m;
+      for (std::size_t k = 0; k < in.pins.size(); ++k)
+        if (std::abs(err(m.fb[k], k)) < e_on[k]) e_on[k] = std::abs(err(m.fb[k], k)), af_on[k] = {x, g};
       if (ea < e_all) e_all = ea, best_all = m;
       if (g <= 30 && ef < e_slow) e_slow = ef, best_slow = m;
       const double slope = (run_at(m.mat, cfg.fit_pin, range.hi) - run_at(m.mat, cfg.fit_pin, range.lo)) / (range.hi - range.lo);
@@ -119,6 +125,7 @@ BeamTrace beam_trace(Chapter&, const Inputs& in, const Config& cfg) {
   t.models = models;
   t.chosen_x = best_fit.mat.x_sat_MPa;
   t.chosen_gamma = best_fit.mat.gamma;
+  t.af_on_pin = af_on;
   t.members = members;
   t.best_slow = best_slow;
   t.slope_lo = slope_lo, t.slope_hi = slope_hi;

@@ -26,6 +26,7 @@
 //     angle, the RD/TD cup sizes.  The isotropic/von Mises run measures the
 //     mesh's own asymmetry (ideally none): the noise floor of the attribution.
 // Forces for the full blank [kN]; lengths mm; speeds mm/s.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -112,6 +113,36 @@ std::string inline_table(const std::string& file, const std::string& key) {
   std::ostringstream o;
   o << *n;
   return o.str();
+}
+
+/// The die radius as a calibrated input: the radius whose case-1 force meets
+/// the measured `e1` [kN], by linear interpolation between the two radii tried
+/// that bracket it; its uncertainty is half the bracketing interval (the
+/// force between the tried radii is not known better than linear).  When no
+/// tried radius brings the force down to e1, the value is a bound: at least
+/// the largest radius tried.
+void die_radius_calibration(Chapter& c, std::vector<double> r, std::vector<double> f, double e1) {
+  std::vector<std::size_t> o(r.size());
+  for (std::size_t k = 0; k < o.size(); ++k) o[k] = k;
+  std::sort(o.begin(), o.end(), [&](std::size_t a, std::size_t b) { return r[a] < r[b]; });
+  std::string value = "not calibrated: no radius brackets the measured force", unc = "";
+  for (std::size_t j = 0; j + 1 < o.size(); ++j) {
+    const double r0 = r[o[j]], r1 = r[o[j + 1]], f0 = f[o[j]], f1 = f[o[j + 1]];
+    if ((f0 - e1) * (f1 - e1) <= 0 && f0 != f1) {
+      value = fmt_fixed(r0 + (e1 - f0) * (r1 - r0) / (f1 - f0), 1) + " mm";
+      unc = fmt_fixed(0.5 * (r1 - r0), 1) + " mm";
+    }
+  }
+  if (unc.empty() && !o.empty()) {
+    const std::size_t last = o.back();
+    if (f[last] > e1) value = "at least " + fmt(r[last]) + " mm (the largest radius tried still gives " + fmt_fixed(f[last], 1) +
+                              " kN against " + fmt(e1) + " kN: the end of the range, not a fit)";
+  }
+  std::string tried;
+  for (std::size_t k : o) tried += (tried.empty() ? "" : ", ") + fmt(r[k]) + " mm: " + fmt_fixed(f[k], 1) + " kN";
+  c.value("die_r_fitted", value);
+  c.value("die_r_uncertainty", unc.empty() ? "not estimated (a bound)" : unc);
+  c.value("die_r_tried", tried);
 }
 
 }  // namespace
@@ -210,6 +241,7 @@ void cup_loop(Chapter& c, const Config& cfg, const sim::ModelLoopResult& bending
     cands.push_back({"Hill'48 (Hou 2020 r-values)", {{"Hill'48", [hill](CupModel& m) { m.hill = hill; }}}});
   }
   int fig_rows = 1;
+  std::vector<double> die_r, die_f;  // the die radii tried on case 1 [mm] and their forces [kN]
   for (const auto& cand : cands) {
     std::vector<CupModel> ms;
     std::vector<sim::CupSpec> specs;
@@ -227,6 +259,11 @@ void cup_loop(Chapter& c, const Config& cfg, const sim::ModelLoopResult& bending
     for (std::size_t k = 0; k < r.size(); ++k) {
       members += (members.empty() ? "" : "; ") + cand.members[k].first + ": " + fmt_fixed(f15(r[k]), 2);
       if (std::abs(err(f15(r[k]), s.e1)) < std::abs(err(f15(r[best]), s.e1))) best = k;
+    }
+    if (&cand == &cands.front()) {  // the die radius: the baseline's 5 mm and the members
+      die_r.push_back(std::isnan(cur.die_r) ? 5.0 : cur.die_r);  // NaN: the deck's ASSUMED 5 mm (cup_case.hpp)
+      die_f.push_back(f1);
+      for (std::size_t k = 0; k < r.size(); ++k) die_r.push_back(ms[k].die_r), die_f.push_back(f15(r[k]));
     }
     const auto r9 = run({spec_of(s, ms[best], s.v9, stroke)});
     account(r9);
@@ -260,6 +297,7 @@ void cup_loop(Chapter& c, const Config& cfg, const sim::ModelLoopResult& bending
                pct(err(c9, s.e9)), "the final model on the checked mesh"});
   }
   c.save(steps, "cup_loop_steps");
+  die_radius_calibration(c, die_r, die_f, s.e1);
   c.save(fig, "cup_figure");
   c.plot("cup_loop", "cup_loop", {{"datafile", c.out("tables/cup_figure.csv")}, {"e1", fmt(s.e1)}, {"e9", fmt(s.e9)},
                                   {"v1", fmt(s.v1)}, {"v9", fmt(s.v9)}});
@@ -282,10 +320,14 @@ void cup_loop(Chapter& c, const Config& cfg, const sim::ModelLoopResult& bending
   c.value("cup_friction_share", fmt_fixed(100 * (1 - f15(rn[0]) / f1), 0), "%");
   const std::string why = "10 % of the measured force: the accuracy goal for the cup (issue 23); the thesis's own model "
                           "came within 3 %";
-  c.checks().agree(study::Kind::measured, "ch8.cup.f15.case1", "punch force at 15 mm, case 1, final cup model" + tier, s.e1,
-                   c1, 0.10 * s.e1, "kN", why + "; the radii are chosen on this case");
-  c.checks().agree(study::Kind::measured, "ch8.cup.f15.case9", "punch force at 15 mm, case 9, final cup model" + tier, s.e9,
-                   c9, 0.10 * s.e9, "kN", why + "; held out (differs from case 1 only in speed)");
+  // Not agreement: the tool radii were chosen on case 1 (fitted), and case 9,
+  // which differs from it only in punch speed, accepted each change
+  // (selected).  No cup case played no part in the choice, so the die radius
+  // is reported as a calibrated input (die_radius_calibration above).
+  c.checks().agree(study::Kind::fitted, "ch8.cup.f15.case1", "punch force at 15 mm, case 1, final cup model" + tier, s.e1,
+                   c1, 0.10 * s.e1, "kN", why + "; the radii are fitted on this case");
+  c.checks().agree(study::Kind::selected, "ch8.cup.f15.case9", "punch force at 15 mm, case 9, final cup model" + tier, s.e9,
+                   c9, 0.10 * s.e9, "kN", why + "; this case accepted each change (it differs from case 1 only in speed)");
 
   // (b) The 2 x 2 attribution at 21 mm, case 1, on the final model's tools.
   const std::string iso_nodes = c.out("tables/table_6_1_isotropic.csv");

@@ -74,6 +74,8 @@ struct BeamTrace {
   BeamModel best_fit, best_all;   ///< the Armstrong-Frederick member chosen on the fit pin; best on all pins
   BeamModel best_slow;            ///< the member chosen on the fit pin among gamma <= 30 (slow back stresses)
   double chosen_x = 0, chosen_gamma = 0;  ///< best_fit's X_sat [MPa] and gamma
+  /// Per pin of Inputs::pins: (X_sat [MPa], gamma) of the member chosen on that pin alone.
+  std::vector<std::pair<double, double>> af_on_pin;
   double slope_meas = 0;                  ///< Table 5.3's slope on the fit pin
   double slope_lo = 0, slope_hi = 0;      ///< the members' range of dF_B/dF_back on the fit pin over Table 5.3's range
   int members = 0;
@@ -82,7 +84,9 @@ struct BeamTrace {
 Inputs load_inputs(Chapter& c, const Config& cfg);
 /// A relative error as a signed percentage with one decimal ("+10.6").
 inline std::string pct(double x) { return (x >= 0 ? "+" : "") + drawbend::fmt_fixed(100 * x, 1); }
-/// The bending-force loop: before/after per pin, figure, checks.  Returns the final model.
+/// The bending-force loop: before/after per pin, figure, checks, and the
+/// leave-one-pin-out blind errors (each pin's error from the fold that never
+/// saw it).  Returns the in-sample final model.
 /// `trace` leads the tier's chaboche candidate: the beam's choice on the fit
 /// pin and its neighbours in X_sat, chosen again by the FE.
 drawbend::sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg,

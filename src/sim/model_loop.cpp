@@ -105,7 +105,8 @@ double rms(const std::vector<double>& v) {
 class Runner {
  public:
   explicit Runner(const ModelLoopConfig& cfg) : cfg_(cfg) {}
-  std::vector<PointResult> evaluate(std::vector<DrawBendSpec> specs, const std::vector<FbPoint>& pts) {
+  /// F_B of every spec; a point is marked held out when it is not on `fit_pin`.
+  std::vector<PointResult> evaluate(std::vector<DrawBendSpec> specs, const std::vector<FbPoint>& pts, double fit_pin) {
     std::vector<std::string> keys;
     std::vector<DrawBendSpec> todo;
     for (auto& s : specs) {
@@ -124,7 +125,7 @@ class Runner {
     for (std::size_t i = 0; i < specs.size(); ++i) {
       PointResult r;
       r.measured = pts[i];
-      r.held_out = !same_pin(pts[i].pin_mm, cfg_.fit_pin);
+      r.held_out = !same_pin(pts[i].pin_mm, fit_pin);
       const Done& d = done_.at(keys[i]);
       r.predicted_N = d.fb;
       r.predicted_sd_N = d.sd;
@@ -168,18 +169,22 @@ std::vector<DrawBendSpec> specs_of(const DrawBendSpec& base, const std::vector<F
 
 }  // namespace
 
-ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoint>& points,
-                               const std::vector<ModelCandidate>& candidates, const ModelLoopConfig& cfg) {
+namespace {
+
+/// The loop of the header on `points`, members chosen on `fit_pin`,
+/// candidates judged on every other pin in `points`; runs through `run`.
+ModelLoopResult loop_on(Runner& run, const DrawBendSpec& base, const std::vector<FbPoint>& points,
+                        const std::vector<ModelCandidate>& candidates, double fit_pin, double min_gain,
+                        bool verbose) {
   std::vector<FbPoint> fit_pts, held_pts;
-  for (const auto& p : points) (same_pin(p.pin_mm, cfg.fit_pin) ? fit_pts : held_pts).push_back(p);
-  if (fit_pts.empty()) throw InputError("model loop: no measured point on the fit pin " + fmt(cfg.fit_pin) + " mm");
-  if (held_pts.empty()) throw InputError("model loop: no measured point off the fit pin " + fmt(cfg.fit_pin) +
+  for (const auto& p : points) (same_pin(p.pin_mm, fit_pin) ? fit_pts : held_pts).push_back(p);
+  if (fit_pts.empty()) throw InputError("model loop: no measured point on the fit pin " + fmt(fit_pin) + " mm");
+  if (held_pts.empty()) throw InputError("model loop: no measured point off the fit pin " + fmt(fit_pin) +
                                          " mm: nothing is held out");
-  Runner run(cfg);
   ModelLoopResult out;
   DrawBendSpec model = base;
   std::string label = "isotropic";
-  out.baseline = summarise(label, run.evaluate(specs_of(model, points), points));
+  out.baseline = summarise(label, run.evaluate(specs_of(model, points), points, fit_pin));
   ModelEval current = out.baseline;
   for (const auto& c : candidates) {
     if (c.members.empty()) throw std::invalid_argument("model loop: candidate " + c.name + " has no member");
@@ -197,7 +202,7 @@ ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoi
         pts.push_back(p);
       }
     }
-    const auto fitres = run.evaluate(specs, pts);
+    const auto fitres = run.evaluate(specs, pts, fit_pin);
     std::size_t best = 0;
     double best_rms = 1e300;
     for (std::size_t k = 0; k < c.members.size(); ++k) {
@@ -211,9 +216,9 @@ ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoi
     c.members[best].apply(chosen);
     step.member = c.members[best].label;
     step.spec = chosen;
-    step.eval = summarise(label + " + " + step.member, run.evaluate(specs_of(chosen, points), points));
+    step.eval = summarise(label + " + " + step.member, run.evaluate(specs_of(chosen, points), points, fit_pin));
     const double gain = current.held_rms - step.eval.held_rms;
-    if (gain > cfg.min_gain) {
+    if (gain > min_gain) {
       step.decision = "accepted";
       model = chosen;
       label = step.eval.model;
@@ -222,13 +227,68 @@ ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoi
       step.decision = "rejected: held-out RMS " + fmt_fixed(100 * current.held_rms, 1) + " % -> " +
                       fmt_fixed(100 * step.eval.held_rms, 1) + " %";
     }
-    std::cout << "model loop: " << c.name << " (" << step.member << "): held-out RMS " << fmt_fixed(100 * step.eval.held_rms, 1)
-              << " %, " << step.decision << "\n"
-              << std::flush;
+    if (verbose)
+      std::cout << "model loop: " << c.name << " (" << step.member << "): held-out RMS "
+                << fmt_fixed(100 * step.eval.held_rms, 1) << " %, " << step.decision << "\n"
+                << std::flush;
     out.steps.push_back(std::move(step));
   }
   out.final_model = current;
   out.final_spec = model;
+  return out;
+}
+
+/// The distinct pins of `points`, in the order they first appear.
+std::vector<double> pins_of(const std::vector<FbPoint>& points) {
+  std::vector<double> pins;
+  for (const auto& p : points)
+    if (std::none_of(pins.begin(), pins.end(), [&](double d) { return same_pin(d, p.pin_mm); })) pins.push_back(p.pin_mm);
+  return pins;
+}
+
+}  // namespace
+
+ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoint>& points,
+                               const std::vector<ModelCandidate>& candidates, const ModelLoopConfig& cfg) {
+  Runner run(cfg);
+  ModelLoopResult out = loop_on(run, base, points, candidates, cfg.fit_pin, cfg.min_gain, true);
+  out.runs = run.runs();
+  out.run_wall_s = run.wall();
+  return out;
+}
+
+BlindLoopResult run_model_loop_blind(const DrawBendSpec& base, const std::vector<FbPoint>& points,
+                                     const CandidatesFor& candidates_for, const ModelLoopConfig& cfg) {
+  const std::vector<double> pins = pins_of(points);
+  if (pins.size() < 3)
+    throw InputError("model loop: the leave-one-pin-out split needs measured points on at least 3 pins (one to "
+                     "fit, one to choose, one left out), found " + std::to_string(pins.size()));
+  Runner run(cfg);
+  BlindLoopResult out;
+  out.in_sample = loop_on(run, base, points, candidates_for(cfg.fit_pin), cfg.fit_pin,
+                          cfg.min_gain, true);
+  for (double left : pins) {
+    BlindFold f;
+    f.pin_mm = left;
+    std::vector<FbPoint> seen, unseen;
+    for (const auto& p : points) (same_pin(p.pin_mm, left) ? unseen : seen).push_back(p);
+    // The fold's fit pin: the remaining pin nearest the loop's fit pin (the
+    // fit pin itself when it remains); every other remaining pin chooses.
+    f.fit_pin_mm = pins.front() == left ? pins[1] : pins.front();
+    for (double d : pins)
+      if (!same_pin(d, left) && std::abs(d - cfg.fit_pin) < std::abs(f.fit_pin_mm - cfg.fit_pin)) f.fit_pin_mm = d;
+    for (double d : pins)
+      if (!same_pin(d, left) && !same_pin(d, f.fit_pin_mm)) f.select_pins.push_back(d);
+    std::cout << "model loop, fold without the " << fmt(left) << " mm pin: fit on " << fmt(f.fit_pin_mm) << " mm\n"
+              << std::flush;
+    const ModelLoopResult r = loop_on(run, base, seen, candidates_for(f.fit_pin_mm), f.fit_pin_mm, cfg.min_gain, true);
+    f.model = r.final_model.model;
+    for (const auto& st : r.steps) f.decisions.push_back(st.candidate + " (" + st.member + "): " + st.decision);
+    // Only now the left-out pin: the fold's baseline and final model on it.
+    f.baseline = run.evaluate(specs_of(base, unseen), unseen, f.fit_pin_mm);
+    f.final_model = run.evaluate(specs_of(r.final_spec, unseen), unseen, f.fit_pin_mm);
+    out.folds.push_back(std::move(f));
+  }
   out.runs = run.runs();
   out.run_wall_s = run.wall();
   return out;

@@ -13,6 +13,15 @@
 // e.g. 0.03 = 3 percentage points).  Candidates are tried in the given order
 // (greedy): an accepted candidate is the base of the next one.
 //
+// The held-out pins above choose the model (a candidate is accepted on
+// them), so their errors are not blind.  The honest split
+// (run_model_loop_blind) runs the whole loop once per pin with that pin left
+// out: members chosen on the remaining pin nearest the fit pin, candidates
+// accepted on the other remaining pins, and only then the fold's final model
+// run on the left-out pin.  Each pin's blind error comes from the fold that
+// never saw it.  With three pins every fold fits on one pin and chooses on
+// one.
+//
 // Every FE run goes through the case pool (sim/case_pool.hpp) and runs in
 // run_root/fb_<hash of the deck text>: identical decks are one run, and with
 // `reuse` a finished run is read back instead of rerun.
@@ -104,6 +113,37 @@ DrawBendSpec spec_for_point(const DrawBendSpec& base, const FbPoint& p);
 /// Run the loop (see the top of this file).
 ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoint>& points,
                                const std::vector<ModelCandidate>& candidates, const ModelLoopConfig& cfg);
+
+/// One fold of the leave-one-pin-out split.
+struct BlindFold {
+  double pin_mm = 0;                 ///< the pin left out
+  double fit_pin_mm = 0;             ///< the fold's fit pin (members chosen here)
+  std::vector<double> select_pins;   ///< the fold's selection pins (candidates accepted here)
+  std::string model;                 ///< the fold's final model
+  std::vector<std::string> decisions;  ///< "candidate (member): decision", in order
+  /// The left-out pin's points: the isotropic model and the fold's final
+  /// model (predicted without the fold having seen them).
+  std::vector<PointResult> baseline, final_model;
+};
+
+struct BlindLoopResult {
+  ModelLoopResult in_sample;     ///< the loop on every pin (cfg.fit_pin fits, the rest choose)
+  std::vector<BlindFold> folds;  ///< one per distinct pin, in the order of the points
+  int runs = 0;                  ///< distinct FE runs over the in-sample loop and every fold
+  double run_wall_s = 0;
+};
+
+/// The candidate list of a loop whose members are chosen on `fit_pin` [mm]
+/// (a candidate whose grid was itself chosen on a pin, e.g. by beam theory,
+/// must be chosen again on the fold's fit pin, or the fold has seen the pin
+/// it leaves out).
+using CandidatesFor = std::function<std::vector<ModelCandidate>(double fit_pin)>;
+
+/// The in-sample loop and the leave-one-pin-out folds (see the top of this
+/// file), sharing one set of runs: a deck run in one fold is read in the
+/// others.  InputError with fewer than 3 distinct pins.
+BlindLoopResult run_model_loop_blind(const DrawBendSpec& base, const std::vector<FbPoint>& points,
+                                     const CandidatesFor& candidates_for, const ModelLoopConfig& cfg);
 
 /// Named candidates for the command line and the chapter:
 ///   split:B1/B2/...   split combined hardening, kinematic fraction beta (fitted on the fit pin)

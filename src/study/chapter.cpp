@@ -133,6 +133,11 @@ void Chapter::value(const std::string& key, const std::string& text, const std::
 int Chapter::finish() {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   value("chapter_wall", wall < 120 ? fmt_fixed(wall, 1) + "\u00a0s" : fmt_fixed(wall / 60, 1) + "\u00a0min");
+  checks_->fill_notes([this](const std::string& key) -> const std::string* {
+    for (const auto& v : values_)
+      if (v[0] == key) return &v[1];
+    return nullptr;
+  });
   checks_->write(out("checks.csv"));
   CsvWriter w({"key", "value", "unit"});
   w.comment("numbers quoted by chapter " + id_ + "'s results.md as {{key}}");

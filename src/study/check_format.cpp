@@ -78,7 +78,9 @@ std::string kind_of(const CsvTable& t, const CsvRow& r) {
 
 std::string kind_label(const std::string& kind) {
   if (kind == "simulated") return "our simulations vs the thesis's simulations";
-  if (kind == "measured") return "our simulations vs the thesis's measurements";
+  if (kind == "measured") return "our simulations vs the thesis's measurements, blind (nothing fitted or chosen on them)";
+  if (kind == "fitted") return "measurements a parameter of our model was fitted to (in-sample, not agreement)";
+  if (kind == "selected") return "measurements used to accept or reject a model (not blind, not agreement)";
   if (kind == "rederived") return "the thesis's own arithmetic, re-derived";
   if (kind == "verification") return "solver verification (closed forms, our input laws)";
   if (kind == "health") return "solver health (energy balance, hourglass share)";
@@ -87,7 +89,7 @@ std::string kind_label(const std::string& kind) {
 }
 
 const std::vector<std::string>& kind_order() {
-  static const std::vector<std::string> k{"simulated", "measured",     "rederived",
+  static const std::vector<std::string> k{"simulated", "measured", "fitted", "selected", "rederived",
                                           "verification", "health", "software", "unclassified"};
   return k;
 }

@@ -4,7 +4,7 @@
 // for the thesis's claims, and the kind of each check.
 //
 // checks.csv is read by column name.  The column `kind` (rederived,
-// simulated, measured, verification, health, software) may be absent in
+// simulated, measured, fitted, selected, verification, health, software) may be absent in
 // outputs written before checks had kinds: such checks count as
 // "unclassified", so the report still builds.
 #include <string>

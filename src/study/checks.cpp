@@ -24,6 +24,8 @@ std::string to_string(Kind k) {
     case Kind::rederived: return "rederived";
     case Kind::simulated: return "simulated";
     case Kind::measured: return "measured";
+    case Kind::fitted: return "fitted";
+    case Kind::selected: return "selected";
     case Kind::verification: return "verification";
     case Kind::health: return "health";
     case Kind::software: return "software";
@@ -121,6 +123,26 @@ const Check& Checks::rederive(const std::string& id, const std::string& q, doubl
 const Check& Checks::claim(Kind kind, const std::string& id, const std::string& q, bool ours,
                            const std::string& reason) {
   return add({kind, id, q, 1.0, ours ? 1.0 : 0.0, 0.0, "true=1", "", Status::pass}, reason);
+}
+
+void Checks::fill_notes(const std::function<const std::string*(const std::string& key)>& lookup) {
+  for (auto& c : checks_) {
+    std::string out;
+    std::size_t pos = 0;
+    for (;;) {
+      const auto open = c.note.find("{{", pos);
+      if (open == std::string::npos) break;
+      const auto close = c.note.find("}}", open + 2);
+      if (close == std::string::npos) throw InputError("note of check " + c.id + ": unclosed '{{'");
+      const std::string key = c.note.substr(open + 2, close - open - 2);
+      const std::string* v = lookup(key);
+      if (!v)
+        throw InputError("note of check " + c.id + " quotes {{" + key + "}}, which this run's values.csv does not hold");
+      out += c.note.substr(pos, open - pos) + *v;
+      pos = close + 2;
+    }
+    c.note = out + c.note.substr(pos);
+  }
 }
 
 int Checks::count(Status s) const {

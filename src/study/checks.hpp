@@ -19,13 +19,21 @@
 //   rederived     the thesis's own arithmetic (a printed value from other
 //                 printed values); a documented miss is an erratum
 //   simulated     our simulations against the thesis's simulation results
-//   measured      our simulations against the thesis's measurements
+//   measured      our simulations against the thesis's measurements, blind:
+//                 no parameter was fitted to this number and no model was
+//                 chosen on it (the only kind the report counts as agreement
+//                 with measurement)
+//   fitted        a measured number a parameter of the compared model was
+//                 fitted to (in-sample: agreement here is by construction)
+//   selected      a measured number used to accept or reject a model (a
+//                 candidate, a member, a tool radius); not blind either
 //   verification  solver against a closed form or against our own input law
 //   health        energy balance, hourglass share and similar invariants
 //   software      our own data pipeline (generated files, input hygiene)
 // Only `rederived` checks are excused by errata.csv; a miss of any other kind
 // can only be a documented disagreement (an FE comparison that misses is never
 // a thesis erratum).  The kind is a required argument: no default exists.
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -35,7 +43,7 @@ namespace drawbend::study {
 enum class Status { pass, fail, erratum, disagree };
 std::string to_string(Status s);
 
-enum class Kind { rederived, simulated, measured, verification, health, software };
+enum class Kind { rederived, simulated, measured, fitted, selected, verification, health, software };
 std::string to_string(Kind k);
 
 struct Check {
@@ -75,6 +83,13 @@ class Checks {
                         double tolerance, const std::string& unit, const std::string& reason);
   /// A yes/no claim of the thesis tested on numbers (1 = true, 0 = false).
   const Check& claim(Kind kind, const std::string& id, const std::string& quantity, bool ours, const std::string& reason);
+
+  /// Replace every {{key}} in the checks' notes (the documented errata and
+  /// disagreements) by `lookup(key)`, the run's value of that key (the
+  /// chapter's values.csv), so that a note quotes this run's numbers, per
+  /// tier.  A key the run does not hold throws InputError naming the check
+  /// and the key: a note cannot quote a number the run did not produce.
+  void fill_notes(const std::function<const std::string*(const std::string& key)>& lookup);
 
   const std::vector<Check>& all() const { return checks_; }
   int count(Status s) const;

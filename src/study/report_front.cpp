@@ -123,6 +123,38 @@ std::string chapter_title(const ChapterSource& ch) {
   return ch.id;
 }
 
+MeasuredCounts measured_counts(const std::vector<ChapterSource>& chapters) {
+  MeasuredCounts m;
+  for (const auto& c : load_all(chapters)) {
+    if (!c.present) continue;
+    for (const auto& r : c.table.rows) {
+      const std::string k = kind_of(c.table, r), s = c.table.text(r, "status");
+      if (k == "measured") {
+        const bool claim = is_boolean_unit(c.table.text(r, "unit"));
+        (claim ? m.blind_claims : m.blind).add(s);
+      }
+      m.fitted += k == "fitted";
+      m.selected += k == "selected";
+    }
+  }
+  return m;
+}
+
+std::string measurement_sentence(const std::vector<ChapterSource>& chapters) {
+  const MeasuredCounts m = measured_counts(chapters);
+  if (m.blind.total() + m.blind_claims.total() + m.fitted + m.selected == 0) return "";
+  std::ostringstream os;
+  os << "Agreement with measurement is counted from blind comparisons only (no parameter fitted to the number, no "
+        "model chosen on it): " << m.blind.pass << " of " << plural(m.blind.total(), "blind comparison", "blind comparisons")
+     << " agree";
+  if (m.blind_claims.total() > 0)
+    os << ", and " << m.blind_claims.pass << " of " << plural(m.blind_claims.total(), "yes/no claim", "yes/no claims")
+       << " tested on measured data hold";
+  os << "; " << plural(m.fitted, "measured number was", "measured numbers were") << " fitted to and "
+     << plural(m.selected, "was", "were") << " used to choose a model, and are not counted as agreement. ";
+  return os.str();
+}
+
 std::string abstract_paragraph(const std::vector<ChapterSource>& chapters) {
   const auto all = load_all(chapters);
   std::map<std::string, StatusCounts> by_kind;
@@ -161,6 +193,7 @@ std::string abstract_paragraph(const std::vector<ChapterSource>& chapters) {
          << "beforehand and " << ours.disagree << (ours.disagree == 1 ? " is" : " are")
          << " not reproduced (listed below with what the investigation found). ";
     }
+    os << measurement_sentence(chapters);
     if (by_kind.count("rederived")) {
       const auto& c = by_kind["rederived"];
       os << "Re-deriving the thesis's own arithmetic from its printed inputs (" << plural(c.total(), "check", "checks")
@@ -240,6 +273,7 @@ std::string front_page(const std::vector<ChapterSource>& chapters, const FrontIn
   }
   os << "<tr class=\"total\"><td><strong>all</strong></td><td></td>" << status_cells(total)
      << "</tr>\n</tbody>\n</table>\n</div>\n\n";
+  if (const std::string m = measurement_sentence(chapters); !m.empty()) os << m << "\n\n";
 
   // Per chapter: status counts and the checks of each kind.
   std::vector<std::string> kinds_present;
@@ -277,8 +311,13 @@ std::string front_page(const std::vector<ChapterSource>& chapters, const FrontIn
   }
   os << "</tbody>\n</table>\n</div>\n\n";
 
-  // Not reproduced: every disagreement, rounded, with its tolerance.
-  std::ostringstream nr;
+  // Not reproduced: every disagreement, rounded, with its tolerance.  Checks
+  // that share one explanation (e.g. six lines of one table) are listed
+  // together, the explanation shown once beside them (rowspan).
+  struct Dis {
+    std::string chapter, row;
+  };
+  std::vector<std::pair<std::string, std::vector<Dis>>> by_note;
   int ndis = 0;
   for (const auto& c : all) {
     if (!c.present) continue;
@@ -286,15 +325,28 @@ std::string front_page(const std::vector<ChapterSource>& chapters, const FrontIn
     for (const auto& r : t.rows) {
       if (t.text(r, "status") != "disagree") continue;
       ++ndis;
-      const std::string &unit = t.text(r, "unit"), &tol = t.text(r, "tolerance");
-      nr << "<tr><td class=\"id\"><a href=\"#checks-" << c.ch->id << "\">" << html_escape(t.text(r, "id"))
-         << "</a></td><td class=\"quantity\">" << html_escape(t.text(r, "quantity")) << "</td><td class=\"num\">"
-         << html_escape(display_value(t.text(r, "thesis"), unit, tol)) << "</td><td class=\"num\">"
-         << html_escape(display_value(t.text(r, "ours"), unit, tol)) << "</td><td class=\"num\">"
-         << html_escape(display_tolerance(tol, unit)) << "</td><td>" << html_escape(display_unit(unit))
-         << "</td><td class=\"note\">" << html_escape(t.text(r, "note")) << "</td></tr>\n";
+      const std::string &unit = t.text(r, "unit"), &tol = t.text(r, "tolerance"), &note = t.text(r, "note");
+      std::ostringstream row;
+      row << "<td class=\"id\"><a href=\"#checks-" << c.ch->id << "\">" << html_escape(t.text(r, "id"))
+          << "</a></td><td class=\"quantity\">" << html_escape(t.text(r, "quantity")) << "</td><td class=\"num\">"
+          << html_escape(display_value(t.text(r, "thesis"), unit, tol)) << "</td><td class=\"num\">"
+          << html_escape(display_value(t.text(r, "ours"), unit, tol)) << "</td><td class=\"num\">"
+          << html_escape(display_tolerance(tol, unit)) << "</td><td>" << html_escape(display_unit(unit)) << "</td>";
+      auto it = std::find_if(by_note.begin(), by_note.end(), [&](const auto& x) { return x.first == note; });
+      if (it == by_note.end()) it = by_note.insert(by_note.end(), {note, {}});
+      it->second.push_back({c.ch->id, row.str()});
     }
   }
+  std::ostringstream nr;
+  for (const auto& [note, rows] : by_note)
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      nr << "<tr>" << rows[k].row;
+      if (k == 0)
+        nr << "<td class=\"note\"" << (rows.size() > 1 ? " rowspan=\"" + std::to_string(rows.size()) + "\"" : "")
+           << ">" << (rows.size() > 1 ? "<em>The " + std::to_string(rows.size()) + " checks beside this note:</em> " : "")
+           << html_escape(note) << "</td>";
+      nr << "</tr>\n";
+    }
   if (ndis > 0)
     os << "## Not reproduced {.unnumbered}\n\n<div class=\"table-scroll\">\n<table class=\"checks-table\">\n"
        << "<caption>Published values our simulations do not reproduce within the stated tolerance ("

@@ -24,6 +24,22 @@ struct StatusCounts {
   void add(const std::string& status);
 };
 
+/// Checks against measurement by what they are: blind comparisons (kind
+/// `measured`, a value; counted by status), blind yes/no claims on measured
+/// data (kind `measured`, unit true=1), and the numbers that are not blind:
+/// `fitted` (a parameter was fitted to it) and `selected` (used to accept or
+/// reject a model).  Only the blind ones count as agreement with measurement.
+struct MeasuredCounts {
+  StatusCounts blind, blind_claims;
+  int fitted = 0, selected = 0;
+};
+MeasuredCounts measured_counts(const std::vector<ChapterSource>& chapters);
+
+/// One sentence for the abstract and the front page: how many blind
+/// comparisons with measurement agree, and how many measured numbers were
+/// fitted to or used to choose (empty when there are none of either).
+std::string measurement_sentence(const std::vector<ChapterSource>& chapters);
+
 /// The title block (Pandoc YAML metadata, shown before the table of
 /// contents): title, the thesis citation (subtitle), the tier, commit and
 /// date (date line), and the abstract.

@@ -27,7 +27,10 @@
 //    (C = 3000 MPa, gamma = 100); without the carving every flow stress would
 //    rise by up to X_sat; on a linear term (gamma 0) it is an InputError;
 //  - a loop whose points all lie on the fit pin has nothing held out: an
-//    input error before any run.
+//    input error before any run;
+//  - the leave-one-pin-out split needs 3 distinct pins (one to fit, one to
+//    choose, one left out): points on 2 pins are an input error before any
+//    run, and the candidate list is never asked for.
 #define BOOST_TEST_MODULE model_loop
 #include <boost/test/unit_test.hpp>
 
@@ -191,4 +194,19 @@ BOOST_AUTO_TEST_CASE(nothing_held_out) {
   cfg.fit_pin = 12.7;
   cfg.run_root = (std::filesystem::temp_directory_path() / "ml_none").string();
   BOOST_CHECK_THROW(sim::run_model_loop(sim::DrawBendSpec{}, {{12.7, 1500, 303, ""}}, {}, cfg), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(blind_split_needs_three_pins) {
+  sim::ModelLoopConfig cfg;
+  cfg.fit_pin = 12.7;
+  cfg.run_root = (std::filesystem::temp_directory_path() / "ml_blind").string();
+  int asked = 0;
+  const sim::CandidatesFor none = [&](double) {
+    ++asked;
+    return std::vector<sim::ModelCandidate>{};
+  };
+  BOOST_CHECK_EXCEPTION(
+      sim::run_model_loop_blind(sim::DrawBendSpec{}, {{12.7, 1500, 303, ""}, {25.4, 1800, 107, ""}}, none, cfg),
+      InputError, [](const InputError& e) { return std::string(e.what()).find("at least 3 pins") != std::string::npos; });
+  BOOST_TEST(asked == 0);
 }

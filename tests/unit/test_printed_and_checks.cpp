@@ -15,6 +15,7 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
+#include <map>
 
 #include "analysis/printed.hpp"
 #include "core/csv.hpp"
@@ -85,8 +86,8 @@ BOOST_AUTO_TEST_CASE(claims_prefixes_nan_and_audit) {
   BOOST_TEST(study::to_string(c.claim(study::Kind::simulated, "c.claim2", "q", false, "r").status) == "fail");
   BOOST_TEST(study::to_string(c.agree(study::Kind::health, "a.b.health", "q", 1.0, 2.0, 0.1, "", "r").status) == "fail");
   BOOST_CHECK_THROW(c.claim(static_cast<study::Kind>(99), "c.bad_kind", "q", true, "r"), std::logic_error);
-  for (auto k : {study::Kind::rederived, study::Kind::simulated, study::Kind::measured, study::Kind::verification,
-                 study::Kind::health, study::Kind::software})
+  for (auto k : {study::Kind::rederived, study::Kind::simulated, study::Kind::measured, study::Kind::fitted,
+                 study::Kind::selected, study::Kind::verification, study::Kind::health, study::Kind::software})
     BOOST_TEST(!study::to_string(k).empty());
   const auto dead = e.unused({"a.b.x", "c.claim", "w.passes"});
   BOOST_TEST(dead.size() == 1u);
@@ -112,4 +113,26 @@ BOOST_AUTO_TEST_CASE(disagreement_tiers) {
   BOOST_TEST(study::Errata::load(list).explain("q.only") == "coarse mesh artefact");  // no tier: every row
   write_file_atomic(list, "id,explanation,tier\nx,y,fine\n");
   BOOST_CHECK_THROW(study::Errata::load(list, "quick"), InputError);
+}
+
+// Notes quote the run's values: a documented disagreement "ours is {{fb}} N"
+// with the run's value fb = 74.2 becomes "ours is 74.2 N"; a note quoting a
+// key the run does not hold ({{gone}}) throws InputError naming the check.
+BOOST_AUTO_TEST_CASE(notes_quote_the_runs_values) {
+  const auto dir = std::filesystem::temp_directory_path() / "drawbend_checks_notes";
+  std::filesystem::create_directories(dir);
+  const std::string dis = (dir / "disagreements.csv").string();
+  write_file_atomic(dis, "id,explanation\nn.fb,ours is {{fb}} N\nn.gone,quotes {{gone}}\n");
+  const std::map<std::string, std::string> values{{"fb", "74.2"}};
+  auto lookup = [&](const std::string& k) -> const std::string* {
+    const auto it = values.find(k);
+    return it == values.end() ? nullptr : &it->second;
+  };
+  study::Checks c("test", {}, study::Errata::load(dis));
+  c.agree(study::Kind::simulated, "n.fb", "q", 1.0, 2.0, 0.1, "N", "r");
+  c.fill_notes(lookup);
+  BOOST_TEST(c.all().front().note == "ours is 74.2 N");
+  c.agree(study::Kind::simulated, "n.gone", "q", 1.0, 2.0, 0.1, "N", "r");
+  BOOST_CHECK_THROW(c.fill_notes(lookup), InputError);
+  std::filesystem::remove_all(dir);
 }

@@ -10,6 +10,13 @@
 //  - Two chapters with 3 and 2 checks (kinds simulated x2 disagree+pass,
 //    rederived x2 pass+erratum, health x1 pass) give the counts 5 checks,
 //    3 pass, 1 erratum, 1 disagree, and the abstract says so.
+//  - Measured checks by what they are: 2 blind comparisons (kind measured,
+//    1 pass, 1 disagree), 1 blind claim (pass), 2 fitted and 1 selected give
+//    "1 of 2 blind comparisons agree", "1 of 1 yes/no claim", "2 measured
+//    numbers were fitted to and 1 was used to choose a model"; the fitted and
+//    selected passes are not counted as agreement.
+//  - Two disagreements sharing one note show the note once (rowspan="2"),
+//    a third with its own note stands alone: the note text appears once each.
 #define BOOST_TEST_MODULE report_front
 #include <boost/test/unit_test.hpp>
 #include <algorithm>
@@ -83,6 +90,43 @@ BOOST_AUTO_TEST_CASE(front_page_counts_by_kind) {
   BOOST_TEST(f.find("href=\"#checks-cha\"") != std::string::npos);
   BOOST_TEST(f.find("Errata at a glance") != std::string::npos);
   BOOST_TEST(chapter_title(chs[0]) == "Chapter X \u2014 A title");
+}
+
+BOOST_AUTO_TEST_CASE(blind_measured_counts_and_shared_notes) {
+  const fs::path root = fs::temp_directory_path() / "drawbend_front_blind_test";
+  fs::remove_all(root);
+  const std::string head = "id,kind,quantity,thesis,ours,tolerance,unit,status,note\n";
+  std::vector<ChapterSource> chs{
+      chapter(root, "cha", head + "m.1,measured,F,10,10.5,1,N,pass,ok\n"
+                                  "m.2,measured,F,10,13,1,N,disagree,too stiff\n"
+                                  "m.3,measured,claim,1,1,0,true=1,pass,ok\n"
+                                  "f.1,fitted,F,10,10,1,N,pass,fit\n"
+                                  "f.2,fitted,F,20,20.1,1,N,pass,fit\n"
+                                  "s.1,selected,F,30,30.2,1,N,pass,chosen\n"
+                                  "d.1,simulated,G,1,2,0.1,-,disagree,shared cause\n"
+                                  "d.2,simulated,G,1,3,0.1,-,disagree,shared cause\n")};
+  const MeasuredCounts m = measured_counts(chs);
+  BOOST_TEST(m.blind.total() == 2);
+  BOOST_TEST(m.blind.pass == 1);
+  BOOST_TEST(m.blind_claims.total() == 1);
+  BOOST_TEST(m.fitted == 2);
+  BOOST_TEST(m.selected == 1);
+  const std::string a = abstract_paragraph(chs);
+  BOOST_TEST(a.find("1 of 2 blind comparisons agree") != std::string::npos, a);
+  BOOST_TEST(a.find("1 of 1 yes/no claim tested on measured data hold") != std::string::npos, a);
+  BOOST_TEST(a.find("2 measured numbers were fitted to and 1 was used to choose a model") != std::string::npos, a);
+  const std::string f = front_page(chs, {"T", "d"});
+  BOOST_TEST(f.find("1 of 2 blind comparisons agree") != std::string::npos);
+  BOOST_TEST(f.find("rowspan=\"2\"") != std::string::npos, f);
+  const auto once = [&](const std::string& x) {
+    const auto p = f.find(x);
+    return p != std::string::npos && f.find(x, p + 1) == std::string::npos;
+  };
+  BOOST_TEST(once("shared cause"));
+  BOOST_TEST(once("too stiff"));
+  BOOST_TEST(f.find(">fitted<") != std::string::npos);
+  BOOST_TEST(f.find(">selected<") != std::string::npos);
+  fs::remove_all(root);
 }
 
 BOOST_AUTO_TEST_CASE(missing_kind_column_is_unclassified) {
