@@ -11,6 +11,7 @@
 #include "cli/exit_codes.hpp"
 #include "cli/loop_cmd.hpp"
 #include "cli/threads.hpp"
+#include "loop/blind_synth.hpp"
 
 #include <omp.h>
 
@@ -162,6 +163,7 @@ int synth_main(int argc, char** argv) {
   std::string out = "synth-out", maps_dir, data_dir = DRAWBEND_DATA_DIR, pins_text = "12.7,25.4,42";
   int seed = 1, points = 7, threads = 0;
   bool from_thesis = false;
+  std::string generator = "library", blind_class = "random";
   Options opt("drawbend synth", "Write synthetic draw-bend data with a hidden law, or the thesis data set.");
   opt.add(out, "out", "output directory");
   opt.add(so.effect, "effect", "hidden law: none, depletion, pin_surface, speed, drift, direction, pressure, curvature, batch, temperature");
@@ -175,9 +177,15 @@ int synth_main(int argc, char** argv) {
   opt.add(data_dir, "data", "data directory (with thesis/) for --from-thesis");
   opt.add(points, "points", "rows per thesis fit for --from-thesis");
   opt.add(threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all)");
+  opt.add(generator, "generator",
+          "library (the hidden laws of --effect) or blind (a random design, decoys and effect drawn from a wide "
+          "family, src/loop/blind_synth.hpp; uses --class, --noise and --seed only)");
+  opt.add(blind_class, "class", "--generator blind: level, smooth, interaction, bending, test-level, null or random");
   return with_exit_codes([&] {
     if (!opt.parse(argc, argv)) return 0;
     apply_threads(threads);
+    if (generator != "library" && generator != "blind")
+      throw InputError("--generator: expected library or blind, found '" + generator + "'");
     // Sizes and noise a draw-bend data set can have (before 2026-11-29,
     // --rows-per-test -5 ended in "cannot create std::vector larger than
     // max_size()" with exit 3, 1e8 ran for minutes, and --noise -1 wrote data).
@@ -198,6 +206,18 @@ int synth_main(int argc, char** argv) {
       const Dataset d = thesis_dataset(data_dir + "/thesis", points);
       write_measured(out + "/thesis_drawbend.csv", d);
       std::cout << "wrote " << out << "/thesis_drawbend.csv (" << d.rows.size() << " rows)\n";
+      return 0;
+    }
+    if (generator == "blind") {
+      const auto& cl = blind_classes();
+      if (blind_class != "random" && std::find(cl.begin(), cl.end(), blind_class) == cl.end())
+        throw InputError("--class: expected level, smooth, interaction, bending, test-level, null or random, found '" +
+                         blind_class + "'");
+      BlindTruth truth;
+      const Dataset d = synthesize_blind({blind_class, so.noise_N, static_cast<std::uint64_t>(seed)}, truth);
+      write_measured(out + "/data.csv", d);
+      write_file_atomic(out + "/truth.json", blind_truth_json(truth));
+      std::cout << "wrote " << out << "/data.csv (" << d.rows.size() << " rows) and " << out << "/truth.json\n";
       return 0;
     }
     so.seed = static_cast<std::uint64_t>(seed);
