@@ -101,7 +101,7 @@ int loop_main(int argc, char** argv) {
   opt.add(seed, "seed", "random seed of the permutation test");
   opt.add(lo.alpha, "alpha", "family-wise significance level (Bonferroni over candidates)");
   opt.add(lo.max_steps, "max-steps", "maximum number of effects to add");
-  opt.add(threads, "threads", "OpenMP threads of the fits (0: OMP_NUM_THREADS or all)");
+  opt.add(threads, "threads", "threads of the fits' matrix products (0: one, the default: more never paid on a busy machine)");
   opt.add(bending, "bending",
           "bending force: linear (b0 + b1 F_back) or constant, from the rotating-pin rows; for pins without "
           "rotating-pin rows: swift (Eq. 2.1), fe (the FE map's bending_force_N) or none (F_B = 0)");
@@ -123,6 +123,13 @@ int loop_main(int argc, char** argv) {
   return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
     apply_threads(threads);
+    // The loop's only parallel code is Eigen's matrix products (no OpenMP of
+    // its own), under 1 % of its time on one thread (perf, 50,000 rows,
+    // 2026-12-01), while on a busy machine Eigen's OpenMP threads spin against
+    // the other load: a 1,455-row set took 4.2 s with two threads against
+    // 0.77 s with one (issue 50, item 6).  So the default is one thread, and
+    // --threads N > 0 gives Eigen N.
+    Eigen::setNbThreads(threads > 0 ? threads : 1);
     const BendingSource bsrc = bending_source(bending);  // throws on an unknown name
     lo.bending_linear = bending != "constant";
     lo.progress = true;
