@@ -16,6 +16,8 @@ struct Config {
   int null_seeds = 10;    ///< null data sets per noise level
   int effect_seeds = 5;   ///< data sets per hidden effect and noise level
   int permutations = 20000;  ///< cap of the sequential permutation test
+  int heldout_sets = 24;     ///< held-out blind sets (heldout_protocol.md: 24 quick, 144 full)
+  int heldout_seed0 = 50500000;       ///< heldout_protocol.md; dev seeds 1..999 only to debug the generator
 };
 
 struct Thesis {
@@ -31,5 +33,6 @@ void pin_42_anomaly(Chapter& c, const Thesis& t);                // 5 (demonstra
 void bending_vs_swift(Chapter& c, const Thesis& t, const Config& cfg);  // 6 (demonstration 2)
 void rd_td_crossover(Chapter& c, const Thesis& t);               // 7 (demonstration 2)
 void synthetic_detection(Chapter& c, const Config& cfg);         // 8 (demonstration 3)
+void heldout_study(Chapter& c, const Config& cfg);               // 9 (demonstration 4, held out)
 
 }  // namespace ch7

@@ -18,6 +18,8 @@
 //   6. Demonstration 2b: bending force against back tension vs Swift Eq. 2.1.
 //   7. Demonstration 2c: the RD/TD crossover at high speed against pin scatter.
 //   8. Demonstration 3: synthetic data with hidden effects and null data.
+//   9. Demonstration 4 (held out): a second, blind generator with seeds and
+//      scoring fixed before the first run (heldout_protocol.md).
 #include "ch7_steps.hpp"
 
 int main(int argc, char** argv) {
@@ -27,6 +29,9 @@ int main(int argc, char** argv) {
   ch.options().add(cfg.null_seeds, "null-seeds", "null data sets per noise level");
   ch.options().add(cfg.effect_seeds, "effect-seeds", "data sets per hidden effect and noise level");
   ch.options().add(cfg.permutations, "permutations", "permutations per candidate");
+  ch.options().add(cfg.heldout_sets, "heldout-sets", "held-out blind sets (heldout_protocol.md: 24 quick, 144 full)");
+  ch.options().add(cfg.heldout_seed0, "heldout-seed0",
+                   "seed of held-out set 0 (the protocol's 50500000; 1..999 only to debug the generator)");
   return drawbend::study::run_chapter(ch, argc, argv, [&cfg](drawbend::study::Chapter& c) {
     using namespace ch7;
     const Thesis t = load_thesis_data(c, cfg);  // 1
@@ -37,5 +42,6 @@ int main(int argc, char** argv) {
     bending_vs_swift(c, t, cfg);                // 6
     rd_td_crossover(c, t);                      // 7
     synthetic_detection(c, cfg);                // 8
+    heldout_study(c, cfg);                      // 9
   });
 }

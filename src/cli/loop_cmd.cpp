@@ -11,6 +11,7 @@
 #include "cli/exit_codes.hpp"
 #include "cli/loop_cmd.hpp"
 #include "cli/threads.hpp"
+#include "loop/blind_synth.hpp"
 
 #include <omp.h>
 
@@ -100,7 +101,7 @@ int loop_main(int argc, char** argv) {
   opt.add(seed, "seed", "random seed of the permutation test");
   opt.add(lo.alpha, "alpha", "family-wise significance level (Bonferroni over candidates)");
   opt.add(lo.max_steps, "max-steps", "maximum number of effects to add");
-  opt.add(threads, "threads", "OpenMP threads of the fits (0: OMP_NUM_THREADS or all)");
+  opt.add(threads, "threads", "threads of the fits' matrix products (0: one, the default: more never paid on a busy machine)");
   opt.add(bending, "bending",
           "bending force: linear (b0 + b1 F_back) or constant, from the rotating-pin rows; for pins without "
           "rotating-pin rows: swift (Eq. 2.1), fe (the FE map's bending_force_N) or none (F_B = 0)");
@@ -128,6 +129,13 @@ int loop_main(int argc, char** argv) {
   return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
     apply_threads(threads);
+    // The loop's only parallel code is Eigen's matrix products (no OpenMP of
+    // its own), under 1 % of its time on one thread (perf, 50,000 rows,
+    // 2026-12-01), while on a busy machine Eigen's OpenMP threads spin against
+    // the other load: a 1,455-row set took 4.2 s with two threads against
+    // 0.77 s with one (issue 50, item 6).  So the default is one thread, and
+    // --threads N > 0 gives Eigen N.
+    Eigen::setNbThreads(threads > 0 ? threads : 1);
     const BendingSource bsrc = bending_source(bending);  // throws on an unknown name
     lo.bending_linear = bending != "constant";
     lo.progress = true;
@@ -172,6 +180,7 @@ int synth_main(int argc, char** argv) {
   std::string out = "synth-out", maps_dir, data_dir = DRAWBEND_DATA_DIR, pins_text = "12.7,25.4,42";
   int seed = 1, points = 7, threads = 0;
   bool from_thesis = false;
+  std::string generator = "library", blind_class = "random";
   Options opt("drawbend synth", "Write synthetic draw-bend data with a hidden law, or the thesis data set.");
   opt.add(out, "out", "output directory");
   opt.add(so.effect, "effect", "hidden law: none, depletion, pin_surface, speed, drift, direction, pressure, curvature, batch, temperature");
@@ -185,9 +194,15 @@ int synth_main(int argc, char** argv) {
   opt.add(data_dir, "data", "data directory (with thesis/) for --from-thesis");
   opt.add(points, "points", "rows per thesis fit for --from-thesis");
   opt.add(threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all)");
+  opt.add(generator, "generator",
+          "library (the hidden laws of --effect) or blind (a random design, decoys and effect drawn from a wide "
+          "family, src/loop/blind_synth.hpp; uses --class, --noise and --seed only)");
+  opt.add(blind_class, "class", "--generator blind: level, smooth, interaction, bending, test-level, null or random");
   return with_exit_codes([&] {
     if (!opt.parse(argc, argv)) return 0;
     apply_threads(threads);
+    if (generator != "library" && generator != "blind")
+      throw InputError("--generator: expected library or blind, found '" + generator + "'");
     // Sizes and noise a draw-bend data set can have (before 2026-11-29,
     // --rows-per-test -5 ended in "cannot create std::vector larger than
     // max_size()" with exit 3, 1e8 ran for minutes, and --noise -1 wrote data).
@@ -208,6 +223,18 @@ int synth_main(int argc, char** argv) {
       const Dataset d = thesis_dataset(data_dir + "/thesis", points);
       write_measured(out + "/thesis_drawbend.csv", d);
       std::cout << "wrote " << out << "/thesis_drawbend.csv (" << d.rows.size() << " rows)\n";
+      return 0;
+    }
+    if (generator == "blind") {
+      const auto& cl = blind_classes();
+      if (blind_class != "random" && std::find(cl.begin(), cl.end(), blind_class) == cl.end())
+        throw InputError("--class: expected level, smooth, interaction, bending, test-level, null or random, found '" +
+                         blind_class + "'");
+      BlindTruth truth;
+      const Dataset d = synthesize_blind({blind_class, so.noise_N, static_cast<std::uint64_t>(seed)}, truth);
+      write_measured(out + "/data.csv", d);
+      write_file_atomic(out + "/truth.json", blind_truth_json(truth));
+      std::cout << "wrote " << out << "/data.csv (" << d.rows.size() << " rows) and " << out << "/truth.json\n";
       return 0;
     }
     so.seed = static_cast<std::uint64_t>(seed);

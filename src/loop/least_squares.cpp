@@ -2,26 +2,55 @@
 #include "loop/least_squares.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <vector>
 
 namespace drawbend::loop {
 
-double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::MatrixXd& J, bool& converged) {
+namespace {
+std::atomic<long long> g_row_evals{0};
+}  // namespace
+
+long long lm_jacobian_row_evaluations() { return g_row_evals.load(); }
+
+double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::MatrixXd& J, bool& converged,
+                           const RowResidualFn& row) {
   const int p = static_cast<int>(th.size());
+  const Eigen::VectorXd th_start = th;
   Eigen::VectorXd r = resid(th);
+  const int n = static_cast<int>(r.size());
   double sse = r.squaredNorm(), lambda = 1e-3;
-  J.resize(r.size(), p);
+  J.resize(n, p);
+  std::vector<std::vector<int>> support;  // rows of each column; empty: dense
   auto jacobian = [&]() {
+    long long evals = 0;
     for (int j = 0; j < p; ++j) {
       Eigen::VectorXd t2 = th;
       const double h = 1e-7 * std::max(1.0, std::abs(th[j]));
       t2[j] += h;
-      J.col(j) = (r - resid(t2)) / h;  // d(prediction)/d(theta)
+      if (support.empty()) {
+        J.col(j) = (r - resid(t2)) / h;  // d(prediction)/d(theta)
+        evals += n;
+      } else {
+        J.col(j).setZero();
+        for (int k : support[j]) J(k, j) = (r[k] - row(t2, k)) / h;
+        evals += static_cast<long long>(support[j].size());
+      }
     }
+    g_row_evals += evals;
+  };
+  auto pattern = [&]() {  // nonzero (or NaN) entries of the dense Jacobian, per column
+    std::vector<std::vector<int>> s(p);
+    for (int j = 0; j < p; ++j)
+      for (int k = 0; k < n; ++k)
+        if (!(J(k, j) == 0)) s[j].push_back(k);
+    return s;
   };
   converged = false;
   for (int it = 0; it < 100; ++it) {
     jacobian();
+    if (it == 0 && row && n > 0) support = pattern();
     const Eigen::MatrixXd A = J.transpose() * J;
     const Eigen::VectorXd g = J.transpose() * r;
     bool improved = false;
@@ -48,7 +77,18 @@ double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::
       break;
     }
   }
-  jacobian();
+  const bool was_sparse = !support.empty();
+  const std::vector<std::vector<int>> used = std::move(support);
+  support.clear();
+  jacobian();  // dense: the one returned for the standard errors
+  if (was_sparse) {
+    const std::vector<std::vector<int>> now = pattern();
+    for (int j = 0; j < p; ++j)
+      if (!std::includes(used[j].begin(), used[j].end(), now[j].begin(), now[j].end())) {
+        th = th_start;  // a derivative outside the first pattern: the dense fit instead
+        return levenberg_marquardt(th, resid, J, converged);
+      }
+  }
   return sse;
 }
 

@@ -6,6 +6,16 @@
 //    step 1e-7 max(1, |theta_j|)) at the solution, for standard errors;
 //  - `converged` is set when a step gains less than 1e-12 of the SSE or no
 //    step (up to 20 damping increases) lowers it; at most 100 iterations;
+//  - with `row` (the residual of one row, bitwise the same as resid(theta)[k]),
+//    the Jacobian is sparse after the first iteration: column j is evaluated
+//    only on the rows where the first, dense Jacobian had a nonzero entry (a
+//    group factor's level touches only its own rows, so a fit with L levels
+//    costs about n instead of n L row evaluations per iteration; issue 50
+//    item 6).  The last Jacobian (the one returned) is dense again; if it has a
+//    nonzero entry outside those rows, the fit is rerun from the start with
+//    dense Jacobians only, so the answer never rests on a wrong pattern.  When
+//    the pattern holds, every Jacobian equals the dense one bit for bit (a row
+//    that does not read theta_j gives exactly 0), and so does the fit.
 #pragma once
 
 #include <functional>
@@ -16,6 +26,13 @@ namespace drawbend::loop {
 
 using ResidualFn = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
 
-double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::MatrixXd& J, bool& converged);
+using RowResidualFn = std::function<double(const Eigen::VectorXd&, int)>;
+
+double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::MatrixXd& J, bool& converged,
+                           const RowResidualFn& row = nullptr);
+
+/// Row evaluations made by levenberg_marquardt's Jacobians since the program
+/// started (a counter for the complexity test of issue 50, not a timing).
+long long lm_jacobian_row_evaluations();
 
 }  // namespace drawbend::loop

@@ -117,9 +117,10 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
     for (int k = 0; k < n; ++k) r[k] = d.rows[rows[k]].y - predict_row(d, f, L, t, rows[k], nullptr);
     return r;
   };
+  auto row = [&](const Eigen::VectorXd& t, int k) { return d.rows[rows[k]].y - predict_row(d, f, L, t, rows[k], nullptr); };
   Eigen::MatrixXd J;
   double sse = 0;
-  if (n > 0) sse = levenberg_marquardt(th, resid, J, f.converged);
+  if (n > 0) sse = levenberg_marquardt(th, resid, J, f.converged, row);
   f.theta = th;
   f.rss = sse;
   f.n_fixed = n;
@@ -162,10 +163,25 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec) {
     for (size_t k = 0; k < rows.size(); ++k) r[k] = d.rows[rows[k]].y - predict_row(d, g, L, tf, rows[k], nullptr);
     return r;
   };
+  // One row at t (the sparse Jacobian): the bending lines and friction
+  // parameters of the last t kept, not copied per row.
+  Fit g = f;
+  Eigen::VectorXd last, tf;
+  auto row = [&](const Eigen::VectorXd& t, int k) {
+    if (last.size() != t.size() || !(last.array() == t.array()).all()) {
+      last = t;
+      for (size_t q = 0; q < pins.size(); ++q) {
+        g.b0[pins[q]] = t[q];
+        if (linear) g.b1[pins[q]] = t[pins.size() + q];
+      }
+      tf = t.tail(L.n);
+    }
+    return d.rows[rows[k]].y - predict_row(d, g, L, tf, rows[k], nullptr);
+  };
   Eigen::MatrixXd J;
   bool conv = false;
   JointFit j;
-  j.rss = levenberg_marquardt(th, resid, J, conv);
+  j.rss = levenberg_marquardt(th, resid, J, conv, row);
   j.n = static_cast<int>(rows.size());
   j.p = static_cast<int>(th.size());
   return j;

@@ -1,0 +1,425 @@
+// The blind generator; see blind_synth.hpp.  It calls nothing of the loop's
+// model: its laws are written out here.
+#include "loop/blind_synth.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <numeric>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/csv.hpp"
+
+namespace drawbend::loop {
+
+const std::vector<std::string>& blind_classes() {
+  static const std::vector<std::string> c = {"level", "smooth", "interaction", "bending", "test-level", "null"};
+  return c;
+}
+
+namespace blindgen {
+
+constexpr double kBlindWrap = 1.5707963267948966;
+// Bending lines and back-tension ranges per pin: Table 5.3 (as synth.cpp).
+struct Pin {
+  double d, lo, hi, b1, b0;
+};
+const Pin kBlindPins[3] = {{12.7, 1450, 1800, -0.0625, 396.84}, {25.4, 1650, 2050, -0.0123, 129.39},
+                      {42.0, 1500, 2100, -0.0118, 70.133}};
+
+struct Rng {
+  std::mt19937_64 g;
+  double u(double a = 0, double b = 1) { return std::uniform_real_distribution<double>(a, b)(g); }
+  double n() { return std::normal_distribution<double>(0, 1)(g); }
+  int i(int n) { return static_cast<int>(g() % static_cast<std::uint64_t>(n)); }
+  template <class T>
+  const T& pick(const std::vector<T>& v) { return v[i(static_cast<int>(v.size()))]; }
+  template <class T>
+  void shuffle(std::vector<T>& v) {
+    for (size_t j = v.size(); j > 1; --j) std::swap(v[j - 1], v[i(static_cast<int>(j))]);
+  }
+};
+
+struct Test {
+  int pin = 0, order = 0, lub = 0, speed_level = -1, dir = 0, rows = 0;
+  bool rotating = false;
+  double speed = 25.4, temp = 21, thick = 1.04, humid = 50, film = 1.2, length = 200;
+  int coil = 0, lot = 0, die = 0, op = 0;
+  std::string id, strip, date;
+};
+
+// Shapes on x in [0, 1]; the parameters are drawn once per set.
+struct Shape {
+  std::string name;
+  std::function<double(double)> f;
+};
+Shape draw_shape(Rng& r, bool continuous_only) {
+  const double x0 = r.u(0.3, 0.7), w = r.u(0.08, 0.25), c = r.u(5, 50), tau = r.u(0.1, 0.4), fr = r.u(1, 2.5),
+               ph = r.u(0, 6.283);
+  std::vector<Shape> s = {
+      {"linear", [](double x) { return x; }},
+      {"log(1+" + fmt(c, 3) + " x)", [c](double x) { return std::log1p(c * x) / std::log1p(c); }},
+      {"saturating 1-exp(-x/" + fmt(tau, 3) + ")", [tau](double x) { return 1 - std::exp(-x / tau); }},
+      {"threshold max(0, x-" + fmt(x0, 3) + ")", [x0](double x) { return std::max(0.0, x - x0); }},
+      {"periodic sin(2pi " + fmt(fr, 3) + " x)", [fr, ph](double x) { return std::sin(2 * M_PI * fr * x + ph); }},
+      {"sigmoid at " + fmt(x0, 3), [x0, w](double x) { return 1 / (1 + std::exp(-(x - x0) / (0.3 * w))); }},
+      {"bump at " + fmt(x0, 3), [x0, w](double x) { return std::exp(-std::pow((x - x0) / w, 2)); }},
+      {"U (x-" + fmt(x0, 3) + ")^2", [x0](double x) { return (x - x0) * (x - x0); }}};
+  if (!continuous_only) s.push_back({"step at " + fmt(x0, 3), [x0](double x) { return x > x0 ? 1.0 : 0.0; }});
+  return r.pick(s);
+}
+
+// Per-level pattern of a few-level variable with `n` levels (sorted order
+// for numeric ones, so that "mid-level peak" means what it says).
+std::vector<double> draw_levels(Rng& r, int n, bool numeric, std::string& name) {
+  std::vector<double> v(n, 0.0);
+  const int kind = r.i(numeric ? 3 : 2);
+  if (kind == 2 || (numeric && n >= 3 && kind == 0)) {  // peak at an inner level
+    const int mid = 1 + r.i(n - 2);
+    for (int l = 0; l < n; ++l) v[l] = l == mid ? 1.0 : (l == 0 || l == n - 1 ? 0.0 : r.u(0, 0.5));
+    name = "mid-level peak at level " + std::to_string(mid + 1) + " of " + std::to_string(n);
+  } else if (kind == 0) {
+    v[r.i(n)] = 1;
+    name = "one level apart";
+  } else {
+    for (double& x : v) x = r.n();
+    name = "random level values";
+  }
+  return v;
+}
+
+std::string two(int v) { return (v < 10 ? "0" : "") + std::to_string(v); }
+
+}  // namespace blindgen
+
+Dataset synthesize_blind(const BlindOptions& o, BlindTruth& t) {
+  using namespace blindgen;
+  const auto& classes = blind_classes();
+  Rng r{std::mt19937_64(o.seed * 0x9E3779B97F4A7C15ULL + 0x50)};
+  std::string cls = o.cls;
+  if (cls == "random") cls = r.pick(classes);
+  if (std::find(classes.begin(), classes.end(), cls) == classes.end())
+    throw std::invalid_argument("unknown blind class '" + o.cls + "' (level, smooth, interaction, bending, test-level, null, random)");
+  t = {};
+  t.cls = cls;
+  t.noise_N = o.noise_N;
+  t.seed = o.seed;
+
+  // ---- design ----
+  const std::vector<std::vector<double>> dir_sets = {{0, 90}, {0, 45, 90}, {0, 30, 60, 90}, {0, 22.5, 45, 67.5, 90}};
+  const std::vector<double> dirs = r.pick(dir_sets);
+  const bool speed_levels = r.u() < 0.5;
+  std::vector<double> levels = {10, 25, 50, 100};
+  levels.erase(levels.begin() + r.i(4));
+  const std::vector<std::string> lub_names = {"MP404", "Anticorit PL 3802-39S", "dry film DL-2"};
+  const int nlub = r.u() < 0.6 ? 1 : 2;
+  std::vector<double> lub_f = {1.0, r.u(0.6, 0.9)}, lev_f = {r.u(0.9, 1.1), r.u(0.9, 1.1), r.u(0.9, 1.1)};
+  const double mu_rd = r.u(0.07, 0.12), mu_td = mu_rd * r.u(0.8, 1.05);
+  const int ncells = nlub * (speed_levels ? 3 : 1) * (dirs.size() <= 2 ? 2 : 1);
+  const int T = std::max(r.i(23) + 8, 2 * ncells), ncoil = 2 + r.i(3), nlot = 2 + r.i(2), nop = 2 + r.i(2);
+  const std::vector<std::string> operators = {"A. Jansen", "M. de Vries", "K. Bakker"};
+  const std::vector<std::string> dies = {"old", "new", "reground"};
+  std::vector<double> films = {0.8, 1.2, 1.6, 2.0};
+  if (r.u() < 0.5) films.pop_back();
+  std::vector<double> coil_yield(ncoil);
+  for (double& y : coil_yield) y = std::round(10 * (99.7 + 4 * r.n())) / 10;
+  Pin pins[3];
+  for (int p = 0; p < 3; ++p) {
+    pins[p] = kBlindPins[p];
+    pins[p].b0 *= 1 + 0.05 * r.n();
+    pins[p].b1 *= 1 + 0.05 * r.n();
+    const double s = 1 + 0.05 * r.n();
+    pins[p].lo *= s, pins[p].hi *= s;
+  }
+  std::vector<Test> tests;
+  for (int p = 0; p < 3; ++p) {
+    std::vector<std::array<int, 3>> combos;  // direction, lubricant, speed level
+    for (size_t d = 0; d < dirs.size(); ++d)
+      for (int l = 0; l < nlub; ++l)
+        for (int s = 0; s < (speed_levels ? 3 : 1); ++s) combos.push_back({static_cast<int>(d), l, s});
+    r.shuffle(combos);
+    for (int j = 0; j < T + 3; ++j) {
+      Test x;
+      x.pin = p;
+      x.rotating = j >= T;
+      const auto& c = combos[j % combos.size()];
+      x.dir = x.rotating ? 0 : c[0];
+      x.lub = x.rotating ? 0 : c[1];
+      if (speed_levels) x.speed_level = x.rotating ? 1 : c[2], x.speed = levels[x.speed_level];
+      else x.speed = x.rotating ? 25.4 : std::round(10 * std::exp(r.u(std::log(5.0), std::log(120.0)))) / 10;
+      x.rows = 6 + r.i(20);
+      x.length = r.u(150, 250);
+      x.temp = std::round(10 * r.u(19, 27)) / 10;
+      x.thick = std::round(1000 * (1.04 + 0.015 * r.n())) / 1000;
+      x.humid = r.u(35, 65);
+      x.film = r.pick(films);
+      x.coil = r.i(ncoil), x.lot = r.i(nlot), x.die = r.i(3);
+      tests.push_back(x);
+    }
+  }
+  std::vector<int> order(tests.size());
+  std::iota(order.begin(), order.end(), 0);
+  r.shuffle(order);  // order[k] = index of the k-th test run
+  const int day0 = 3 + r.i(20);
+  for (size_t k = 0; k < order.size(); ++k) {
+    Test& x = tests[order[k]];
+    x.order = static_cast<int>(k) + 1;
+    x.op = static_cast<int>(k * nop / order.size());  // shifts
+    x.date = "2026-03-" + two(day0 + static_cast<int>(k / 12));
+    x.id = "DB" + x.date.substr(5, 2) + x.date.substr(8, 2) + "-" + std::to_string(100 + k) +
+           (x.rotating ? "R" : "") ;
+    x.strip = "S" + std::to_string(20000 + 37 * k + r.i(37));
+  }
+
+  // ---- rows (run order) ----
+  struct RowT {
+    int test;
+    double F, slide, cycles, humid;
+  };
+  std::vector<RowT> rows;
+  std::vector<double> strokes(3, 0.0);
+  for (int ti : order) {
+    const Test& x = tests[ti];
+    std::vector<int> slot(x.rows);
+    std::iota(slot.begin(), slot.end(), 0);
+    r.shuffle(slot);
+    for (int k = 0; k < x.rows; ++k) {
+      const Pin& p = pins[x.pin];
+      // Rounded as written, so that the file holds the values the forces were made from.
+      rows.push_back({ti, std::round(10 * (p.lo + (p.hi - p.lo) * slot[k] / (x.rows - 1))) / 10,
+                      std::round(100 * (20 + x.length * k / (x.rows - 1))) / 100, strokes[x.pin]++,
+                      std::round(10 * (x.humid + r.n())) / 10});
+    }
+  }
+  const size_t N = rows.size();
+
+  // ---- the planted effect: g per row and its channel ----
+  std::vector<double> g(N, 0.0);
+  std::string channel = "none";
+  auto col = [&](const std::string& v, size_t i) -> double {  // numeric value of a variable at row i
+    const RowT& w = rows[i];
+    const Test& x = tests[w.test];
+    if (v == "sliding_distance_mm") return w.slide;
+    if (v == "speed_mm_s") return x.speed;
+    if (v == "cycle_count") return w.cycles;
+    if (v == "test_order") return x.order;
+    if (v == "humidity_pct") return w.humid;
+    if (v == "tool_temp_C") return x.temp;
+    if (v == "thickness_mm") return x.thick;
+    if (v == "yield_MPa") return coil_yield[x.coil];
+    if (v == "direction_deg") return x.dir;
+    if (v == "lube_film_g_m2") return x.film;
+    if (v == "die_set") return x.die;
+    if (v == "operator") return x.op;
+    if (v == "coil") return x.coil;
+    if (v == "lot") return x.lot;
+    throw std::logic_error("blind_synth: no variable " + v);
+  };
+  auto shaped = [&](const std::string& v, const Shape& s, const std::vector<char>& in) {
+    double lo = 1e300, hi = -1e300;
+    for (size_t i = 0; i < N; ++i) lo = std::min(lo, col(v, i)), hi = std::max(hi, col(v, i));
+    for (size_t i = 0; i < N; ++i) g[i] = in[i] ? s.f(hi > lo ? (col(v, i) - lo) / (hi - lo) : 0.5) : 0.0;
+    t.shape = s.name + " (x = the variable scaled to [0, 1] over the data)";
+  };
+  auto leveled = [&](const std::string& v, int n, bool numeric) {
+    const std::vector<double> lv = draw_levels(r, n, numeric, t.shape);
+    for (size_t i = 0; i < N; ++i) {
+      int l = static_cast<int>(col(v, i));
+      if (v == "direction_deg") l = tests[rows[i].test].dir;
+      if (v == "lube_film_g_m2") l = static_cast<int>(std::find(films.begin(), films.end(), col(v, i)) - films.begin());
+      g[i] = lv[l];
+    }
+  };
+  const std::vector<char> all(N, 1);
+  auto friction_channel = [&]() { const double u = r.u(); return u < 0.5 ? "mu_mult" : u < 0.8 ? "mu_add" : "force"; };
+  if (cls == "level") {
+    std::vector<std::string> v = {"lube_film_g_m2", "die_set", "operator"};
+    if (dirs.size() >= 3) v.push_back("direction_deg");
+    t.variable = r.pick(v);
+    const int n = t.variable == "direction_deg" ? static_cast<int>(dirs.size())
+                  : t.variable == "lube_film_g_m2" ? static_cast<int>(films.size())
+                  : t.variable == "die_set" ? 3 : nop;
+    leveled(t.variable, n, t.variable == "direction_deg" || t.variable == "lube_film_g_m2");
+    channel = friction_channel();
+  } else if (cls == "smooth") {
+    std::vector<std::string> v = {"sliding_distance_mm", "cycle_count", "test_order", "humidity_pct"};
+    if (!speed_levels) v.push_back("speed_mm_s");
+    t.variable = r.pick(v);
+    shaped(t.variable, draw_shape(r, false), all);
+    channel = friction_channel();
+  } else if (cls == "interaction") {
+    std::vector<std::string> v = {"sliding_distance_mm", "tool_temp_C", "humidity_pct", "cycle_count"};
+    if (!speed_levels) v.push_back("speed_mm_s");
+    t.variable = r.pick(v);
+    std::vector<std::string> kinds = {"pin"};
+    if (dirs.size() >= 2) kinds.push_back("direction");
+    if (nlub == 2) kinds.push_back("lubricant");
+    if (speed_levels) kinds.push_back("speed");
+    const std::string kind = r.pick(kinds);
+    const int which = kind == "pin" ? r.i(3) : kind == "direction" ? r.i(static_cast<int>(dirs.size()))
+                      : kind == "lubricant" ? r.i(2) : r.i(3);
+    std::vector<char> in(N, 0);
+    for (size_t i = 0; i < N; ++i) {
+      const Test& x = tests[rows[i].test];
+      in[i] = !x.rotating && (kind == "pin" ? x.pin : kind == "direction" ? x.dir : kind == "lubricant" ? x.lub
+                                                                                       : x.speed_level) == which;
+    }
+    t.cell = kind + " = " + (kind == "pin" ? fmt(kBlindPins[which].d) + " mm" : kind == "direction" ? fmt(dirs[which]) + " deg"
+                             : kind == "lubricant" ? lub_names[which] : fmt(levels[which]) + " mm/s");
+    shaped(t.variable, draw_shape(r, true), in);
+    channel = r.u() < 0.6 ? "mu_mult" : "mu_add";
+  } else if (cls == "bending") {
+    t.variable = r.u() < 0.6 ? "thickness_mm" : "yield_MPa";
+    double mean = 0;
+    for (size_t i = 0; i < N; ++i) mean += col(t.variable, i) / N;
+    for (size_t i = 0; i < N; ++i) g[i] = t.variable == "thickness_mm" ? std::pow(col(t.variable, i) / mean, 2) - 1
+                                                                         : col(t.variable, i) / mean - 1;
+    t.shape = t.variable == "thickness_mm" ? "(t/t_mean)^2 - 1" : "sigma_y/mean - 1";
+    channel = r.u() < 0.6 ? "bend" : "bend+mu";
+  } else if (cls == "test-level") {
+    t.variable = r.pick(std::vector<std::string>{"coil", "lot", "tool_temp_C", "thickness_mm"});
+    if (t.variable == "coil" || t.variable == "lot") leveled(t.variable, t.variable == "coil" ? ncoil : nlot, false);
+    else shaped(t.variable, draw_shape(r, false), all);
+    channel = r.u() < 0.6 ? "mu_mult" : "mu_add";
+  }
+  if (channel == "force") {  // an extra drag (a guide, a wiper): it only adds, so outlet >= back tension holds
+    const double lo = *std::min_element(g.begin(), g.end());
+    for (double& v : g) v -= lo;
+  }
+  t.channel = channel;
+  t.aliases = {t.variable};
+  if (t.variable == "sliding_distance_mm") t.aliases.push_back("time_s");
+  if (t.variable == "coil") t.aliases.push_back("yield_MPa");
+  if (t.variable == "yield_MPa") t.aliases.push_back("coil");
+  if (cls == "null") t.aliases.clear();
+
+  // ---- outlet forces for an effect size a ----
+  double mu_floor_hits = 0;
+  auto forces = [&](double a) {
+    std::vector<double> y(N);
+    mu_floor_hits = 0;
+    for (size_t i = 0; i < N; ++i) {
+      const RowT& w = rows[i];
+      const Test& x = tests[w.test];
+      const Pin& p = pins[x.pin];
+      double bend = p.b0 + p.b1 * w.F;
+      if (channel == "bend" || channel == "bend+mu") bend *= 1 + a * g[i];
+      double out = w.F + bend;
+      if (!x.rotating) {
+        const double phi = dirs[x.dir] * M_PI / 180, c = std::cos(phi), s = std::sin(phi);
+        double mu = mu_rd * mu_td / std::sqrt(mu_td * mu_td * c * c + mu_rd * mu_rd * s * s);
+        mu *= lub_f[x.lub] * (x.speed_level >= 0 ? lev_f[x.speed_level] : 1.0);
+        if (channel == "mu_mult" || channel == "bend+mu") mu *= 1 + a * g[i];
+        if (channel == "mu_add") mu += 0.1 * a * g[i];
+        if (mu < 0.01) mu = 0.01, mu_floor_hits++;
+        out += w.F * (std::exp(mu * kBlindWrap) - 1);
+      }
+      if (channel == "force") out += 100 * a * g[i];
+      y[i] = out;
+    }
+    return y;
+  };
+  const std::vector<double> y0 = forces(0);
+  auto rms_of = [&](double a) {
+    const std::vector<double> y = forces(a);
+    double q = 0;
+    for (size_t i = 0; i < N; ++i) q += (y[i] - y0[i]) * (y[i] - y0[i]);
+    return std::sqrt(q / N);
+  };
+  double a = 0;
+  if (cls != "null") {
+    t.k = r.u(2.5, 6);
+    const double target = t.k * o.noise_N;
+    double sgn = r.u() < 0.5 && channel != "force" ? -1 : 1;
+    if (rms_of(1) <= 0) throw std::logic_error("blind_synth: a planted effect of size 0 (seed " + std::to_string(o.seed) + ")");
+    for (int pass = 0; pass < 2; ++pass) {
+      a = sgn;
+      for (int it = 0; it < 30; ++it) a *= target / rms_of(a);
+      if (mu_floor_hits == 0) break;
+      sgn = -sgn;  // mu driven to the floor: the effect the other way
+    }
+    t.effect_rms_N = rms_of(a);
+  }
+  const std::vector<double> y = forces(a);
+  const std::string chan_text = channel == "mu_mult" ? "mu (1 + a g)" : channel == "mu_add" ? "mu + 0.1 a g"
+                                : channel == "force" ? "outlet force + 100 a g N" : channel == "bend" ? "F_B (1 + a g)"
+                                : channel == "bend+mu" ? "F_B (1 + a g) and mu (1 + a g)" : "";
+  t.law = cls == "null" ? "no planted effect"
+                        : chan_text + ", g = " + t.shape + " of " + t.variable + (t.cell.empty() ? "" : " in the cell " + t.cell) +
+                              ", a = " + fmt(a, 4);
+
+  // ---- the data set ----
+  Dataset d;
+  d.path = "synthetic-blind";
+  d.has_sliding = d.has_time = true;
+  const bool has_strip = r.u() < 0.7, has_date = r.u() < 0.7, has_stamp = r.u() < 0.7, has_comment = r.u() < 0.7;
+  d.extra_columns = {"test_order", "operator", "coil", "yield_MPa", "lot", "tool_temp_C", "thickness_mm",
+                     "humidity_pct", "lube_film_g_m2", "die_set", "cycle_count"};
+  const std::pair<bool, const char*> optional[] = {
+      {has_strip, "strip_id"}, {has_date, "date"}, {has_stamp, "timestamp"}, {has_comment, "comment"}};
+  for (const auto& [on, name] : optional)
+    if (on) d.extra_columns.push_back(name);
+  d.comments = {" draw-bend tests, blind synthetic set (drawbend synth --generator blind), seed " +
+                    std::to_string(o.seed) + ", noise sd " + fmt(o.noise_N) + " N; the truth is in truth.json",
+                " units: mm, N, mm/s, s, deg, C, MPa, g/m2"};
+  std::normal_distribution<double> noise(0, o.noise_N);
+  const std::vector<std::string> remarks = {
+      "strip edge slightly burred near the grip, re-clamped after the first stroke",
+      "lubricant re-applied by hand, film not weighed; see lab book p. ",
+      "load cell re-zeroed before the test, pin wiped with acetone",
+      "small scratch on the strip surface at about 120 mm, test continued"};
+  int clock = 8 * 3600 + r.i(1800);
+  for (size_t i = 0; i < N; ++i) {
+    const RowT& w = rows[i];
+    const Test& x = tests[w.test];
+    Sample s;
+    s.test_id = x.id;
+    s.pin_d_mm = kBlindPins[x.pin].d;
+    s.rotating = x.rotating;
+    s.direction_deg = dirs[x.dir];
+    s.speed_mm_s = x.speed;
+    s.lubricant = lub_names[x.lub];
+    s.back_tension_N = w.F;
+    s.sliding_mm = w.slide;
+    s.time_s = std::round(1000 * w.slide / x.speed) / 1000;
+    s.outlet_force_N = y[i] + noise(r.g);
+    s.extra = {std::to_string(x.order), operators[x.op], "C" + std::to_string(4711 + x.coil),
+               fmt(coil_yield[x.coil], 5), "L22" + two(7 + 4 * x.lot), fmt(x.temp, 3), fmt(x.thick, 4),
+               fmt(w.humid, 4), fmt(x.film, 2), dies[x.die], std::to_string(static_cast<int>(w.cycles))};
+    clock += 7 + r.i(20);
+    if (has_strip) s.extra.push_back(x.strip);
+    if (has_date) s.extra.push_back(x.date);
+    if (has_stamp)
+      s.extra.push_back(x.date + "T" + two(clock / 3600 % 24) + ":" + two(clock / 60 % 60) + ":" + two(clock % 60));
+    if (has_comment) {
+      const int h = (x.order * 7919) % 10;  // about one test in five has a remark
+      s.extra.push_back(h < 2 ? remarks[(x.order + h) % remarks.size()] +
+                                    (remarks[(x.order + h) % remarks.size()].back() == ' ' ? std::to_string(10 + x.order % 90) : "")
+                              : "");
+    }
+    d.rows.push_back(s);
+  }
+  d.rows_read = static_cast<int>(N);
+  return d;
+}
+
+std::string blind_truth_json(const BlindTruth& t) {
+  auto q = [](const std::string& s) {
+    std::string o = "\"";
+    for (char c : s) o += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
+    return o + "\"";
+  };
+  std::ostringstream o;
+  o << "{\n  \"generator\": \"blind\",\n  \"class\": " << q(t.cls) << ",\n  \"variable\": " << q(t.variable)
+    << ",\n  \"aliases\": [";
+  for (size_t i = 0; i < t.aliases.size(); ++i) o << (i ? ", " : "") << q(t.aliases[i]);
+  o << "],\n  \"shape\": " << q(t.shape) << ",\n  \"channel\": " << q(t.channel) << ",\n  \"cell\": " << q(t.cell)
+    << ",\n  \"law\": " << q(t.law) << ",\n  \"k\": " << fmt(t.k, 4) << ",\n  \"effect_rms_N\": " << fmt(t.effect_rms_N, 5)
+    << ",\n  \"noise_N\": " << fmt(t.noise_N) << ",\n  \"seed\": " << t.seed << "\n}\n";
+  return o.str();
+}
+
+}  // namespace drawbend::loop
