@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
   std::string every;
   int halt = 0;
   Options opt("drawbend run CASE.toml",
-              "Run one case deck. Writes history.csv, summary.csv, contact maps and ParaView .vtu/.pvd frames to "
+              "Run one case deck. Writes result.toml (the answer: for a draw-bend deck F_X, F_Y, F_B, mu by Eq. (2.3)), history.csv, summary.csv, contact maps and ParaView .vtu/.pvd frames to "
               "--out; the .vtu points are the deformed positions (do not warp them by the displacement again).");
   opt.add(ro.out_dir, "out", "output directory");
   opt.add(ro.threads, "threads", "OpenMP threads (0: deck or default)");
@@ -100,6 +100,10 @@ int main(int argc, char** argv) {
           "write <out>/checkpoint.bin every N cycles (e.g. 500) or T simulated seconds (e.g. 2e-3s)");
   opt.add(ro.restart, "restart", "continue from this checkpoint (same deck; use the same --out)");
   opt.add(halt, "halt-after-cycles", "stop after the first checkpoint at or beyond this cycle (tests restarts)");
+  opt.add(ro.result.basis, "basis", "draw-bend decks: basis of --bending-force and the printed forces, full or half");
+  opt.add(ro.result.bending_force, "bending-force",
+          "draw-bend decks: F_B [N] on --basis for mu by Eq. (2.3) (0: this run if frictionless, else Swift's Eq. (2.1))");
+  opt.add(ro.result.yield_stress, "yield-stress", "draw-bend decks: yield stress [MPa] of Swift's F_B (0: Table 5.1, RD)");
   return cli::with_exit_codes([&] {
     if (!opt.parse(argc - (help ? 1 : 2), argv + (help ? 1 : 2))) return 0;
     cli::check_threads(ro.threads);
@@ -107,6 +111,12 @@ int main(int argc, char** argv) {
     if (!(ro.progress_every_s > 0) || !std::isfinite(ro.progress_every_s))
       throw std::invalid_argument("--progress-every must be a positive number of seconds");
     ro.halt_after_cycles = halt;
+    if (ro.result.basis != "full" && ro.result.basis != "half")
+      throw std::invalid_argument("--basis: expected full or half, found '" + ro.result.basis + "'");
+    if (!(ro.result.bending_force >= 0) || !std::isfinite(ro.result.bending_force))
+      throw std::invalid_argument("--bending-force: expected a force >= 0 N (0: estimated)");
+    if (!(ro.result.yield_stress >= 0) || !std::isfinite(ro.result.yield_stress))
+      throw std::invalid_argument("--yield-stress: expected a stress >= 0 MPa (0: Table 5.1, RD)");
     if (!every.empty()) io::parse_checkpoint_every(every, ro);
     if (halt > 0 && every.empty()) throw std::invalid_argument("--halt-after-cycles needs --checkpoint-every");
     ensure_writable_dir(ro.out_dir, "--out");  // before any work
