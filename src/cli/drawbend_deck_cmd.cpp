@@ -66,6 +66,10 @@ int drawbend_deck_command(int argc, char** argv) {
   opt.add(threads, "threads",
           "OpenMP threads of the run (0: OMP_NUM_THREADS or all); without --run, written into the deck's [numerics]");
   opt.add(run_dir, "run", "run the deck into this directory instead of printing it");
+  opt.example("drawbend drawbend-deck --pin-diameter 25.4 --back-tension 1800 --friction '{ law = \"coulomb\", mu = 0.1 }' > my.toml");
+  opt.example("drawbend drawbend-deck --pin-diameter 12.7 --element-length 1.5 --through 2 --draw-length 12 --run my-free    # frictionless: prints F_B");
+  opt.example("drawbend drawbend-deck --pin-diameter 12.7 --element-length 1.5 --through 2 --draw-length 12 --friction '{ law = \"coulomb\", mu = 0.1 }' "
+              "--bending-force 348 --run my-case    # F_B of my-free");
   if (!opt.parse(argc, argv)) return 0;
   check_threads(threads);
   // Relative files are the user's, from the current folder (io/portable_paths.hpp).

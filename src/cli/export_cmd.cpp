@@ -16,17 +16,26 @@
 namespace drawbend::cli {
 
 int export_main(int argc, char** argv) {
-  if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
-    std::cerr << "usage: drawbend export friction_model.toml --to lsdyna|openradioss|abaqus [--out FILE] [--threads N]\n";
-    return argc >= 2 && std::string(argv[1]) == "--help" ? 0 : 2;
-  }
-  const std::string path = argv[1];
   std::string to, out;
   int threads = 0;
   Options opt("drawbend export FRICTION_MODEL.toml", "Export an identified friction model to another solver.");
   opt.add(to, "to", "lsdyna, openradioss or abaqus");
   opt.add(out, "out", "output file (default: friction_<to>.k|.rad|.inp next to the model)");
   opt.add(threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all; the export itself is serial)");
+  opt.example("drawbend loop data/measured/thesis_drawbend.csv --out my-loop --figures ''");
+  opt.example("drawbend export my-loop/friction_model.toml --to abaqus    # writes my-loop/friction_abaqus.inp");
+  opt.example("drawbend export my-loop/friction_model.toml --to lsdyna --out my-friction.k");
+  const bool help = argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h");
+  if (help) {
+    std::cout << opt.usage();
+    return 0;
+  }
+  if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
+    std::cerr << "usage: drawbend export friction_model.toml --to lsdyna|openradioss|abaqus [--out FILE] [--threads N]"
+                 " (drawbend export --help: options and examples)\n";
+    return 2;
+  }
+  const std::string path = argv[1];
   return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
     apply_threads(threads);

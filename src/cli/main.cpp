@@ -9,6 +9,7 @@
 #include <csignal>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "cli/loop_cmd.hpp"
 #include "core/csv.hpp"
@@ -55,9 +56,26 @@ int main(int argc, char** argv) {
       "  model-loop DATA.csv --out DIR  re-run the draw-bend FE model with candidate effects\n"
       "  synth --out DIR              synthetic draw-bend data with a hidden law, or the thesis data\n"
       "  export MODEL.toml --to X     a friction_model.toml for LS-DYNA, OpenRadioss or Abaqus\n"
-      "  --version                    print the version and commit\n"
-      "Units: mm, N, MPa, s.  Exit codes: 0 done, 2 input error, 3 numerical fault.\n";
-  if (argc >= 2 && std::string(argv[1]) == "--version") {
+      "  help [COMMAND]               this list, or that command's options and examples (= COMMAND --help)\n"
+      "  version, --version           print the version and commit\n"
+      "Units: mm, N, MPa, s.  Exit codes: 0 done, 2 input error, 3 numerical fault.\n"
+      "Examples (from the source folder after make or make test; drawbend is build/src/drawbend):\n"
+      "  drawbend drawbend-deck --pin-diameter 12.7 --element-length 1.5 --through 2 --draw-length 12 --run my-free\n"
+      "  drawbend loop data/measured/thesis_drawbend.csv --out my-loop\n"
+      "  drawbend help run\n";
+  // `drawbend help CMD` is `drawbend CMD --help`.
+  std::vector<char*> args(argv, argv + argc);
+  static char help_flag[] = "--help";
+  if (argc >= 3 && std::string(argv[1]) == "help") {
+    args.erase(args.begin() + 1);  // drawbend CMD ...
+    args.insert(args.begin() + 2, help_flag);
+    argc = static_cast<int>(args.size());
+    argv = args.data();
+  } else if (argc == 2 && std::string(argv[1]) == "help") {
+    std::cout << usage;
+    return 0;
+  }
+  if (argc >= 2 && (std::string(argv[1]) == "--version" || std::string(argv[1]) == "version")) {
     std::cout << "drawbend " << DRAWBEND_VERSION << " (" << DRAWBEND_GIT_DESCRIBE << ")\n";
     return 0;
   }
@@ -75,7 +93,7 @@ int main(int argc, char** argv) {
   if (cmd == "synth") return cli::synth_main(argc - 1, argv + 1);  // loop_cmd.cpp
   if (cmd == "export") return cli::export_main(argc - 1, argv + 1);  // export_cmd.cpp
   if (cmd != "run") {
-    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, drawbend-deck, block-deck, strip-deck, cup-deck, model-loop, loop, synth, export; see drawbend --help)\n";
+    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, drawbend-deck, block-deck, strip-deck, cup-deck, model-loop, loop, synth, export, help, version; see drawbend --help)\n";
     return 2;
   }
   // `drawbend run --help` prints the options below without a deck.
@@ -99,6 +117,9 @@ int main(int argc, char** argv) {
   opt.add(every, "checkpoint-every",
           "write <out>/checkpoint.bin every N cycles (e.g. 500) or T simulated seconds (e.g. 2e-3s)");
   opt.add(ro.restart, "restart", "continue from this checkpoint (same deck; use the same --out)");
+  opt.example("drawbend run data/cases/block_slide.toml --out my-block --quiet");
+  opt.example("drawbend drawbend-deck --pin-diameter 12.7 --element-length 1.5 --through 2 --draw-length 12 --friction '{ law = \"coulomb\", mu = 0.1 }' > my.toml");
+  opt.example("drawbend run my.toml --out my-run --threads 2    # my-run/result.toml: F_X, F_Y, F_B, mu");
   opt.add(halt, "halt-after-cycles", "stop after the first checkpoint at or beyond this cycle (tests restarts)");
   opt.add(ro.result.basis, "basis", "draw-bend decks: basis of --bending-force and the printed forces, full or half");
   opt.add(ro.result.bending_force, "bending-force",

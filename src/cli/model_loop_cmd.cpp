@@ -59,7 +59,11 @@ int model_loop_command(int argc, char** argv, const char* name) {
   opt.add(threads, "threads",
           "threads of the FE runs in all: cases side by side times threads within a case (0: DRAWBEND_JOBS cases "
           "side by side on all hardware threads)");
-  if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
+  opt.example("drawbend model-loop data/measured/model_loop_points.csv --out my-model-loop --candidates offset "
+              "--element-length 2 --across 1    # a few minutes; writes my-model-loop/model_loop.md");
+  opt.example("drawbend model-loop data/measured/model_loop_points.csv --out my-model-loop --candidates offset "
+              "--element-length 2 --across 1    # again: the finished runs are read back");
+  if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
     if (!opt.parse(argc, argv)) return 0;
     throw InputError(me + ": missing DATA.csv (columns pin_diameter_mm, back_tension_N, bending_force_N; --help lists "
                      "the options)");
