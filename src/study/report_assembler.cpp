@@ -96,7 +96,14 @@ std::string provenance_section(const ChapterSource& ch) {
 std::string markdown_table(const CsvTable& t, const std::string& caption, int status_column) {
   std::ostringstream os;
   os << "| ";
-  for (const auto& h : t.header) os << escape_cell(h) << " | ";
+  // A column name may break after each '_' (sets_at_noise_level), so that
+  // the names do not set the width of a table of short numbers.
+  for (const auto& h : t.header) {
+    std::string cell = escape_cell(h);
+    for (std::size_t at = cell.find('_'); at != std::string::npos; at = cell.find('_', at + 6))
+      cell.insert(at + 1, "<wbr>");
+    os << cell << " | ";
+  }
   os << "\n|";
   for (std::size_t i = 0; i < t.header.size(); ++i) os << "---|";
   os << "\n";

@@ -1,9 +1,10 @@
 #!/bin/bash
 # Issue 55, item 4: a report you can navigate (report/check_html.py).
 #  1. The checker catches what it is for, on a page made to have each fault:
-#     a stray numbered list (<ol start="10">), an absolute path, a table of
-#     eight 20-letter words (8 x (20 x 0.55 + 1) x 0.88 = 84 em > 56 em) -> exit 1,
-#     three findings; a clean page (a list from 1, a two-column table) -> exit 0.
+#     a stray numbered list (<ol start="10">), an absolute path, a table with a
+#     note column of eight 20-letter words (8 x (20 x 0.55 + 1) x 0.88 = 84 em >
+#     56 em) -> exit 1, three findings; a clean page (a list from 1, a two-column
+#     table, a wide table without a note column, which scrolls) -> exit 0.
 #  2. drawbend-report on a small study laid out as the real one (repo/chapters/chz,
 #     repo/build/chapters/chz) whose prose wraps "(22 instead of\n  10) brought"
 #     and a value "6" at the start of a list item's line, and whose values name an
@@ -18,7 +19,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 w20=aaaaaaaaaaaaaaaaaaaa
 {
   printf -- '- item over the\n  10) stray\n\n/work/not-here/build/x\n\n'
-  printf '| a | b | c | d | e | f | g | h |\n|---|---|---|---|---|---|---|---|\n'
+  printf '| a | b | c | d | e | f | g | note |\n|---|---|---|---|---|---|---|---|\n'
   printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n\n: Too wide\n' $w20 $w20 $w20 $w20 $w20 $w20 $w20 $w20
 } | "$pandoc" -s --metadata title=bad -o "$work/bad.html" || fail "pandoc"
 python3 "$check" "$work/bad.html" --forbid /work/not-here/ > "$work/bad.out"
@@ -26,8 +27,13 @@ rc=$?
 [ $rc -eq 1 ] || fail "bad page: exit $rc, expected 1: $(cat "$work/bad.out")"
 grep -q 'stray numbered list (starts at 10)' "$work/bad.out" || fail "stray list not caught"
 grep -q 'absolute path /work/not-here/' "$work/bad.out" || fail "absolute path not caught"
-grep -q "table 'Too wide' needs 84 em" "$work/bad.out" || fail "wide table not caught: $(cat "$work/bad.out")"
-printf '1. one\n2. two\n\n| id | note |\n|---|---|\n| x | a note |\n\n: Narrow\n' |
+grep -q "table 'Too wide' needs 84 em, the page has 56 em: its note column is out of view" "$work/bad.out" ||
+  fail "wide table not caught: $(cat "$work/bad.out")"
+{
+  printf '1. one\n2. two\n\n| id | note |\n|---|---|\n| x | a note |\n\n: Narrow\n\n'
+  printf '| a | b | c | d | e | f | g | h |\n|---|---|---|---|---|---|---|---|\n'  # wide, no note: it scrolls
+  printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n\n: Wide data\n' $w20 $w20 $w20 $w20 $w20 $w20 $w20 $w20
+} |
   "$pandoc" -s --metadata title=good -o "$work/good.html" || fail "pandoc"
 python3 "$check" "$work/good.html" --forbid /work/not-here/ > "$work/good.out" || fail "clean page failed: $(cat "$work/good.out")"
 
