@@ -2,6 +2,7 @@
 #include "sim/model_loop.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -114,8 +115,15 @@ class Runner {
       if (!done_.count(keys.back())) todo.push_back(s);
     }
     if (!todo.empty()) {
+      // Overall progress: cases done of those the loop can ask for (an upper bound: a deck
+      // asked for twice runs once), and the time left at the wall time per case so far.
+      const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+      const double left = done_.empty() ? 0.0 : el / static_cast<double>(done_.size()) *
+                                                     static_cast<double>(std::max(0, planned_ - runs()));
       std::cout << "model loop: " << todo.size() << " FE case(s) to run or read (" << done_.size()
-                << " done so far)\n"
+                << " done so far of at most " << planned_ << " in all"
+                << (done_.empty() ? std::string() : "; about " + fmt_fixed(left / 60.0, 1) + " min left if all run")
+                << ")\n"
                 << std::flush;
       const auto res = run_cached(todo, cfg_.run_root, cfg_.reuse, &wall_, cfg_.runs_from);
       for (const auto& r : res) done_[deck_text(r.spec)] = {2.0 * r.tension_rise(), 2.0 * r.F_out_std, r.dir};
@@ -134,6 +142,7 @@ class Runner {
     return out;
   }
   int runs() const { return static_cast<int>(done_.size()); }
+  void set_planned(int n) { planned_ = n; }
   double wall() const { return wall_; }
 
  private:
@@ -144,6 +153,8 @@ class Runner {
   const ModelLoopConfig& cfg_;
   std::map<std::string, Done> done_;
   double wall_ = 0;
+  int planned_ = 0;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 ModelEval summarise(std::string model, std::vector<PointResult> pts) {
@@ -176,6 +187,9 @@ ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoi
   if (held_pts.empty()) throw InputError("model loop: no measured point off the fit pin " + fmt(cfg.fit_pin) +
                                          " mm: nothing is held out");
   Runner run(cfg);
+  std::size_t planned = points.size();  // baseline, then per candidate its members on the fit pin and the chosen one held out
+  for (const auto& c : candidates) planned += c.members.size() * fit_pts.size() + held_pts.size();
+  run.set_planned(static_cast<int>(planned));
   ModelLoopResult out;
   DrawBendSpec model = base;
   std::string label = "isotropic";
