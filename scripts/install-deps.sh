@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Install the Debian packages drawbend needs, only those missing.
 # Idempotent and non-interactive; safe to run on every `make`.
-# Usage: install-deps.sh [--bench]   (--bench: also what `make bench` uses)
+# Usage: install-deps.sh [--bench] [--print]   (--bench: also what `make bench` uses;
+#   --print: only print the apt-get line, as it does whenever it is not run as root)
 set -euo pipefail
+print_only=0
+for a in "$@"; do if [ "$a" = "--print" ]; then print_only=1; fi; done
 # clang and libclang-rt-dev: libFuzzer for the parser fuzzers (tests/fuzz); with
 # libomp-dev (OpenMP for clang) also the sanitizer build (tests/sanitize/run.sh).
 PKGS=(cmake g++ make libeigen3-dev libboost-test-dev libtomlplusplus-dev gnuplot-nox pandoc clang libclang-rt-dev libomp-dev)
@@ -15,7 +18,7 @@ PKGS+=(slurmctld slurmd slurm-client munge)
 # (bench/bench_calculix.cpp).  Only there: it pulls in OpenMPI and SPOOLES,
 # which `make` and `make test` do not need; the bench says so and carries on
 # without it.
-if [ "${1:-}" = "--bench" ]; then PKGS+=(calculix-ccx); fi
+for a in "$@"; do if [ "$a" = "--bench" ]; then PKGS+=(calculix-ccx); fi; done
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -24,9 +27,15 @@ if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all packages present"
   exit 0
 fi
+# Not root (or --print): print the line to run instead of calling sudo, and stop,
+# so that nothing is installed behind the user's back.
+if [ "$(id -u)" -ne 0 ] || [ "$print_only" = 1 ]; then
+  echo "install-deps: missing Debian packages: ${missing[*]}"
+  echo "install-deps: install them with (as root):"
+  echo "  apt-get update && apt-get install -y --no-install-recommends ${missing[*]}"
+  exit 1
+fi
 echo "install-deps: installing ${missing[*]}"
-SUDO=""
-if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -40,6 +40,8 @@ int block_deck_command(int argc, char** argv) {
   opt.add(s.speed_ramp, "speed-ramp", "speed ramp of the slide step [s] (< --slide-time)");
   int threads = 0;
   opt.add(threads, "threads", "OpenMP threads written into the deck's [numerics] for `drawbend run` (0: none written, the default)");
+  opt.example("drawbend block-deck --pressure 40 --speed 70 --out my-block/deck.toml");
+  opt.example("drawbend run my-block/deck.toml --out my-block/run --quiet");
   if (!opt.parse(argc, argv)) return 0;
   return write_deck_out(deck_with_threads(sim::block_deck_text(s), threads), out, "block-deck");
 }

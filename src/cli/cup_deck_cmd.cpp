@@ -37,6 +37,8 @@ int cup_deck_command(int argc, char** argv) {
           "frictionless; or a Table 6.1-format nodes CSV");
   int threads = 0;
   opt.add(threads, "threads", "OpenMP threads written into the deck's [numerics] for `drawbend run` (0: none written, the default)");
+  opt.example("drawbend cup-deck --die-radius 8 --stroke 1 --cycles 600 > my-cup.toml");
+  opt.example("drawbend run my-cup.toml --out my-cup --quiet");
   if (!opt.parse(argc, argv)) return 0;
   check_threads(threads);
   s.cycles = cycles;

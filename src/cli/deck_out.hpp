@@ -1,11 +1,13 @@
 #pragma once
 // Where a deck-writing command (block-deck, strip-deck) puts its deck: the file
-// --out (written atomically, its folder made if missing) or standard output.
+// --out (written atomically, its folder made if missing, the tables it reads copied
+// beside it) or standard output (absolute paths).
 #include <filesystem>
 #include <iostream>
 #include <string>
 
 #include "core/csv.hpp"
+#include "io/portable_paths.hpp"
 
 namespace drawbend::cli {
 
@@ -16,7 +18,9 @@ inline int write_deck_out(const std::string& text, const std::string& out, const
   }
   const std::filesystem::path p(out);
   if (p.has_parent_path()) ensure_writable_dir(p.parent_path().string(), "--out");
-  write_file_atomic(out, text);
+  // The tables the deck reads are copied beside it and named by file name (io/portable_paths.hpp).
+  const std::string dir = p.has_parent_path() ? p.parent_path().string() : std::string(".");
+  write_file_atomic(out, io::portable_deck(text, dir));
   std::cout << command << ": wrote " << out << " (run it with: drawbend run " << out << " --out DIR)\n";
   return 0;
 }

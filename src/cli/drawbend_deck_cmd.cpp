@@ -8,28 +8,22 @@
 // by default; `--basis half` takes and prints the half model's (the thesis's
 // simulated numbers, Chapters 2-4).  Every output states its basis.
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
-#include "analysis/rope.hpp"
 #include "cli/threads.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
+#include "io/portable_paths.hpp"
+#include "io/run_result.hpp"
 #include "sim/drawbend_case.hpp"
 #include "sim/fe_options.hpp"
 
 namespace drawbend::cli {
-
-namespace {
-/// The 0.2 % yield stress of Table 5.1's RD row [MPa] (Swift's estimate of F_B).
-double table_5_1_yield_rd() {
-  const CsvTable t = read_csv(std::string(DRAWBEND_DATA_DIR) + "/thesis/table_5_1.csv");
-  return t.number(t.rows.front(), "YS02_MPa");
-}
-}  // namespace
 
 int drawbend_deck_command(int argc, char** argv) {
   sim::DrawBendSpec s = sim::quick_deck_spec();  // the chapters' quick tier (sim/fe_options.hpp)
@@ -48,7 +42,10 @@ int drawbend_deck_command(int argc, char** argv) {
   opt.add(back_tension, "back-tension", "back tension F_X [N] on the --basis (default full strip)");
   opt.add(s.speed, "speed", "outlet speed in the draw step [mm/s]");
   opt.add(s.draw_length, "draw-length", "slide in the draw step [mm] (0: 1.5 wrap lengths + 6 mm)");
-  opt.add(s.friction, "friction", "pin friction as a TOML inline table (empty: frictionless), e.g. '{ law = \"coulomb\", mu = 0.1 }'");
+  opt.add(s.friction, "friction",
+          "pin friction: a TOML inline table (empty: frictionless), e.g. '{ law = \"coulomb\", mu = 0.1 }', or a file "
+          "with a [friction] table such as the loop's friction_model.toml; relative table paths are taken from the "
+          "current folder (inline) or from that file's folder");
   opt.add(s.element_length, "element-length", "element length along the strip in the bend zone [mm]");
   opt.add(s.across, "across", "elements across the half width");
   opt.add(s.through, "through", "elements through the thickness");
@@ -61,15 +58,23 @@ int drawbend_deck_command(int argc, char** argv) {
           "'{ type = \"j2_combined\", kinematic = { beta = 0.5 } }', or a TOML file with a [material] table "
           "(data/materials/*.toml)");
   opt.add(s.strip_direction, "strip-direction", "the strip's axis is the rolling direction (rd) or the transverse one (td)");
-  opt.add(s.snapshots, "frames", "contact maps and .vtu frames written in the draw step (the animation)");
+  opt.add(s.snapshots, "frames",
+          "contact maps and .vtu frames written per step (bend, tension, draw): 3 x N + 1 frames in all");
   opt.add(bending_force, "bending-force",
           "F_B [N] on the --basis for mu by Eq. (2.3), e.g. F_Y - F_X of a frictionless run (0: Swift's Eq. (2.1))");
   opt.add(yield_stress, "yield-stress", "yield stress [MPa] of Swift's F_B estimate (0: Table 5.1, RD)");
   opt.add(threads, "threads",
           "OpenMP threads of the run (0: OMP_NUM_THREADS or all); without --run, written into the deck's [numerics]");
   opt.add(run_dir, "run", "run the deck into this directory instead of printing it");
+  opt.example("drawbend drawbend-deck --pin-diameter 25.4 --back-tension 1800 --friction '{ law = \"coulomb\", mu = 0.1 }' > my.toml");
+  opt.example("drawbend drawbend-deck --pin-diameter 12.7 --element-length 1.5 --through 2 --draw-length 12 --run my-free    # frictionless: prints F_B");
+  opt.example("drawbend drawbend-deck --pin-diameter 12.7 --element-length 1.5 --through 2 --draw-length 12 --friction '{ law = \"coulomb\", mu = 0.1 }' "
+              "--bending-force 348 --run my-case    # F_B of my-free");
   if (!opt.parse(argc, argv)) return 0;
   check_threads(threads);
+  // Relative files are the user's, from the current folder (io/portable_paths.hpp).
+  s.friction = io::friction_argument(s.friction, std::filesystem::current_path().string());
+  if (!s.hardening.empty()) s.hardening = std::filesystem::absolute(s.hardening).lexically_normal().string();
   if (basis != "full" && basis != "half")
     throw std::invalid_argument("--basis: expected full or half, found '" + basis + "'");
   if (s.snapshots < 1) throw std::invalid_argument("--frames: expected at least 1");
@@ -78,7 +83,6 @@ int drawbend_deck_command(int argc, char** argv) {
   if (s.mass_scaling == 0) s.mass_scaling = sim::mass_scaling_for_speed(sim::kQuickMassScaling, s.speed);
   const bool full = basis == "full";
   const double to_half = full ? 0.5 : 1.0;  // given forces -> half model
-  const double shown = full ? 2.0 : 1.0;    // half model -> printed basis
   const std::string tag = full ? "full strip" : "half model";
   s.back_tension = back_tension * to_half;
   if (run_dir.empty()) {
@@ -88,36 +92,13 @@ int drawbend_deck_command(int argc, char** argv) {
     return 0;
   }
   apply_threads(threads);
-  const sim::DrawBendResult r = sim::run_drawbend(s, run_dir, false, false);
-  const double FX = shown * r.F_back, FY = shown * r.F_out, theta = M_PI / 2;
-  std::cout << "forces on the " << tag << " (the model is the half strip" << (full ? ", doubled" : "") << "):\n"
-            << "  F_X = " << fmt(FX, 6) << " N, F_Y = " << fmt(FY, 6) << " N (last third of the draw; std "
-            << fmt(shown * r.F_out_std, 3) << " N), F_Y - F_X = " << fmt(FY - FX, 5) << " N\n"
-            << "  mean contact pressure " << fmt(r.mean_pressure(), 4) << " MPa; Eq. (2.2) P = "
-            << fmt(analysis::average_pressure(FX, FY, s.pin_diameter / 2, 2 * s.width,
-                                              full ? analysis::ForceBasis::full_strip : analysis::ForceBasis::half_model),
-                   4)
-            << " MPa\n";
-  if (s.friction.empty()) {
-    std::cout << "  frictionless pin: the bending force F_B = F_Y - F_X = " << fmt(FY - FX, 5)
-              << " N (pass it as --bending-force to a run with friction)\n";
-    return 0;
-  }
-  double FB = bending_force;
-  std::string fb_from = "given by --bending-force";
-  if (FB <= 0) {
-    const double ys = yield_stress > 0 ? yield_stress : table_5_1_yield_rd();
-    FB = analysis::swift_bending_force(ys, s.thickness, 2 * s.width, s.pin_diameter / 2, theta,
-                                       full ? analysis::ForceBasis::full_strip : analysis::ForceBasis::half_model);
-    fb_from = "Swift's estimate, Eq. (2.1), yield stress " + fmt(ys, 4) + " MPa; a frictionless run gives a better one";
-  }
-  std::cout << "  F_B = " << fmt(FB, 5) << " N (" << fb_from << ")\n"
-            << "  friction force F_Y - F_X - F_B = " << fmt(FY - FX - FB, 5) << " N\n";
-  try {
-    std::cout << "  mu by Eq. (2.3) = " << fmt(analysis::mu_rope(FX, FY, FB, theta), 4) << " (90 deg wrap)\n";
-  } catch (const std::domain_error& e) {
-    std::cout << "  mu by Eq. (2.3): not defined (" << e.what() << "); F_B is too large for these forces\n";
-  }
+  // The run prints its answer (forces, F_B, mu by Eq. (2.3)) on --basis and writes it to
+  // <run>/result.toml on both bases (io/run_result.hpp); `drawbend run` prints the same lines.
+  io::ResultOptions res;
+  res.basis = basis;
+  res.bending_force = bending_force;
+  res.yield_stress = yield_stress;
+  sim::run_drawbend(s, run_dir, false, false, {}, res);
   return 0;
 }
 

@@ -15,18 +15,6 @@
 namespace drawbend::cli {
 
 int export_main(int argc, char** argv) {
-  const char* usage =
-      "usage: drawbend export friction_model.toml --to lsdyna|openradioss|abaqus [--parts SHEET,TOOL] "
-      "[--direction rd|td|mean|ortho] [--out FILE] (--help lists the options)\n";
-  if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
-    if (argc >= 2 && std::string(argv[1]) == "--help") {
-      std::cout << usage;
-      return 0;
-    }
-    std::cerr << usage;
-    return 2;
-  }
-  const std::string path = argv[1];
   std::string to, out, parts, rd_vector, band;
   int threads = 0;
   loop::ExportOptions eo;
@@ -43,6 +31,20 @@ int export_main(int argc, char** argv) {
   opt.add(eo.max_rel_error, "max-rel-error", "bound of the OpenRadioss fit's relative error per speed band (0.001 to 0.5)");
   opt.add(eo.abaqus_product, "abaqus", "standard (anisotropic table) or explicit (isotropic table)");
   opt.add(threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all; the export itself is serial)");
+  opt.example("drawbend loop data/measured/thesis_drawbend.csv --out my-loop --figures ''");
+  opt.example("drawbend export my-loop/friction_model.toml --to abaqus    # writes my-loop/friction_abaqus.inp");
+  opt.example("drawbend export my-loop/friction_model.toml --to lsdyna --out my-friction.k");
+  const bool help = argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h");
+  if (help) {
+    std::cout << opt.usage();
+    return 0;
+  }
+  if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
+    std::cerr << "usage: drawbend export friction_model.toml --to lsdyna|openradioss|abaqus [--out FILE] [--threads N]"
+                 " (drawbend export --help: options and examples)\n";
+    return 2;
+  }
+  const std::string path = argv[1];
   return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
     apply_threads(threads);

@@ -117,6 +117,9 @@ int loop_main(int argc, char** argv) {
   opt.add(model_help, "model",
           "empirical (this analysis-level loop) or fe: re-run the draw-bend FE model with candidate effects "
           "against measured bending forces (drawbend loop DATA.csv --model fe --help lists its options)");
+  opt.example("drawbend loop data/measured/thesis_drawbend.csv --out my-loop    # read my-loop/loop.md");
+  opt.example("drawbend synth --effect depletion --noise 5 --seed 21 --out my-synth");
+  opt.example("drawbend loop my-synth/data.csv --out my-synth-loop --figures ''");
   if (help) {
     const char* argv_help[] = {"drawbend loop", "--help"};
     opt.parse(2, const_cast<char**>(argv_help));
@@ -192,6 +195,8 @@ int synth_main(int argc, char** argv) {
   opt.add(maps_dir, "maps", "directory of FE maps pin_<d>mm.csv (empty: analytic stand-in, not FE)");
   opt.add_flag(from_thesis, "from-thesis", "write the thesis fits as sample rows (thesis_drawbend.csv)");
   opt.add(data_dir, "data", "data directory (with thesis/) for --from-thesis");
+  opt.example("drawbend synth --effect depletion --noise 5 --seed 21 --out my-synth    # my-synth/truth.json: the hidden law");
+  opt.example("drawbend synth --from-thesis --out my-thesis");
   opt.add(points, "points", "rows per thesis fit for --from-thesis");
   opt.add(threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all)");
   opt.add(generator, "generator",

@@ -9,6 +9,7 @@
 #include <csignal>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "cli/loop_cmd.hpp"
 #include "core/csv.hpp"
@@ -57,9 +58,26 @@ int main(int argc, char** argv) {
       "  model-loop DATA.csv --out DIR  re-run the draw-bend FE model with candidate effects\n"
       "  synth --out DIR              synthetic draw-bend data with a hidden law, or the thesis data\n"
       "  export MODEL.toml --to X     a friction_model.toml for LS-DYNA, OpenRadioss or Abaqus\n"
-      "  --version                    print the version and commit\n"
-      "Units: mm, N, MPa, s.  Exit codes: 0 done, 2 input error, 3 numerical fault.\n";
-  if (argc >= 2 && std::string(argv[1]) == "--version") {
+      "  help [COMMAND]               this list, or that command's options and examples (= COMMAND --help)\n"
+      "  version, --version           print the version and commit\n"
+      "Units: mm, N, MPa, s.  Exit codes: 0 done, 2 input error, 3 numerical fault.\n"
+      "Examples (from the source folder after make or make test; drawbend is build/src/drawbend):\n"
+      "  drawbend drawbend-deck --pin-diameter 12.7 --element-length 1.5 --through 2 --draw-length 12 --run my-free\n"
+      "  drawbend loop data/measured/thesis_drawbend.csv --out my-loop\n"
+      "  drawbend help run\n";
+  // `drawbend help CMD` is `drawbend CMD --help`.
+  std::vector<char*> args(argv, argv + argc);
+  static char help_flag[] = "--help";
+  if (argc >= 3 && std::string(argv[1]) == "help") {
+    args.erase(args.begin() + 1);  // drawbend CMD ...
+    args.insert(args.begin() + 2, help_flag);
+    argc = static_cast<int>(args.size());
+    argv = args.data();
+  } else if (argc == 2 && std::string(argv[1]) == "help") {
+    std::cout << usage;
+    return 0;
+  }
+  if (argc >= 2 && (std::string(argv[1]) == "--version" || std::string(argv[1]) == "version")) {
     std::cout << "drawbend " << DRAWBEND_VERSION << " (" << DRAWBEND_GIT_DESCRIBE << ")\n";
     return 0;
   }
@@ -78,7 +96,7 @@ int main(int argc, char** argv) {
   if (cmd == "synth") return cli::synth_main(argc - 1, argv + 1);  // loop_cmd.cpp
   if (cmd == "export") return cli::export_main(argc - 1, argv + 1);  // export_cmd.cpp
   if (cmd != "run") {
-    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, drawbend-deck, block-deck, strip-deck, cup-deck, model-loop, loop, synth, export, plan; see drawbend --help)\n";
+    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, drawbend-deck, block-deck, strip-deck, cup-deck, model-loop, loop, synth, export, plan, help, version; see drawbend --help)\n";
     return 2;
   }
   // `drawbend run --help` prints the options below without a deck.
@@ -93,7 +111,7 @@ int main(int argc, char** argv) {
   std::string every;
   int halt = 0;
   Options opt("drawbend run CASE.toml",
-              "Run one case deck. Writes history.csv, summary.csv, contact maps and ParaView .vtu/.pvd frames to "
+              "Run one case deck. Writes result.toml (the answer: for a draw-bend deck F_X, F_Y, F_B, mu by Eq. (2.3)), history.csv, summary.csv, contact maps and ParaView .vtu/.pvd frames to "
               "--out; the .vtu points are the deformed positions (do not warp them by the displacement again).");
   opt.add(ro.out_dir, "out", "output directory");
   opt.add(ro.threads, "threads", "OpenMP threads (0: deck or default)");
@@ -102,7 +120,14 @@ int main(int argc, char** argv) {
   opt.add(every, "checkpoint-every",
           "write <out>/checkpoint.bin every N cycles (e.g. 500) or T simulated seconds (e.g. 2e-3s)");
   opt.add(ro.restart, "restart", "continue from this checkpoint (same deck; use the same --out)");
+  opt.example("drawbend run data/cases/block_slide.toml --out my-block --quiet");
+  opt.example("drawbend drawbend-deck --pin-diameter 12.7 --element-length 1.5 --through 2 --draw-length 12 --friction '{ law = \"coulomb\", mu = 0.1 }' > my.toml");
+  opt.example("drawbend run my.toml --out my-run --threads 2    # my-run/result.toml: F_X, F_Y, F_B, mu");
   opt.add(halt, "halt-after-cycles", "stop after the first checkpoint at or beyond this cycle (tests restarts)");
+  opt.add(ro.result.basis, "basis", "draw-bend decks: basis of --bending-force and the printed forces, full or half");
+  opt.add(ro.result.bending_force, "bending-force",
+          "draw-bend decks: F_B [N] on --basis for mu by Eq. (2.3) (0: this run if frictionless, else Swift's Eq. (2.1))");
+  opt.add(ro.result.yield_stress, "yield-stress", "draw-bend decks: yield stress [MPa] of Swift's F_B (0: Table 5.1, RD)");
   return cli::with_exit_codes([&] {
     if (!opt.parse(argc - (help ? 1 : 2), argv + (help ? 1 : 2))) return 0;
     cli::check_threads(ro.threads);
@@ -110,6 +135,12 @@ int main(int argc, char** argv) {
     if (!(ro.progress_every_s > 0) || !std::isfinite(ro.progress_every_s))
       throw std::invalid_argument("--progress-every must be a positive number of seconds");
     ro.halt_after_cycles = halt;
+    if (ro.result.basis != "full" && ro.result.basis != "half")
+      throw std::invalid_argument("--basis: expected full or half, found '" + ro.result.basis + "'");
+    if (!(ro.result.bending_force >= 0) || !std::isfinite(ro.result.bending_force))
+      throw std::invalid_argument("--bending-force: expected a force >= 0 N (0: estimated)");
+    if (!(ro.result.yield_stress >= 0) || !std::isfinite(ro.result.yield_stress))
+      throw std::invalid_argument("--yield-stress: expected a stress >= 0 MPa (0: Table 5.1, RD)");
     if (!every.empty()) io::parse_checkpoint_every(every, ro);
     if (halt > 0 && every.empty()) throw std::invalid_argument("--halt-after-cycles needs --checkpoint-every");
     ensure_writable_dir(ro.out_dir, "--out");  // before any work

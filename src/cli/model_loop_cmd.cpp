@@ -25,6 +25,53 @@
 
 namespace drawbend::cli {
 
+namespace {
+
+std::string pct(double v) { return fmt_fixed(100 * v, 1) + " %"; }
+
+/// OUT/model_loop.md: what the data are, the model chosen with its blind
+/// (held-out) errors against the baseline, every candidate tried, the files.
+void write_model_loop_md(const std::string& path, const std::string& data, const std::vector<sim::FbPoint>& points,
+                         const sim::DrawBendSpec& s, const sim::ModelLoopConfig& cfg, const sim::ModelLoopResult& r) {
+  std::ostringstream md;
+  md << "# Model loop on " << data << "\n\n"
+     << points.size() << " measured bending forces F_B (full strip); the points on the " << fmt(cfg.fit_pin)
+     << " mm pin train each candidate's members, the other pins are held out (blind). A candidate is accepted "
+        "only if their RMS relative error falls by more than "
+     << pct(cfg.min_gain) << ". FE: half strip, frictionless pin, element length " << fmt(s.element_length)
+     << " mm, " << s.across << " across, " << fmt(s.speed) << " mm/s, mass scaling " << fmt(s.mass_scaling) << ".\n\n"
+     << "## Summary\n\n"
+     << "- **Chosen model:** " << r.final_model.model << "\n"
+     << "- **Held-out (blind) RMS error of F_B:** " << pct(r.final_model.held_rms) << " (largest "
+     << pct(r.final_model.held_max) << "); the baseline " << r.baseline.model << ": " << pct(r.baseline.held_rms)
+     << " (largest " << pct(r.baseline.held_max) << ")\n"
+     << "- **Fit-pin RMS error:** " << pct(r.final_model.fit_rms) << " (baseline " << pct(r.baseline.fit_rms) << ")\n"
+     << "- " << r.runs << " FE runs, " << fmt_fixed(r.run_wall_s, 0) << " s of run wall time\n\n"
+     << "| pin [mm] | F_X [N] | measured F_B [N] | baseline [N] | chosen [N] | error | role |\n"
+     << "|---:|---:|---:|---:|---:|---:|---|\n";
+  for (std::size_t k = 0; k < r.final_model.points.size(); ++k) {
+    const auto& p = r.final_model.points[k];
+    const double err = (p.predicted_N - p.measured.bending_N) / p.measured.bending_N;
+    md << "| " << fmt(p.measured.pin_mm) << " | " << fmt(p.measured.back_tension_N) << " | "
+       << fmt(p.measured.bending_N, 4) << " | " << fmt_fixed(r.baseline.points[k].predicted_N, 1) << " | "
+       << fmt_fixed(p.predicted_N, 1) << " | " << pct(err) << " | " << (p.held_out ? "held out" : "fit") << " |\n";
+  }
+  md << "\n## What was tried\n\nRelative errors of F_B; each member trained on the fit pin, the decision on the "
+        "held-out pins.\n\n| candidate | member | fit RMS | held-out RMS | held-out max | decision |\n"
+        "|---|---|---:|---:|---:|---|\n"
+     << "| baseline | " << r.baseline.model << " | " << pct(r.baseline.fit_rms) << " | " << pct(r.baseline.held_rms)
+     << " | " << pct(r.baseline.held_max) << " | |\n";
+  for (const auto& st : r.steps)
+    md << "| " << st.candidate << " | " << st.member << " | " << pct(st.eval.fit_rms) << " | "
+       << pct(st.eval.held_rms) << " | " << pct(st.eval.held_max) << " | " << st.decision << " |\n";
+  md << "\n## Files\n\n- `baseline.csv`, `final.csv`: every point, measured and predicted\n"
+        "- `steps.csv`: the table above as numbers\n"
+        "- `runs/fb_<hash>/`: one folder per FE case (deck, history, `result.toml` with F_X, F_Y and F_B)\n";
+  write_file_atomic(path, md.str());
+}
+
+}  // namespace
+
 int model_loop_command(int argc, char** argv, const char* name) {
   const std::string me = name;
   sim::DrawBendSpec s;
@@ -42,7 +89,8 @@ int model_loop_command(int argc, char** argv, const char* name) {
                        "points on --fit-pin train each candidate's members; the other pins are held out, and a "
                        "candidate is accepted only if their RMS relative error falls by more than --min-gain. FE "
                        "runs go through the case pool (DRAWBEND_JOBS at a time, progress with time left) and are "
-                       "cached in OUT/runs by deck hash. Writes OUT/baseline.csv, OUT/final.csv, OUT/steps.csv.");
+                       "cached in OUT/runs by deck hash. Writes OUT/model_loop.md (read it first: the chosen model and its blind "
+                       "errors, every candidate tried), OUT/baseline.csv, OUT/final.csv, OUT/steps.csv.");
   opt.add(out, "out", "output directory (runs cached in OUT/runs)");
   opt.add(cfg.fit_pin, "fit-pin", "pin diameter whose points train [mm]; the others are held out");
   opt.add(cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
@@ -64,7 +112,11 @@ int model_loop_command(int argc, char** argv, const char* name) {
   opt.add(executor_spec, "executor",
           "where the FE runs go: local (this machine's pool), slurm (sbatch/srun jobs), command:TEMPLATE (a launcher "
           "with {drawbend} {deck} {dir} {cores}); default DRAWBEND_EXECUTOR, else local (docs/cluster.md)");
-  if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
+  opt.example("drawbend model-loop data/measured/model_loop_points.csv --out my-model-loop --candidates offset "
+              "--element-length 2 --across 1    # a few minutes; writes my-model-loop/model_loop.md");
+  opt.example("drawbend model-loop data/measured/model_loop_points.csv --out my-model-loop --candidates offset "
+              "--element-length 2 --across 1    # again: the finished runs are read back");
+  if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
     if (!opt.parse(argc, argv)) return 0;
     throw InputError(me + ": missing DATA.csv (columns pin_diameter_mm, back_tension_N, bending_force_N; --help lists "
                      "the options)");
@@ -123,6 +175,7 @@ int model_loop_command(int argc, char** argv, const char* name) {
     w.row({st.candidate, st.member, fmt(st.eval.fit_rms, 4), fmt(st.eval.held_rms, 4), fmt(st.eval.held_max, 4),
            st.decision});
   w.save(out + "/steps.csv");
+  write_model_loop_md(out + "/model_loop.md", data, points, s, cfg, r);
   std::cout << "model: " << r.final_model.model << "\n";
   for (const auto& p : r.final_model.points)
     std::cout << "  pin " << fmt(p.measured.pin_mm) << " mm, F_X " << fmt(p.measured.back_tension_N) << " N: measured "

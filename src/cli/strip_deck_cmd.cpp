@@ -43,6 +43,8 @@ int strip_deck_command(int argc, char** argv) {
   opt.add(s.speed_ramp, "speed-ramp", "drawing speed ramp [s]");
   int threads = 0;
   opt.add(threads, "threads", "OpenMP threads written into the deck's [numerics] for `drawbend run` (0: none written, the default)");
+  opt.example("drawbend strip-deck --pressure 20 --speed 4 --out my-strip/deck.toml");
+  opt.example("drawbend run my-strip/deck.toml --out my-strip/run --quiet");
   if (!opt.parse(argc, argv)) return 0;
   return write_deck_out(deck_with_threads(sim::strip_draw_deck_text(s), threads), out, "strip-deck");
 }

@@ -66,7 +66,11 @@ std::string Options::usage() const {
   for (const auto& o : opts_)
     os << "  --" << o.name << (o.flag ? "" : " " + o.value) << "\n      " << o.help << " (default: " << o.get()
        << ")\n";
-  os << "  --help\n      Print this message.\n";
+  os << "  --help, -h\n      Print this message.\n";
+  if (!examples_.empty()) {
+    os << "\nExamples (from the source folder after make or make test; drawbend is build/src/drawbend):\n";
+    for (const auto& e : examples_) os << "  " << e << "\n";
+  }
   return os.str();
 }
 

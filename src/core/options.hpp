@@ -24,6 +24,10 @@ class Options {
   bool parse(int argc, char** argv);
   std::vector<std::string> echo() const;
   std::string usage() const;
+  /// An example command line, shown at the end of --help under "Examples".
+  /// Each must run as written from the source folder after a build, with
+  /// `drawbend` standing for build/src/drawbend (tests/user/help_examples.sh runs them).
+  void example(const std::string& line) { examples_.push_back(line); }
 
  private:
   struct Opt {
@@ -35,6 +39,7 @@ class Options {
   };
   std::string program_, description_;
   std::vector<Opt> opts_;
+  std::vector<std::string> examples_;
 };
 
 }  // namespace drawbend

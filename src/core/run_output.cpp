@@ -31,6 +31,8 @@ const char* signal_name(Signal s) {
     case Signal::plastic_strain_inside: return "plastic_strain_inside";
     case Signal::strain_outside: return "strain_outside";
     case Signal::plastic_strain_outside: return "plastic_strain_outside";
+    case Signal::outlet_force_full: return "F_Y_full_strip_N";
+    case Signal::back_tension_full: return "F_X_full_strip_N";
   }
   return "?";  // unreachable: every enumerator is named above (-Wswitch warns on a new one)
 }

@@ -41,6 +41,8 @@ enum class Signal {
   plastic_strain_inside,   ///< plastic_strain_inside: equivalent plastic strain there [-]
   strain_outside,          ///< strain_outside: axial strain at the free-side spot [-]
   plastic_strain_outside,  ///< plastic_strain_outside: equivalent plastic strain there [-]
+  outlet_force_full,       ///< F_Y_full_strip_N: -2 x outlet_force_N, the full strip's outlet tension [N]
+  back_tension_full,       ///< F_X_full_strip_N: -2 x back_tension_N, the full strip's back tension [N]
 };
 /// The column name of a signal (with its unit suffix): Signal::outlet_force -> "outlet_force_N".
 const char* signal_name(Signal s);

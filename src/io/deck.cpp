@@ -174,13 +174,16 @@ void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out) {
   if (const auto* hs = c.array_of_tables(t, "history", "output"))
     for (const auto& h : *hs) {
       const auto& ht = *h.as_table();
-      c.allowed(ht, "output.history", {"name", "kind", "target", "component", "point"});
+      c.allowed(ht, "output.history", {"name", "kind", "target", "component", "point", "scale"});
       const std::string kind = c.str(ht, "kind", "output.history");
       // kind "strain" names a point (the nearest element), the others a node set or tool.
       HistorySignal sig{c.str(ht, "name", "output.history"), kind,
                         kind == "strain" ? std::string() : c.str(ht, "target", "output.history"),
                         c.count_of(ht, "component", "output.history", 0, 0)};
       if (kind == "strain") sig.point = c.vec(ht, "point", "output.history");
+      sig.scale = c.num(ht, "scale", "output.history", 1.0);
+      if (!(std::isfinite(sig.scale) && sig.scale != 0))
+        c.bad(ht, "output.history.scale", "expected a finite nonzero factor, found " + fmt_shortest(sig.scale));
       if (sig.kind != "reaction" && sig.kind != "applied" && sig.kind != "tool_force" && sig.kind != "tool_offset" &&
           sig.kind != "displacement" && sig.kind != "strain")
         c.bad(ht, "output.history.kind",

@@ -27,6 +27,9 @@ struct HistorySignal {
   /// [mm]; component 0 = logarithmic strain along the element's reference x
   /// edges, 1 = equivalent plastic strain.
   fe::Vec3 point{0, 0, 0};
+  /// Factor applied to the recorded value (e.g. -2 for a tension-positive
+  /// full-strip force of a half model); 1 by default, finite and nonzero.
+  double scale = 1;
 };
 
 struct OutputSpec {

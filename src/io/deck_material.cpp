@@ -22,6 +22,18 @@ std::string relative_to(const std::string& dir, const std::string& file) {
   return p.string();
 }
 
+bool readable(const std::string& path) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
+}
+
+/// "cannot open FILE" with the rule that found it (a relative path is the deck folder's).
+std::string missing(const std::string& file, const std::string& dir) {
+  if (!std::filesystem::path(file).is_relative()) return "cannot open '" + file + "' for reading";
+  return "cannot open '" + file + "' for reading (relative paths are resolved against the deck's folder, " +
+         (dir.empty() ? std::string(".") : dir) + ")";
+}
+
 }  // namespace
 
 namespace {
@@ -66,6 +78,10 @@ std::optional<material::HardeningCurve> read_curve(const DeckContext& c, const t
   if (t.get("hardening")) {
     const std::string file = c.str(t, "hardening", "material");
     if (c.count() > before) return std::nullopt;
+    if (!readable(relative_to(dir, file))) {  // a missing file is named with the deck line that asked for it
+      c.bad(*t.get("hardening"), "material.hardening", missing(file, dir));
+      return std::nullopt;
+    }
     return material::HardeningCurve::load(relative_to(dir, file));
   }
   if (t.get("yield")) {
@@ -207,6 +223,7 @@ static std::shared_ptr<friction::FrictionLaw> make_surface_friction(const DeckCo
   const std::string key = nodes ? "nodes" : "lines";
   const std::string file = relative_to(dir, c.str(t, key, w));
   if (c.count() > before) return nullptr;
+  if (!readable(file)) c.fail(*t.get(key), w + "." + key, missing(c.str(t, key, w), dir));
   try {
     const auto [rd, td] = nodes ? friction::load_surface_nodes(file, d) : friction::load_surface_lines(file, d.p_min, d.p_max);
     return std::make_shared<friction::SurfaceLaw>(rd, td, interval);
@@ -239,6 +256,7 @@ std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const
   if (t.get("table")) {
     const std::string file = c.str(t, "table", w);
     if (c.count() > before) return nullptr;
+    if (!readable(relative_to(dir, file))) c.fail(*t.get("table"), w + ".table", missing(file, dir));
     p = analysis::load_stribeck(relative_to(dir, file));
   } else {
     p.mu_BL = c.in_range(t, "mu_BL", w, NAN, 0.0);

@@ -13,6 +13,7 @@
 #include "core/csv.hpp"
 #include "core/run_output.hpp"
 #include "io/run_checkpoint.hpp"
+#include "io/run_result.hpp"
 #include "io/vtu.hpp"
 
 namespace drawbend::io {
@@ -47,7 +48,10 @@ double edge_strain(const fe::Solver& s, int e) {
   return std::log(L / L0);
 }
 
-double signal(const fe::Solver& s, const HistorySignal& h, int element) {
+double raw_signal(const fe::Solver& s, const HistorySignal& h, int element);
+double signal(const fe::Solver& s, const HistorySignal& h, int element) { return h.scale * raw_signal(s, h, element); }
+
+double raw_signal(const fe::Solver& s, const HistorySignal& h, int element) {
   if (h.kind == "strain") return h.component == 0 ? edge_strain(s, element) : s.plastic_strain(element);
   fe::Vec3 v{0, 0, 0};
   if (h.kind == "reaction") v = s.reaction(h.target);
@@ -235,6 +239,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   }
   CsvWriter hist(header);
   hist.comment("time histories of " + deck.path + " (energies in mJ = N mm)");
+  for (const auto& note : history_notes(deck)) hist.comment(note);  // basis and signs (io/run_result.hpp)
   RunState rs;
   auto snapshot = [&]() {
     const std::string name = "fields_" + std::to_string(rs.snap) + ".vtu";
@@ -394,6 +399,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
       << "hourglass/internal " << fmt(100 * r.hourglass_ratio, 3) << " %; kinetic/internal "
       << fmt(100 * r.kinetic_ratio, 3) << " %; mass scaling x" << fmt(1 + r.added_mass_ratio, 4)
       << "; max penetration " << fmt(r.max_penetration, 3) << " mm\n" << flog;
+  write_run_result(deck, solver, opt.out_dir, opt.result, log);  // result.toml (io/run_result.hpp)
   return r;
 }
 

@@ -4,12 +4,14 @@
 //   <out>/contact_<pair>_<k>.csv  contact map per slave node at each snapshot
 //   <out>/fields_<k>.vtu, <out>/fields.pvd   ParaView snapshots
 //   <out>/summary.csv           end-of-run invariants (energy balance, ratios, added mass)
+//   <out>/result.toml           the run's answer: forces, F_B, mu, friction-law clamps (io/run_result.hpp)
 #include <csignal>
 #include <iosfwd>
 #include <string>
 
 #include "fe/solver.hpp"
 #include "io/deck.hpp"
+#include "io/run_result.hpp"
 
 namespace drawbend::io {
 
@@ -30,6 +32,8 @@ struct RunOptions {
   /// <out_dir>/checkpoint.bin at the next cycle boundary, says how to continue
   /// and returns with RunSummary::interrupted set.  nullptr: not watched.
   const volatile std::sig_atomic_t* stop = nullptr;
+  /// How result.toml reduces a draw-bend run (io/run_result.hpp).
+  ResultOptions result;
 };
 
 /// Parse a --checkpoint-every value: "500" (cycles) or "2e-3s" (simulated seconds).

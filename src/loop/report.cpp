@@ -2,6 +2,7 @@
 #include "loop/report.hpp"
 
 #include <algorithm>
+#include <cctype>
 
 #include "loop/friction_model.hpp"
 
@@ -76,6 +77,64 @@ CsvWriter problems_table(const Dataset& d) {
   return w;
 }
 
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+/// The page an engineer reads first: what the data say (mu per lubricant, speed
+/// and direction with its standard error; what else matters; how good the
+/// model is), before the evidence.  Numbers only from the loop's own results.
+std::string engineer_summary(const Design& d, const LoopResult& r, const FrictionModel& fm) {
+  std::ostringstream m;
+  m << "## What the data say\n\n";
+  bool slope = false;
+  for (const auto& c : fm.cells) slope = slope || c.a1_identified;
+  m << "**Friction coefficient** by lubricant, speed and direction (Eq. 5.1 with the bending force below; "
+       "± one standard error"
+    << (slope ? "; mu = mu0 + a1 p with the contact pressure p in MPa" : "") << "):\n\n"
+    << "| lubricant | speed | direction | mu" << (slope ? "0 | a1 [1/MPa]" : "") << " |\n|---|---|---|---"
+    << (slope ? "|---" : "") << "|\n";
+  for (const auto& c : fm.cells) {
+    m << "| " << c.lubricant << " | " << c.speed << " | " << c.direction << " | " << fmt(c.mu0, 3) << " ± "
+      << fmt(c.mu0_se, 2);
+    if (slope) m << " | " << (c.a1_identified ? fmt(c.a1, 3) + " ± " + fmt(c.a1_se, 2) : std::string("–"));
+    m << " |\n";
+  }
+  m << "\n**What else matters:** ";
+  if (r.steps.empty()) {
+    m << "nothing beyond lubricant, speed and direction passed the tests.";
+  } else {
+    for (std::size_t k = 0; k < r.steps.size(); ++k) {
+      const Step& s = r.steps[k];
+      m << (k ? "; " : "") << s.variable << " (" << (s.meaning.empty() ? s.effect : s.meaning)
+        << "): held-out error " << fmt(s.rms_before, 3) << " N → " << fmt(s.rms_after, 3) << " N";
+    }
+    m << ".";
+  }
+  if (!r.remaining.empty()) m << " Still unexplained: " << r.remaining.front() << ".";
+  const double final_rms = r.cv.empty() ? NAN : r.cv.back().rms;
+  m << "\n\n**How good the model is:** it predicts a held-out test's outlet force to " << fmt(final_rms, 3)
+    << " N RMS (grouped cross-validation, " << r.folds.k << " folds)";
+  if (!std::isfinite(r.noise.sigma_N))
+    m << "; the replicate noise cannot be estimated (no test with 4 or more rows), so this cannot be compared with "
+         "the measurement's own scatter.";
+  else if (r.noise.sigma_N < 1e-6)
+    m << "; the rows of each test lie exactly on a line (data sampled from fits, not measurements), so all of it "
+         "is model error.";
+  else
+    m << ", against a replicate noise of " << fmt(r.noise.sigma_N, 3) << " N (the scatter of repeated samples "
+      << "within one test): " << fmt(final_rms / r.noise.sigma_N, 3) << " times the noise"
+      << (r.at_noise ? ", at the noise level." : ", so structure remains.");
+  m << " Bending force: " << r.bending << ". Pressure: " << r.maps << ". " << d.data->rows.size() << " of "
+    << d.data->rows_read << " rows used.\n";
+  return m.str();
+}
+
+}  // namespace
+
 std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::string& out,
                                const std::string& figdir, const std::string& gnuplot, const std::string& exports,
                                const ExportOptions& eo) {
@@ -99,20 +158,30 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
     }
   }
   std::ostringstream m;
+  const FrictionModel fm = identify_friction(d, r);
   m << "# Closing the loop: " << d.data->path << "\n\n";
+  m << engineer_summary(d, r, fm) << "\n# Evidence\n\nHow the loop reached the summary above: the data read, "
+       "the base model, each step with its permutation p-value against the Bonferroni threshold and its held-out "
+       "error, the candidates, the identified friction model.\n\n";
   m << "**Conclusion.** " << r.conclusion << "\n\n";
   m << "- Bending force: " << r.bending << ".\n";
   if (std::isfinite(r.noise.sigma_N))
-    m << "- Replicate noise: " << fmt(r.noise.sigma_N, 4) << " N from the within-test scatter of " << r.noise.tests
-      << " tests (" << r.noise.rows << " rows; successive differences in " << r.noise.order
-      << " order about a line in the back tension per test).\n";
+    m << "- Replicate noise (the scatter of repeated samples within one test, about a line in the back tension): "
+    << fmt(r.noise.sigma_N, 4) << " N from " << r.noise.tests << " tests (" << r.noise.rows
+    << " rows; successive differences in " << r.noise.order << " order)"
+    << (r.noise.sigma_N < 1e-6 ? ": none at all, the rows lie exactly on lines (data sampled from fits)" : "")
+    << ".\n";
   else
     m << "- Replicate noise: not estimable (no test with 4 or more rows).\n";
   m << "- Rows: " << d.data->rows_read << " read, " << d.data->rows.size() << " used, " << d.data->rows_dropped
     << " dropped (" << d.data->problems.size() << " problems, `tables/problems.csv`).\n";
   m << "- Base model: " << r.base_model << ".\n- Pressure maps: " << r.maps << ".\n";
   m << "- Held-out errors by grouped cross-validation (" << r.cv_mode << ", " << r.folds.k << " folds).\n";
-  for (const auto& n : d.notes) m << "- " << n << ".\n";
+  for (const auto& n : d.notes) {  // a note that repeats a bullet above (bending force, pressure maps) once only
+    const std::string low = lower(n);
+    if (low.rfind("bending force:", 0) == 0 || low.rfind("pressure maps:", 0) == 0) continue;
+    m << "- " << n << ".\n";
+  }
   m << "\n## Steps\n\n| step | variable | effect | p | threshold | RMS before (N) | RMS after (N) | max before (N) | max "
        "after (N) |\n|---|---|---|---|---|---|---|---|---|\n";
   for (size_t k = 0; k < r.steps.size(); ++k) {
@@ -154,7 +223,6 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
       m << "| " << i + 1 << " | " << c.name << " | " << c.kind << " | " << c.dof << " | " << c.permuted << " | "
         << fmt(c.p_value, 3) << " | " << c.n_perm << " | " << c.decision << " | " << fmt(c.cv_reduction, 3) << " |\n";
     }
-  const FrictionModel fm = identify_friction(d, r);
   m << write_friction_outputs(d, r, fm, out);
   {
     std::vector<std::string> tomls;
@@ -169,10 +237,35 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
         const std::string dat = out + "/tables/surface" +
                                 (k == 0 ? std::string() : "_" + lubricant_tag(fm.surfaces[k].lubricant)) + "_" + dir + ".dat";
         const std::string gp = out + "/figures/surface" + tag + ".gp", svg = "figures/surface" + tag + ".svg";
-        write_file_atomic(gp, "set terminal svg size 640,480 noenhanced\nset output '" + out + "/" + svg +
-                                  "'\nset xlabel 'p [MPa]'\nset ylabel 'v [mm/s]'\nset zlabel 'mu'\n"
-                                  "set title 'fitted mu(p, v), " + std::string(dir) + ", " +
-                                  fm.surfaces[k].lubricant + "'\nsplot '" + dat + "' with lines notitle\n");
+        // The data behind the surface, the points identify_friction fits it to: each fixed-pin row of
+        // this lubricant whose cell has this direction, at the pressure predict_mu_at gives it.
+        const std::string pts = out + "/tables/surface_points" + tag + ".dat";
+        std::ostringstream pt;
+        int n_pts = 0;
+        pt << "# p_MPa v_mm_s: fixed-pin rows, " << dir << ", lubricant " << fm.surfaces[k].lubricant << "\n";
+        const bool rd = dir[0] == 'R';
+        for (std::size_t i = 0; i < d.rows.size(); ++i) {
+          const Row& row = d.rows[i];
+          if (row.rotating || d.data->rows[i].lubricant != fm.surfaces[k].lubricant ||
+              std::isnan(r.final_fit.b0[row.pin]) || !(rd ? d.cell_rd[row.cell] : d.cell_td[row.cell]))
+            continue;
+          double p = 0;
+          const double mu = predict_mu_at(d, r.final_fit, static_cast<int>(i), rd ? 0.0 : M_PI / 2, &p);
+          if (std::isfinite(mu) && std::isfinite(p))
+            pt << fmt(p, 6) << " " << fmt(d.data->rows[i].speed_mm_s, 6) << "\n", ++n_pts;
+        }
+        write_file_atomic(pts, pt.str());
+        // A coloured map with its colour bar, the rows on it.
+        write_file_atomic(gp, "set terminal svg size 720,520 noenhanced\nset output '" + out + "/" + svg +
+                                  "'\nset view map\nset xlabel 'p [MPa]'\nset ylabel 'v [mm/s]'\n"
+                                  "set cblabel 'mu'\nset colorbox\nset palette rgbformulae 33,13,10\n"
+                                  "set key outside below\nset title 'fitted mu(p, v), " + std::string(dir) + ", " +
+                                  fm.surfaces[k].lubricant + (n_pts ? "" : " (no fixed-pin rows in this direction)") +
+                                  "'\nsplot '" + dat + "' with pm3d notitle" +
+                                  (n_pts ? ", '" + pts + "' using 1:2:(0) with points pt 7 ps 0.5 lc rgb 'black' "
+                                                         "title 'fixed-pin rows'"
+                                         : std::string()) +
+                                  "\n");
         if (std::system((gnuplot + " '" + gp + "' 2>/dev/null").c_str()) == 0) figs.push_back(svg);
       }
   }

@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
     write_file_atomic(md, study::assemble_report(chapters, title, front));
     const std::string tmp = out + ".tmp.html";
     const std::string cmd = pandoc + " '" + md + "' --from markdown --to html5 --standalone --self-contained" +
-                            " --mathml --toc --toc-depth=1 --columns=100000 --css '" + css + "' -o '" + tmp + "'";
+                            " --mathml --toc --toc-depth=2 --columns=100000 --css '" + css + "' -o '" + tmp + "'";
     if (std::system(cmd.c_str()) != 0) throw std::runtime_error("pandoc failed: " + cmd);
     std::filesystem::rename(tmp, out);
     std::cout << "report: " << out << " (" << chapters.size() << " chapters)\n";

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -10,7 +11,9 @@
 
 #include "core/run_output.hpp"
 #include "io/deck.hpp"
+#include "io/portable_paths.hpp"
 #include "io/run_case.hpp"
+#include "io/run_result.hpp"
 #include "sim/cost_model.hpp"
 #include "sim/executor.hpp"
 #include "sim/material_spec.hpp"
@@ -152,6 +155,9 @@ std::string deck_text(const DrawBendSpec& s) {
       << "  { name = \"" << signal_name(plastic) << "\", kind = \"strain\", point = [" << num(xs) << ", " << num(ys)
       << ", " << num(zs) << "], component = 1 },\n";
   }
+  // F_Y and F_X on the full strip, tension positive (-2 x the half model's signals).
+  o << "  { name = \"" << signal_name(Signal::outlet_force_full) << "\", kind = \"reaction\", target = \"xmax\", component = 2, scale = -2.0 },\n"
+    << "  { name = \"" << signal_name(Signal::back_tension_full) << "\", kind = \"applied\", target = \"xmin\", component = 0, scale = -2.0 },\n";
   // Mid-wrap sections (Sec. 2.3.2, "steady strain condition"): the section
   // that starts at x = Lw/2 - s sits at mid-wrap after a slide s; its outside
   // strain there, against s, shows when the strip passing the pin stops
@@ -169,29 +175,11 @@ namespace {
 void reduce(DrawBendResult& r) {
   const fs::path dir(r.dir);
   r.history = read_csv((dir / kHistoryFile).string());
-  const CsvTable& h = r.history;
-  std::vector<double> t, fy;
-  for (const auto& row : h.rows)
-    if (h.text(row, signal_name(Signal::step)) == "draw") {
-      t.push_back(h.number(row, signal_name(Signal::time)));
-      fy.push_back(-h.number(row, signal_name(Signal::outlet_force)));  // the outlet grip pulls along -z
-      r.F_back = -h.number(row, signal_name(Signal::back_tension));
-    }
-  if (t.size() < 12) throw InputError(r.dir + ": too few draw-step samples in " + kHistoryFile);
-  // Chapters 3-4: mean of the last third of step 3.
-  const size_t n = t.size(), i3 = n - n / 3;
-  double s = 0, s2 = 0;
-  for (size_t i = i3; i < n; ++i) s += fy[i];
-  r.F_out = s / static_cast<double>(n - i3);
-  for (size_t i = i3; i < n; ++i) s2 += (fy[i] - r.F_out) * (fy[i] - r.F_out);
-  r.F_out_std = std::sqrt(s2 / static_cast<double>(n - i3));
-  // Chapter 2: linear regression of the last 25 %, read at the end of the step.
-  const size_t i4 = n - n / 4;
-  double st = 0, sf = 0, stt = 0, stf = 0;
-  const double m = static_cast<double>(n - i4);
-  for (size_t i = i4; i < n; ++i) st += t[i], sf += fy[i], stt += t[i] * t[i], stf += t[i] * fy[i];
-  const double slope = (m * stf - st * sf) / (m * stt - st * st);
-  r.F_out_regression = sf / m + slope * (t.back() - st / m);
+  const io::DrawForces f = io::draw_forces(r.history);  // io/run_result.hpp: the same numbers as result.toml
+  r.F_back = f.F_back;
+  r.F_out = f.F_out;
+  r.F_out_std = f.F_out_std;
+  r.F_out_regression = f.F_out_regression;
   // Contact map at the end of the draw, as angle round the pin from the inlet
   // tangent point (top of the pin) and position across the width.
   r.map_file = run_output::last_contact_map(dir.string(), 0);
@@ -312,15 +300,16 @@ std::string find_same_run(const DrawBendSpec& s, const std::vector<std::string>&
       const std::string other = read_file((d / "deck.toml").string());
       DrawBendSpec t = s;
       t.name = case_name(other);
-      if (!t.name.empty() && deck_text(t) == other) return d.string();
+      if (!t.name.empty() && io::portable_deck(deck_text(t)) == other) return d.string();
     }
   }
   return "";
 }
 
 DrawBendResult run_drawbend(const DrawBendSpec& s, const std::string& dir, bool reuse, bool quiet,
-                            const std::vector<std::string>& runs_from) {
-  const std::string text = deck_text(s);
+                            const std::vector<std::string>& runs_from, const io::ResultOptions& result) {
+  // The run folder's deck names its tables by file name, copied beside it (io/portable_paths.hpp).
+  const std::string text = io::portable_deck(deck_text(s));
   const fs::path deck_path = fs::path(dir) / "deck.toml";
   DrawBendResult r;
   r.spec = s;
@@ -337,15 +326,22 @@ DrawBendResult run_drawbend(const DrawBendSpec& s, const std::string& dir, bool 
   fs::create_directories(dir);
   if (!cached) {
     fs::remove(fs::path(dir) / "summary.csv");
+    io::portable_deck(deck_text(s), dir);  // copies the tables
     write_file_atomic(deck_path.string(), text);
     io::Deck deck = io::parse_deck(text, deck_path.string());
     if (const ExecutorConfig& e = executor(); e.kind != ExecutorKind::local) {
-      // The same run as a file-level job elsewhere (executor.hpp).
-      run_deck_external(e, s.name, dir, job_needs(predict_case(deck), 1));
+      // The same run as a file-level job elsewhere (executor.hpp), with the
+      // same reduction of result.toml (drawbend run's --basis, --bending-force, --yield-stress).
+      char fb[40], ys[40];
+      std::snprintf(fb, sizeof fb, "%.17g", result.bending_force);
+      std::snprintf(ys, sizeof ys, "%.17g", result.yield_stress);
+      run_deck_external(e, s.name, dir, job_needs(predict_case(deck), 1),
+                        "--basis " + result.basis + " --bending-force " + fb + " --yield-stress " + ys);
     } else {
       io::RunOptions ro;
       ro.out_dir = dir;
       ro.quiet = quiet;
+      ro.result = result;
       std::ostringstream log;
       io::run_case(deck, ro, quiet ? static_cast<std::ostream&>(log) : std::cout);
       write_file_atomic((fs::path(dir) / "run.log").string(), log.str());

@@ -23,6 +23,7 @@
 #include "analysis/new_method.hpp"
 #include "core/csv.hpp"
 #include "core/run_output.hpp"
+#include "io/run_result.hpp"
 
 namespace drawbend::sim {
 
@@ -130,7 +131,8 @@ std::string find_same_run(const DrawBendSpec& s, const std::vector<std::string>&
 /// in chapters/CMakeLists.txt), that run is read in place (the result's dir is
 /// its directory) and nothing is written to `dir`: every case is
 /// deterministic, so a second run would give the same bits.
+/// `result`: how the run's result.toml states F_B and which basis it prints (io/run_result.hpp).
 DrawBendResult run_drawbend(const DrawBendSpec& s, const std::string& dir, bool reuse = false, bool quiet = true,
-                            const std::vector<std::string>& runs_from = {});
+                            const std::vector<std::string>& runs_from = {}, const io::ResultOptions& result = {});
 
 }  // namespace drawbend::sim

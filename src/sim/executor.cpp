@@ -74,8 +74,8 @@ bool complete(const std::string& dir) { return fs::exists(fs::path(dir) / "summa
 /// a job keeps), so that files quoting it are the same bits.
 std::string deck_path(const std::string& dir) { return (fs::path(dir) / "deck.toml").string(); }
 
-std::string job_line(const ExecutorConfig& e, const std::string& dir, int cores) {
-  return "exec " + quote(e.drawbend) + " run " + quote(deck_path(dir)) + " --out " + quote(dir) +
+std::string job_line(const ExecutorConfig& e, const std::string& dir, int cores, const std::string& run_args) {
+  return "exec " + quote(e.drawbend) + " run " + quote(deck_path(dir)) + " --out " + quote(dir) + " " + run_args +
          " --quiet --threads " + std::to_string(cores) + " > " + quote(dir + "/run.log") + " 2> " +
          quote(dir + "/job.log");
 }
@@ -103,13 +103,13 @@ bool running_state(const std::string& s) {
 
 /// One sbatch job to its end: (job id, final state).
 std::pair<std::string, std::string> sbatch_and_wait(const ExecutorConfig& e, const std::string& name,
-                                                    const std::string& dir, const JobNeeds& n) {
+                                                    const std::string& dir, const JobNeeds& n, const std::string& args) {
   const std::string d = fs::absolute(dir).string();
   std::ostringstream cmd;
   cmd << "sbatch --parsable --job-name=" << quote("drawbend-" + name) << " --output=" << quote(d + "/slurm.log")
       << " --chdir=" << quote(fs::current_path().string())
       << " --ntasks=1 --cpus-per-task=" << n.cores << " --mem=" << static_cast<long>(std::ceil(n.memory_mb))
-      << "M --time=" << minutes_of(n.minutes) << " " << e.slurm_args << " --wrap=" << quote(job_line(e, dir, n.cores));
+      << "M --time=" << minutes_of(n.minutes) << " " << e.slurm_args << " --wrap=" << quote(job_line(e, dir, n.cores, args));
   const auto [out, code] = shell(cmd.str());
   const std::string id = trim(out.substr(0, out.find(';')));
   if (code != 0 || id.empty() || id.find_first_not_of("0123456789") != std::string::npos)
@@ -129,7 +129,8 @@ std::pair<std::string, std::string> sbatch_and_wait(const ExecutorConfig& e, con
   return {id, state};
 }
 
-void run_slurm(const ExecutorConfig& e, const std::string& name, const std::string& dir, JobNeeds n) {
+void run_slurm(const ExecutorConfig& e, const std::string& name, const std::string& dir, JobNeeds n,
+               const std::string& args) {
   const fs::path log = fs::path(dir) / "job.log";
   if (!env("SLURM_JOB_ID").empty() && env("DRAWBEND_SLURM_SBATCH").empty()) {
     // Inside an allocation: one job step per case.
@@ -137,7 +138,7 @@ void run_slurm(const ExecutorConfig& e, const std::string& name, const std::stri
     cmd << "srun --exclusive --nodes=1 --ntasks=1 --cpus-per-task=" << n.cores
         << " --mem=" << static_cast<long>(std::ceil(n.memory_mb)) << "M --time=" << minutes_of(n.minutes)
         << " --job-name=" << quote("drawbend-" + name) << " " << e.slurm_args << " sh -c "
-        << quote(job_line(e, dir, n.cores));
+        << quote(job_line(e, dir, n.cores, args));
     const auto [out, code] = shell(cmd.str());
     if (code != 0 || !complete(dir))
       throw JobFailed("case " + name + ": srun job step ended with exit " + std::to_string(code) + " in " +
@@ -145,7 +146,7 @@ void run_slurm(const ExecutorConfig& e, const std::string& name, const std::stri
     return;
   }
   for (int attempt = 1;; ++attempt) {
-    const auto [id, state] = sbatch_and_wait(e, name, dir, n);
+    const auto [id, state] = sbatch_and_wait(e, name, dir, n, args);
     if (state == "COMPLETED" && complete(dir)) return;
     const bool again = attempt == 1 && (state == "NODE_FAIL" || state == "PREEMPTED" || state == "BOOT_FAIL" ||
                                         state == "TIMEOUT" || state == "OUT_OF_MEMORY");
@@ -159,7 +160,8 @@ void run_slurm(const ExecutorConfig& e, const std::string& name, const std::stri
   }
 }
 
-void run_command(const ExecutorConfig& e, const std::string& name, const std::string& dir, const JobNeeds& n) {
+void run_command(const ExecutorConfig& e, const std::string& name, const std::string& dir, const JobNeeds& n,
+                 const std::string& args) {
   std::string cmd = e.command;
   const std::string d = fs::absolute(dir).string();
   auto sub = [&](const std::string& key, const std::string& value) {
@@ -170,6 +172,7 @@ void run_command(const ExecutorConfig& e, const std::string& name, const std::st
   sub("{dir}", quote(dir));
   sub("{name}", quote(name));
   sub("{cores}", std::to_string(n.cores));
+  sub("{args}", args);
   sub("{memory_mb}", std::to_string(static_cast<long>(std::ceil(n.memory_mb))));
   sub("{minutes}", std::to_string(minutes_of(n.minutes)));
   const auto [out, code] = shell(cmd);
@@ -244,10 +247,11 @@ void set_executor(const ExecutorConfig& e) {
   g_set = true;
 }
 
-void run_deck_external(const ExecutorConfig& e, const std::string& name, const std::string& dir, const JobNeeds& n) {
+void run_deck_external(const ExecutorConfig& e, const std::string& name, const std::string& dir, const JobNeeds& n,
+                       const std::string& run_args) {
   fs::remove(fs::path(dir) / "summary.csv");
-  if (e.kind == ExecutorKind::slurm) return run_slurm(e, name, dir, n);
-  if (e.kind == ExecutorKind::command) return run_command(e, name, dir, n);
+  if (e.kind == ExecutorKind::slurm) return run_slurm(e, name, dir, n, run_args);
+  if (e.kind == ExecutorKind::command) return run_command(e, name, dir, n, run_args);
   throw std::logic_error("run_deck_external: the local executor runs in process");
 }
 

@@ -14,7 +14,8 @@
 //   variable DRAWBEND_EXECUTOR, else `local`.  Values: `local`, `slurm`,
 //   `command:TEMPLATE` (or `command` with the template in
 //   DRAWBEND_EXECUTOR_COMMAND).  A template names the job with {drawbend}
-//   {deck} {dir} {name} {cores} {memory_mb} {minutes}; the command must return
+//   {deck} {dir} {args} (more `drawbend run` options the case needs) {name}
+//   {cores} {memory_mb} {minutes}; the command must return
 //   only when the job has ended, with the job's exit status (e.g.
 //   `ssh node{cores}... ` wrappers, `parallel --sshlogin host ...`).
 // - slurm: `sbatch --parsable` with the cores, memory and time limit of
@@ -71,7 +72,10 @@ struct JobFailed : std::runtime_error {
 
 /// Run DIR/deck.toml (already written) as one job of `e` and return when DIR
 /// holds a complete run; throws JobFailed otherwise.  Not for `local`.
-void run_deck_external(const ExecutorConfig& e, const std::string& name, const std::string& dir, const JobNeeds& n);
+/// `run_args`: more options of `drawbend run` (words without shell quoting:
+/// the draw-bend reduction's --basis, --bending-force, --yield-stress).
+void run_deck_external(const ExecutorConfig& e, const std::string& name, const std::string& dir, const JobNeeds& n,
+                       const std::string& run_args = "");
 
 /// Concurrent jobs a case pool keeps in flight for `e`: DRAWBEND_JOBS if set;
 /// else the hardware threads (local, command) or 256 (slurm: the queue, not

@@ -40,6 +40,9 @@ std::string material_section(const std::string& material, const std::string& def
       throw InputError("--material: expected a TOML inline table such as { type = \"j2_combined\", "
                        "kinematic = { beta = 0.5 } } or the path of a TOML file with a [material] table");
     m = *t;
+    // A flow-curve file named in a material file is that file's (relative to its folder).
+    if (auto* h = m.get_as<std::string>("hardening"); h && file && std::filesystem::path(h->get()).is_relative())
+      *h = std::filesystem::absolute(std::filesystem::path(material).parent_path() / h->get()).lexically_normal().string();
   }
   if (!m.contains("type")) m.insert("type", "j2");
   if (!m.contains("E")) m.insert("E", 70000.0);

@@ -2,6 +2,7 @@
 #include "sim/model_loop.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -115,8 +116,15 @@ class Runner {
       if (!done_.count(keys.back())) todo.push_back(s);
     }
     if (!todo.empty()) {
+      // Overall progress: cases done of those the loop can ask for (an upper bound: a deck
+      // asked for twice runs once), and the time left at the wall time per case so far.
+      const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+      const double left = done_.empty() ? 0.0 : el / static_cast<double>(done_.size()) *
+                                                     static_cast<double>(std::max(0, planned_ - runs()));
       std::cout << "model loop: " << todo.size() << " FE case(s) to run or read (" << done_.size()
-                << " done so far)\n"
+                << " done so far of at most " << planned_ << " in all"
+                << (done_.empty() ? std::string() : "; about " + fmt_fixed(left / 60.0, 1) + " min left if all run")
+                << ")\n"
                 << std::flush;
       const auto res = run_cached(todo, cfg_.run_root, cfg_.reuse, &wall_, cfg_.runs_from);
       for (const auto& r : res) done_[deck_text(r.spec)] = {2.0 * r.tension_rise(), 2.0 * r.F_out_std, r.dir};
@@ -135,6 +143,7 @@ class Runner {
     return out;
   }
   int runs() const { return static_cast<int>(done_.size()); }
+  void set_planned(int n) { planned_ = n; }
   double wall() const { return wall_; }
 
  private:
@@ -145,6 +154,8 @@ class Runner {
   const ModelLoopConfig& cfg_;
   std::map<std::string, Done> done_;
   double wall_ = 0;
+  int planned_ = 0;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 ModelEval summarise(std::string model, std::vector<PointResult> pts) {
@@ -251,6 +262,11 @@ std::vector<double> pins_of(const std::vector<FbPoint>& points) {
 ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoint>& points,
                                const std::vector<ModelCandidate>& candidates, const ModelLoopConfig& cfg) {
   Runner run(cfg);
+  // Progress: baseline, then per candidate its members on the fit pin and the chosen one held out.
+  std::size_t planned = points.size(), on_fit = 0;
+  for (const auto& p : points) on_fit += same_pin(p.pin_mm, cfg.fit_pin);
+  for (const auto& c : candidates) planned += c.members.size() * on_fit + (points.size() - on_fit);
+  run.set_planned(static_cast<int>(planned));
   ModelLoopResult out = loop_on(run, base, points, candidates, cfg.fit_pin, cfg.min_gain, true);
   out.runs = run.runs();
   out.run_wall_s = run.wall();

@@ -1,6 +1,7 @@
 #include "study/report_assembler.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <map>
 #include <sstream>
@@ -95,7 +96,14 @@ std::string provenance_section(const ChapterSource& ch) {
 std::string markdown_table(const CsvTable& t, const std::string& caption, int status_column) {
   std::ostringstream os;
   os << "| ";
-  for (const auto& h : t.header) os << escape_cell(h) << " | ";
+  // A column name may break after each '_' (sets_at_noise_level), so that
+  // the names do not set the width of a table of short numbers.
+  for (const auto& h : t.header) {
+    std::string cell = escape_cell(h);
+    for (std::size_t at = cell.find('_'); at != std::string::npos; at = cell.find('_', at + 6))
+      cell.insert(at + 1, "<wbr>");
+    os << cell << " | ";
+  }
   os << "\n|";
   for (std::size_t i = 0; i < t.header.size(); ++i) os << "---|";
   os << "\n";
@@ -113,12 +121,50 @@ std::string markdown_table(const CsvTable& t, const std::string& caption, int st
   return os.str();
 }
 
+namespace {
+
+/// Text with the absolute build and source folders of `ch` written relative
+/// ("build/chapters/...", "data/..."): the report shows no machine's paths.
+std::string relative_paths(std::string text, const ChapterSource& ch) {
+  fs::path src = fs::absolute(ch.src_dir).lexically_normal();
+  if (src.has_extension()) src = src.parent_path();  // chapters/<id>/intro.md
+  const fs::path repo = src.parent_path().parent_path();
+  const fs::path build = fs::absolute(ch.out_dir).lexically_normal().parent_path().parent_path();
+  const std::pair<fs::path, std::string> swaps[] = {{build, build.filename().string() + "/"}, {repo, ""}};
+  for (const auto& [root, to] : swaps) {
+    if (root.empty() || root == root.root_path()) continue;  // never "/": it would eat every "https://"
+    const std::string from = root.string() + "/";
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+      text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+/// A continuation line of a list item that starts with "N." or "N)" (a
+/// wrapped "(22 instead of\n  10) brought", or a {{value}} that expands to a
+/// number at the start of a line) would start a numbered list inside the
+/// item: escape its marker.  Only indented lines that follow a non-blank line.
+void escape_stray_marker(std::string& line, bool prev_blank) {
+  if (prev_blank) return;
+  std::size_t i = 0;
+  while (i < line.size() && line[i] == ' ') ++i;
+  if (i == 0) return;
+  std::size_t j = i;
+  while (j < line.size() && j - i < 9 && std::isdigit(static_cast<unsigned char>(line[j]))) ++j;
+  if (j == i || j >= line.size() || (line[j] != '.' && line[j] != ')')) return;
+  if (j + 1 < line.size() && line[j + 1] != ' ') return;
+  line.insert(j, "\\");
+}
+
+}  // namespace
+
 std::string expand_chapter(const std::string& markdown, const ChapterSource& ch) {
   const auto values = load_values(ch);
   std::istringstream in(markdown);
   std::ostringstream out;
   std::string line;
   int lineno = 0;
+  bool previous_blank = true, in_code = false;
   const std::string where = ch.src_dir;
   while (std::getline(in, line)) {
     ++lineno;
@@ -141,9 +187,12 @@ std::string expand_chapter(const std::string& markdown, const ChapterSource& ch)
       pos = close + 2;
     }
     line = expanded;
+    const bool prev_blank = previous_blank;
+    previous_blank = trim(line).empty();
+    if (line.rfind("```", 0) == 0) in_code = !in_code;
     if (line.rfind("@table ", 0) == 0) {
       auto [path, caption] = split_directive(line.substr(7));
-      out << "\n" << markdown_table(read_csv(ch.out_dir + "/" + path), caption) << "\n";
+      out << "\n" << relative_paths(markdown_table(read_csv(ch.out_dir + "/" + path), caption), ch) << "\n";
       continue;
     }
     if (line.rfind("@figure ", 0) == 0) {
@@ -155,10 +204,11 @@ std::string expand_chapter(const std::string& markdown, const ChapterSource& ch)
       continue;
     }
     if (trim(line) == "@checks") {
-      out << "\n" << checks_table(ch) << "\n";
+      out << "\n" << relative_paths(checks_table(ch), ch) << "\n";
       continue;
     }
-    out << expanded << "\n";
+    if (!in_code) escape_stray_marker(expanded, prev_blank);
+    out << relative_paths(expanded, ch) << "\n";
   }
   return out.str();
 }

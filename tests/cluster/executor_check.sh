@@ -41,7 +41,7 @@ DRAWBEND_EXECUTOR=local "$cases" --out "$tmp/local" > "$tmp/local.log" 2>&1 || {
 echo "local: $(( $(date +%s) - t0 )) s"
 
 t0=$(date +%s)
-DRAWBEND_EXECUTOR='command:{drawbend} run {deck} --out {dir} --quiet --threads {cores} > {dir}/run.log' \
+DRAWBEND_EXECUTOR='command:{drawbend} run {deck} --out {dir} {args} --quiet --threads {cores} > {dir}/run.log' \
   "$cases" --out "$tmp/command" > "$tmp/command.log" 2>&1 || { cat "$tmp/command.log"; fail "command executor run"; }
 same_runs "$tmp/local" "$tmp/command"
 echo "command executor: byte-identical to local ($(( $(date +%s) - t0 )) s)"

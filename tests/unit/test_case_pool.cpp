@@ -35,6 +35,7 @@
 #include <omp.h>
 #endif
 
+#include "io/portable_paths.hpp"
 #include "sim/case_pool.hpp"
 #include "sim/fe_options.hpp"
 
@@ -138,7 +139,6 @@ BOOST_AUTO_TEST_CASE(thread_budget_caps_cases_and_threads) {
 BOOST_AUTO_TEST_CASE(same_run_found_under_another_name) {
   namespace fs = std::filesystem;
   using drawbend::sim::DrawBendSpec;
-  using drawbend::sim::deck_text;
   using drawbend::sim::find_same_run;
   const fs::path root = fs::temp_directory_path() / ("drawbend_same_run_" + std::to_string(::getpid()));
   fs::remove_all(root);
@@ -150,6 +150,8 @@ BOOST_AUTO_TEST_CASE(same_run_found_under_another_name) {
   DrawBendSpec a = s, b = s;
   a.name = "ch5_base";
   b.name = "other";
+  // As run_drawbend writes a run folder's deck: tables by file name (io/portable_paths.hpp).
+  auto deck_text = [](const DrawBendSpec& d) { return drawbend::io::portable_deck(drawbend::sim::deck_text(d)); };
   write(root / "a" / "deck.toml", deck_text(a));
   write(root / "a" / "summary.csv", "quantity,value,unit\n");
   write(root / "b" / "deck.toml", deck_text(b));

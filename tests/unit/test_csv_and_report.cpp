@@ -68,6 +68,21 @@ BOOST_AUTO_TEST_CASE(markdown_expansion) {
   BOOST_TEST(md.find("mu is 0.096, F is 107\u00a0N.") != std::string::npos);
   BOOST_TEST(md.find("x\\|y") != std::string::npos);
   BOOST_TEST(md.find(": Cap") != std::string::npos);
+  // Issue 55: a list item's continuation line that starts with a number and "."
+  // or ")" (wrapped text, or a value) keeps it as text, not as a numbered list;
+  // a real list and unindented lines are left alone; no absolute build path shows.
+  const std::string li = study::expand_chapter("- over the\n  {{F}}. Next\n- rows (22 instead of\n  10) brought\n\n1. one\n2. two\n", ch);
+  BOOST_TEST(li.find("  107\u00a0N. Next") != std::string::npos);  // a unit after the number: not a marker
+  BOOST_TEST(li.find("  10\\) brought") != std::string::npos);
+  BOOST_TEST(li.find("\n2. two") != std::string::npos);
+  // A study laid out as repo/chapters/<id> and repo/build/chapters/<id>.
+  const std::string repo = d + "/repo", out = repo + "/build/chapters/chy";
+  write_file_atomic(out + "/values.csv", "key,value,unit\nn,6,\nmaps," + repo + "/build/chapters/ch4/maps,\n");
+  study::ChapterSource chy{"chy", repo + "/chapters/chy/results.md", out};
+  const std::string nv = study::expand_chapter("- of the\n  {{n}}. combinations\n\nmaps in {{maps}}\n", chy);
+  BOOST_TEST(nv.find("  6\\. combinations") != std::string::npos);
+  BOOST_TEST(nv.find("maps in build/chapters/ch4/maps") != std::string::npos, nv);
+  BOOST_TEST(nv.find(repo) == std::string::npos, nv);
   BOOST_CHECK_THROW(study::expand_chapter("{{nope}}\n", ch), InputError);
   BOOST_CHECK_THROW(study::expand_chapter("@figure figures/none.svg | x\n", ch), InputError);
 }

@@ -5,7 +5,7 @@
 //    balance_error, in that order (the order io/run_case writes its rows in);
 //  - the draw-bend builder's deck (sim/drawbend_case), parsed as a deck,
 //    records exactly the draw-bend signals of the enum (outlet_force ..
-//    plastic_strain_outside, in enum order) followed by the mid-wrap sections
+//    back_tension_full, in enum order) followed by the mid-wrap sections
 //    eps_mid_0, eps_mid_1, ... (mid_wrap_strain), so what the builder writes
 //    is what its readers ask for.
 #define BOOST_TEST_MODULE history_signals
@@ -22,7 +22,7 @@ using drawbend::run_output::Signal;
 using drawbend::run_output::signal_name;
 
 namespace {
-constexpr int kFirst = static_cast<int>(Signal::time), kLast = static_cast<int>(Signal::plastic_strain_outside);
+constexpr int kFirst = static_cast<int>(Signal::time), kLast = static_cast<int>(Signal::back_tension_full);
 }
 
 BOOST_AUTO_TEST_CASE(names_are_distinct) {

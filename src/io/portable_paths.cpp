@@ -1,0 +1,126 @@
+// Portable inputs.  See portable_paths.hpp.
+#include "io/portable_paths.hpp"
+
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+#include "core/csv.hpp"
+#include "core/toml_read.hpp"
+
+namespace drawbend::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kFileKeys[] = {"nodes", "lines", "table"};  // friction tables (hardening: [material])
+
+/// Make the friction table's relative file keys absolute against `base`; true if one changed.
+bool absolutise(toml::table& t, const fs::path& base) {
+  bool changed = false;
+  for (const char* k : kFileKeys)
+    if (auto* v = t.get_as<std::string>(k)) {
+      const fs::path p(v->get());
+      if (p.is_relative()) {
+        *v = fs::absolute(base / p).lexically_normal().string();
+        changed = true;
+      }
+    }
+  return changed;
+}
+
+/// A TOML value as deck text: strings double-quoted, floats in their shortest exact form, tables inline.
+std::string value_text(const toml::node& v) {
+  if (const auto* s = v.as_string()) {
+    std::string o = "\"";
+    for (char c : s->get()) {
+      if (c == '"' || c == '\\') o += '\\';
+      o += c;
+    }
+    return o + "\"";
+  }
+  if (const auto* i = v.as_integer()) return std::to_string(i->get());
+  if (const auto* f = v.as_floating_point()) {
+    std::string t = fmt_shortest(f->get());
+    if (t.find_first_of(".eEn") == std::string::npos) t += ".0";
+    return t;
+  }
+  if (const auto* b = v.as_boolean()) return b->get() ? "true" : "false";
+  if (const auto* a = v.as_array()) {
+    std::string o = "[";
+    for (std::size_t k = 0; k < a->size(); ++k) o += (k ? ", " : "") + value_text(*a->get(k));
+    return o + "]";
+  }
+  if (const auto* t = v.as_table()) {
+    std::string o = "{ ";
+    bool first = true;
+    for (auto&& [k, x] : *t) {
+      o += (first ? "" : ", ") + std::string(k.str()) + " = " + value_text(x);
+      first = false;
+    }
+    return o + " }";
+  }
+  std::ostringstream o;
+  v.visit([&o](const auto& x) { o << x; });
+  return o.str();
+}
+
+std::string inline_text(const toml::table& t) { return value_text(t); }
+
+}  // namespace
+
+std::string friction_argument(const std::string& text, const std::string& base_dir) {
+  if (text.empty()) return text;
+  const std::size_t first = text.find_first_not_of(" \t");
+  if (first != std::string::npos && text[first] == '{') {
+    toml::table root = parse_toml("friction = " + text, "--friction");
+    auto* t = root["friction"].as_table();
+    if (!t) throw InputError("--friction: expected a TOML inline table such as { law = \"coulomb\", mu = 0.1 }");
+    return absolutise(*t, fs::path(base_dir)) ? inline_text(*t) : text;
+  }
+  const fs::path file = fs::path(base_dir) / text;
+  if (!fs::is_regular_file(file))
+    throw InputError("--friction: '" + text + "' is neither a TOML inline table ({ law = ... }) nor a readable file "
+                     "with a [friction] table (such as the loop's friction_model.toml)");
+  toml::table root = parse_toml_file(file.string());
+  auto* t = root["friction"].as_table();
+  if (!t) throw InputError(file.string() + ": expected a [friction] table (the loop's friction_model.toml has one)");
+  absolutise(*t, file.parent_path());
+  return inline_text(*t);
+}
+
+std::string portable_deck(const std::string& text, const std::string& copy_to) {
+  static const std::regex key(R"re(\b(hardening|nodes|lines|table)(\s*=\s*)(["'])([^"'\n]*)\3)re");
+  std::map<std::string, std::string> by_name;  // file name -> the absolute path it stands for
+  std::string out;
+  std::size_t last = 0;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), key); it != std::sregex_iterator(); ++it) {
+    const auto& m = *it;
+    const fs::path p(m[4].str());
+    std::string value = m[4].str();
+    std::error_code ec;
+    if (p.is_absolute() && fs::is_regular_file(p, ec)) {
+      const std::string name = p.filename().string();
+      const auto [slot, fresh] = by_name.emplace(name, p.string());
+      if (fresh || slot->second == p.string()) {
+        value = name;
+        if (!copy_to.empty()) {
+          const fs::path dest = fs::path(copy_to) / name;
+          if (!fs::exists(dest, ec) || read_file(dest.string()) != read_file(p.string()))
+            write_file_atomic(dest.string(), read_file(p.string()));
+        }
+      }
+    }
+    out.append(text, last, static_cast<std::size_t>(m.position(0)) - last);
+    out += m[1].str() + m[2].str() + m[3].str() + value + m[3].str();
+    last = static_cast<std::size_t>(m.position(0) + m.length(0));
+  }
+  out.append(text, last, std::string::npos);
+  return out;
+}
+
+}  // namespace drawbend::io

@@ -1,0 +1,36 @@
+#pragma once
+// Portable inputs: every relative path is resolved against the file that
+// names it, and a run folder carries the tables its deck reads.
+//
+// Input files named in a deck: [material] hardening, a friction table's
+// `nodes` / `lines` (surface law) and `table` (Stribeck law).  The deck reader
+// resolves a relative one against the deck's folder (io/deck_material.cpp)
+// and names the deck line when it cannot read it.
+//
+//  - friction_argument: a builder's --friction is either a TOML inline table
+//    typed on the command line (its relative files are taken from the current
+//    folder, where the user typed them) or the path of a TOML file with a
+//    [friction] table, such as the loop's friction_model.toml (its relative
+//    files are taken from that file's folder).  Either way the result is an
+//    inline table whose file paths are absolute, so the deck written from it
+//    reads the same files wherever the deck is put.
+//  - portable_deck: the deck a builder writes into a run folder names each
+//    input file by its bare name and the file is copied beside it, so the
+//    folder can be moved or zipped and rerun elsewhere (`drawbend run
+//    FOLDER/deck.toml`).  The rewrite depends on the text only (the same deck
+//    gives the same bytes on every machine and in every folder).
+#include <string>
+
+namespace drawbend::io {
+
+/// The --friction value as an inline table with absolute file paths (see above).
+/// Throws InputError naming the file or the argument when it is neither.
+std::string friction_argument(const std::string& text, const std::string& base_dir);
+
+/// `text` with every absolute path of an existing input file replaced by its
+/// file name; when `copy_to` is not empty, each such file is copied there
+/// (unless an identical copy is there already).  Two different files of the
+/// same name: the second keeps its absolute path.
+std::string portable_deck(const std::string& text, const std::string& copy_to = "");
+
+}  // namespace drawbend::io
