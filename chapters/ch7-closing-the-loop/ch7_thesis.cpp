@@ -31,7 +31,7 @@ double maxabs(const std::vector<double>& e) {
 ModelSpec with(EffectKind k, bool linear = true) {
   ModelSpec s;
   s.bending_linear = linear;
-  s.effects.push_back({k, "", 0});
+  s.effects.push_back({k, "", 0, 0, "", 0});
   return s;
 }
 }  // namespace

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <random>
 #include <set>
@@ -93,12 +94,12 @@ std::vector<Candidate> make_candidates(const Design& d, const std::vector<double
   const size_t n = data.rows.size();
   std::vector<Candidate> c;
   auto numeric = [&](const std::string& name, const std::string& kind, auto get) {
-    Candidate k{name, kind, false, false, std::vector<double>(n), {}};
+    Candidate k{name, kind, false, false, std::vector<double>(n), {}, ""};
     for (size_t i = 0; i < n; ++i) k.x[i] = get(i);
     c.push_back(std::move(k));
   };
   auto categorical = [&](const std::string& name, const std::string& kind, auto get) {
-    Candidate k{name, kind, true, false, std::vector<double>(n), {}};
+    Candidate k{name, kind, true, false, std::vector<double>(n), {}, ""};
     std::map<std::string, int> ix;
     for (size_t i = 0; i < n; ++i) {
       auto [it, fresh] = ix.emplace(get(i), static_cast<int>(k.levels.size()));
@@ -143,6 +144,27 @@ std::vector<Candidate> make_candidates(const Design& d, const std::vector<double
   // Group identities.
   categorical("pin", "group", [&](size_t i) { return fmt(R[i].pin_d_mm) + " mm"; });
   categorical("test_id", "group", [&](size_t i) { return R[i].test_id; });
+  // Columns that are a function of one of the model's inputs.
+  const std::vector<std::pair<std::string, std::function<std::string(size_t)>>> inputs = {
+      {"pin", [&](size_t i) { return fmt(R[i].pin_d_mm); }},
+      {"speed_mm_s", [&](size_t i) { return fmt(R[i].speed_mm_s); }},
+      {"direction_deg", [&](size_t i) { return fmt(R[i].direction_deg); }},
+      {"lubricant", [&](size_t i) { return R[i].lubricant; }}};
+  for (auto& k : c) {
+    if (k.kind != "column") continue;
+    for (const auto& [name, key] : inputs) {
+      std::map<std::string, double> first;
+      bool fn = true;
+      for (size_t i = 0; i < n && fn; ++i) {
+        auto [it, fresh] = first.emplace(key(i), k.x[i]);
+        fn = fresh || it->second == k.x[i] || (std::isnan(it->second) && std::isnan(k.x[i]));
+      }
+      if (fn && first.size() >= 2) {
+        k.confounded_with = name;
+        break;
+      }
+    }
+  }
   // Level of each candidate: constant within every test?
   std::map<std::string, std::vector<size_t>> by_test;
   for (size_t i = 0; i < n; ++i) by_test[R[i].test_id].push_back(i);

@@ -79,6 +79,10 @@ struct Candidate {
   bool categorical = false, test_level = false;
   std::vector<double> x;       ///< numeric value or level index per row; NaN = missing
   std::vector<std::string> levels;  ///< level names (categorical)
+  /// A column that is a function of one of the model's inputs (constant within
+  /// each pin, speed, direction or lubricant): that input's name.  Its effect
+  /// cannot be told apart from the input's, so it counts as a base-model term.
+  std::string confounded_with;
 };
 
 /// Every candidate: extra columns, optional columns, derived quantities

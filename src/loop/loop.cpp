@@ -132,6 +132,16 @@ ScreenContext screen_context(const Design& d, const Fit& fit, const std::vector<
   return c;
 }
 
+// Is the model input (or a name of it: the pin as diameter or 1/R) significant in this round?
+bool input_significant(const std::vector<CandidateResult>& rank, const std::string& input) {
+  for (const auto& c : rank) {
+    const bool same = input == "pin" ? (c.name == "pin" || c.name == "pin_diameter_mm" || c.name == "inv_R_per_mm")
+                                     : c.name == input;
+    if (same && c.significant) return true;
+  }
+  return false;
+}
+
 // The model without step s's effects.
 ModelSpec without(const ModelSpec& spec, const Step& s, bool bending_linear) {
   ModelSpec t = spec;
@@ -195,6 +205,10 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
         const Candidate* cand = nullptr;
         for (const auto& k : cands)
           if (k.name == c.name) cand = &k;
+        // A column that is a function of a model input is left to that input
+        // when the input is significant itself: the data cannot tell them apart,
+        // and the input needs no undeclared variable.
+        if (!cand->confounded_with.empty() && input_significant(rank, cand->confounded_with)) continue;
         ++tried;
         const auto trials = try_forms(d, res.folds, spec, *cand, cur, cur_joint, thr, o.min_effect * sigma, prog);
         const int keep = choose_form(trials, res.folds);
@@ -203,7 +217,8 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
         s.p_permutation = c.p_value;
         s.threshold = thr;
         s.probe = c.probe;
-        s.cls = cand->kind == "column" ? "undeclared variable" : "base model";
+        s.cls = cand->kind == "column" && cand->confounded_with.empty() ? "undeclared variable" : "base model";
+        if (!cand->confounded_with.empty()) s.meaning_note = "confounded with " + cand->confounded_with;
         for (const auto& t : trials)
           s.tried.push_back({t.name + " (F-test p " + fmt(t.p_value, 3) + ", " + std::to_string(t.q) + " parameters" +
                                  (t.passed ? "" : ", failed a gate") + ")",
@@ -214,7 +229,8 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
                                  "reached the minimum effect " + fmt(o.min_effect) + " sigma)");
           continue;
         }
-        if (!found || trials[keep].cv.rms < best_form.cv.rms) {
+        const bool better = !found || trials[keep].cv.rms < best_form.cv.rms;
+        if (better) {
           best_form = trials[keep];
           best_step = s;
           found = true;
@@ -351,6 +367,7 @@ std::string summary_json(const LoopResult& r) {
       << ", \"max_before\": " << jnum(s.max_before) << ", \"max_after\": " << jnum(s.max_after)
       << ", \"class\": " << jstr(s.cls) << ", \"channel\": " << jstr(s.channel)
       << ", \"contribution_N2\": " << jnum(s.contribution) << ", \"probe\": " << jstr(s.probe)
+      << (s.meaning_note.empty() ? "" : ", \"note\": " + jstr(s.meaning_note))
       << ", \"parameters\": {";
     for (size_t k = 0; k < s.params.size(); ++k)
       o << (k ? ", " : "") << jstr(s.params[k].name) << ": {\"value\": " << jnum(s.params[k].value)

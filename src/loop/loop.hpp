@@ -76,6 +76,7 @@ struct Step {
   std::string cls;      ///< "undeclared variable" (a column of the data) or "base model" (the model's inputs)
   std::string channel;  ///< friction, bending or both
   std::string probe;    ///< the screen's probe with the largest statistic
+  std::string meaning_note;  ///< "confounded with <input>" for a column that is a function of a model input
   double contribution = 0;  ///< held-out MSE lost when this effect alone is removed [N^2]
   std::vector<Effect> added;  ///< the effects of the step (bending_tension: the flag)
 };
