@@ -31,7 +31,7 @@ double maxabs(const std::vector<double>& e) {
 ModelSpec with(EffectKind k, bool linear = true) {
   ModelSpec s;
   s.bending_linear = linear;
-  s.effects.push_back({k, "", 0});
+  s.effects.push_back({k, "", 0, 0, "", 0});
   return s;
 }
 }  // namespace
@@ -261,7 +261,7 @@ void pin_42_anomaly(Chapter& c, const Thesis& t) {
   c.save(cmp, "demo2_mu_p_vs_table_5_16");
   // The loop's per-pin surface factor on all data, with mu(p).
   ModelSpec s = with(EffectKind::pressure_mu);
-  s.effects.push_back({EffectKind::pin_surface, "", 0});
+  s.effects.push_back({EffectKind::pin_surface, "", 0, 0, "", 0});
   const Fit g = fit_model(d, s);
   auto pw = c.table({"parameter", "value", "se"}, "demonstration 2a: mu(p) plus a per-pin surface factor on all rows");
   for (const auto& p : g.params)

@@ -14,13 +14,29 @@
 // Blocks: the rotating-pin rows form one block, the fixed-pin rows of each
 // model cell another.  Residuals and probe features are centred per block.
 //
-// A candidate's probe is a small regression of the residual on the variable
-// (categorical: one mean per level; numeric: z, plus z^2 with 4+ distinct
-// values).  Its statistic is the explained sum of squares; the permutation
-// test permutes the variable within blocks: test-level variables (constant
-// within each test) are permuted between the tests of a block, row-level
-// variables between the rows of a test.  p = (1 + #{T* >= T}) / (1 + B).
-//
+// The screen (screen.cpp).  Each candidate is probed by a FAMILY of probes,
+// each a small regression of the residual (centred per stratum) on the
+// variable:
+//   main      categorical: one mean per level; numeric: z, plus z^2 with 4+
+//             distinct values;
+//   levels    numeric with 3-8 distinct values: one mean per value (a peak at
+//             a middle level has no linear part); more values: 5 quantile bins
+//             (a step or any smooth shape);
+//   scaled    the effect scaled with dF/dmu of the row (an effect on mu is
+//             larger in newtons where the friction force is larger);
+//   per input the main/levels probe separately within each group of each of
+//             the model's inputs (pin, speed, direction, lubricant; residual
+//             centred per block x group), for effects that act in one cell only.
+// The candidate's statistic is the family's largest explained sum of squares
+// per degree of freedom relative to that probe's residual sum of squares; the
+// permutation test permutes the variable (all probes at once) within blocks:
+// test-level variables (constant within each test) between the tests of a
+// block, row-level variables between the rows of a test.  The permutation
+// distribution of the maximum accounts for the family, so the candidate's
+// p = (1 + #{T* >= T}) / (1 + B) is compared with alpha / (number of
+// candidates) as before.  Its held-out gain (cv_reduction) is the best of the
+// family's probes, fitted on the same folds as the model.
+
 // Sequential decisions (seed-independent): permutations run in batches; after
 // each batch the Clopper-Pearson interval of p at confidence 1 - 1e-3 is
 // compared with the threshold alpha / (number of candidates): wholly below ->
@@ -63,6 +79,10 @@ struct Candidate {
   bool categorical = false, test_level = false;
   std::vector<double> x;       ///< numeric value or level index per row; NaN = missing
   std::vector<std::string> levels;  ///< level names (categorical)
+  /// A column that is a function of one of the model's inputs (constant within
+  /// each pin, speed, direction or lubricant): that input's name.  Its effect
+  /// cannot be told apart from the input's, so it counts as a base-model term.
+  std::string confounded_with;
 };
 
 /// Every candidate: extra columns, optional columns, derived quantities
@@ -79,6 +99,16 @@ struct CandidateResult {
   std::string decision;  ///< significant, not significant, undecided
   int n_perm = 0;        ///< permutations used (sequential)
   double sd_between = 0; ///< identity variables: between-test standard deviation [N]
+  std::string probe;     ///< the probe of the family with the largest statistic
+  std::string cv_probe;  ///< the probe with the largest held-out gain
+};
+
+/// What the screen knows of the model: the model's inputs as groups per row
+/// (for the per-input probes) and dF/dmu per row (0 on rotating rows; empty:
+/// no scaled probe).
+struct ScreenContext {
+  std::vector<std::pair<std::string, std::vector<int>>> modifiers;
+  std::vector<double> mu_weight;
 };
 
 /// Clopper-Pearson decision of a permutation p-value with k exceedances in b
@@ -88,6 +118,7 @@ int sequential_decision(int k, int b, double thr, double confidence = 1e-3);
 /// Rank candidates; results sorted: significant first by CV reduction, then the
 /// rest by p-value.  Significance: p <= alpha / (number of candidates).
 std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands, const std::vector<double>& resid,
-                                             const Folds& f, int permutations, std::uint64_t seed, double alpha);
+                                             const Folds& f, int permutations, std::uint64_t seed, double alpha,
+                                             const ScreenContext* ctx = nullptr);
 
 }  // namespace drawbend::loop

@@ -65,6 +65,54 @@ std::vector<int> Design::levels(const std::string& column, std::vector<std::stri
 }
 
 std::vector<double> Design::zscore(const std::string& column) const {
+  std::vector<double> x = values(column);
+  double m = 0, q = 0;
+  for (double v : x) m += v;
+  m /= x.size();
+  for (double v : x) q += (v - m) * (v - m);
+  const double sd = std::sqrt(q / std::max<size_t>(1, x.size() - 1));
+  for (double& v : x) v = sd > 0 ? (v - m) / sd : 0.0;
+  return x;
+}
+
+std::vector<int> Design::groups(const std::string& by, int* n) const {
+  std::vector<int> g(rows.size(), 0);
+  if (by == "pin") {
+    for (size_t i = 0; i < rows.size(); ++i) g[i] = rows[i].pin;
+    *n = static_cast<int>(pins.size());
+    return g;
+  }
+  if (by == "lubricant") {
+    std::map<std::string, int> ix;
+    for (size_t i = 0; i < rows.size(); ++i)
+      g[i] = ix.emplace(data->rows[i].lubricant, static_cast<int>(ix.size())).first->second;
+    *n = static_cast<int>(ix.size());
+    return g;
+  }
+  if (by != "speed_mm_s" && by != "direction_deg") throw InputError("no model input '" + by + "' to group by");
+  std::vector<double> v(rows.size());
+  std::set<double> distinct;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    v[i] = by == "speed_mm_s" ? data->rows[i].speed_mm_s : data->rows[i].direction_deg;
+    if (!rows[i].rotating) distinct.insert(v[i]);
+  }
+  std::vector<double> cut(distinct.begin(), distinct.end());
+  if (cut.size() > 6) {  // tertiles of the distinct values
+    const std::vector<double> all = cut;
+    cut = {all[all.size() / 3], all[2 * all.size() / 3]};
+    for (size_t i = 0; i < rows.size(); ++i) g[i] = static_cast<int>(std::upper_bound(cut.begin(), cut.end(), v[i]) - cut.begin());
+    *n = 3;
+    return g;
+  }
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const auto it = std::lower_bound(cut.begin(), cut.end(), v[i] - 1e-9);
+    g[i] = std::min(static_cast<int>(it - cut.begin()), std::max(0, static_cast<int>(cut.size()) - 1));
+  }
+  *n = std::max<int>(1, static_cast<int>(cut.size()));
+  return g;
+}
+
+std::vector<double> Design::values(const std::string& column) const {
   std::vector<double> x(rows.size(), 0.0);
   for (size_t i = 0; i < rows.size(); ++i) {
     const Sample& s = data->rows[i];
@@ -87,12 +135,6 @@ std::vector<double> Design::zscore(const std::string& column) const {
     }
     x[i] = v;
   }
-  double m = 0, q = 0;
-  for (double v : x) m += v;
-  m /= x.size();
-  for (double v : x) q += (v - m) * (v - m);
-  const double sd = std::sqrt(q / std::max<size_t>(1, x.size() - 1));
-  for (double& v : x) v = sd > 0 ? (v - m) / sd : 0.0;
   return x;
 }
 

@@ -54,11 +54,41 @@ struct DirectionHarmonic : OneParam {
   static void name(const Design&, const Effect&, const Names&, int s, Names& n) { n[s] = "beta sin^2(2 phi)"; }
 };
 
-/// drift and generic_linear: mu (1 + beta z), z the z-score of the effect's column.
+/// drift, generic_linear, generic_log and generic_exp: mu (1 + beta u), u the
+/// effect's feature per row (fit_model: z-score, z-score of log, or 1 - exp(-(x - x_min)/lambda)).
 struct Linear : OneParam {
   static void apply(const EffectArgs& a, Terms& t) { t.factor += a.th[0] * a.f.drift_z[a.k][a.i]; }
   static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
-    n[s] = "beta per SD of " + e.variable;
+    n[s] = e.kind == EffectKind::generic_log ? "beta per SD of log " + e.variable
+           : e.kind == EffectKind::generic_exp ? "beta (1 - exp(-(x - x_min)/" + fmt(e.lambda_mm, 3) + ")) of " + e.variable
+                                                : "beta per SD of " + e.variable;
+  }
+};
+
+/// mu (1 + beta_g z): one slope per group g of the effect's `by` input.
+struct LinearBy {
+  static int count(const Design&, const Effect& e) { return e.n_groups; }
+  static void apply(const EffectArgs& a, Terms& t) {
+    t.factor += a.th[a.f.group[a.k][a.i]] * a.f.drift_z[a.k][a.i];
+  }
+  static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
+    for (int g = 0; g < e.n_groups; ++g)
+      n[s + g] = "beta per SD of " + e.variable + " [" + e.by + " group " + std::to_string(g + 1) + "]";
+  }
+};
+
+/// mu (1 + g_{group,level}), one factor per level but the first in every group of `by`.
+struct CategoricalBy {
+  static int count(const Design&, const Effect& e) { return e.n_groups * std::max(0, e.n_levels - 1); }
+  static void apply(const EffectArgs& a, Terms& t) {
+    const int l = a.f.level[a.k][a.i];
+    if (l > 0) t.factor += a.th[a.f.group[a.k][a.i] * (a.e.n_levels - 1) + l - 1];
+  }
+  static void name(const Design&, const Effect& e, const Names& level_names, int s, Names& n) {
+    for (int g = 0; g < e.n_groups; ++g)
+      for (int l = 1; l < e.n_levels; ++l)
+        n[s + g * (e.n_levels - 1) + l - 1] =
+            "g [" + e.variable + " = " + level_names[l] + ", " + e.by + " group " + std::to_string(g + 1) + "]";
   }
 };
 
@@ -115,7 +145,7 @@ struct PinSurface {
   }
 };
 
-/// Acts on the bending line (fit_bending), not on mu: no friction parameter.
+/// bending_tension and bending_linear act on the bending line (fit_bending), not on mu: no friction parameter.
 struct BendingTension {
   static int count(const Design&, const Effect&) { return 0; }
   static void apply(const EffectArgs&, Terms&) {}
@@ -139,6 +169,11 @@ decltype(auto) visit_rule(EffectKind k, F&& f) {
     case EffectKind::generic_saturating: return f(Saturating{});
     case EffectKind::direction_level: return f(DirectionLevel{});
     case EffectKind::direction_fourier: return f(DirectionFourier{});
+    case EffectKind::generic_log:
+    case EffectKind::generic_exp: return f(Linear{});
+    case EffectKind::generic_linear_by: return f(LinearBy{});
+    case EffectKind::categorical_by: return f(CategoricalBy{});
+    case EffectKind::bending_linear: break;  // on the bending lines (model.cpp), no friction parameter
   }
   return f(BendingTension{});
 }

@@ -18,6 +18,11 @@ std::string effect_name(EffectKind k) {
     case EffectKind::generic_saturating: return "generic_saturating";
     case EffectKind::direction_level: return "direction_levels";
     case EffectKind::direction_fourier: return "direction_fourier";
+    case EffectKind::generic_log: return "generic_log";
+    case EffectKind::generic_exp: return "generic_saturating_exp";
+    case EffectKind::generic_linear_by: return "generic_linear_by_group";
+    case EffectKind::categorical_by: return "group_factor_by_group";
+    case EffectKind::bending_linear: return "bending_linear";
   }
   return "?";
 }
@@ -55,6 +60,19 @@ std::string effect_meaning(EffectKind k) {
     case EffectKind::direction_fourier:
       return "smooth non-elliptical anisotropy: mu (1 + c1 sin^2 2phi + c2 (cos 2phi - cos 6phi)/2), "
              "both terms zero at RD and TD";
+    case EffectKind::generic_log:
+      return "generic logarithmic effect: mu (1 + beta u), u the z-score of log(x); no physics claimed";
+    case EffectKind::generic_exp:
+      return "generic saturating exponential: mu (1 + beta (1 - exp(-(x - x_min)/lambda))), lambda chosen on a "
+             "grid; no physics claimed";
+    case EffectKind::generic_linear_by:
+      return "generic effect acting differently per group of a model input: mu (1 + beta_g z), one slope per "
+             "group (pin, speed, direction or lubricant); no physics claimed";
+    case EffectKind::categorical_by:
+      return "group factor per group of a model input: mu (1 + g_{group,level}); no physics claimed";
+    case EffectKind::bending_linear:
+      return "bending channel: the bending force F_B + c_pin z per pin (z the variable's z-score), fitted with "
+             "the bending lines on the rotating-pin rows; a sheet thickness or yield stress acts here";
   }
   return "";
 }
@@ -77,6 +95,8 @@ std::vector<EffectKind> generic_effects(bool categorical) {
   if (categorical) return {EffectKind::categorical};
   return {EffectKind::generic_linear, EffectKind::generic_saturating};
 }
+
+bool acts_on_bending(EffectKind k) { return k == EffectKind::bending_linear || k == EffectKind::bending_tension; }
 
 bool is_identity(const std::string& c) { return c == "test_id"; }
 

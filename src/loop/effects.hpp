@@ -21,6 +21,11 @@ enum class EffectKind {
   generic_saturating,  ///< mu * (1 + beta tanh(z)): saturating monotone alternative
   direction_level,     ///< mu * (1 + g_dir) per direction level other than 0 and 90 deg
   direction_fourier,   ///< mu * (1 + c1 sin^2(2 phi) + c2 (cos 2phi - cos 6phi)/2): smooth, zero at RD and TD
+  generic_log,         ///< mu * (1 + beta u), u = z-score of log(x) (positive columns)
+  generic_exp,         ///< mu * (1 + beta (1 - exp(-(x - x_min)/lambda))): saturating exponential, lambda on a grid
+  generic_linear_by,   ///< mu * (1 + beta_g z): one slope per group g of a model input (pin, speed, direction)
+  categorical_by,      ///< mu * (1 + g_{group,level}): a group factor per group of a model input
+  bending_linear,      ///< bending channel: F_B + c_pin z per pin (fitted with the bending lines), z the z-score
 };
 
 struct Effect {
@@ -28,6 +33,10 @@ struct Effect {
   std::string variable;  ///< the column a drift effect uses
   double lambda_mm = 0;  ///< depletion length (chosen on a grid)
   int n_levels = 0;      ///< categorical: number of levels of the column
+  /// generic_linear_by / categorical_by: the model input whose groups get their
+  /// own parameters ("pin", "speed_mm_s", "direction_deg" or "lubricant").
+  std::string by;
+  int n_groups = 0;      ///< number of groups of `by`
 };
 
 std::string effect_name(EffectKind k);
@@ -37,6 +46,8 @@ std::vector<EffectKind> effects_for(const std::string& candidate);
 /// Generic effects for a variable no library effect explains (or whose library
 /// effects failed): categorical -> group factor; numeric -> linear and saturating.
 std::vector<EffectKind> generic_effects(bool categorical);
+/// Effects that act on the bending force (channel "bending"), not on mu.
+bool acts_on_bending(EffectKind k);
 /// Identity variables (test_id): handled by design as a random effect, never
 /// permuted and never added as a fixed effect.
 bool is_identity(const std::string& candidate);

@@ -6,9 +6,8 @@
 #include <iostream>
 #include <sstream>
 
-#include <boost/math/distributions/fisher_f.hpp>
-
 #include "core/csv.hpp"
+#include "loop/forms.hpp"
 
 namespace drawbend::loop {
 
@@ -29,83 +28,6 @@ std::vector<Param> new_params(const Fit& before, const Fit& after) {
     if (!old) out.push_back(p);
   }
   return out;
-}
-
-ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const std::string& variable) {
-  ModelSpec t = s;
-  Effect e{k, variable, 0};
-  if (k == EffectKind::bending_tension) t.bending_linear = true;
-  if (k == EffectKind::depletion) {  // lambda: grid, then golden section in log(lambda), by the full-data fit
-    auto rss = [&](double lam) {
-      ModelSpec u = s;
-      u.effects.push_back({k, variable, lam});
-      return fit_model(d, u).rss;
-    };
-    const std::vector<double> grid = {10.0, 25.0, 50.0, 100.0, 200.0, 400.0, 800.0};
-    size_t bi = 0;
-    double best = INFINITY;
-    for (size_t i = 0; i < grid.size(); ++i) {
-      const double r = rss(grid[i]);
-      if (r < best) best = r, bi = i;
-    }
-    double a = std::log(grid[bi > 0 ? bi - 1 : 0]), b = std::log(grid[std::min(bi + 1, grid.size() - 1)]);
-    const double g = 0.5 * (std::sqrt(5.0) - 1);
-    double x1 = b - g * (b - a), x2 = a + g * (b - a), f1 = rss(std::exp(x1)), f2 = rss(std::exp(x2));
-    for (int it = 0; it < 20; ++it) {
-      if (f1 < f2) b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = rss(std::exp(x1));
-      else a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = rss(std::exp(x2));
-    }
-    e.lambda_mm = std::exp(0.5 * (a + b));
-    if (rss(e.lambda_mm) > best) e.lambda_mm = grid[bi];
-  }
-  t.effects.push_back(e);
-  return t;
-}
-
-bool applicable(const Design& d, const ModelSpec& s, EffectKind k, const std::string& var) {
-  for (const auto& e : s.effects)
-    if (e.kind == k && (e.variable == var || (k != EffectKind::drift && k != EffectKind::generic_linear &&
-                                               k != EffectKind::generic_saturating && k != EffectKind::categorical)))
-      return false;
-  if (k == EffectKind::bending_tension && s.bending_linear) return false;
-  if (k == EffectKind::pin_surface && d.pins.size() < 2) return false;
-  if (k == EffectKind::depletion && !d.data->has_sliding) return false;
-  if ((k == EffectKind::direction_harmonic || k == EffectKind::direction_fourier ||
-       k == EffectKind::direction_level) && d.direction_is_level)
-    return false;
-  if (k == EffectKind::direction_level && d.n_dir_params < 1) return false;
-  if (k == EffectKind::direction_fourier && d.n_dir_params < 2) return false;
-  if (k == EffectKind::generic_linear || k == EffectKind::generic_saturating || k == EffectKind::drift) {
-    try {
-      d.zscore(var);
-    } catch (const InputError&) {
-      return false;
-    }
-  }
-  if (k == EffectKind::categorical && d.data->extra_index(var) < 0) return false;
-  return true;
-}
-
-// Nested-model F test on the joint fits (bending and friction together).
-double f_test(const JointFit& a, const JointFit& b) {
-  const int q = b.p - a.p, dof = b.n - b.p;
-  if (q <= 0 || dof <= 0 || !(b.rss > 0)) return b.rss < a.rss ? 0.0 : 1.0;
-  const double F = ((a.rss - b.rss) / q) / (b.rss / dof);
-  if (!(F > 0)) return 1.0;
-  return boost::math::cdf(boost::math::complement(boost::math::fisher_f_distribution<double>(q, dof), F));
-}
-
-// Effects to try for a candidate: the library's, then generic ones for
-// variables the library does not know (columns of the data, not the model's
-// own inputs or derived quantities).
-std::vector<EffectKind> kinds_for(const Design& d, const ModelSpec& spec, const Candidate& c, bool with_generic) {
-  std::vector<EffectKind> kinds;
-  for (EffectKind k : effects_for(c.name))
-    if (applicable(d, spec, k, c.name)) kinds.push_back(k);
-  if ((kinds.empty() || with_generic) && c.kind == "column")
-    for (EffectKind k : generic_effects(c.categorical))
-      if (applicable(d, spec, k, c.name)) kinds.push_back(k);
-  return kinds;
 }
 
 std::string sign_text(const Step& s, const std::string& var) {
@@ -129,9 +51,12 @@ void conclude(LoopResult& r, const LoopOptions& o, const std::vector<CandidateRe
       << "), so every friction coefficient below depends on that choice. ";
   if (r.steps.empty()) c << "The loop added no effect to the base model. ";
   else {
-    c << "The loop added " << r.steps.size() << " effect(s): ";
+    int nu = 0;
+    for (const auto& s : r.steps) nu += s.cls == "undeclared variable";
+    c << "The loop added " << r.steps.size() << " effect(s) (" << nu << " of undeclared variables, "
+      << r.steps.size() - nu << " adjusting the base model's own terms): ";
     for (size_t k = 0; k < r.steps.size(); ++k)
-      c << (k ? "; " : "") << r.steps[k].variable << " (" << r.steps[k].effect << ")";
+      c << (k ? "; " : "") << r.steps[k].variable << " (" << r.steps[k].effect << ", " << r.steps[k].channel << ")";
     c << ". ";
   }
   const NoiseFloor& n = r.noise;
@@ -148,7 +73,22 @@ void conclude(LoopResult& r, const LoopOptions& o, const std::vector<CandidateRe
     r.at_noise = r.ratio <= o.noise_ratio;
     c << "The remaining held-out error is " << fmt(rms, 4) << " N against a replicate noise of " << fmt(n.sigma_N, 4)
       << " N (ratio " << fmt(r.ratio, 3) << "; at the noise level means <= " << fmt(o.noise_ratio) << "): ";
-    c << (r.at_noise ? "the model explains the data to the noise level." : "structure remains unexplained.");
+    if (r.at_noise) c << "the model explains the data to the noise level.";
+  }
+  // Remaining structure: in columns of the data (undeclared variables) or only
+  // in the model's own inputs and the between-test scatter (base-model mismatch).
+  bool column_left = false;
+  for (const auto& k : rank)
+    if (k.significant || k.decision == "undecided" || k.decision.rfind("significant", 0) == 0) {
+      if (k.kind == "column") column_left = true;
+      else r.base_mismatch.push_back(k.name + " (" + k.decision + ", p " + fmt(k.p_value, 3) + ")");
+    }
+  if (std::isfinite(r.ratio) && !r.at_noise) {
+    if (column_left) c << "structure remains unexplained.";
+    else if (!r.base_mismatch.empty())
+      c << "the rest is base-model mismatch (the model's own inputs or the scatter between tests), not an undeclared "
+           "variable: no column of the data remains significant.";
+    else c << "no candidate remains significant; the rest is base-model mismatch the screen cannot localise.";
   }
   if (!r.at_noise) {
     for (const auto& k : rank)
@@ -172,6 +112,51 @@ void progress(const LoopOptions& o, const std::string& msg) {
   if (o.progress) std::cerr << "[loop] " << msg << std::endl;
 }
 
+// What the screen knows of the current model: the model's inputs as groups,
+// and dF/dmu per fixed-pin row = Theta (F_back + F_fric) = Theta (pred - F_back - F_B) + Theta F_back.
+ScreenContext screen_context(const Design& d, const Fit& fit, const std::vector<double>& pred) {
+  ScreenContext c;
+  for (const std::string by : {"pin", "speed_mm_s", "direction_deg", "lubricant"}) {
+    int n = 0;
+    std::vector<int> g = d.groups(by, &n);
+    if (n >= 2) c.modifiers.push_back({by, std::move(g)});
+  }
+  c.mu_weight.assign(d.rows.size(), 0.0);
+  for (size_t i = 0; i < d.rows.size(); ++i) {
+    const Row& r = d.rows[i];
+    if (r.rotating || !std::isfinite(pred[i])) continue;
+    const double bend = fit.b0[r.pin] + fit.b1[r.pin] * r.fback + (fit.bend_extra.empty() ? 0.0 : fit.bend_extra[i]);
+    const double w = kWrapRad * (pred[i] - bend);
+    c.mu_weight[i] = std::isfinite(w) ? w : 0.0;
+  }
+  return c;
+}
+
+// Is the model input (or a name of it: the pin as diameter or 1/R) significant in this round?
+bool input_significant(const std::vector<CandidateResult>& rank, const std::string& input) {
+  for (const auto& c : rank) {
+    const bool same = input == "pin" ? (c.name == "pin" || c.name == "pin_diameter_mm" || c.name == "inv_R_per_mm")
+                                     : c.name == input;
+    if (same && c.significant) return true;
+  }
+  return false;
+}
+
+// The model without step s's effects.
+ModelSpec without(const ModelSpec& spec, const Step& s, bool bending_linear) {
+  ModelSpec t = spec;
+  t.effects.clear();
+  for (const auto& e : spec.effects) {
+    bool mine = false;
+    for (const auto& m : s.added) mine = mine || (m.kind == e.kind && m.variable == e.variable && m.by == e.by);
+    if (!mine) t.effects.push_back(e);
+  }
+  for (const auto& m : s.added)
+    if (m.kind == EffectKind::bending_tension) t.bending_linear = bending_linear;
+  return t;
+}
+
+
 }  // namespace
 
 LoopResult run_loop(const Design& d, const LoopOptions& o) {
@@ -186,103 +171,165 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
   ModelSpec spec;
   spec.bending_linear = o.bending_linear;
   progress(o, "base model: cross-validation (" + std::to_string(d.rows.size()) + " rows)");
-  CvResult cur = cross_validate(d, spec, res.folds);
-  res.cv.push_back(cur);
+  const CvResult base_cv = cross_validate(d, spec, res.folds);
+  CvResult cur = base_cv;
   Fit cur_fit = fit_model(d, spec);
   JointFit cur_joint = fit_joint(d, spec);
-  std::vector<std::string> used_vars;
   std::vector<CandidateResult> last_rank;
-  for (int step = 0; step < o.max_steps; ++step) {
-    progress(o, "round " + std::to_string(step + 1) + ": ranking candidates (held-out RMS " + fmt(cur.rms, 4) + " N)");
-    const auto cands = make_candidates(d, cur.pred);
-    if (step == 0) res.candidates = cands;
-    const auto rank = rank_candidates(cands, cur.resid, res.folds, o.permutations, o.seed + 1000003ULL * step, o.alpha);
-    res.rankings.push_back(rank);
-    last_rank = rank;
-    const double thr = o.alpha / std::max<size_t>(1, rank.size());
-    bool accepted = false;
-    for (const auto& c : rank) {
-      if (!c.significant) break;
-      if (is_identity(c.name)) continue;
-      const Candidate* cand = nullptr;
-      for (const auto& k : cands)
-        if (k.name == c.name) cand = &k;
-      Step s;
-      s.variable = c.name;
-      s.p_permutation = c.p_value;
-      s.threshold = thr;
+  std::vector<Step> steps;
+  const auto prog = [&](const std::string& m) { progress(o, m); };
+  int round = 0, backfits = 0;
+  for (;;) {
+    // Forward: re-screen the residual of the current model after every step.
+    bool stopped = false;
+    while (static_cast<int>(steps.size()) < o.max_steps) {
+      progress(o, "round " + std::to_string(round + 1) + ": ranking candidates (held-out RMS " + fmt(cur.rms, 4) + " N)");
+      const auto cands = make_candidates(d, cur.pred);
+      if (round == 0) res.candidates = cands;
+      const ScreenContext ctx = screen_context(d, cur_fit, cur.pred);
+      const auto rank =
+          rank_candidates(cands, cur.resid, res.folds, o.permutations, o.seed + 1000003ULL * round, o.alpha, &ctx);
+      res.rankings.push_back(rank);
+      last_rank = rank;
+      const double thr = o.alpha / std::max<size_t>(1, rank.size());
+      // The strongest few significant candidates are each given their best form;
+      // the one whose form predicts held-out data best is added (the rank order
+      // of the screen does not decide between them).
+      Step best_step;
+      FormTrial best_form;
+      bool found = false;
+      int tried = 0;
+      for (const auto& c : rank) {
+        if (!c.significant || tried >= o.contenders) break;
+        if (is_identity(c.name)) continue;
+        const Candidate* cand = nullptr;
+        for (const auto& k : cands)
+          if (k.name == c.name) cand = &k;
+        // A column that is a function of a model input is left to that input
+        // when the input is significant itself: the data cannot tell them apart,
+        // and the input needs no undeclared variable.
+        if (!cand->confounded_with.empty() && input_significant(rank, cand->confounded_with)) continue;
+        ++tried;
+        const auto trials = try_forms(d, res.folds, spec, *cand, cur, cur_joint, thr, o.min_effect * sigma, prog);
+        const int keep = choose_form(trials, res.folds);
+        Step s;
+        s.variable = c.name;
+        s.p_permutation = c.p_value;
+        s.threshold = thr;
+        s.probe = c.probe;
+        s.cls = cand->kind == "column" && cand->confounded_with.empty() ? "undeclared variable" : "base model";
+        if (!cand->confounded_with.empty()) s.meaning_note = "confounded with " + cand->confounded_with;
+        for (const auto& t : trials)
+          s.tried.push_back({t.name + " (F-test p " + fmt(t.p_value, 3) + ", " + std::to_string(t.q) + " parameters" +
+                                 (t.passed ? "" : ", failed a gate") + ")",
+                             t.cv.rms});
+        if (keep < 0) {
+          res.screened.push_back(c.name + " (round " + std::to_string(round + 1) + ", p_perm " + fmt(c.p_value, 3) +
+                                 ", probe " + c.probe + "; no form passed the F test, lowered the held-out error and "
+                                 "reached the minimum effect " + fmt(o.min_effect) + " sigma)");
+          continue;
+        }
+        const bool better = !found || trials[keep].cv.rms < best_form.cv.rms;
+        if (better) {
+          best_form = trials[keep];
+          best_step = s;
+          found = true;
+        }
+      }
+      ++round;
+      if (!found) {
+        bool any_sig = false;
+        for (const auto& c : rank) any_sig = any_sig || (c.significant && !is_identity(c.name));
+        std::ostringstream m;
+        if (!any_sig) {
+          m << "no candidate significant at the Bonferroni threshold p <= " << fmt(thr, 3) << " (alpha "
+            << fmt(o.alpha) << " / " << rank.size() << " candidates) with a positive cross-validated error reduction";
+          if (!rank.empty()) m << "; smallest p: " << rank.front().name << " p = " << fmt(rank.front().p_value, 3);
+        } else {
+          m << "significant candidates remain, but no effect for them passed the F test at p <= " << fmt(thr, 3)
+            << ", lowered the held-out error and reached the minimum effect (see screened)";
+        }
+        res.stopped_because = m.str();
+        stopped = true;
+        break;
+      }
+      Step& s = best_step;
+      s.effect = best_form.name;
+      s.meaning = best_form.meaning;
+      s.channel = best_form.channel;
+      s.p_value = best_form.p_value;
       s.rms_before = cur.rms;
       s.max_before = cur.max_abs;
-      double best = INFINITY;
-      ModelSpec best_spec;
-      CvResult best_cv;
-      JointFit best_joint;
-      for (int pass = 0; pass < 2 && !std::isfinite(best); ++pass) {  // library first, then generic
-        std::vector<EffectKind> kinds = kinds_for(d, spec, *cand, pass == 1);
-        if (pass == 1) {  // only the generic ones not tried yet
-          std::vector<EffectKind> lib = kinds_for(d, spec, *cand, false);
-          kinds.erase(std::remove_if(kinds.begin(), kinds.end(),
-                                     [&](EffectKind k) { return std::find(lib.begin(), lib.end(), k) != lib.end(); }),
-                      kinds.end());
-        }
-        for (EffectKind k : kinds) {
-          progress(o, "  " + c.name + ": trying " + effect_name(k));
-          ModelSpec t = with_effect(d, spec, k, c.name);
-          if (k == EffectKind::categorical) {
-            std::vector<std::string> names;
-            d.levels(c.name, &names);
-            t.effects.back().n_levels = static_cast<int>(names.size());
-          }
-          CvResult cv = cross_validate(d, t, res.folds);
-          const JointFit jf = fit_joint(d, t);
-          const double pf = f_test(cur_joint, jf);
-          const double gain = std::sqrt(std::max(0.0, cur.rms * cur.rms - cv.rms * cv.rms));
-          const bool big = gain >= o.min_effect * sigma;
-          s.tried.push_back({effect_name(k) + " (F-test p " + fmt(pf, 3) + (big ? "" : ", below the minimum effect") +
-                                 ")",
-                             cv.rms});
-          if (pf <= thr && big && cv.rms < best && cv.rms < cur.rms)
-            best = cv.rms, best_spec = t, best_cv = cv, best_joint = jf, s.effect = effect_name(k),
-            s.meaning = effect_meaning(k), s.p_value = pf;
-        }
-      }
-      if (!std::isfinite(best)) {
-        res.screened.push_back(c.name + " (round " + std::to_string(step + 1) + ", p_perm " + fmt(c.p_value, 3) +
-                               "; no effect passed the F test, lowered the held-out error and reached the minimum "
-                               "effect " + fmt(o.min_effect) + " sigma)");
-        continue;
-      }
-      const Fit f = fit_model(d, best_spec);
-      s.params = new_params(cur_fit, f);
-      s.rms_after = best_cv.rms;
-      s.max_after = best_cv.max_abs;
-      if (s.effect.rfind("generic", 0) == 0) s.sign = sign_text(s, c.name);
-      res.steps.push_back(s);
-      used_vars.push_back(c.name);
-      spec = best_spec;
-      cur = best_cv;
-      cur_fit = f;
-      cur_joint = best_joint;
-      res.cv.push_back(cur);
-      accepted = true;
-      break;
+      for (size_t k = spec.effects.size(); k < best_form.spec.effects.size(); ++k) s.added.push_back(best_form.spec.effects[k]);
+      if (best_form.spec.bending_linear != spec.bending_linear) { Effect bt; bt.kind = EffectKind::bending_tension; s.added.push_back(bt); }
+      spec = best_form.spec;
+      cur = best_form.cv;
+      cur_joint = best_form.joint;
+      cur_fit = fit_model(d, spec);
+      s.rms_after = cur.rms;
+      s.max_after = cur.max_abs;
+      steps.push_back(s);
     }
-    if (accepted) continue;
-    bool any_sig = false;
-    for (const auto& c : rank) any_sig = any_sig || (c.significant && !is_identity(c.name));
-    std::ostringstream m;
-    if (!any_sig) {
-      m << "no candidate significant at the Bonferroni threshold p <= " << fmt(thr, 3) << " (alpha " << fmt(o.alpha)
-        << " / " << rank.size() << " candidates) with a positive cross-validated error reduction";
-      if (!rank.empty()) m << "; smallest p: " << rank.front().name << " p = " << fmt(rank.front().p_value, 3);
-    } else {
-      m << "significant candidates remain, but no effect for them passed the F test at p <= " << fmt(thr, 3)
-        << ", lowered the held-out error and reached the minimum effect (see screened)";
+    if (!stopped) res.stopped_because = "maximum number of steps (" + std::to_string(o.max_steps) + ")";
+    // Backfitting: an effect that is no longer needed given the others (its F
+    // test given all the others above the threshold, or the held-out error no
+    // worse without it) is removed, the weakest first, and the forward search
+    // resumes; so an early nuisance term can give way to a later variable.
+    if (steps.empty() || backfits >= 2) break;
+    ++backfits;
+    const double thr = o.alpha / std::max<size_t>(1, res.candidates.size());
+    int drop = -1;
+    double worst = -1;
+    for (size_t j = 0; j < steps.size(); ++j) {
+      const ModelSpec t = without(spec, steps[j], o.bending_linear);
+      const double p = f_test(fit_joint(d, t), cur_joint);
+      const CvResult cv = cross_validate(d, t, res.folds);
+      if ((p > thr || cv.rms <= cur.rms) && p > worst) worst = p, drop = static_cast<int>(j);
     }
-    res.stopped_because = m.str();
-    break;
+    if (drop < 0) break;
+    progress(o, "backfitting: " + steps[drop].variable + " removed (p " + fmt(worst, 3) + " given the others)");
+    res.removed.push_back(steps[drop].variable + " (" + steps[drop].effect + "; F test p " + fmt(worst, 3) +
+                          " given the later effects)");
+    spec = without(spec, steps[drop], o.bending_linear);
+    steps.erase(steps.begin() + drop);
+    cur = cross_validate(d, spec, res.folds);
+    cur_fit = fit_model(d, spec);
+    cur_joint = fit_joint(d, spec);
   }
-  if (res.stopped_because.empty()) res.stopped_because = "maximum number of steps (" + std::to_string(o.max_steps) + ")";
+  // Report order: undeclared variables first, then base-model terms, each by its
+  // contribution (held-out MSE lost when it alone is removed), not by the order found.
+  if (!steps.empty()) {
+    for (auto& s : steps) {
+      const ModelSpec t = without(spec, s, o.bending_linear);
+      const CvResult cv = cross_validate(d, t, res.folds);
+      s.contribution = cv.rms * cv.rms - cur.rms * cur.rms;
+      s.p_value = f_test(fit_joint(d, t), cur_joint);
+      s.params = new_params(fit_model(d, t), cur_fit);
+      if (s.effect.rfind("generic", 0) == 0)
+        s.sign = sign_text(s, s.variable);
+    }
+    std::stable_sort(steps.begin(), steps.end(), [](const Step& a, const Step& b) {
+      if (a.cls != b.cls) return a.cls == "undeclared variable";
+      return a.contribution > b.contribution;
+    });
+    ModelSpec t;
+    t.bending_linear = o.bending_linear;
+    CvResult prev = base_cv;
+    res.cv.push_back(base_cv);
+    for (auto& s : steps) {
+      for (const auto& e : s.added)
+        if (e.kind == EffectKind::bending_tension) t.bending_linear = true;
+        else t.effects.push_back(e);
+      const CvResult cv = &s == &steps.back() ? cur : cross_validate(d, t, res.folds);
+      s.rms_before = prev.rms, s.max_before = prev.max_abs;
+      s.rms_after = cv.rms, s.max_after = cv.max_abs;
+      res.cv.push_back(cv);
+      prev = cv;
+    }
+  } else {
+    res.cv.push_back(cur);
+  }
+  res.steps = steps;
   res.final_fit = cur_fit;
   conclude(res, o, last_rank);
   return res;
@@ -318,6 +365,9 @@ std::string summary_json(const LoopResult& r) {
       << ", \"threshold\": " << jnum(s.threshold)
       << ", \"rms_before\": " << jnum(s.rms_before) << ", \"rms_after\": " << jnum(s.rms_after)
       << ", \"max_before\": " << jnum(s.max_before) << ", \"max_after\": " << jnum(s.max_after)
+      << ", \"class\": " << jstr(s.cls) << ", \"channel\": " << jstr(s.channel)
+      << ", \"contribution_N2\": " << jnum(s.contribution) << ", \"probe\": " << jstr(s.probe)
+      << (s.meaning_note.empty() ? "" : ", \"note\": " + jstr(s.meaning_note))
       << ", \"parameters\": {";
     for (size_t k = 0; k < s.params.size(); ++k)
       o << (k ? ", " : "") << jstr(s.params[k].name) << ": {\"value\": " << jnum(s.params[k].value)
@@ -328,6 +378,10 @@ std::string summary_json(const LoopResult& r) {
   for (size_t i = 0; i < r.remaining.size(); ++i) o << (i ? ", " : "") << jstr(r.remaining[i]);
   o << "],\n  \"screened_not_confirmed\": [";
   for (size_t i = 0; i < r.screened.size(); ++i) o << (i ? ", " : "") << jstr(r.screened[i]);
+  o << "],\n  \"removed_by_backfitting\": [";
+  for (size_t i = 0; i < r.removed.size(); ++i) o << (i ? ", " : "") << jstr(r.removed[i]);
+  o << "],\n  \"base_model_mismatch\": [";
+  for (size_t i = 0; i < r.base_mismatch.size(); ++i) o << (i ? ", " : "") << jstr(r.base_mismatch[i]);
   o << "],\n  \"stopped_because\": " << jstr(r.stopped_because) << "\n}\n";
   return o.str();
 }

@@ -1,14 +1,38 @@
 #pragma once
-// The loop: fit the base model, predict every sample, analyse the held-out
-// residuals against every candidate variable, trace the top significant
-// candidate to a library effect, add it if the effect passes a nested-model F
-// test (bending and friction refitted jointly, so the uncertainty of the
-// bending lines is part of the null) and lowers the held-out error, and iterate
-// until no candidate is significant at the Bonferroni threshold
-// alpha / (number of candidates).  A significant variable that no library
-// effect explains gets a generic effect (categorical: group factor; numeric:
-// linear and saturating) with its size, SE and sign.  The final held-out error
-// is compared with the replicate noise (noise.hpp).
+// The loop: fit the base model, predict every sample, screen the held-out
+// residuals against every candidate variable, give the strongest significant
+// candidates their best form, add the best, re-screen, and iterate until no
+// candidate is significant at the Bonferroni threshold alpha / (number of
+// candidates).  In detail (issue 50):
+//   screen     every candidate is probed by a family of probes (its levels, a
+//              step or smooth shape, a term scaled with dF/dmu, and its effect
+//              within each group of the model's inputs: pin, speed, direction,
+//              lubricant), one permutation test of the family's maximum, so
+//              the multiplicity of the family is inside the candidate's p
+//              (candidates.hpp);
+//   forms      each of the `contenders` strongest significant candidates gets
+//              every applicable form (library physics, generic shapes, the
+//              bending channel, per-group forms), each gated by the
+//              nested-model F test (bending and friction refitted jointly),
+//              a lower held-out error and the minimum effect; the simplest
+//              form within one standard error of the best is kept (forms.hpp);
+//              the candidate whose form predicts held-out data best is added;
+//   channels   an effect acts on mu, on the bending force (F_B + c_pin z,
+//              fitted with the bending lines on the rotating-pin rows), or
+//              both; which, is decided by the held-out data through the forms;
+//   backfit    after the forward search an effect no longer needed given the
+//              others (F test given all others above the threshold, or no
+//              held-out loss without it) is removed and the search resumes, so
+//              an early nuisance term can give way to a later variable;
+//   report     steps are listed undeclared variables (columns of the data)
+//              first, then base-model terms (effects on the model's own
+//              inputs: pin, pressure, speed, direction, back tension), each
+//              class by its contribution (held-out MSE lost without it), not
+//              by the order found.  Remaining structure only in the model's
+//              inputs is reported as base-model mismatch, apart from
+//              undeclared variables.
+// A significant variable that no form explains is listed as screened.  The
+// final held-out error is compared with the replicate noise (noise.hpp).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -36,17 +60,25 @@ struct LoopOptions {
   /// loop.cpp: at_noise_limit for the reason).
   double noise_ratio = 1.25;
   bool progress = false;  ///< print progress to stderr
+  /// Significant candidates given their best form per round (the best of them is added).
+  int contenders = 3;
 };
 
 struct Step {
   std::string variable, effect, meaning;
-  double p_value = 1;        ///< nested-model F test of the added effect (joint fit)
+  double p_value = 1;        ///< nested-model F test of the effect given all the others (joint fit)
   double p_permutation = 1;  ///< the candidate's blocked permutation test
   double threshold = 0;      ///< alpha / number of candidates (Bonferroni), for both
   double rms_before = 0, rms_after = 0, max_before = 0, max_after = 0;
   std::vector<Param> params;                 ///< of the effect, from the full-data refit
   std::vector<std::pair<std::string, double>> tried;  ///< effect -> held-out RMS
   std::string sign;  ///< generic effects: direction of the effect in words
+  std::string cls;      ///< "undeclared variable" (a column of the data) or "base model" (the model's inputs)
+  std::string channel;  ///< friction, bending or both
+  std::string probe;    ///< the screen's probe with the largest statistic
+  std::string meaning_note;  ///< "confounded with <input>" for a column that is a function of a model input
+  double contribution = 0;  ///< held-out MSE lost when this effect alone is removed [N^2]
+  std::vector<Effect> added;  ///< the effects of the step (bending_tension: the flag)
 };
 
 struct LoopResult {
@@ -63,6 +95,10 @@ struct LoopResult {
   double ratio = std::nan("");  ///< final held-out RMS / replicate noise
   bool at_noise = false;
   std::vector<std::string> remaining;  ///< strongest remaining candidates when not at the noise level
+  std::vector<std::string> removed;    ///< effects removed by backfitting
+  /// Remaining significant structure in the model's own inputs (base-model
+  /// mismatch), reported apart from undeclared variables.
+  std::vector<std::string> base_mismatch;
   std::string conclusion;              ///< plain-language conclusion (loop.md opens with it)
   std::string bending;                 ///< bending-force label (every output)
 };

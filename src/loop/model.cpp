@@ -30,6 +30,64 @@ std::string ModelSpec::describe() const {
 
 namespace {
 
+// Bending lines with bending-channel effects: per pin, least squares of
+// F_out - F_back on (1, F_back, z_1 .. z_m) over the training rotating rows; a
+// z without spread on a pin's rotating rows gets c = 0 there.  Sets
+// f.bend_extra[i] = sum_k c_k,pin z_k,i for every row.
+void fit_bending_channels(const Design& d, const std::vector<int>& train, bool linear,
+                          const std::vector<int>& effects, Fit& f) {
+  const size_t np = d.pins.size(), m = effects.size();
+  f.b0.assign(np, std::nan(""));
+  f.b1.assign(np, 0.0);
+  f.bend_extra.assign(d.rows.size(), 0.0);
+  for (size_t p = 0; p < np; ++p) {
+    std::vector<int> rows;
+    for (int i : train)
+      if (d.rows[i].rotating && d.rows[i].pin == static_cast<int>(p)) rows.push_back(i);
+    if (rows.empty()) {
+      f.b0[p] = p < d.bend_fallback.size() ? d.bend_fallback[p] : std::nan("");
+      continue;
+    }
+    std::vector<int> cols;  // which regressors: 0 const, 1 F_back, 2+k effect k
+    cols.push_back(0);
+    auto spread = [&](auto get) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (int i : rows) lo = std::min(lo, get(i)), hi = std::max(hi, get(i));
+      return hi - lo;
+    };
+    if (linear && rows.size() >= 3 && spread([&](int i) { return d.rows[i].fback; }) > 1e-9) cols.push_back(1);
+    for (size_t k = 0; k < m; ++k)
+      if (rows.size() > cols.size() + 1 && spread([&](int i) { return f.drift_z[effects[k]][i]; }) > 1e-9)
+        cols.push_back(2 + static_cast<int>(k));
+    auto value = [&](int c, int i) {
+      return c == 0 ? 1.0 : c == 1 ? d.rows[i].fback : f.drift_z[effects[c - 2]][i];
+    };
+    Eigen::MatrixXd X(rows.size(), cols.size());
+    Eigen::VectorXd y(rows.size());
+    for (size_t r = 0; r < rows.size(); ++r) {
+      for (size_t c = 0; c < cols.size(); ++c) X(r, c) = value(cols[c], rows[r]);
+      y[r] = d.rows[rows[r]].y - d.rows[rows[r]].fback;
+    }
+    const Eigen::MatrixXd XtX = X.transpose() * X;
+    const Eigen::VectorXd beta = XtX.ldlt().solve(X.transpose() * y);
+    const double dof = static_cast<double>(rows.size()) - static_cast<double>(cols.size());
+    const double s2 = dof > 0 ? (y - X * beta).squaredNorm() / dof : 0;
+    const Eigen::MatrixXd cov = XtX.completeOrthogonalDecomposition().pseudoInverse() * s2;
+    const std::string pin = fmt(d.pins[p]) + " mm";
+    for (size_t c = 0; c < cols.size(); ++c) {
+      const double se = std::sqrt(std::max(0.0, cov(c, c)));
+      if (cols[c] == 0) f.b0[p] = beta[c], f.params.push_back({"bending b0 " + pin, beta[c], se, "N"});
+      else if (cols[c] == 1) f.b1[p] = beta[c], f.params.push_back({"bending b1 " + pin, beta[c], se, "-"});
+      else {
+        const int k = effects[cols[c] - 2];
+        f.params.push_back({"bending c " + f.spec.effects[k].variable + " " + pin + " (N per SD)", beta[c], se, "N"});
+        for (size_t i = 0; i < d.rows.size(); ++i)
+          if (d.rows[i].pin == static_cast<int>(p)) f.bend_extra[i] += beta[c] * f.drift_z[k][i];
+      }
+    }
+  }
+}
+
 // Per-pin least-squares bending line on the training rotating rows.  Not
 // analysis::fit_line: that one takes the means as (sum x)/n where this sums
 // x/n (other last bits), and the standard errors here need sxx and the means.
@@ -79,17 +137,44 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
     for (size_t i = 0; i < d.rows.size(); ++i) train.push_back(static_cast<int>(i));
   Fit f;
   f.spec = spec;
-  fit_bending(d, train, spec.bending_linear || spec.has(EffectKind::bending_tension), f);
   const Layout L = layout(d, spec);
   f.drift_z.assign(spec.effects.size(), {});
   f.level.assign(spec.effects.size(), {});
   f.level_names.assign(spec.effects.size(), {});
+  f.group.assign(spec.effects.size(), {});
+  std::vector<int> bending_effects;
   for (size_t k = 0; k < spec.effects.size(); ++k) {
-    const EffectKind kk = spec.effects[k].kind;
-    if (kk == EffectKind::drift || kk == EffectKind::generic_linear || kk == EffectKind::generic_saturating)
-      f.drift_z[k] = d.zscore(spec.effects[k].variable);
-    if (kk == EffectKind::categorical) f.level[k] = d.levels(spec.effects[k].variable, &f.level_names[k]);
+    const Effect& e = spec.effects[k];
+    const EffectKind kk = e.kind;
+    if (kk == EffectKind::drift || kk == EffectKind::generic_linear || kk == EffectKind::generic_saturating ||
+        kk == EffectKind::generic_linear_by || kk == EffectKind::bending_linear)
+      f.drift_z[k] = d.zscore(e.variable);
+    if (kk == EffectKind::generic_log || kk == EffectKind::generic_exp) {
+      std::vector<double> x = d.values(e.variable);
+      double lo = INFINITY;
+      for (double v : x) lo = std::min(lo, v);
+      for (double& v : x) v = kk == EffectKind::generic_log ? std::log(v) : 1 - std::exp(-(v - lo) / e.lambda_mm);
+      if (kk == EffectKind::generic_log) {  // z-score of log x
+        double mm = 0, q = 0;
+        for (double v : x) mm += v;
+        mm /= x.size();
+        for (double v : x) q += (v - mm) * (v - mm);
+        const double sd = std::sqrt(q / std::max<size_t>(1, x.size() - 1));
+        for (double& v : x) v = sd > 0 ? (v - mm) / sd : 0.0;
+      }
+      f.drift_z[k] = x;
+    }
+    if (kk == EffectKind::categorical || kk == EffectKind::categorical_by)
+      f.level[k] = d.levels(e.variable, &f.level_names[k]);
+    if (kk == EffectKind::generic_linear_by || kk == EffectKind::categorical_by) {
+      int n = 0;
+      f.group[k] = d.groups(e.by, &n);
+    }
+    if (kk == EffectKind::bending_linear) bending_effects.push_back(static_cast<int>(k));
   }
+  const bool linear_bending = spec.bending_linear || spec.has(EffectKind::bending_tension);
+  if (bending_effects.empty()) fit_bending(d, train, linear_bending, f);
+  else fit_bending_channels(d, train, linear_bending, bending_effects, f);
   std::vector<int> rows;
   for (int i : train)
     if (!d.rows[i].rotating && !std::isnan(f.b0[d.rows[i].pin])) rows.push_back(i);
@@ -98,7 +183,7 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   std::vector<double> sum(L.n, 0.0), cnt(L.n, 0.0);
   for (int i : rows) {
     const Row& r = d.rows[i];
-    const double ffric = r.y - r.fback - (f.b0[r.pin] + f.b1[r.pin] * r.fback);
+    const double ffric = r.y - r.fback - (f.b0[r.pin] + f.b1[r.pin] * r.fback) - (f.bend_extra.empty() ? 0.0 : f.bend_extra[i]);
     const double mu = ffric > 0 ? analysis::mu_from_friction(ffric, r.fback, kWrapRad) : 0.0;
     const int k = (r.phi < M_PI / 4 ? L.mu_rd : L.mu_td)[r.cell];
     sum[k] += mu;
@@ -184,6 +269,8 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec) {
   j.rss = levenberg_marquardt(th, resid, J, conv, row);
   j.n = static_cast<int>(rows.size());
   j.p = static_cast<int>(th.size());
+  for (const auto& q : f.params)  // bending-channel coefficients: held at the bending fit, but parameters
+    if (q.name.rfind("bending c ", 0) == 0) ++j.p;
   return j;
 }
 

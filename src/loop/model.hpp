@@ -77,6 +77,12 @@ struct Design {
   std::vector<int> levels(const std::string& column, std::vector<std::string>* names) const;
   /// z-scored numeric column (for drift effects); NaN-free or throws.
   std::vector<double> zscore(const std::string& column) const;
+  /// The numeric column's raw values (same columns as zscore); throws InputError.
+  std::vector<double> values(const std::string& column) const;
+  /// Group index per row of a model input used as an effect's `by`: "pin"
+  /// (pin index), "speed_mm_s", "direction_deg" (distinct values of the fixed
+  /// rows, or 3 tertiles when more than 6), "lubricant"; *n receives the count.
+  std::vector<int> groups(const std::string& by, int* n) const;
 };
 
 /// Bending force for pins without rotating-pin rows:
@@ -121,7 +127,9 @@ struct Fit {
   Eigen::VectorXd theta;            ///< friction parameters
   std::vector<Param> params;        ///< bending + friction, with standard errors
   std::vector<double> b0, b1;       ///< bending line per pin (NaN: no rotating rows)
-  std::vector<std::vector<double>> drift_z;  ///< z-scores of each drift effect's variable
+  std::vector<std::vector<double>> drift_z;  ///< per effect: its feature per row (z-score, log or exp transform)
+  std::vector<std::vector<int>> group;       ///< per effect with a `by`: group index per row
+  std::vector<double> bend_extra;   ///< per row: bending-channel effects' c_pin z (empty: none)
   std::vector<std::vector<int>> level;       ///< level index per row of each categorical effect
   std::vector<std::vector<std::string>> level_names;
   double rss = 0;                   ///< fixed-pin rows

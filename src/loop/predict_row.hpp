@@ -20,7 +20,8 @@ namespace detail {
 inline double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th, int i,
                           double* mu_out, const Row* override_row, double* p_out) {
   const Row& r = override_row ? *override_row : d.rows[i];
-  const double bend = f.b0[r.pin] + f.b1[r.pin] * r.fback;
+  const double bend_x = f.bend_extra.empty() ? 0.0 : f.bend_extra[i];  // bending-channel effects
+  const double bend = f.b0[r.pin] + f.b1[r.pin] * r.fback + bend_x;
   if (std::isnan(bend)) return std::nan("");
   if (r.rotating) return r.fback + bend;
   const int ir = L.mu_rd[r.cell], it = L.mu_td[r.cell];
@@ -36,7 +37,7 @@ inline double predict_row(const Design& d, const Fit& f, const Layout& L, const 
   }
   double ff = 0, mu = 0;
   const int iters = t.a1 != 0 ? 4 : 1;
-  const double bend_ref = f.b0[r.pin] + f.b1[r.pin] * r.fref;
+  const double bend_ref = f.b0[r.pin] + f.b1[r.pin] * r.fref + bend_x;
   for (int k = 0; k < iters; ++k) {  // the map follows the mean tension (Eq. 2.2), friction included
     const double p = analysis::pressure_at_tension(r.pw_ref, r.fback, bend, ff, r.fref, bend_ref);  // map_pressure
     mu = (mu0 + t.a1 * p) * t.factor * t.pinf;

@@ -16,15 +16,17 @@ namespace fs = std::filesystem;
 
 CsvWriter candidates_table(const LoopResult& r) {
   CsvWriter w({"round", "rank", "candidate", "kind", "dof", "permuted", "ess_N2", "p_value", "permutations",
-               "decision", "cv_reduction", "significant"});
-  w.comment(" candidates ranked on held-out residuals (N); p from the blocked permutation test; cv_reduction = "
-            "fractional SSE reduction of the probe under grouped cross-validation (" + r.cv_mode + ")");
+               "decision", "cv_reduction", "significant", "probe", "cv_probe"});
+  w.comment(" candidates ranked on held-out residuals (N); p from the blocked permutation test of the probe "
+            "family's maximum (probe: the family member with the largest statistic, dof its largest dof); "
+            "cv_reduction = fractional SSE reduction of the best probe (cv_probe) under grouped cross-validation (" +
+            r.cv_mode + ")");
   for (size_t k = 0; k < r.rankings.size(); ++k)
     for (size_t i = 0; i < r.rankings[k].size(); ++i) {
       const auto& c = r.rankings[k][i];
       w.row({std::to_string(k + 1), std::to_string(i + 1), c.name, c.kind, std::to_string(c.dof), c.permuted,
              fmt(c.stat, 6), fmt(c.p_value, 4), std::to_string(c.n_perm), c.decision, fmt(c.cv_reduction, 4),
-             c.significant ? "yes" : "no"});
+             c.significant ? "yes" : "no", c.probe, c.cv_probe});
     }
   return w;
 }
@@ -40,12 +42,14 @@ CsvWriter effects_table(const LoopResult& r) {
 
 CsvWriter steps_table(const LoopResult& r) {
   CsvWriter w({"step", "variable", "effect", "p_value", "threshold", "rms_before_N", "rms_after_N", "max_before_N",
-               "max_after_N"});
-  w.comment(" held-out (grouped cross-validation: " + r.cv_mode + ") error of the outlet force before and after each step");
+               "max_after_N", "class", "channel", "contribution_N2"});
+  w.comment(" held-out (grouped cross-validation: " + r.cv_mode + ") error of the outlet force before and after each "
+            "step, steps in report order (undeclared variables, then base-model terms, each by contribution); p: F "
+            "test of the effect given all the others");
   for (size_t k = 0; k < r.steps.size(); ++k) {
     const Step& s = r.steps[k];
     w.row({std::to_string(k + 1), s.variable, s.effect, fmt(s.p_value, 4), fmt(s.threshold, 3), fmt(s.rms_before, 5),
-           fmt(s.rms_after, 5), fmt(s.max_before, 5), fmt(s.max_after, 5)});
+           fmt(s.rms_after, 5), fmt(s.max_before, 5), fmt(s.max_after, 5), s.cls, s.channel, fmt(s.contribution, 4)});
   }
   return w;
 }
@@ -182,22 +186,34 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
     if (low.rfind("bending force:", 0) == 0 || low.rfind("pressure maps:", 0) == 0) continue;
     m << "- " << n << ".\n";
   }
-  m << "\n## Steps\n\n| step | variable | effect | p | threshold | RMS before (N) | RMS after (N) | max before (N) | max "
-       "after (N) |\n|---|---|---|---|---|---|---|---|---|\n";
+  m << "\n## Steps\n\nUndeclared variables (columns of the data) first, then terms adjusting the base model's own "
+       "inputs, each by its contribution; p is the F test of the effect given all the others.\n\n"
+       "| step | variable | class | channel | effect | p | threshold | RMS before (N) | RMS after (N) | max before (N) | max "
+       "after (N) |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (size_t k = 0; k < r.steps.size(); ++k) {
     const Step& s = r.steps[k];
-    m << "| " << k + 1 << " | " << s.variable << " | " << s.effect << " | " << fmt(s.p_value, 3) << " | "
+    m << "| " << k + 1 << " | " << s.variable << " | " << s.cls << " | " << s.channel << " | " << s.effect << " | "
+      << fmt(s.p_value, 3) << " | "
       << fmt(s.threshold, 3) << " | " << fmt(s.rms_before, 4) << " | " << fmt(s.rms_after, 4) << " | "
       << fmt(s.max_before, 4) << " | " << fmt(s.max_after, 4) << " |\n";
   }
   if (r.steps.empty())
-    m << "| – | (no step) | | | | " << fmt(r.cv.front().rms, 4) << " | | " << fmt(r.cv.front().max_abs, 4) << " | |\n";
+    m << "| – | (no step) | | | | | | " << fmt(r.cv.front().rms, 4) << " | | " << fmt(r.cv.front().max_abs, 4) << " | |\n";
   for (size_t k = 0; k < r.steps.size(); ++k)
     if (!r.steps[k].sign.empty()) m << "\nStep " << k + 1 << ": " << r.steps[k].sign << ".\n";
   m << "\nStopped because: " << r.stopped_because << ".\n";
   if (!r.remaining.empty()) {
-    m << "\nStructure remains unexplained; strongest remaining candidates:\n\n";
+    m << "\nNot at the noise level; strongest remaining candidates:\n\n";
     for (const auto& u : r.remaining) m << "- " << u << "\n";
+  }
+  if (!r.base_mismatch.empty()) {
+    m << "\nBase-model mismatch (remaining structure in the model's own inputs, reported apart from undeclared "
+         "variables):\n\n";
+    for (const auto& u : r.base_mismatch) m << "- " << u << "\n";
+  }
+  if (!r.removed.empty()) {
+    m << "\nRemoved by backfitting (not needed once the later effects were in):\n\n";
+    for (const auto& u : r.removed) m << "- " << u << "\n";
   }
   if (!r.screened.empty()) {
     m << "\nPassed the permutation screen; every effect tried for it (library and generic) failed the F test, the "

@@ -46,7 +46,7 @@ static Folds one_block(int tests, int rows_per_test) {
 
 BOOST_AUTO_TEST_CASE(categorical_probe_known_answer) {
   const Folds f = one_block(8, 2);
-  Candidate c{"lvl", "column", true, true, {}, {"A", "B"}};
+  Candidate c{"lvl", "column", true, true, {}, {"A", "B"}, ""};
   std::vector<double> r;
   for (int t = 0; t < 8; ++t)
     for (int k = 0; k < 2; ++k) {
@@ -69,7 +69,7 @@ BOOST_AUTO_TEST_CASE(categorical_probe_known_answer) {
 
 BOOST_AUTO_TEST_CASE(numeric_probe_known_answer) {
   const Folds f = one_block(4, 5);
-  Candidate c{"x", "column", false, false, {}, {}};
+  Candidate c{"x", "column", false, false, {}, {}, ""};
   std::vector<double> r;
   double ss = 0, mean = 0;
   for (int t = 0; t < 4; ++t)

@@ -1,0 +1,216 @@
+// The forms of an effect, compared by held-out data; see forms.hpp.
+#include "loop/forms.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include <boost/math/distributions/fisher_f.hpp>
+
+#include "core/csv.hpp"
+
+namespace drawbend::loop {
+
+namespace {
+
+bool generic_kind(EffectKind k) {
+  return k == EffectKind::drift || k == EffectKind::generic_linear || k == EffectKind::generic_saturating ||
+         k == EffectKind::categorical || k == EffectKind::generic_log || k == EffectKind::generic_exp ||
+         k == EffectKind::generic_linear_by || k == EffectKind::categorical_by || k == EffectKind::bending_linear;
+}
+
+bool applicable(const Design& d, const ModelSpec& s, EffectKind k, const std::string& var) {
+  for (const auto& e : s.effects)
+    if (e.kind == k && (e.variable == var || !generic_kind(k))) return false;
+  if (k == EffectKind::bending_tension && s.bending_linear) return false;
+  if (k == EffectKind::pin_surface && d.pins.size() < 2) return false;
+  if (k == EffectKind::depletion && !d.data->has_sliding) return false;
+  if ((k == EffectKind::direction_harmonic || k == EffectKind::direction_fourier ||
+       k == EffectKind::direction_level) && d.direction_is_level)
+    return false;
+  if (k == EffectKind::direction_level && d.n_dir_params < 1) return false;
+  if (k == EffectKind::direction_fourier && d.n_dir_params < 2) return false;
+  if (k == EffectKind::generic_linear || k == EffectKind::generic_saturating || k == EffectKind::drift ||
+      k == EffectKind::generic_log || k == EffectKind::generic_exp || k == EffectKind::generic_linear_by ||
+      k == EffectKind::bending_linear) {
+    try {
+      const std::vector<double> x = d.values(var);
+      double lo = INFINITY, hi = -INFINITY;
+      for (double v : x) lo = std::min(lo, v), hi = std::max(hi, v);
+      if (!(hi > lo)) return false;
+      if (k == EffectKind::generic_log && !(lo > 0)) return false;
+    } catch (const InputError&) {
+      return false;
+    }
+  }
+  if ((k == EffectKind::categorical || k == EffectKind::categorical_by) && d.data->extra_index(var) < 0) return false;
+  return true;
+}
+
+// Groups of a model input with at least two groups among the fixed-pin rows.
+std::vector<std::string> by_inputs(const Design& d) {
+  std::vector<std::string> out;
+  for (const std::string by : {"pin", "speed_mm_s", "direction_deg"}) {
+    int n = 0;
+    const std::vector<int> g = d.groups(by, &n);
+    std::set<int> seen;
+    for (size_t i = 0; i < g.size(); ++i)
+      if (!d.rows[i].rotating) seen.insert(g[i]);
+    if (seen.size() >= 2) out.push_back(by);
+  }
+  return out;
+}
+
+}  // namespace
+
+double f_test(const JointFit& a, const JointFit& b) {
+  const int q = b.p - a.p, dof = b.n - b.p;
+  if (q <= 0 || dof <= 0 || !(b.rss > 0)) return b.rss < a.rss ? 0.0 : 1.0;
+  const double F = ((a.rss - b.rss) / q) / (b.rss / dof);
+  if (!(F > 0)) return 1.0;
+  return boost::math::cdf(boost::math::complement(boost::math::fisher_f_distribution<double>(q, dof), F));
+}
+
+ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const std::string& variable,
+                      const std::string& by) {
+  ModelSpec t = s;
+  Effect e;
+  e.kind = k;
+  e.variable = variable;
+  e.by = by;
+  if (k == EffectKind::bending_tension) t.bending_linear = true;
+  if (k == EffectKind::categorical || k == EffectKind::categorical_by) {
+    std::vector<std::string> names;
+    d.levels(variable, &names);
+    e.n_levels = static_cast<int>(names.size());
+  }
+  if (!by.empty()) d.groups(by, &e.n_groups);
+  auto rss = [&](double lam) {
+    ModelSpec u = s;
+    Effect v = e;
+    v.lambda_mm = lam;
+    u.effects.push_back(v);
+    return fit_model(d, u).rss;
+  };
+  if (k == EffectKind::depletion) {  // lambda: grid, then golden section in log(lambda), by the full-data fit
+    const std::vector<double> grid = {10.0, 25.0, 50.0, 100.0, 200.0, 400.0, 800.0};
+    size_t bi = 0;
+    double best = INFINITY;
+    for (size_t i = 0; i < grid.size(); ++i) {
+      const double r = rss(grid[i]);
+      if (r < best) best = r, bi = i;
+    }
+    double a = std::log(grid[bi > 0 ? bi - 1 : 0]), b = std::log(grid[std::min(bi + 1, grid.size() - 1)]);
+    const double g = 0.5 * (std::sqrt(5.0) - 1);
+    double x1 = b - g * (b - a), x2 = a + g * (b - a), f1 = rss(std::exp(x1)), f2 = rss(std::exp(x2));
+    for (int it = 0; it < 20; ++it) {
+      if (f1 < f2) b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = rss(std::exp(x1));
+      else a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = rss(std::exp(x2));
+    }
+    e.lambda_mm = std::exp(0.5 * (a + b));
+    if (rss(e.lambda_mm) > best) e.lambda_mm = grid[bi];
+  }
+  if (k == EffectKind::generic_exp) {  // lambda on a grid of fractions of the column's range
+    const std::vector<double> x = d.values(variable);
+    double lo = INFINITY, hi = -INFINITY;
+    for (double v : x) lo = std::min(lo, v), hi = std::max(hi, v);
+    double best = INFINITY;
+    for (double frac : {0.03, 0.07, 0.15, 0.3, 0.6}) {
+      const double r = rss(frac * (hi - lo));
+      if (r < best) best = r, e.lambda_mm = frac * (hi - lo);
+    }
+  }
+  t.effects.push_back(e);
+  return t;
+}
+
+double mse_diff_se(const CvResult& a, const CvResult& b, const Folds& f) {
+  std::map<int, double> dt;
+  int n = 0;
+  for (size_t i = 0; i < a.resid.size(); ++i)
+    if (std::isfinite(a.resid[i]) && std::isfinite(b.resid[i]))
+      dt[f.test[i]] += a.resid[i] * a.resid[i] - b.resid[i] * b.resid[i], ++n;
+  if (dt.size() < 2 || n == 0) return 0;
+  double m = 0;
+  for (const auto& [t, v] : dt) m += v / dt.size();
+  double q = 0;
+  for (const auto& [t, v] : dt) q += (v - m) * (v - m);
+  return std::sqrt(q * dt.size() / (dt.size() - 1.0)) / n;
+}
+
+std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
+                                 const CvResult& cur, const JointFit& cur_joint, double thr, double min_gain_N,
+                                 const std::function<void(const std::string&)>& progress) {
+  struct Plan {
+    std::vector<std::pair<EffectKind, std::string>> parts;  // kind, by
+  };
+  std::vector<Plan> plans;
+  for (EffectKind k : effects_for(c.name))
+    if (applicable(d, spec, k, c.name)) plans.push_back({{{k, ""}}});
+  if (c.kind == "column") {
+    const auto bys = by_inputs(d);
+    auto add = [&](EffectKind k, const std::string& by = "") {
+      if (applicable(d, spec, k, c.name)) plans.push_back({{{k, by}}});
+    };
+    if (c.categorical) {
+      add(EffectKind::categorical);
+      if (c.levels.size() <= 4)
+        for (const auto& by : bys) add(EffectKind::categorical_by, by);
+    } else {
+      for (EffectKind k : {EffectKind::generic_linear, EffectKind::generic_saturating, EffectKind::generic_log,
+                           EffectKind::generic_exp})
+        add(k);
+      std::set<double> distinct;
+      for (double v : c.x)
+        if (std::isfinite(v)) distinct.insert(v);
+      if (distinct.size() >= 3 && distinct.size() <= 8) add(EffectKind::categorical);
+      for (const auto& by : bys) add(EffectKind::generic_linear_by, by);
+      if (applicable(d, spec, EffectKind::bending_linear, c.name)) {
+        plans.push_back({{{EffectKind::bending_linear, ""}}});
+        if (applicable(d, spec, EffectKind::generic_linear, c.name))
+          plans.push_back({{{EffectKind::bending_linear, ""}, {EffectKind::generic_linear, ""}}});
+      }
+    }
+  }
+  std::vector<FormTrial> out;
+  for (const Plan& p : plans) {
+    FormTrial t;
+    t.spec = spec;
+    bool bend = false, fric = false;
+    for (const auto& [k, by] : p.parts) {
+      t.spec = with_effect(d, t.spec, k, c.name, by);
+      t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (by.empty() ? "" : " (" + by + ")");
+      t.meaning += (t.meaning.empty() ? "" : "; ") + effect_meaning(k);
+      (acts_on_bending(k) ? bend : fric) = true;
+    }
+    t.channel = bend && fric ? "both" : bend ? "bending" : "friction";
+    if (progress) progress("  " + c.name + ": trying " + t.name);
+    t.cv = cross_validate(d, t.spec, folds);
+    t.joint = fit_joint(d, t.spec);
+    t.q = t.joint.p - cur_joint.p;
+    t.p_value = f_test(cur_joint, t.joint);
+    const double gain = std::sqrt(std::max(0.0, cur.rms * cur.rms - t.cv.rms * t.cv.rms));
+    t.passed = t.p_value <= thr && gain >= min_gain_N && t.cv.rms < cur.rms;
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+int choose_form(const std::vector<FormTrial>& t, const Folds& f) {
+  int best = -1;
+  for (size_t i = 0; i < t.size(); ++i)
+    if (t[i].passed && (best < 0 || t[i].cv.rms < t[best].cv.rms)) best = static_cast<int>(i);
+  if (best < 0) return -1;
+  int keep = best;
+  const double mse_best = t[best].cv.rms * t[best].cv.rms;
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (!t[i].passed || static_cast<int>(i) == best) continue;
+    const double mse = t[i].cv.rms * t[i].cv.rms;
+    if (mse - mse_best > mse_diff_se(t[i].cv, t[best].cv, f)) continue;
+    if (t[i].q < t[keep].q || (t[i].q == t[keep].q && t[i].cv.rms < t[keep].cv.rms)) keep = static_cast<int>(i);
+  }
+  return keep;
+}
+
+}  // namespace drawbend::loop

@@ -1,0 +1,61 @@
+#pragma once
+// The forms an effect may take, compared by held-out data (issue 50).
+//
+// For a confirmed candidate variable the loop tries every applicable form:
+//   library    the physical effects effects_for() names for it (pressure_mu,
+//              stribeck, depletion, direction, pin surface, drift, ...);
+//   generic    for a column of the data (not one of the model's inputs):
+//              categorical: group factor, group factor per pin / speed /
+//              direction group; numeric: linear, saturating tanh, logarithmic
+//              (positive columns), saturating exponential (lambda on a grid),
+//              levels (3-8 distinct values), linear per pin / speed /
+//              direction group, and the bending channel (F_B + c_pin z) alone
+//              or with a linear friction term ("both").
+// Each form is added to the current model and must pass three gates as before:
+// the nested-model F test at the Bonferroni threshold, a lower held-out RMS,
+// and the minimum effect.  Among the forms that pass, the one kept is the
+// SIMPLEST (fewest added parameters) whose held-out mean squared error is
+// within one standard error of the best form's (the standard error of the
+// difference of the two, from the per-test sums of squared held-out residuals);
+// so the library's physical forms are members of the family, not a gate before it.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "loop/candidates.hpp"
+#include "loop/model.hpp"
+
+namespace drawbend::loop {
+
+struct FormTrial {
+  ModelSpec spec;
+  CvResult cv;
+  JointFit joint;
+  double p_value = 1;  ///< nested-model F test against the current model
+  int q = 0;           ///< parameters added
+  std::string name, meaning, channel;  ///< channel: friction, bending or both
+  bool passed = false;
+};
+
+/// Nested-model F test on the joint fits (bending and friction together).
+double f_test(const JointFit& a, const JointFit& b);
+
+/// The model s with effect k on `variable` added (depletion and the saturating
+/// exponential get their length on a grid by the full-data fit).
+ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const std::string& variable,
+                      const std::string& by = "");
+
+/// Every applicable form for candidate c, each cross-validated and tested.
+std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
+                                 const CvResult& cur, const JointFit& cur_joint, double threshold, double min_gain_N,
+                                 const std::function<void(const std::string&)>& progress);
+
+/// Index of the form kept (simplest within one standard error of the best
+/// among those passed), -1 when none passed.
+int choose_form(const std::vector<FormTrial>& t, const Folds& f);
+
+/// Standard error of the difference of two held-out mean squared errors, from
+/// per-test sums (rows finite in both).
+double mse_diff_se(const CvResult& a, const CvResult& b, const Folds& f);
+
+}  // namespace drawbend::loop

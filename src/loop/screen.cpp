@@ -1,0 +1,401 @@
+// The screen: every candidate probed by a family of probes, one permutation
+// test of the family's maximum; see candidates.hpp.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <random>
+#include <set>
+
+#include <boost/math/distributions/fisher_f.hpp>
+#include <boost/math/special_functions/beta.hpp>
+
+#include "loop/candidates.hpp"
+#include "loop/effects.hpp"
+#include "loop/fast_mod.hpp"
+
+namespace drawbend::loop {
+
+namespace {
+
+enum class Shape { levels, wlevels, quad, slopes, wslope };
+
+// One probe of a candidate over units (tests or rows).  Its residual is centred
+// per stratum (a block, or a block x group of a model input); ur/urw/un/uw2 are
+// per unit: sum of centred residual, of weight x centred residual, row count
+// and sum of squared weights.
+struct ProbeDef {
+  Shape shape = Shape::levels;
+  std::string label;
+  std::vector<int> stratum;  // per unit
+  int nstrata = 1, nlev = 1, dof = 1;
+  std::vector<double> ur, urw, un, uw2;
+  double sst = 0;  // sum of squares of the centred residual (constant under permutation)
+  // row-level data for the held-out probe
+  std::vector<int> row_stratum;
+  mutable std::vector<double> s1, s2, s3, s4;
+  // Explained sum of squares with the unit values xz (z-score) and xl (level).
+  double ess(const std::vector<double>& xz, const std::vector<int>& xl) const {
+    const size_t U = ur.size();
+    switch (shape) {
+      case Shape::levels:
+      case Shape::wlevels: {
+        const bool w = shape == Shape::wlevels;
+        s1.assign(static_cast<size_t>(nstrata) * nlev, 0.0);
+        s2.assign(s1.size(), 0.0);
+        for (size_t u = 0; u < U; ++u) {
+          const size_t k = static_cast<size_t>(stratum[u]) * nlev + static_cast<size_t>(xl[u]);
+          s1[k] += w ? urw[u] : ur[u], s2[k] += w ? uw2[u] : un[u];
+        }
+        double e = 0;
+        for (size_t k = 0; k < s1.size(); ++k)
+          if (s2[k] > 0) e += s1[k] * s1[k] / s2[k];
+        return e;
+      }
+      case Shape::slopes: {  // one centred slope per stratum
+        s1.assign(nstrata, 0.0), s2.assign(nstrata, 0.0), s3.assign(nstrata, 0.0), s4.assign(nstrata, 0.0);
+        for (size_t u = 0; u < U; ++u) {
+          const int s = stratum[u];
+          s1[s] += un[u] * xz[u], s2[s] += un[u] * xz[u] * xz[u], s3[s] += xz[u] * ur[u], s4[s] += un[u];
+        }
+        double e = 0;
+        for (int s = 0; s < nstrata; ++s) {
+          const double a = s4[s] > 0 ? s2[s] - s1[s] * s1[s] / s4[s] : 0;
+          if (a > 1e-12) e += s3[s] * s3[s] / a;
+        }
+        return e;
+      }
+      case Shape::wslope: {  // one slope on z w (multiplicative: the effect scales with dF/dmu)
+        double b = 0, a = 0;
+        for (size_t u = 0; u < U; ++u) b += xz[u] * urw[u], a += xz[u] * xz[u] * uw2[u];
+        return a > 1e-12 ? b * b / a : 0.0;
+      }
+      case Shape::quad: {  // z and z^2, centred per stratum
+        s1.assign(nstrata, 0.0), s2.assign(nstrata, 0.0), s4.assign(nstrata, 0.0);
+        double q11 = 0, q12 = 0, q22 = 0, b1 = 0, b2 = 0;
+        for (size_t u = 0; u < U; ++u) {
+          const double x = xz[u], x2 = x * x, n = un[u];
+          q11 += n * x2, q12 += n * x2 * x, q22 += n * x2 * x2;
+          s1[stratum[u]] += n * x, s2[stratum[u]] += n * x2, s4[stratum[u]] += n;
+          b1 += x * ur[u], b2 += x2 * ur[u];
+        }
+        for (int k = 0; k < nstrata; ++k)
+          if (s4[k] > 0) q11 -= s1[k] * s1[k] / s4[k], q12 -= s1[k] * s2[k] / s4[k], q22 -= s2[k] * s2[k] / s4[k];
+        if (dof == 1) return q11 > 1e-12 ? b1 * b1 / q11 : 0.0;
+        const double det = q11 * q22 - q12 * q12;
+        if (det <= 1e-12 * std::max(1.0, q11 * q22)) return q11 > 1e-12 ? b1 * b1 / q11 : 0.0;
+        const double c1 = (q22 * b1 - q12 * b2) / det, c2 = (q11 * b2 - q12 * b1) / det;
+        return c1 * b1 + c2 * b2;
+      }
+    }
+    return 0;
+  }
+};
+
+// Held-out fractional reduction of the residual SSE by a probe, with the same
+// folds as the model: on the training rows of each fold the probe is fitted
+// (stratum means plus its shape), the held-out rows predicted; against the
+// stratum means alone.  z, l, w per row.
+double probe_cv(const ProbeDef& p, const std::vector<int>& rows, const std::vector<double>& z,
+                const std::vector<int>& l, const std::vector<double>& w, const std::vector<double>& r,
+                const Folds& f) {
+  double sse0 = 0, sse1 = 0;
+  const int S = p.nstrata, L = p.nlev;
+  for (int k = 0; k < f.k; ++k) {
+    std::vector<double> sm(S, 0), sn(S, 0), sx(S, 0), sxx(S, 0), sxr(S, 0), lm(static_cast<size_t>(S) * L, 0),
+        ln(static_cast<size_t>(S) * L, 0);
+    double q11 = 0, q12 = 0, q22 = 0, b1 = 0, b2 = 0;
+    for (int i : rows)
+      if (f.fold[i] != k) sm[p.row_stratum[i]] += r[i], sn[p.row_stratum[i]] += 1;
+    for (int s = 0; s < S; ++s) sm[s] = sn[s] > 0 ? sm[s] / sn[s] : 0;
+    std::vector<double> mz(S, 0), mz2(S, 0);
+    for (int i : rows)
+      if (f.fold[i] != k) mz[p.row_stratum[i]] += z[i] / sn[p.row_stratum[i]], mz2[p.row_stratum[i]] += z[i] * z[i] / sn[p.row_stratum[i]];
+    for (int i : rows) {
+      if (f.fold[i] == k) continue;
+      const int s = p.row_stratum[i];
+      const double rc = r[i] - sm[s];
+      switch (p.shape) {
+        case Shape::levels: lm[static_cast<size_t>(s) * L + l[i]] += rc, ln[static_cast<size_t>(s) * L + l[i]] += 1; break;
+        case Shape::wlevels:
+          lm[static_cast<size_t>(s) * L + l[i]] += w[i] * rc, ln[static_cast<size_t>(s) * L + l[i]] += w[i] * w[i];
+          break;
+        case Shape::slopes: sx[s] += (z[i] - mz[s]) * (z[i] - mz[s]), sxr[s] += (z[i] - mz[s]) * rc; break;
+        case Shape::wslope: q11 += z[i] * z[i] * w[i] * w[i], b1 += z[i] * w[i] * rc; break;
+        case Shape::quad: {
+          const double f1 = z[i] - mz[s], f2 = z[i] * z[i] - mz2[s];
+          q11 += f1 * f1, q12 += f1 * f2, q22 += f2 * f2, b1 += f1 * rc, b2 += f2 * rc;
+          break;
+        }
+      }
+    }
+    double c1 = 0, c2 = 0;
+    if (p.shape == Shape::quad) {
+      const double det = q11 * q22 - q12 * q12;
+      if (p.dof == 2 && det > 1e-12 * std::max(1.0, q11 * q22)) c1 = (q22 * b1 - q12 * b2) / det, c2 = (q11 * b2 - q12 * b1) / det;
+      else if (q11 > 1e-12) c1 = b1 / q11;
+    }
+    if (p.shape == Shape::wslope && q11 > 1e-12) c1 = b1 / q11;
+    for (int i : rows) {
+      if (f.fold[i] != k) continue;
+      const int s = p.row_stratum[i];
+      if (sn[s] <= 0) continue;
+      double pr = sm[s];
+      const size_t li = static_cast<size_t>(s) * L + l[i];
+      switch (p.shape) {
+        case Shape::levels: pr += ln[li] > 0 ? lm[li] / ln[li] : 0; break;
+        case Shape::wlevels: pr += ln[li] > 0 ? w[i] * lm[li] / ln[li] : 0; break;
+        case Shape::slopes: pr += sx[s] > 1e-12 ? sxr[s] / sx[s] * (z[i] - mz[s]) : 0; break;
+        case Shape::wslope: pr += c1 * z[i] * w[i]; break;
+        case Shape::quad: pr += c1 * (z[i] - mz[s]) + c2 * (z[i] * z[i] - mz2[s]); break;
+      }
+      sse0 += (r[i] - sm[s]) * (r[i] - sm[s]);
+      sse1 += (r[i] - pr) * (r[i] - pr);
+    }
+  }
+  return sse0 > 0 ? 1 - sse1 / sse0 : 0.0;
+}
+
+// The names by which a candidate is itself one of the model's inputs.
+bool same_input(const std::string& cand, const std::string& input) {
+  if (input == "pin") return cand == "pin" || cand == "pin_diameter_mm" || cand == "inv_R_per_mm";
+  return cand == input;
+}
+
+}  // namespace
+
+int sequential_decision(int k, int b, double thr, double conf) {
+  if (b <= 0) return 0;
+  using boost::math::ibeta_inv;
+  const double lo = k > 0 ? ibeta_inv(static_cast<double>(k), static_cast<double>(b - k + 1), conf) : 0.0;
+  const double hi = k < b ? ibeta_inv(static_cast<double>(k + 1), static_cast<double>(b - k), 1 - conf) : 1.0;
+  if (hi <= thr) return 1;
+  if (lo > thr) return -1;
+  return 0;
+}
+
+std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands, const std::vector<double>& resid,
+                                             const Folds& f, int permutations, std::uint64_t seed, double alpha,
+                                             const ScreenContext* ctx) {
+  std::vector<CandidateResult> out;
+  const double thr = alpha / std::max<size_t>(1, cands.size());
+  const size_t n = resid.size();
+  int nblocks = 0;
+  for (int b : f.block) nblocks = std::max(nblocks, b + 1);
+  const bool weighted = ctx && ctx->mu_weight.size() == n;
+  for (size_t ci = 0; ci < cands.size(); ++ci) {
+    const Candidate& c = cands[ci];
+    std::vector<int> rows;
+    std::set<double> distinct;
+    for (size_t i = 0; i < n; ++i)
+      if (std::isfinite(c.x[i]) && std::isfinite(resid[i])) {
+        rows.push_back(static_cast<int>(i));
+        distinct.insert(c.x[i]);
+      }
+    CandidateResult res;
+    res.name = c.name;
+    res.kind = c.kind;
+    res.permuted = c.test_level ? "between tests" : "within tests";
+    res.decision = "not significant";
+    if (distinct.size() < 2) {
+      res.p_value = 1;
+      out.push_back(res);
+      continue;
+    }
+    if (is_identity(c.name)) {  // random effect: one-way ANOVA of tests within blocks
+      std::vector<double> bs(nblocks, 0.0), bn(nblocks, 0.0), rc(n, 0.0);
+      for (int i : rows) bs[f.block[i]] += resid[i], bn[f.block[i]] += 1;
+      for (int i : rows) rc[i] = resid[i] - bs[f.block[i]] / bn[f.block[i]];
+      std::map<int, std::pair<double, double>> tsum;
+      std::set<int> blocks;
+      double sst = 0;
+      for (int i : rows) {
+        auto& t = tsum[f.test[i]];
+        t.first += rc[i], t.second += 1;
+        sst += rc[i] * rc[i];
+        blocks.insert(f.block[i]);
+      }
+      double ssb = 0;
+      for (auto& [t, v] : tsum) ssb += v.first * v.first / v.second;
+      const double db = static_cast<double>(tsum.size()) - blocks.size(), dw = rows.size() - tsum.size();
+      res.permuted = "random effect (F test, not permuted)";
+      res.dof = static_cast<int>(db);
+      res.stat = ssb;
+      if (db > 0 && dw > 0 && sst - ssb > 0) {
+        const double msb = ssb / db, msw = (sst - ssb) / dw, F = msb / msw;
+        res.p_value = boost::math::cdf(boost::math::complement(boost::math::fisher_f_distribution<double>(db, dw), F));
+        const double n0 = static_cast<double>(rows.size()) / tsum.size();
+        res.sd_between = std::sqrt(std::max(0.0, (msb - msw) / n0));
+      }
+      res.significant = res.p_value <= thr;
+      res.decision = res.significant ? "significant (between-test scatter)" : "not significant";
+      out.push_back(res);
+      continue;
+    }
+    // Row values: z-score (numeric) and level index (categorical; numeric with
+    // at most 8 distinct values: one level each; else 5 quantile bins).
+    std::vector<double> z(n, 0.0);
+    std::vector<int> lv(n, 0);
+    int nlev = 1;
+    if (c.categorical) {
+      for (int i : rows) lv[i] = static_cast<int>(c.x[i]), nlev = std::max(nlev, lv[i] + 1);
+    } else {
+      double m = 0, q = 0;
+      for (int i : rows) m += c.x[i];
+      m /= rows.size();
+      for (int i : rows) q += (c.x[i] - m) * (c.x[i] - m);
+      const double sd = std::sqrt(q / rows.size());
+      for (int i : rows) z[i] = sd > 0 ? (c.x[i] - m) / sd : 0;
+      std::vector<double> dv(distinct.begin(), distinct.end());
+      if (dv.size() <= 8) {
+        for (int i : rows) lv[i] = static_cast<int>(std::lower_bound(dv.begin(), dv.end(), c.x[i]) - dv.begin());
+        nlev = static_cast<int>(dv.size());
+      } else {
+        std::vector<double> xs;
+        for (int i : rows) xs.push_back(c.x[i]);
+        std::sort(xs.begin(), xs.end());
+        std::vector<double> cut;
+        for (int b = 1; b < 5; ++b) cut.push_back(xs[xs.size() * b / 5]);
+        for (int i : rows) lv[i] = static_cast<int>(std::upper_bound(cut.begin(), cut.end(), c.x[i]) - cut.begin());
+        nlev = 5;
+      }
+    }
+    // Units and permutation groups.
+    std::vector<int> unit_of(n, -1), unit_block;
+    std::vector<std::vector<int>> groups;
+    std::vector<double> xz;
+    std::vector<int> xl;
+    {
+      std::map<int, int> unit_ix, group_ix;
+      for (int i : rows) {
+        const int key = c.test_level ? f.test[i] : i;
+        auto [it, fresh] = unit_ix.emplace(key, static_cast<int>(xz.size()));
+        if (fresh) {
+          xz.push_back(z[i]), xl.push_back(lv[i]), unit_block.push_back(f.block[i]);
+          const int g = c.test_level ? f.block[i] : f.test[i];
+          auto [gt, gfresh] = group_ix.emplace(g, static_cast<int>(groups.size()));
+          if (gfresh) groups.push_back({});
+          groups[gt->second].push_back(it->second);
+        }
+        unit_of[i] = it->second;
+      }
+    }
+    const size_t U = xz.size();
+    // The probe family.
+    std::vector<ProbeDef> probes;
+    auto add = [&](Shape shape, const std::string& label, const std::vector<int>& row_group, int ngroups) {
+      ProbeDef p;
+      p.shape = shape;
+      p.label = label;
+      p.nlev = nlev;
+      p.row_stratum.assign(n, 0);
+      p.nstrata = nblocks * ngroups;
+      for (int i : rows) p.row_stratum[i] = f.block[i] * ngroups + (row_group.empty() ? 0 : row_group[i]);
+      std::vector<double> sm(p.nstrata, 0.0), sn(p.nstrata, 0.0);
+      for (int i : rows) sm[p.row_stratum[i]] += resid[i], sn[p.row_stratum[i]] += 1;
+      p.stratum.assign(U, 0);
+      p.ur.assign(U, 0.0), p.urw.assign(U, 0.0), p.un.assign(U, 0.0), p.uw2.assign(U, 0.0);
+      for (int i : rows) {
+        const int s = p.row_stratum[i], u = unit_of[i];
+        const double rc = resid[i] - sm[s] / sn[s], w = weighted ? ctx->mu_weight[i] : 1.0;
+        p.stratum[u] = s;  // a test lies in one stratum (blocks and model inputs are constant within a test)
+        p.ur[u] += rc, p.urw[u] += w * rc, p.un[u] += 1, p.uw2[u] += w * w;
+        p.sst += rc * rc;
+      }
+      // degrees of freedom on the observed data
+      std::map<int, std::set<int>> lev_in;
+      std::map<int, std::set<double>> z_in;
+      for (int i : rows) lev_in[p.row_stratum[i]].insert(lv[i]), z_in[p.row_stratum[i]].insert(z[i]);
+      int dof = 0;
+      if (shape == Shape::levels || shape == Shape::wlevels)
+        for (const auto& [s, v] : lev_in) dof += static_cast<int>(v.size()) - 1 + (shape == Shape::wlevels ? 1 : 0);
+      else if (shape == Shape::slopes)
+        for (const auto& [s, v] : z_in) dof += v.size() > 1;
+      else if (shape == Shape::quad)
+        dof = distinct.size() >= 4 ? 2 : 1;
+      else
+        dof = 1;
+      p.dof = dof;
+      if (dof > 0 && p.sst > 0) probes.push_back(std::move(p));
+    };
+    const std::vector<int> none;
+    if (c.categorical) add(Shape::levels, "levels", none, 1);
+    else {
+      add(Shape::quad, distinct.size() >= 4 ? "linear + quadratic" : "linear", none, 1);
+      if (nlev > 2) add(Shape::levels, distinct.size() <= 8 ? "levels" : "5 quantile bins", none, 1);
+    }
+    if (weighted) add(c.categorical ? Shape::wlevels : Shape::wslope, "scaled with dF/dmu", none, 1);
+    if (ctx)
+      for (const auto& [input, g] : ctx->modifiers) {
+        if (same_input(c.name, input)) continue;
+        int ng = 0;
+        std::set<int> seen;
+        for (int i : rows) seen.insert(g[i]), ng = std::max(ng, g[i] + 1);
+        if (seen.size() < 2) continue;
+        add(c.categorical || distinct.size() <= 8 ? Shape::levels : Shape::slopes, "per " + input, g, ng);
+      }
+    int dof_max = 0;
+    for (const auto& p : probes) dof_max = std::max(dof_max, p.dof);
+    res.dof = dof_max;
+    if (probes.empty()) {
+      res.p_value = 1;
+      out.push_back(res);
+      continue;
+    }
+    // Statistic: the family's largest explained fraction per degree of freedom.
+    auto stat = [&](const std::vector<double>& a, const std::vector<int>& b, int* best) {
+      double t = -1;
+      for (size_t j = 0; j < probes.size(); ++j) {
+        const double v = probes[j].ess(a, b) / (probes[j].dof * probes[j].sst);
+        if (v > t) t = v, *best = static_cast<int>(j);
+      }
+      return t;
+    };
+    int best = 0;
+    const double T = stat(xz, xl, &best);
+    res.stat = probes[best].ess(xz, xl);
+    res.probe = probes[best].label;
+    // Held-out gain: the best of the probes (a probe of the wrong shape must not hide a variable).
+    std::vector<double> wrow(n, 1.0);
+    if (weighted) wrow = ctx->mu_weight;
+    res.cv_reduction = -INFINITY;
+    for (const auto& p : probes) {
+      const double cv = probe_cv(p, rows, z, lv, wrow, resid, f);
+      if (cv > res.cv_reduction) res.cv_reduction = cv, res.cv_probe = p.label;
+    }
+    std::mt19937_64 rng(seed + 7919 * ci);
+    int ge = 0, b = 0, dec = 0, dummy = 0;
+    std::vector<int> perm(U);
+    for (size_t u = 0; u < U; ++u) perm[u] = static_cast<int>(u);
+    std::vector<double> pz(U);
+    std::vector<int> pl(U);
+    const int cap = std::max(1, permutations);
+    size_t kmax = 1;
+    for (const auto& g : groups) kmax = std::max(kmax, g.size());
+    const FastMod mod(kmax);  // mod(rng(), k) == rng() % k, without the division
+    for (int batch = 100; b < cap; batch = std::min(cap - b, 2 * batch)) {
+      for (int j = 0; j < batch; ++j, ++b) {
+        for (const auto& g : groups)  // Fisher-Yates within the group
+          for (size_t k = g.size(); k > 1; --k) std::swap(perm[g[k - 1]], perm[g[mod(rng(), k)]]);
+        for (size_t u = 0; u < U; ++u) pz[u] = xz[perm[u]], pl[u] = xl[perm[u]];
+        if (stat(pz, pl, &dummy) >= T * (1 - 1e-12)) ++ge;
+      }
+      dec = sequential_decision(ge, b, thr);
+      if (dec != 0) break;
+    }
+    res.n_perm = b;
+    res.p_value = (1.0 + ge) / (1.0 + b);
+    res.significant = dec > 0 && res.cv_reduction > 0;
+    res.decision = dec > 0 ? (res.cv_reduction > 0 ? "significant" : "significant, no held-out gain")
+                           : dec < 0 ? "not significant" : "undecided";
+    out.push_back(res);
+  }
+  std::stable_sort(out.begin(), out.end(), [](const CandidateResult& a, const CandidateResult& b) {
+    if (a.significant != b.significant) return a.significant;
+    if (a.significant) return a.cv_reduction > b.cv_reduction;
+    return a.p_value < b.p_value;
+  });
+  return out;
+}
+
+}  // namespace drawbend::loop

@@ -1,0 +1,160 @@
+// The loop's screen, forms and bending channel on small cases with known
+// answers (src/loop/screen.cpp, forms.cpp, model.cpp; issue 50).
+//  - Mid-level peak: a 3-level numeric test-level column x in {1, 2, 3}, 8
+//    tests per level, residual +2 on level 2 and -1 on levels 1 and 3 (mean
+//    zero).  Its linear part is exactly zero (the level means are symmetric
+//    about x = 2), so a line sees nothing; the family's levels probe explains
+//    all of it: explained SS = sum r^2 (probe "levels"), p small.
+//  - One-cell effect: residual = z - mean(z) on the rows of pin group 0 only
+//    and zero on the other two groups.  With the model's inputs as modifiers the probe
+//    "per pin" explains it exactly (explained SS = sum r^2).
+//  - Simplest within one SE: two forms, the richer one (q = 3) lower in
+//    held-out MSE by less than one standard error of the difference, the
+//    simpler (q = 1) is kept; when the gap is many standard errors the better
+//    one is kept.  A form that failed a gate is never kept.
+//  - Bending channel: noise-free rows with F_B = b0 + b1 F + c z on every row
+//    (rotating and fixed) and constant mu: the fit with a bending_linear effect
+//    on z recovers mu exactly and leaves rss ~ 0; without it rss > 0.
+#define BOOST_TEST_MODULE loop_screen
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+
+#include "core/csv.hpp"
+#include "loop/candidates.hpp"
+#include "loop/forms.hpp"
+#include "loop/model.hpp"
+
+using namespace drawbend::loop;
+namespace tt = boost::test_tools;
+
+static Folds one_block(int tests, int rows_per_test) {
+  Folds f;
+  f.k = 2;
+  for (int t = 0; t < tests; ++t)
+    for (int r = 0; r < rows_per_test; ++r) {
+      f.block.push_back(0);
+      f.test.push_back(t);
+      f.fold.push_back((t / 3) % 2);
+    }
+  return f;
+}
+
+BOOST_AUTO_TEST_CASE(mid_level_peak_seen_as_levels) {
+  const Folds f = one_block(24, 2);
+  Candidate c{"lube_g", "column", false, true, {}, {}, ""};
+  std::vector<double> r;
+  double ss = 0;
+  for (int t = 0; t < 24; ++t)
+    for (int k = 0; k < 2; ++k) {
+      const int lv = 1 + t % 3;
+      c.x.push_back(lv);
+      r.push_back(lv == 2 ? 2.0 : -1.0);
+      ss += r.back() * r.back();
+    }
+  const auto res = rank_candidates({c}, r, f, 2000, 7, 0.05);
+  BOOST_TEST(res[0].probe == "levels");
+  BOOST_TEST(res[0].stat == ss, tt::tolerance(1e-9));
+  BOOST_TEST(res[0].significant);
+  BOOST_TEST(res[0].p_value <= 0.01);
+}
+
+BOOST_AUTO_TEST_CASE(one_cell_effect_seen_per_group) {
+  const int tests = 30, rows = 4;
+  const Folds f = one_block(tests, rows);
+  Candidate c{"temperature_C", "column", false, false, {}, {}, ""};
+  ScreenContext ctx;
+  std::vector<int> pin;
+  std::vector<double> r;
+  double ss = 0;
+  for (int t = 0; t < tests; ++t)
+    for (int k = 0; k < rows; ++k) {
+      const double z = std::sin(1.3 * t + 0.7 * k);  // varies within tests
+      c.x.push_back(z);
+      pin.push_back(t % 3);
+      r.push_back(t % 3 == 0 ? z : 0.0);
+    }
+  double mz = 0;  // group 0's residual is its z minus its mean (centred, as the probe centres per group)
+  int n0 = 0;
+  for (size_t i = 0; i < r.size(); ++i)
+    if (pin[i] == 0) mz += c.x[i], ++n0;
+  mz /= n0;
+  for (size_t i = 0; i < r.size(); ++i)
+    if (pin[i] == 0) r[i] = c.x[i] - mz, ss += r[i] * r[i];
+  ctx.modifiers.push_back({"pin", pin});
+  const auto res = rank_candidates({c}, r, f, 2000, 7, 0.05, &ctx);
+  BOOST_TEST(res[0].probe == "per pin");
+  BOOST_TEST(res[0].stat == ss, tt::tolerance(1e-9));
+  BOOST_TEST(res[0].significant);
+}
+
+BOOST_AUTO_TEST_CASE(simplest_within_one_se) {
+  Folds f;
+  f.k = 2;
+  const int tests = 40, rows = 5;
+  for (int t = 0; t < tests; ++t)
+    for (int k = 0; k < rows; ++k) f.test.push_back(t), f.block.push_back(0), f.fold.push_back(t % 2);
+  auto trial = [&](int q, double scale, double phase) {
+    FormTrial t;
+    t.q = q;
+    t.passed = true;
+    double ss = 0;
+    for (int i = 0; i < tests * rows; ++i) {
+      const double e = scale * (1 + 0.3 * std::sin(0.37 * i + phase));
+      t.cv.resid.push_back(e);
+      ss += e * e;
+    }
+    t.cv.rms = std::sqrt(ss / (tests * rows));
+    return t;
+  };
+  // richer form: a little better on average, but not by one SE (the difference wobbles)
+  std::vector<FormTrial> close = {trial(1, 1.0, 0.0), trial(3, 0.995, 1.5)};
+  BOOST_TEST(close[1].cv.rms < close[0].cv.rms);
+  BOOST_TEST(close[0].cv.rms * close[0].cv.rms - close[1].cv.rms * close[1].cv.rms <
+             mse_diff_se(close[0].cv, close[1].cv, f));
+  BOOST_TEST(choose_form(close, f) == 0);
+  // far better: many SE
+  std::vector<FormTrial> far = {trial(1, 1.0, 0.0), trial(3, 0.5, 1.5)};
+  BOOST_TEST(choose_form(far, f) == 1);
+  far[1].passed = false;
+  BOOST_TEST(choose_form(far, f) == 0);
+  far[0].passed = false;
+  BOOST_TEST(choose_form(far, f) == -1);
+}
+
+BOOST_AUTO_TEST_CASE(bending_channel_recovers_exact_data) {
+  Dataset d;
+  d.has_sliding = d.has_time = false;
+  d.extra_columns = {"thickness_mm"};
+  const double mu = 0.1, b0 = 300, b1 = -0.05, c = 12.0;
+  int test = 0;
+  for (bool rot : {true, false})
+    for (int t = 0; t < 4; ++t, ++test)
+      for (int k = 0; k < 5; ++k) {
+        Sample s;
+        s.test_id = (rot ? "r" : "f") + std::to_string(test);
+        s.pin_d_mm = 12.7;
+        s.rotating = rot;
+        s.speed_mm_s = 25.4;
+        s.lubricant = "oil";
+        s.back_tension_N = 1400 + 100 * k;
+        const double th = 1.0 + 0.02 * ((t * 3 + k) % 5);  // varies within and between tests
+        s.extra = {drawbend::fmt(th)};
+        d.rows.push_back(s);
+      }
+  const MapLibrary maps = MapLibrary::stand_in({12.7});
+  Design des = make_design(d, maps);
+  const std::vector<double> z = des.zscore("thickness_mm");
+  for (size_t i = 0; i < d.rows.size(); ++i) {
+    const double F = d.rows[i].back_tension_N;
+    d.rows[i].outlet_force_N = F + b0 + b1 * F + c * z[i] + (d.rows[i].rotating ? 0.0 : F * (std::exp(mu * M_PI / 2) - 1));
+  }
+  des = make_design(d, maps);
+  ModelSpec spec;
+  const Fit plain = fit_model(des, spec);
+  spec.effects.push_back(Effect{EffectKind::bending_linear, "thickness_mm", 0, 0, "", 0});
+  const Fit f = fit_model(des, spec);
+  BOOST_TEST(plain.rss > 1.0);
+  BOOST_TEST(f.rss < 1e-10);
+  BOOST_TEST(f.theta[0] == mu, tt::tolerance(1e-8));
+  BOOST_TEST(f.b0[0] == b0, tt::tolerance(1e-8));
+}
