@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/csv.hpp"
+#include "material/yield_points.hpp"
 
 namespace drawbend::material {
 
@@ -92,11 +93,6 @@ void spectral_gradient(const Exponent& E, const double X[6], const double x[3], 
   }
 }
 
-void unit_tension(double t, double s[6]) {
-  const double c = std::cos(t), n = std::sin(t);
-  s[0] = c * c, s[1] = n * n, s[2] = 0, s[3] = c * n, s[4] = 0, s[5] = 0;
-}
-
 // The scaled deviator's transforms, their principal values and Phi (of s / scale).
 struct Eval {
   double scale = 0, X1[6], X2[6], x[3], y[3], phi = 0;
@@ -148,8 +144,7 @@ Yld2004 Yld2004::isotropic(double a) {
 }
 
 Yld2004 Yld2004::normalised() const {
-  double s[6];
-  unit_tension(0.0, s);
+  const double s[6] = {1, 0, 0, 0, 0, 0};
   const double k = equivalent(s);
   if (!(k > 0) || !std::isfinite(k))
     throw std::invalid_argument("Yld2004-18p: uniaxial tension along RD gives sigma_bar = " + fmt_shortest(k) +
@@ -229,59 +224,11 @@ void Yld2004::validate() const {
   }
 }
 
-double Yld2004::uniaxial_ratio(double t) const {
-  double s0[6], s[6];
-  unit_tension(0.0, s0);
-  unit_tension(t, s);
-  return equivalent(s0) / equivalent(s);
-}
-
-double Yld2004::r_value(double t) const {
-  double s[6], n[6];
-  unit_tension(t, s);
-  gradient(s, n);
-  const double c = std::cos(t), q = std::sin(t);
-  const double eww = n[0] * q * q + n[1] * c * c - 2.0 * n[3] * c * q;
-  return eww / n[2];
-}
-
-double Yld2004::biaxial_ratio() const {
-  double s0[6];
-  unit_tension(0.0, s0);
-  const double b[6] = {1, 1, 0, 0, 0, 0};
-  return equivalent(s0) / equivalent(b);
-}
-
-double Yld2004::biaxial_r() const {
-  const double b[6] = {1, 1, 0, 0, 0, 0};
-  double n[6];
-  gradient(b, n);
-  return n[1] / n[0];
-}
-
-double Yld2004::plane_strain_ratio(double t) const {
-  const double c = std::cos(t), q = std::sin(t);
-  const auto stress = [&](double beta, double s[6]) {
-    s[0] = c * c + beta * q * q, s[1] = q * q + beta * c * c, s[2] = 0, s[3] = c * q * (1 - beta), s[4] = 0, s[5] = 0;
-  };
-  const auto eww = [&](double beta) {  // strain rate across the loading direction, in the sheet plane
-    double s[6], n[6];
-    stress(beta, s);
-    gradient(s, n);
-    return n[0] * q * q + n[1] * c * c - 2.0 * n[3] * c * q;
-  };
-  double lo = 0.0, hi = 1.0;
-  if (!(eww(lo) < 0.0)) return std::nan("");
-  for (int k = 0; k < 8 && eww(hi) < 0.0; ++k) hi *= 2.0;
-  for (int k = 0; k < 100 && hi - lo > 1e-14; ++k) {
-    const double mid = 0.5 * (lo + hi);
-    (eww(mid) < 0.0 ? lo : hi) = mid;
-  }
-  double s0[6], s[6];
-  unit_tension(0.0, s0);
-  stress(0.5 * (lo + hi), s);
-  return equivalent(s0) / equivalent(s);
-}
+double Yld2004::uniaxial_ratio(double t) const { return points::uniaxial_ratio(*this, t); }
+double Yld2004::r_value(double t) const { return points::r_value(*this, t); }
+double Yld2004::biaxial_ratio() const { return points::biaxial_ratio(*this); }
+double Yld2004::biaxial_r() const { return points::biaxial_r(*this); }
+double Yld2004::plane_strain_ratio(double t) const { return points::plane_strain_ratio(*this, t); }
 
 std::string Yld2004::describe() const {
   std::string c = "Yld2004-18p a = " + fmt_shortest(a) + ", c1 = [";
