@@ -11,8 +11,6 @@
 #include <iostream>
 #include <sstream>
 
-#include <toml++/toml.h>
-
 #include "cli/exit_codes.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
@@ -21,33 +19,6 @@
 namespace drawbend::cli {
 
 namespace {
-// A published parameter set: a TOML file with [material] yld2004 = { a, c1 = [9], c2 = [9] }.
-material::Yld2004 read_published(const std::string& path) {
-  toml::table root;
-  try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw InputError(path + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
-  }
-  const auto* y = root["material"]["yld2004"].as_table();
-  if (!y) throw InputError(path + ": expected [material] with yld2004 = { a, c1 = [9 numbers], c2 = [9 numbers] }");
-  material::Yld2004 out;
-  out.a = (*y)["a"].value_or(NAN);
-  for (const char* key : {"c1", "c2"}) {
-    const auto* arr = (*y)[key].as_array();
-    if (!arr || arr->size() != 9)
-      throw InputError(path + ":" + std::to_string(y->source().begin.line) + ": material.yld2004." + key +
-                       ": expected 9 numbers c12, c13, c21, c23, c31, c32, c44, c55, c66");
-    for (std::size_t i = 0; i < 9; ++i) (key[1] == '1' ? out.c1 : out.c2)[i] = (*arr)[i].value_or(NAN);
-  }
-  try {
-    out.validate();
-    return out.normalised();
-  } catch (const std::invalid_argument& e) {
-    throw InputError(path + ": material.yld2004: " + e.what());
-  }
-}
-
 std::string array9(const std::array<double, 9>& c) {
   std::string s = "[";
   for (int i = 0; i < 9; ++i) s += (i ? ", " : "") + fmt(c[i], 8);
@@ -99,7 +70,7 @@ int calibrate_command(int argc, char** argv) {
   const std::size_t fitted = models.size() - 1;
   material::Yld2004 published;
   if (!compare.empty()) {
-    published = read_published(compare);
+    published = material::load_yld2004_toml(compare).normalised();
     models.push_back({"yld2004_published", &published, nullptr});
   }
   std::filesystem::create_directories(out);

@@ -93,6 +93,14 @@ void spectral_gradient(const Exponent& E, const double X[6], const double x[3], 
   }
 }
 
+// x^(1/a): square roots for a = 2, 4, 8 (the usual exponents), else pow.
+inline double root_a(double x, double a) {
+  if (a == 8.0) return std::sqrt(std::sqrt(std::sqrt(x)));
+  if (a == 4.0) return std::sqrt(std::sqrt(x));
+  if (a == 2.0) return std::sqrt(x);
+  return std::pow(x, 1.0 / a);
+}
+
 // The scaled deviator's transforms, their principal values and Phi (of s / scale).
 struct Eval {
   double scale = 0, X1[6], X2[6], x[3], y[3], phi = 0;
@@ -129,8 +137,9 @@ void sym_eigenvalues(const double v[6], double lam[3]) {
   const double det = c0 * (c1 * c2 - e4 * e4) - e3 * (e3 * c2 - e4 * e5) + e5 * (e3 * e4 - c1 * e5);
   const double r = std::clamp(0.5 * det, -1.0, 1.0);
   const double phi = std::acos(r) / 3.0;  // in [0, pi/3]
-  double l[3] = {m + 2.0 * p * std::cos(phi), m + 2.0 * p * std::cos(phi - 2.0 * kPi / 3.0),
-                 m + 2.0 * p * std::cos(phi + 2.0 * kPi / 3.0)};
+  // cos(phi -+ 2 pi / 3) = -cos(phi) / 2 +- (sqrt(3) / 2) sin(phi): one cosine and one sine.
+  const double cp = std::cos(phi), sp = 0.86602540378443864676 * std::sin(phi);
+  double l[3] = {m + 2.0 * p * cp, m + 2.0 * p * (-0.5 * cp + sp), m + 2.0 * p * (-0.5 * cp - sp)};
   if (l[1] > l[0]) std::swap(l[0], l[1]);
   if (l[2] > l[1]) std::swap(l[1], l[2]);
   if (l[1] > l[0]) std::swap(l[0], l[1]);
@@ -158,7 +167,7 @@ double Yld2004::gradient(const double sig[6], double n[6]) const {
   for (int i = 0; i < 6; ++i) n[i] = 0.0;
   Eval e;
   if (!evaluate(*this, sig, e) || !(e.phi > 0)) return 0.0;
-  const double sbar_hat = std::pow(0.25 * e.phi, 1.0 / a);
+  const double sbar_hat = root_a(0.25 * e.phi, a);
   const Exponent E{a, e.integral};
   const double tol =
       kCoincide * std::max({std::abs(e.x[0]), std::abs(e.x[2]), std::abs(e.y[0]), std::abs(e.y[2]), 1e-300});
@@ -177,7 +186,7 @@ double Yld2004::gradient(const double sig[6], double n[6]) const {
 double Yld2004::equivalent(const double sig[6]) const {
   Eval e;
   if (!evaluate(*this, sig, e)) return 0.0;
-  return e.scale * std::pow(0.25 * e.phi, 1.0 / a);
+  return e.scale * root_a(0.25 * e.phi, a);
 }
 
 void Yld2004::validate() const {

@@ -12,8 +12,7 @@ namespace {
 constexpr int kMaxBackYld = 3;
 constexpr int kMaxIter = 60;     // iterations per (sub-)increment
 constexpr int kMaxSub = 256;     // at most this many sub-increments (1, 4, 16, 64, 256)
-constexpr double kTol = 1e-10;   // converged: |f| <= kTol R and
-constexpr double kTolN = 1e-9;   // the normal moved by at most this (|n| is of order 1)
+constexpr double kTol = 1e-9;    // converged: |f| <= kTol R and 2 G x |n' - n| <= kTol R
 inline double contract(const double a[6], const double b[6]) {  // a : b, tensor shears
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2.0 * (a[3] * b[3] + a[4] * b[4] + a[5] * b[5]);
 }
@@ -84,30 +83,23 @@ double Yld2004Plasticity::kinematic_rate(const double n[6], const double an[][6]
   return rate;
 }
 
-bool Yld2004Plasticity::return_map(double ts[6], double an[][6], double ep, double& dl) const {
+bool Yld2004Plasticity::return_map(double ts[6], double an[][6], double ep, double& dl, double sb,
+                                   const double n_trial[6]) const {
   const double G2 = 2.0 * el_.G;
   double xi[6], n[6], nn[6], sg[6], ac[kMaxBackYld][6];
-  for (int c = 0; c < 6; ++c) {
-    xi[c] = ts[c];
-    for (int k = 0; k < nback_; ++k) xi[c] -= an[k][c];
-  }
-  yld_.gradient(xi, n);  // the normal at the trial point: the first guess
-  double x = 0.0;        // the increment's multiplier
+  // The trial point (x = 0): sigma_bar sb and its normal n_trial, the first guess.
+  for (int c = 0; c < 6; ++c) nn[c] = n_trial[c];
+  double x = 0.0, kin = kinematic_rate(nn, an, ep + dl, 0.0, ac);
+  for (int c = 0; c < 6; ++c) n[c] = nn[c];
   for (int it = 0; it < kMaxIter; ++it) {
-    // The end point for (x, n): sigma = sigma_trial - 2 G x n, the back stresses, and its own normal.
-    const double kin = kinematic_rate(n, an, ep + dl, x, ac);
-    for (int c = 0; c < 6; ++c) {
-      sg[c] = ts[c] - G2 * x * n[c];
-      xi[c] = sg[c];
-      for (int k = 0; k < nback_; ++k) xi[c] -= ac[k][c];
-    }
-    const double sb = yld_.gradient(xi, nn);
     const double R = isotropic_stress(ep + dl + x);
     const double f = sb - R;
+    if (!std::isfinite(f)) return false;
+    // Converged: f = 0 and the end point's normal is the one it was built with, both to kTol R in stress
+    // (2 G x |n' - n| is how far the end point would move with the new normal).
     double dn = 0.0;
     for (int c = 0; c < 6; ++c) dn = std::max(dn, std::abs(nn[c] - n[c]));
-    if (!std::isfinite(f) || !std::isfinite(dn)) return false;
-    if (std::abs(f) <= kTol * R && dn <= kTolN) {
+    if (it > 0 && std::abs(f) <= kTol * R && G2 * x * dn <= kTol * R) {
       for (int c = 0; c < 6; ++c) {
         ts[c] = sg[c];
         for (int k = 0; k < nback_; ++k) an[k][c] = ac[k][c];
@@ -120,6 +112,15 @@ bool Yld2004Plasticity::return_map(double ts[6], double an[][6], double ep, doub
     if (!(denom > 0) || !std::isfinite(denom)) return false;
     x = std::max(0.0, x + f / denom);
     for (int c = 0; c < 6; ++c) n[c] = nn[c];
+    // The end point for (x, n): sigma = sigma_trial - 2 G x n, the back stresses, and its own normal.
+    kin = kinematic_rate(n, an, ep + dl, x, ac);
+    for (int c = 0; c < 6; ++c) {
+      sg[c] = ts[c] - G2 * x * n[c];
+      xi[c] = sg[c];
+      for (int k = 0; k < nback_; ++k) xi[c] -= ac[k][c];
+    }
+    sb = yld_.gradient(xi, nn);
+    if (!std::isfinite(sb)) return false;
   }
   return false;
 }
@@ -150,7 +151,9 @@ void Yld2004Plasticity::update(const double deps[6], const Spin& spin, double si
     xi[c] = ts[c];
     for (int k = 0; k < nback_; ++k) xi[c] -= an[k][c];
   }
-  if (!(yld_.equivalent(xi) - isotropic_stress(ep) > 0.0)) {
+  double nt[6];
+  const double sbt = yld_.gradient(xi, nt);
+  if (!(sbt - isotropic_stress(ep) > 0.0)) {
     for (int c = 0; c < 6; ++c) sigma[c] = tr[c];
     return;
   }
@@ -168,11 +171,15 @@ void Yld2004Plasticity::update(const double deps[6], const Spin& spin, double si
     for (int sub = 1; sub <= m && ok; ++sub) {
       if (m > 1)
         for (int c = 0; c < 6; ++c) ts[c] += dts[c] / m;  // this sub-increment's elastic trial
-      for (int c = 0; c < 6; ++c) {
-        xi[c] = ts[c];
-        for (int k = 0; k < nback_; ++k) xi[c] -= an[k][c];
+      double sb = sbt;
+      if (m > 1) {
+        for (int c = 0; c < 6; ++c) {
+          xi[c] = ts[c];
+          for (int k = 0; k < nback_; ++k) xi[c] -= an[k][c];
+        }
+        sb = yld_.gradient(xi, nt);
       }
-      if (yld_.equivalent(xi) - isotropic_stress(ep + dl) > 0.0) ok = return_map(ts, an, ep, dl);
+      if (sb - isotropic_stress(ep + dl) > 0.0) ok = return_map(ts, an, ep, dl, sb, nt);
     }
   }
   if (!ok) {  // admissible fallback: the last iterate scaled radially onto the surface

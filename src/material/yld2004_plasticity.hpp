@@ -13,9 +13,10 @@
 //   (split form: alpha = alpha_n + (2/3) beta (sigma(eps_p + x) - sigma(eps_p)) n),
 // and each iteration takes the normal n' and f of that end point, updates
 //   x += f / (2 G n':n' + R'(eps_p + x) + n' : d alpha / d x),  n = n',
-// until |f| <= 1e-10 R and the normal moves by at most 1e-9 (|n| ~ 1): then n
-// is the normal of the returned point (associative flow at the end of the
-// step, backward Euler).  It contracts while 2 G x times the surface's
+// until |f| <= 1e-9 R and 2 G x |n' - n| <= 1e-9 R (the end point would
+// move by less than that with the new normal): then n is the normal of the
+// returned point to that tolerance (associative flow at the end of the step,
+// backward Euler).  Small increments converge in two or three evaluations.  It contracts while 2 G x times the surface's
 // curvature is below 1, which small increments ensure: when 60 iterations do
 // not converge, the elastic trial increment is split into 4, 16, 64 and then
 // 256 equal sub-increments, each returned the same way; should even that fail,
@@ -51,6 +52,7 @@ class Yld2004Plasticity final : public Material {
                     KinematicHardening kinematic, const Yld2004& yield);
 
   int state_size() const override { return ns_; }
+  using Material::init_state;
   void init_state(double* state, const SheetAxes& axes) const override;
   using Material::update;
   void update(const double deps[6], const Spin& spin, double sigma[6], double* state) const override;
@@ -74,7 +76,8 @@ class Yld2004Plasticity final : public Material {
  private:
   // One return from the local trial stress ts and back stresses an (sheet axes, modified in place) at
   // eps_p = ep; adds the plastic multiplier to dl.  False when it did not converge.
-  bool return_map(double ts[6], double an[][6], double ep, double& dl) const;
+  // sb, n_trial: sigma_bar and normal of the trial point ts - sum an.
+  bool return_map(double ts[6], double an[][6], double ep, double& dl, double sb, const double n_trial[6]) const;
   double kinematic_rate(const double n[6], const double an[][6], double ep, double dl, double out[][6]) const;
 
   IsotropicElasticity el_;
