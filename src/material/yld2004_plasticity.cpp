@@ -12,7 +12,7 @@ namespace {
 constexpr int kMaxBackYld = 3;
 constexpr int kMaxIter = 60;     // iterations per (sub-)increment
 constexpr int kMaxSub = 256;     // at most this many sub-increments (1, 4, 16, 64, 256)
-constexpr double kTol = 1e-9;    // converged: |f| <= kTol R and 2 G x |n' - n| <= kTol R
+constexpr double kTol = 1e-6;    // converged: |f| <= kTol R and 2 G x |n' - n| <= kTol R
 inline double contract(const double a[6], const double b[6]) {  // a : b, tensor shears
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2.0 * (a[3] * b[3] + a[4] * b[4] + a[5] * b[5]);
 }

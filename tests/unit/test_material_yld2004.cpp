@@ -22,17 +22,21 @@
 //    thickness uniaxial); r(theta) from the gradient equals r(theta) from
 //    numerical differentiation of sigma_bar within 1e-6.
 //  - Return map, von Mises (all 1, a = 2): the stress and eps_p of a random
-//    multiaxial strain path equal J2Isotropic's radial return within 1e-8
-//    relative (the normal does not turn in the return, so the cutting plane
-//    reaches the same point, to its 1e-9 tolerance on f and on the normal).
+//    multiaxial strain path equal J2Isotropic's radial return within 1e-6
+//    relative (the normal does not turn in the return, so the iteration
+//    reaches the same point, to its tolerance of 1e-6 R on f).
 //  - Return maps are backward Euler: the flow direction is the normal of the
 //    returned point, so the plastic strain ratios below are exact.
 //  - Return map, anisotropic a = 8, perfectly plastic at 100 MPa: uniaxial
 //    tension at 0..90 deg (mixed control) yields at uniaxial_ratio(t) x 100 MPa
-//    (1e-8 relative) with the plastic strain ratio r_value(t) (1e-6, the
-//    cutting plane's normal is that of the returned point to its tolerance);
-//    equibiaxial tension yields at biaxial_ratio() x 100 MPa with the plastic
-//    strain ratio biaxial_r(), and every return lands on f = 0 within 1e-9 R.
+//    (1e-6 relative: the return's tolerance on f) with the plastic strain
+//    ratio r_value(t) within 1e-4: the normal is converged to
+//    |n' - n| <= 1e-6 R / (2 G x) = 1e-5 at these steps (x = 2e-4, 2 G x =
+//    10.5 MPa, R = 100 MPa), and r = n_ww / n_33 with |n_33| >= 0.2 moves by at
+//    most about 5 times that;
+//    equibiaxial tension yields at biaxial_ratio() x 100 MPa (1e-6) with the
+//    plastic strain ratio biaxial_r() (1e-4, as above), and every return lands
+//    on f = 0 within 1e-6 R (the return's tolerance).
 //  - Set-up check: a < 2, a non-finite coefficient and a surface that is not
 //    closed (c1 = c2 = 0 on the normals) are refused.
 #define BOOST_TEST_MODULE material_yld2004
@@ -285,8 +289,8 @@ BOOST_AUTO_TEST_CASE(return_map_von_mises_equals_radial_return) {
     y.update(d, sy.data(), sty.data());
     j.update(d, sj.data(), stj.data());
     const double q = von_mises(sj.data());
-    for (int i = 0; i < 6; ++i) BOOST_TEST(std::abs(sy[i] - sj[i]) <= 1e-8 * q, "step " << k << " component " << i);
-    BOOST_TEST(std::abs(sty[0] - stj[0]) <= 1e-8 * std::max(stj[0], 1e-3));
+    for (int i = 0; i < 6; ++i) BOOST_TEST(std::abs(sy[i] - sj[i]) <= 1e-6 * q, "step " << k << " component " << i);
+    BOOST_TEST(std::abs(sty[0] - stj[0]) <= 1e-6 * std::max(stj[0], 1e-3));
   }
   BOOST_TEST(stj[0] > 0.05);
 }
@@ -310,8 +314,8 @@ BOOST_AUTO_TEST_CASE(return_map_anisotropic_uniaxial_and_equibiaxial_points) {
       }
     }
     BOOST_TEST(ep0 > 0.0);
-    BOOST_TEST(std::abs(s[0] - 100.0 * yf.uniaxial_ratio(t)) <= 1e-8 * s[0], "t " << t);
-    BOOST_TEST(std::abs(e22 / e33 - yf.r_value(t)) <= 1e-6, "t " << t << ": " << e22 / e33 << " vs " << yf.r_value(t));
+    BOOST_TEST(std::abs(s[0] - 100.0 * yf.uniaxial_ratio(t)) <= 1e-6 * s[0], "t " << t);
+    BOOST_TEST(std::abs(e22 / e33 - yf.r_value(t)) <= 1e-4, "t " << t << ": " << e22 / e33 << " vs " << yf.r_value(t));
   }
   V6 s{};
   auto st = fresh(m);
@@ -320,11 +324,11 @@ BOOST_AUTO_TEST_CASE(return_map_anisotropic_uniaxial_and_equibiaxial_points) {
     const V6 d = mixed_step(m, 2e-4, s, st, true);
     if (i >= 20) e11 += d[0], e22 += d[1];
     double xi[6] = {s[0], s[1], s[2], s[3], s[4], s[5]};
-    if (st[0] > 0) BOOST_TEST(std::abs(yf.equivalent(xi) - 100.0) <= 1e-9 * 100.0);
+    if (st[0] > 0) BOOST_TEST(std::abs(yf.equivalent(xi) - 100.0) <= 1e-6 * 100.0);
   }
-  BOOST_TEST(std::abs(s[0] - 100.0 * yf.biaxial_ratio()) <= 1e-8 * s[0]);
+  BOOST_TEST(std::abs(s[0] - 100.0 * yf.biaxial_ratio()) <= 1e-6 * s[0]);
   // mixed control makes sigma_yy = sigma_xx by its strain d[1]; the plastic strain ratio is rb
-  BOOST_TEST(std::abs(e22 / e11 - yf.biaxial_r()) <= 1e-6);
+  BOOST_TEST(std::abs(e22 / e11 - yf.biaxial_r()) <= 1e-4);
 }
 
 BOOST_AUTO_TEST_CASE(set_up_check_refuses_bad_sets) {
