@@ -3,7 +3,10 @@
 // steps, so every point yields in both directions) with a small spin, timed
 // per point update on one thread.  J2 isotropic is the element loop's model
 // today; the others are CombinedPlasticity (material/combined_plasticity.hpp):
-// the split form, two Chaboche terms, Hill'48 alone and Hill'48 with Chaboche.
+// the split form, two Chaboche terms, Hill'48 alone and Hill'48 with Chaboche;
+// and Yld2004-18p (material/yld2004_plasticity.hpp, scalar path: no lanes) with
+// the set fitted to the ESAFORM 2021 AA6016-T4 tests (Chapter v1), a = 8,
+// alone and with two Chaboche terms.
 // Material constants: AA5754-O-like (E = 70 GPa, nu = 0.33, yield 100 MPa).
 #include "bench_material.hpp"
 
@@ -14,6 +17,7 @@
 
 #include "material/combined_plasticity.hpp"
 #include "material/j2_isotropic.hpp"
+#include "material/yld2004_plasticity.hpp"
 
 using namespace drawbend;
 
@@ -41,6 +45,10 @@ void bench_material(CsvWriter& w, bool quick) {
   const double E = 70000, nu = 0.33, rho = 2.7e-9;
   auto curve = [] { return material::HardeningCurve::voce(100.0, 180.0, 14.0); };
   const auto hill = material::Hill48::from_r_values(0.65, 0.65, 0.72);
+  material::Yld2004 yld;  // fitted to data/materials/aa6016_t4_esaform2021.csv by drawbend calibrate (c44 = c55 = 1)
+  yld.a = 8;
+  yld.c1 = {1.0059518, 1.1865517, 0.0087202487, 0.75613553, 1.1445682, 0.84840891, 1, 1, 0.17885443};
+  yld.c2 = {0.87834346, 1.1811921, 1.0479014, 1.2886127, 0.036486783, 1.5701502, 1, 1, 1.5886608};
   material::KinematicHardening split, chab, none;
   split.beta = 0.3;
   chab.chaboche = {{6000.0, 60.0}, {800.0, 5.0}};
@@ -53,7 +61,9 @@ void bench_material(CsvWriter& w, bool quick) {
       {"j2_combined_split", std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve(), split)},
       {"j2_combined_chaboche2", std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve(), chab)},
       {"hill48_isotropic", std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve(), none, hill)},
-      {"hill48_chaboche2", std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve(), chab, hill)}};
+      {"hill48_chaboche2", std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve(), chab, hill)},
+      {"yld2004_isotropic", std::make_shared<material::Yld2004Plasticity>(E, nu, rho, curve(), none, yld)},
+      {"yld2004_chaboche2", std::make_shared<material::Yld2004Plasticity>(E, nu, rho, curve(), chab, yld)}};
   const int points = 4096, steps = quick ? 100 : 400;
   for (const auto& [name, m] : models) {
     const double ns = ns_per_update(*m, points, steps);

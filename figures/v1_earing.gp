@@ -12,11 +12,11 @@ set offsets 0, 0, graph 0.05, graph 0.05  # a flat profile stays off the frame
 set key outside bottom center horizontal
 set key noautotitle
 sel(v) = (strcol(1) eq v) ? $3 : NaN
-vars = "von_mises hill48_r hill48_s"
-labels = "\"von Mises\" \"Hill'48 (r-values)\" \"Hill'48 (stress ratios)\""
+vars = "von_mises hill48_r hill48_s yld2004"
+labels = "\"von Mises\" \"Hill'48 (r-values)\" \"Hill'48 (stress ratios)\" \"Yld2004-18p (fitted)\""
 # shown: the variants drawn (indices into vars; a torn cup has no cup height);
 # note: appended to the title (which variants are left out, and why).
-if (!exists("shown")) shown = "1 2 3"
+if (!exists("shown")) shown = "1 2 3 4"
 if (!exists("note")) note = ""
 set title "ESAFORM 2021 cup (AA6016-T4): earing profile, ".stage.(note eq "" ? "" : "\n".note)
 n = words(shown)

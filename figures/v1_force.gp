@@ -6,8 +6,8 @@ set xlabel "punch travel (mm)"
 set ylabel "punch force (kN)"
 set key top right noautotitle
 sel(v) = (strcol(1) eq v) ? $3 : NaN
-vars = "von_mises hill48_r hill48_s"
-labels = "\"von Mises\" \"Hill'48 (r-values)\" \"Hill'48 (stress ratios)\""
+vars = "von_mises hill48_r hill48_s yld2004"
+labels = "\"von Mises\" \"Hill'48 (r-values)\" \"Hill'48 (stress ratios)\" \"Yld2004-18p (fitted)\""
 set xrange [0:*]
 set yrange [0:*]
-plot for [i=1:3] datafile using 2:(sel(word(vars, i))) with lines ls i title word(labels, i)
+plot for [i=1:words(vars)] datafile using 2:(sel(word(vars, i))) with lines ls i title word(labels, i)

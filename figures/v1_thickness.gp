@@ -9,11 +9,11 @@ set xlabel "initial radius (mm)"
 set ylabel "thickness (mm)"
 set key top left noautotitle
 set yrange [0.7:1.4]
-vars = "von_mises hill48_r hill48_s"
-labels = "\"von Mises\" \"Hill'48 (r)\" \"Hill'48 (σ)\""
+vars = "von_mises hill48_r hill48_s yld2004"
+labels = "\"von Mises\" \"Hill'48 (r)\" \"Hill'48 (σ)\" \"Yld2004\""
 sel(v, l) = (strcol(1) eq v && $2 == l) ? $6 : NaN
 do for [l in "0 45 90"] {
   set title sprintf("%s deg from RD", l)
-  plot for [i=1:3] datafile using 3:(sel(word(vars, i), real(l))) with linespoints ls i title word(labels, i)
+  plot for [i=1:words(vars)] datafile using 3:(sel(word(vars, i), real(l))) with linespoints ls i title word(labels, i)
 }
 unset multiplot

@@ -20,6 +20,7 @@
 #include <map>
 
 #include "material/hill48.hpp"
+#include "material/yld2004_fit.hpp"
 #include "sim/case_pool.hpp"
 #include "study/run_health.hpp"
 #include "study/chapter.hpp"
@@ -61,6 +62,41 @@ void body(study::Chapter& c) {
   for (const char* need : {"von_mises", "hill48_r", "hill48_s"})
     if (!idx.count(need)) throw InputError(vt.path + ": missing variant " + need);
   const v1::Variant& hr = vars[idx.at("hill48_r")];
+  // 1b. Yld2004-18p fitted to every published material test (drawbend calibrate's fit, equal weights on the
+  // relative residuals), and the loop's before and after on those tests: measured, both Hill'48 calibrations,
+  // the fit, and POSTECH's published Yld2004-18p for the same sheet.
+  const material::SheetTests tests = material::load_sheet_tests(c.data("materials/aa6016_t4_esaform2021.csv"));
+  const material::FitWeights weights;
+  const material::Yld2004Fit fit = material::fit_yld2004(tests, weights, 8.0);
+  const material::Yld2004 postech =
+      material::load_yld2004_toml(c.data("materials/aa6016_t4_yld2004_postech2022.toml")).normalised();
+  for (auto& v : vars)
+    if (v.type == "yld2004") v.a = fit.raw.a, v.c1 = fit.raw.c1, v.c2 = fit.raw.c2;
+  {
+    const material::Hill48 h_r = material::Hill48::from_r_values(hr.r0, hr.r45, hr.r90);
+    const v1::Variant& hsv = vars[idx.at("hill48_s")];
+    const material::Hill48 h_s = material::Hill48::from_stress_ratios(hsv.s45, hsv.s90, hsv.sb);
+    const std::vector<material::NamedYield> models = {
+        {"hill48_r", nullptr, &h_r}, {"hill48_s", nullptr, &h_s}, {"yld2004", &fit.yield, nullptr},
+        {"yld2004_postech", &postech, nullptr}};
+    const auto rows = material::calibration_table(tests, weights, models, 2);
+    auto cal = c.table(rows.front(), "Material tests of the sheet: measured, predicted by Hill'48 from the r-values, "
+                                     "Hill'48 from the stress ratios, Yld2004-18p fitted here (weights: 1 on each "
+                                     "relative residual) and POSTECH's published Yld2004-18p; residual of the fit");
+    for (std::size_t k = 1; k < rows.size(); ++k) cal.row(rows[k]);
+    c.save(cal, "calibration");
+    for (const auto& m : models) {
+      c.value("rms_s_" + m.name, fmt(m.rms(tests, material::SheetDatum::uniaxial_stress), 3));
+      c.value("rms_r_" + m.name, fmt(m.rms(tests, material::SheetDatum::uniaxial_r), 3));
+    }
+    c.value("yld_c1", fmt(fit.raw.c1[0], 4) + ", " + fmt(fit.raw.c1[1], 4) + ", " + fmt(fit.raw.c1[2], 4) + ", " +
+                          fmt(fit.raw.c1[3], 4) + ", " + fmt(fit.raw.c1[4], 4) + ", " + fmt(fit.raw.c1[5], 4) + ", " +
+                          fmt(fit.raw.c1[6], 4) + ", " + fmt(fit.raw.c1[7], 4) + ", " + fmt(fit.raw.c1[8], 4));
+    c.value("yld_c2", fmt(fit.raw.c2[0], 4) + ", " + fmt(fit.raw.c2[1], 4) + ", " + fmt(fit.raw.c2[2], 4) + ", " +
+                          fmt(fit.raw.c2[3], 4) + ", " + fmt(fit.raw.c2[4], 4) + ", " + fmt(fit.raw.c2[5], 4) + ", " +
+                          fmt(fit.raw.c2[6], 4) + ", " + fmt(fit.raw.c2[7], 4) + ", " + fmt(fit.raw.c2[8], 4));
+    c.value("yld_starts", std::to_string(fit.accepted) + " of " + std::to_string(fit.starts));
+  }
   v1::RunSpec spec;
   spec.core = g_core, spec.ring = g_ring, spec.through = g_through;
   spec.cycles = static_cast<long>(g_cycles), spec.stroke = g_stroke;
@@ -294,6 +330,19 @@ void body(study::Chapter& c) {
                    "the flange thickens least, so draws in most slowly and rises highest, where r is largest: "
                    "r0 = " + fmt(hr.r0) + ", r90 = " + fmt(hr.r90) + " > r45 = " + fmt(hr.r45) +
                        " gives ears at 0° and 90°; 15° is two rim elements of the quick mesh");
+  if (idx.count("yld2004")) {  // the same rule, stated before the run, for the Yld2004-18p cup
+    const auto py = profile("yld2004");
+    const auto ey = ext(py);
+    const double y0 = at(py, 0), y45 = at(py, 45), y90 = at(py, 90);
+    c.checks().claim(study::Kind::verification, "v1.yld2004.ears_at_axes",
+                     "Yld2004-18p, " + std::string(drawn ? "cup height" : "flange outline") +
+                         ": highest within 15° of RD or TD, lowest within 15° of 45°, and p(0), p(90) > p(45)",
+                     ears_at_axes == ((ey[0] <= 15.0 || ey[0] >= 75.0) && std::abs(ey[2] - 45.0) <= 15.0 &&
+                                      y0 > y45 && y90 > y45),
+                     "the tested r-values are highest at RD and TD (r0 = " + fmt(hr.r0) + ", r90 = " + fmt(hr.r90) +
+                         " > r45 = " + fmt(hr.r45) + "), and the fit reproduces r(theta) (calibration table): ears at "
+                         "0° and 90°; 15° is two rim elements of the quick mesh");
+  }
   c.save(ht, "cup_height");
   c.save(ot, "flange_outline");
   c.save(ft, "punch_force");
@@ -309,7 +358,8 @@ void body(study::Chapter& c) {
   // The figure's variants: after a full draw, only the cups whose flange left the holder (a torn cup's
   // rim height is no cup height, and its scale would flatten the others); the title names the rest.
   std::string shown, left_out;
-  const std::vector<std::string> order{"von_mises", "hill48_r", "hill48_s"};  // the script's vars, in its order
+  std::vector<std::string> order{"von_mises", "hill48_r", "hill48_s"};  // the script's vars, in its order
+  if (idx.count("yld2004")) order.push_back("yld2004");
   for (std::size_t i = 0; i < order.size(); ++i) {
     const auto& r = runs[idx.at(order[i])];
     if (drawn && r.rim_r_max >= v1::kFlangeOutRadius)

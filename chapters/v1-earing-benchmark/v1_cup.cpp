@@ -63,6 +63,15 @@ toml::table deck_table(const std::string& deck, const Variant& var, const RunSpe
     }
     mat->insert_or_assign("hill48", h);
   }
+  if (var.type == "yld2004") {
+    toml::table y;
+    toml::array c1, c2;
+    for (int i = 0; i < 9; ++i) c1.push_back(var.c1[i]), c2.push_back(var.c2[i]);
+    y.insert("a", var.a);
+    y.insert("c1", c1);
+    y.insert("c2", c2);
+    mat->insert_or_assign("yld2004", y);
+  }
   return root;
 }
 

@@ -13,6 +13,10 @@ struct Variant {
   std::string id, type, label;
   double r0 = 0, r45 = 0, r90 = 0;  ///< r-values (hill48 from r-values), or 0
   double s45 = 0, s90 = 0, sb = 0;  ///< yield-stress ratios to RD (hill48 from stresses), or 0
+  /// Yld2004-18p (type yld2004): exponent and C', C'' (c12, c13, c21, c23, c31, c32, c44, c55, c66), set by the
+  /// chapter from its own calibration on the published tests.
+  double a = 0;
+  std::array<double, 9> c1{}, c2{};
 };
 
 /// Mesh and loading of a run.

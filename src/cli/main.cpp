@@ -26,6 +26,7 @@ int block_deck_command(int argc, char** argv);
 int strip_deck_command(int argc, char** argv);
 int cup_deck_command(int argc, char** argv);
 int plan_command(int argc, char** argv);
+int calibrate_command(int argc, char** argv);
 }
 
 namespace {
@@ -58,6 +59,7 @@ int main(int argc, char** argv) {
       "  model-loop DATA.csv --out DIR  re-run the draw-bend FE model with candidate effects\n"
       "  synth --out DIR              synthetic draw-bend data with a hidden law, or the thesis data\n"
       "  export MODEL.toml --to X     a friction_model.toml for LS-DYNA, OpenRadioss or Abaqus\n"
+      "  calibrate TESTS.csv --out DIR  fit Yld2004-18p to a sheet's material tests (material TOML, table)\n"
       "  help [COMMAND]               this list, or that command's options and examples (= COMMAND --help)\n"
       "  version, --version           print the version and commit\n"
       "Units: mm, N, MPa, s.  Exit codes: 0 done, 2 input error, 3 numerical fault.\n"
@@ -95,8 +97,9 @@ int main(int argc, char** argv) {
   if (cmd == "loop") return cli::loop_main(argc - 1, argv + 1);    // loop_cmd.cpp
   if (cmd == "synth") return cli::synth_main(argc - 1, argv + 1);  // loop_cmd.cpp
   if (cmd == "export") return cli::export_main(argc - 1, argv + 1);  // export_cmd.cpp
+  if (cmd == "calibrate") return cli::with_exit_codes([&] { return cli::calibrate_command(argc - 1, argv + 1); });
   if (cmd != "run") {
-    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, drawbend-deck, block-deck, strip-deck, cup-deck, model-loop, loop, synth, export, plan, help, version; see drawbend --help)\n";
+    std::cerr << "drawbend: unknown command '" << cmd << "' (expected: run, drawbend-deck, block-deck, strip-deck, cup-deck, model-loop, loop, synth, export, plan, calibrate, help, version; see drawbend --help)\n";
     return 2;
   }
   // `drawbend run --help` prints the options below without a deck.

@@ -10,6 +10,7 @@
 #include "material/combined_plasticity.hpp"
 #include "material/j2_isotropic.hpp"
 #include "material/linear_elastic.hpp"
+#include "material/yld2004_plasticity.hpp"
 #include "friction/stribeck_law.hpp"
 #include "friction/surface_law.hpp"
 
@@ -159,20 +160,46 @@ material::Hill48 read_hill(const DeckContext& c, const toml::table& t) {
     return {};
   }
 }
+
+// yld2004 = { a = 8, c1 = [c12, c13, c21, c23, c31, c32, c44, c55, c66], c2 = [...] } (Yld2004-18p, C' and C'').
+material::Yld2004 read_yld2004(const DeckContext& c, const toml::table& t) {
+  material::Yld2004 y;
+  const toml::table* f = c.table(t, "yld2004", "material", true);
+  const std::string w = "material.yld2004";
+  c.allowed(*f, w, {"a", "c1", "c2"});
+  y.a = c.in_range(*f, "a", w, NAN, 2.0);
+  for (const char* key : {"c1", "c2"}) {
+    auto& dst = key[1] == '1' ? y.c1 : y.c2;
+    const auto* arr = f->get_as<toml::array>(key);
+    if (!arr || arr->size() != 9) {
+      c.bad(arr ? static_cast<const toml::node&>(*arr) : static_cast<const toml::node&>(*f), w + "." + key,
+            "expected 9 numbers c12, c13, c21, c23, c31, c32, c44, c55, c66" +
+                (arr ? ", found " + std::to_string(arr->size()) : std::string()));
+      continue;
+    }
+    for (std::size_t i = 0; i < 9; ++i) {
+      const auto x = (*arr)[i].value<double>();
+      if (!x || !std::isfinite(*x)) c.bad((*arr)[i], w + "." + key, "expected a finite number");
+      dst[i] = x.value_or(0.0);
+    }
+  }
+  return y;
+}
 }  // namespace
 
 std::shared_ptr<const material::Material> make_material(const DeckContext& c, const toml::table& t,
                                                         const std::string& dir) {
   const std::size_t before = c.count();
   const std::string ty = c.str(t, "type", "material");
-  if (ty != "elastic" && ty != "j2" && ty != "j2_combined" && ty != "hill48")
+  if (ty != "elastic" && ty != "j2" && ty != "j2_combined" && ty != "hill48" && ty != "yld2004")
     c.fail(t.get("type") ? *t.get("type") : static_cast<const toml::node&>(t), "material.type",
-           "expected \"elastic\", \"j2\", \"j2_combined\" or \"hill48\", found \"" + ty + "\"");
+           "expected \"elastic\", \"j2\", \"j2_combined\", \"hill48\" or \"yld2004\", found \"" + ty + "\"");
   const std::set<std::string> curve_keys = {"hardening", "yield", "tangent", "voce", "swift"};
   std::set<std::string> keys = {"type", "E", "nu", "density"};
   if (ty != "elastic") keys.insert(curve_keys.begin(), curve_keys.end());
-  if (ty == "j2_combined" || ty == "hill48") keys.insert("kinematic");
+  if (ty == "j2_combined" || ty == "hill48" || ty == "yld2004") keys.insert("kinematic");
   if (ty == "hill48") keys.insert("hill48");
+  if (ty == "yld2004") keys.insert("yld2004");
   c.allowed(t, "material", keys);
   const double E = c.positive(t, "E", "material"), rho = c.positive(t, "density", "material");
   const double nu = c.num(t, "nu", "material");
@@ -184,12 +211,21 @@ std::shared_ptr<const material::Material> make_material(const DeckContext& c, co
   }
   auto curve = read_curve(c, t, dir);
   material::KinematicHardening kin;
-  if (ty == "j2_combined" || (ty == "hill48" && t.get("kinematic"))) kin = read_kinematic(c, t);
+  if (ty == "j2_combined" || ((ty == "hill48" || ty == "yld2004") && t.get("kinematic"))) kin = read_kinematic(c, t);
   material::Hill48 hill;
   if (ty == "hill48") hill = read_hill(c, t);
+  material::Yld2004 yld;
+  if (ty == "yld2004") yld = read_yld2004(c, t);
   if (c.count() > before || !curve) return nullptr;
   if (ty == "j2") return std::make_shared<material::J2Isotropic>(E, nu, rho, std::move(*curve));
   try {
+    if (ty == "yld2004") {
+      try {
+        return std::make_shared<material::Yld2004Plasticity>(E, nu, rho, std::move(*curve), kin, yld);
+      } catch (const std::invalid_argument& e) {
+        c.fail(*t.get("yld2004"), "material.yld2004", e.what());
+      }
+    }
     return std::make_shared<material::CombinedPlasticity>(E, nu, rho, std::move(*curve), kin, hill);
   } catch (const std::invalid_argument& e) {
     c.fail(t, "material", e.what());

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/csv.hpp"
+#include "material/sheet_frame.hpp"
 
 namespace drawbend::material {
 
@@ -26,44 +27,6 @@ void KinematicHardening::validate() const {
 
 namespace {
 constexpr int kMaxBack = 3;
-
-// Rows of Q are the sheet axes: local = Q A Q^T, global = Q^T A Q.
-void to_matrix(const double v[6], double A[3][3]) {
-  A[0][0] = v[0]; A[1][1] = v[1]; A[2][2] = v[2];
-  A[0][1] = A[1][0] = v[3];
-  A[1][2] = A[2][1] = v[4];
-  A[2][0] = A[0][2] = v[5];
-}
-// As P (A P^T) with P = Q or Q^T: 45 multiplications where the sum over
-// Q_ik A_km Q_jm term by term took 162 (fe/hill48_lanes.hpp's sheet_transform,
-// the same arithmetic in the same order).  B is symmetric in exact
-// arithmetic, so one entry of each off-diagonal pair gives its shear (B01,
-// B12, B20; the term-by-term form averaged both).
-void transform(const double Q[3][3], const double v[6], double out[6], bool to_local) {
-  double A[3][3], P[3][3], C[3][3];
-  to_matrix(v, A);
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k) P[i][k] = to_local ? Q[i][k] : Q[k][i];
-  for (int k = 0; k < 3; ++k)
-    for (int j = 0; j < 3; ++j) C[k][j] = A[k][0] * P[j][0] + A[k][1] * P[j][1] + A[k][2] * P[j][2];
-  constexpr int I[6] = {0, 1, 2, 0, 1, 2}, J[6] = {0, 1, 2, 1, 2, 0};
-  for (int n = 0; n < 6; ++n)
-    out[n] = P[I[n]][0] * C[0][J[n]] + P[I[n]][1] * C[1][J[n]] + P[I[n]][2] * C[2][J[n]];
-}
-void cross(const double a[3], const double b[3], double c[3]) {
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
-// Re-orthonormalise the stored RD and ND after a first-order rotation.
-void orthonormalise(double* rd, double* nd) {
-  const double lr = std::sqrt(rd[0] * rd[0] + rd[1] * rd[1] + rd[2] * rd[2]);
-  for (int i = 0; i < 3; ++i) rd[i] /= lr;
-  const double d = rd[0] * nd[0] + rd[1] * nd[1] + rd[2] * nd[2];
-  for (int i = 0; i < 3; ++i) nd[i] -= d * rd[i];
-  const double ln = std::sqrt(nd[0] * nd[0] + nd[1] * nd[1] + nd[2] * nd[2]);
-  for (int i = 0; i < 3; ++i) nd[i] /= ln;
-}
 }  // namespace
 
 CombinedPlasticity::CombinedPlasticity(double youngs_modulus, double poisson_ratio, double density,
@@ -114,7 +77,7 @@ SheetAxes CombinedPlasticity::axes(const double* state) const {
     a.rd[i] = rd[i];
     a.nd[i] = rd[3 + i];
   }
-  cross(a.nd, a.rd, a.td);
+  cross3(a.nd, a.rd, a.td);
   return a;
 }
 
@@ -165,10 +128,10 @@ void CombinedPlasticity::update(const double deps[6], const Spin& spin, double s
     if (spin.dt != 0.0) {
       rotate_vector(spin, rd);
       rotate_vector(spin, nd);
-      orthonormalise(rd, nd);
+      orthonormalise_axes(rd, nd);
     }
     double td[3];
-    cross(nd, rd, td);
+    cross3(nd, rd, td);
     for (int i = 0; i < 3; ++i) {
       Q[0][i] = rd[i];
       Q[1][i] = td[i];
@@ -180,8 +143,8 @@ void CombinedPlasticity::update(const double deps[6], const Spin& spin, double s
   el_.add_elastic(deps, tr);
   double ts[6], an[kMaxBack][6];
   if (aniso_) {
-    transform(Q, tr, ts, true);
-    for (int k = 0; k < nback_; ++k) transform(Q, back + 6 * k, an[k], true);
+    sheet_transform(Q, tr, ts, true);
+    for (int k = 0; k < nback_; ++k) sheet_transform(Q, back + 6 * k, an[k], true);
   } else {
     for (int c = 0; c < 6; ++c) ts[c] = tr[c];
     for (int k = 0; k < nback_; ++k)
@@ -289,8 +252,8 @@ void CombinedPlasticity::update(const double deps[6], const Spin& spin, double s
     }
   }
   if (aniso_) {
-    transform(Q, sl, sigma, false);
-    for (int k = 0; k < nback_; ++k) transform(Q, an[k], back + 6 * k, false);
+    sheet_transform(Q, sl, sigma, false);
+    for (int k = 0; k < nback_; ++k) sheet_transform(Q, an[k], back + 6 * k, false);
   } else {
     for (int c = 0; c < 6; ++c) sigma[c] = sl[c];
     for (int k = 0; k < nback_; ++k)
@@ -308,7 +271,7 @@ double CombinedPlasticity::tangent_ratio(const double* sigma, const double* stat
     const SheetAxes a = axes(state);
     const double Q[3][3] = {{a.rd[0], a.rd[1], a.rd[2]}, {a.td[0], a.td[1], a.td[2]}, {a.nd[0], a.nd[1], a.nd[2]}};
     double l[6];
-    transform(Q, xi, l, true);
+    sheet_transform(Q, xi, l, true);
     for (int c = 0; c < 6; ++c) xi[c] = l[c];
   }
   // Monotonic uniaxial tangent: the curve's slope for the split form; the

@@ -22,4 +22,13 @@ namespace drawbend::material {
 /// (within 1e-6 rad) normal to the sheet there.
 SheetAxes sheet_axes(const std::array<double, 3>& rd, const std::array<double, 3>& normal);
 
+/// A Voigt tensor (tensor shears) between global and sheet axes; the rows of Q
+/// are RD, TD, ND: local = Q A Q^T (to_local), global = Q^T A Q.  (The lanes of
+/// fe/hill48_lanes.hpp repeat its arithmetic in the same order.)
+void sheet_transform(const double Q[3][3], const double v[6], double out[6], bool to_local);
+/// c = a x b.
+void cross3(const double a[3], const double b[3], double c[3]);
+/// Re-orthonormalise stored RD and ND (state of an anisotropic model) after a first-order rotation.
+void orthonormalise_axes(double* rd, double* nd);
+
 }  // namespace drawbend::material

@@ -1,8 +1,8 @@
 // The deck's material types and the sheet frame (io/deck_material.cpp, io/deck.cpp).
-// Expected: valid j2_combined and hill48 decks build a CombinedPlasticity with the given
+// Expected: valid j2_combined, hill48 and yld2004 decks build a CombinedPlasticity with the given
 // constants (Hill'48 returns r0/r45/r90; Voce at eps_p = 0 is sigma0); [sheet]
 // rolling_direction sets the model's RD (normalised); every non-physical value
-// (r <= 0, gamma < 0, C < 0, beta outside [0, 1], 4 terms, a typo, both r-values and
+// (r <= 0, Yld2004 a < 2, c1/c2 not 9 numbers or not closed, gamma < 0, C < 0, beta outside [0, 1], 4 terms, a typo, both r-values and
 // stress ratios, a rolling direction stated twice) is an input error naming
 // file:line: key.  An inline hardening table { plastic_strain, true_stress_MPa }
 // reads like a CSV table; unequal lengths, a falling stress and a wrong key are input errors.
@@ -14,6 +14,7 @@
 #include "core/csv.hpp"
 #include "io/deck.hpp"
 #include "material/combined_plasticity.hpp"
+#include "material/yld2004_plasticity.hpp"
 
 using namespace drawbend;
 
@@ -98,11 +99,35 @@ BOOST_AUTO_TEST_CASE(bad_values_name_file_line_key) {
       {"type = \"j2\"\nhardening = { plastic_strain = [0.0, 0.1], true_stress_MPa = [100.0, 90.0] }", "",
        "must not decrease"},
       {"type = \"j2\"\nhardening = { plastic_strain = [0.0, 0.1], stress = [100.0, 90.0] }", "", "material.hardening"},
+      {"type = \"yld2004\"\nyield = 100.0\nyld2004 = { a = 1.5, c1 = [1,1,1,1,1,1,1,1,1], c2 = [1,1,1,1,1,1,1,1,1] }", "",
+       "case.toml:11: material.yld2004.a"},
+      {"type = \"yld2004\"\nyield = 100.0\nyld2004 = { a = 8, c1 = [1,1,1,1,1,1,1,1], c2 = [1,1,1,1,1,1,1,1,1] }", "",
+       "case.toml:11: material.yld2004.c1"},
+      {"type = \"yld2004\"\nyield = 100.0\nyld2004 = { a = 8, c1 = [1,1,1,1,1,1,1,1,1], c2 = [1,1,1,1,\"x\",1,1,1,1] }", "",
+       "case.toml:11: material.yld2004.c2"},
+      {"type = \"yld2004\"\nyield = 100.0\nyld2004 = { a = 8, c1 = [0,0,0,0,0,0,1,1,1], c2 = [0,0,0,0,0,0,1,1,1] }", "",
+       "case.toml:11: material.yld2004"},
+      {"type = \"yld2004\"\nyield = 100.0\nyld2004 = { a = 8, c1 = [1,1,1,1,1,1,1,1,1], c2 = [1,1,1,1,1,1,1,1,1], b = 2 }",
+       "", "material.yld2004"},
+      {"type = \"yld2004\"\nyield = 100.0", "", "yld2004"},
   };
   for (const Bad& b : bad) {
     const std::string e = error_of(deck(b.material, b.extra));
     BOOST_TEST(e.find(b.expect) != std::string::npos, "deck material:\n" << b.material << "\nmessage: " << e);
   }
+}
+
+// yld2004 = { a, c1, c2 } builds a Yld2004Plasticity, normalised to RD (isotropic coefficients 2: scaled by 1/2).
+BOOST_AUTO_TEST_CASE(valid_yld2004) {
+  const auto d = io::parse_deck(deck("type = \"yld2004\"\nyield = 100.0\nkinematic = { beta = 0.3 }\n"
+                                     "yld2004 = { a = 8, c1 = [2,2,2,2,2,2,2,2,2], c2 = [2,2,2,2,2,2,2,2,2] }"),
+                                "case.toml");
+  const auto* m = dynamic_cast<const material::Yld2004Plasticity*>(d.model.material.get());
+  BOOST_TEST_REQUIRE(m != nullptr);
+  BOOST_TEST(m->directional());
+  BOOST_TEST(std::abs(m->scaled_by() - 2.0) < 1e-12);
+  BOOST_TEST(std::abs(m->yield().c1[0] - 1.0) < 1e-12);
+  BOOST_TEST(std::abs(m->yield().r_value(M_PI / 4) - 1.0) < 1e-9);
 }
 
 BOOST_AUTO_TEST_CASE(rolling_direction_is_stated_once) {

@@ -1,0 +1,110 @@
+// `drawbend calibrate TESTS.csv --out DIR`: Yld2004-18p fitted to a sheet's
+// material tests (src/material/yld2004_fit.hpp), written as a material TOML
+// (DIR/material.toml, the [material] keys type and yld2004) and a table of
+// every datum (DIR/calibration.csv): measured, Hill'48 from the r-values,
+// Hill'48 from the stress ratios, the fitted Yld2004-18p (and a published set
+// given with --compare), and the fit's residual.  The weights are printed.
+// Sample: drawbend calibrate data/materials/aa6016_t4_esaform2021.csv --out cal
+//           --compare data/materials/aa6016_t4_yld2004_postech2022.toml
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "cli/exit_codes.hpp"
+#include "core/csv.hpp"
+#include "core/options.hpp"
+#include "material/yld2004_fit.hpp"
+
+namespace drawbend::cli {
+
+namespace {
+std::string array9(const std::array<double, 9>& c) {
+  std::string s = "[";
+  for (int i = 0; i < 9; ++i) s += (i ? ", " : "") + fmt(c[i], 8);
+  return s + "]";
+}
+}  // namespace
+
+int calibrate_command(int argc, char** argv) {
+  if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
+    std::cerr << "usage: drawbend calibrate TESTS.csv --out DIR [--a 8] [--w-stress 1] [--w-r 1] [--w-biaxial 1] "
+                 "[--w-plane-strain 1] [--compare PUBLISHED.toml]\n";
+    return argc >= 2 && std::string(argv[1]) == "--help" ? 0 : 2;
+  }
+  const std::string path = argv[1];
+  std::string out = "calibration", compare;
+  double a = 8.0;
+  material::FitWeights w;
+  Options opt("drawbend calibrate TESTS.csv", "Fit Yld2004-18p to a sheet's material tests (CSV: test, angle_deg, "
+                                               "stress_ratio, r_value) by weighted least squares.");
+  opt.add(out, "out", "output directory (material.toml, calibration.csv)");
+  opt.add(a, "a", "Yld2004-18p exponent (>= 2; 8 for FCC metals)");
+  opt.add(w.stress, "w-stress", "weight of each uniaxial yield-stress ratio (on its relative residual)");
+  opt.add(w.r, "w-r", "weight of each r-value (on its relative residual)");
+  opt.add(w.biaxial, "w-biaxial", "weight of the balanced biaxial stress ratio and rb");
+  opt.add(w.plane_strain, "w-plane-strain", "weight of each plane-strain stress ratio");
+  opt.add(compare, "compare", "a published Yld2004-18p set (TOML, [material] yld2004 = { a, c1, c2 }) for the table");
+  if (!opt.parse(argc - 1, argv + 1)) return 0;
+  for (double v : {w.stress, w.r, w.biaxial, w.plane_strain})
+    if (!(v >= 0) || !std::isfinite(v)) throw InputError("--w-*: weights must be finite and >= 0");
+  if (!(a >= 2) || !std::isfinite(a)) throw InputError("--a: the exponent must be >= 2, found " + fmt_shortest(a));
+  const material::SheetTests t = material::load_sheet_tests(path);
+  const double r0 = t.r_value(0), r45 = t.r_value(45), r90 = t.r_value(90);
+  const double s45 = t.uniaxial_stress(45), s90 = t.uniaxial_stress(90), sb = t.biaxial_stress();
+  std::vector<material::Hill48> hills;
+  std::vector<material::NamedYield> models;
+  hills.reserve(2);
+  if (std::isfinite(r0) && std::isfinite(r45) && std::isfinite(r90))
+    hills.push_back(material::Hill48::from_r_values(r0, r45, r90));
+  const bool have_r = !hills.empty();
+  if (std::isfinite(s45) && std::isfinite(s90) && std::isfinite(sb))
+    hills.push_back(material::Hill48::from_stress_ratios(s45, s90, sb));
+  if (have_r) models.push_back({"hill48_r", nullptr, &hills[0]});
+  if (hills.size() > (have_r ? 1u : 0u)) models.push_back({"hill48_s", nullptr, &hills.back()});
+  std::cout << "weights (on relative residuals): uniaxial stress " << fmt_shortest(w.stress) << ", r-value "
+            << fmt_shortest(w.r) << ", balanced biaxial " << fmt_shortest(w.biaxial) << ", plane strain "
+            << fmt_shortest(w.plane_strain) << "\n";
+  const material::Yld2004Fit fit = material::fit_yld2004(t, w, a);
+  models.push_back({"yld2004", &fit.yield, nullptr});
+  const std::size_t fitted = models.size() - 1;
+  material::Yld2004 published;
+  if (!compare.empty()) {
+    published = material::load_yld2004_toml(compare).normalised();
+    models.push_back({"yld2004_published", &published, nullptr});
+  }
+  std::filesystem::create_directories(out);
+  const auto rows = material::calibration_table(t, w, models, fitted);
+  std::ostringstream csv;
+  for (const auto& r : rows) {
+    for (std::size_t i = 0; i < r.size(); ++i) csv << (i ? "," : "") << r[i];
+    csv << "\n";
+  }
+  write_file_atomic(out + "/calibration.csv", csv.str());
+  std::ostringstream toml;
+  toml << "# Yld2004-18p fitted by `drawbend calibrate " << path << "` (weighted least squares on relative residuals;\n"
+       << "# weights: uniaxial stress " << fmt_shortest(w.stress) << ", r " << fmt_shortest(w.r) << ", biaxial "
+       << fmt_shortest(w.biaxial) << ", plane strain " << fmt_shortest(w.plane_strain) << "; cost " << fmt(fit.cost, 4)
+       << ", " << fit.accepted << " of " << fit.starts << " starts valid).\n"
+       << "# c44 = c55 = 1 in C' and C'': the sheet tests say nothing about the out-of-plane shears.\n"
+       << "# The solver scales c1 and c2 by 1/" << fmt(fit.scale, 8) << " so that sigma_bar of uniaxial tension along\n"
+       << "# RD is 1 (the flow curve is that of RD); the ratios in calibration.csv are scale-free.\n"
+       << "# Add E, nu, density and a flow curve to use it as a deck's [material].\n"
+       << "[material]\ntype = \"yld2004\"\nyld2004 = { a = " << fmt_shortest(a) << ", c1 = " << array9(fit.raw.c1)
+       << ", c2 = " << array9(fit.raw.c2) << " }\n";
+  write_file_atomic(out + "/material.toml", toml.str());
+  for (const auto& r : rows) {
+    for (std::size_t i = 0; i < r.size(); ++i) std::cout << (i ? "  " : "") << r[i];
+    std::cout << "\n";
+  }
+  std::cout << "RMS of the residuals over sigma(theta)/sigma0 and over r(theta):\n";
+  for (const auto& m : models)
+    std::cout << "  " << m.name << ": " << fmt(m.rms(t, material::SheetDatum::uniaxial_stress), 3) << " and "
+              << fmt(m.rms(t, material::SheetDatum::uniaxial_r), 3) << "\n";
+  std::cout << "c44 = c55 = 1 (and in C''): no test of the sheet loads the out-of-plane shears.\n"
+            << "wrote " << out << "/material.toml and " << out << "/calibration.csv (" << fit.accepted << " of "
+            << fit.starts << " starts gave a closed, convex set)\n";
+  return 0;
+}
+
+}  // namespace drawbend::cli
