@@ -11,7 +11,7 @@
 #include "core/run_output.hpp"
 #include "io/deck.hpp"
 #include "io/run_case.hpp"
-#include "sim/material_spec.hpp"
+#include "sim/material_choice.hpp"
 
 namespace drawbend::sim {
 
