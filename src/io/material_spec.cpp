@@ -241,7 +241,7 @@ MaterialSpec from_toml(const DeckContext& c, const toml::table& t) {
   const bool elastic = m.type == MaterialType::elastic, hill = m.type == MaterialType::hill48;
   const bool combined = m.type == MaterialType::j2_combined;
   std::set<std::string> keys = {"type", "E", "nu", "density"};
-  if (!elastic) keys.insert({"hardening", "yield", "tangent", "voce", "swift"});
+  if (!elastic) keys.insert(std::begin(kFlowCurveKeys), std::end(kFlowCurveKeys));
   if (combined || hill) keys.insert("kinematic");
   if (hill) keys.insert("hill48");
   c.allowed(t, "material", keys);
@@ -255,6 +255,12 @@ MaterialSpec from_toml(const DeckContext& c, const toml::table& t) {
   if (combined || (hill && t.get("kinematic"))) m.kinematic = read_kinematic(c, t);
   if (hill) m.surface = read_hill(c, t);
   return m;
+}
+
+bool has_flow_curve(const toml::table& t) {
+  for (const char* k : kFlowCurveKeys)
+    if (t.contains(k)) return true;
+  return false;
 }
 
 MaterialSpec read_material(const toml::table& t, const std::string& where) {

@@ -123,6 +123,13 @@ MaterialSpec from_toml(const DeckContext& c, const toml::table& t);
 /// InputError listing every problem.
 MaterialSpec read_material(const toml::table& t, const std::string& where);
 
+/// The keys that choose a flow curve (the five forms above), for code that
+/// swaps one curve for another in a [material] table (the model loop's
+/// candidates) without listing them again.
+inline constexpr const char* kFlowCurveKeys[] = {"hardening", "yield", "tangent", "voce", "swift"};
+/// Whether t names a flow curve (one of kFlowCurveKeys).
+bool has_flow_curve(const toml::table& t);
+
 /// "[material]\n" and one line per key, in the fixed order above.
 std::string to_toml(const MaterialSpec& m);
 

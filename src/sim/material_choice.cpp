@@ -15,8 +15,7 @@ io::MaterialSpec material_choice(toml::table& m, const std::string& default_hard
   if (!m.contains("nu")) m.insert("nu", 0.33);
   if (!m.contains("density")) m.insert("density", 2.7e-9);
   const std::string type = m["type"].value_or(std::string());
-  const bool has_curve = m.contains("hardening") || m.contains("yield") || m.contains("voce") || m.contains("swift");
-  if (type != "elastic" && !has_curve) m.insert("hardening", default_hardening);
+  if (type != "elastic" && !io::has_flow_curve(m)) m.insert("hardening", default_hardening);
   return io::read_material(m, where);
 }
 

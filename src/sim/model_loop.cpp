@@ -264,9 +264,8 @@ void inline_all(toml::table& t) {
 /// an accepted combined-hardening model keep its back stress).
 std::string merged_material(const std::string& current, const toml::table& add) {
   toml::table m = material_table(current);
-  const bool curve = add.contains("voce") || add.contains("swift") || add.contains("hardening");
-  if (curve)
-    for (const char* k : {"voce", "swift", "hardening", "yield", "tangent"}) m.erase(k);
+  if (io::has_flow_curve(add))
+    for (const char* k : io::kFlowCurveKeys) m.erase(k);
   for (auto&& [k, v] : add) m.insert_or_assign(k, v);
   inline_all(m);
   m.is_inline(true);
