@@ -15,7 +15,7 @@
 // of the same strip did 2.07 times the work of one: the host then had two
 // cores for work that shares nothing (after the stretch, not in it; what the
 // forked threads share made later stretches worse, but did not explain them
-// all: docs/developer.md).  This probe tells a low 2-thread figure with the
+// all: docs/performance-log.md).  This probe tells a low 2-thread figure with the
 // cores there from one without them.
 //
 // What.  The case's own model is run on one thread alone, then as two

@@ -16,7 +16,7 @@ struct CaseResult {
   PhaseSplit split;
 };
 
-/// Prints the cases as a Markdown table (the one docs/developer.md carries)
+/// Prints the cases as a Markdown table (the one docs/performance-log.md carries)
 /// and one line per goal of issue 22 with "ok" or "FAIL": the 1,600-element
 /// bar on one thread (100 ns with the AVX-512 kernel, 160 ns otherwise), the
 /// strip on one thread (120 ns), the 2-thread speed-up at 8,000 elements and

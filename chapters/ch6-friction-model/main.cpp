@@ -29,7 +29,7 @@ namespace {
 // The chapter's options (main registers them; the body reads them).
 struct Config {
   bool full = false;         ///< --full: the paper-fidelity cup-drawing runs (CTest label `full`)
-  std::string cup_material;  ///< --cup-material: the cup's material (sim/material_spec.hpp); empty: the deck's
+  std::string cup_material;  ///< --cup-material: the cup's material (sim/material_choice.hpp); empty: the deck's
   std::string cup_cases;     ///< --cup-cases: which Table 6.5 cases (default: 1 and 9, all nine with --full)
 };
 

@@ -11,6 +11,7 @@
 
 #include "fe/element_view.hpp"
 #include "fe/solver.hpp"
+#include "material/lane_binding.hpp"
 
 namespace drawbend::fe {
 
@@ -23,12 +24,12 @@ bool avx2_kernel_available() {
 }
 
 void bind_lanes(ElementView& v) {
-  const auto* j2 = dynamic_cast<const material::J2Isotropic*>(v.mat);
-  v.j2_lanes = j2 != nullptr;
-  if (j2) v.j2 = j2->lane_params();
-  const auto* cp = dynamic_cast<const material::CombinedPlasticity*>(v.mat);
-  v.combined_lanes = cp != nullptr;
-  if (cp) v.combined = cp->lane_params();
+  material::LaneBinding b;  // the material says which lane twin it has (Material::bind_lanes)
+  v.mat->bind_lanes(b);
+  v.j2_lanes = b.j2;
+  if (b.j2) v.j2 = b.j2_params;
+  v.combined_lanes = b.combined;
+  if (b.combined) v.combined = b.combined_params;
 }
 
 bool avx512_kernel_available() {

@@ -74,7 +74,8 @@ int element_range(const ElementView& v, int begin, int end, int width);
 }
 
 /// Sets v.j2_lanes, v.j2, v.combined_lanes and v.combined from v.mat: the lane
-/// version of its update where it has one (J2 isotropic, CombinedPlasticity),
+/// version of its update where it has one (J2 isotropic, CombinedPlasticity:
+/// the material says so through Material::bind_lanes, material/lane_binding.hpp),
 /// else the scalar one.  Call after setting v.mat.
 void bind_lanes(ElementView& v);
 

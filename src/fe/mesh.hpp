@@ -67,7 +67,7 @@ inline constexpr int kMinRow = 8;
 /// longest axis slowest, the contiguous halves that the threads take of the
 /// elements and of the nodes meet on the block's smallest cross-section (bar
 /// of 100 x 16 x 5 elements: 102 nodes instead of about 1,800), so less data
-/// passes between the cores every cycle (docs/developer.md, the slow
+/// passes between the cores every cycle (docs/performance-log.md, the slow
 /// stretches); it is also the classic numbering across the short side for
 /// a narrow bandwidth.  Ties keep the tied axes in their as-built order: of
 /// two axes tied for the most elements the later runs slowest (x = y > z

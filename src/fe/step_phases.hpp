@@ -1,6 +1,9 @@
 #pragma once
-// The phases of one explicit cycle (fe/solver_loop.cpp reads them in order:
-// forces, contact, loads, integrate, guards, output) as functions over plain
+// The phases of one explicit cycle (fe/solver_loop.cpp, Solver::run_step,
+// reads them in this order: time-step guard; forces (element loop, into corner
+// slots); loads at t_n; contact and friction; nodal sums and velocities at
+// t_n+1/2; constraints; energies and positions at t_n+1 (with their guards);
+// tools; time; output, the caller's) as functions over plain
 // views of the solver's structure-of-arrays state, and the step plan: the
 // step's node-set and tool names resolved to index arrays once, when the step
 // starts.  Nothing here allocates; the plan and the scratch arrays are sized

@@ -8,7 +8,7 @@
 // share into chunks.  Thread t claims the chunks of share t in order, from
 // the share's counter, so it runs the same items cycle after cycle and their
 // data stay in its core's cache (a dynamic schedule over the whole range lost
-// that: see docs/developer.md).  A thread done with its own share goes on to
+// that: see docs/performance-log.md).  A thread done with its own share goes on to
 // claim the next share's unclaimed chunks.
 // So when a worker enters the region late, or runs slowly for a while on a
 // shared host, the other thread runs the chunks it has not started, and

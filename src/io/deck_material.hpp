@@ -14,16 +14,9 @@
 
 namespace drawbend::io {
 
-/// [material]: type = "elastic" | "j2" | "j2_combined" | "hill48"; E [MPa], nu, density [t/mm^3];
-/// the plastic types take one flow curve: hardening = "path.csv" (plastic_strain,true_stress_MPa;
-/// relative to the deck's directory), yield [MPa] with optional tangent [MPa] (linear hardening),
-/// voce = { sigma0 [MPa], Q [MPa], b } or swift = { K [MPa], e0, n };
-/// j2_combined (and optionally hill48): kinematic = { beta } (split form, beta in [0, 1]) or
-/// { C = [MPa, ...], gamma = [...] } (1 to 3 Armstrong-Frederick terms);
-/// hill48: hill48 = { r0, r45, r90 } or { s45, s90, sb } (yield-stress ratios to RD)
-/// (material/combined_plasticity.hpp, material/hill48.hpp).
-/// Value problems are recorded in c's collector; returns nullptr if the
-/// material could not be built.
+/// [material] (keys and checks: io/material_spec.hpp): read as a MaterialSpec,
+/// then built.  Value problems are recorded in c's collector; returns nullptr
+/// if the material could not be built.
 std::shared_ptr<const material::Material> make_material(const DeckContext& c, const toml::table& t,
                                                         const std::string& deck_dir);
 

@@ -13,64 +13,11 @@
 #include "core/csv.hpp"
 #include "core/run_output.hpp"
 #include "io/run_checkpoint.hpp"
+#include "io/run_observers.hpp"
 #include "io/run_result.hpp"
 #include "io/vtu.hpp"
 
 namespace drawbend::io {
-
-namespace {
-
-/// The element whose reference centroid is nearest p (lowest index on ties).
-int nearest_element(const fe::Mesh& m, const fe::Vec3& p) {
-  int best = 0;
-  double bd = INFINITY;
-  for (int e = 0; e < m.num_elements(); ++e) {
-    double c[3] = {0, 0, 0};
-    for (int a : m.hex[e]) c[0] += m.x[a] / 8, c[1] += m.y[a] / 8, c[2] += m.z[a] / 8;
-    const double d = (c[0] - p[0]) * (c[0] - p[0]) + (c[1] - p[1]) * (c[1] - p[1]) + (c[2] - p[2]) * (c[2] - p[2]);
-    if (d < bd) bd = d, best = e;
-  }
-  return best;
-}
-
-/// Log strain along the element's reference x edges: ln of the mean current
-/// length of its four x-edges (node pairs 0-1, 3-2, 4-5, 7-6) over the reference.
-double edge_strain(const fe::Solver& s, int e) {
-  const auto& m = s.model().mesh;
-  const auto& h = m.hex[e];
-  const int pairs[4][2] = {{0, 1}, {3, 2}, {4, 5}, {7, 6}};
-  double L = 0, L0 = 0;
-  for (const auto& pr : pairs) {
-    const int a = h[pr[0]], b = h[pr[1]];
-    L += std::hypot(s.x()[b] - s.x()[a], s.y()[b] - s.y()[a], s.z()[b] - s.z()[a]);
-    L0 += std::hypot(m.x[b] - m.x[a], m.y[b] - m.y[a], m.z[b] - m.z[a]);
-  }
-  return std::log(L / L0);
-}
-
-double raw_signal(const fe::Solver& s, const HistorySignal& h, int element);
-double signal(const fe::Solver& s, const HistorySignal& h, int element) { return h.scale * raw_signal(s, h, element); }
-
-double raw_signal(const fe::Solver& s, const HistorySignal& h, int element) {
-  if (h.kind == "strain") return h.component == 0 ? edge_strain(s, element) : s.plastic_strain(element);
-  fe::Vec3 v{0, 0, 0};
-  if (h.kind == "reaction") v = s.reaction(h.target);
-  else if (h.kind == "applied") v = s.applied(h.target);
-  else if (h.kind == "tool_force") v = s.tool_force(h.target);
-  else if (h.kind == "tool_offset") v = s.tool_offset(h.target);
-  else if (h.kind == "displacement") {  // mean displacement of the node set [mm]
-    const auto& mesh = s.model().mesh;
-    const auto& set = mesh.node_set(h.target);
-    const std::vector<double>* cur[3] = {&s.x(), &s.y(), &s.z()};
-    const std::vector<double>* ref[3] = {&mesh.x, &mesh.y, &mesh.z};
-    double sum = 0;
-    for (int n : set) sum += (*cur[h.component])[n] - (*ref[h.component])[n];
-    return set.empty() ? 0.0 : sum / static_cast<double>(set.size());
-  }
-  return v[h.component];
-}
-
-}  // namespace
 
 void write_contact_maps(const fe::Solver& s, const std::string& dir, int snapshot) {
   const fe::Model& m = s.model();
@@ -205,18 +152,10 @@ void parse_checkpoint_every(const std::string& spec, RunOptions& opt) {
   else opt.checkpoint_every_cycles = static_cast<long>(v);
 }
 
-RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
-  namespace fs = std::filesystem;
-  ensure_writable_dir(opt.out_dir, "output folder");
-  const int threads = opt.threads > 0 ? opt.threads : deck.threads;
-  if (threads > 0) omp_set_num_threads(threads);
-  const auto wall0 = std::chrono::steady_clock::now();
-  for (const auto& w : deck.warnings) log << "warning: " << w << "\n";  // before the solver can fail
-  fe::Solver solver(deck.model);
-  solver.set_warning_handler([&log](const std::string& w) { log << "\nwarning: " << w << "\n"; });
+namespace {
+
+void log_header(const Deck& deck, const RunOptions& opt, const fe::Solver& solver, double total, std::ostream& log) {
   const fe::Model& m = deck.model;
-  double total = 0;
-  for (const auto& s : m.steps) total += s.duration;
   log << "case " << m.name << ": " << m.mesh.num_elements() << " elements, " << m.mesh.num_nodes() << " nodes, "
       << m.steps.size() << " steps, " << total << " s simulated; dt = " << solver.stable_dt() << " s; mass scaling x"
       << fmt(1 + solver.added_mass() / solver.physical_mass(), 4) << " (units: mm, N, MPa, s)\n";
@@ -230,136 +169,33 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
                              : "set by the process: OMP_NUM_THREADS, the calling command (drawbend-deck --run "
                                "--threads) or a case pool's share, else every hardware thread")
       << ")\n";
-  // History file.
-  std::vector<std::string> header = run_output::run_history_columns();
-  std::vector<int> elements;  // per signal: the tracked element of a "strain" signal
-  for (const auto& h : deck.output.history) {
-    header.push_back(h.name);
-    elements.push_back(h.kind == "strain" ? nearest_element(m.mesh, h.point) : -1);
-  }
-  CsvWriter hist(header);
-  hist.comment("time histories of " + deck.path + " (energies in mJ = N mm)");
-  for (const auto& note : history_notes(deck)) hist.comment(note);  // basis and signs (io/run_result.hpp)
-  RunState rs;
-  auto snapshot = [&]() {
-    const std::string name = "fields_" + std::to_string(rs.snap) + ".vtu";
-    write_fields(solver, (fs::path(opt.out_dir) / name).string());
-    write_contact_maps(solver, opt.out_dir, rs.snap);
-    rs.snapshots.push_back({solver.time(), name});
-    ++rs.snap;
-  };
-  if (opt.restart.empty()) {
-    snapshot();
-  } else {
-    rs = read_checkpoint(opt.restart, deck.hash, solver);
-    for (const auto& row : rs.history_rows) hist.row(row);
-    log << "restarted from " << opt.restart << " at t = " << solver.time() << " s, cycle " << solver.cycles() << std::endl;  // flushed: a watcher may act on it
-  }
-  double& next_hist = rs.next_hist;
-  double& next_field = rs.next_field;
-  int& current_step = rs.current_step;
-  double last_print = -1;
-  RunSummary r;
-  const std::string ckpt_path = (fs::path(opt.out_dir) / "checkpoint.bin").string();
-  double next_ckpt_time = opt.checkpoint_every_s > 0 ? solver.time() + opt.checkpoint_every_s : 0;
-  struct Halt {};
-  auto wall_last = std::chrono::steady_clock::now();
-  const auto wall_run0 = wall_last;  // the time left comes from the cycles done in this run
-  const long cycle0 = solver.cycles();
-  try {
-  solver.run([&](const fe::Progress& p) {
-    const double interval =
-        deck.output.history_interval > 0 ? deck.output.history_interval : p.step->duration / 200.0;
-    if (p.step_index != current_step) {
-      current_step = p.step_index;
-      next_hist = p.time - p.step_time;
-      next_field = next_hist + p.step->duration / std::max(1, deck.output.fields_per_step);
-    }
-    const auto& e = solver.energies();
-    if (p.time >= next_hist - 1e-15) {
-      // The run's own columns, in the order of run_output::run_history_columns().
-      std::vector<std::string> row{fmt(p.time, 10), p.step->name, fmt(p.dt, 6), fmt(e.kinetic, 8), fmt(e.internal, 8),
-                                   fmt(e.hourglass, 8), fmt(e.external_work, 8), fmt(e.friction, 8),
-                                   fmt(e.damping, 8), fmt(e.balance_error(), 4)};
-      for (std::size_t k = 0; k < deck.output.history.size(); ++k)
-        row.push_back(fmt(signal(solver, deck.output.history[k], elements[k]), 8));
-      hist.row(row);
-      next_hist += interval;
-    }
-    if (p.step_time >= p.step->duration * (1 - 1e-12) || p.time >= next_field - 1e-15) {
-      snapshot();
-      next_field += p.step->duration / std::max(1, deck.output.fields_per_step);
-    }
-    const auto now = std::chrono::steady_clock::now();
-    if (!opt.quiet && std::chrono::duration<double>(now - wall_last).count() > opt.progress_every_s) {
-      wall_last = now;
-      // Time left = wall time per cycle so far x the cycles still to run at the
-      // current stable step (the step only shrinks, so this is a lower bound).
-      const double el = std::chrono::duration<double>(now - wall_run0).count();
-      const double frac = p.time / total;
-      const double done = static_cast<double>(p.cycle - cycle0);
-      const double to_go = std::max(0.0, total - p.time) / solver.dt();
-      std::ostringstream line;  // its own stream: the log's number format stays as it was
-      line << "\r  " << std::fixed << std::setprecision(1) << 100 * frac << " %  t = " << std::scientific
-           << std::setprecision(3) << p.time << " s  dt = " << p.dt << " s  step " << p.step->name << "  cycle "
-           << p.cycle << " of ~" << static_cast<long>(p.cycle + to_go) << "  left ~" << std::fixed
-           << std::setprecision(0) << (done > 0 ? el / done * to_go : 0.0) << " s   ";
-      log << line.str() << std::flush;
-      last_print = p.time;
-    }
-    const bool by_cycles = opt.checkpoint_every_cycles > 0 && p.cycle % opt.checkpoint_every_cycles == 0;
-    const bool by_time = opt.checkpoint_every_s > 0 && p.time >= next_ckpt_time;
-    const int sig = opt.stop ? static_cast<int>(*opt.stop) : 0;
-    if (sig != 0) {  // SIGINT/SIGTERM: checkpoint at this cycle boundary and stop
-      rs.history_rows = hist.rows();
-      write_checkpoint(ckpt_path, deck.hash, solver, rs);
-      r.checkpoint = ckpt_path;
-      r.interrupted = sig;
-      throw Halt{};
-    }
-    if (by_cycles || by_time) {
-      if (by_time)
-        while (next_ckpt_time <= p.time) next_ckpt_time += opt.checkpoint_every_s;
-      rs.history_rows = hist.rows();
-      write_checkpoint(ckpt_path, deck.hash, solver, rs);
-      r.checkpoint = ckpt_path;
-      if (opt.halt_after_cycles > 0 && p.cycle >= opt.halt_after_cycles) throw Halt{};
-    }
-  });
-  } catch (const fe::NumericalFault&) {
-    // Keep what was recorded up to the fault: it shows how the run got there.
-    if (last_print >= 0) log << "\n";
-    hist.save((fs::path(opt.out_dir) / run_output::kHistoryFile).string());
-    log << "history up to the fault: " << (fs::path(opt.out_dir) / run_output::kHistoryFile).string() << "\n";
-    throw;
-  } catch (const Halt&) {
-    if (last_print >= 0) log << "\n";
-    if (r.interrupted)
-      log << "interrupted at t = " << solver.time() << " s, cycle " << solver.cycles()
-          << "; continue with: drawbend run " << deck.path << " --out " << opt.out_dir << " --restart " << ckpt_path
-          << "\n";
-    else
-      log << "halted after cycle " << solver.cycles() << " (t = " << solver.time() << " s); continue with --restart "
-          << ckpt_path << "\n";
-    r.halted = true;
-    r.time = solver.time();
-    r.cycles = solver.cycles();
-    return r;
-  }
-  if (last_print >= 0) log << "\n";
-  hist.save((fs::path(opt.out_dir) / run_output::kHistoryFile).string());
-  write_pvd((fs::path(opt.out_dir) / "fields.pvd").string(), rs.snapshots);
-  const auto& e = solver.energies();
-  r.time = solver.time();
-  r.cycles = solver.cycles();
-  r.energy_balance_error = e.balance_error();
-  r.hourglass_ratio = e.internal > 0 ? e.hourglass / e.internal : 0;
-  r.kinetic_ratio = e.internal > 0 ? e.kinetic / e.internal : 0;
-  r.added_mass_ratio = solver.added_mass() / solver.physical_mass();
-  r.max_penetration = solver.max_penetration();
-  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+}
+
+/// A stop by Halt: the interrupted or halted summary and how to continue.
+RunSummary halted(observe::Run& run) {
+  const fe::Solver& solver = run.solver;
+  if (run.printed) run.log << "\n";
+  if (run.r.interrupted)
+    run.log << "interrupted at t = " << solver.time() << " s, cycle " << solver.cycles()
+            << "; continue with: drawbend run " << run.deck.path << " --out " << run.opt.out_dir << " --restart "
+            << run.checkpoint_path << "\n";
+  else
+    run.log << "halted after cycle " << solver.cycles() << " (t = " << solver.time() << " s); continue with --restart "
+            << run.checkpoint_path << "\n";
+  run.r.halted = true;
+  run.r.time = solver.time();
+  run.r.cycles = solver.cycles();
+  return run.r;
+}
+
+/// summary.csv: the end-of-run invariants and the friction laws' event counts;
+/// returns the warnings about clamped friction evaluations for the log.
+std::string write_summary(const observe::Run& run) {
+  const RunSummary& r = run.r;
+  const fe::Solver& solver = run.solver;
+  const fe::Model& m = run.deck.model;
   CsvWriter sum({"quantity", "value", "unit"});
-  sum.comment("end-of-run summary of " + deck.path);
+  sum.comment("end-of-run summary of " + run.deck.path);
   sum.row({"time", fmt(r.time), "s"});
   sum.row({"cycles", std::to_string(r.cycles), "-"});
   sum.row({"energy_balance_error", fmt(r.energy_balance_error, 4), "-"});
@@ -378,29 +214,103 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
           flog += "  warning: contact " + std::to_string(p) + " (" + m.contacts[p].tool + "): " + fmt(n, 12) + " " +
                   name + " (friction evaluated at the domain edge)\n";
       }
-  sum.save((fs::path(opt.out_dir) / "summary.csv").string());
-  // The energy line adds up as printed: the work done on the sheet equals
-  // what it holds and what was removed, plus the residual the balance check
-  // measures (fe/solver.hpp, Energies::balance_error).
+  sum.save((std::filesystem::path(run.opt.out_dir) / "summary.csv").string());
+  return flog;
+}
+
+/// The energy line, which adds up as printed: the work done on the sheet
+/// equals what it holds and what was removed, plus the residual the balance
+/// check measures (fe/solver.hpp, Energies::balance_error).
+void log_energies(const observe::Run& run, const std::string& friction_warnings) {
+  const RunSummary& r = run.r;
+  const auto& e = run.solver.energies();
   const double held = e.kinetic + e.internal + e.hourglass + e.damping - e.initial_kinetic;
   // One number of decimals for every term (4 significant digits of the largest), so the sum reads exactly.
   double big = std::abs(e.external_work);
   for (double v : {e.kinetic, e.internal, e.hourglass, e.damping, e.initial_kinetic}) big = std::max(big, std::abs(v));
   const int dec = big > 0 ? std::clamp(3 - static_cast<int>(std::floor(std::log10(big))), 0, 12) : 3;
   auto E = [dec](double v) { return fmt_fixed(v, dec); };
-  log << "summary: " << r.cycles << " cycles in " << fmt(r.wall_seconds, 3) << " s wall\n"
-      << "  energy [mJ]: work on the sheet " << E(e.external_work) << " = kinetic " << E(e.kinetic) << " + internal "
-      << E(e.internal) << " + hourglass " << E(e.hourglass) << " + damping " << E(e.damping)
-      << (e.initial_kinetic != 0 ? " - initial kinetic " + E(e.initial_kinetic) : "") << " + residual "
-      << E(e.external_work - held) << "\n"
-      << "  (the work is that of loads, supports and tools, friction included: friction dissipated "
-      << fmt(e.friction, 4) << " mJ; the contact penalty springs hold " << fmt(e.contact_stored, 4) << " mJ)\n"
-      << "  energy balance error " << fmt(100 * r.energy_balance_error, 3) << " % of the largest energy flow; "
-      << "hourglass/internal " << fmt(100 * r.hourglass_ratio, 3) << " %; kinetic/internal "
-      << fmt(100 * r.kinetic_ratio, 3) << " %; mass scaling x" << fmt(1 + r.added_mass_ratio, 4)
-      << "; max penetration " << fmt(r.max_penetration, 3) << " mm\n" << flog;
+  run.log << "summary: " << r.cycles << " cycles in " << fmt(r.wall_seconds, 3) << " s wall\n"
+          << "  energy [mJ]: work on the sheet " << E(e.external_work) << " = kinetic " << E(e.kinetic) << " + internal "
+          << E(e.internal) << " + hourglass " << E(e.hourglass) << " + damping " << E(e.damping)
+          << (e.initial_kinetic != 0 ? " - initial kinetic " + E(e.initial_kinetic) : "") << " + residual "
+          << E(e.external_work - held) << "\n"
+          << "  (the work is that of loads, supports and tools, friction included: friction dissipated "
+          << fmt(e.friction, 4) << " mJ; the contact penalty springs hold " << fmt(e.contact_stored, 4) << " mJ)\n"
+          << "  energy balance error " << fmt(100 * r.energy_balance_error, 3) << " % of the largest energy flow; "
+          << "hourglass/internal " << fmt(100 * r.hourglass_ratio, 3) << " %; kinetic/internal "
+          << fmt(100 * r.kinetic_ratio, 3) << " %; mass scaling x" << fmt(1 + r.added_mass_ratio, 4)
+          << "; max penetration " << fmt(r.max_penetration, 3) << " mm\n"
+          << friction_warnings;
+}
+
+/// The end-of-run invariants into run.r.
+void fill_summary(observe::Run& run, std::chrono::steady_clock::time_point wall0) {
+  const fe::Solver& solver = run.solver;
+  const auto& e = solver.energies();
+  RunSummary& r = run.r;
+  r.time = solver.time();
+  r.cycles = solver.cycles();
+  r.energy_balance_error = e.balance_error();
+  r.hourglass_ratio = e.internal > 0 ? e.hourglass / e.internal : 0;
+  r.kinetic_ratio = e.internal > 0 ? e.kinetic / e.internal : 0;
+  r.added_mass_ratio = solver.added_mass() / solver.physical_mass();
+  r.max_penetration = solver.max_penetration();
+  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+}
+
+}  // namespace
+
+// The recipe: set up, start (or restart), run with the observers
+// (io/run_observers.hpp), then the final outputs.
+RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
+  namespace fs = std::filesystem;
+  ensure_writable_dir(opt.out_dir, "output folder");
+  const int threads = opt.threads > 0 ? opt.threads : deck.threads;
+  if (threads > 0) omp_set_num_threads(threads);
+  const auto wall0 = std::chrono::steady_clock::now();
+  for (const auto& w : deck.warnings) log << "warning: " << w << "\n";  // before the solver can fail
+  fe::Solver solver(deck.model);
+  solver.set_warning_handler([&log](const std::string& w) { log << "\nwarning: " << w << "\n"; });
+  observe::Run run(deck, opt, solver, log);
+  for (const auto& s : deck.model.steps) run.total += s.duration;
+  run.checkpoint_path = (fs::path(opt.out_dir) / "checkpoint.bin").string();
+  log_header(deck, opt, solver, run.total, log);
+
+  if (!opt.restart.empty()) {
+    run.rs = read_checkpoint(opt.restart, deck.hash, solver);
+    log << "restarted from " << opt.restart << " at t = " << solver.time() << " s, cycle " << solver.cycles() << std::endl;  // flushed: a watcher may act on it
+  }
+  observe::History history(run);
+  observe::Fields fields(run);
+  if (opt.restart.empty()) fields.snapshot();
+  observe::Progress progress(run);
+  observe::Checkpoints checkpoints(run);
+  try {
+    solver.run([&](const fe::Progress& p) {
+      observe::follow_step(run, p);
+      history(p);
+      fields(p);
+      progress(p);
+      observe::signal_stop(run, history, p);
+      checkpoints(history, p);
+    });
+  } catch (const fe::NumericalFault&) {
+    // Keep what was recorded up to the fault: it shows how the run got there.
+    if (run.printed) log << "\n";
+    history.save();
+    log << "history up to the fault: " << (fs::path(opt.out_dir) / run_output::kHistoryFile).string() << "\n";
+    throw;
+  } catch (const observe::Halt&) {
+    return halted(run);
+  }
+  if (run.printed) log << "\n";
+  history.save();
+  write_pvd((fs::path(opt.out_dir) / "fields.pvd").string(), run.rs.snapshots);
+  fill_summary(run, wall0);
+  log_energies(run, write_summary(run));
   write_run_result(deck, solver, opt.out_dir, opt.result, log);  // result.toml (io/run_result.hpp)
-  return r;
+  return run.r;
 }
 
 }  // namespace drawbend::io

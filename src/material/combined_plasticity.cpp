@@ -5,6 +5,7 @@
 
 #include "core/csv.hpp"
 #include "material/sheet_frame.hpp"
+#include "material/lane_binding.hpp"
 
 namespace drawbend::material {
 
@@ -296,6 +297,11 @@ std::string CombinedPlasticity::describe() const {
   return std::string(aniso_ ? hill_.describe() : "von Mises") + " plasticity, " + k + " (E = " + fmt(el_.E) +
          " MPa, nu = " + fmt(el_.nu) + ", rho = " + fmt(el_.rho) + " t/mm^3, " + std::to_string(curve_.size()) +
          "-point curve, initial yield " + fmt(s0_) + " MPa)";
+}
+
+void CombinedPlasticity::bind_lanes(LaneBinding& b) const {
+  b.combined = true;
+  b.combined_params = lane_params();
 }
 
 }  // namespace drawbend::material

@@ -107,6 +107,7 @@ class CombinedPlasticity final : public Material {
     HardeningCurve::Table curve;
   };
   LaneParams lane_params() const noexcept;
+  void bind_lanes(LaneBinding& b) const override;
 
  private:
   double equivalent(const double xi[6]) const;  // sigma_bar in the sheet axes

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/csv.hpp"
+#include "material/lane_binding.hpp"
 
 namespace drawbend::material {
 
@@ -88,6 +89,11 @@ std::string J2Isotropic::describe() const {
   return "J2 isotropic hardening (E = " + fmt(el_.E) + " MPa, nu = " + fmt(el_.nu) + ", rho = " + fmt(el_.rho) +
          " t/mm^3, " + std::to_string(curve_.size()) + "-point curve, initial yield " +
          fmt(curve_.initial_yield()) + " MPa)";
+}
+
+void J2Isotropic::bind_lanes(LaneBinding& b) const {
+  b.j2 = true;
+  b.j2_params = lane_params();
 }
 
 }  // namespace drawbend::material

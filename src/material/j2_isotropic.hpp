@@ -56,6 +56,7 @@ class J2Isotropic final : public Material {
     return {el_.lambda, el_.G, g3_, y0_sq_, el_.E, 0.81 * y0_sq_ * (1.0 - 1e-9), curve_.table()};
   }
   const IsotropicElasticity& elasticity() const { return el_; }
+  void bind_lanes(LaneBinding& b) const override;
 
  private:
   inline void update_point(const double deps[6], double sigma[6], double* state) const noexcept;

@@ -44,6 +44,8 @@ IsotropicElasticity::IsotropicElasticity(double youngs_modulus, double poisson_r
 
 double Material::tangent_ratio(const double* /*sigma*/, const double* /*state*/) const { return 1.0; }
 
+void Material::bind_lanes(LaneBinding& /*b*/) const {}
+
 double von_mises(const double s[6]) noexcept {
   const double p = (s[XX] + s[YY] + s[ZZ]) / 3.0;
   const double a = s[XX] - p, b = s[YY] - p, c = s[ZZ] - p;

@@ -25,7 +25,9 @@
 //
 // Extending: a new model derives from Material with its own state layout
 // (state_size() doubles per point) and follows the rules above; the element
-// code does not change.
+// code does not change.  A model with a lane twin of its update (the element
+// kernel's vector lanes: J2Isotropic, CombinedPlasticity) says so through
+// bind_lanes() (material/lane_binding.hpp); the others run point by point.
 #include <cstddef>
 #include <string>
 
@@ -38,6 +40,8 @@ inline constexpr int XX = 0, YY = 1, ZZ = 2, XY = 3, YZ = 4, ZX = 5;
 
 /// The sheet's axes at an integration point: unit, orthonormal, right-handed,
 /// global components.  Default: RD = x, TD = y, ND = z.
+struct LaneBinding;  // material/lane_binding.hpp
+
 struct SheetAxes {
   double rd[3] = {1, 0, 0}, td[3] = {0, 1, 0}, nd[3] = {0, 0, 1};
 };
@@ -87,6 +91,11 @@ class Material {
   virtual double plastic_strain(const double* /*state*/) const { return 0.0; }
   /// One-line description with the constants, for output-file headers (default: the elastic constants).
   virtual std::string describe() const;
+  /// The lane twin of update(), where the model has one: sets its flag and
+  /// constants in `b` (material/lane_binding.hpp), which the element kernel
+  /// reads instead of asking for the model's type.  Default: none (the update
+  /// runs point by point).  Out of line, as tangent_ratio.
+  virtual void bind_lanes(LaneBinding& b) const;
 };
 
 /// Isotropic linear elastic constants and the derived moduli.  The constructor

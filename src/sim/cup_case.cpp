@@ -17,7 +17,7 @@
 #include "io/run_case.hpp"
 #include "core/toml_read.hpp"
 #include "material/material.hpp"
-#include "sim/material_spec.hpp"
+#include "sim/material_choice.hpp"
 
 namespace drawbend::sim {
 

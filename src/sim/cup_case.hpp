@@ -27,7 +27,7 @@ struct CupSpec {
   double stroke = 17;          ///< punch travel [mm]
   long cycles = 30000;         ///< cycles per stroke (sets dt and so the mass scaling)
   int refine = 1;              ///< the deck's element counts (in-plane and through) times this
-  std::string material;        ///< sim/material_spec.hpp choice; empty: the deck's (isotropic J2, Table 5.1 RD)
+  std::string material;        ///< sim/material_choice.hpp choice; empty: the deck's (isotropic J2, Table 5.1 RD)
   double punch_radius = NAN;   ///< punch corner radius [mm]; NaN: the deck's (ASSUMED 5 mm)
   double die_radius = NAN;     ///< upper-die corner radius [mm]; NaN: the deck's (ASSUMED 5 mm)
   /// Friction on every contact: empty = the deck's (Table 6.1 mu(p, v), RD along x);

@@ -16,7 +16,7 @@
 #include "io/run_result.hpp"
 #include "sim/cost_model.hpp"
 #include "sim/executor.hpp"
-#include "sim/material_spec.hpp"
+#include "sim/material_choice.hpp"
 
 namespace drawbend::sim {
 

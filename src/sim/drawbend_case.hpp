@@ -46,7 +46,7 @@ struct DrawBendSpec {
   double mass_scaling = 1e4;    ///< uniform density factor
   double penalty = 0.1;         ///< contact penalty scale
   std::string hardening;        ///< hardening-curve CSV (plastic strain, true stress)
-  /// The material (sim/material_spec.hpp): empty = isotropic J2 on `hardening`; a TOML inline
+  /// The material (sim/material_choice.hpp): empty = isotropic J2 on `hardening`; a TOML inline
   /// table of [material] keys, or a TOML file with a [material] table.
   std::string material;
   std::string strip_direction = "rd";  ///< the strip's axis is RD ("rd") or TD ("td")

@@ -12,6 +12,7 @@
 #include "core/hash.hpp"
 #include "material/swift_fit.hpp"
 #include "sim/case_pool.hpp"
+#include "sim/material_choice.hpp"
 
 #include <filesystem>
 #include <sstream>
@@ -339,9 +340,8 @@ void inline_all(toml::table& t) {
 /// an accepted combined-hardening model keep its back stress).
 std::string merged_material(const std::string& current, const toml::table& add) {
   toml::table m = material_table(current);
-  const bool curve = add.contains("voce") || add.contains("swift") || add.contains("hardening");
-  if (curve)
-    for (const char* k : {"voce", "swift", "hardening", "yield", "tangent"}) m.erase(k);
+  if (io::has_flow_curve(add))
+    for (const char* k : io::kFlowCurveKeys) m.erase(k);
   for (auto&& [k, v] : add) m.insert_or_assign(k, v);
   inline_all(m);
   m.is_inline(true);
@@ -358,24 +358,12 @@ toml::node_view<const toml::node> file_key(const toml::table& file_material, con
 }
 
 
-/// The flow curve of a [material] table: its swift, voce or hardening key (a
-/// CSV path or an inline table), else `default_table` (a CSV path).
+/// The flow curve of a [material] table, read by the typed reader
+/// (io/material_spec.hpp; `default_table`, a CSV path, when it names none).
 material::HardeningCurve curve_of(const toml::table& m, const std::string& default_table) {
-  if (const auto* sw = m["swift"].as_table())
-    return material::HardeningCurve::swift((*sw)["K"].value_or(0.0), (*sw)["e0"].value_or(0.0), (*sw)["n"].value_or(0.0));
-  if (const auto* vo = m["voce"].as_table())
-    return material::HardeningCurve::voce((*vo)["sigma0"].value_or(0.0), (*vo)["Q"].value_or(0.0), (*vo)["b"].value_or(0.0));
-  if (const auto* in = m["hardening"].as_table()) {
-    const auto* ax = (*in)["plastic_strain"].as_array();
-    const auto* ay = (*in)["true_stress_MPa"].as_array();
-    if (!ax || !ay) throw InputError("material: an inline hardening table needs plastic_strain and true_stress_MPa arrays");
-    std::vector<double> x, y;
-    for (const auto& v : *ax) x.push_back(v.value_or(std::nan("")));
-    for (const auto& v : *ay) y.push_back(v.value_or(std::nan("")));
-    return material::HardeningCurve(x, y, "the inline curve");  // checks lengths, finiteness, order
-  }
-  if (const auto f = m["hardening"].value<std::string>()) return material::HardeningCurve::load(*f);
-  return material::HardeningCurve::load(default_table);
+  toml::table filled = m;
+  const io::MaterialSpec spec = material_choice(filled, default_table, "--material");
+  return io::make_flow_curve(spec.curve.value_or(io::CurveFile{default_table}), "");
 }
 
 /// The flow curve a spec's material uses (curve_of on its material).

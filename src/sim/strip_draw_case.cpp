@@ -9,7 +9,7 @@
 #include "fe/solver.hpp"
 #include "sim/case_pool.hpp"
 #include "sim/deck_writer.hpp"
-#include "sim/material_spec.hpp"
+#include "sim/material_choice.hpp"
 
 namespace drawbend::sim {
 

@@ -10,14 +10,26 @@
 //    it names no flow curve, the default hardening CSV;
 //  - the path of a TOML file with a [material] table (data/materials/*.toml),
 //    merged the same way.
-// The deck reader (io/deck_material.hpp) then checks every key and value with
-// file:line: key messages.  Units: MPa, t/mm^3.
+// The merged table is read by io::from_toml (io/material_spec.hpp), which
+// checks every key and value with file:line: key messages naming the file or
+// "--material", and written by io::to_toml.  Units: MPa, t/mm^3.
 #include <string>
+
+#include <toml++/toml.h>
+
+#include "io/material_spec.hpp"
 
 namespace drawbend::sim {
 
-/// "[material]\n..." for the choice above.  Throws InputError when the text is
-/// neither a readable TOML file with a [material] table nor a TOML inline table.
+/// The typed material of the choice above.  Throws InputError when the text is
+/// neither a readable TOML file with a [material] table nor a TOML inline
+/// table, or when a key or value is wrong.
+io::MaterialSpec material_choice(const std::string& material, const std::string& default_hardening);
+/// The same for a [material] table already parsed (a partial table: the
+/// defaults above are inserted into it); `where` names it in messages.
+io::MaterialSpec material_choice(toml::table& m, const std::string& default_hardening, const std::string& where);
+
+/// "[material]\n..." for the choice above: io::to_toml(material_choice(...)).
 std::string material_section(const std::string& material, const std::string& default_hardening);
 
 /// "[sheet]\nrolling_direction = [...]\n": the strip's axis (x) is RD ("rd") or

@@ -1,0 +1,56 @@
+#include "sim/material_choice.hpp"
+
+#include <filesystem>
+
+#include <toml++/toml.h>
+
+#include "core/csv.hpp"
+#include "core/toml_read.hpp"
+
+namespace drawbend::sim {
+
+io::MaterialSpec material_choice(toml::table& m, const std::string& default_hardening, const std::string& where) {
+  if (!m.contains("type")) m.insert("type", "j2");
+  if (!m.contains("E")) m.insert("E", 70000.0);
+  if (!m.contains("nu")) m.insert("nu", 0.33);
+  if (!m.contains("density")) m.insert("density", 2.7e-9);
+  const std::string type = m["type"].value_or(std::string());
+  if (type != "elastic" && !io::has_flow_curve(m)) m.insert("hardening", default_hardening);
+  return io::read_material(m, where);
+}
+
+io::MaterialSpec material_choice(const std::string& material, const std::string& default_hardening) {
+  if (material.empty()) {  // the thesis's model
+    io::MaterialSpec m;
+    m.curve = io::CurveFile{default_hardening};
+    return m;
+  }
+  const bool file = material.front() != '{' && std::filesystem::is_regular_file(material);
+  toml::table root;
+  try {
+    root = file ? parse_toml_file(material) : parse_toml("material = " + material, "--material");
+  } catch (const InputError& e) {
+    throw InputError(std::string(e.what()) + " (expected a TOML inline table or a file with a [material] table)");
+  }
+  auto* t = root["material"].as_table();  // filled in place: a copy would lose the keys' lines
+  if (!t && file) throw InputError(material + ": expected a [material] table");
+  if (!t)
+    throw InputError("--material: expected a TOML inline table such as { type = \"j2_combined\", "
+                     "kinematic = { beta = 0.5 } } or the path of a TOML file with a [material] table");
+  // A flow-curve file named in a material file is that file's (relative to its folder).
+  if (auto* h = t->get_as<std::string>("hardening"); h && file && std::filesystem::path(h->get()).is_relative())
+    *h = std::filesystem::absolute(std::filesystem::path(material).parent_path() / h->get()).lexically_normal().string();
+  return material_choice(*t, default_hardening, file ? material : "--material");
+}
+
+std::string material_section(const std::string& material, const std::string& default_hardening) {
+  return io::to_toml(material_choice(material, default_hardening));
+}
+
+std::string sheet_section(const std::string& strip_direction) {
+  if (strip_direction == "rd") return "[sheet]\nrolling_direction = [1.0, 0.0, 0.0]  # RD along the strip\n";
+  if (strip_direction == "td") return "[sheet]\nrolling_direction = [0.0, 1.0, 0.0]  # RD across the strip (a TD strip)\n";
+  throw InputError("strip direction: expected \"rd\" or \"td\", found \"" + strip_direction + "\"");
+}
+
+}  // namespace drawbend::sim
