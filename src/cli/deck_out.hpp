@@ -6,17 +6,34 @@
 #include <string>
 
 #include "core/csv.hpp"
+#include "core/file_gate.hpp"
+#include "io/deck.hpp"
 
 namespace drawbend::cli {
 
+/// A builder's deck passes the checks `drawbend run` applies (io::parse_deck:
+/// every key, the material and the friction law, the files they name, the
+/// cost limits) before it is printed or written: a builder never writes a
+/// deck that `run` then refuses (issue 53: drawbend-deck wrote r0 = -1).
+inline const std::string& checked_deck(const std::string& text, const std::string& command) {
+  try {
+    (void)io::parse_deck(text, command + ".toml");
+  } catch (const InputError& e) {
+    throw InputError(std::string(e.what()) + "\n(" + command + " refuses to write a deck that `drawbend run` would refuse)");
+  }
+  return text;
+}
+
 inline int write_deck_out(const std::string& text, const std::string& out, const std::string& command) {
+  checked_deck(text, command);
   if (out.empty()) {
     std::cout << text;
     return 0;
   }
   const std::filesystem::path p(out);
   if (p.has_parent_path()) ensure_writable_dir(p.parent_path().string(), "--out");
-  write_file_atomic(out, text);
+  name_input(out, "--out");
+  write_output(out, text);  // never replaces a folder, FIFO or device (core/file_gate.hpp)
   std::cout << command << ": wrote " << out << " (run it with: drawbend run " << out << " --out DIR)\n";
   return 0;
 }

@@ -15,6 +15,8 @@
 #endif
 
 #include "analysis/rope.hpp"
+#include "cli/deck_out.hpp"
+#include "cli/option_bounds.hpp"
 #include "cli/threads.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
@@ -68,7 +70,16 @@ int drawbend_deck_command(int argc, char** argv) {
   opt.add(threads, "threads",
           "OpenMP threads of the run (0: OMP_NUM_THREADS or all); without --run, written into the deck's [numerics]");
   opt.add(run_dir, "run", "run the deck into this directory instead of printing it");
+  using namespace bounds;  // every number range-checked as it is parsed (cli/option_bounds.hpp)
+  opt.range("pin-diameter", 0, kLengthMM, "mm", true).range("thickness", 0, kThicknessMM, "mm", true);
+  opt.range("width", 0, kLengthMM, "mm", true).range("back-tension", 0, kForceN, "N");
+  opt.range("speed", 0, kSpeedMMs, "mm/s", true).range("draw-length", 0, kLengthMM, "mm", true, false, true);
+  opt.range("element-length", 0, kLengthMM, "mm", true).range("across", 1, kElements).range("through", 1, kElements);
+  opt.range("mass-scaling", 1, kMassScaling, "", false, false, true).range("penalty", 0, kPenalty, "", true);
+  opt.range("frames", 1, 1000).range("bending-force", 0, kForceN, "N").range("yield-stress", 0, 1e4, "MPa");
   if (!opt.parse(argc, argv)) return 0;
+  name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
+  name_input(s.material, "--material");
   check_threads(threads);
   if (basis != "full" && basis != "half")
     throw std::invalid_argument("--basis: expected full or half, found '" + basis + "'");
@@ -84,7 +95,7 @@ int drawbend_deck_command(int argc, char** argv) {
   if (run_dir.empty()) {
     std::cout << "# back_tension in this deck is on the half model: " << fmt(s.back_tension, 6) << " N ("
               << fmt(back_tension, 6) << " N on the " << tag << ")\n"
-              << deck_with_threads(sim::deck_text(s), threads);
+              << checked_deck(deck_with_threads(sim::deck_text(s), threads), "drawbend-deck");
     return 0;
   }
   apply_threads(threads);

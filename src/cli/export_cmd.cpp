@@ -10,6 +10,7 @@
 #include "cli/exit_codes.hpp"
 #include "cli/threads.hpp"
 #include "core/csv.hpp"
+#include "core/file_gate.hpp"
 #include "core/options.hpp"
 #include "loop/export.hpp"
 
@@ -41,6 +42,7 @@ int export_main(int argc, char** argv) {
       const auto slash = path.find_last_of('/');
       out = (slash == std::string::npos ? std::string() : path.substr(0, slash + 1)) + "friction_" + to + ext;
     }
+    name_input(out, "--out");  // never replaces a folder, FIFO or device (core/file_gate.hpp)
     write_file_atomic(out, r.text);
     std::cout << "wrote " << out << " (" << to << "; max |mu - law| = " << fmt(r.max_error, 3) << " over the domain)\n";
     return 0;

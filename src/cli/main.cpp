@@ -12,6 +12,7 @@
 
 #include "cli/loop_cmd.hpp"
 #include "core/csv.hpp"
+#include "core/file_gate.hpp"
 #include "core/options.hpp"
 #include "fe/guards.hpp"
 #include "io/deck.hpp"
@@ -100,6 +101,7 @@ int main(int argc, char** argv) {
           "write <out>/checkpoint.bin every N cycles (e.g. 500) or T simulated seconds (e.g. 2e-3s)");
   opt.add(ro.restart, "restart", "continue from this checkpoint (same deck; use the same --out)");
   opt.add(halt, "halt-after-cycles", "stop after the first checkpoint at or beyond this cycle (tests restarts)");
+  opt.range("progress-every", 0, 1e6, "s", true).range("halt-after-cycles", 0, 2e9);
   return cli::with_exit_codes([&] {
     if (!opt.parse(argc - (help ? 1 : 2), argv + (help ? 1 : 2))) return 0;
     cli::check_threads(ro.threads);
@@ -108,6 +110,7 @@ int main(int argc, char** argv) {
       throw std::invalid_argument("--progress-every must be a positive number of seconds");
     ro.halt_after_cycles = halt;
     if (!every.empty()) io::parse_checkpoint_every(every, ro);
+    name_input(ro.restart, "--restart");  // the file gate names the option (core/file_gate.hpp)
     if (halt > 0 && every.empty()) throw std::invalid_argument("--halt-after-cycles needs --checkpoint-every");
     ensure_writable_dir(ro.out_dir, "--out");  // before any work
     watch_stop_signals();
