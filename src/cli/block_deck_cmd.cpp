@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/deck_out.hpp"
+#include "cli/option_bounds.hpp"
 #include "cli/threads.hpp"
 #include "core/options.hpp"
 #include "sim/block_case.hpp"
@@ -42,7 +43,16 @@ int block_deck_command(int argc, char** argv) {
   opt.add(threads, "threads", "OpenMP threads written into the deck's [numerics] for `drawbend run` (0: none written, the default)");
   opt.example("drawbend block-deck --pressure 40 --speed 70 --out my-block/deck.toml");
   opt.example("drawbend run my-block/deck.toml --out my-block/run --quiet");
+  using namespace bounds;  // every number range-checked as it is parsed (cli/option_bounds.hpp)
+  opt.range("pressure", 0, kPressureMPa, "MPa", true).range("speed", 0, kSpeedMMs, "mm/s", true);
+  opt.range("direction", -360, 360, "deg").range("size", 0, kLengthMM, "mm", true).range("elements", 1, kElements);
+  opt.range("mass-scaling", 1, kMassScaling).range("penalty", 0, kPenalty, "", true);
+  opt.range("interval", 1, kIntervalCycles, "cycles").range("press-time", 0, kTimeS, "s", true);
+  opt.range("press-ramp", 0, kTimeS, "s", true).range("slide-time", 0, kTimeS, "s", true);
+  opt.range("speed-ramp", 0, kTimeS, "s", true);
   if (!opt.parse(argc, argv)) return 0;
+  name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
+  name_input(s.surface_nodes, "--surface-nodes");
   return write_deck_out(deck_with_threads(sim::block_deck_text(s), threads), out, "block-deck");
 }
 

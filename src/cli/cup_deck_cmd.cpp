@@ -7,6 +7,8 @@
 #include <cmath>
 #include <iostream>
 
+#include "cli/deck_out.hpp"
+#include "cli/option_bounds.hpp"
 #include "cli/threads.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
@@ -39,7 +41,14 @@ int cup_deck_command(int argc, char** argv) {
   opt.add(threads, "threads", "OpenMP threads written into the deck's [numerics] for `drawbend run` (0: none written, the default)");
   opt.example("drawbend cup-deck --die-radius 8 --stroke 1 --cycles 600 > my-cup.toml");
   opt.example("drawbend run my-cup.toml --out my-cup --quiet");
+  using namespace bounds;  // every number range-checked as it is parsed (cli/option_bounds.hpp)
+  opt.range("speed", 0, kSpeedMMs, "mm/s", true).range("stroke", 0, kLengthMM, "mm", true);
+  opt.range("cycles", 100, 1e8).range("refine", 1, 8);
+  opt.range("punch-radius", 0, kLengthMM, "mm", true, false, true).range("die-radius", 0, kLengthMM, "mm", true, false, true);
   if (!opt.parse(argc, argv)) return 0;
+  name_input(s.deck, "--base");  // the file gate names the option (core/file_gate.hpp)
+  name_input(s.material, "--material");
+  name_input(s.friction, "--friction");
   check_threads(threads);
   s.cycles = cycles;
   if (!(s.speed > 0)) throw std::invalid_argument("--speed: expected a punch speed > 0 mm/s, found " + fmt(s.speed));
@@ -49,7 +58,7 @@ int cup_deck_command(int argc, char** argv) {
   if (punch_radius < 0 || die_radius < 0) throw std::invalid_argument("--punch-radius/--die-radius: expected >= 0 mm");
   if (punch_radius > 0) s.punch_radius = punch_radius;
   if (die_radius > 0) s.die_radius = die_radius;
-  std::cout << deck_with_threads(sim::cup_deck_text(s), threads);
+  std::cout << checked_deck(deck_with_threads(sim::cup_deck_text(s), threads), "cup-deck");
   return 0;
 }
 

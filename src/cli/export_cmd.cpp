@@ -9,6 +9,7 @@
 #include "cli/exit_codes.hpp"
 #include "cli/threads.hpp"
 #include "core/csv.hpp"
+#include "core/file_gate.hpp"
 #include "core/options.hpp"
 #include "loop/export.hpp"
 
@@ -55,6 +56,7 @@ int export_main(int argc, char** argv) {
     const loop::ExportModel m = loop::read_friction_model(path);
     const loop::ExportResult r = loop::export_to(to, m, eo);
     if (out.empty()) out = loop::export_path(path, to);
+    name_input(out, "--out");  // never replaces a folder, FIFO or device (core/file_gate.hpp)
     write_file_atomic(out, r.text);
     std::cout << "wrote " << out << " (" << to << "; "
               << (to == "openradioss" ? "max relative error " + fmt(100 * r.max_error, 3) + " % in " +

@@ -15,12 +15,14 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <set>
 
 #include "core/csv.hpp"
+#include "core/file_gate.hpp"
 #include "core/options.hpp"
 #include "core/strip_limits.hpp"
 #include "loop/loop.hpp"
@@ -102,6 +104,15 @@ int loop_main(int argc, char** argv) {
   opt.add(lo.alpha, "alpha", "family-wise significance level (Bonferroni over candidates)");
   opt.add(lo.max_steps, "max-steps", "maximum number of effects to add");
   opt.add(threads, "threads", "threads of the fits' matrix products (0: one, the default: more never paid on a busy machine)");
+  // Every number range-checked as it is parsed (issue 53: --folds 0 ended on a
+  // floating-point exception, --folds 1, negative permutations and alpha
+  // outside (0, 1) ran and concluded differently).  Folds: at least 2 (one
+  // fold has nothing held out), at most 100.  Permutations: at least 19 (the
+  // smallest count that can reach p = 0.05), at most 1e6 (minutes per
+  // candidate).  Steps and the minimum effect: 0 (the base model only / no
+  // minimum) up to 100 steps and 100 noise sd.
+  opt.range("folds", 2, 100).range("permutations", 19, 1e6).range("alpha", 0, 1, "", true, true);
+  opt.range("max-steps", 0, 100).range("min-effect", 0, 100, "replicate noise sd");
   opt.add(bending, "bending",
           "bending force: linear (b0 + b1 F_back) or constant, from the rotating-pin rows; for pins without "
           "rotating-pin rows: swift (Eq. 2.1), fe (the FE map's bending_force_N) or none (F_B = 0)");
@@ -198,6 +209,10 @@ int synth_main(int argc, char** argv) {
   opt.example("drawbend synth --effect depletion --noise 5 --seed 21 --out my-synth    # my-synth/truth.json: the hidden law");
   opt.example("drawbend synth --from-thesis --out my-thesis");
   opt.add(points, "points", "rows per thesis fit for --from-thesis");
+  opt.range("points", 2, 10000);
+  // A hidden law's amplitude (N or a fraction, by law) above 1e6 gives forces
+  // beyond a strip test (core/strip_limits.hpp) whatever the law.
+  opt.range("amplitude", -kMaxStripForceN, kMaxStripForceN);
   opt.add(threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all)");
   opt.add(generator, "generator",
           "library (the hidden laws of --effect) or blind (a random design, decoys and effect drawn from a wide "
@@ -212,6 +227,14 @@ int synth_main(int argc, char** argv) {
     // --rows-per-test -5 ended in "cannot create std::vector larger than
     // max_size()" with exit 3, 1e8 ran for minutes, and --noise -1 wrote data).
     auto bad = [](const std::string& what) { throw InputError(what); };
+    {  // the hidden law's name, before any work, with the valid ones listed
+      const auto& names = synth_effects();
+      if (std::find(names.begin(), names.end(), so.effect) == names.end()) {
+        std::string list;
+        for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+        bad("--effect: expected one of " + list + ", found '" + clip_for_message(so.effect) + "'");
+      }
+    }
     if (!(so.noise_N >= 0 && so.noise_N <= kMaxStripForceN))
       bad("--noise: expected a noise sd in [0, " + fmt(kMaxStripForceN) + "] N (a strip test), found " + fmt(so.noise_N));
     if (so.tests_per_pin < 1 || so.tests_per_pin > 10000)
@@ -221,8 +244,6 @@ int synth_main(int argc, char** argv) {
     if (static_cast<double>(so.tests_per_pin) * so.rows_per_test > 1e6)
       bad("--tests-per-pin x --rows-per-test: expected at most 1e6 rows per pin, found " +
           fmt(static_cast<double>(so.tests_per_pin) * so.rows_per_test));
-    if (from_thesis && (points < 2 || points > 10000))
-      bad("--points: expected 2 to 10000 rows per thesis fit, found " + std::to_string(points));
     ensure_writable_dir(out, "--out");
     if (from_thesis) {
       const Dataset d = thesis_dataset(data_dir + "/thesis", points);

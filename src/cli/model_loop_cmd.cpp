@@ -15,7 +15,10 @@
 #include <sstream>
 
 #include "core/csv.hpp"
+#include "core/file_gate.hpp"
+#include "io/deck.hpp"
 #include "cli/loop_cmd.hpp"
+#include "cli/option_bounds.hpp"
 #include "cli/threads.hpp"
 #include "sim/case_pool.hpp"
 #include "sim/executor.hpp"
@@ -116,6 +119,11 @@ int model_loop_command(int argc, char** argv, const char* name) {
               "--element-length 2 --across 1    # a few minutes; writes my-model-loop/model_loop.md");
   opt.example("drawbend model-loop data/measured/model_loop_points.csv --out my-model-loop --candidates offset "
               "--element-length 2 --across 1    # again: the finished runs are read back");
+  using namespace bounds;  // every number range-checked as it is parsed (cli/option_bounds.hpp)
+  opt.range("fit-pin", 0, kLengthMM, "mm", true).range("min-gain", 0, 1);
+  opt.range("thickness", 0, kThicknessMM, "mm", true).range("width", 0, kLengthMM, "mm", true);
+  opt.range("speed", 0, kSpeedMMs, "mm/s", true).range("mass-scaling", 1, kMassScaling, "", false, false, true);
+  opt.range("element-length", 0, kLengthMM, "mm", true).range("across", 1, kElements);
   if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
     if (!opt.parse(argc, argv)) return 0;
     throw InputError(me + ": missing DATA.csv (columns pin_diameter_mm, back_tension_N, bending_force_N; --help lists "
@@ -135,7 +143,12 @@ int model_loop_command(int argc, char** argv, const char* name) {
        "--mass-scaling: expected 0 (the quick tier's rule) or a number >= 1, found " + fmt(s.mass_scaling));
   need(s.element_length > 0, "--element-length: expected a number > 0 mm, found " + fmt(s.element_length));
   need(s.across >= 1, "--across: expected a whole number >= 1, found " + std::to_string(s.across));
-  need(std::ifstream(s.hardening).good(), "--hardening: cannot open '" + s.hardening + "'");
+  name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
+  try {
+    (void)read_input(s.hardening);  // a regular file of a stated size, never a FIFO or device
+  } catch (const InputError& e) {
+    need(false, e.what());
+  }
   need(cfg.min_gain >= 0, "--min-gain: expected a number >= 0, found " + fmt(cfg.min_gain));
   need(good_threads(threads), bad_threads(threads));
   std::vector<sim::ModelCandidate> cands;
@@ -156,6 +169,34 @@ int model_loop_command(int argc, char** argv, const char* name) {
   if (!bad.empty()) throw InputError(bad);
   sim::set_case_threads(threads);
   if (s.mass_scaling == 0) s.mass_scaling = sim::mass_scaling_for_speed(sim::kQuickMassScaling, s.speed);
+  // Every deck the loop will run passes `drawbend run`'s checks (limits and
+  // cost included) before the first FE run; a refusal names the user's
+  // options or candidate, then the generated deck's key.
+  auto deck_problem = [](const sim::DrawBendSpec& spec) -> std::string {
+    try {
+      (void)io::parse_deck(sim::deck_text(spec), "model-loop.toml");
+      return "";
+    } catch (const InputError& e) {
+      return e.what();
+    }
+  };
+  const std::string base_opts = "--thickness " + fmt(s.thickness) + ", --width " + fmt(s.width) + ", --speed " +
+                                fmt(s.speed) + ", --mass-scaling " + fmt(s.mass_scaling) + ", --element-length " +
+                                fmt(s.element_length) + ", --across " + std::to_string(s.across);
+  for (const auto& p : points)
+    if (const std::string m = deck_problem(sim::spec_for_point(s, p)); !m.empty()) {
+      need(false, base_opts + ": the FE deck of the point at " + p.where + " fails the checks of `drawbend run`:\n" + m);
+      break;
+    }
+  for (const auto& c : cands)
+    for (const auto& member : c.members) {
+      sim::DrawBendSpec cs = sim::spec_for_point(s, points.front());
+      member.apply(cs);
+      if (const std::string m = deck_problem(cs); !m.empty() && bad.empty())
+        need(false, "--candidates '" + clip_for_message(c.name) + "' (" + member.label +
+                        "): its FE deck fails the checks of `drawbend run`:\n" + m);
+    }
+  if (!bad.empty()) throw InputError(bad);
   bool on_fit = false;
   for (const auto& p : points) on_fit = on_fit || std::abs(p.pin_mm - cfg.fit_pin) < 1e-6 * cfg.fit_pin;
   if (!on_fit)

@@ -15,6 +15,7 @@
 #include "core/csv.hpp"
 #include "core/options.hpp"
 #include "io/deck.hpp"
+#include "core/file_gate.hpp"
 #include "io/run_case.hpp"
 
 namespace {
@@ -61,6 +62,7 @@ int run_main(int argc, char** argv) {
   opt.example("drawbend drawbend-deck --pin-diameter 12.7 --element-length 1.5 --through 2 --draw-length 12 --friction '{ law = \"coulomb\", mu = 0.1 }' > my.toml");
   opt.example("drawbend run my.toml --out my-run --threads 2    # my-run/result.toml: F_X, F_Y, F_B, mu");
   opt.add(halt, "halt-after-cycles", "stop after the first checkpoint at or beyond this cycle (tests restarts)");
+  opt.range("progress-every", 0, 1e6, "s", true).range("halt-after-cycles", 0, 2e9);
   opt.add(ro.result.basis, "basis", "draw-bend decks: basis of --bending-force and the printed forces, full or half");
   opt.add(ro.result.bending_force, "bending-force",
           "draw-bend decks: F_B [N] on --basis for mu by Eq. (2.3) (0: this run if frictionless, else Swift's Eq. (2.1))");
@@ -79,6 +81,7 @@ int run_main(int argc, char** argv) {
     if (!(ro.result.yield_stress >= 0) || !std::isfinite(ro.result.yield_stress))
       throw std::invalid_argument("--yield-stress: expected a stress >= 0 MPa (0: Table 5.1, RD)");
     if (!every.empty()) io::parse_checkpoint_every(every, ro);
+    name_input(ro.restart, "--restart");  // the file gate names the option (core/file_gate.hpp)
     if (halt > 0 && every.empty()) throw std::invalid_argument("--halt-after-cycles needs --checkpoint-every");
     ensure_writable_dir(ro.out_dir, "--out");  // before any work
     watch_stop_signals();

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/deck_out.hpp"
+#include "cli/option_bounds.hpp"
 #include "cli/threads.hpp"
 #include "core/options.hpp"
 #include "sim/strip_draw_case.hpp"
@@ -45,7 +46,17 @@ int strip_deck_command(int argc, char** argv) {
   opt.add(threads, "threads", "OpenMP threads written into the deck's [numerics] for `drawbend run` (0: none written, the default)");
   opt.example("drawbend strip-deck --pressure 20 --speed 4 --out my-strip/deck.toml");
   opt.example("drawbend run my-strip/deck.toml --out my-strip/run --quiet");
+  using namespace bounds;  // every number range-checked as it is parsed (cli/option_bounds.hpp)
+  opt.range("pressure", 0, kPressureMPa, "MPa", true).range("speed", 0, kSpeedMMs, "mm/s", true);
+  opt.range("slide", 0, kLengthMM, "mm", true).range("length", 0, kLengthMM, "mm", true);
+  opt.range("width", 0, kLengthMM, "mm", true).range("thickness", 0, kThicknessMM, "mm", true);
+  opt.range("nx", 1, kElements).range("ny", 1, kElements).range("nz", 1, kElements);
+  opt.range("interval", 1, kIntervalCycles, "cycles").range("time-step", 0, 1e-2, "s", true, false, true);
+  opt.range("die-mass", 0, 1e3, "t", true, false, true).range("press-time", 0, kTimeS, "s", true);
+  opt.range("force-ramp", 0, kTimeS, "s", true).range("speed-ramp", 0, kTimeS, "s", true);
   if (!opt.parse(argc, argv)) return 0;
+  name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
+  name_input(s.stribeck_table, "--stribeck-table");
   return write_deck_out(deck_with_threads(sim::strip_draw_deck_text(s), threads), out, "strip-deck");
 }
 

@@ -1,5 +1,7 @@
 #include "core/csv.hpp"
 
+#include "core/csv_dialect.hpp"
+#include "core/file_gate.hpp"
 #include "core/input_problems.hpp"
 #include "core/provenance.hpp"
 
@@ -75,11 +77,12 @@ CsvTable parse_csv(const std::string& text, const std::string& path) {
   InputProblems problems(path);
   CsvTable t;
   t.path = path;
-  std::istringstream in(strip_bom(text));  // spreadsheet programs write a UTF-8 byte-order mark
+  // UTF-8 (a byte-order mark dropped), UTF-16 named, Windows-1252 converted;
+  // quoted line breaks and trailing empty columns (core/csv_dialect.hpp).
+  std::istringstream in(csv_text_utf8(text, path));
   std::string line;
-  int lineno = 0;
-  while (std::getline(in, line)) {
-    ++lineno;
+  int lineno = 0, first = 0;
+  while (next_csv_record(in, line, lineno, first)) {
     const std::string s = trim(line);
     if (s.empty()) continue;
     if (s[0] == '#') {
@@ -89,25 +92,31 @@ CsvTable parse_csv(const std::string& text, const std::string& path) {
     auto cells = split_csv_line(s);
     if (t.header.empty()) {
       if (semicolon_header(cells))  // one message, not one per row
-        throw InputError(path + ":" + std::to_string(lineno) + ": header: " + semicolon_message());
+        throw InputError(path + ":" + std::to_string(first) + ": header: " + semicolon_message());
+      if (tab_header(cells))
+        throw InputError(path + ":" + std::to_string(first) +
+                         ": header: expected ',' between cells, found a tab (a tab-separated file): save it as CSV "
+                         "with ',' between cells");
+      trim_trailing_empty_header(cells);
       t.header = std::move(cells);
       for (std::size_t i = 0; i < t.header.size(); ++i) {
         const std::string col = "header cell " + std::to_string(i + 1);
         if (t.header[i].empty())
-          problems.add(path + ":" + std::to_string(lineno) + ": " + col + ": expected a column name, found an empty cell");
+          problems.add(path + ":" + std::to_string(first) + ": " + col + ": expected a column name, found an empty cell");
         for (std::size_t j = 0; j < i; ++j)
           if (!t.header[i].empty() && t.header[j] == t.header[i])
-            problems.add(path + ":" + std::to_string(lineno) + ": " + col + ": expected unique column names, found '" +
+            problems.add(path + ":" + std::to_string(first) + ": " + col + ": expected unique column names, found '" +
                          t.header[i] + "' twice");
       }
       continue;
     }
+    drop_trailing_empty(cells, t.header.size());
     if (cells.size() != t.header.size()) {
-      problems.add(path + ":" + std::to_string(lineno) + ": expected " + std::to_string(t.header.size()) +
+      problems.add(path + ":" + std::to_string(first) + ": expected " + std::to_string(t.header.size()) +
                    " cells (as in the header), found " + std::to_string(cells.size()));
       continue;
     }
-    t.rows.push_back({lineno, std::move(cells)});
+    t.rows.push_back({first, std::move(cells)});
   }
   if (t.header.empty()) problems.add(path + ": expected a header row, found none");
   problems.throw_if_any();
@@ -212,26 +221,7 @@ std::string fmt_fixed(double v, int decimals) {
   return s;
 }
 
-void write_file_atomic(const std::string& path, const std::string& text) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  if (target.has_parent_path()) fs::create_directories(target.parent_path());
-  // The temporary name carries the process id: two programs writing the same
-  // output (a chapter test and `make`) cannot clobber each other's half-file.
-  const fs::path tmp = target.string() + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(tmp.string() + ": cannot open file for writing");
-    out << text;
-    out.flush();
-    if (!out) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw InputError(tmp.string() + ": write failed (disk full?)");
-    }
-  }
-  fs::rename(tmp, target);
-}
+void write_file_atomic(const std::string& path, const std::string& text) { write_output(path, text); }
 
 void ensure_writable_dir(const std::string& dir, const std::string& what) {
   namespace fs = std::filesystem;
@@ -259,16 +249,6 @@ void ensure_writable_dir(const std::string& dir, const std::string& what) {
   fs::remove(probe, ec);
 }
 
-std::string read_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": expected a file, found a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file for reading");
-  std::ostringstream os;
-  os << in.rdbuf();
-  if (in.bad()) throw InputError(path + ": read failed");
-  note_input(path);
-  return os.str();
-}
+std::string read_file(const std::string& path) { return read_input(path); }
 
 }  // namespace drawbend

@@ -85,8 +85,11 @@ std::string fmt_fixed(double v, int decimals);
 /// "<what> 'dir': ..." naming the reason (a file in the way, permission denied).
 void ensure_writable_dir(const std::string& dir, const std::string& what);
 
-/// Write text to a file atomically (temporary file, then rename).
+/// Write text to a file atomically: core/file_gate.hpp's write_output (only a
+/// regular file is replaced; nothing left behind on failure).
 void write_file_atomic(const std::string& path, const std::string& text);
+/// Read a whole file: core/file_gate.hpp's read_input (only a regular file,
+/// at most kMaxInputBytes, the message naming the path and its option).
 std::string read_file(const std::string& path);
 
 }  // namespace drawbend

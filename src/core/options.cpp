@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "core/csv.hpp"
+#include "core/file_gate.hpp"
 
 namespace drawbend {
 
@@ -31,7 +32,7 @@ std::function<void(const std::string&)> numeric_setter(T& var, const std::string
       used = 0;
     }
     if (s.empty() || used != s.size() || !std::isfinite(static_cast<double>(v)))
-      throw std::invalid_argument("--" + name + ": expected " + what + ", found '" + s + "'");
+      throw std::invalid_argument("--" + name + ": expected " + what + ", found '" + clip_for_message(s) + "'");
     var = v;
   };
 }
@@ -60,6 +61,25 @@ void Options::add_flag(bool& var, const std::string& name, const std::string& he
                    [&var] { return std::string(var ? "true" : "false"); }});
 }
 
+Options& Options::range(const std::string& name, double lo, double hi, const std::string& unit, bool open_lo,
+                        bool open_hi, bool zero_ok) {
+  Opt* opt = nullptr;
+  for (auto& o : opts_)
+    if (o.name == name) opt = &o;
+  if (!opt) throw std::logic_error("Options::range: no option --" + name);
+  auto get = opt->get;
+  opt->check = [=](const std::string& text) {
+    const double v = std::stod(get());  // the value just set, as the option holds it
+    const bool in = (open_lo ? v > lo : v >= lo) && (open_hi ? v < hi : v <= hi);
+    if (in || (zero_ok && v == 0)) return;
+    const std::string u = unit.empty() ? "" : " " + unit;
+    throw std::invalid_argument("--" + name + ": expected " + (zero_ok ? "0 or " : "") + "a value in " +
+                                (open_lo ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + (open_hi ? ")" : "]") + u +
+                                ", found " + clip_for_message(text));
+  };
+  return *this;
+}
+
 std::string Options::usage() const {
   std::ostringstream os;
   os << "Usage: " << program_ << " [options]\n" << description_ << "\n\nOptions:\n";
@@ -81,7 +101,8 @@ bool Options::parse(int argc, char** argv) {
       std::cout << usage();
       return false;
     }
-    if (a.rfind("--", 0) != 0) throw std::invalid_argument("unexpected argument '" + a + "' (see --help)");
+    if (a.rfind("--", 0) != 0)
+      throw std::invalid_argument("unexpected argument '" + clip_for_message(a) + "' (see --help)");
     std::string name = a.substr(2), value;
     const auto eq = name.find('=');
     if (eq != std::string::npos) {
@@ -91,12 +112,13 @@ bool Options::parse(int argc, char** argv) {
     Opt* opt = nullptr;
     for (auto& o : opts_)
       if (o.name == name) opt = &o;
-    if (!opt) throw std::invalid_argument("unknown option '--" + name + "' (see --help)");
+    if (!opt) throw std::invalid_argument("unknown option '--" + clip_for_message(name) + "' (see --help)");
     if (!opt->flag && eq == std::string::npos) {
       if (i + 1 >= argc) throw std::invalid_argument("option '--" + name + "' needs a value");
       value = argv[++i];
     }
     opt->set(value);
+    if (opt->check) opt->check(value);
   }
   return true;
 }

@@ -18,6 +18,13 @@ class Options {
   /// for older command lines); the help shows "true|false".
   void add(bool& var, const std::string& name, const std::string& help);
   void add_flag(bool& var, const std::string& name, const std::string& help);
+  /// The values option `name` (added before) accepts: [lo, hi], or (lo, hi]
+  /// etc. with `open_lo`/`open_hi`; checked as the value is parsed, so every
+  /// option is range-checked before any work, and a value outside is an
+  /// std::invalid_argument "--name: expected ... in [lo, hi] unit, found v".
+  /// `zero_ok`: 0 is accepted too (the options where 0 means "automatic").
+  Options& range(const std::string& name, double lo, double hi, const std::string& unit = "", bool open_lo = false,
+                 bool open_hi = false, bool zero_ok = false);
 
   /// Parse argv. Returns false (after printing usage) on --help; throws
   /// std::invalid_argument with a clear message on bad input.
@@ -36,6 +43,7 @@ class Options {
     std::string value = "VALUE";  ///< how the help names the value
     std::function<void(const std::string&)> set;
     std::function<std::string()> get;
+    std::function<void(const std::string&)> check;  ///< range(), after set
   };
   std::string program_, description_;
   std::vector<Opt> opts_;

@@ -44,6 +44,7 @@ struct RunLimits {
   double max_cycles = 1e8;        ///< predicted cycles (end time / stable step)
   double max_memory_mb = 4096;    ///< predicted memory of the mesh and solver state [MB]
   double max_mass_factor = 1e9;   ///< (physical + added mass) / physical mass; a warning above 1 % of it
+  double max_output_mb = 10240;   ///< predicted history.csv and field frames [MB] (10 GB)
 };
 
 /// The up-front estimate of a run (deck_limits.cpp).
@@ -52,6 +53,7 @@ struct CostEstimate {
   double cycles = 0;       ///< end time / stable_dt (a lower bound: the step shrinks as elements deform)
   double memory_mb = 0;    ///< mesh and solver state [MB]
   double mass_factor = 1;  ///< (physical + added mass) / physical mass
+  double output_mb = 0;    ///< history.csv and the .vtu field frames [MB] (deck_limits.cpp)
 };
 
 struct Deck {

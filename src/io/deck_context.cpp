@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/file_gate.hpp"
 #include "core/csv.hpp"
 
 namespace drawbend::io {
@@ -43,7 +44,7 @@ void DeckContext::allowed(const toml::table& t, const std::string& what, const s
     if (!keys.count(std::string(k.str()))) {
       std::string list;
       for (const auto& a : keys) list += (list.empty() ? "" : ", ") + a;
-      bad(v, what + "." + std::string(k.str()), "unknown key (expected one of: " + list + ")");
+      bad(v, what + "." + clip_for_message(std::string(k.str())), "unknown key (expected one of: " + list + ")");
     }
 }
 

@@ -23,6 +23,17 @@ namespace {
 // predicted.
 constexpr double kBytesPerNode = 350;
 constexpr double kBytesPerElement = 680;
+// Output written by a run [bytes]: a history.csv cell is a number of up to 10
+// significant digits and its comma (11.7 bytes per cell measured on the block
+// deck's history, 403 rows x 13 columns, 61,222 bytes, 2026-12-01; 14 taken
+// for signs and exponents); a .vtu field frame holds about 300 bytes per node
+// and 300 per element (56,744 bytes for the 125 nodes and 64 elements of that
+// block's frames: 300 x 189 = 56,700).  history.csv has 10 columns of its own
+// (time, step, dt, energies, balance) plus one per [output] history signal.
+constexpr double kBytesPerHistoryCell = 14;
+constexpr double kVtuBytesPerNode = 300;
+constexpr double kVtuBytesPerElement = 300;
+constexpr double kHistoryOwnColumns = 10;
 
 const toml::node* at(const toml::table& root, const std::string& table, const std::string& key) {
   const auto* t = root.get(table);
@@ -45,10 +56,11 @@ double limit(const DeckContext& c, const toml::table& t, const std::string& key,
 void read_limits(const DeckContext& c, const toml::table& root, RunLimits& lim) {
   const auto* t = c.table(root, "limits", "deck", false);
   if (!t) return;
-  c.allowed(*t, "limits", {"max_cycles", "max_memory_mb", "max_mass_factor"});
+  c.allowed(*t, "limits", {"max_cycles", "max_memory_mb", "max_mass_factor", "max_output_mb"});
   lim.max_cycles = limit(c, *t, "max_cycles", lim.max_cycles);
   lim.max_memory_mb = limit(c, *t, "max_memory_mb", lim.max_memory_mb);
   lim.max_mass_factor = limit(c, *t, "max_mass_factor", lim.max_mass_factor);
+  lim.max_output_mb = limit(c, *t, "max_output_mb", lim.max_output_mb);
 }
 
 double estimate_memory_mb(double nodes, double elements) {
@@ -96,6 +108,27 @@ void check_cost(const DeckContext& c, const toml::table& root, Deck& d) {
   if (!(dt_min > 0) || !std::isfinite(dt_min)) return;  // a numerical fault of the solver, naming the element
   d.cost.stable_dt = dt_min;
   d.cost.cycles = total / dt_min;
+  {  // the output: history rows (200 per step or one per history_interval, at most one per cycle) and field frames
+    double rows = 0;
+    for (const auto& s : m.steps)
+      rows += d.output.history_interval > 0 ? s.duration / d.output.history_interval : 200.0;
+    rows = std::min(rows, std::max(d.cost.cycles, 1.0));
+    const double cols = kHistoryOwnColumns + static_cast<double>(d.output.history.size());
+    const double history_mb = kBytesPerHistoryCell * rows * cols / 1e6;
+    const double frames = 1.0 + static_cast<double>(m.steps.size()) * std::max(1, d.output.fields_per_step);
+    const double fields_mb =
+        frames * (kVtuBytesPerNode * mesh.num_nodes() + kVtuBytesPerElement * mesh.num_elements()) / 1e6;
+    d.cost.output_mb = history_mb + fields_mb;
+    if (d.cost.output_mb > d.limits.max_output_mb) {
+      const toml::node* n = at(root, "output", "");
+      c.bad(n ? *n : root, "output",
+            "the run would write about " + fmt(d.cost.output_mb, 3) + " MB (history.csv " + fmt(history_mb, 3) +
+                " MB: " + fmt(rows, 3) + " rows x " + fmt(cols, 3) + " columns; " + fmt(frames, 3) +
+                " field frames " + fmt(fields_mb, 3) + " MB), above [limits] max_output_mb = " +
+                fmt_shortest(d.limits.max_output_mb) + " (fewer history signals, a longer history_interval or "
+                "fewer fields_per_step; or raise the limit)");
+    }
+  }
   const auto* numerics = at(root, "numerics", "");
   const auto* first_step = root.get("step") && root.get("step")->is_array() && !root.get("step")->as_array()->empty()
                                ? &(*root.get("step")->as_array())[0]

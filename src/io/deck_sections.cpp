@@ -1,5 +1,7 @@
 #include "io/deck_sections.hpp"
 
+#include <cmath>
+
 #include "core/csv.hpp"
 #include "io/deck_material.hpp"
 
@@ -117,6 +119,46 @@ void read_tools(const DeckContext& c, const toml::table& root, fe::Model& m) {
     });
 }
 
+namespace {
+/// Whether a friction law is anisotropic (mu_1 != mu_2 somewhere): probed at
+/// pressures 1 to 100 MPa and speeds 1 to 100 mm/s, fresh state each time.
+bool anisotropic_law(const friction::FrictionLaw& law) {
+  for (double p : {1.0, 10.0, 100.0})
+    for (double v : {1.0, 10.0, 100.0}) {
+      std::vector<double> st(static_cast<std::size_t>(std::max(0, law.state_size())), 0.0);
+      friction::ContactState s;
+      s.pressure = p;
+      s.slip_speed = v;
+      s.slip_dir = {1, 0, 0};
+      s.state = st.empty() ? nullptr : st.data();
+      try {
+        const friction::Limit l = law.limit(s);
+        if (l.mu1 != l.mu2) return true;
+      } catch (const std::exception&) {
+        return false;  // outside the law's domain: no verdict from this probe
+      }
+    }
+  return false;
+}
+
+/// Whether the rolling direction is along the normal of every face of a set
+/// (within 1e-6 rad): the sheet plane then holds no texture axis.
+bool rd_along_normal(const fe::Mesh& mesh, const std::vector<fe::Quad>& faces, const Vec3& rd) {
+  const double rl = std::sqrt(rd[0] * rd[0] + rd[1] * rd[1] + rd[2] * rd[2]);
+  if (faces.empty() || !(rl > 0)) return false;
+  for (const auto& q : faces) {
+    const Vec3 a{mesh.x[q[2]] - mesh.x[q[0]], mesh.y[q[2]] - mesh.y[q[0]], mesh.z[q[2]] - mesh.z[q[0]]};
+    const Vec3 b{mesh.x[q[3]] - mesh.x[q[1]], mesh.y[q[3]] - mesh.y[q[1]], mesh.z[q[3]] - mesh.z[q[1]]};
+    const Vec3 n{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    const double nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(nl > 0)) return false;
+    const double cosang = std::abs(n[0] * rd[0] + n[1] * rd[1] + n[2] * rd[2]) / (nl * rl);
+    if (cosang < 1 - 1e-12) return false;
+  }
+  return true;
+}
+}  // namespace
+
 void read_contacts(const DeckContext& c, const toml::table& root, fe::Model& m, const std::string& dir, bool mesh_ok,
                    bool sheet_rd) {
   bool axis_seen = false;
@@ -154,6 +196,16 @@ void read_contacts(const DeckContext& c, const toml::table& root, fe::Model& m, 
       if (const auto* f = t.get("friction")) {
         if (!f->is_table()) c.fail(*f, "contact.friction", "expected a table, e.g. { law = \"coulomb\", mu = 0.1 }");
         cp.friction = make_friction(c, *f->as_table(), dir);
+        // No silent substitution (issue 53): an anisotropic law on a sheet
+        // whose rolling direction is its normal has no texture axis; the
+        // contact code would take a global axis instead, without a word.
+        if (cp.friction && mesh_ok && m.mesh.face_sets.count(cp.faces) && anisotropic_law(*cp.friction) &&
+            rd_along_normal(m.mesh, m.mesh.face_sets.at(cp.faces), m.rolling_direction))
+          c.bad(*f, "contact.friction",
+                "an anisotropic friction law (mu differs along RD and TD), but the rolling direction (" +
+                    fmt(m.rolling_direction[0]) + ", " + fmt(m.rolling_direction[1]) + ", " +
+                    fmt(m.rolling_direction[2]) + ") is along the normal of every face of '" + cp.faces +
+                    "': state an in-plane direction in [sheet] rolling_direction");
       }
       m.contacts.push_back(std::move(cp));
     });

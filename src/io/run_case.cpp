@@ -162,7 +162,8 @@ void log_header(const Deck& deck, const RunOptions& opt, const fe::Solver& solve
   if (deck.cost.cycles > 0)
     log << "  estimate: about " << fmt(deck.cost.cycles, 3) << " cycles at the initial step (limit "
         << fmt_shortest(deck.limits.max_cycles) << "), memory about " << fmt(deck.cost.memory_mb, 3) << " MB (limit "
-        << fmt_shortest(deck.limits.max_memory_mb) << "); [limits] in the deck raises them\n";
+        << fmt_shortest(deck.limits.max_memory_mb) << "), output about " << fmt(deck.cost.output_mb, 3)
+        << " MB (limit " << fmt_shortest(deck.limits.max_output_mb) << "); [limits] in the deck raises them\n";
   log << "  threads: " << omp_get_max_threads() << " ("
       << (opt.threads > 0    ? "--threads"
           : deck.threads > 0 ? "the deck's [numerics] threads"

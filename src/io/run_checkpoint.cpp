@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "core/csv.hpp"
+#include "core/file_gate.hpp"
 #include "core/hash.hpp"
 
 namespace drawbend::io {
@@ -74,7 +75,7 @@ void write_checkpoint(const std::string& path, std::uint64_t deck_hash, const fe
 }
 
 RunState read_checkpoint(const std::string& path, std::uint64_t deck_hash, fe::Solver& s) {
-  const std::string d = read_file(path);
+  const std::string d = read_input(path, kMaxCheckpointBytes);  // core/file_gate.hpp
   if (d.compare(0, std::strlen(kMagic), kMagic) != 0)
     throw InputError(path + ": not a drawbend checkpoint (expected the header 'drawbend-checkpoint 1')");
   In in{d, path, std::strlen(kMagic)};

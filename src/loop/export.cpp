@@ -34,6 +34,7 @@
 
 #include <toml++/toml.h>
 
+#include "core/file_gate.hpp"
 #include "core/csv.hpp"
 #include "core/toml_read.hpp"
 #include "friction/surface_law.hpp"
@@ -238,6 +239,7 @@ ExportModel read_friction_model(const std::string& path) {
   d.v_max = (*f)["v_max"].value<double>().value_or(d.v_max);
   const std::filesystem::path file = std::filesystem::path(path).parent_path() / *nodes;
   ExportModel m;
+  name_input(file.string(), path + ": [friction] nodes");  // read through the file gate (core/file_gate.hpp)
   std::tie(m.rd, m.td) = friction::load_surface_nodes(file.string(), d);
   try {
     m.rd.validate();

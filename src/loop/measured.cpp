@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/csv.hpp"
+#include "core/csv_dialect.hpp"
 #include "core/strip_limits.hpp"
 
 namespace drawbend::loop {
@@ -117,9 +118,13 @@ void nonfinite_extras(Dataset& d) {
 Dataset read_measured(const std::string& path) { return parse_measured(read_file(path), path); }
 
 Dataset parse_measured(const std::string& text, const std::string& path) {
-  std::istringstream in(text);
+  // UTF-8 (a byte-order mark dropped), UTF-16 named, Windows-1252 converted,
+  // quoted line breaks, trailing empty columns (core/csv_dialect.hpp).
+  std::string encoding_note;
+  std::istringstream in(csv_text_utf8(text, path, &encoding_note));
   Dataset d;
   d.path = path;
+  d.format_note = encoding_note;
   std::string line;
   int lineno = 0;
   std::vector<std::string> header;
@@ -130,10 +135,8 @@ Dataset parse_measured(const std::string& text, const std::string& path) {
   char sep = ',';
   bool decimal_comma = false;
   auto problem = [&](int l, const std::string& c, const std::string& m) { d.problems.push_back({path, l, c, m}); };
-  while (std::getline(in, line)) {
-    ++lineno;
-    if (lineno == 1) line = strip_bom(line);  // a UTF-8 byte-order mark, as spreadsheets write it
-    if (!line.empty() && line.back() == '\r') line.pop_back();
+  int physical_line = 0;
+  while (next_csv_record(in, line, physical_line, lineno)) {  // lineno: the record's first line
     if (trim(line).empty()) continue;
     if (line[0] == '#') {
       if (header.empty()) d.comments.push_back(line.substr(1));
@@ -146,15 +149,26 @@ Dataset parse_measured(const std::string& text, const std::string& path) {
         sep = ';';
         decimal_comma = true;
         header = split_csv_line(line, sep);
-        d.format_note = "read with ';' between cells and ',' as the decimal mark (line " + std::to_string(lineno) + ")";
+        d.format_note += std::string(d.format_note.empty() ? "" : "; ") +
+                         "read with ';' between cells and ',' as the decimal mark (line " + std::to_string(lineno) + ")";
+      } else if (tab_header(header)) {  // a tab-separated export
+        sep = '\t';
+        header = split_csv_line(line, sep);
+        d.format_note += std::string(d.format_note.empty() ? "" : "; ") + "read with a tab between cells (line " +
+                         std::to_string(lineno) + ")";
       }
+      trim_trailing_empty_header(header);  // an empty formatted column at the right (Excel)
       header_line = lineno;
       for (auto& h : header) h = trim(h);
+      header_ok = true;
       for (size_t i = 0; i < header.size(); ++i) {
-        if (col.count(header[i])) problem(lineno, header[i], "duplicate column name");
+        if (header[i].empty() || col.count(header[i])) {  // no row can be read by its column names
+          problem(lineno, header[i], header[i].empty() ? "empty column name (column " + std::to_string(i + 1) + ")"
+                                                       : "duplicate column name");
+          header_ok = false;
+        }
         col[header[i]] = static_cast<int>(i);
       }
-      header_ok = true;
       for (const auto& r : kRequiredColumns)
         if (!col.count(r)) {
           problem(lineno, r, "required column missing");
@@ -171,6 +185,7 @@ Dataset parse_measured(const std::string& text, const std::string& path) {
     }
     ++d.rows_read;
     auto cells = split_csv_line(line, sep);
+    drop_trailing_empty(cells, header.size());
     if (decimal_comma)
       for (auto& c : cells) c = decimal_point(c);
     if (cells.size() != header.size()) {

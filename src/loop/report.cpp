@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <iostream>
+#include <cctype>
 #include <sstream>
 
 namespace drawbend::loop {
@@ -150,15 +152,23 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
   residuals_table(d, r).save(out + "/tables/residuals.csv");
   problems_table(*d.data).save(out + "/tables/problems.csv");
   write_file_atomic(out + "/loop_summary.json", summary_json(r));
-  std::vector<std::string> figs;
+  std::vector<std::string> figs, failed;  // a figure gnuplot could not draw is a warning, repeated in loop.md
+  // A column name goes into a file name and a shell command: only [A-Za-z0-9_.-], the rest as '_'.
+  auto safe = [](const std::string& name) {
+    std::string t = name;
+    for (char& ch : t)
+      if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.')) ch = '_';
+    return t;
+  };
   if (!figdir.empty()) {
     for (size_t k = 0; k < r.candidates.size(); ++k) {
       const auto& c = r.candidates[k];
-      const std::string svg = out + "/figures/resid_" + c.name + ".svg";
+      const std::string svg = out + "/figures/resid_" + safe(c.name) + ".svg";
       std::string e = "outfile='" + svg + "'; datafile='" + out + "/tables/residuals.csv'; figdir='" + figdir +
-                      "'; xcol='" + std::to_string(6 + k) + "'; xname='" + c.name + "'";
+                      "'; xcol='" + std::to_string(6 + k) + "'; xname='" + safe(c.name) + "'";
       const std::string cmd = gnuplot + " -e \"" + e + "\" '" + figdir + "/loop_residual.gp'";
-      if (std::system(cmd.c_str()) == 0) figs.push_back("figures/resid_" + c.name + ".svg");
+      if (std::system(cmd.c_str()) == 0) figs.push_back("figures/resid_" + safe(c.name) + ".svg");
+      else failed.push_back("figures/resid_" + safe(c.name) + ".svg");
     }
   }
   std::ostringstream m;
@@ -276,14 +286,22 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
                                   "'\nset view map\nset xlabel 'p [MPa]'\nset ylabel 'v [mm/s]'\n"
                                   "set cblabel 'mu'\nset colorbox\nset palette rgbformulae 33,13,10\n"
                                   "set key outside below\nset title 'fitted mu(p, v), " + std::string(dir) + ", " +
-                                  fm.surfaces[k].lubricant + (n_pts ? "" : " (no fixed-pin rows in this direction)") +
+                                  safe(fm.surfaces[k].lubricant) + (n_pts ? "" : " (no fixed-pin rows in this direction)") +
                                   "'\nsplot '" + dat + "' with pm3d notitle" +
                                   (n_pts ? ", '" + pts + "' using 1:2:(0) with points pt 7 ps 0.5 lc rgb 'black' "
                                                          "title 'fixed-pin rows'"
                                          : std::string()) +
                                   "\n");
         if (std::system((gnuplot + " '" + gp + "' 2>/dev/null").c_str()) == 0) figs.push_back(svg);
+        else failed.push_back(svg);
       }
+  }
+  if (!failed.empty()) {
+    const std::string w = std::to_string(failed.size()) + " of " + std::to_string(failed.size() + figs.size()) +
+                          " figures could not be drawn ('" + gnuplot + "' failed or is missing), first " +
+                          failed.front() + "; their data are in tables/";
+    std::cerr << "warning: " << w << "\n";
+    m << "\n**Warning:** " << w << ".\n";
   }
   if (!figs.empty()) {
     m << "\n## Figures: residuals against each candidate (before: base model; after: final model), fitted surfaces\n\n";

@@ -11,6 +11,12 @@ namespace {
 void require_positive(double v, const char* name) {
   if (!(v > 0.0) || !std::isfinite(v))
     throw std::invalid_argument(std::string(name) + " must be positive and finite, found " + fmt_shortest(v));
+  // r-values of sheet metals lie between about 0.2 and 3, yield-stress ratios
+  // near 1; outside [1e-3, 1e3] the coefficients lose their digits (r = 1e-300
+  // gave H = 1e-300, a yield surface indistinguishable from a degenerate one).
+  if (v < 1e-3 || v > 1e3)
+    throw std::invalid_argument(std::string(name) + " = " + fmt_shortest(v) +
+                                " is outside [0.001, 1000], beyond any sheet metal (r-values 0.2 to 3)");
 }
 }  // namespace
 

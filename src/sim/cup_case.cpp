@@ -86,7 +86,6 @@ void set_die_radius(toml::table& root, double rd, const std::string& where) {
 // The base deck with the spec's mesh, radii, material and friction (paths absolute).
 toml::table base_table(const CupSpec& spec, int& layers) {
   if (spec.refine < 1) throw InputError(spec.deck + ": refine must be >= 1");
-  if (!fs::is_regular_file(spec.deck)) throw InputError(spec.deck + ": cup base deck not found");
   toml::table root = parse_toml_file(spec.deck);
   const fs::path dir = fs::path(spec.deck).parent_path();
   if (auto* mesh = root["mesh"].as_table())

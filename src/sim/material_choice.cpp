@@ -25,7 +25,11 @@ io::MaterialSpec material_choice(const std::string& material, const std::string&
     m.curve = io::CurveFile{default_hardening};
     return m;
   }
-  const bool file = material.front() != '{' && std::filesystem::is_regular_file(material);
+  // '{' first: an inline table; anything else is the path of a TOML file,
+  // read through the file gate (a missing file, a folder or a device is
+  // named as such, not parsed as TOML).
+  const std::size_t first = material.find_first_not_of(" \t");
+  const bool file = first == std::string::npos || material[first] != '{';
   toml::table root;
   try {
     root = file ? parse_toml_file(material) : parse_toml("material = " + material, "--material");

@@ -1,0 +1,21 @@
+#pragma once
+// The bounds every command's numeric options are range-checked against as
+// they are parsed (Options::range, issue 53), with their reasons: a command
+// refuses an absurd number before any work, naming the option, instead of
+// writing a deck that `drawbend run` refuses or running for hours.  They
+// bound laboratory strip, block and cup tests generously; the deck reader's
+// own checks and [limits] (cost) still apply to what is written.
+namespace drawbend::cli::bounds {
+
+inline constexpr double kLengthMM = 1000;    ///< tool and strip dimensions [mm] (the largest test rig: 300 mm)
+inline constexpr double kThicknessMM = 20;   ///< sheet thickness [mm] (sheet metal ends near 6 mm)
+inline constexpr double kSpeedMMs = 1e4;     ///< sliding or punch speed [mm/s] (10 m/s, above any press)
+inline constexpr double kPressureMPa = 1e4;  ///< contact pressure [MPa] (ten times the hardest tool steel's yield)
+inline constexpr double kTimeS = 1e3;        ///< step duration [s] (explicit runs of quasi-static tests: ms to s)
+inline constexpr double kForceN = 1e6;       ///< a strip force [N] (core/strip_limits.hpp's kMaxStripForceN)
+inline constexpr double kElements = 1000;    ///< elements along one edge or direction
+inline constexpr double kMassScaling = 1e9;  ///< [limits] max_mass_factor's default
+inline constexpr double kPenalty = 1e6;      ///< contact penalty scale (dimensionless, 0.1 by default)
+inline constexpr double kIntervalCycles = 1e6;  ///< a friction law's update interval [cycles]
+
+}  // namespace drawbend::cli::bounds
