@@ -27,12 +27,6 @@ std::string array9(const std::array<double, 9>& c) {
 }  // namespace
 
 int calibrate_command(int argc, char** argv) {
-  if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
-    std::cerr << "usage: drawbend calibrate TESTS.csv --out DIR [--a 8] [--w-stress 1] [--w-r 1] [--w-biaxial 1] "
-                 "[--w-plane-strain 1] [--compare PUBLISHED.toml]\n";
-    return argc >= 2 && std::string(argv[1]) == "--help" ? 0 : 2;
-  }
-  const std::string path = argv[1];
   std::string out = "calibration", compare;
   double a = 8.0;
   material::FitWeights w;
@@ -44,7 +38,24 @@ int calibrate_command(int argc, char** argv) {
   opt.add(w.r, "w-r", "weight of each r-value (on its relative residual)");
   opt.add(w.biaxial, "w-biaxial", "weight of the balanced biaxial stress ratio and rb");
   opt.add(w.plane_strain, "w-plane-strain", "weight of each plane-strain stress ratio");
-  opt.add(compare, "compare", "a published Yld2004-18p set (TOML, [material] yld2004 = { a, c1, c2 }) for the table");
+  opt.add(compare, "compare", "a published Yld2004-18p set (TOML: yld2004 = { a, c1, c2 }, at the top or in [material]) for the table");
+  // Every number checked as it is parsed (cli/option_bounds.hpp's style): the exponent from 2
+  // (quadratic) to 64 (beyond it |x|^a overflows for stress ratios near 1e5); weights 0 to 1e6.
+  opt.range("a", 2, 64).range("w-stress", 0, 1e6).range("w-r", 0, 1e6).range("w-biaxial", 0, 1e6);
+  opt.range("w-plane-strain", 0, 1e6);
+  opt.example("drawbend calibrate data/materials/aa6016_t4_esaform2021.csv --out my-cal    # my-cal/material.toml");
+  opt.example("drawbend calibrate data/materials/aa6016_t4_esaform2021.csv --out my-cal --compare "
+              "data/materials/aa6016_t4_yld2004_postech2022.toml");
+  if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+    std::cout << opt.usage();
+    return 0;
+  }
+  if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
+    std::cerr << "usage: drawbend calibrate TESTS.csv --out DIR [--a 8] [--w-stress 1] [--w-r 1] [--w-biaxial 1] "
+                 "[--w-plane-strain 1] [--compare PUBLISHED.toml] (drawbend calibrate --help: options and examples)\n";
+    return 2;
+  }
+  const std::string path = argv[1];
   if (!opt.parse(argc - 1, argv + 1)) return 0;
   for (double v : {w.stress, w.r, w.biaxial, w.plane_strain})
     if (!(v >= 0) || !std::isfinite(v)) throw InputError("--w-*: weights must be finite and >= 0");

@@ -74,10 +74,11 @@ int plan_command(int argc, char** argv) {
   Options opt("drawbend plan DECK_OR_FOLDER...",
               "Predicted CPU time and memory of every deck (a deck file, or every deck.toml under a folder), the "
               "total CPU-hours and the makespan on N nodes of C cores (largest case first, one case per node on "
-              "all its cores); measured against finished runs where a folder holds one. Example: drawbend plan "
-              "build/chapters --nodes 4 --cores 2");
+              "all its cores); measured against finished runs where a folder holds one (e.g. build/chapters).");
   opt.add(nodes, "nodes", "nodes of the cluster (>= 1)");
   opt.add(cores, "cores", "cores per node (>= 1)");
+  opt.example("drawbend plan data/cases/drawbend_12p7.toml data/cases/block_slide.toml");
+  opt.example("drawbend plan data/cases/drawbend_12p7.toml data/cases/strip_draw.toml --nodes 2 --cores 2");
   std::vector<std::string> paths;
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {

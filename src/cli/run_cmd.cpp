@@ -15,6 +15,7 @@
 #include "core/csv.hpp"
 #include "core/options.hpp"
 #include "io/deck.hpp"
+#include "cli/option_bounds.hpp"
 #include "core/file_gate.hpp"
 #include "io/run_case.hpp"
 
@@ -67,6 +68,7 @@ int run_main(int argc, char** argv) {
   opt.add(ro.result.bending_force, "bending-force",
           "draw-bend decks: F_B [N] on --basis for mu by Eq. (2.3) (0: this run if frictionless, else Swift's Eq. (2.1))");
   opt.add(ro.result.yield_stress, "yield-stress", "draw-bend decks: yield stress [MPa] of Swift's F_B (0: Table 5.1, RD)");
+  opt.range("bending-force", 0, bounds::kForceN, "N").range("yield-stress", 0, 1e4, "MPa");
   return with_exit_codes([&] {
     if (!opt.parse(argc - (help ? 0 : 1), argv + (help ? 0 : 1))) return 0;
     check_threads(ro.threads);

@@ -229,9 +229,13 @@ double rms_residual(const Hill48& h, const SheetTests& t, SheetDatum::Kind k) { 
 
 Yld2004 load_yld2004_toml(const std::string& path) {
   const toml::table root = parse_toml_file(path);
-  const auto* y = root["material"]["yld2004"].as_table();
-  if (!y) throw InputError(path + ": expected [material] with yld2004 = { a, c1 = [9 numbers], c2 = [9 numbers] }");
-  const std::string at = path + ":" + std::to_string(y->source().begin.line) + ": material.yld2004";
+  // A material file ([material] yld2004 = {...}, as `drawbend calibrate` writes it) or a published
+  // yield-function set alone (yld2004 = {...} at the top: no elasticity or flow curve, so no material).
+  const bool in_material = root["material"]["yld2004"].as_table() != nullptr;
+  const auto* y = in_material ? root["material"]["yld2004"].as_table() : root["yld2004"].as_table();
+  if (!y)
+    throw InputError(path + ": expected yld2004 = { a, c1 = [9 numbers], c2 = [9 numbers] }, at the top or in [material]");
+  const std::string at = path + ":" + std::to_string(y->source().begin.line) + (in_material ? ": material.yld2004" : ": yld2004");
   Yld2004 out;
   out.a = (*y)["a"].value_or(NAN);
   for (const char* key : {"c1", "c2"}) {

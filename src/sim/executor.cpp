@@ -85,8 +85,9 @@ int minutes_of(double m) { return std::max(1, static_cast<int>(std::ceil(m))); }
 /// `scontrol show job` (one line): JobState and ExitCode; "" when Slurm no
 /// longer knows the job.
 std::pair<std::string, std::string> job_state(const std::string& id) {
-  const auto [out, code] = shell("scontrol -o show job " + quote(id));
-  if (code != 0) return {"", ""};
+  const auto shown = shell("scontrol -o show job " + quote(id));
+  const std::string& out = shown.first;  // a plain reference: lambdas may not capture structured bindings (C++17)
+  if (shown.second != 0) return {"", ""};
   auto field = [&](const std::string& key) {
     const std::size_t a = out.find(key + "=");
     if (a == std::string::npos) return std::string();

@@ -8,7 +8,8 @@
 #     summary.csv, and a rerun must complete with the same results.
 # Every run's cases.csv and every run folder's deck, history, contact maps and
 # ParaView files must equal the local run's byte for byte (summary.csv too,
-# less its wall_time row; history.csv and summary.csv less their first line, which names the
+# less its wall_time row; history.csv and summary.csv less their first line,
+# result.toml less its deck = line, which names the
 # deck's path, here another folder; run.log holds wall times and is not
 # compared).
 # Exit 77 (skipped) when Slurm cannot be started here (not root, no packages):
@@ -29,6 +30,8 @@ same_runs() {  # same_runs A B: byte-identical outputs
       */run.log|*/job.log|*/slurm.log) continue ;;
       */summary.csv) diff <(tail -n +2 "$f" | grep -v '^wall_time') <(tail -n +2 "$b/$n" | grep -v '^wall_time') >/dev/null ||
         fail "$n differs" ;;
+      */result.toml) # its deck = line names the deck by its path, which differs between the two folders
+        diff <(grep -v '^deck = ' "$f") <(grep -v '^deck = ' "$b/$n") >/dev/null || fail "$n differs between $a and $b" ;;
       */history.csv) # its first line names the deck by its path, which differs between the two folders
         diff <(tail -n +2 "$f") <(tail -n +2 "$b/$n") >/dev/null || fail "$n differs between $a and $b" ;;
       *) cmp -s "$f" "$b/$n" || fail "$n differs between $a and $b" ;;

@@ -29,6 +29,8 @@ base_args() {  # the command line of a command before the option under test
     model-loop) echo "model-loop $work/ml.csv --out $work/o_ml" ;;
     synth) echo "synth --out $work/o_synth" ;;
     export) echo "export $work/model/friction_model.toml --to lsdyna --out $work/o_f.k" ;;
+    calibrate) echo "calibrate $here/../../data/materials/aa6016_t4_esaform2021.csv --out $work/o_cal" ;;
+    plan) echo "plan $here/decks/restart_block.toml" ;;
   esac
 }
 help_args() {
@@ -42,7 +44,7 @@ help_args() {
 }
 echo "| command | option | exit | first line of the message |"
 echo "|---|---|---|---|"
-for cmd in run drawbend-deck block-deck strip-deck cup-deck loop model-loop synth export; do
+for cmd in run drawbend-deck block-deck strip-deck cup-deck loop model-loop synth export calibrate plan; do
   # "  --name VALUE" then "      help (default: D)": the options whose default is a number.
   opts=$("$drawbend" $(help_args $cmd) 2>/dev/null | awk '
     /^  --[a-z]/ { name = $1; takes = (NF >= 2 && $2 != "true|false") ; next }

@@ -12,9 +12,9 @@
 set -u
 bin=$1 data=$2 work=$3
 shift 3
-all=(run drawbend-deck block-deck strip-deck cup-deck loop model-loop synth export)
+all=(run drawbend-deck block-deck strip-deck cup-deck loop model-loop synth export calibrate plan)
 run_cmds=("$@")
-[ ${#run_cmds[@]} -eq 0 ] && run_cmds=(run drawbend-deck block-deck strip-deck cup-deck loop synth export)
+[ ${#run_cmds[@]} -eq 0 ] && run_cmds=(run drawbend-deck block-deck strip-deck cup-deck loop synth export calibrate plan)
 rm -rf "$work" && mkdir -p "$work" || exit 1
 fail() { echo "FAIL: $*"; exit 1; }
 "$bin" help > "$work/help.txt" || fail "drawbend help: exit $?"
