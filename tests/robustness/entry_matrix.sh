@@ -8,6 +8,10 @@
 # path (the robustness test); without it, it only prints (the before/after table).
 # Usage: entry_matrix.sh DRAWBEND WORKDIR [--check]
 set -u
+# A 2 GB address-space cap on each run (a bad value must not eat the machine);
+# not under AddressSanitizer (tests/sanitize/run.sh sets ASAN_OPTIONS), which
+# reserves terabytes of address space for its shadow memory and aborts under it.
+cap_memory() { [ -n "${ASAN_OPTIONS:-}" ] || ulimit -v 2000000; }
 drawbend=$1 work=$2 check=${3:-}
 here=$(cd "$(dirname "$0")" && pwd)
 decks=$here/decks
@@ -25,7 +29,7 @@ run_case() {
   local label=$1 what=$2 named=$3
   shift 3
   local out rc first
-  out=$( (ulimit -v 2000000; timeout -k 5 "$limit" "$@") 2>&1 </dev/null)
+  out=$( (cap_memory; timeout -k 5 "$limit" "$@") 2>&1 </dev/null)
   rc=$?
   first=$(printf '%s\n' "$out" | grep -m1 -E '^(input error|numerical fault|error|data problem|warning)' | cut -c1-400)
   [ -z "$first" ] && first=$(printf '%s\n' "$out" | grep -m1 . | cut -c1-400)

@@ -7,6 +7,10 @@
 # naming the option, within the time limit; the accepted values are not run.
 # Usage: option_matrix.sh DRAWBEND WORKDIR [--check]
 set -u
+# A 2 GB address-space cap on each run (a bad value must not eat the machine);
+# not under AddressSanitizer (tests/sanitize/run.sh sets ASAN_OPTIONS), which
+# reserves terabytes of address space for its shadow memory and aborts under it.
+cap_memory() { [ -n "${ASAN_OPTIONS:-}" ] || ulimit -v 2000000; }
 drawbend=$1 work=$2 check=${3:-}
 here=$(cd "$(dirname "$0")" && pwd)
 limit=${OPTION_MATRIX_SECONDS:-20}
@@ -53,7 +57,7 @@ for cmd in run drawbend-deck block-deck strip-deck cup-deck loop model-loop synt
   for o in $opts; do
     for v in 0 -1 nan 1e300 word; do
       if [ -n "$check" ] && grep -qxF "$cmd $o $v" "$valid"; then continue; fi
-      out=$( (ulimit -v 2000000; timeout -k 5 "$limit" "$drawbend" $(base_args $cmd) "$o" "$v") 2>&1 </dev/null)
+      out=$( (cap_memory; timeout -k 5 "$limit" "$drawbend" $(base_args $cmd) "$o" "$v") 2>&1 </dev/null)
       rc=$?
       first=$(printf '%s\n' "$out" | grep -m1 -E '^(input error|numerical fault|error|data problem)' | cut -c1-150)
       [ -z "$first" ] && first=$(printf '%s\n' "$out" | grep -m1 . | cut -c1-150)

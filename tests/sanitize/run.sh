@@ -31,6 +31,11 @@ t1=$(date +%s)
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$src/tests/sanitize/ubsan.supp
 cd "$bld"
-ctest --output-on-failure -j "$jobs" -L 'unit|asan|robustness'
+# Not here: the cluster tests (their driver is not in sanitize_tests, and they
+# start Slurm daemons) and the user-level example tests that run whole FE cases
+# (help examples, result.toml, portable run folder: 1-5 minutes each at -O0;
+# the same code paths run here through the robustness and cli tests).
+ctest --output-on-failure -j "$jobs" -L 'unit|asan|robustness' -LE cluster \
+  -E '^cli\.(help_examples|help_examples_model_loop|run_result|portable_run_folder)$'
 t2=$(date +%s)
 echo "sanitize: build $((t1 - t0)) s, tests $((t2 - t1)) s"
