@@ -33,9 +33,10 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$src/tests/
 cd "$bld"
 # Not here: the cluster tests (their driver is not in sanitize_tests, and they
 # start Slurm daemons) and the user-level example tests that run whole FE cases
-# (help examples, result.toml, portable run folder: 1-5 minutes each at -O0;
+# (help examples and the model_loop.md check that reads their output, result.toml,
+# portable run folder: 1-5 minutes each at -O0;
 # the same code paths run here through the robustness and cli tests).
 ctest --output-on-failure -j "$jobs" -L 'unit|asan|robustness' -LE cluster \
-  -E '^cli\.(help_examples|help_examples_model_loop|run_result|portable_run_folder)$'
+  -E '^cli\.(help_examples|help_examples_model_loop|model_loop_md|run_result|portable_run_folder)$'
 t2=$(date +%s)
 echo "sanitize: build $((t1 - t0)) s, tests $((t2 - t1)) s"
