@@ -6,6 +6,7 @@
 #include <set>
 #include <cstdio>
 
+#include "core/quote.hpp"
 #include "core/csv.hpp"
 #include "core/input_problems.hpp"
 #include "material/combined_plasticity.hpp"
@@ -172,26 +173,9 @@ std::string array(const std::vector<double>& v) {
   return s + "]";
 }
 
-// A TOML basic string: "..." with \\, \" and control characters escaped.
-std::string quoted(const std::string& v) {
-  std::string s = "\"";
-  for (const char ch : v) {
-    if (ch == '"' || ch == '\\') {
-      s += '\\';
-      s += ch;
-    } else if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(ch)));
-      s += buf;
-    } else {
-      s += ch;
-    }
-  }
-  return s + "\"";
-}
 
 std::string curve_lines(const FlowCurve& f) {
-  if (const auto* p = std::get_if<CurveFile>(&f)) return "hardening = " + quoted(p->path) + "\n";
+  if (const auto* p = std::get_if<CurveFile>(&f)) return "hardening = " + string_literal(p->path) + "\n";
   if (const auto* p = std::get_if<CurveTable>(&f))
     return "hardening = { plastic_strain = " + array(p->plastic_strain) + ", true_stress_MPa = " + array(p->true_stress_MPa) +
            " }\n";

@@ -8,6 +8,7 @@
 
 #include <toml++/toml.h>
 
+#include "core/quote.hpp"
 #include "core/csv.hpp"
 #include "core/toml_read.hpp"
 
@@ -35,14 +36,7 @@ bool absolutise(toml::table& t, const fs::path& base) {
 
 /// A TOML value as deck text: strings double-quoted, floats in their shortest exact form, tables inline.
 std::string value_text(const toml::node& v) {
-  if (const auto* s = v.as_string()) {
-    std::string o = "\"";
-    for (char c : s->get()) {
-      if (c == '"' || c == '\\') o += '\\';
-      o += c;
-    }
-    return o + "\"";
-  }
+  if (const auto* s = v.as_string()) return string_literal(s->get());
   if (const auto* i = v.as_integer()) return std::to_string(i->get());
   if (const auto* f = v.as_floating_point()) {
     std::string t = fmt_shortest(f->get());

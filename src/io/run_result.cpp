@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "analysis/rope.hpp"
+#include "core/quote.hpp"
 #include "core/run_output.hpp"
 #include "friction/surface_law.hpp"
 
@@ -26,19 +27,8 @@ double table_5_1_yield_rd() {
   return t.number(t.rows.front(), "YS02_MPa");
 }
 
-/// A TOML basic string.
-std::string q(const std::string& s) {
-  std::string o = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') o += '\\';
-    if (c == '\n') {
-      o += "\\n";
-      continue;
-    }
-    o += c;
-  }
-  return o + "\"";
-}
+/// A TOML basic string (core/quote.hpp).
+std::string q(const std::string& s) { return string_literal(s); }
 
 /// A TOML float (nan for NaN, which TOML allows).
 std::string num(double v) {

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/quote.hpp"
 #include "core/csv.hpp"
 
 namespace drawbend::loop {
@@ -407,11 +408,7 @@ Dataset synthesize_blind(const BlindOptions& o, BlindTruth& t) {
 }
 
 std::string blind_truth_json(const BlindTruth& t) {
-  auto q = [](const std::string& s) {
-    std::string o = "\"";
-    for (char c : s) o += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
-    return o + "\"";
-  };
+  auto q = [](const std::string& s) { return string_literal(s); };  // a JSON string (core/quote.hpp)
   std::ostringstream o;
   o << "{\n  \"generator\": \"blind\",\n  \"class\": " << q(t.cls) << ",\n  \"variable\": " << q(t.variable)
     << ",\n  \"aliases\": [";

@@ -9,21 +9,13 @@
 
 #include <Eigen/Dense>
 
+#include "core/quote.hpp"
 #include "core/csv.hpp"
 
 namespace drawbend::loop {
 
 namespace {
 
-std::string toml_escape(const std::string& t) {  // a TOML basic string's content
-  std::string r;
-  for (char c : t) {
-    if (c == '"' || c == '\\') r += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) continue;  // no control characters in a name
-    r += c;
-  }
-  return r;
-}
 
 std::vector<std::string> split_cell(const std::string& c) {
   std::vector<std::string> out;
@@ -210,8 +202,8 @@ std::string write_friction_outputs(const Design& d, const LoopResult& r, const F
          << "law = \"surface\"\nnodes = \"" << nodes << "\"\np_min = " << fmt(s.rd.p_min, 8) << "\np_max = "
          << fmt(s.rd.p_max, 8) << "\nv_min = " << fmt(s.rd.v_min, 8) << "\nv_max = " << fmt(s.rd.v_max, 8)
          << "\ninterval = 100\n\n# where it came from (read by `drawbend export` for the exported files' headers)\n[model]\n"
-         << "data = \"" << toml_escape(d.data->path) << "\"\nlubricant = \"" << toml_escape(s.lubricant)
-         << "\"\ntd_copied_from_rd = " << (s.td_copied ? "true" : "false") << "\nrd_copied_from_td = "
+         << "data = " << string_literal(d.data->path) << "\nlubricant = " << string_literal(s.lubricant)
+         << "\ntd_copied_from_rd = " << (s.td_copied ? "true" : "false") << "\nrd_copied_from_td = "
          << (s.rd_copied ? "true" : "false") << "\n";
     write_file_atomic(out + "/friction_model" + tag + ".toml", toml.str());
     md << "Lubricant " << s.lubricant << " (`friction_model" << tag << ".toml`, `" << nodes << "`): domain p "

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/quote.hpp"
 #include "core/csv.hpp"
 #include "loop/forms.hpp"
 
@@ -336,18 +337,7 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
 }
 
 namespace {
-std::string jstr(const std::string& s) {
-  std::string o = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') o += '\\';
-    if (c == '\n') {
-      o += "\\n";
-      continue;
-    }
-    o += c;
-  }
-  return o + "\"";
-}
+std::string jstr(const std::string& s) { return string_literal(s); }  // a JSON string (core/quote.hpp)
 std::string jnum(double v) { return std::isfinite(v) ? fmt(v, 8) : "null"; }
 }  // namespace
 
