@@ -1,10 +1,15 @@
-// Chapter 7 step 9 (demonstration 4): the held-out study of issue 50, item 5.
-// Protocol, fixed and committed before the first run:
-// chapters/ch7-closing-the-loop/heldout_protocol.md.  Set i has seed
-// 50500000 + i (Config::heldout_seed0), class blind_classes()[i % 6] and noise 3 N when (i / 6)
-// is even, 8 N when odd.  Every set is written as a lab file
-// (write_measured), read back (parse_measured) and given to the loop with the
-// chapter's options; the loop is never told the class, variable or noise.
+// Chapter 7 steps 9 and 10: the held-out studies of issue 50, item 5.
+// Step 9 (demonstration 4): generator 1 ("blind") on the seeds of
+// heldout_protocol.md, 50500000 + i (Config::heldout_seed0); since
+// heldout_protocol_v2.md these are development data.
+// Step 10 (demonstration 5, heldout_protocol_v2.md and
+// heldout_protocol_v2_wild.md, fixed before any run on their seeds):
+// generator 1 on fresh seeds 53100000 + i and generator 2 ("wild",
+// src/loop/wild_synth.hpp) on 54200000 + i.
+// Set i of a study has class classes[i % 6] and noise 3 N when (i / 6) is
+// even, 8 N when odd.  Every set is written as a lab file (write_measured),
+// read back (parse_measured) and given to the loop with the chapter's
+// options; the loop is never told the class, variable or noise.
 //   detected     the first step names one of the truth's aliases AND the
 //                final held-out RMS <= 2 x the true noise sd;
 //   false alarm  a null set on which the loop adds any effect.
@@ -17,6 +22,7 @@
 
 #include "ch7_steps.hpp"
 #include "loop/blind_synth.hpp"
+#include "loop/wild_synth.hpp"
 
 namespace ch7 {
 
@@ -33,29 +39,45 @@ struct ClassSum {
 };
 }  // namespace
 
-void heldout_study(Chapter& c, const Config& cfg) {
+namespace {
+// One held-out study: which generator, which seeds, and the names its
+// tables, values and checks are written under.
+struct Study {
+  std::string generator;  ///< blind or wild
+  std::string demo;       ///< "demonstration 4 (held out)" ...
+  std::string runs_table, summary_table;
+  std::string value, class_value;  ///< prefixes of the chapter values ("h", "hc_")
+  std::string check;               ///< check id prefix ("ch7.heldout")
+  std::string protocol;            ///< the protocol file the checks cite
+  int sets = 0, seed0 = 0;
+};
+
+void run_study(Chapter& c, const Config& cfg, const Study& st) {
+  const bool wild = st.generator == "wild";
+  const std::vector<std::string>& classes = wild ? wild_classes() : blind_classes();
   const MapLibrary maps = cfg.maps_dir.empty() ? MapLibrary::stand_in({12.7, 25.4, 42}) : MapLibrary::load_dir(cfg.maps_dir);
   LoopOptions o;
   o.permutations = cfg.permutations;
   auto w = c.table({"set", "seed", "class", "noise_N", "rows", "variable", "aliases", "shape", "channel", "cell",
                     "k_effect_over_noise", "steps", "outcome", "base_over_noise", "final_over_noise"},
-                   "demonstration 4 (held out): every blind set; k = planted effect RMS / noise sd; the RMS ratios "
+                   st.demo + ": every " + st.generator + " set; k = planted effect RMS / noise sd; the RMS ratios "
                    "are held-out RMS of the outlet force over the true noise sd");
   std::map<std::string, ClassSum> sum;
   bool generator_ok = true, null_base_ok = true;
   std::string generator_note, null_note;
   double worst_null_base = 0;
   const std::string tmp = c.out("heldout_set.csv");
-  for (int i = 0; i < cfg.heldout_sets; ++i) {
-    const std::string cls = blind_classes()[i % 6];
+  for (int i = 0; i < st.sets; ++i) {
+    const std::string cls = classes[i % classes.size()];
     const double noise = (i / 6) % 2 ? kNoiseOdd : kNoiseEven;
     BlindTruth truth;
-    const Dataset gen = synthesize_blind({cls, noise, static_cast<std::uint64_t>(cfg.heldout_seed0 + i)}, truth);
+    const auto seed = static_cast<std::uint64_t>(st.seed0) + static_cast<std::uint64_t>(i);
+    const Dataset gen = wild ? synthesize_wild({cls, noise, seed}, truth) : synthesize_blind({cls, noise, seed}, truth);
     write_measured(tmp, gen);
     std::ifstream in(tmp, std::ios::binary);
     std::stringstream text;
     text << in.rdbuf();
-    const Dataset data = parse_measured(text.str(), "heldout set " + std::to_string(i));
+    const Dataset data = parse_measured(text.str(), st.generator + " set " + std::to_string(i));
     const bool null = cls == "null";
     const double k = truth.effect_rms_N / noise;
     if (!data.problems.empty() || data.rows.size() != gen.rows.size() ||
@@ -96,12 +118,12 @@ void heldout_study(Chapter& c, const Config& cfg) {
            fmt(base, 3), fmt(fin, 3)});
   }
   std::filesystem::remove(tmp);
-  c.save(w, "heldout_runs");
+  c.save(w, st.runs_table);
   auto t = c.table({"class", "sets", "detected", "named_but_rms_above_2sd", "wrong_first_step", "no_step",
                     "false_alarms"},
-                   "demonstration 4 (held out): per class; null sets count false alarms (any effect added)");
+                   st.demo + ": per class; null sets count false alarms (any effect added)");
   int eff_sets = 0, eff_det = 0, null_sets = 0, null_alarm = 0;
-  for (const auto& cls : blind_classes()) {
+  for (const auto& cls : classes) {
     const ClassSum& s = sum[cls];
     const bool null = cls == "null";
     t.row({cls, std::to_string(s.sets), null ? "-" : std::to_string(s.detected), null ? "-" : std::to_string(s.named_rms_high),
@@ -110,38 +132,59 @@ void heldout_study(Chapter& c, const Config& cfg) {
     if (null) null_sets += s.sets, null_alarm += s.wrong_first;
     else eff_sets += s.sets, eff_det += s.detected;
     const std::string key = cls == "test-level" ? "test_level" : cls;
-    c.value("hc_" + key + "_sets", std::to_string(s.sets));
-    c.value("hc_" + key + "_hits", std::to_string(null ? s.wrong_first : s.detected));
+    c.value(st.class_value + key + "_sets", std::to_string(s.sets));
+    c.value(st.class_value + key + "_hits", std::to_string(null ? s.wrong_first : s.detected));
   }
-  c.save(t, "heldout_summary");
+  c.save(t, st.summary_table);
   const double rate = static_cast<double>(eff_det) / std::max(1, eff_sets);
   const double fa = static_cast<double>(null_alarm) / std::max(1, null_sets);
-  c.value("h_sets", std::to_string(cfg.heldout_sets));
-  c.value("h_effect_sets", std::to_string(eff_sets));
-  c.value("h_detected", std::to_string(eff_det));
-  c.value("h_detection_rate", fmt(100 * rate, 3), "%");
-  c.value("h_null_sets", std::to_string(null_sets));
-  c.value("h_null_alarm", std::to_string(null_alarm));
-  c.value("h_false_alarm_rate", fmt(100 * fa, 3), "%");
-  c.value("h_seed0", std::to_string(cfg.heldout_seed0));
-  c.value("h_seed_last", std::to_string(cfg.heldout_seed0 + cfg.heldout_sets - 1));
-  c.value("h_worst_null_base", fmt(worst_null_base, 3));
-  c.checks().claim(study::Kind::software, "ch7.heldout.generator",
-                   "every blind set reads back with no problems and all its rows, and its planted effect's RMS is "
-                   "2.5-6 x the noise sd" + (generator_ok ? std::string() : ":" + generator_note),
-                   generator_ok, "heldout_protocol.md check 1: the generator writes valid data of the stated size");
-  c.checks().claim(study::Kind::health, "ch7.heldout.null_base",
-                   "on every null set the base model's held-out RMS is <= " + fmt(o.noise_ratio) + " x the noise sd" +
-                       (null_base_ok ? std::string() : ":" + null_note),
-                   null_base_ok, "heldout_protocol.md check 2: null data are the base model plus noise, so a larger "
+  c.value(st.value + "_sets", std::to_string(st.sets));
+  c.value(st.value + "_effect_sets", std::to_string(eff_sets));
+  c.value(st.value + "_detected", std::to_string(eff_det));
+  c.value(st.value + "_detection_rate", fmt(100 * rate, 3), "%");
+  c.value(st.value + "_null_sets", std::to_string(null_sets));
+  c.value(st.value + "_null_alarm", std::to_string(null_alarm));
+  c.value(st.value + "_false_alarm_rate", fmt(100 * fa, 3), "%");
+  c.value(st.value + "_seed0", std::to_string(st.seed0));
+  c.value(st.value + "_seed_last", std::to_string(static_cast<long long>(st.seed0) + st.sets - 1));
+  c.value(st.value + "_worst_null_base", fmt(worst_null_base, 3));
+  c.checks().claim(study::Kind::software, st.check + ".generator",
+                   "every " + st.generator + " set reads back with no problems and all its rows, and its planted "
+                   "effect's RMS is 2.5-6 x the noise sd" + (generator_ok ? std::string() : ":" + generator_note),
+                   generator_ok, st.protocol + " check 1: the generator writes valid data of the stated size");
+  c.checks().claim(study::Kind::health, st.check + ".null_base",
+                   "on every null " + st.generator + " set the base model's held-out RMS is <= " + fmt(o.noise_ratio) +
+                       " x the noise sd" + (null_base_ok ? std::string() : ":" + null_note),
+                   null_base_ok, st.protocol + " check 2: null data are the base model plus noise, so a larger "
                    "error would be a generator the loop's base cannot represent, not a false alarm of the loop");
-  c.checks().claim(study::Kind::simulated, "ch7.heldout.detected",
-                   "held-out detection rate >= 90 % (" + std::to_string(eff_det) + " of " + std::to_string(eff_sets) + ")",
-                   rate >= 0.9, "heldout_protocol.md check 3: issue 50's goal on data the loop was not written for");
-  c.checks().claim(study::Kind::simulated, "ch7.heldout.null",
-                   "held-out false alarms on at most 1/12 of the null sets (" + std::to_string(null_alarm) + " of " +
-                       std::to_string(null_sets) + ")",
-                   12 * null_alarm <= null_sets, "heldout_protocol.md check 4: issue 50's goal (at most 1 in 12)");
+  c.checks().claim(study::Kind::simulated, st.check + ".detected",
+                   "held-out detection rate (" + st.generator + ") >= 90 % (" + std::to_string(eff_det) + " of " +
+                       std::to_string(eff_sets) + ")",
+                   rate >= 0.9, st.protocol + " check 3: issue 50's goal on data the loop was not written for");
+  c.checks().claim(study::Kind::simulated, st.check + ".null",
+                   "held-out false alarms (" + st.generator + ") on at most 1/12 of the null sets (" +
+                       std::to_string(null_alarm) + " of " + std::to_string(null_sets) + ")",
+                   12 * null_alarm <= null_sets, st.protocol + " check 4: issue 50's goal (at most 1 in 12)");
+}
+
+}  // namespace
+
+void heldout_study(Chapter& c, const Config& cfg) {
+  run_study(c, cfg, {"blind", "demonstration 4 (held out)", "heldout_runs", "heldout_summary", "h", "hc_",
+                     "ch7.heldout", "heldout_protocol.md", cfg.heldout_sets, cfg.heldout_seed0});
+}
+
+void heldout2_study(Chapter& c, const Config& cfg) {
+  const bool protocol_seeds = cfg.heldout2_blind_seed0 == kHeldout2BlindSeed0 && cfg.heldout2_wild_seed0 == kHeldout2WildSeed0;
+  c.value("h2_seeds", protocol_seeds ? "the protocols' held-out seeds"
+                                     : "NOT the protocols' held-out seeds (development seeds chosen by option): not a "
+                                       "held-out result");
+  run_study(c, cfg, {"blind", "demonstration 5 (held out, generator 1, fresh seeds)", "heldout_runs_blind",
+                     "heldout_summary_blind", "h2b", "h2bc_", "ch7.heldout2.blind", "heldout_protocol_v2.md",
+                     cfg.heldout2_sets, cfg.heldout2_blind_seed0});
+  run_study(c, cfg, {"wild", "demonstration 5 (held out, generator 2)", "heldout_runs_wild", "heldout_summary_wild",
+                     "h2w", "h2wc_", "ch7.heldout2.wild", "heldout_protocol_v2_wild.md", cfg.heldout2_sets,
+                     cfg.heldout2_wild_seed0});
 }
 
 }  // namespace ch7

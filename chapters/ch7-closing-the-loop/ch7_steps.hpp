@@ -11,6 +11,10 @@ namespace ch7 {
 
 using drawbend::study::Chapter;
 
+/// Held-out seeds of demonstration 5, fixed before any run:
+/// heldout_protocol_v2.md (generator 1) and heldout_protocol_v2_wild.md (generator 2).
+constexpr int kHeldout2BlindSeed0 = 53100000, kHeldout2WildSeed0 = 54200000;
+
 struct Config {
   std::string maps_dir;   ///< FE maps (empty: analytic stand-in, not FE)
   int null_seeds = 10;    ///< null data sets per noise level
@@ -18,6 +22,9 @@ struct Config {
   int permutations = 20000;  ///< cap of the sequential permutation test
   int heldout_sets = 24;     ///< held-out blind sets (heldout_protocol.md: 24 quick, 144 full)
   int heldout_seed0 = 50500000;       ///< heldout_protocol.md; dev seeds 1..999 only to debug the generator
+  int heldout2_sets = 24;             ///< per generator (heldout_protocol_v2.md: 24 quick, 144 full)
+  int heldout2_blind_seed0 = kHeldout2BlindSeed0;  ///< development: 52000000+
+  int heldout2_wild_seed0 = kHeldout2WildSeed0;    ///< development: 55000000+
 };
 
 struct Thesis {
@@ -34,5 +41,6 @@ void bending_vs_swift(Chapter& c, const Thesis& t, const Config& cfg);  // 6 (de
 void rd_td_crossover(Chapter& c, const Thesis& t);               // 7 (demonstration 2)
 void synthetic_detection(Chapter& c, const Config& cfg);         // 8 (demonstration 3)
 void heldout_study(Chapter& c, const Config& cfg);               // 9 (demonstration 4, held out)
+void heldout2_study(Chapter& c, const Config& cfg);              // 10 (demonstration 5, held out, generators 1 and 2)
 
 }  // namespace ch7

@@ -18,8 +18,11 @@
 //   6. Demonstration 2b: bending force against back tension vs Swift Eq. 2.1.
 //   7. Demonstration 2c: the RD/TD crossover at high speed against pin scatter.
 //   8. Demonstration 3: synthetic data with hidden effects and null data.
-//   9. Demonstration 4 (held out): a second, blind generator with seeds and
-//      scoring fixed before the first run (heldout_protocol.md).
+//   9. Demonstration 4: a second, blind generator with seeds and scoring
+//      fixed before the first run (heldout_protocol.md; its seeds are
+//      development data since heldout_protocol_v2.md).
+//  10. Demonstration 5 (held out): generator 1 on fresh seeds and generator 2
+//      ("wild") on its own (heldout_protocol_v2.md, heldout_protocol_v2_wild.md).
 #include "ch7_steps.hpp"
 
 int main(int argc, char** argv) {
@@ -32,6 +35,11 @@ int main(int argc, char** argv) {
   ch.options().add(cfg.heldout_sets, "heldout-sets", "held-out blind sets (heldout_protocol.md: 24 quick, 144 full)");
   ch.options().add(cfg.heldout_seed0, "heldout-seed0",
                    "seed of held-out set 0 (the protocol's 50500000; 1..999 only to debug the generator)");
+  ch.options().add(cfg.heldout2_sets, "heldout2-sets", "held-out sets per generator of demonstration 5 (24 quick, 144 full)");
+  ch.options().add(cfg.heldout2_blind_seed0, "heldout2-blind-seed0",
+                   "seed of generator 1's set 0 in demonstration 5 (the protocol's 53100000; 52000000+ to develop)");
+  ch.options().add(cfg.heldout2_wild_seed0, "heldout2-wild-seed0",
+                   "seed of generator 2's set 0 in demonstration 5 (the protocol's 54200000; 55000000+ to develop)");
   return drawbend::study::run_chapter(ch, argc, argv, [&cfg](drawbend::study::Chapter& c) {
     using namespace ch7;
     const Thesis t = load_thesis_data(c, cfg);  // 1
@@ -43,5 +51,6 @@ int main(int argc, char** argv) {
     rd_td_crossover(c, t);                      // 7
     synthetic_detection(c, cfg);                // 8
     heldout_study(c, cfg);                      // 9
+    heldout2_study(c, cfg);                     // 10
   });
 }

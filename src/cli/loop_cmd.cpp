@@ -12,6 +12,7 @@
 #include "cli/loop_cmd.hpp"
 #include "cli/threads.hpp"
 #include "loop/blind_synth.hpp"
+#include "loop/wild_synth.hpp"
 
 #include <omp.h>
 
@@ -216,13 +217,15 @@ int synth_main(int argc, char** argv) {
   opt.add(threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all)");
   opt.add(generator, "generator",
           "library (the hidden laws of --effect) or blind (a random design, decoys and effect drawn from a wide "
-          "family, src/loop/blind_synth.hpp; uses --class, --noise and --seed only)");
-  opt.add(blind_class, "class", "--generator blind: level, smooth, interaction, bending, test-level, null or random");
+          "family, src/loop/blind_synth.hpp; uses --class, --noise and --seed only) or wild (generator 2 of the "
+          "held-out study, src/loop/wild_synth.hpp; the same options)");
+  opt.add(blind_class, "class", "--generator blind: level, smooth, interaction, bending, test-level, null or random; "
+          "wild: level, smooth, interaction, channel, test-level, null or random");
   return with_exit_codes([&] {
     if (!opt.parse(argc, argv)) return 0;
     apply_threads(threads);
-    if (generator != "library" && generator != "blind")
-      throw InputError("--generator: expected library or blind, found '" + generator + "'");
+    if (generator != "library" && generator != "blind" && generator != "wild")
+      throw InputError("--generator: expected library, blind or wild, found '" + generator + "'");
     // Sizes and noise a draw-bend data set can have (before 2026-11-29,
     // --rows-per-test -5 ended in "cannot create std::vector larger than
     // max_size()" with exit 3, 1e8 ran for minutes, and --noise -1 wrote data).
@@ -251,15 +254,19 @@ int synth_main(int argc, char** argv) {
       std::cout << "wrote " << out << "/thesis_drawbend.csv (" << d.rows.size() << " rows)\n";
       return 0;
     }
-    if (generator == "blind") {
-      const auto& cl = blind_classes();
-      if (blind_class != "random" && std::find(cl.begin(), cl.end(), blind_class) == cl.end())
-        throw InputError("--class: expected level, smooth, interaction, bending, test-level, null or random, found '" +
-                         blind_class + "'");
+    if (generator == "blind" || generator == "wild") {  // the held-out generators (1 and 2)
+      const bool wild = generator == "wild";
+      const auto& cl = wild ? wild_classes() : blind_classes();
+      if (blind_class != "random" && std::find(cl.begin(), cl.end(), blind_class) == cl.end()) {
+        std::string list;
+        for (const auto& c : cl) list += c + ", ";
+        throw InputError("--class: expected " + list.substr(0, list.size() - 2) + " or random, found '" + blind_class + "'");
+      }
       BlindTruth truth;
-      const Dataset d = synthesize_blind({blind_class, so.noise_N, static_cast<std::uint64_t>(seed)}, truth);
+      const Dataset d = wild ? synthesize_wild({blind_class, so.noise_N, static_cast<std::uint64_t>(seed)}, truth)
+                             : synthesize_blind({blind_class, so.noise_N, static_cast<std::uint64_t>(seed)}, truth);
       write_measured(out + "/data.csv", d);
-      write_file_atomic(out + "/truth.json", blind_truth_json(truth));
+      write_file_atomic(out + "/truth.json", wild ? wild_truth_json(truth) : blind_truth_json(truth));
       std::cout << "wrote " << out << "/data.csv (" << d.rows.size() << " rows) and " << out << "/truth.json\n";
       return 0;
     }
