@@ -5,12 +5,13 @@
 #               tier there (its whole full study takes hours: `make test-full`);
 #   make quick  the same report from the quick meshes of the test suite in
 #               build/report/study.html (quicker: the quick meshes of `make test`);
-#   make test   builds and runs the CTest suite (unit + chapter + report) in build/.
+#   make test   builds and runs the CTest suite (unit + chapter + report) in build/;
+#   make install PREFIX=DIR  installs drawbend, its data and docs under DIR (/usr/local).
 BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_ARGS ?=
 
-.PHONY: all quick deps configure build study report test test-full full gold bench clean
+.PHONY: all quick deps configure build study report test test-full full gold bench install clean
 
 all: full
 
@@ -57,6 +58,11 @@ bench: build
 # Rewrite the regression gold files from the current code (review the diff!).
 gold: build
 	@cmake --build $(BUILD) --target gold
+
+# The binary, its run-time data and the docs under PREFIX (bin/, share/drawbend/, share/doc/drawbend/).
+PREFIX ?= /usr/local
+install: build
+	@cmake --install $(BUILD) --prefix $(PREFIX)
 
 clean:
 	@rm -rf $(BUILD) build-full build-asan build-fuzz

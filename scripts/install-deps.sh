@@ -13,6 +13,10 @@ PKGS=(cmake g++ make libeigen3-dev libboost-test-dev libtomlplusplus-dev gnuplot
 # a single-node Slurm on this machine to run cases through the slurm executor
 # (tests/cluster/; never started outside that test).
 PKGS+=(slurmctld slurmd slurm-client munge)
+# zlib1g-dev: the compressed binary ParaView frames (io/vtu.hpp; without it they
+# are written uncompressed).  python3-vtk9: the test that reads a run's frames
+# with VTK's own XML readers (tests/user/vtk_read.py; skipped without it).
+PKGS+=(zlib1g-dev python3-vtk9)
 # --bench (`make bench`): calculix-ccx, CalculiX's solver (Debian 2.20-1 on
 # bookworm), an independent peer that the bench times on the same bar as ours
 # (bench/bench_calculix.cpp).  Only there: it pulls in OpenMPI and SPOOLES,

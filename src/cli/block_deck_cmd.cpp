@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/deck_out.hpp"
+#include "core/install_paths.hpp"
 #include "cli/option_bounds.hpp"
 #include "cli/threads.hpp"
 #include "core/options.hpp"
@@ -15,7 +16,7 @@
 namespace drawbend::cli {
 
 int block_deck_command(int argc, char** argv) {
-  sim::BlockSpec s = sim::default_block_spec(DRAWBEND_DATA_DIR);
+  sim::BlockSpec s = sim::default_block_spec(drawbend::data_dir());
   std::string out;
   Options opt("drawbend block-deck",
               "Write the block-sliding case deck of Chapter 6 (Sec. 6.5): a cube pressed on a rigid floor and slid "

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "cli/deck_out.hpp"
+#include "core/install_paths.hpp"
 #include "cli/option_bounds.hpp"
 #include "cli/threads.hpp"
 #include "core/csv.hpp"
@@ -18,7 +19,7 @@ namespace drawbend::cli {
 
 int cup_deck_command(int argc, char** argv) {
   sim::CupSpec s;
-  s.deck = std::string(DRAWBEND_DATA_DIR) + "/cases/cup_draw.toml";
+  s.deck = drawbend::data_dir() + "/cases/cup_draw.toml";
   double punch_radius = 0, die_radius = 0;
   int cycles = static_cast<int>(s.cycles);
   Options opt("drawbend cup-deck",

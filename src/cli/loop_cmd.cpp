@@ -9,6 +9,7 @@
 //   The thesis fits sampled into the sample format: DIR/thesis_drawbend.csv.
 // Exit codes: 0 ok, 2 bad input, 3 numerical failure.
 #include "cli/exit_codes.hpp"
+#include "core/install_paths.hpp"
 #include "cli/loop_cmd.hpp"
 #include "cli/threads.hpp"
 #include "loop/blind_synth.hpp"
@@ -86,7 +87,7 @@ int loop_main(int argc, char** argv) {
   const bool help = argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h");
   const std::string data_path = argc >= 2 ? argv[1] : "";
   LoopOptions lo;
-  std::string out = "loop-out", maps_dir, bending = "linear", figures = DRAWBEND_FIGURES_DIR, gnuplot = "gnuplot";
+  std::string out = "loop-out", maps_dir, bending = "linear", figures = drawbend::figures_dir(), gnuplot = "gnuplot";
   int seed = static_cast<int>(lo.seed), threads = 0;
   Options opt("drawbend loop DATA.csv",
               "Close the loop on measured draw-bend data: fit the base model (bending force per pin, constant mu "
@@ -192,7 +193,7 @@ int loop_main(int argc, char** argv) {
 
 int synth_main(int argc, char** argv) {
   SynthOptions so;
-  std::string out = "synth-out", maps_dir, data_dir = DRAWBEND_DATA_DIR, pins_text = "12.7,25.4,42";
+  std::string out = "synth-out", maps_dir, data_dir = drawbend::data_dir(), pins_text = "12.7,25.4,42";
   int seed = 1, points = 7, threads = 0;
   bool from_thesis = false;
   std::string generator = "library", blind_class = "random";

@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "core/csv.hpp"
+#include "core/install_paths.hpp"
 #include "core/file_gate.hpp"
 #include "io/deck.hpp"
 #include "cli/loop_cmd.hpp"
@@ -78,7 +79,7 @@ void write_model_loop_md(const std::string& path, const std::string& data, const
 int model_loop_command(int argc, char** argv, const char* name) {
   const std::string me = name;
   sim::DrawBendSpec s;
-  s.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
+  s.hardening = drawbend::data_dir() + "/materials/aa5754_o_rd.csv";
   s.width = 12.7;
   s.speed = 50;
   sim::set_quick_mesh(s);  // the chapters' quick tier (sim/fe_options.hpp)
@@ -156,7 +157,7 @@ int model_loop_command(int argc, char** argv, const char* name) {
   for (std::string tok; std::getline(ss, tok, ',');) {
     if (tok.empty()) continue;
     try {
-      cands.push_back(sim::named_candidate(tok, DRAWBEND_DATA_DIR));
+      cands.push_back(sim::named_candidate(tok, drawbend::data_dir()));
     } catch (const InputError& e) {
       need(false, std::string("--candidates: ") + e.what());
     }

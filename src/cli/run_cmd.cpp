@@ -50,8 +50,8 @@ int run_main(int argc, char** argv) {
   std::string every;
   int halt = 0;
   Options opt("drawbend run CASE.toml",
-              "Run one case deck. Writes result.toml (the answer: for a draw-bend deck F_X, F_Y, F_B, mu by Eq. (2.3)), history.csv, summary.csv, contact maps and ParaView .vtu/.pvd frames to "
-              "--out; the .vtu points are the deformed positions (do not warp them by the displacement again).");
+              "Run one case deck. Writes result.toml (the answer: for a draw-bend deck F_X, F_Y, F_B, mu by Eq. (2.3)), history.csv, summary.csv, contact maps and ParaView frames (open fields.pvd: the sheet and the tools; docs/paraview.md) to "
+              "--out; the sheet's points are the deformed positions (do not warp them by the displacement again).");
   opt.add(ro.out_dir, "out", "output directory");
   opt.add(ro.threads, "threads", "OpenMP threads (0: deck or default)");
   opt.add_flag(quiet, "quiet", "no progress line");

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/deck_out.hpp"
+#include "core/install_paths.hpp"
 #include "cli/option_bounds.hpp"
 #include "cli/threads.hpp"
 #include "core/options.hpp"
@@ -15,7 +16,7 @@
 namespace drawbend::cli {
 
 int strip_deck_command(int argc, char** argv) {
-  sim::StripDrawSpec s = sim::default_strip_draw_spec(DRAWBEND_DATA_DIR);
+  sim::StripDrawSpec s = sim::default_strip_draw_spec(drawbend::data_dir());
   std::string out;
   Options opt("drawbend strip-deck",
               "Write the strip-draw friction-test deck of Chapter 3 (Sec. 3.3): a strip section pressed by a "

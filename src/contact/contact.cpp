@@ -125,6 +125,8 @@ Vec3 friction_force(const ContactView& v, int k, const ContactNode& c, const Vec
   if (phi > Fn) {
     const double s = std::isfinite(phi) ? Fn / phi : 0.0;
     for (double& x : ft) x *= s;
+  } else {
+    v.nodes[k].status = 1;  // stick: node_forces set 2 (slip) before the call
   }
   v.dissipated[k] = -dot(ft, vtan) * dt;
   v.stored[k] = 0.5 * dot(ft, ft) / kn;
@@ -141,11 +143,15 @@ void node_forces(const ContactView& v, int k, double dt) {
   const int surf = closest_surface(v, {v.x[i], v.y[i], v.z[i]}, L, best, n, foot);
   Vec3& F = v.force[k];
   if (surf < 0) {
-    // Out of contact: the node's state reset (area kept).  A node already
+    // Out of contact: the node's state reset (area and accumulated slip kept).  A node already
     // reset is left as it is: only the contact branch below, and a
     // checkpoint's copy of a reset state, make its surface >= 0 or its other
     // fields non-zero, so the bits are the same.
-    if (c.surface >= 0) c = ContactNode{i, c.area};
+    if (c.surface >= 0) {
+      const double slip = c.slip;  // the accumulated slip outlives the contact
+      c = ContactNode{i, c.area};
+      c.slip = slip;
+    }
     F = {0, 0, 0};
     return;
   }
@@ -163,6 +169,8 @@ void node_forces(const ContactView& v, int k, double dt) {
   // Tangential relative velocity.
   const Vec3 vtan{vr[0] - vn * n[0], vr[1] - vn * n[1], vr[2] - vn * n[2]};
   c.slip_speed = std::sqrt(dot(vtan, vtan));
+  c.slip += c.slip_speed * dt;
+  c.status = 2;  // slip, unless friction_force finds the node sticking
   const Vec3 ft = v.law ? friction_force(v, k, c, n, vtan, kn, Fn, dt) : Vec3{0, 0, 0};
   c.ft = ft;
   v.stored[k] += 0.5 * kn * best * best;

@@ -27,6 +27,14 @@ struct ContactNode {
   double slip_speed = 0;    ///< [mm/s]
   int surface = -1;         ///< index of the tool surface in contact (-1: none)
   Vec3 foot{0, 0, 0};       ///< closest point on the tool [mm]
+  /// Slip accumulated over the run [mm]: the sum of slip_speed x dt over every
+  /// cycle the node was in contact (kept when it leaves contact, so a node that
+  /// slid over the pin and left still shows how far it slid).
+  double slip = 0;
+  /// Friction status of the last cycle: 0 no contact, 1 stick (the trial
+  /// tangential force inside the law's limit), 2 slip (returned onto the limit,
+  /// or a frictionless pair).
+  int status = 0;
 };
 
 /// One contact pair for one cycle.

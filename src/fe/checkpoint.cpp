@@ -11,7 +11,7 @@
 // reactions) are not saved.  Doubles are stored as raw bytes, so a restarted
 // run continues bit for bit.
 //
-// Layout: "drawbend-solver-state 2\n", the mesh's fingerprint (64 bits,
+// Layout: "drawbend-solver-state 3\n", the mesh's fingerprint (64 bits,
 // fe::mesh_fingerprint), then a fixed sequence of blocks, each a 64-bit count
 // followed by that many 8-byte values.  A count that does not match the
 // solver being restored (another deck or mesh) is an error, and so is
@@ -29,8 +29,12 @@ namespace drawbend::fe {
 
 namespace {
 
-constexpr const char* kMagic = "drawbend-solver-state 2\n";
+constexpr const char* kMagic = "drawbend-solver-state 3\n";
 constexpr const char* kMagicV1 = "drawbend-solver-state 1\n";
+constexpr const char* kMagicV2 = "drawbend-solver-state 2\n";
+/// Doubles per contact node: area, normal force, pressure, depth, normal (3),
+/// friction force (3), slip speed, surface, foot (3), accumulated slip, status.
+constexpr std::size_t kContactValues = 17;
 
 struct Writer {
   std::string& out;
@@ -93,7 +97,8 @@ void Solver::save_state(std::string& out) const {
     std::vector<double> c;
     for (const ContactNode& n : contact_[p])
       c.insert(c.end(), {n.area, n.normal_force, n.pressure, n.depth, n.normal[0], n.normal[1], n.normal[2], n.ft[0],
-                         n.ft[1], n.ft[2], n.slip_speed, static_cast<double>(n.surface), n.foot[0], n.foot[1], n.foot[2]});
+                         n.ft[1], n.ft[2], n.slip_speed, static_cast<double>(n.surface), n.foot[0], n.foot[1], n.foot[2], n.slip,
+                         static_cast<double>(n.status)});
     w.vec(c);
     w.vec(friction_state_[p]);
   }
@@ -103,8 +108,11 @@ void Solver::load_state(const std::string& in, const std::string& source) {
   if (in.compare(0, std::strlen(kMagicV1), kMagicV1) == 0)
     throw InputError(source + ": checkpoint of format 1, without the mesh's fingerprint (drawbend before 2026-11-29, "
                      "whose structured blocks may be numbered otherwise): run the deck again from the start");
+  if (in.compare(0, std::strlen(kMagicV2), kMagicV2) == 0)
+    throw InputError(source + ": checkpoint of format 2, without the contact nodes' accumulated slip (drawbend "
+                     "before 2026-12-02): run the deck again from the start");
   if (in.compare(0, std::strlen(kMagic), kMagic) != 0)
-    throw InputError(source + ": not a drawbend checkpoint (expected the header 'drawbend-solver-state 2')");
+    throw InputError(source + ": not a drawbend checkpoint (expected the header 'drawbend-solver-state 3')");
   Reader r{in, source, std::strlen(kMagic)};
   const std::uint64_t fp = r.count(), here = mesh_fingerprint(m_.mesh);
   if (fp != here)
@@ -141,11 +149,11 @@ void Solver::load_state(const std::string& in, const std::string& source) {
   r.vec3s(tool_force_, "tool forces");
   r.vec3s(slide_offset_, "rotation offsets");
   for (std::size_t p = 0; p < contact_.size(); ++p) {
-    std::vector<double> c(15 * contact_[p].size());
+    std::vector<double> c(kContactValues * contact_[p].size());
     r.vec(c, "contact nodes");
     for (std::size_t i = 0; i < contact_[p].size(); ++i) {
       ContactNode& n = contact_[p][i];
-      const double* q = &c[15 * i];
+      const double* q = &c[kContactValues * i];
       n.area = q[0];
       n.normal_force = q[1];
       n.pressure = q[2];
@@ -155,6 +163,8 @@ void Solver::load_state(const std::string& in, const std::string& source) {
       n.slip_speed = q[10];
       n.surface = static_cast<int>(q[11]);
       n.foot = {q[12], q[13], q[14]};
+      n.slip = q[15];
+      n.status = static_cast<int>(q[16]);
     }
     r.vec(friction_state_[p], "friction state");
   }

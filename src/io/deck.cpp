@@ -168,9 +168,13 @@ void read_numerics(const DeckContext& c, const toml::table& t, Deck& d) {
 }
 
 void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out) {
-  c.allowed(t, "output", {"history_interval", "fields_per_step", "history"});
+  c.allowed(t, "output", {"history_interval", "fields_per_step", "vtk_format", "history"});
   out.history_interval = c.in_range(t, "history_interval", "output", 0.0, 0.0);
   out.fields_per_step = c.count_of(t, "fields_per_step", "output", 1, 1);
+  const std::string vtk = c.str(t, "vtk_format", "output", std::string("binary"));
+  if (vtk != "binary" && vtk != "ascii")
+    c.bad(*t.get("vtk_format"), "output.vtk_format", "expected \"binary\" or \"ascii\", found \"" + vtk + "\"");
+  out.vtk_ascii = vtk == "ascii";
   if (const auto* hs = c.array_of_tables(t, "history", "output"))
     for (const auto& h : *hs) {
       const auto& ht = *h.as_table();

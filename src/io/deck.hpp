@@ -35,6 +35,7 @@ struct HistorySignal {
 struct OutputSpec {
   double history_interval = 0;  ///< [s]; 0: 200 samples per step
   int fields_per_step = 1;      ///< VTU snapshots per step (>= 1: at least the end of each step)
+  bool vtk_ascii = false;       ///< vtk_format = "ascii": text VTU (default "binary": appended, zlib-compressed)
   std::vector<HistorySignal> history;
 };
 

@@ -65,75 +65,6 @@ void write_contact_maps(const fe::Solver& s, const std::string& dir, int snapsho
   }
 }
 
-void write_fields(const fe::Solver& s, const std::string& path) {
-  const fe::Model& m = s.model();
-  const int n = m.mesh.num_nodes(), ne = m.mesh.num_elements();
-  std::vector<double> disp(3 * n), vel(3 * n), pres(n, 0.0), vm(ne), ep(ne);
-  for (int i = 0; i < n; ++i) {
-    disp[3 * i] = s.x()[i] - m.mesh.x[i];
-    disp[3 * i + 1] = s.y()[i] - m.mesh.y[i];
-    disp[3 * i + 2] = s.z()[i] - m.mesh.z[i];
-    vel[3 * i] = s.vx()[i];
-    vel[3 * i + 1] = s.vy()[i];
-    vel[3 * i + 2] = s.vz()[i];
-  }
-  for (int p = 0; p < s.num_contact_pairs(); ++p)
-    for (const auto& c : s.contact_nodes(p)) pres[c.node] = std::max(pres[c.node], c.pressure);
-  const std::vector<double> sg = s.stress();
-  for (int e = 0; e < ne; ++e) {
-    const double* t = &sg[6 * e];
-    vm[e] = std::sqrt(0.5 * ((t[0] - t[1]) * (t[0] - t[1]) + (t[1] - t[2]) * (t[1] - t[2]) + (t[2] - t[0]) * (t[2] - t[0])) +
-                      3 * (t[3] * t[3] + t[4] * t[4] + t[5] * t[5]));
-    ep[e] = s.plastic_strain(e);
-  }
-  std::vector<int> hex(8 * ne);
-  for (int e = 0; e < ne; ++e)
-    for (int a = 0; a < 8; ++a) hex[8 * e + a] = m.mesh.hex[e][a];
-  VtuMesh vm_{static_cast<std::size_t>(n), s.x().data(), s.y().data(), s.z().data(), static_cast<std::size_t>(ne),
-              hex.data()};
-  // Contact: friction traction (tangential force on the sheet per tributary
-  // area), slip rate and the local friction coefficient |f_t| / f_n of each
-  // node in contact (zero elsewhere; the largest pressure wins when a node
-  // touches several tools).
-  std::vector<double> trac(3 * n, 0.0), slip(n, 0.0), mu(n, 0.0);
-  for (int p = 0; p < s.num_contact_pairs(); ++p)
-    for (const auto& c : s.contact_nodes(p)) {
-      if (!(c.pressure > 0) || c.pressure < pres[c.node] || !(c.area > 0)) continue;
-      for (int k = 0; k < 3; ++k) trac[3 * c.node + k] = c.ft[k] / c.area;
-      slip[c.node] = c.slip_speed;
-      const double ft = std::sqrt(c.ft[0] * c.ft[0] + c.ft[1] * c.ft[1] + c.ft[2] * c.ft[2]);
-      mu[c.node] = c.normal_force > 0 ? ft / c.normal_force : 0.0;
-    }
-  // Thickness: each element's height across its thinnest initial direction
-  // (the distance between the centroids of the two opposite faces that are
-  // closest in the reference mesh), now and as a ratio to its initial value.
-  std::vector<double> thick(ne), thick_ratio(ne);
-  static const int faces[3][2][4] = {{{0, 1, 2, 3}, {4, 5, 6, 7}}, {{0, 1, 5, 4}, {3, 2, 6, 7}}, {{0, 3, 7, 4}, {1, 2, 6, 5}}};
-  for (int e = 0; e < ne; ++e) {
-    const auto& h = m.mesh.hex[e];
-    auto height = [&](const double* x, const double* y, const double* z, int d) {
-      double c[2][3] = {{0, 0, 0}, {0, 0, 0}};
-      for (int f = 0; f < 2; ++f)
-        for (int a : faces[d][f]) c[f][0] += x[h[a]] / 4, c[f][1] += y[h[a]] / 4, c[f][2] += z[h[a]] / 4;
-      return std::sqrt((c[1][0] - c[0][0]) * (c[1][0] - c[0][0]) + (c[1][1] - c[0][1]) * (c[1][1] - c[0][1]) +
-                       (c[1][2] - c[0][2]) * (c[1][2] - c[0][2]));
-    };
-    int d0 = 0;
-    double h0 = INFINITY;
-    for (int d = 0; d < 3; ++d) {
-      const double hd = height(m.mesh.x.data(), m.mesh.y.data(), m.mesh.z.data(), d);
-      if (hd < h0) h0 = hd, d0 = d;
-    }
-    thick[e] = height(s.x().data(), s.y().data(), s.z().data(), d0);
-    thick_ratio[e] = h0 > 0 ? thick[e] / h0 : 1.0;
-  }
-  write_vtu(path, vm_,
-            {{"displacement_mm", 3, disp.data()}, {"velocity_mm_s", 3, vel.data()}, {"contact_pressure_MPa", 1, pres.data()},
-             {"friction_traction_MPa", 3, trac.data()}, {"slip_rate_mm_s", 1, slip.data()}, {"local_mu", 1, mu.data()}},
-            {{"stress_MPa", 6, sg.data()}, {"von_mises_MPa", 1, vm.data()}, {"plastic_strain", 1, ep.data()},
-             {"element_thickness_mm", 1, thick.data()}, {"thickness_ratio", 1, thick_ratio.data()}}, s.time());
-}
-
 void parse_checkpoint_every(const std::string& spec, RunOptions& opt) {
   const bool seconds = !spec.empty() && spec.back() == 's';
   const std::string num = seconds ? spec.substr(0, spec.size() - 1) : spec;
@@ -170,6 +101,18 @@ void log_header(const Deck& deck, const RunOptions& opt, const fe::Solver& solve
                              : "set by the process: OMP_NUM_THREADS, the calling command (drawbend-deck --run "
                                "--threads) or a case pool's share, else every hardware thread")
       << ")\n";
+}
+
+/// fields.pvd: per snapshot k, the sheet (part 0) and each tool (parts 1, 2, ...).
+std::vector<PvdEntry> frame_collection(const fe::Model& m, const std::vector<std::pair<double, std::string>>& snaps) {
+  std::vector<PvdEntry> out;
+  for (std::size_t k = 0; k < snaps.size(); ++k) {
+    out.push_back({snaps[k].first, 0, "sheet", snaps[k].second});
+    for (std::size_t t = 0; t < m.tools.size(); ++t)
+      out.push_back({snaps[k].first, static_cast<int>(t + 1), m.tools[t].name,
+                     tool_frame_name(m.tools[t].name, static_cast<int>(k))});
+  }
+  return out;
 }
 
 /// A stop by Halt: the interrupted or halted summary and how to continue.
@@ -307,7 +250,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   }
   if (run.printed) log << "\n";
   history.save();
-  write_pvd((fs::path(opt.out_dir) / "fields.pvd").string(), run.rs.snapshots);
+  write_pvd((fs::path(opt.out_dir) / "fields.pvd").string(), frame_collection(deck.model, run.rs.snapshots));
   fill_summary(run, wall0);
   log_energies(run, write_summary(run));
   write_run_result(deck, solver, opt.out_dir, opt.result, log);  // result.toml (io/run_result.hpp)

@@ -2,7 +2,7 @@
 // Running a case deck: the solver plus its outputs and the console display.
 //   <out>/history.csv          time, step, energies, dt, and the deck's signals
 //   <out>/contact_<pair>_<k>.csv  contact map per slave node at each snapshot
-//   <out>/fields_<k>.vtu, <out>/fields.pvd   ParaView snapshots
+//   <out>/fields_<k>.vtu, tool_<name>_<k>.vtp, <out>/fields.pvd   ParaView snapshots (sheet and tools)
 //   <out>/summary.csv           end-of-run invariants (energy balance, ratios, added mass)
 //   <out>/result.toml           the run's answer: forces, F_B, mu, friction-law clamps (io/run_result.hpp)
 #include <csignal>
@@ -12,6 +12,7 @@
 #include "fe/solver.hpp"
 #include "io/deck.hpp"
 #include "io/run_result.hpp"
+#include "io/vtu.hpp"
 
 namespace drawbend::io {
 
@@ -58,9 +59,16 @@ struct RunSummary {
 /// plane: in-plane coordinates), pressure, area, forces, slip speed.
 /// Files: contact_<snapshot>_<pair>.csv in `dir` (core/run_output.hpp).
 void write_contact_maps(const fe::Solver& s, const std::string& dir, int snapshot);
-/// Write a VTU snapshot: displacement, velocity (points); stress, plastic strain,
-/// von Mises stress (cells); contact pressure (points).
-void write_fields(const fe::Solver& s, const std::string& path);
+/// Write a VTU snapshot of the sheet (io/frames.cpp; the fields in data/cases/README.md):
+/// displacement, velocity, contact pressure, friction traction, slip rate,
+/// accumulated slip, stick/slip status, local mu, sheet thickness (points);
+/// stress, von Mises stress, plastic strain, log strain, sheet thickness and its
+/// ratio, back stress and the material axes where the material has them (cells).
+void write_fields(const fe::Solver& s, const std::string& path, VtkFormat format = VtkFormat::zlib);
+/// Each tool's surfaces at the current time (io/tool_mesh.hpp) into
+/// `dir`/tool_frame_name(tool, snapshot).
+void write_tool_frames(const fe::Solver& s, const std::string& dir, int snapshot, VtkFormat format = VtkFormat::zlib);
+std::string tool_frame_name(const std::string& tool, int snapshot);
 
 RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log);
 

@@ -116,7 +116,13 @@ void History::save() const { table_.save((fs::path(run_.opt.out_dir) / run_outpu
 void Fields::snapshot() {
   RunState& rs = run_.rs;
   const std::string name = "fields_" + std::to_string(rs.snap) + ".vtu";
-  write_fields(run_.solver, (fs::path(run_.opt.out_dir) / name).string());
+  const VtkFormat format = run_.deck.output.vtk_ascii ? VtkFormat::ascii : VtkFormat::zlib;
+  write_fields(run_.solver, (fs::path(run_.opt.out_dir) / name).string(), format);
+  write_tool_frames(run_.solver, run_.opt.out_dir, rs.snap, format);
+  // The frame as one multiblock dataset: the sheet and each tool (fields.pvd lists the same as parts).
+  std::vector<std::pair<std::string, std::string>> blocks{{"sheet", name}};
+  for (const auto& t : run_.deck.model.tools) blocks.push_back({t.name, tool_frame_name(t.name, rs.snap)});
+  write_vtm((fs::path(run_.opt.out_dir) / ("fields_" + std::to_string(rs.snap) + ".vtm")).string(), blocks);
   write_contact_maps(run_.solver, run_.opt.out_dir, rs.snap);
   rs.snapshots.push_back({run_.solver.time(), name});
   ++rs.snap;

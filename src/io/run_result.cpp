@@ -1,5 +1,6 @@
 // The answer of a run in <out>/result.toml.  See run_result.hpp.
 #include "io/run_result.hpp"
+#include "core/install_paths.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -23,7 +24,7 @@ namespace {
 
 /// The 0.2 % yield stress of Table 5.1's RD row [MPa] (Swift's estimate of F_B).
 double table_5_1_yield_rd() {
-  const CsvTable t = read_csv(std::string(DRAWBEND_DATA_DIR) + "/thesis/table_5_1.csv");
+  const CsvTable t = read_csv(drawbend::data_dir() + "/thesis/table_5_1.csv");
   return t.number(t.rows.front(), "YS02_MPa");
 }
 

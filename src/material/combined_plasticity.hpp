@@ -84,7 +84,14 @@ class CombinedPlasticity final : public Material {
   std::string describe() const override;
 
   /// Sum of the back stresses of a state (global axes, Voigt, tensor shears) [MPa].
-  void back_stress(const double* state, double alpha[6]) const;
+  void back_stress(const double* state, double alpha[6]) const override;
+  bool has_back_stress() const override { return nback_ > 0; }
+  bool sheet_axes(const double* state, double rd[3], double nd[3]) const override {
+    if (!aniso_) return false;
+    const double* a = state + 1 + 6 * nback_;  // [eps_p, alpha_k (6 each), RD (3), ND (3)]
+    for (int c = 0; c < 3; ++c) rd[c] = a[c], nd[c] = a[3 + c];
+    return true;
+  }
   /// Current sheet axes of a state (global components); von Mises: the x, y, z axes.
   SheetAxes axes(const double* state) const;
   /// Isotropic yield stress R(eps_p) [MPa].

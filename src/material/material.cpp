@@ -44,6 +44,10 @@ IsotropicElasticity::IsotropicElasticity(double youngs_modulus, double poisson_r
 
 double Material::tangent_ratio(const double* /*sigma*/, const double* /*state*/) const { return 1.0; }
 
+void Material::back_stress(const double* /*state*/, double alpha[6]) const {
+  for (int c = 0; c < 6; ++c) alpha[c] = 0.0;
+}
+
 void Material::bind_lanes(LaneBinding& /*b*/) const {}
 
 double von_mises(const double s[6]) noexcept {

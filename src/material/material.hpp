@@ -89,6 +89,14 @@ class Material {
   virtual bool directional() const { return false; }
   /// Equivalent plastic strain of a state vector (0 for elastic materials), for output.
   virtual double plastic_strain(const double* /*state*/) const { return 0.0; }
+  /// Whether the state holds back stresses (kinematic hardening), for output.
+  virtual bool has_back_stress() const { return false; }
+  /// Sum of the back stresses of a state (global axes, Voigt, tensor shears) [MPa], for
+  /// output; zero for a model without kinematic hardening (the default, in material.cpp).
+  virtual void back_stress(const double* state, double alpha[6]) const;
+  /// A directional model's current sheet axes at a point (global, unit: they turn with the
+  /// material), for output; false (and rd, nd untouched) for an isotropic model (the default).
+  virtual bool sheet_axes(const double* /*state*/, double /*rd*/[3], double /*nd*/[3]) const { return false; }
   /// One-line description with the constants, for output-file headers (default: the elastic constants).
   virtual std::string describe() const;
   /// The lane twin of update(), where the model has one: sets its flag and

@@ -68,7 +68,14 @@ class Yld2004Plasticity final : public Material {
   std::string describe() const override;
 
   /// Sum of the back stresses of a state (global axes) [MPa]; current sheet axes of a state.
-  void back_stress(const double* state, double alpha[6]) const;
+  void back_stress(const double* state, double alpha[6]) const override;
+  bool has_back_stress() const override { return nback_ > 0; }
+  bool sheet_axes(const double* state, double rd[3], double nd[3]) const override {
+    if (!true) return false;
+    const double* a = state + 1 + 6 * nback_;  // [eps_p, alpha_k (6 each), RD (3), ND (3)]
+    for (int c = 0; c < 3; ++c) rd[c] = a[c], nd[c] = a[3 + c];
+    return true;
+  }
   SheetAxes axes(const double* state) const;
   double isotropic_stress(double ep) const;
   /// The normalised parameter set in use, and the factor it was scaled by (1 for a normalised input).

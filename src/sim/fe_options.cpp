@@ -1,4 +1,5 @@
 #include "sim/fe_options.hpp"
+#include "core/install_paths.hpp"
 
 #include <string>
 
@@ -17,7 +18,7 @@ DrawBendSpec quick_deck_spec() {
   DrawBendSpec s;
   set_quick_mesh(s);
   s.mass_scaling = mass_scaling_for_speed(kQuickMassScaling, s.speed);
-  s.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
+  s.hardening = drawbend::data_dir() + "/materials/aa5754_o_rd.csv";
   return s;
 }
 

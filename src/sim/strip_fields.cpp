@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "core/csv.hpp"
+#include "io/vtu.hpp"
 
 namespace drawbend::sim {
 
@@ -14,26 +15,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The values of the DataArray called `name` (ASCII, whitespace-separated).
+/// The values of the DataArray called `name` (any encoding io::write_vtu writes).
 std::vector<double> data_array(const std::string& text, const std::string& name, const std::string& path) {
-  const std::size_t at = text.find("Name=\"" + name + "\"");
-  if (at == std::string::npos) throw InputError(path + ": no DataArray '" + name + "'");
-  const std::size_t from = text.find('>', at), to = text.find("</DataArray>", at);
-  if (from == std::string::npos || to == std::string::npos || to < from)
-    throw InputError(path + ": DataArray '" + name + "' is not closed");
-  std::vector<double> v;
-  const char* p = text.data() + from + 1;
-  const char* end = text.data() + to;
-  while (p < end) {
-    while (p < end && std::isspace(static_cast<unsigned char>(*p))) ++p;
-    if (p == end) break;
-    double d = 0;
-    const auto r = std::from_chars(p, end, d);
-    if (r.ec != std::errc()) throw InputError(path + ": DataArray '" + name + "': not a number");
-    v.push_back(d);
-    p = r.ptr;
-  }
-  return v;
+  return io::read_vtu_array(path, text, name);
 }
 
 using Vec = std::array<double, 3>;

@@ -26,7 +26,7 @@ struct StripFields {
   double time = 0;                            ///< snapshot time [s]
 };
 
-/// Parse one of our own ASCII .vtu files (io/vtu.hpp): Points, connectivity,
+/// Parse one of our own .vtu files (io/vtu.hpp, ASCII or binary): Points, connectivity,
 /// PointData displacement_mm (reference = current - displacement), CellData
 /// stress_MPa and plastic_strain.  Throws InputError naming the file if an
 /// array is missing or its size does not match.

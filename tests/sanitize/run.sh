@@ -34,9 +34,11 @@ cd "$bld"
 # Not here: the cluster tests (their driver is not in sanitize_tests, and they
 # start Slurm daemons) and the user-level example tests that run whole FE cases
 # (help examples and the model_loop.md check that reads their output, result.toml,
-# portable run folder: 1-5 minutes each at -O0;
-# the same code paths run here through the robustness and cli tests).
+# portable run folder, the ParaView frames' three strip runs: 1-5 minutes each at -O0;
+# the same code paths run here through the robustness and cli tests, the binary
+# frames through unit.test_vtu), and the install into a prefix (a sanitizer build
+# is not what a user installs).
 ctest --output-on-failure -j "$jobs" -L 'unit|asan|robustness' -LE cluster \
-  -E '^cli\.(help_examples|help_examples_model_loop|model_loop_md|run_result|portable_run_folder)$'
+  -E '^cli\.(help_examples|help_examples_model_loop|model_loop_md|run_result|portable_run_folder|vtk_frames|install_prefix)$'
 t2=$(date +%s)
 echo "sanitize: build $((t1 - t0)) s, tests $((t2 - t1)) s"

@@ -9,10 +9,17 @@
 //  - every double reads back bit-identical (e.g. x = 0.1 + 1.5 i);
 //  - FieldData TimeValue = 0.25; the .pvd lists (0, "s0.vtu"), (0.25, "out/s1 &amp; 2.vtu"),
 //    in order, with the '&' of the file name XML-escaped;
-//  - bad input throws std::invalid_argument and writes no file.
+//  - bad input throws std::invalid_argument and writes no file;
+//  - binary (appended raw, appended zlib): read_vtu_array gives back every
+//    value bit-identical (Points, T, u, stress, connectivity, offsets 8 16,
+//    types 12 12, TimeValue 0.25), the zlib file names vtkZLibDataCompressor,
+//    and a 20,000-value field (2.4 blocks of 64 KiB) crosses block bounds intact;
+//  - a .vtp of 2 quadrilaterals lists NumberOfPolys 2, offsets 4 8;
+//  - a .vtm lists its blocks in order with their names and files.
 #define BOOST_TEST_MODULE vtu
 #include <boost/test/unit_test.hpp>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
@@ -172,4 +179,50 @@ BOOST_AUTO_TEST_CASE(bad_input_throws_and_writes_nothing) {
   BOOST_CHECK_THROW(write_pvd(dir + "/r.pvd", {{0.0, ""}}), std::invalid_argument);
   BOOST_CHECK_THROW(write_pvd(dir + "/r.pvd", {{nan, "a.vtu"}}), std::invalid_argument);
   BOOST_TEST(!fs::exists(dir + "/r.pvd"));
+}
+
+BOOST_AUTO_TEST_CASE(binary_frames_read_back_bit_identical) {
+  const std::string dir = tmpdir();
+  const Block b;
+  std::vector<double> big(20000);  // 160,000 bytes: 3 zlib blocks of 64 KiB (the last partial)
+  for (std::size_t i = 0; i < big.size(); ++i) big[i] = std::sin(0.001 * static_cast<double>(i)) / 3.0;
+  VtuMesh line{20000, big.data(), big.data(), big.data(), 0, nullptr};
+  for (VtkFormat f : {VtkFormat::raw, VtkFormat::zlib}) {
+    const std::string path = dir + (f == VtkFormat::raw ? "/raw.vtu" : "/zlib.vtu");
+    write_vtu(path, b.mesh(), {{"T", 1, b.T.data()}, {"u", 3, b.u.data()}}, {{"stress", 6, b.stress.data()}}, 0.25, f);
+    const std::string text = drawbend::read_file(path);
+    BOOST_TEST((text.find("vtkZLibDataCompressor") != std::string::npos) == (f == VtkFormat::zlib));
+    std::vector<double> xyz;
+    for (std::size_t n = 0; n < 12; ++n) xyz.insert(xyz.end(), {b.x[n], b.y[n], b.z[n]});
+    BOOST_TEST(read_vtu_array(path, text, "Points") == xyz, tt::per_element());
+    BOOST_TEST(read_vtu_array(path, text, "T") == b.T, tt::per_element());
+    BOOST_TEST(read_vtu_array(path, text, "u") == b.u, tt::per_element());
+    BOOST_TEST(read_vtu_array(path, text, "stress") == b.stress, tt::per_element());
+    const std::vector<double> conn(b.hex.begin(), b.hex.end()), offsets{8, 16}, types{12, 12}, time{0.25};
+    BOOST_TEST(read_vtu_array(path, text, "connectivity") == conn, tt::per_element());
+    BOOST_TEST(read_vtu_array(path, text, "offsets") == offsets, tt::per_element());
+    BOOST_TEST(read_vtu_array(path, text, "types") == types, tt::per_element());
+    BOOST_TEST(read_vtu_array(path, text, "TimeValue") == time, tt::per_element());
+    BOOST_CHECK_THROW(read_vtu_array(path, text, "missing"), drawbend::InputError);
+    const std::string bigpath = dir + "/big.vtu";
+    write_vtu(bigpath, line, {{"v", 1, big.data()}}, {}, 0.0, f);
+    BOOST_TEST(read_vtu_array(bigpath, drawbend::read_file(bigpath), "v") == big, tt::per_element());
+  }
+}
+
+BOOST_AUTO_TEST_CASE(polydata_and_multiblock) {
+  const std::string dir = tmpdir();
+  const std::vector<double> x{0, 1, 2, 0, 1, 2}, y{0, 0, 0, 1, 1, 1}, z(6, 0.0), s{0, 1};
+  const std::vector<int> quads{0, 1, 4, 3, 1, 2, 5, 4};
+  write_vtp(dir + "/t.vtp", {6, x.data(), y.data(), z.data(), 2, quads.data(), 4, 9}, {}, {{"surface", 1, s.data()}});
+  const auto els = parse_xml(drawbend::read_file(dir + "/t.vtp"));
+  BOOST_TEST(find(els, "VTKFile/PolyData/Piece").attrs.at("NumberOfPolys") == "2");
+  BOOST_TEST(numbers(find(els, "VTKFile/PolyData/Piece/Polys/DataArray", "offsets")) == (std::vector<double>{4, 8}),
+             tt::per_element());
+  BOOST_CHECK_THROW(write_vtp(dir + "/h.vtp", Block().mesh(), {}, {}), std::invalid_argument);  // hexahedra
+  write_vtm(dir + "/f.vtm", {{"sheet", "a.vtu"}, {"pin", "b.vtp"}});
+  std::vector<std::string> blocks;
+  for (const auto& e : parse_xml(drawbend::read_file(dir + "/f.vtm")))
+    if (e.path == "VTKFile/vtkMultiBlockDataSet/DataSet") blocks.push_back(e.attrs.at("name") + "|" + e.attrs.at("file"));
+  BOOST_TEST(blocks == (std::vector<std::string>{"sheet|a.vtu", "pin|b.vtp"}), tt::per_element());
 }
