@@ -36,9 +36,9 @@ analysis::BendMaterial on_curve(const material::HardeningCurve& curve) {
   return m;
 }
 
-/// The chaboche candidate's material (sim::carved_isotropic_part) in beam form.
+/// The chaboche candidate's material (modelloop::carved_isotropic_part) in beam form.
 analysis::BendMaterial carved(const material::HardeningCurve& curve, double x_sat, double gamma) {
-  const material::HardeningCurve r(curve.plastic_strains(), sim::carved_isotropic_part(curve, x_sat, gamma), "carved");
+  const material::HardeningCurve r(curve.plastic_strains(), modelloop::carved_isotropic_part(curve, x_sat, gamma), "carved");
   analysis::BendMaterial m;
   m.x_sat_MPa = x_sat;
   m.gamma = gamma;
@@ -135,7 +135,7 @@ BeamTrace beam_trace(Chapter&, const Inputs& in, const Config& cfg) {
   return t;
 }
 
-void save_beam_trace(Chapter& c, const Inputs& in, const BeamTrace& t, const sim::ModelLoopResult* loop) {
+void save_beam_trace(Chapter& c, const Inputs& in, const BeamTrace& t, const modelloop::ModelLoopResult* loop) {
   const auto& models = t.models;
   const auto& best_fit = t.best_fit;
   const auto& best_all = t.best_all;

@@ -10,7 +10,7 @@
 //       - combined hardening as the bending-force loop chose it on the
 //         12.7 mm pin (not fitted on the cup): its Armstrong-Frederick back
 //         stress (X_sat, gamma), carved out of the cup's current flow curve
-//         as in the draw-bend model (sim::carved_isotropic_part), or its
+//         as in the draw-bend model (modelloop::carved_isotropic_part), or its
 //         split beta when --candidates ran split;
 //       - Hill'48 with the published r-values (not fitted).
 //     A candidate's member is chosen on case 1 (6.4 mm/s) and judged on
@@ -78,7 +78,7 @@ struct CupModel {
                                          t["v"]["b"].value_or(0.0));
     }
     const std::vector<double>& x = c.plastic_strains();
-    const std::vector<double> r = sim::carved_isotropic_part(c, x_sat, gamma);
+    const std::vector<double> r = modelloop::carved_isotropic_part(c, x_sat, gamma);
     std::string px, py;
     for (std::size_t i = 0; i < x.size(); ++i) {
       px += (i ? ", " : "") + fmt_shortest(x[i]);
@@ -147,7 +147,7 @@ void die_radius_calibration(Chapter& c, std::vector<double> r, std::vector<doubl
 
 }  // namespace
 
-void cup_loop(Chapter& c, const Config& cfg, const sim::ModelLoopResult& bending) {
+void cup_loop(Chapter& c, const Config& cfg, const modelloop::ModelLoopResult& bending) {
   CupSetup s;
   s.deck = c.data("cases/cup_draw.toml");
   const CsvTable t65 = read_csv(c.data("thesis/table_6_5.csv"));

@@ -50,15 +50,15 @@ Inputs load_inputs(Chapter& c, const Config& cfg) {
 
 namespace {
 
-std::vector<sim::FbPoint> reference_points(const Inputs& in) {
-  std::vector<sim::FbPoint> pts;
+std::vector<modelloop::FbPoint> reference_points(const Inputs& in) {
+  std::vector<modelloop::FbPoint> pts;
   for (std::size_t k = 0; k < in.pins.size(); ++k)
     pts.push_back({in.pins[k], in.fback[k], in.measured(in.pins[k], in.fback[k]), "Table 5.3 at Table 5.13"});
   return pts;
 }
 
 /// The leave-one-pin-out table, values and the blind checks ch8.fb.d*.
-void save_blind(Chapter& c, const Inputs& in, const std::vector<sim::FbPoint>& pts, const sim::BlindLoopResult& b) {
+void save_blind(Chapter& c, const Inputs& in, const std::vector<modelloop::FbPoint>& pts, const modelloop::BlindLoopResult& b) {
   auto tab = c.table({"pin_mm", "fold_fit_pin_mm", "fold_select_pins_mm", "fold_model", "measured_N", "isotropic_N",
                       "isotropic_err_pct", "blind_N", "blind_err_pct", "in_sample_N", "in_sample_err_pct",
                       "in_sample_role"},
@@ -110,7 +110,7 @@ void save_blind(Chapter& c, const Inputs& in, const std::vector<sim::FbPoint>& p
 
 }  // namespace
 
-sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg, const BeamTrace& trace) {
+modelloop::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg, const BeamTrace& trace) {
   const std::string data_dir = c.data("");
   std::string list = cfg.candidates;
   // The tier's list.  First the Armstrong-Frederick back stress that beam
@@ -137,23 +137,23 @@ sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Conf
                                        : "no (the back stress alone, for the test suite's time; `make` and the full "
                                          "tier go on with Voce and Hill'48)");
   const std::string trimmed = data_dir.substr(0, data_dir.size() - 1);
-  const sim::CandidatesFor candidates_for = [&](double pin) {
+  const modelloop::CandidatesFor candidates_for = [&](double pin) {
     const std::string names = tier_list ? af_on(pin) + (cfg.run_next() ? ",voce,hill48" : "") : list;
-    std::vector<sim::ModelCandidate> cands;
+    std::vector<modelloop::ModelCandidate> cands;
     std::stringstream ss(names);
     for (std::string n; std::getline(ss, n, ',');)
-      if (!n.empty()) cands.push_back(sim::named_candidate(n, trimmed));
+      if (!n.empty()) cands.push_back(modelloop::named_candidate(n, trimmed));
     return cands;
   };
-  sim::ModelLoopConfig lc;
+  modelloop::ModelLoopConfig lc;
   lc.fit_pin = cfg.fit_pin;
   lc.min_gain = cfg.min_gain;
   lc.run_root = c.out("runs");
   lc.reuse = cfg.reuse_runs != 0;
   lc.runs_from = cfg.run_folders();
   const auto pts = reference_points(in);
-  const sim::BlindLoopResult blind = sim::run_model_loop_blind(in.base, pts, candidates_for, lc);
-  const sim::ModelLoopResult& r = blind.in_sample;
+  const modelloop::BlindLoopResult blind = modelloop::run_model_loop_blind(in.base, pts, candidates_for, lc);
+  const modelloop::ModelLoopResult& r = blind.in_sample;
   save_blind(c, in, pts, blind);
 
   // Steps: residual -> candidate -> decision.
@@ -227,7 +227,7 @@ sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Conf
   return r;
 }
 
-void tension_slope(Chapter& c, const Inputs& in, const Config& cfg, const sim::ModelLoopResult& loop) {
+void tension_slope(Chapter& c, const Inputs& in, const Config& cfg, const modelloop::ModelLoopResult& loop) {
   // F_B against F_X on the fit pin over Table 5.3's back-tension range: the
   // isotropic model always, the final model in the full tier (two more runs of
   // the combined model are too costly for the quick tier).
@@ -237,10 +237,10 @@ void tension_slope(Chapter& c, const Inputs& in, const Config& cfg, const sim::M
     if (study::same(in.pins[k], cfg.fit_pin)) fx.insert(fx.begin() + 1, in.fback[k]);
   const bool final_too = cfg.full_study && loop.final_model.model != loop.baseline.model;
   std::vector<sim::DrawBendSpec> specs;
-  for (double f : fx) specs.push_back(sim::spec_for_point(in.base, {cfg.fit_pin, f, 0, ""}));
+  for (double f : fx) specs.push_back(modelloop::spec_for_point(in.base, {cfg.fit_pin, f, 0, ""}));
   if (final_too)
-    for (double f : fx) specs.push_back(sim::spec_for_point(loop.final_spec, {cfg.fit_pin, f, 0, ""}));
-  const auto runs = sim::run_cached(specs, c.out("runs"), cfg.reuse_runs != 0, nullptr, cfg.run_folders());
+    for (double f : fx) specs.push_back(modelloop::spec_for_point(loop.final_spec, {cfg.fit_pin, f, 0, ""}));
+  const auto runs = modelloop::run_cached(specs, c.out("runs"), cfg.reuse_runs != 0, nullptr, cfg.run_folders());
   const std::size_t n = fx.size();
   auto tab = c.table({"F_back_N", "measured_N", "isotropic_N", "isotropic_u_N", "final_N", "final_u_N"},
                      "F_B against back tension on the " + fmt(cfg.fit_pin) + " mm pin (full strip, N): Table 5.3's fit, "

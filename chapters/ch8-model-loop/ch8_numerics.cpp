@@ -33,7 +33,7 @@ void numerical_convergence(Chapter& c, const Inputs& in, const Config& cfg) {
   std::vector<sim::DrawBendSpec> specs;
   for (std::size_t k = 0; k < in.pins.size(); ++k)
     for (double m : ms) {
-      auto s = sim::spec_for_point(in.base, {in.pins[k], in.fback[k], 0, ""});
+      auto s = modelloop::spec_for_point(in.base, {in.pins[k], in.fback[k], 0, ""});
       s.mass_scaling = m;
       specs.push_back(s);
     }
@@ -42,14 +42,14 @@ void numerical_convergence(Chapter& c, const Inputs& in, const Config& cfg) {
   for (std::size_t k = 0; k < in.pins.size(); ++k) {
     if (in.pins[k] < 25.4 - 1e-9) continue;
     for (int a : across) {
-      auto s = sim::spec_for_point(in.base, {in.pins[k], in.fback[k], 0, ""});
+      auto s = modelloop::spec_for_point(in.base, {in.pins[k], in.fback[k], 0, ""});
       s.across = a;
       s.mass_scaling = width_ms;
       specs.push_back(s);
       across_pin.push_back(k);
     }
   }
-  const auto runs = sim::run_cached(specs, c.out("runs"), cfg.reuse_runs != 0, nullptr, cfg.run_folders());
+  const auto runs = modelloop::run_cached(specs, c.out("runs"), cfg.reuse_runs != 0, nullptr, cfg.run_folders());
 
   const double tol = 0.03;  // see the top of this file
   auto t1 = c.table({"pin_mm", "mass_scaling", "F_B_N", "change_vs_finest_pct", "err_vs_measured_pct", "KE_IE",

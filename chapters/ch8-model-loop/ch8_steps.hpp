@@ -8,7 +8,7 @@
 #include "analysis/bending_work.hpp"
 #include "core/csv.hpp"
 #include "sim/drawbend_case.hpp"
-#include "sim/model_loop.hpp"
+#include "modelloop/model_loop.hpp"
 #include "study/chapter.hpp"
 #include "study/thesis_data.hpp"
 
@@ -89,18 +89,18 @@ inline std::string pct(double x) { return (x >= 0 ? "+" : "") + drawbend::fmt_fi
 /// saw it).  Returns the in-sample final model.
 /// `trace` leads the tier's chaboche candidate: the beam's choice on the fit
 /// pin and its neighbours in X_sat, chosen again by the FE.
-drawbend::sim::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg,
+drawbend::modelloop::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg,
                                                   const BeamTrace& trace);
 /// Isotropic in plane strain and plane stress, Hosford a = 8, and the
 /// Armstrong-Frederick grid chosen on the fit pin (milliseconds per point).
 BeamTrace beam_trace(Chapter& c, const Inputs& in, const Config& cfg);
 /// The trace's table and values; `loop` (may be null) adds the FE rows.
-void save_beam_trace(Chapter& c, const Inputs& in, const BeamTrace& t, const drawbend::sim::ModelLoopResult* loop);
+void save_beam_trace(Chapter& c, const Inputs& in, const BeamTrace& t, const drawbend::modelloop::ModelLoopResult* loop);
 /// F_B against back tension on the fit pin (slope check).
-void tension_slope(Chapter& c, const Inputs& in, const Config& cfg, const drawbend::sim::ModelLoopResult& loop);
+void tension_slope(Chapter& c, const Inputs& in, const Config& cfg, const drawbend::modelloop::ModelLoopResult& loop);
 /// Full tier: mass scaling on every pin, elements across on the 25.4 and 42 mm pins.
 void numerical_convergence(Chapter& c, const Inputs& in, const Config& cfg);
 /// The cup (Sec. 6.6): punch-force loop and the 2 x 2 attribution at 21 mm.
-void cup_loop(Chapter& c, const Config& cfg, const drawbend::sim::ModelLoopResult& bending);
+void cup_loop(Chapter& c, const Config& cfg, const drawbend::modelloop::ModelLoopResult& bending);
 
 }  // namespace ch8

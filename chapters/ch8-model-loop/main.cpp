@@ -2,7 +2,7 @@
 // adds empirical terms to the analysis; here the candidate effects are
 // modelling effects, tested by re-running the finite-element draw-bend model
 // (rotating = frictionless pin, Sec. 5.7.1 conditions) against the measured
-// bending force of Table 5.3 (src/sim/model_loop.hpp, the same code as
+// bending force of Table 5.3 (src/modelloop/model_loop.hpp, the same code as
 // `drawbend model-loop`).  Forces are full-strip forces in N; lengths mm.
 //
 // Recipe:

@@ -1,6 +1,6 @@
 // `drawbend model-loop DATA.csv --out DIR [options]`, also reached as
 // `drawbend loop DATA.csv --model fe ...` (loop_cmd.cpp): the model-level loop
-// (src/sim/model_loop.hpp) on a user's measured bending forces.  DATA.csv has
+// (src/modelloop/model_loop.hpp) on a user's measured bending forces.  DATA.csv has
 // the columns pin_diameter_mm, back_tension_N, bending_force_N (full strip,
 // rotating = frictionless pin).  The points on --fit-pin train; the others are
 // held out.  Candidates (--candidates, comma separated, tried in order):
@@ -25,7 +25,7 @@
 #include "sim/executor.hpp"
 #include "core/options.hpp"
 #include "sim/fe_options.hpp"
-#include "sim/model_loop.hpp"
+#include "modelloop/model_loop.hpp"
 
 namespace drawbend::cli {
 
@@ -35,8 +35,8 @@ std::string pct(double v) { return fmt_fixed(100 * v, 1) + " %"; }
 
 /// OUT/model_loop.md: what the data are, the model chosen with its blind
 /// (held-out) errors against the baseline, every candidate tried, the files.
-void write_model_loop_md(const std::string& path, const std::string& data, const std::vector<sim::FbPoint>& points,
-                         const sim::DrawBendSpec& s, const sim::ModelLoopConfig& cfg, const sim::ModelLoopResult& r) {
+void write_model_loop_md(const std::string& path, const std::string& data, const std::vector<modelloop::FbPoint>& points,
+                         const sim::DrawBendSpec& s, const modelloop::ModelLoopConfig& cfg, const modelloop::ModelLoopResult& r) {
   std::ostringstream md;
   md << "# Model loop on " << data << "\n\n"
      << points.size() << " measured bending forces F_B (full strip); the points on the " << fmt(cfg.fit_pin)
@@ -85,7 +85,7 @@ int model_loop_command(int argc, char** argv, const char* name) {
   sim::set_quick_mesh(s);  // the chapters' quick tier (sim/fe_options.hpp)
   s.mass_scaling = 0;      // 0: the quick tier's rule at --speed (set after parsing)
   std::string out, candidates = "split:0.3/0.6";
-  sim::ModelLoopConfig cfg;
+  modelloop::ModelLoopConfig cfg;
   bool reuse = true;
   Options opt(me, "Test modelling effects by re-running the draw-bend FE model (rotating = frictionless pin, "
                        "explicit, half strip) against measured bending forces. DATA.csv: one row per point with the "
@@ -134,7 +134,7 @@ int model_loop_command(int argc, char** argv, const char* name) {
   if (!opt.parse(argc - 1, argv + 1)) return 0;
   if (out.empty()) throw InputError(me + ": --out DIR is required");
   // Every input is checked before the first FE run (runs take minutes).
-  const auto points = sim::read_fb_points(data);  // file:line: column for every bad cell
+  const auto points = modelloop::read_fb_points(data);  // file:line: column for every bad cell
   std::string bad;
   auto need = [&](bool ok, const std::string& msg) { if (!ok) bad += (bad.empty() ? "" : "\n") + msg; };
   need(s.thickness > 0, "--thickness: expected a number > 0 mm, found " + fmt(s.thickness));
@@ -152,12 +152,12 @@ int model_loop_command(int argc, char** argv, const char* name) {
   }
   need(cfg.min_gain >= 0, "--min-gain: expected a number >= 0, found " + fmt(cfg.min_gain));
   need(good_threads(threads), bad_threads(threads));
-  std::vector<sim::ModelCandidate> cands;
+  std::vector<modelloop::ModelCandidate> cands;
   std::stringstream ss(candidates);
   for (std::string tok; std::getline(ss, tok, ',');) {
     if (tok.empty()) continue;
     try {
-      cands.push_back(sim::named_candidate(tok, drawbend::data_dir()));
+      cands.push_back(modelloop::named_candidate(tok, drawbend::data_dir()));
     } catch (const InputError& e) {
       need(false, std::string("--candidates: ") + e.what());
     }
@@ -185,13 +185,13 @@ int model_loop_command(int argc, char** argv, const char* name) {
                                 fmt(s.speed) + ", --mass-scaling " + fmt(s.mass_scaling) + ", --element-length " +
                                 fmt(s.element_length) + ", --across " + std::to_string(s.across);
   for (const auto& p : points)
-    if (const std::string m = deck_problem(sim::spec_for_point(s, p)); !m.empty()) {
+    if (const std::string m = deck_problem(modelloop::spec_for_point(s, p)); !m.empty()) {
       need(false, base_opts + ": the FE deck of the point at " + p.where + " fails the checks of `drawbend run`:\n" + m);
       break;
     }
   for (const auto& c : cands)
     for (const auto& member : c.members) {
-      sim::DrawBendSpec cs = sim::spec_for_point(s, points.front());
+      sim::DrawBendSpec cs = modelloop::spec_for_point(s, points.front());
       member.apply(cs);
       if (const std::string m = deck_problem(cs); !m.empty() && bad.empty())
         need(false, "--candidates '" + clip_for_message(c.name) + "' (" + member.label +
@@ -206,9 +206,9 @@ int model_loop_command(int argc, char** argv, const char* name) {
   ensure_writable_dir(out, "--out");
   cfg.run_root = out + "/runs";
   cfg.reuse = reuse;
-  const auto r = sim::run_model_loop(s, points, cands, cfg);
-  sim::save_eval_csv(r.baseline, out + "/baseline.csv");
-  sim::save_eval_csv(r.final_model, out + "/final.csv");
+  const auto r = modelloop::run_model_loop(s, points, cands, cfg);
+  modelloop::save_eval_csv(r.baseline, out + "/baseline.csv");
+  modelloop::save_eval_csv(r.final_model, out + "/final.csv");
   CsvWriter w({"candidate", "member", "fit_rms", "heldout_rms", "heldout_max", "decision"});
   w.comment(" relative errors of F_B (fractions); fit pin " + fmt(cfg.fit_pin) + " mm");
   w.row({"baseline", r.baseline.model, fmt(r.baseline.fit_rms, 4), fmt(r.baseline.held_rms, 4),

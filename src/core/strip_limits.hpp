@@ -1,7 +1,7 @@
 #pragma once
 // Plausibility limits of measured draw-bend data, shared by every reader of
 // it (`drawbend loop`'s loop/measured.cpp and `model-loop`'s
-// sim/model_loop.cpp), so that a value one refuses the other refuses too.
+// modelloop/fb_points.cpp), so that a value one refuses the other refuses too.
 
 namespace drawbend {
 

@@ -4,7 +4,7 @@
 // knows the [material] keys goes through here: the deck reader
 // (io/deck_material.cpp builds the Material from the spec), the builders'
 // `--material` choice (sim/material_choice.cpp) and the model-level loop's
-// candidates (sim/model_loop.cpp reads a flow curve through it).
+// candidates (modelloop/material_edits.cpp reads a flow curve through it).
 //
 // [material]: type = "elastic" | "j2" | "j2_combined" | "hill48" | "yld2004"; E [MPa], nu,
 // density [t/mm^3]; the plastic types take one flow curve:

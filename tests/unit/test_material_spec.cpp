@@ -29,7 +29,7 @@
 #include "core/toml_read.hpp"
 #include "io/material_spec.hpp"
 #include "sim/material_choice.hpp"
-#include "sim/model_loop.hpp"
+#include "modelloop/model_loop.hpp"
 
 using namespace drawbend;
 namespace fs = std::filesystem;
@@ -114,7 +114,7 @@ BOOST_AUTO_TEST_CASE(model_loop_keeps_the_linear_curve) {
   sim::DrawBendSpec s;
   s.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
   s.material = "{ type = \"j2\", yield = 150, tangent = 500 }";
-  sim::named_candidate("chaboche:30@100", DRAWBEND_DATA_DIR).members[0].apply(s);
+  modelloop::named_candidate("chaboche:30@100", DRAWBEND_DATA_DIR).members[0].apply(s);
   const io::MaterialSpec m = sim::material_choice(s.material, s.hardening);
   const auto* t = std::get_if<io::CurveTable>(&m.curve.value());
   BOOST_TEST_REQUIRE(t != nullptr, s.material);

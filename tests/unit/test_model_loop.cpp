@@ -1,4 +1,4 @@
-// The model-level loop's inputs (src/sim/model_loop.hpp), without FE runs.
+// The model-level loop's inputs (src/modelloop/model_loop.hpp), without FE runs.
 // Closed-form answers:
 //  - a measured CSV with 2 good rows reads as 2 points (full strip values kept);
 //  - a row with a non-number and a row with a negative force are both named
@@ -43,7 +43,7 @@
 
 #include "core/csv.hpp"
 #include "material/hardening_curve.hpp"
-#include "sim/model_loop.hpp"
+#include "modelloop/model_loop.hpp"
 
 using namespace drawbend;
 
@@ -57,7 +57,7 @@ std::string write_tmp(const std::string& name, const std::string& text) {
 
 BOOST_AUTO_TEST_CASE(reads_points) {
   const auto p = write_tmp("ml_good.csv", "# c\npin_diameter_mm,back_tension_N,bending_force_N\n12.7,1500,303.1\n42,1900,47.7\n");
-  const auto pts = sim::read_fb_points(p);
+  const auto pts = modelloop::read_fb_points(p);
   BOOST_REQUIRE_EQUAL(pts.size(), 2u);
   BOOST_TEST(pts[1].pin_mm == 42.0);
   BOOST_TEST(pts[0].bending_N == 303.1);
@@ -66,7 +66,7 @@ BOOST_AUTO_TEST_CASE(reads_points) {
 BOOST_AUTO_TEST_CASE(bad_rows_named) {
   const auto p = write_tmp("ml_bad.csv", "pin_diameter_mm,back_tension_N,bending_force_N\n12.7,abc,303\n25.4,1800,-1\n");
   try {
-    sim::read_fb_points(p);
+    modelloop::read_fb_points(p);
     BOOST_FAIL("no error");
   } catch (const InputError& e) {
     const std::string m = e.what();
@@ -77,32 +77,32 @@ BOOST_AUTO_TEST_CASE(bad_rows_named) {
 
 BOOST_AUTO_TEST_CASE(spec_and_candidates) {
   sim::DrawBendSpec base;
-  const auto s = sim::spec_for_point(base, {25.4, 1500, 100, ""});
+  const auto s = modelloop::spec_for_point(base, {25.4, 1500, 100, ""});
   BOOST_TEST(s.back_tension == 750.0);
   BOOST_TEST(s.pin_diameter == 25.4);
-  const auto c = sim::named_candidate("split:0.3/0.6", "/data");
+  const auto c = modelloop::named_candidate("split:0.3/0.6", "/data");
   BOOST_REQUIRE_EQUAL(c.members.size(), 2u);
   sim::DrawBendSpec t = base;
   c.members[1].apply(t);
   BOOST_TEST(t.material == "{ type = \"j2_combined\", kinematic = { beta = 0.6 } }");
   t = base;
-  sim::named_candidate("ms:2500", "/data").members[0].apply(t);
+  modelloop::named_candidate("ms:2500", "/data").members[0].apply(t);
   BOOST_TEST(t.mass_scaling == 2500.0);
-  sim::named_candidate("across:4", "/data").members[0].apply(t);
+  modelloop::named_candidate("across:4", "/data").members[0].apply(t);
   BOOST_TEST(t.across == 4);
-  BOOST_CHECK_THROW(sim::named_candidate("chaboche", "/data"), InputError);
-  BOOST_CHECK_THROW(sim::named_candidate("split:1.5", "/data"), InputError);
-  BOOST_CHECK_THROW(sim::named_candidate("split:0.3/x", "/data"), InputError);
-  BOOST_CHECK_THROW(sim::named_candidate("across:2.5", "/data"), InputError);
+  BOOST_CHECK_THROW(modelloop::named_candidate("chaboche", "/data"), InputError);
+  BOOST_CHECK_THROW(modelloop::named_candidate("split:1.5", "/data"), InputError);
+  BOOST_CHECK_THROW(modelloop::named_candidate("split:0.3/x", "/data"), InputError);
+  BOOST_CHECK_THROW(modelloop::named_candidate("across:2.5", "/data"), InputError);
 }
 
 BOOST_AUTO_TEST_CASE(candidates_compose) {
   sim::DrawBendSpec t;
   t.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
-  sim::named_candidate("split:0.3", DRAWBEND_DATA_DIR).members[0].apply(t);
+  modelloop::named_candidate("split:0.3", DRAWBEND_DATA_DIR).members[0].apply(t);
   sim::DrawBendSpec v = t, h = t;
-  sim::named_candidate("voce", DRAWBEND_DATA_DIR).members[0].apply(v);
-  sim::named_candidate("hill48", DRAWBEND_DATA_DIR).members[0].apply(h);
+  modelloop::named_candidate("voce", DRAWBEND_DATA_DIR).members[0].apply(v);
+  modelloop::named_candidate("hill48", DRAWBEND_DATA_DIR).members[0].apply(h);
   auto table = [](const std::string& m) {
     const std::string doc = "m = " + m;
     return toml::table(*toml::parse(std::string_view(doc))["m"].as_table());
@@ -119,7 +119,7 @@ BOOST_AUTO_TEST_CASE(candidates_compose) {
   BOOST_TEST(sim::deck_text(h).find("aa5754_o_rd.csv") != std::string::npos);
 
   sim::DrawBendSpec o = t;
-  sim::named_candidate("offset", DRAWBEND_DATA_DIR).members[0].apply(o);
+  modelloop::named_candidate("offset", DRAWBEND_DATA_DIR).members[0].apply(o);
   const toml::table mo = table(o.material);
   BOOST_TEST(mo["kinematic"]["beta"].value_or(0.0) == 0.3);
   const double K = mo["swift"]["K"].value_or(0.0), e0 = mo["swift"]["e0"].value_or(0.0), n = mo["swift"]["n"].value_or(0.0);
@@ -128,12 +128,12 @@ BOOST_AUTO_TEST_CASE(candidates_compose) {
   BOOST_TEST(K * std::pow(e0, n) < 99.71);
 
   sim::DrawBendSpec ch = t;
-  sim::named_candidate("chaboche:30", DRAWBEND_DATA_DIR).members[0].apply(ch);
+  modelloop::named_candidate("chaboche:30", DRAWBEND_DATA_DIR).members[0].apply(ch);
   const toml::table mc = table(ch.material);
   BOOST_TEST(mc["type"].value_or(std::string()) == "j2_combined");
   BOOST_TEST(!mc["kinematic"].as_table()->contains("beta"));  // replaces split's back stress
   // chaboche:X1/X2@G1/G2: every (X, G) pair is a member, G outer.
-  const sim::ModelCandidate grid = sim::named_candidate("chaboche:60/90@30/120", DRAWBEND_DATA_DIR);
+  const modelloop::ModelCandidate grid = modelloop::named_candidate("chaboche:60/90@30/120", DRAWBEND_DATA_DIR);
   BOOST_TEST(grid.members.size() == 4u);
   BOOST_TEST(grid.members[1].label == "Chaboche X_sat 90 MPa, gamma 30");
   sim::DrawBendSpec g = t;
@@ -141,8 +141,8 @@ BOOST_AUTO_TEST_CASE(candidates_compose) {
   const toml::table mg = table(g.material);
   BOOST_TEST((*mg["kinematic"]["gamma"].as_array())[0].value_or(0.0) == 120.0);
   BOOST_TEST((*mg["kinematic"]["C"].as_array())[0].value_or(0.0) == 90.0 * 120.0);
-  BOOST_CHECK_THROW(sim::named_candidate("chaboche:60@0", DRAWBEND_DATA_DIR), InputError);
-  BOOST_CHECK_THROW(sim::named_candidate("chaboche:60@x", DRAWBEND_DATA_DIR), InputError);
+  BOOST_CHECK_THROW(modelloop::named_candidate("chaboche:60@0", DRAWBEND_DATA_DIR), InputError);
+  BOOST_CHECK_THROW(modelloop::named_candidate("chaboche:60@x", DRAWBEND_DATA_DIR), InputError);
   BOOST_TEST((*mc["kinematic"]["C"].as_array())[0].value_or(0.0) == 9000.0);
   BOOST_TEST((*mc["kinematic"]["gamma"].as_array())[0].value_or(0.0) == 300.0);
   std::vector<double> ex, R;
@@ -155,17 +155,17 @@ BOOST_AUTO_TEST_CASE(candidates_compose) {
     if (std::abs(ex[i] - 0.5) < 1e-12)
       BOOST_TEST(R[i] + 30 * (1 - std::exp(-300 * ex[i])) == base.stress(ex[i]), boost::test_tools::tolerance(1e-12));
   BOOST_TEST(R.front() <= base.stress(0.0));
-  BOOST_CHECK_THROW(sim::named_candidate("chaboche:0", DRAWBEND_DATA_DIR), InputError);
+  BOOST_CHECK_THROW(modelloop::named_candidate("chaboche:0", DRAWBEND_DATA_DIR), InputError);
   sim::DrawBendSpec bad = t;  // an inline curve without its arrays: an input error, not a crash
   bad.material = "{ type = \"j2\", hardening = { plastic_strain = [0.0, 0.1] } }";
-  BOOST_CHECK_THROW(sim::named_candidate("chaboche:30", DRAWBEND_DATA_DIR).members[0].apply(bad), InputError);
+  BOOST_CHECK_THROW(modelloop::named_candidate("chaboche:30", DRAWBEND_DATA_DIR).members[0].apply(bad), InputError);
 
   // Voce / offset on a back stress: the new curve is carved by it.
   sim::DrawBendSpec af = t;
-  sim::named_candidate("chaboche:30@100", DRAWBEND_DATA_DIR).members[0].apply(af);
+  modelloop::named_candidate("chaboche:30@100", DRAWBEND_DATA_DIR).members[0].apply(af);
   for (const char* kind : {"voce", "offset"}) {
     sim::DrawBendSpec w = af;
-    sim::named_candidate(kind, DRAWBEND_DATA_DIR).members[0].apply(w);
+    modelloop::named_candidate(kind, DRAWBEND_DATA_DIR).members[0].apply(w);
     const toml::table mw = table(w.material);
     BOOST_TEST(!mw.contains("voce"));
     BOOST_TEST(!mw.contains("swift"));
@@ -185,28 +185,28 @@ BOOST_AUTO_TEST_CASE(candidates_compose) {
   // A linear kinematic term (gamma 0, valid in a deck) has no X_sat: Voce on it is an input error.
   sim::DrawBendSpec lin = t;
   lin.material = "{ type = \"j2_combined\", kinematic = { C = [500.0], gamma = [0.0] } }";
-  BOOST_CHECK_EXCEPTION(sim::named_candidate("voce", DRAWBEND_DATA_DIR).members[0].apply(lin), InputError,
+  BOOST_CHECK_EXCEPTION(modelloop::named_candidate("voce", DRAWBEND_DATA_DIR).members[0].apply(lin), InputError,
                         [](const InputError& e) { return std::string(e.what()).find("linear kinematic") != std::string::npos; });
 }
 
 BOOST_AUTO_TEST_CASE(nothing_held_out) {
-  sim::ModelLoopConfig cfg;
+  modelloop::ModelLoopConfig cfg;
   cfg.fit_pin = 12.7;
   cfg.run_root = (std::filesystem::temp_directory_path() / "ml_none").string();
-  BOOST_CHECK_THROW(sim::run_model_loop(sim::DrawBendSpec{}, {{12.7, 1500, 303, ""}}, {}, cfg), InputError);
+  BOOST_CHECK_THROW(modelloop::run_model_loop(sim::DrawBendSpec{}, {{12.7, 1500, 303, ""}}, {}, cfg), InputError);
 }
 
 BOOST_AUTO_TEST_CASE(blind_split_needs_three_pins) {
-  sim::ModelLoopConfig cfg;
+  modelloop::ModelLoopConfig cfg;
   cfg.fit_pin = 12.7;
   cfg.run_root = (std::filesystem::temp_directory_path() / "ml_blind").string();
   int asked = 0;
-  const sim::CandidatesFor none = [&](double) {
+  const modelloop::CandidatesFor none = [&](double) {
     ++asked;
-    return std::vector<sim::ModelCandidate>{};
+    return std::vector<modelloop::ModelCandidate>{};
   };
   BOOST_CHECK_EXCEPTION(
-      sim::run_model_loop_blind(sim::DrawBendSpec{}, {{12.7, 1500, 303, ""}, {25.4, 1800, 107, ""}}, none, cfg),
+      modelloop::run_model_loop_blind(sim::DrawBendSpec{}, {{12.7, 1500, 303, ""}, {25.4, 1800, 107, ""}}, none, cfg),
       InputError, [](const InputError& e) { return std::string(e.what()).find("at least 3 pins") != std::string::npos; });
   BOOST_TEST(asked == 0);
 }

@@ -22,6 +22,11 @@
 // never saw it.  With three pins every fold fits on one pin and chooses on
 // one.
 //
+// Files: fb_points.cpp (the measured points in, a points table out),
+// selection.cpp (the loop and its folds), catalogue.cpp (the named
+// candidates, one table row each), material_edits.* (how a candidate edits a
+// spec's material).
+//
 // Every FE run goes through the case pool (sim/case_pool.hpp) and runs in
 // run_root/fb_<hash of the deck text>: identical decks are one run, and with
 // `reuse` a finished run is read back instead of rerun.
@@ -34,7 +39,10 @@
 #include "material/hardening_curve.hpp"
 #include "sim/drawbend_case.hpp"
 
-namespace drawbend::sim {
+namespace drawbend::modelloop {
+
+using sim::DrawBendResult;
+using sim::DrawBendSpec;
 
 /// One measured bending force (full strip).
 struct FbPoint {
@@ -169,4 +177,4 @@ std::vector<double> carved_isotropic_part(const material::HardeningCurve& c, dou
 /// Write a points table (pin, back tension, measured, predicted, error, role).
 void save_eval_csv(const ModelEval& e, const std::string& path);
 
-}  // namespace drawbend::sim
+}  // namespace drawbend::modelloop
