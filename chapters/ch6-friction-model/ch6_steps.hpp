@@ -5,7 +5,7 @@
 namespace ch6 {
 /// Sec. 6.5: block sliding with the mu(p, v) law (Tables 6.2-6.4, Figs. 6.8-6.10),
 /// built by src/sim/block_case.
-void block_sliding(drawbend::study::Chapter& c);
+void block_sliding(drawbend::study::Chapter& c, bool reuse);
 }  // namespace ch6
 
 #include <string>
