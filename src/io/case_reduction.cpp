@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/csv.hpp"
+#include "material/material.hpp"
 
 namespace drawbend::io {
 
@@ -137,6 +138,62 @@ class StripDraw : public CaseReduction {
   long n_ = 0;
 };
 
+/// Cup drawing (sim/cup_case), a quarter model: the punch curve and the cup at the end of the stroke.
+class CupDraw : public CaseReduction {
+ public:
+  CupDraw(const ReductionSpec& r, const fe::Model& m) : r_(r), w_(locate(r, m)) {
+    bool holder = false;
+    for (const auto& t : m.tools) holder = holder || t.name == r.holder;
+    if (!holder) throw InputError("output.reduce.holder: no tool named \"" + r.holder + "\"");
+    m.mesh.node_set("rim");  // throws naming the set if the mesh has none
+  }
+  void cycle(const fe::Solver& s, const fe::Progress& p) override {
+    if (p.step_index < w_.step) {  // the punch's start and the cycle count as the step will begin
+      z0_ = s.tool_offset(r_.tool)[2];
+      return;
+    }
+    if (p.step_index != w_.step || p.cycle % r_.every) return;
+    const double d = s.tool_offset(r_.tool)[2] - z0_;
+    curve_.push_back({d, -4.0 * s.tool_force(r_.tool)[2]});  // full blank: 4 quarters
+    die_force_ = 4.0 * std::abs(s.tool_force(r_.holder)[2]);
+  }
+  std::vector<ReducedValue> finish(const fe::Solver& s) const override {
+    const auto& e = s.energies();
+    const fe::Mesh& mesh = s.model().mesh;
+    double size_rd = 0, size_td = 0;
+    for (int i : mesh.node_set("rim")) {
+      if (mesh.y[i] == 0.0) size_rd = std::max(size_rd, 2.0 * s.x()[i]);
+      if (mesh.x[i] == 0.0) size_td = std::max(size_td, 2.0 * s.y()[i]);
+    }
+    std::vector<ReducedValue> out{scalar("die_force", die_force_), scalar("size_rd", size_rd), scalar("size_td", size_td),
+                                  scalar("kinetic_ratio", e.internal > 0 ? e.kinetic / e.internal : 0),
+                                  scalar("hourglass_ratio", e.internal > 0 ? e.hourglass / e.internal : 0),
+                                  scalar("added_mass_ratio", s.added_mass() / s.physical_mass()),
+                                  scalar("die_lift", s.tool_offset(r_.holder)[2]),
+                                  scalar("cycles", static_cast<double>(s.cycles()))};
+    for (const auto& [d, f] : curve_) out.push_back({"curve", d, NAN, f});
+    // Per element: centroid (rows `centroid`: x, y, value = z) and state (rows `state`: x = plastic strain, y = von Mises).
+    const std::vector<double> sig = s.stress();
+    for (int el = 0; el < mesh.num_elements(); ++el) {
+      double cx = 0, cy = 0, cz = 0;
+      for (int a = 0; a < 8; ++a) {
+        cx += s.x()[mesh.hex[el][a]] / 8;
+        cy += s.y()[mesh.hex[el][a]] / 8;
+        cz += s.z()[mesh.hex[el][a]] / 8;
+      }
+      out.push_back({"centroid", cx, cy, cz});
+      out.push_back({"state", s.plastic_strain(el), material::von_mises(&sig[6 * static_cast<std::size_t>(el)]), NAN});
+    }
+    return out;
+  }
+
+ private:
+  ReductionSpec r_;
+  Where w_;
+  double z0_ = 0, die_force_ = 0;
+  std::vector<std::pair<double, double>> curve_;
+};
+
 std::string cell(double v) { return std::isnan(v) ? std::string() : fmt_shortest(v); }
 
 double parse_cell(const CsvTable& t, const CsvRow& row, const std::string& col) {
@@ -151,14 +208,15 @@ double parse_cell(const CsvTable& t, const CsvRow& row, const std::string& col) 
 }  // namespace
 
 const std::vector<std::string>& reduction_kinds() {
-  static const std::vector<std::string> k{"block_slide", "strip_draw"};
+  static const std::vector<std::string> k{"block_slide", "strip_draw", "cup_draw"};
   return k;
 }
 
 std::unique_ptr<CaseReduction> make_reduction(const ReductionSpec& r, const fe::Model& m) {
   if (r.kind == "block_slide") return std::make_unique<BlockSlide>(r, m);
   if (r.kind == "strip_draw") return std::make_unique<StripDraw>(r, m);
-  throw InputError("output.reduce.kind: expected block_slide or strip_draw, found \"" + r.kind + "\"");
+  if (r.kind == "cup_draw") return std::make_unique<CupDraw>(r, m);
+  throw InputError("output.reduce.kind: expected block_slide, strip_draw or cup_draw, found \"" + r.kind + "\"");
 }
 
 void write_reduction(const std::string& path, const std::string& what, const std::vector<ReducedValue>& rows) {

@@ -6,6 +6,7 @@
 // A deck names it in [output]:
 //   reduce = { kind = "block_slide", tool = "floor", step = "slide" }
 //   reduce = { kind = "strip_draw", tool = "die", step = "draw", ramp = 0.01 }
+//   reduce = { kind = "cup_draw", tool = "punch", step = "draw", holder = "lower_die", every = 75 }
 // and io::run_case feeds it every cycle, then writes <out>/reduction.csv:
 // rows `quantity, x, y, value`, every number as the shortest text that reads
 // back as the same double (fmt_shortest), so a reader gets the in-memory bits.
@@ -24,6 +25,15 @@
 //   |F_x| / mean |F_z| of the tool, the probe's v_mean, v_std, v_min, v_max;
 //   at the end p_min, p_max, p_mean over the tool's contact nodes and rows
 //   `pressure` (x, y = the node's reference position [mm]); cycles.
+// - cup_draw (sim/cup_case; a quarter model, forces times 4): every `every`-th
+//   cycle of `step` (by the run's cycle count) a row `curve` (x = the punch
+//   `tool`'s travel since the step began [mm], value = -4 F_z [N]) and the
+//   clamping force die_force = 4 |F_z| of the `holder` tool; at the end
+//   size_rd, size_td (twice the largest x on y = 0, y on x = 0 of node set
+//   "rim"), kinetic_ratio, hourglass_ratio (over the internal energy),
+//   added_mass_ratio, die_lift (the holder's offset z), cycles, and per element
+//   rows `centroid` (x, y, value = z [mm]) and `state` (x = plastic strain,
+//   y = von Mises stress [MPa]).
 // The order of every sum is the order of the cycles and of the contact nodes:
 // deterministic for any thread count.  A restarted run cannot keep a reduction
 // (its sums began before the checkpoint): run_case refuses one.
@@ -53,7 +63,7 @@ class CaseReduction {
   virtual std::vector<ReducedValue> finish(const fe::Solver& s) const = 0;
 };
 
-/// The kinds known: block_slide, strip_draw.
+/// The kinds known: block_slide, strip_draw, cup_draw.
 const std::vector<std::string>& reduction_kinds();
 /// The accumulator for `r` on `m`; throws InputError naming a tool without a
 /// contact pair or an unknown step.

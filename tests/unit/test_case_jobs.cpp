@@ -25,6 +25,7 @@
 #include "io/case_reduction.hpp"
 #include "io/deck.hpp"
 #include "sim/block_case.hpp"
+#include "sim/cup_case.hpp"
 #include "sim/deck_job.hpp"
 #include "sim/strip_draw_case.hpp"
 
@@ -123,6 +124,44 @@ BOOST_AUTO_TEST_CASE(strip_draw_in_memory_and_as_a_job_match_the_gold_bit_for_bi
   for (std::size_t k = 0; k < mem.trace.size(); ++k)
     BOOST_TEST((same_bits(job.trace[k].first, mem.trace[k].first) && same_bits(job.trace[k].second, mem.trace[k].second)));
   BOOST_TEST((job.die_map == mem.die_map));
+}
+
+BOOST_AUTO_TEST_CASE(cup_as_a_job_matches_draw_cup_bit_for_bit) {
+  // A short stroke in few cycles of the Chapter 6 cup (draw_cup, in memory, is today's code).
+  sim::CupSpec c;
+  c.deck = kData + "/cases/cup_draw.toml";
+  c.stroke = 3;
+  c.cycles = 1500;
+  const std::string dir = tmp("cup");
+  fs::create_directories(fs::path(dir).parent_path());
+  c.vtu = dir + "_memory.vtu";
+  const sim::CupResult mem = sim::draw_cup(c);
+  c.vtu = dir + "_job.vtu";
+  const sim::CupResult job = sim::draw_cup_job(c, dir);
+  const std::map<std::string, double> a{{"die_force", mem.die_force}, {"size_rd", mem.size_rd}, {"size_td", mem.size_td},
+      {"max_strain", mem.max_strain}, {"max_strain_r", mem.max_strain_r}, {"max_strain_z", mem.max_strain_z},
+      {"max_strain_angle", mem.max_strain_angle}, {"band_rd", mem.band_rd}, {"band_td", mem.band_td},
+      {"die_lift", mem.die_lift}, {"kinetic_ratio", mem.kinetic_ratio}, {"hourglass_ratio", mem.hourglass_ratio},
+      {"added_mass_ratio", mem.added_mass_ratio}, {"cycles", double(mem.cycles)}, {"elements", double(mem.elements)},
+      {"layers", double(mem.layers)}};
+  const std::map<std::string, double> b{{"die_force", job.die_force}, {"size_rd", job.size_rd}, {"size_td", job.size_td},
+      {"max_strain", job.max_strain}, {"max_strain_r", job.max_strain_r}, {"max_strain_z", job.max_strain_z},
+      {"max_strain_angle", job.max_strain_angle}, {"band_rd", job.band_rd}, {"band_td", job.band_td},
+      {"die_lift", job.die_lift}, {"kinetic_ratio", job.kinetic_ratio}, {"hourglass_ratio", job.hourglass_ratio},
+      {"added_mass_ratio", job.added_mass_ratio}, {"cycles", double(job.cycles)}, {"elements", double(job.elements)},
+      {"layers", double(job.layers)}};
+  check_same(a, b, "cup job vs draw_cup");
+  BOOST_TEST(mem.curve.size() > 10u);
+  BOOST_TEST_REQUIRE(job.curve.size() == mem.curve.size());
+  for (std::size_t k = 0; k < mem.curve.size(); ++k)
+    BOOST_TEST((same_bits(job.curve[k].first, mem.curve[k].first) && same_bits(job.curve[k].second, mem.curve[k].second)),
+               "curve point " << k);
+  BOOST_TEST_REQUIRE(job.field.size() == mem.field.size());
+  bool fields_same = true;
+  for (std::size_t k = 0; k < mem.field.size(); ++k)
+    for (int q = 0; q < 5; ++q) fields_same = fields_same && same_bits(job.field[k][q], mem.field[k][q]);
+  BOOST_TEST(fields_same);
+  BOOST_TEST((read_file(dir + "_memory.vtu") == read_file(dir + "_job.vtu")), "end-of-stroke fields");
 }
 
 BOOST_AUTO_TEST_CASE(a_chapter_batch_runs_each_name_once_and_refuses_two_decks_under_one_name) {
