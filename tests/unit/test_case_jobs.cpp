@@ -1,5 +1,5 @@
-// Blocks and strip draws as file-level jobs (issue 56, item 1): the run folder
-// holds what the chapter needs bit for bit.
+// Blocks, strip draws and cups as file-level jobs (issue 56, item 1): the run
+// folder holds what the chapter needs bit for bit.
 // Expected answers (no tolerance anywhere: every comparison is of bits):
 //  - The in-memory path (sim::run_block, run_strip_draw) gives exactly the
 //    doubles of the in-memory code of commit 8a31e17, before the file-level
@@ -9,6 +9,9 @@
 //    builder's reader) gives exactly the in-memory doubles: the run's
 //    reduction sums the same cycles in the same order, and reduction.csv
 //    holds every number as the shortest text that reads back as the same double.
+//  - A short cup as a job gives exactly what sim::draw_cup (in memory,
+//    unchanged) gives: every scalar, curve point and element field value, and
+//    a byte-identical end-of-stroke .vtu (the run's last field snapshot).
 //  - A second job on the byte-identical deck reuses the folder (summary.csv
 //    untouched), and gives the same bits.
 //  - Bad reductions in a deck are input errors naming the key.
