@@ -1,8 +1,8 @@
 // Chapter 3, Sec. 3.3: the strip-draw verification of the Stribeck law in our
 // solver, built by src/sim/strip_draw_case (the model of
 // data/cases/strip_draw.toml; `drawbend strip-deck` writes any case) with the
-// die pressure, drawing speed and update interval of each case, run through
-// the case pool.
+// die pressure, drawing speed and update interval of each case, each a
+// file-level job (runs/ch3_strip_*: deck.toml, reduction.csv) through the case pool.
 //   - Table 3.2 / Fig. 3.8: mu = (F1 - F2)/F_N at steady sliding against the
 //     input curve, Eq. (3.2), for the five pressure/speed cases; Fig. 3.4:
 //     the pressure under the die at the end of case 1 (Fig. 3.3, the map
@@ -25,7 +25,8 @@ namespace ch3 {
 
 using namespace drawbend;
 
-void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const CsvTable& t32, double mu_coulomb) {
+void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const CsvTable& t32, double mu_coulomb,
+                bool reuse) {
   // Every run of this section, side by side in the case pool: the cases of
   // Table 3.2 (interval 100), then the first case updated every 1, 10, 100 and
   // 1000 cycles (Figs. 3.5-3.7), then with Coulomb friction (Fig. 3.6).
@@ -34,6 +35,7 @@ void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const Cs
   base.stribeck_table = c.data("thesis/table_3_1.csv");
   auto spec = [&](double p, double v, int interval, const std::string& friction = "") {
     sim::StripDrawSpec s = base;
+    s.name = "ch3_strip_p" + fmt(p) + "_v" + fmt(v) + "_i" + std::to_string(interval) + (friction.empty() ? "" : "_coulomb");
     s.pressure = p;
     s.speed = v;
     s.interval = interval;
@@ -46,7 +48,7 @@ void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const Cs
   for (const auto& row : t32.rows) specs.push_back(spec(t32.number(row, "pressure_MPa"), t32.number(row, "velocity_mm_s"), 100));
   for (int interval : intervals) specs.push_back(spec(p1, v1, interval));
   specs.push_back(spec(p1, v1, 1, "{ law = \"coulomb\", mu = " + sim::toml_float(mu_coulomb) + " }"));
-  const std::vector<sim::StripDrawResult> runs = sim::run_strip_draws(specs);
+  const std::vector<sim::StripDrawResult> runs = sim::run_strip_draws(specs, c.out("runs"), reuse);
   // Table 3.2 / Fig. 3.8.
   auto w = c.table({"case", "pressure_MPa", "velocity_mm_s", "L", "mu_input", "mu_simulated", "error_pct",
                     "pressure_spread_pct", "cycles"},

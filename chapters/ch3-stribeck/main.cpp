@@ -98,7 +98,8 @@ void body(study::Chapter& c, const Config& cfg) {
                       100.0 * interval / steps, frac.half_ulp, "%", "printed to 0.01 %: half a unit in the last place");
 
   // 6. The solver.
-  ch3::strip_draw(c, s31, t32, study::scalar(c.data("thesis/scalars.csv"), "ch3_strip_draw_coulomb_mu").value);
+  ch3::strip_draw(c, s31, t32, study::scalar(c.data("thesis/scalars.csv"), "ch3_strip_draw_coulomb_mu").value,
+                 cfg.reuse_runs);
 
   // 7. Draw-bend on three pins.
   c.value("db_ran", cfg.run_fe ? "yes" : "no");

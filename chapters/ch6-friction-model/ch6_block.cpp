@@ -1,7 +1,8 @@
 // Chapter 6, Sec. 6.5: verification of the mu(p, v) law in our solver by block
 // sliding (Fig. 6.7), built by src/sim/block_case (the model of
 // data/cases/block_surface.toml; `drawbend block-deck` writes any case) with
-// the pressure, sliding speed and direction of each case, run through the case pool.
+// the pressure, sliding speed and direction of each case, each a file-level
+// job (runs/ch6_block_*: deck.toml, reduction.csv) through the case pool.
 //   - Tables 6.2 / 6.3, Figs. 6.8 / 6.9: the block slid along RD (x) and TD (y)
 //     at 10, 40, 70 MPa and 10-100 mm/s; retrieved mu_x = F_x/F_N, mu_y = F_y/F_N
 //     (forces on the floor, mean over the last third of the slide) against the
@@ -22,7 +23,7 @@ namespace ch6 {
 
 using namespace drawbend;
 
-void block_sliding(study::Chapter& c) {
+void block_sliding(study::Chapter& c, bool reuse) {
   sim::BlockSpec base;
   base.hardening = c.data("materials/aa5754_o_rd.csv");
   base.surface_nodes = c.data("thesis/table_6_1.csv");
@@ -31,6 +32,7 @@ void block_sliding(study::Chapter& c) {
   if (!law) throw InputError("block builder: the floor contact must use the surface law");
   auto spec = [&](double p, double v, double direction_deg) {
     sim::BlockSpec s = base;
+    s.name = "ch6_block_a" + fmt(direction_deg) + "_p" + fmt(p) + "_v" + fmt(v);  // its run folder: runs/<name>
     s.pressure = p;
     s.speed = v;
     s.direction_deg = direction_deg;
@@ -61,7 +63,7 @@ void block_sliding(study::Chapter& c) {
       specs.push_back(spec(cases.back().p, cases.back().v, dir == "RD" ? 0.0 : 90.0));
     }
   }
-  const std::vector<sim::BlockResult> slides = sim::run_blocks(specs);
+  const std::vector<sim::BlockResult> slides = sim::run_blocks(specs, c.out("runs"), reuse);
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const std::string& dir = cases[k].dir;
     const double p = cases[k].p, v = cases[k].v;
@@ -111,7 +113,7 @@ void block_sliding(study::Chapter& c) {
   for (const auto& row : t64.rows)
     dir_specs.push_back(spec(t64.number(row, "pressure_MPa"), t64.number(row, "speed_mm_s"),
                              t64.number(row, "direction_deg")));
-  const std::vector<sim::BlockResult> dir_slides = sim::run_blocks(dir_specs);
+  const std::vector<sim::BlockResult> dir_slides = sim::run_blocks(dir_specs, c.out("runs"), reuse);
   for (const auto& row : t64.rows) {
     const double a = t64.number(row, "direction_deg");
     p64 = t64.number(row, "pressure_MPa");

@@ -20,13 +20,14 @@
 #include "ch6_steps.hpp"
 #include "sim/case_pool.hpp"
 #include "sim/cup_case.hpp"
+#include "sim/executor.hpp"
 #include "study/thesis_data.hpp"
 
 namespace ch6 {
 
 using namespace drawbend;
 
-void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const std::string& material) {
+void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const std::string& material, bool reuse) {
   c.value("cup_material", material.empty() ? std::string("isotropic J2 (von Mises) on the Table 5.1 RD curve, as the thesis")
                                            : "the material " + material + " (--cup-material)");
   const std::string deck = c.data("cases/cup_draw.toml");
@@ -66,8 +67,8 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const s
     spec.deck = deck, spec.speed = t65.number(row, "punch_speed_mm_s"), spec.stroke = stroke;
     spec.cycles = cycles, spec.refine = refine, spec.material = material;
     spec.vtu = id == "1" ? c.out("tables/cup_case1.vtu") : "";
-    runs[k] = sim::draw_cup(spec);
-  });
+    runs[k] = sim::draw_cup_job(spec, c.out("runs/ch6_cup_case" + id), reuse);  // a file-level job (sim/deck_job.hpp)
+  }, {}, sim::executor_jobs(sim::executor(), sim::default_case_jobs()));
   std::map<std::string, CupResult> res;
   std::string ids, listed;  // "1 9" for the figure, "1, 9" for the page
   for (std::size_t k = 0; k < rows.size(); ++k) {
@@ -106,7 +107,7 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const s
     spec.deck = deck, spec.speed = t65.number(t65.rows.front(), "punch_speed_mm_s"), spec.stroke = d_fail;
     spec.cycles = static_cast<long>(cycles * d_fail / stroke), spec.refine = refine, spec.material = material;
     spec.vtu = c.out("tables/cup_case1_21mm.vtu");
-    const CupResult r = sim::draw_cup(spec);
+    const CupResult r = sim::draw_cup_job(spec, c.out("runs/ch6_cup_case1_21mm"), reuse);
     c.value("cup_strain_21_r", fmt_fixed(r.max_strain_r, 1), "mm");
     c.value("cup_strain_21_z", fmt_fixed(r.max_strain_z, 1), "mm");
     c.value("cup_strain_21", fmt_fixed(r.max_strain, 3));

@@ -31,6 +31,7 @@ struct Config {
   bool full = false;         ///< --full: the paper-fidelity cup-drawing runs (CTest label `full`)
   std::string cup_material;  ///< --cup-material: the cup's material (sim/material_choice.hpp); empty: the deck's
   std::string cup_cases;     ///< --cup-cases: which Table 6.5 cases (default: 1 and 9, all nine with --full)
+  bool reuse_runs = false;   ///< --reuse-runs: block and cup runs whose deck is unchanged are read, not rerun
 };
 
 struct Lines {
@@ -146,9 +147,9 @@ void body(study::Chapter& c, const Config& cfg) {
                       "the same quantity printed twice to 0.1 mm/s must read the same");
 
   // 7. Block sliding (Sec. 6.5).
-  ch6::block_sliding(c);
+  ch6::block_sliding(c, cfg.reuse_runs);
   // 8. Cup drawing (Sec. 6.6): coarse cases 1 and 9; all nine on a finer mesh with --full.
-  ch6::cup_drawing(c, cfg.full, cfg.cup_cases, cfg.cup_material);
+  ch6::cup_drawing(c, cfg.full, cfg.cup_cases, cfg.cup_material, cfg.reuse_runs);
 }
 
 }  // namespace
@@ -156,6 +157,7 @@ void body(study::Chapter& c, const Config& cfg) {
 int main(int argc, char** argv) {
   study::Chapter ch("ch6-friction-model", "Chapter 6: the mu(p, v) friction model, block sliding and cup drawing");
   Config cfg;
+  ch.options().add(cfg.reuse_runs, "reuse-runs", "block sliding and cups: reuse runs whose deck is unchanged, for development only");
   ch.options().add_flag(cfg.full, "full", "cup drawing: all nine cases of Table 6.5 on the refined mesh (slow)");
   ch.options().add(cfg.cup_cases, "cup-cases",
                    "cup drawing: comma-separated Table 6.5 case ids to run, with 1 and 9 among them (e.g. 1,9 with "

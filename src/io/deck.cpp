@@ -1,5 +1,6 @@
 #include "io/deck.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -11,6 +12,7 @@
 #include "core/hash.hpp"
 #include "core/input_problems.hpp"
 #include "fe/strip.hpp"
+#include "io/case_reduction.hpp"
 #include "io/deck_context.hpp"
 #include "io/deck_limits.hpp"
 #include "io/deck_material.hpp"
@@ -168,7 +170,19 @@ void read_numerics(const DeckContext& c, const toml::table& t, Deck& d) {
 }
 
 void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out) {
-  c.allowed(t, "output", {"history_interval", "fields_per_step", "vtk_format", "history"});
+  c.allowed(t, "output", {"history_interval", "fields_per_step", "vtk_format", "history", "reduce"});
+  if (const auto* rt = c.table(t, "reduce", "output", false)) {
+    c.allowed(*rt, "output.reduce", {"kind", "tool", "step", "ramp", "holder", "every"});
+    out.reduce.kind = c.str(*rt, "kind", "output.reduce");
+    const auto& kinds = reduction_kinds();
+    if (std::find(kinds.begin(), kinds.end(), out.reduce.kind) == kinds.end())
+      c.bad(*rt, "output.reduce.kind", "expected block_slide, strip_draw or cup_draw, found \"" + out.reduce.kind + "\"");
+    out.reduce.tool = c.str(*rt, "tool", "output.reduce");
+    out.reduce.step = c.str(*rt, "step", "output.reduce");
+    out.reduce.ramp = c.in_range(*rt, "ramp", "output.reduce", 0.0, 0.0);
+    out.reduce.holder = c.str(*rt, "holder", "output.reduce", std::string());
+    out.reduce.every = c.count_of(*rt, "every", "output.reduce", 1, 1);
+  }
   out.history_interval = c.in_range(t, "history_interval", "output", 0.0, 0.0);
   out.fields_per_step = c.count_of(t, "fields_per_step", "output", 1, 1);
   const std::string vtk = c.str(t, "vtk_format", "output", std::string("binary"));
@@ -256,6 +270,8 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
   });
   if (problems.empty())
     problems.attempt([&] { m.validate(); });
+  if (problems.empty() && !d.output.reduce.kind.empty())  // its tool and step exist
+    problems.attempt([&] { make_reduction(d.output.reduce, m); });
   if (problems.empty()) {
     problems.attempt([&] { check_cost(c, root, d); });
     material_warnings(c, root, d);

@@ -32,11 +32,23 @@ struct HistorySignal {
   double scale = 1;
 };
 
+/// A study's own reduction of the run, kept every cycle and written to
+/// reduction.csv (io/case_reduction.hpp); kind "" = none.
+struct ReductionSpec {
+  std::string kind;  ///< "block_slide", "strip_draw" or "cup_draw"
+  std::string tool;  ///< the tool whose force (and contact pair) it reduces
+  std::string step;  ///< the step it reduces
+  double ramp = 0;   ///< strip_draw: the speed ramp of the step [s]
+  std::string holder;  ///< cup_draw: the force-driven blank holder tool
+  int every = 1;       ///< cup_draw: a curve point every this many cycles
+};
+
 struct OutputSpec {
   double history_interval = 0;  ///< [s]; 0: 200 samples per step
   int fields_per_step = 1;      ///< VTU snapshots per step (>= 1: at least the end of each step)
   bool vtk_ascii = false;       ///< vtk_format = "ascii": text VTU (default "binary": appended, zlib-compressed)
   std::vector<HistorySignal> history;
+  ReductionSpec reduce;
 };
 
 /// Limits a deck can raise in [limits] (data/cases/README.md): every run has a

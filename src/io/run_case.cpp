@@ -12,6 +12,7 @@
 
 #include "core/csv.hpp"
 #include "core/run_output.hpp"
+#include "io/case_reduction.hpp"
 #include "io/run_checkpoint.hpp"
 #include "io/run_observers.hpp"
 #include "io/run_result.hpp"
@@ -230,8 +231,16 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   if (opt.restart.empty()) fields.snapshot();
   observe::Progress progress(run);
   observe::Checkpoints checkpoints(run);
+  // The study's own reduction (io/case_reduction.hpp): its sums need every cycle from the start.
+  std::unique_ptr<CaseReduction> reduction;
+  if (!deck.output.reduce.kind.empty()) {
+    if (!opt.restart.empty())
+      throw InputError(deck.path + ": output.reduce: a reduction needs the whole run; run the deck again without --restart");
+    reduction = make_reduction(deck.output.reduce, deck.model);
+  }
   try {
     solver.run([&](const fe::Progress& p) {
+      if (reduction) reduction->cycle(solver, p);
       observe::follow_step(run, p);
       history(p);
       fields(p);
@@ -251,6 +260,8 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   if (run.printed) log << "\n";
   history.save();
   write_pvd((fs::path(opt.out_dir) / "fields.pvd").string(), frame_collection(deck.model, run.rs.snapshots));
+  if (reduction) write_reduction((fs::path(opt.out_dir) / kReductionFile).string(), "case '" + deck.model.name + "'",
+                                   reduction->finish(solver));
   fill_summary(run, wall0);
   log_energies(run, write_summary(run));
   write_run_result(deck, solver, opt.out_dir, opt.result, log);  // result.toml (io/run_result.hpp)

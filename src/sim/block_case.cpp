@@ -3,10 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "fe/solver.hpp"
+#include "io/case_reduction.hpp"
 #include "sim/case_pool.hpp"
+#include "sim/deck_job.hpp"
 #include "sim/deck_writer.hpp"
 #include "sim/material_choice.hpp"
 
@@ -82,42 +85,53 @@ std::string block_deck_text(const BlockSpec& s) {
     << "[output]\nfields_per_step = 1\nhistory = [\n"
     << "  { name = \"friction_x_N\", kind = \"tool_force\", target = \"floor\", component = 0 },\n"
     << "  { name = \"friction_y_N\", kind = \"tool_force\", target = \"floor\", component = 1 },\n"
-    << "  { name = \"normal_N\", kind = \"tool_force\", target = \"floor\", component = 2 },\n]\n";
+    << "  { name = \"normal_N\", kind = \"tool_force\", target = \"floor\", component = 2 },\n]\n"
+    << "# mu_x, mu_y over the last third of the slide, kept every cycle (io/case_reduction.hpp): reduction.csv\n"
+    << "reduce = { kind = \"block_slide\", tool = \"floor\", step = \"slide\" }\n";
   return o.str();
 }
 
 io::Deck block_deck(const BlockSpec& s) { return io::parse_deck(block_deck_text(s), s.name + ".toml"); }
 
-BlockResult run_block(const BlockSpec& spec) {
-  io::Deck deck = block_deck(spec);
-  fe::Model& m = deck.model;
-  const double slide_time = m.steps.at(1).duration;
-  fe::Solver s(m);
-  s.run_step(0);
-  double fx = 0, fy = 0, fz = 0;
-  s.run_step(1, [&](const fe::Progress& pr) {
-    if (pr.step_time < slide_time * 2.0 / 3.0) return;
-    const auto F = s.tool_force("floor");
-    fx += F[0];
-    fy += F[1];
-    fz += std::abs(F[2]);
-  });
+namespace {
+
+BlockResult from_rows(const std::vector<io::ReducedValue>& rows, const std::string& where) {
   BlockResult r;
-  r.mu_x = fx / fz;
-  r.mu_y = fy / fz;
-  r.p_min = 1e30;
-  for (const auto& c : s.contact_nodes(0)) {
-    r.p_min = std::min(r.p_min, c.pressure);
-    r.p_max = std::max(r.p_max, c.pressure);
-    r.v_mean += c.slip_speed / static_cast<double>(s.contact_nodes(0).size());
-  }
-  r.cycles = s.cycles();
+  r.mu_x = io::reduced(rows, "mu_x", where);
+  r.mu_y = io::reduced(rows, "mu_y", where);
+  r.p_min = io::reduced(rows, "p_min", where);
+  r.p_max = io::reduced(rows, "p_max", where);
+  r.v_mean = io::reduced(rows, "v_mean", where);
+  r.cycles = static_cast<long>(io::reduced(rows, "cycles", where));
   return r;
 }
 
-std::vector<BlockResult> run_blocks(const std::vector<BlockSpec>& specs) {
-  std::vector<BlockResult> out(specs.size());
-  run_cases(specs.size(), [&](std::size_t k) { out[k] = run_block(specs[k]); });
+}  // namespace
+
+BlockResult run_block(const BlockSpec& spec) {
+  io::Deck deck = block_deck(spec);
+  fe::Solver s(deck.model);
+  const auto reduction = io::make_reduction(deck.output.reduce, deck.model);
+  s.run([&](const fe::Progress& p) { reduction->cycle(s, p); });
+  return from_rows(reduction->finish(s), spec.name);
+}
+
+BlockResult read_block_run(const std::string& dir) {
+  const std::string path = (std::filesystem::path(dir) / io::kReductionFile).string();
+  return from_rows(io::read_reduction(path), path);
+}
+
+BlockResult run_block_job(const BlockSpec& spec, const std::string& dir, bool reuse) {
+  run_deck_job(spec.name, block_deck_text(spec), dir, reuse);
+  return read_block_run(dir);
+}
+
+std::vector<BlockResult> run_blocks(const std::vector<BlockSpec>& specs, const std::string& runs, bool reuse) {
+  std::vector<std::string> names, texts;
+  for (const auto& s : specs) names.push_back(s.name), texts.push_back(block_deck_text(s));
+  const std::vector<std::string> dirs = run_jobs(names, texts, runs, reuse, "block spec");
+  std::vector<BlockResult> out;
+  for (std::size_t k = 0; k < specs.size(); ++k) out.push_back(read_block_run(dirs[k]));
   return out;
 }
 

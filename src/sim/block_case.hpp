@@ -22,7 +22,7 @@
 namespace drawbend::sim {
 
 struct BlockSpec {
-  std::string name = "block_surface";
+  std::string name = "block_surface";  ///< the case name (and its run folder's name)
   double size = 1.0;            ///< edge of the cube [mm]
   int elements = 4;             ///< elements along each edge
   double pressure = 10.0;       ///< normal pressure on the top face [MPa]
@@ -60,10 +60,17 @@ struct BlockResult {
   long cycles = 0;
 };
 
-/// Build the deck and slide the block (in memory: no files written).
+/// Build the deck and slide the block in memory (no files written), with the
+/// reduction a run folder keeps (io/case_reduction.hpp, kind block_slide): the
+/// same bits as run_block_job.
 BlockResult run_block(const BlockSpec& s);
-/// run_block for every spec through the case pool (sim/case_pool.hpp), in spec
-/// order.  Runs take seconds and write nothing, so nothing is cached.
-std::vector<BlockResult> run_blocks(const std::vector<BlockSpec>& specs);
+/// The result of a finished run folder (its reduction.csv); InputError naming the file if absent.
+BlockResult read_block_run(const std::string& dir);
+/// The case as a file-level job (sim/deck_job.hpp): deck.toml in `dir`, `drawbend
+/// run` through the executor (reused with `reuse` if the deck is unchanged), then read_block_run.
+BlockResult run_block_job(const BlockSpec& s, const std::string& dir, bool reuse = false);
+/// run_block_job for every spec through the case pool (sim/case_pool.hpp), in
+/// spec order, each in `runs`/<its name> (names must differ).
+std::vector<BlockResult> run_blocks(const std::vector<BlockSpec>& specs, const std::string& runs, bool reuse = false);
 
 }  // namespace drawbend::sim

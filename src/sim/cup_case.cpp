@@ -14,9 +14,11 @@
 #include "fe/contact_springs.hpp"
 #include "fe/solver.hpp"
 #include "io/deck.hpp"
+#include "io/case_reduction.hpp"
 #include "io/run_case.hpp"
 #include "core/toml_read.hpp"
 #include "material/material.hpp"
+#include "sim/deck_job.hpp"
 #include "sim/material_choice.hpp"
 
 namespace drawbend::sim {
@@ -207,6 +209,55 @@ CupResult draw_cup(const CupSpec& spec) {
   return r;
 }
 
+CupResult read_cup_run(const CupSpec& spec, const std::string& dir) {
+  const fs::path path = fs::path(dir) / io::kReductionFile;
+  const auto rows = io::read_reduction(path.string());
+  const std::string where = path.string();
+  CupResult r;
+  r.die_force = io::reduced(rows, "die_force", where);
+  r.size_rd = io::reduced(rows, "size_rd", where);
+  r.size_td = io::reduced(rows, "size_td", where);
+  r.kinetic_ratio = io::reduced(rows, "kinetic_ratio", where);
+  r.hourglass_ratio = io::reduced(rows, "hourglass_ratio", where);
+  r.added_mass_ratio = io::reduced(rows, "added_mass_ratio", where);
+  r.die_lift = io::reduced(rows, "die_lift", where);
+  r.cycles = static_cast<long>(io::reduced(rows, "cycles", where));
+  base_table(spec, r.layers);
+  const io::ReducedValue* centroid = nullptr;
+  for (const auto& row : rows) {
+    if (row.quantity == "curve") r.curve.push_back({row.x, row.value});
+    if (row.quantity == "centroid") centroid = &row;
+    if (row.quantity != "state") continue;
+    if (!centroid) throw InputError(where + ": a state row without its centroid row");
+    // As draw_cup: the bands and the largest plastic strain with its place.
+    const double cx = centroid->x, cy = centroid->y, cz = centroid->value, ep = row.x;
+    r.field.push_back({cx, cy, cz, ep, row.y});
+    const double angle = std::atan2(cy, cx) * 180.0 / std::acos(-1.0);
+    if (angle <= 15.0) r.band_rd = std::max(r.band_rd, ep);
+    if (angle >= 75.0) r.band_td = std::max(r.band_td, ep);
+    if (ep <= r.max_strain) continue;
+    r.max_strain = ep;
+    r.max_strain_r = std::hypot(cx, cy);
+    r.max_strain_z = cz;
+    r.max_strain_angle = angle;
+  }
+  r.elements = static_cast<int>(r.field.size());
+  const CsvTable sum = read_csv((fs::path(dir) / "summary.csv").string());
+  for (const auto& row : sum.rows)
+    if (sum.text(row, "quantity") == "wall_time") r.wall_seconds = sum.number(row, "value");
+  if (!spec.vtu.empty()) {  // the end-of-stroke fields: the run's last snapshot
+    int k = 0;
+    while (fs::exists(fs::path(dir) / ("fields_" + std::to_string(k + 1) + ".vtu"))) ++k;
+    fs::copy_file(fs::path(dir) / ("fields_" + std::to_string(k) + ".vtu"), spec.vtu, fs::copy_options::overwrite_existing);
+  }
+  return r;
+}
+
+CupResult draw_cup_job(const CupSpec& spec, const std::string& dir, bool reuse) {
+  run_deck_job(fs::path(dir).filename().string(), cup_deck_text(spec), dir, reuse);
+  return read_cup_run(spec, dir);
+}
+
 double force_at(const CupResult& r, double d) {
   for (std::size_t k = 1; k < r.curve.size(); ++k)
     if (r.curve[k].first >= d) {
@@ -249,6 +300,11 @@ std::string cup_deck_text(const CupSpec& spec) {
   for (const auto& t : m.tools)
     if (t.drive == fe::Tool::Drive::force)
       tool_table(root, t.name)->insert_or_assign("mass", fe::tool_mass_half_omega_dt(fe::tool_contact_stiffness(m, t.name), dt));
+  // The chapter's reduction, kept by the run (io/case_reduction.hpp): draw_cup's curve and end state.
+  if (!root["output"].as_table()) root.insert_or_assign("output", toml::table{});
+  root["output"].as_table()->insert_or_assign(
+      "reduce", toml::table{{"kind", "cup_draw"}, {"tool", "punch"}, {"step", m.steps[1].name}, {"holder", "lower_die"},
+                            {"every", static_cast<int64_t>(std::max(1L, spec.cycles / 400))}});
   std::ostringstream o;
   o << "# Cup-drawing deck written by drawbend's builder (src/sim/cup_case.cpp) from " << spec.deck << ".\n"
     << "# Punch speed " << spec.speed << " mm/s, stroke " << spec.stroke << " mm in " << spec.cycles

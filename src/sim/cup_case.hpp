@@ -61,6 +61,14 @@ struct CupResult {
 std::string cup_deck_text(const CupSpec& s);
 /// Build and run a spec (progress: one line per 10 % of the stroke on stderr).
 CupResult draw_cup(const CupSpec& s);
+/// The case as a file-level job (sim/deck_job.hpp): cup_deck_text in `dir`,
+/// `drawbend run` through the executor (reused with `reuse` if the deck is
+/// unchanged), then read_cup_run: the same bits as draw_cup but for
+/// wall_seconds (the run's own) and no progress lines.
+CupResult draw_cup_job(const CupSpec& s, const std::string& dir, bool reuse = false);
+/// The result of a finished run folder of `s` (its reduction.csv); with s.vtu
+/// set, the run's last field snapshot is copied there.
+CupResult read_cup_run(const CupSpec& s, const std::string& dir);
 /// Punch force at displacement d by linear interpolation (NaN beyond the curve).
 double force_at(const CupResult& r, double d);
 /// A Table 6.1-format nodes CSV whose RD and TD columns both hold the mean of

@@ -14,8 +14,7 @@
 #include "io/portable_paths.hpp"
 #include "io/run_case.hpp"
 #include "io/run_result.hpp"
-#include "sim/cost_model.hpp"
-#include "sim/executor.hpp"
+#include "sim/deck_job.hpp"
 #include "sim/material_choice.hpp"
 
 namespace drawbend::sim {
@@ -308,14 +307,11 @@ std::string find_same_run(const DrawBendSpec& s, const std::vector<std::string>&
 
 DrawBendResult run_drawbend(const DrawBendSpec& s, const std::string& dir, bool reuse, bool quiet,
                             const std::vector<std::string>& runs_from, const io::ResultOptions& result) {
-  // The run folder's deck names its tables by file name, copied beside it (io/portable_paths.hpp).
-  const std::string text = io::portable_deck(deck_text(s));
-  const fs::path deck_path = fs::path(dir) / "deck.toml";
+  const std::string text = deck_text(s);
   DrawBendResult r;
   r.spec = s;
   r.dir = dir;
-  const bool cached = reuse && fs::exists(deck_path) && read_file(deck_path.string()) == text &&
-                      fs::exists(fs::path(dir) / "summary.csv");
+  const bool cached = reuse && finished_run_of(text, dir);
   if (!cached && !runs_from.empty()) {
     if (std::string same = find_same_run(s, runs_from); !same.empty()) {
       r.dir = same;
@@ -323,29 +319,13 @@ DrawBendResult run_drawbend(const DrawBendSpec& s, const std::string& dir, bool 
       return r;
     }
   }
-  fs::create_directories(dir);
   if (!cached) {
-    fs::remove(fs::path(dir) / "summary.csv");
-    io::portable_deck(deck_text(s), dir);  // copies the tables
-    write_file_atomic(deck_path.string(), text);
-    io::Deck deck = io::parse_deck(text, deck_path.string());
-    if (const ExecutorConfig& e = executor(); e.kind != ExecutorKind::local) {
-      // The same run as a file-level job elsewhere (executor.hpp), with the
-      // same reduction of result.toml (drawbend run's --basis, --bending-force, --yield-stress).
-      char fb[40], ys[40];
-      std::snprintf(fb, sizeof fb, "%.17g", result.bending_force);
-      std::snprintf(ys, sizeof ys, "%.17g", result.yield_stress);
-      run_deck_external(e, s.name, dir, job_needs(predict_case(deck), 1),
-                        "--basis " + result.basis + " --bending-force " + fb + " --yield-stress " + ys);
-    } else {
-      io::RunOptions ro;
-      ro.out_dir = dir;
-      ro.quiet = quiet;
-      ro.result = result;
-      std::ostringstream log;
-      io::run_case(deck, ro, quiet ? static_cast<std::ostream&>(log) : std::cout);
-      write_file_atomic((fs::path(dir) / "run.log").string(), log.str());
-    }
+    // An external job reduces result.toml as this process would (drawbend run's --basis, --bending-force, --yield-stress).
+    char fb[40], ys[40];
+    std::snprintf(fb, sizeof fb, "%.17g", result.bending_force);
+    std::snprintf(ys, sizeof ys, "%.17g", result.yield_stress);
+    run_deck_job(s.name, text, dir, false, quiet, result,
+                 "--basis " + result.basis + " --bending-force " + fb + " --yield-stress " + ys);
   }
   reduce(r);
   return r;

@@ -3,11 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "fe/contact_springs.hpp"
 #include "fe/solver.hpp"
+#include "io/case_reduction.hpp"
 #include "sim/case_pool.hpp"
+#include "sim/deck_job.hpp"
 #include "sim/deck_writer.hpp"
 #include "sim/material_choice.hpp"
 
@@ -95,7 +98,9 @@ std::string text(const StripDrawSpec& s, double dt, double die_mass) {
     o << "  { set = \"" << end << "\", direction = [1.0, 0.0, 0.0], speed = " << toml_ramp(s.speed_ramp, s.speed) << " },\n";
   o << "]\n\n[output]\nhistory = [\n"
     << "  { name = \"die_tangential_N\", kind = \"tool_force\", target = \"die\", component = 0 },\n"
-    << "  { name = \"die_normal_N\", kind = \"tool_force\", target = \"die\", component = 2 },\n]\n";
+    << "  { name = \"die_normal_N\", kind = \"tool_force\", target = \"die\", component = 2 },\n]\n"
+    << "# mu and the probe's slip speed, kept every cycle (io/case_reduction.hpp): reduction.csv\n"
+    << "reduce = { kind = \"strip_draw\", tool = \"die\", step = \"draw\", ramp = " << toml_float(s.speed_ramp) << " }\n";
   return o.str();
 }
 
@@ -114,68 +119,52 @@ io::Deck strip_draw_deck(const StripDrawSpec& s) {
   return io::parse_deck(strip_draw_deck_text(s), s.name + ".toml");
 }
 
-StripDrawResult run_strip_draw(const StripDrawSpec& spec) {
-  io::Deck deck = strip_draw_deck(spec);
-  fe::Model& m = deck.model;
-  const double ramp = spec.speed_ramp, duration = m.steps.at(1).duration;
-  const auto [xmin, xmax] = std::minmax_element(m.mesh.x.begin(), m.mesh.x.end());
-  const auto [ymin, ymax] = std::minmax_element(m.mesh.y.begin(), m.mesh.y.end());
-  fe::Solver s(m);
-  s.run_step(0);
-  // Probe: the contact node nearest the centre of the die.
-  int pair = -1;
-  for (std::size_t k = 0; k < m.contacts.size(); ++k)
-    if (m.contacts[k].tool == "die") pair = static_cast<int>(k);
-  const double cx = 0.5 * (*xmin + *xmax), cy = 0.5 * (*ymin + *ymax);
-  int probe = 0;
-  double best = 1e30;
-  const auto& nodes = s.contact_nodes(pair);
-  for (std::size_t k = 0; k < nodes.size(); ++k) {
-    const double dd = std::hypot(s.x()[nodes[k].node] - cx, s.y()[nodes[k].node] - cy);
-    if (dd < best) {
-      best = dd;
-      probe = static_cast<int>(k);
-    }
-  }
+namespace {
+
+StripDrawResult from_rows(const StripDrawSpec& spec, const std::vector<io::ReducedValue>& rows, const std::string& where) {
   StripDrawResult r;
-  double sft = 0, sfn = 0, sv = 0, sv2 = 0;
-  long n = 0;
-  r.v_min = 1e30;
-  r.v_max = -1e30;
-  const double t0 = s.time();
-  s.run_step(1, [&](const fe::Progress& pr) {
-    const double vs = s.contact_nodes(pair)[probe].slip_speed;
-    if (pr.cycle % 20 == 0) r.trace.push_back({pr.time - t0, vs});
-    if (pr.step_time < ramp) r.ramp_v_max = std::max(r.ramp_v_max, vs);
-    if (pr.step_time < duration * 2.0 / 3.0) return;
-    const auto F = s.tool_force("die");
-    sft += std::abs(F[0]);  // mu = mean F_t / mean F_n over the last third
-    sfn += std::abs(F[2]);
-    sv += vs;
-    sv2 += vs * vs;
-    r.v_min = std::min(r.v_min, vs);
-    r.v_max = std::max(r.v_max, vs);
-    ++n;
-  });
-  r.mu = sfn > 0 ? sft / sfn : NAN;
-  r.v_mean = sv / n;
-  r.v_std = std::sqrt(std::max(0.0, sv2 / n - r.v_mean * r.v_mean));
-  double pmin = 1e30, pmax = 0, psum = 0;
-  for (const auto& c : s.contact_nodes(pair)) {
-    r.die_map[{m.mesh.x[c.node], m.mesh.y[c.node]}] = c.pressure;
-    pmin = std::min(pmin, c.pressure);
-    pmax = std::max(pmax, c.pressure);
-    psum += c.pressure;
-  }
-  r.p_mean = psum / s.contact_nodes(pair).size();
-  r.p_spread = (pmax - pmin) / spec.pressure;
-  r.cycles = s.cycles();
+  r.mu = io::reduced(rows, "mu", where);
+  r.v_mean = io::reduced(rows, "v_mean", where);
+  r.v_std = io::reduced(rows, "v_std", where);
+  r.v_min = io::reduced(rows, "v_min", where);
+  r.v_max = io::reduced(rows, "v_max", where);
+  r.ramp_v_max = io::reduced(rows, "ramp_v_max", where);
+  r.p_mean = io::reduced(rows, "p_mean", where);
+  r.p_spread = (io::reduced(rows, "p_max", where) - io::reduced(rows, "p_min", where)) / spec.pressure;
+  r.cycles = static_cast<long>(io::reduced(rows, "cycles", where));
+  for (const auto& row : rows)
+    if (row.quantity == "trace") r.trace.push_back({row.x, row.value});
+    else if (row.quantity == "pressure") r.die_map[{row.x, row.y}] = row.value;
   return r;
 }
 
-std::vector<StripDrawResult> run_strip_draws(const std::vector<StripDrawSpec>& specs) {
-  std::vector<StripDrawResult> out(specs.size());
-  run_cases(specs.size(), [&](std::size_t k) { out[k] = run_strip_draw(specs[k]); });
+}  // namespace
+
+StripDrawResult run_strip_draw(const StripDrawSpec& spec) {
+  io::Deck deck = strip_draw_deck(spec);
+  fe::Solver s(deck.model);
+  const auto reduction = io::make_reduction(deck.output.reduce, deck.model);
+  s.run([&](const fe::Progress& p) { reduction->cycle(s, p); });
+  return from_rows(spec, reduction->finish(s), spec.name);
+}
+
+StripDrawResult read_strip_draw_run(const StripDrawSpec& spec, const std::string& dir) {
+  const std::string path = (std::filesystem::path(dir) / io::kReductionFile).string();
+  return from_rows(spec, io::read_reduction(path), path);
+}
+
+StripDrawResult run_strip_draw_job(const StripDrawSpec& spec, const std::string& dir, bool reuse) {
+  run_deck_job(spec.name, strip_draw_deck_text(spec), dir, reuse);
+  return read_strip_draw_run(spec, dir);
+}
+
+std::vector<StripDrawResult> run_strip_draws(const std::vector<StripDrawSpec>& specs, const std::string& runs,
+                                             bool reuse) {
+  std::vector<std::string> names, texts;
+  for (const auto& s : specs) names.push_back(s.name), texts.push_back(strip_draw_deck_text(s));
+  const std::vector<std::string> dirs = run_jobs(names, texts, runs, reuse, "strip-draw spec");
+  std::vector<StripDrawResult> out;
+  for (std::size_t k = 0; k < specs.size(); ++k) out.push_back(read_strip_draw_run(specs[k], dirs[k]));
   return out;
 }
 

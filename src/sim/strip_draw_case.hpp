@@ -25,7 +25,7 @@
 namespace drawbend::sim {
 
 struct StripDrawSpec {
-  std::string name = "strip_draw";
+  std::string name = "strip_draw";  ///< the case name (and its run folder's name)
   double length = 4.0, width = 2.0;  ///< the strip section under the die [mm]
   double thickness = 1.04;           ///< [mm]
   int nx = 8, ny = 4, nz = 4;        ///< elements along, across, through
@@ -79,11 +79,19 @@ struct StripDrawResult {
   std::map<std::pair<double, double>, double> die_map;  ///< die pressure [MPa] at the end, by reference (x, y) [mm]
 };
 
-/// Build the deck and draw (in memory: no files written).  The probe is the
-/// die contact node nearest the centre of the die.
+/// Build the deck and draw in memory (no files written), with the reduction a
+/// run folder keeps (io/case_reduction.hpp, kind strip_draw; the probe is the
+/// die contact node nearest the centre of the die): the same bits as run_strip_draw_job.
 StripDrawResult run_strip_draw(const StripDrawSpec& s);
-/// run_strip_draw for every spec through the case pool (sim/case_pool.hpp),
-/// in spec order.  Runs write nothing, so nothing is cached.
-std::vector<StripDrawResult> run_strip_draws(const std::vector<StripDrawSpec>& specs);
+/// The result of a finished run folder of `s` (its reduction.csv; p_spread
+/// needs s.pressure); InputError naming the file if absent.
+StripDrawResult read_strip_draw_run(const StripDrawSpec& s, const std::string& dir);
+/// The case as a file-level job (sim/deck_job.hpp): deck.toml in `dir`, `drawbend
+/// run` through the executor (reused with `reuse` if the deck is unchanged), then read_strip_draw_run.
+StripDrawResult run_strip_draw_job(const StripDrawSpec& s, const std::string& dir, bool reuse = false);
+/// run_strip_draw_job for every spec through the case pool (sim/case_pool.hpp),
+/// in spec order, each in `runs`/<its name> (names must differ).
+std::vector<StripDrawResult> run_strip_draws(const std::vector<StripDrawSpec>& specs, const std::string& runs,
+                                             bool reuse = false);
 
 }  // namespace drawbend::sim

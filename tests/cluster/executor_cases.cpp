@@ -1,5 +1,6 @@
 // Three small draw-bend cases through the case pool, written to OUT/cases.csv
-// (every result to 17 significant digits) with their run folders under
+// (every result to 17 significant digits), then a small block slide and strip
+// draw (OUT/kinds.csv, the same way), with their run folders under
 // OUT/runs/: the driver of tests/cluster/executor_check.sh, which runs it with
 // each executor (local, command, slurm; sim/executor.hpp) and compares the
 // outputs byte for byte.  The cases are the quick tier's draw-bend deck
@@ -16,8 +17,10 @@
 #include "cli/exit_codes.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
+#include "sim/block_case.hpp"
 #include "sim/case_pool.hpp"
 #include "sim/fe_options.hpp"
+#include "sim/strip_draw_case.hpp"
 
 using namespace drawbend;
 
@@ -54,6 +57,27 @@ int main(int argc, char** argv) {
       w.row({r.spec.name, b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], std::to_string(r.map.size()), b[8]});
     }
     w.save(out + "/cases.csv");
+    // The other file-level kinds (sim/deck_job.hpp), small: a block slide and a
+    // strip draw, reduced from their folders' reduction.csv.
+    sim::BlockSpec b = sim::default_block_spec(DRAWBEND_DATA_DIR);
+    b.name = "block0";
+    b.elements = 2;
+    b.direction_deg = 30;
+    sim::StripDrawSpec st = sim::default_strip_draw_spec(DRAWBEND_DATA_DIR);
+    st.name = "strip0";
+    st.nx = 4, st.ny = 2, st.nz = 2;
+    st.slide = 0.1;
+    const sim::BlockResult rb = sim::run_blocks({b}, out + "/runs", true).at(0);
+    const sim::StripDrawResult rs = sim::run_strip_draws({st}, out + "/runs", true).at(0);
+    CsvWriter k({"case", "mu_x", "mu_y", "mu", "v_mean_mm_s", "p_mean_MPa", "cycles"});
+    auto g = [](double v) {
+      char t[40];
+      std::snprintf(t, sizeof t, "%.17g", v);
+      return std::string(t);
+    };
+    k.row({b.name, g(rb.mu_x), g(rb.mu_y), "", g(rb.v_mean), "", std::to_string(rb.cycles)});
+    k.row({st.name, "", "", g(rs.mu), g(rs.v_mean), g(rs.p_mean), std::to_string(rs.cycles)});
+    k.save(out + "/kinds.csv");
     return 0;
   });
 }
