@@ -38,7 +38,7 @@ namespace {
 std::string pct(double v) { return fmt_fixed(100 * v, 1) + " %"; }
 
 /// Text safe inside a TOML basic string: backslashes and quotes escaped.
-std::string quoted(const std::string& t) {
+std::string toml_text(const std::string& t) {
   std::string o;
   for (char c : t) {
     if (c == '"' || c == '\\') o += '\\';
@@ -231,11 +231,11 @@ int model_loop_command(int argc, char** argv, const char* name) {
   {
     std::ostringstream o;
     o << "# drawbend model-loop: the options in effect (units mm, N, mm/s)\n[model_loop]\ndata = \""
-      << quoted(data) << "\"\nfit_pin = " << fmt(cfg.fit_pin) << "\nmin_gain = " << fmt(cfg.min_gain)
-      << "\ncandidates = \"" << quoted(candidates) << "\"\nthickness = " << fmt(s.thickness) << "\nwidth = "
+      << toml_text(data) << "\"\nfit_pin = " << fmt(cfg.fit_pin) << "\nmin_gain = " << fmt(cfg.min_gain)
+      << "\ncandidates = \"" << toml_text(candidates) << "\"\nthickness = " << fmt(s.thickness) << "\nwidth = "
       << fmt(s.width) << "\nspeed = " << fmt(s.speed) << "\nmass_scaling = " << fmt(s.mass_scaling)
       << "\nelement_length = " << fmt(s.element_length) << "\nacross = " << s.across << "\nthrough = " << s.through
-      << "\nhardening = \"" << quoted(s.hardening) << "\"\n";
+      << "\nhardening = \"" << toml_text(s.hardening) << "\"\n";
     write_file_atomic(out + "/inputs/options.toml", o.str());
   }
   const auto r = sim::run_model_loop(s, points, cands, cfg);
