@@ -61,6 +61,9 @@ int drawbend_deck_command(int argc, char** argv) {
           "'{ type = \"j2_combined\", kinematic = { beta = 0.5 } }', or a TOML file with a [material] table "
           "(data/materials/*.toml)");
   opt.add(s.strip_direction, "strip-direction", "the strip's axis is the rolling direction (rd) or the transverse one (td)");
+  opt.add(s.bend_inlet_slides, "bend-inlet-slides",
+          "step 1 (bend) with the inlet end sliding under the back tension (true) or clamped (false), which "
+          "stretches the strip by about 1 % before the test (docs/issue51-large-pin.md)");
   opt.add(s.snapshots, "frames",
           "contact maps and .vtu frames written per step (bend, tension, draw): 3 x N + 1 frames in all");
   opt.add(bending_force, "bending-force",

@@ -7,14 +7,19 @@
 // split:B1/B2/... (split combined hardening, beta chosen on the fit pin),
 // chaboche:X1/X2/...[@G1/G2/...] (one back stress, X and gamma chosen on the fit pin), voce,
 // hill48, offset, ms:X (mass scaling), across:N.  FE runs are cached in
-// DIR/runs by deck hash.  Writes DIR/baseline.csv, DIR/final.csv and
-// DIR/steps.csv.  Units: mm, N, mm/s.
+// DIR/runs by deck hash.  The run folder, like `drawbend loop`'s: DIR/model_loop.md
+// (read first), DIR/chosen_model.toml (the chosen model's [material] table, a
+// drawbend-deck --material file), DIR/steps.csv (every candidate tried),
+// DIR/baseline.csv, DIR/final.csv, DIR/inputs/ (a copy of DATA.csv and the
+// options in effect).  Units: mm, N, mm/s.
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "core/csv.hpp"
+#include "core/quote.hpp"
 #include "core/install_paths.hpp"
 #include "core/file_gate.hpp"
 #include "io/deck.hpp"
@@ -25,6 +30,7 @@
 #include "sim/executor.hpp"
 #include "core/options.hpp"
 #include "sim/fe_options.hpp"
+#include "sim/material_choice.hpp"
 #include "modelloop/model_loop.hpp"
 
 namespace drawbend::cli {
@@ -68,8 +74,11 @@ void write_model_loop_md(const std::string& path, const std::string& data, const
   for (const auto& st : r.steps)
     md << "| " << st.candidate << " | " << st.member << " | " << pct(st.eval.fit_rms) << " | "
        << pct(st.eval.held_rms) << " | " << pct(st.eval.held_max) << " | " << st.decision << " |\n";
-  md << "\n## Files\n\n- `baseline.csv`, `final.csv`: every point, measured and predicted\n"
+  md << "\n## Files\n\n- `chosen_model.toml`: the chosen model's `[material]` table (`drawbend drawbend-deck "
+        "--material chosen_model.toml` runs it)\n"
+        "- `baseline.csv`, `final.csv`: every point, measured and predicted\n"
         "- `steps.csv`: the table above as numbers\n"
+        "- `inputs/`: a copy of the data (`data.csv`) and the options in effect (`options.toml`)\n"
         "- `runs/fb_<hash>/`: one folder per FE case (deck, history, `result.toml` with F_X, F_Y and F_B)\n";
   write_file_atomic(path, md.str());
 }
@@ -94,7 +103,8 @@ int model_loop_command(int argc, char** argv, const char* name) {
                        "candidate is accepted only if their RMS relative error falls by more than --min-gain. FE "
                        "runs go through the case pool (DRAWBEND_JOBS at a time, progress with time left) and are "
                        "cached in OUT/runs by deck hash. Writes OUT/model_loop.md (read it first: the chosen model and its blind "
-                       "errors, every candidate tried), OUT/baseline.csv, OUT/final.csv, OUT/steps.csv.");
+                       "errors, every candidate tried), OUT/chosen_model.toml (its [material] table), OUT/steps.csv (every candidate), "
+                       "OUT/baseline.csv, OUT/final.csv and OUT/inputs/ (the data and the options in effect).");
   opt.add(out, "out", "output directory (runs cached in OUT/runs)");
   opt.add(cfg.fit_pin, "fit-pin", "pin diameter whose points train [mm]; the others are held out");
   opt.add(cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
@@ -206,7 +216,24 @@ int model_loop_command(int argc, char** argv, const char* name) {
   ensure_writable_dir(out, "--out");
   cfg.run_root = out + "/runs";
   cfg.reuse = reuse;
+  // The inputs beside the answer (as `drawbend loop` keeps its data): the
+  // data as read and every option in effect, mass scaling resolved.
+  std::filesystem::create_directories(out + "/inputs");
+  write_file_atomic(out + "/inputs/data.csv", read_input(data));
+  {
+    std::ostringstream o;
+    o << "# drawbend model-loop: the options in effect (units mm, N, mm/s)\n[model_loop]\ndata = "
+      << string_literal(data) << "\nfit_pin = " << fmt(cfg.fit_pin) << "\nmin_gain = " << fmt(cfg.min_gain)
+      << "\ncandidates = " << string_literal(candidates) << "\nthickness = " << fmt(s.thickness) << "\nwidth = "
+      << fmt(s.width) << "\nspeed = " << fmt(s.speed) << "\nmass_scaling = " << fmt(s.mass_scaling)
+      << "\nelement_length = " << fmt(s.element_length) << "\nacross = " << s.across << "\nthrough = " << s.through
+      << "\nhardening = " << string_literal(s.hardening) << "\n";
+    write_file_atomic(out + "/inputs/options.toml", o.str());
+  }
   const auto r = modelloop::run_model_loop(s, points, cands, cfg);
+  write_file_atomic(out + "/chosen_model.toml",
+                    "# The model chosen by drawbend model-loop: " + r.final_model.model + "\n" +
+                        sim::material_section(r.final_spec.material, r.final_spec.hardening));
   modelloop::save_eval_csv(r.baseline, out + "/baseline.csv");
   modelloop::save_eval_csv(r.final_model, out + "/final.csv");
   CsvWriter w({"candidate", "member", "fit_rms", "heldout_rms", "heldout_max", "decision"});
