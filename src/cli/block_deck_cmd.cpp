@@ -4,12 +4,15 @@
 // standard output.  `drawbend run deck.toml --out DIR` runs it; the history
 // columns friction_x_N, friction_y_N and normal_N give mu = F_t / F_N.
 // Units: mm, N, MPa, s.
+#include <filesystem>
 #include <string>
 
 #include "cli/deck_out.hpp"
 #include "cli/option_bounds.hpp"
 #include "cli/threads.hpp"
 #include "core/options.hpp"
+#include "friction/surface_law.hpp"
+#include "io/portable_paths.hpp"
 #include "sim/block_case.hpp"
 
 namespace drawbend::cli {
@@ -53,6 +56,14 @@ int block_deck_command(int argc, char** argv) {
   if (!opt.parse(argc, argv)) return 0;
   name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
   name_input(s.surface_nodes, "--surface-nodes");
+  // --friction and --surface-nodes checked on their own, so that a problem names
+  // the option or the user's file and line, not a line of the generated deck.
+  s.friction = io::friction_argument(s.friction, std::filesystem::current_path().string());
+  if (s.friction.empty() && !s.surface_nodes.empty()) try {
+      (void)friction::load_surface_nodes(s.surface_nodes, friction::SurfaceDomain{});
+    } catch (const std::exception& e) {
+      throw InputError("--surface-nodes: " + std::string(e.what()));
+    }
   return write_deck_out(deck_with_threads(sim::block_deck_text(s), threads), out, "block-deck");
 }
 

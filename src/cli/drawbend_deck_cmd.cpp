@@ -93,13 +93,9 @@ int drawbend_deck_command(int argc, char** argv) {
   if (!(s.speed > 0)) throw std::invalid_argument("--speed: expected a number > 0 mm/s, found " + fmt(s.speed));
   if (s.mass_scaling < 0) throw std::invalid_argument("--mass-scaling: expected 0 (the quick tier's rule) or > 0");
   if (s.mass_scaling == 0) s.mass_scaling = sim::mass_scaling_for_speed(sim::kQuickMassScaling, s.speed);
-  // One element through the thickness bends too stiffly in one way and too
-  // softly in another: the frictionless 12.7 mm pin of the quick mesh gave
-  // F_B = 298 N with 1 element, 343 N with 2 and 337 N with 4 (2026-12-01,
-  // issue 53): 11 % low.  A warning, not an error (a quick look is valid).
-  if (s.through < 2)
-    std::cerr << "warning: --through " << s.through << ": one element through the thickness gives a bending force "
-                 "about 11 % low (frictionless 12.7 mm pin: 298 N against 337 N with 4 elements); use --through 4\n";
+  // One element through the thickness (--through 1) is a warning of the deck
+  // itself (io/deck_limits.hpp's mesh_warnings), printed by checked_deck here
+  // and by `drawbend run` for every builder's deck and every hand-written one.
   const bool full = basis == "full";
   const double to_half = full ? 0.5 : 1.0;  // given forces -> half model
   const std::string tag = full ? "full strip" : "half model";

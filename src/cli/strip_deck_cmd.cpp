@@ -4,12 +4,14 @@
 // --out or standard output.  `drawbend run deck.toml --out DIR` runs it; the
 // history columns die_tangential_N and die_normal_N give mu = F_t / F_N.
 // Units: mm, N, MPa, s.
+#include <filesystem>
 #include <string>
 
 #include "cli/deck_out.hpp"
 #include "cli/option_bounds.hpp"
 #include "cli/threads.hpp"
 #include "core/options.hpp"
+#include "io/portable_paths.hpp"
 #include "sim/strip_draw_case.hpp"
 
 namespace drawbend::cli {
@@ -57,6 +59,8 @@ int strip_deck_command(int argc, char** argv) {
   if (!opt.parse(argc, argv)) return 0;
   name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
   name_input(s.stribeck_table, "--stribeck-table");
+  // --friction checked on its own (io/portable_paths.hpp): a problem names the option, not the generated deck.
+  s.friction = io::friction_argument(s.friction, std::filesystem::current_path().string());
   return write_deck_out(deck_with_threads(sim::strip_draw_deck_text(s), threads), out, "strip-deck");
 }
 

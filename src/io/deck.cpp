@@ -255,6 +255,7 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
   if (problems.empty()) {
     problems.attempt([&] { check_cost(c, root, d); });
     material_warnings(c, root, d);
+    mesh_warnings(c, root, d);
   }
   problems.throw_if_any();
   return d;
