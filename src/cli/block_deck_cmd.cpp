@@ -62,7 +62,8 @@ int block_deck_command(int argc, char** argv) {
   if (s.friction.empty() && !s.surface_nodes.empty()) try {
       (void)friction::load_surface_nodes(s.surface_nodes, friction::SurfaceDomain{});
     } catch (const std::exception& e) {
-      throw InputError("--surface-nodes: " + std::string(e.what()));
+      const std::string what = e.what();  // the file gate's messages name the option already
+      throw InputError((what.rfind("--surface-nodes", 0) == 0 ? "" : "--surface-nodes: ") + what);
     }
   return write_deck_out(deck_with_threads(sim::block_deck_text(s), threads), out, "block-deck");
 }

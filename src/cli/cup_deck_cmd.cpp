@@ -12,6 +12,7 @@
 #include "cli/threads.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
+#include "friction/surface_law.hpp"
 #include "sim/cup_case.hpp"
 
 namespace drawbend::cli {
@@ -49,6 +50,15 @@ int cup_deck_command(int argc, char** argv) {
   name_input(s.deck, "--base");  // the file gate names the option (core/file_gate.hpp)
   name_input(s.material, "--material");
   name_input(s.friction, "--friction");
+  // The nodes file checked on its own: a problem names --friction and the file's
+  // line, not the base deck's contact lines (three times, before issue 53).
+  if (!s.friction.empty() && s.friction != "none") try {
+      (void)friction::load_surface_nodes(s.friction, friction::SurfaceDomain{});
+    } catch (const std::exception& e) {
+      const std::string what = e.what();  // the file gate's messages name the option already
+      throw InputError((what.rfind("--friction", 0) == 0 ? "" : "--friction: ") + what +
+                       " (expected none or a Table 6.1-format nodes CSV)");
+    }
   check_threads(threads);
   s.cycles = cycles;
   if (!(s.speed > 0)) throw std::invalid_argument("--speed: expected a punch speed > 0 mm/s, found " + fmt(s.speed));

@@ -106,6 +106,7 @@ int drawbend_deck_command(int argc, char** argv) {
               << checked_deck(deck_with_threads(sim::deck_text(s), threads), "drawbend-deck");
     return 0;
   }
+  ensure_writable_dir(run_dir, "--run");  // before any work: exit 2, not a file-system error
   apply_threads(threads);
   // The run prints its answer (forces, F_B, mu by Eq. (2.3)) on --basis and writes it to
   // <run>/result.toml on both bases (io/run_result.hpp); `drawbend run` prints the same lines.

@@ -114,6 +114,9 @@ expect drawbend-deck "flow stress 1e308 MPa" 2 "curve_huge.csv:2: true stress 1e
 expect calibrate "stress ratio 1e300" 2 "cal_huge.csv:3: column 'stress_ratio': expected a yield-stress ratio to RD in \\[0.1, 10\\]" "$drawbend" calibrate cal_huge.csv --out c3
 expect plan "wall time 1e-300 s" 0 "warning: .*summary.csv: wall_time 1e-300 s is not a run's wall time" "$drawbend" plan runs
 # Unwritable output folders: exit 2 before any work (calibrate: exit 3, a file-system error, before).
+expect drawbend-deck "unwritable --run" 2 "--run '/proc/x': cannot create the folder" "$drawbend" drawbend-deck --run /proc/x
+touch a_file
+expect drawbend-deck "a file as --run" 2 "--run 'a_file': cannot be a folder, because 'a_file' is a file" "$drawbend" drawbend-deck --run a_file
 expect calibrate "unwritable --out" 2 "--out '/proc/x': cannot create the folder" "$drawbend" calibrate cal_crlf.csv --out /proc/x
 expect export "unwritable --out" 2 "--out.*/proc" "$drawbend" export model/good.toml --to lsdyna --out /proc/e.k
 # A builder's --friction: the option or the user's file named, not the generated deck's line.
@@ -122,6 +125,8 @@ expect block-deck "--friction short nodes file" 2 "--friction:1: friction.nodes:
 expect block-deck "--surface-nodes short file" 2 "--surface-nodes: .*nodes_short.csv: nodal friction values: expected 9 rows" "$drawbend" block-deck --surface-nodes nodes_short.csv --out b3.toml
 expect block-deck "--friction negative mu" 2 "--friction:1: friction.mu: expected a friction coefficient >= 0, found -1" "$drawbend" block-deck --friction '{ law = "coulomb", mu = -1 }' --out b4.toml
 expect block-deck "--friction a model file" 2 "reversed.toml:1: friction: expected 0 <= p_min < p_max" "$drawbend" block-deck --friction model/reversed.toml --out b5.toml
+expect cup-deck "--friction missing nodes file" 2 "--friction 'nope.csv': cannot open file for reading" "$drawbend" cup-deck --friction nope.csv
+expect cup-deck "--friction short nodes file" 2 "--friction: nodes_short.csv: nodal friction values: expected 9 rows" "$drawbend" cup-deck --friction nodes_short.csv
 expect strip-deck "--friction wrong type" 2 "--friction:1: friction.mu: expected a finite number, found the string \"0.1\"" "$drawbend" strip-deck --friction '{ law = "coulomb", mu = "0.1" }' --out s1.toml
 expect drawbend-deck "--friction wrong type" 2 "--friction:1: friction.mu: expected a finite number" "$drawbend" drawbend-deck --friction '{ law = "coulomb", mu = "0.1" }'
 # One element through the thickness of a bending case: a warning of the deck
