@@ -99,6 +99,11 @@ expect export "units in a model value" 2 "units.toml:4: friction.p_min: expected
 expect run "duplicated key" 2 "dup_key.toml:[0-9]+:[0-9]+: TOML syntax error: .*cannot redefine existing .*'duration'" "$drawbend" run dup_key.toml --out o5 --quiet
 expect run "duplicated table" 2 "dup_table.toml:[0-9]+:[0-9]+: TOML syntax error: .*cannot redefine existing table 'case'" "$drawbend" run dup_table.toml --out o6 --quiet
 expect plan "duplicated key" 2 "dup_key.toml:[0-9]+:[0-9]+: TOML syntax error" "$drawbend" plan dup_key.toml
+# Names given twice in a deck (steps name messages, history names are CSV columns).
+sed 's/^name = "slide"/name = "press"/' "$deck" >dup_step.toml
+expect run "step name twice" 2 "dup_step.toml:[0-9]+: step 'press'.name: expected a unique step name, found it twice" "$drawbend" run dup_step.toml --out o9 --quiet
+sed 's/kind = "tool_force", target = "floor", component = 2/kind = "tool_force", target = "floor", component = 2 }, { name = "friction_N", kind = "tool_force", target = "floor", component = 1/' "$deck" >dup_history.toml
+expect run "history column twice" 2 "dup_history.toml:[0-9]+: output.history.name: expected a unique column name, found 'friction_N' twice" "$drawbend" run dup_history.toml --out o10 --quiet
 # Unknown keys and impossible domains in export's friction model (a silent default before).
 expect export "unknown key" 2 "unknown.toml:4: friction.colour: unknown key" "$drawbend" export model/unknown.toml --to lsdyna --out e2.k
 expect export "reversed domain" 2 "reversed.toml:1: friction: expected 0 <= p_min < p_max <= 10000 \\[MPa\\], found 80 and 0" "$drawbend" export model/reversed.toml --to lsdyna --out e3.k
