@@ -117,6 +117,8 @@ expect plan "CRLF deck" 0 "1 cases" "$drawbend" plan deck_crlf.toml
 # Absurd numbers in tables: exit 2 naming file:line (exit 0 before).
 expect drawbend-deck "flow stress 1e308 MPa" 2 "curve_huge.csv:2: true stress 1e\\+300 MPa is above 100000 MPa" "$drawbend" drawbend-deck --hardening curve_huge.csv
 expect calibrate "stress ratio 1e300" 2 "cal_huge.csv:3: column 'stress_ratio': expected a yield-stress ratio to RD in \\[0.1, 10\\]" "$drawbend" calibrate cal_huge.csv --out c3
+printf 'pin_diameter_mm,back_tension_N,bending_force_N\n1e300,1000,200\n25.4,1000,150\n' >ml_pin.csv
+expect model-loop "pin diameter 1e300 mm" 2 "ml_pin.csv:2: column 'pin_diameter_mm': expected a pin diameter up to 1000 mm" "$drawbend" model-loop ml_pin.csv --out m3
 expect plan "wall time 1e-300 s" 0 "warning: .*summary.csv: wall_time 1e-300 s is not a run's wall time" "$drawbend" plan runs
 # Unwritable output folders: exit 2 before any work (calibrate: exit 3, a file-system error, before).
 expect drawbend-deck "unwritable --run" 2 "--run '/proc/x': cannot create the folder" "$drawbend" drawbend-deck --run /proc/x
