@@ -47,8 +47,8 @@ int block_deck_command(int argc, char** argv) {
   opt.example("drawbend block-deck --pressure 40 --speed 70 --out my-block/deck.toml");
   opt.example("drawbend run my-block/deck.toml --out my-block/run --quiet");
   using namespace bounds;  // every number range-checked as it is parsed (cli/option_bounds.hpp)
-  opt.range("pressure", 0, kPressureMPa, "MPa", true).range("speed", 0, kSpeedMMs, "mm/s", true);
-  opt.range("direction", -360, 360, "deg").range("size", 0, kLengthMM, "mm", true).range("elements", 1, kElements);
+  opt.range("pressure", kMinPressureMPa, kPressureMPa, "MPa", false).range("speed", kMinSpeedMMs, kSpeedMMs, "mm/s", false);
+  opt.range("direction", -360, 360, "deg").range("size", kMinLengthMM, kLengthMM, "mm", false).range("elements", 1, kElements);
   opt.range("mass-scaling", 1, kMassScaling).range("penalty", 0, kPenalty, "", true);
   opt.range("interval", 1, kIntervalCycles, "cycles").range("press-time", 0, kTimeS, "s", true);
   opt.range("press-ramp", 0, kTimeS, "s", true).range("slide-time", 0, kTimeS, "s", true);

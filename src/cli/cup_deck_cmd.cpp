@@ -43,9 +43,9 @@ int cup_deck_command(int argc, char** argv) {
   opt.example("drawbend cup-deck --die-radius 8 --stroke 1 --cycles 600 > my-cup.toml");
   opt.example("drawbend run my-cup.toml --out my-cup --quiet");
   using namespace bounds;  // every number range-checked as it is parsed (cli/option_bounds.hpp)
-  opt.range("speed", 0, kSpeedMMs, "mm/s", true).range("stroke", 0, kLengthMM, "mm", true);
+  opt.range("speed", kMinSpeedMMs, kSpeedMMs, "mm/s", false).range("stroke", kMinLengthMM, kLengthMM, "mm", false);
   opt.range("cycles", 100, 1e8).range("refine", 1, 8);
-  opt.range("punch-radius", 0, kLengthMM, "mm", true, false, true).range("die-radius", 0, kLengthMM, "mm", true, false, true);
+  opt.range("punch-radius", kMinLengthMM, kLengthMM, "mm", false, false, true).range("die-radius", kMinLengthMM, kLengthMM, "mm", false, false, true);
   if (!opt.parse(argc, argv)) return 0;
   name_input(s.deck, "--base");  // the file gate names the option (core/file_gate.hpp)
   name_input(s.material, "--material");

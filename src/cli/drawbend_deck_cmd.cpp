@@ -74,10 +74,10 @@ int drawbend_deck_command(int argc, char** argv) {
   opt.example("drawbend drawbend-deck --pin-diameter 12.7 --element-length 1.5 --through 2 --draw-length 12 --friction '{ law = \"coulomb\", mu = 0.1 }' "
               "--bending-force 348 --run my-case    # F_B of my-free");
   using namespace bounds;  // every number range-checked as it is parsed (cli/option_bounds.hpp)
-  opt.range("pin-diameter", 0, kLengthMM, "mm", true).range("thickness", 0, kThicknessMM, "mm", true);
-  opt.range("width", 0, kLengthMM, "mm", true).range("back-tension", 0, kForceN, "N");
-  opt.range("speed", 0, kSpeedMMs, "mm/s", true).range("draw-length", 0, kLengthMM, "mm", true, false, true);
-  opt.range("element-length", 0, kLengthMM, "mm", true).range("across", 1, kElements).range("through", 1, kElements);
+  opt.range("pin-diameter", kMinLengthMM, kLengthMM, "mm", false).range("thickness", kMinThicknessMM, kThicknessMM, "mm", false);
+  opt.range("width", kMinLengthMM, kLengthMM, "mm", false).range("back-tension", 0, kForceN, "N");
+  opt.range("speed", kMinSpeedMMs, kSpeedMMs, "mm/s", false).range("draw-length", kMinLengthMM, kLengthMM, "mm", false, false, true);
+  opt.range("element-length", kMinLengthMM, kLengthMM, "mm", false).range("across", 1, kElements).range("through", 1, kElements);
   opt.range("mass-scaling", 1, kMassScaling, "", false, false, true).range("penalty", 0, kPenalty, "", true);
   opt.range("frames", 1, 1000).range("bending-force", 0, kForceN, "N").range("yield-stress", 0, 1e4, "MPa");
   if (!opt.parse(argc, argv)) return 0;

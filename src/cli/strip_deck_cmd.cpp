@@ -49,9 +49,9 @@ int strip_deck_command(int argc, char** argv) {
   opt.example("drawbend strip-deck --pressure 20 --speed 4 --out my-strip/deck.toml");
   opt.example("drawbend run my-strip/deck.toml --out my-strip/run --quiet");
   using namespace bounds;  // every number range-checked as it is parsed (cli/option_bounds.hpp)
-  opt.range("pressure", 0, kPressureMPa, "MPa", true).range("speed", 0, kSpeedMMs, "mm/s", true);
-  opt.range("slide", 0, kLengthMM, "mm", true).range("length", 0, kLengthMM, "mm", true);
-  opt.range("width", 0, kLengthMM, "mm", true).range("thickness", 0, kThicknessMM, "mm", true);
+  opt.range("pressure", kMinPressureMPa, kPressureMPa, "MPa", false).range("speed", kMinSpeedMMs, kSpeedMMs, "mm/s", false);
+  opt.range("slide", kMinLengthMM, kLengthMM, "mm", false).range("length", kMinLengthMM, kLengthMM, "mm", false);
+  opt.range("width", kMinLengthMM, kLengthMM, "mm", false).range("thickness", kMinThicknessMM, kThicknessMM, "mm", false);
   opt.range("nx", 1, kElements).range("ny", 1, kElements).range("nz", 1, kElements);
   opt.range("interval", 1, kIntervalCycles, "cycles").range("time-step", 0, 1e-2, "s", true, false, true);
   opt.range("die-mass", 0, 1e3, "t", true, false, true).range("press-time", 0, kTimeS, "s", true);

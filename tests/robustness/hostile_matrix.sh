@@ -91,6 +91,44 @@ expect loop "option twice" 2 "--permutations' given twice" "$drawbend" loop "$ro
 expect export "option twice" 2 "--to' given twice" "$drawbend" export model/good.toml --to lsdyna --to abaqus --out e.k
 expect calibrate "option twice" 2 "--a' given twice" "$drawbend" calibrate cal_crlf.csv --out c1 --a 8 --a 6
 expect model-loop "option twice" 2 "--out' given twice" "$drawbend" model-loop ml_crlf.csv --out m1 --out m2
+# Vanishing dimensions (1e-300: a unit error; a pin or a die radius of 1e-300 mm was written with exit 0).
+while read -r cmd opt; do
+  pre= out=
+  case $cmd in block-deck | strip-deck) out="--out tiny.toml" ;; model-loop) pre=ml_crlf.csv out="--out m4" ;; esac
+  expect "$cmd" "$opt 1e-300" 2 "--$opt: expected (0 or )?a value in \\[0.0*1, " "$drawbend" $cmd $pre --$opt 1e-300 $out
+done <<'LIST'
+drawbend-deck pin-diameter
+drawbend-deck thickness
+drawbend-deck speed
+block-deck size
+block-deck speed
+block-deck pressure
+strip-deck thickness
+strip-deck speed
+cup-deck die-radius
+cup-deck stroke
+model-loop thickness
+LIST
+# An empty file wherever a file is read: exit 2 naming it.
+: >empty.toml
+: >empty.csv
+mkdir -p emodel
+printf '[friction]\nlaw = "surface"\nnodes = "empty.csv"\n' >emodel/friction_model.toml
+: >emodel/empty.csv
+expect run "empty deck" 2 "empty.toml" "$drawbend" run empty.toml --out o11 --quiet
+expect run "empty --restart" 2 "empty.csv" "$drawbend" run "$deck" --restart empty.csv --out o12 --quiet
+expect drawbend-deck "empty --material" 2 "empty.toml" "$drawbend" drawbend-deck --material empty.toml
+expect drawbend-deck "empty --hardening" 2 "empty.csv" "$drawbend" drawbend-deck --hardening empty.csv
+expect block-deck "empty --surface-nodes" 2 "empty.csv" "$drawbend" block-deck --surface-nodes empty.csv --out e.toml
+expect strip-deck "empty --stribeck-table" 2 "empty.csv" "$drawbend" strip-deck --stribeck-table empty.csv --out e.toml
+expect cup-deck "empty --base" 2 "empty.toml" "$drawbend" cup-deck --base empty.toml
+expect loop "empty data" 2 "empty.csv" "$drawbend" loop empty.csv --out l2 --figures=
+expect model-loop "empty data" 2 "empty.csv" "$drawbend" model-loop empty.csv --out m5
+expect export "empty model" 2 "empty.toml" "$drawbend" export empty.toml --to lsdyna --out e6.k
+expect export "empty nodes file" 2 "empty.csv" "$drawbend" export emodel/friction_model.toml --to lsdyna --out e7.k
+expect calibrate "empty tests" 2 "empty.csv" "$drawbend" calibrate empty.csv --out c4
+expect calibrate "empty --compare" 2 "empty.toml" "$drawbend" calibrate cal_crlf.csv --out c5 --compare empty.toml
+expect plan "empty deck" 2 "empty.toml" "$drawbend" plan empty.toml
 # Units written into a value (an option, a deck key, a table cell).
 expect drawbend-deck "units in an option" 2 "--pin-diameter: expected a number, found '12.7 mm'" "$drawbend" drawbend-deck --pin-diameter "12.7 mm"
 expect run "units in a deck value" 2 "units.toml:[0-9]+: material.E: expected a finite number, found the string \"70000 MPa\"" "$drawbend" run units.toml --out o4 --quiet
