@@ -176,10 +176,19 @@ expect strip-deck "--friction wrong type" 2 "--friction:1: friction.mu: expected
 expect drawbend-deck "--friction wrong type" 2 "--friction:1: friction.mu: expected a finite number" "$drawbend" drawbend-deck --friction '{ law = "coulomb", mu = "0.1" }'
 # One element through the thickness of a bending case: a warning of the deck
 # (every builder and `run`), not only of drawbend-deck's option.
-expect drawbend-deck "one element through the thickness" 0 "warning: drawbend-deck \\(the deck it writes\\): mesh: one element through the thickness, and the sheet bends over the curved surface of tool 'pin'" \
+expect drawbend-deck "one element through the thickness" 0 "warning: drawbend-deck \\(the deck it writes\\): mesh: one element through the thickness under the face set 'zmin', and the sheet bends over the curved surface of tool 'pin'" \
   "$drawbend" drawbend-deck --through 1
 "$drawbend" drawbend-deck --through 1 --element-length 2 --draw-length 2 >one_layer.toml 2>/dev/null
 expect run "one element through the thickness" 0 "warning: .*one_layer.toml:[0-9]+: mesh: one element through the thickness" \
   "$drawbend" run one_layer.toml --out o8 --quiet --checkpoint-every 1 --halt-after-cycles 1
-expect block-deck "one element, flat floor (no warning)" 0 "^block-deck: wrote b6.toml" "$drawbend" block-deck --elements 1 --out b6.toml
+# No warning where the sheet is thicker: one element across the strip is not one through it,
+# and a flat floor bends nothing.
+for case in "drawbend-deck --across 1 --through 4" "block-deck --elements 1 --out b6.toml"; do
+  out=$("$drawbend" $case 2>&1 >/dev/null)
+  printf '| %s | no warning | %s | %s |\n' "${case%% *}" "$?" "$(printf '%s' "$out" | grep -m1 warning)"
+  if [ -n "$check" ] && printf '%s' "$out" | grep -q "one element through"; then
+    echo "FAILED: $case: a one-element warning where the sheet is not one element thick or bends over nothing"
+    failed=1
+  fi
+done
 exit $failed
