@@ -4,6 +4,7 @@
 // standard output.  `drawbend run deck.toml --out DIR` runs it; the history
 // columns friction_x_N, friction_y_N and normal_N give mu = F_t / F_N.
 // Units: mm, N, MPa, s.
+#include <filesystem>
 #include <string>
 
 #include "cli/deck_out.hpp"
@@ -11,6 +12,8 @@
 #include "cli/option_bounds.hpp"
 #include "cli/threads.hpp"
 #include "core/options.hpp"
+#include "friction/surface_law.hpp"
+#include "io/portable_paths.hpp"
 #include "sim/block_case.hpp"
 
 namespace drawbend::cli {
@@ -45,8 +48,8 @@ int block_deck_command(int argc, char** argv) {
   opt.example("drawbend block-deck --pressure 40 --speed 70 --out my-block/deck.toml");
   opt.example("drawbend run my-block/deck.toml --out my-block/run --quiet");
   using namespace bounds;  // every number range-checked as it is parsed (cli/option_bounds.hpp)
-  opt.range("pressure", 0, kPressureMPa, "MPa", true).range("speed", 0, kSpeedMMs, "mm/s", true);
-  opt.range("direction", -360, 360, "deg").range("size", 0, kLengthMM, "mm", true).range("elements", 1, kElements);
+  opt.range("pressure", kMinPressureMPa, kPressureMPa, "MPa", false).range("speed", kMinSpeedMMs, kSpeedMMs, "mm/s", false);
+  opt.range("direction", -360, 360, "deg").range("size", kMinLengthMM, kLengthMM, "mm", false).range("elements", 1, kElements);
   opt.range("mass-scaling", 1, kMassScaling).range("penalty", 0, kPenalty, "", true);
   opt.range("interval", 1, kIntervalCycles, "cycles").range("press-time", 0, kTimeS, "s", true);
   opt.range("press-ramp", 0, kTimeS, "s", true).range("slide-time", 0, kTimeS, "s", true);
@@ -54,6 +57,15 @@ int block_deck_command(int argc, char** argv) {
   if (!opt.parse(argc, argv)) return 0;
   name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
   name_input(s.surface_nodes, "--surface-nodes");
+  // --friction and --surface-nodes checked on their own, so that a problem names
+  // the option or the user's file and line, not a line of the generated deck.
+  s.friction = io::friction_argument(s.friction, std::filesystem::current_path().string());
+  if (s.friction.empty() && !s.surface_nodes.empty()) try {
+      (void)friction::load_surface_nodes(s.surface_nodes, friction::SurfaceDomain{});
+    } catch (const std::exception& e) {
+      const std::string what = e.what();  // the file gate's messages name the option already
+      throw InputError((what.rfind("--surface-nodes", 0) == 0 ? "" : "--surface-nodes: ") + what);
+    }
   return write_deck_out(deck_with_threads(sim::block_deck_text(s), threads), out, "block-deck");
 }
 

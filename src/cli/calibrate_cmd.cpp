@@ -13,6 +13,7 @@
 
 #include "cli/exit_codes.hpp"
 #include "core/csv.hpp"
+#include "core/file_gate.hpp"
 #include "core/options.hpp"
 #include "material/yld2004_fit.hpp"
 
@@ -60,6 +61,9 @@ int calibrate_command(int argc, char** argv) {
   for (double v : {w.stress, w.r, w.biaxial, w.plane_strain})
     if (!(v >= 0) || !std::isfinite(v)) throw InputError("--w-*: weights must be finite and >= 0");
   if (!(a >= 2) || !std::isfinite(a)) throw InputError("--a: the exponent must be >= 2, found " + fmt_shortest(a));
+  name_input(path, "TESTS.csv");  // read through the file gate (core/file_gate.hpp)
+  ensure_writable_dir(out, "--out");  // checked before any work: exit 2, not a file-system error after the fit
+  if (!compare.empty()) name_input(compare, "--compare");
   const material::SheetTests t = material::load_sheet_tests(path);
   const double r0 = t.r_value(0), r45 = t.r_value(45), r90 = t.r_value(90);
   const double s45 = t.uniaxial_stress(45), s90 = t.uniaxial_stress(90), sb = t.biaxial_stress();
@@ -84,7 +88,6 @@ int calibrate_command(int argc, char** argv) {
     published = material::load_yld2004_toml(compare).normalised();
     models.push_back({"yld2004_published", &published, nullptr});
   }
-  std::filesystem::create_directories(out);
   const auto rows = material::calibration_table(t, w, models, fitted);
   std::ostringstream csv;
   for (const auto& r : rows) {

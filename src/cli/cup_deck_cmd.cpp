@@ -13,6 +13,7 @@
 #include "cli/threads.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
+#include "friction/surface_law.hpp"
 #include "sim/cup_case.hpp"
 
 namespace drawbend::cli {
@@ -43,13 +44,22 @@ int cup_deck_command(int argc, char** argv) {
   opt.example("drawbend cup-deck --die-radius 8 --stroke 1 --cycles 600 > my-cup.toml");
   opt.example("drawbend run my-cup.toml --out my-cup --quiet");
   using namespace bounds;  // every number range-checked as it is parsed (cli/option_bounds.hpp)
-  opt.range("speed", 0, kSpeedMMs, "mm/s", true).range("stroke", 0, kLengthMM, "mm", true);
+  opt.range("speed", kMinSpeedMMs, kSpeedMMs, "mm/s", false).range("stroke", kMinLengthMM, kLengthMM, "mm", false);
   opt.range("cycles", 100, 1e8).range("refine", 1, 8);
-  opt.range("punch-radius", 0, kLengthMM, "mm", true, false, true).range("die-radius", 0, kLengthMM, "mm", true, false, true);
+  opt.range("punch-radius", kMinLengthMM, kLengthMM, "mm", false, false, true).range("die-radius", kMinLengthMM, kLengthMM, "mm", false, false, true);
   if (!opt.parse(argc, argv)) return 0;
   name_input(s.deck, "--base");  // the file gate names the option (core/file_gate.hpp)
   name_input(s.material, "--material");
   name_input(s.friction, "--friction");
+  // The nodes file checked on its own: a problem names --friction and the file's
+  // line, not the base deck's contact lines (three times, before issue 53).
+  if (!s.friction.empty() && s.friction != "none") try {
+      (void)friction::load_surface_nodes(s.friction, friction::SurfaceDomain{});
+    } catch (const std::exception& e) {
+      const std::string what = e.what();  // the file gate's messages name the option already
+      throw InputError((what.rfind("--friction", 0) == 0 ? "" : "--friction: ") + what +
+                       " (expected none or a Table 6.1-format nodes CSV)");
+    }
   check_threads(threads);
   s.cycles = cycles;
   if (!(s.speed > 0)) throw std::invalid_argument("--speed: expected a punch speed > 0 mm/s, found " + fmt(s.speed));

@@ -19,7 +19,15 @@ namespace drawbend::cli {
 /// deck that `run` then refuses (issue 53: drawbend-deck wrote r0 = -1).
 inline const std::string& checked_deck(const std::string& text, const std::string& command) {
   try {
-    (void)io::parse_deck(text, command + ".toml");
+    // Its warnings (e.g. one element through the thickness) are said now, without the
+    // generated deck's line numbers, which the user never sees.
+    for (const auto& w : io::parse_deck(text, command + ".toml").warnings) {
+      const std::string gen = command + ".toml:";
+      std::string say = w;
+      if (const std::size_t at = say.find(": ", gen.size()); say.rfind(gen, 0) == 0 && at != std::string::npos)
+        say = say.substr(at + 2);
+      std::cerr << "warning: " << command << " (the deck it writes): " << say << "\n";
+    }
   } catch (const InputError& e) {
     throw InputError(std::string(e.what()) + "\n(" + command + " refuses to write a deck that `drawbend run` would refuse)");
   }

@@ -131,10 +131,10 @@ int model_loop_command(int argc, char** argv, const char* name) {
   opt.example("drawbend model-loop data/measured/model_loop_points.csv --out my-model-loop --candidates offset "
               "--element-length 2 --across 1    # again: the finished runs are read back");
   using namespace bounds;  // every number range-checked as it is parsed (cli/option_bounds.hpp)
-  opt.range("fit-pin", 0, kLengthMM, "mm", true).range("min-gain", 0, 1);
-  opt.range("thickness", 0, kThicknessMM, "mm", true).range("width", 0, kLengthMM, "mm", true);
-  opt.range("speed", 0, kSpeedMMs, "mm/s", true).range("mass-scaling", 1, kMassScaling, "", false, false, true);
-  opt.range("element-length", 0, kLengthMM, "mm", true).range("across", 1, kElements);
+  opt.range("fit-pin", kMinLengthMM, kLengthMM, "mm", false).range("min-gain", 0, 1);
+  opt.range("thickness", kMinThicknessMM, kThicknessMM, "mm", false).range("width", kMinLengthMM, kLengthMM, "mm", false);
+  opt.range("speed", kMinSpeedMMs, kSpeedMMs, "mm/s", false).range("mass-scaling", 1, kMassScaling, "", false, false, true);
+  opt.range("element-length", kMinLengthMM, kLengthMM, "mm", false).range("across", 1, kElements);
   if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
     if (!opt.parse(argc, argv)) return 0;
     throw InputError(me + ": missing DATA.csv (columns pin_diameter_mm, back_tension_N, bending_force_N; --help lists "

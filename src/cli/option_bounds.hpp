@@ -18,4 +18,13 @@ inline constexpr double kMassScaling = 1e9;  ///< [limits] max_mass_factor's def
 inline constexpr double kPenalty = 1e6;      ///< contact penalty scale (dimensionless, 0.1 by default)
 inline constexpr double kIntervalCycles = 1e6;  ///< a friction law's update interval [cycles]
 
+// The smallest values (issue 53: a pin of 1e-300 mm or a die radius of
+// 1e-300 mm was written into a deck with exit 0, and a sheet of 1e-300 mm
+// was refused only by a line of the generated deck).  Below them a value is a
+// unit error (m for mm, Pa for MPa), not a laboratory test.
+inline constexpr double kMinLengthMM = 0.01;     ///< [mm] 10 um: thinner than any foil, finer than any FE mesh of a sheet
+inline constexpr double kMinThicknessMM = 0.01;  ///< [mm] the same (aluminium foil is 0.006 to 0.2 mm)
+inline constexpr double kMinSpeedMMs = 1e-3;     ///< [mm/s] 1 um/s (the thesis's slowest test: 2.5 mm/s)
+inline constexpr double kMinPressureMPa = 1e-3;  ///< [MPa] 1 kPa (less than a die's own weight on the strip)
+
 }  // namespace drawbend::cli::bounds

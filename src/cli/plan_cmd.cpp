@@ -12,6 +12,7 @@
 //   drawbend plan my.toml
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -45,13 +46,20 @@ double measured_cpu(const fs::path& dir) {
   } catch (const std::exception&) {
     return NAN;
   }
-  int threads = 1;
+  // A wall time that no run can have (not a number, <= 1 ms, above a year) is
+  // not a measurement: said and left out, not divided into a ratio of 1e298.
+  if (!std::isnan(wall) && !(wall >= 1e-3 && wall <= 3.2e7)) {
+    std::cerr << "warning: " << (dir / "summary.csv").string() << ": wall_time " << fmt_shortest(wall)
+              << " s is not a run's wall time (expected 1e-3 to 3.2e7 s); that run's measurement is left out\n";
+    return NAN;
+  }
+  long threads = 1;
   if (fs::is_regular_file(dir / "run.log", ec)) {
     std::istringstream in(read_file((dir / "run.log").string()));
     for (std::string l; std::getline(in, l);)
-      if (l.rfind("  threads: ", 0) == 0) threads = std::max(1, std::atoi(l.c_str() + 11));
+      if (l.rfind("  threads: ", 0) == 0) threads = std::clamp(std::strtol(l.c_str() + 11, nullptr, 10), 1L, 4096L);
   }
-  return wall * threads;
+  return wall * static_cast<double>(threads);
 }
 
 void collect(const fs::path& p, std::vector<fs::path>& decks) {

@@ -45,6 +45,11 @@ int run_main(int argc, char** argv) {
     return 2;
   }
   const std::string deck_path = argv[1];
+  if (!help && deck_path.rfind("--", 0) == 0) {  // `drawbend run --out DIR deck.toml`: the deck comes first
+    std::cerr << "input error: drawbend run: expected CASE.toml first, found the option '" << clip_for_message(deck_path)
+              << "' (drawbend run CASE.toml --out DIR; --help lists the options)\n";
+    return 2;
+  }
   io::RunOptions ro;
   bool quiet = false;
   std::string every;

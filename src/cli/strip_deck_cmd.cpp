@@ -4,6 +4,7 @@
 // --out or standard output.  `drawbend run deck.toml --out DIR` runs it; the
 // history columns die_tangential_N and die_normal_N give mu = F_t / F_N.
 // Units: mm, N, MPa, s.
+#include <filesystem>
 #include <string>
 
 #include "cli/deck_out.hpp"
@@ -11,6 +12,7 @@
 #include "cli/option_bounds.hpp"
 #include "cli/threads.hpp"
 #include "core/options.hpp"
+#include "io/portable_paths.hpp"
 #include "sim/strip_draw_case.hpp"
 
 namespace drawbend::cli {
@@ -48,9 +50,9 @@ int strip_deck_command(int argc, char** argv) {
   opt.example("drawbend strip-deck --pressure 20 --speed 4 --out my-strip/deck.toml");
   opt.example("drawbend run my-strip/deck.toml --out my-strip/run --quiet");
   using namespace bounds;  // every number range-checked as it is parsed (cli/option_bounds.hpp)
-  opt.range("pressure", 0, kPressureMPa, "MPa", true).range("speed", 0, kSpeedMMs, "mm/s", true);
-  opt.range("slide", 0, kLengthMM, "mm", true).range("length", 0, kLengthMM, "mm", true);
-  opt.range("width", 0, kLengthMM, "mm", true).range("thickness", 0, kThicknessMM, "mm", true);
+  opt.range("pressure", kMinPressureMPa, kPressureMPa, "MPa", false).range("speed", kMinSpeedMMs, kSpeedMMs, "mm/s", false);
+  opt.range("slide", kMinLengthMM, kLengthMM, "mm", false).range("length", kMinLengthMM, kLengthMM, "mm", false);
+  opt.range("width", kMinLengthMM, kLengthMM, "mm", false).range("thickness", kMinThicknessMM, kThicknessMM, "mm", false);
   opt.range("nx", 1, kElements).range("ny", 1, kElements).range("nz", 1, kElements);
   opt.range("interval", 1, kIntervalCycles, "cycles").range("time-step", 0, 1e-2, "s", true, false, true);
   opt.range("die-mass", 0, 1e3, "t", true, false, true).range("press-time", 0, kTimeS, "s", true);
@@ -58,6 +60,8 @@ int strip_deck_command(int argc, char** argv) {
   if (!opt.parse(argc, argv)) return 0;
   name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
   name_input(s.stribeck_table, "--stribeck-table");
+  // --friction checked on its own (io/portable_paths.hpp): a problem names the option, not the generated deck.
+  s.friction = io::friction_argument(s.friction, std::filesystem::current_path().string());
   return write_deck_out(deck_with_threads(sim::strip_draw_deck_text(s), threads), out, "strip-deck");
 }
 

@@ -1,5 +1,7 @@
 #include "core/options.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -95,6 +97,7 @@ std::string Options::usage() const {
 }
 
 bool Options::parse(int argc, char** argv) {
+  std::vector<std::string> seen;  // each option once: a second value is a typing error, not "the last wins"
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     if (a == "--help" || a == "-h") {
@@ -113,8 +116,17 @@ bool Options::parse(int argc, char** argv) {
     for (auto& o : opts_)
       if (o.name == name) opt = &o;
     if (!opt) throw std::invalid_argument("unknown option '--" + clip_for_message(name) + "' (see --help)");
+    if (std::find(seen.begin(), seen.end(), name) != seen.end())
+      throw std::invalid_argument("option '--" + name + "' given twice (give each option once)");
+    seen.push_back(name);
     if (!opt->flag && eq == std::string::npos) {
       if (i + 1 >= argc) throw std::invalid_argument("option '--" + name + "' needs a value");
+      // "--out --quiet": the next word is an option, not this one's value
+      // (a value that starts with "--" is written --name=VALUE).
+      const std::string next = argv[i + 1];
+      if (next.size() > 2 && next.rfind("--", 0) == 0 && std::isalpha(static_cast<unsigned char>(next[2])))
+        throw std::invalid_argument("option '--" + name + "' needs a value, found the option '" +
+                                    clip_for_message(next) + "' (write --" + name + "=VALUE for a value starting with --)");
       value = argv[++i];
     }
     opt->set(value);

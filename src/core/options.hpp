@@ -1,7 +1,10 @@
 #pragma once
 // Command-line options in the style of the MFEM examples: every parameter has
 // a default and a help text, `--help` lists them, unknown options are an error,
-// and `echo()` returns "name = value" lines for output-file headers.
+// an option given twice is an error (not "the last wins"), an option where a
+// value belongs (`--out --quiet`) is an error (a value starting with "--" is
+// written --name=VALUE), and `echo()` returns "name = value" lines for
+// output-file headers.
 #include <functional>
 #include <string>
 #include <vector>

@@ -13,4 +13,11 @@ namespace drawbend {
 /// apart in its first cycles.
 inline constexpr double kMaxStripForceN = 1e6;
 
+/// The largest pin diameter of a draw-bend test [mm]: the thesis's pins are
+/// 3.2 to 25.4 mm and the largest test rig takes 300 mm tooling; beyond 1000
+/// mm (cli/option_bounds.hpp's kLengthMM) a value is a unit or typing error,
+/// and as a model-loop FE run it would mesh a wrap of kilometres (a pin of
+/// 1e300 mm ran past every time limit before issue 53).
+inline constexpr double kMaxPinDiameterMM = 1000;
+
 }  // namespace drawbend

@@ -11,6 +11,7 @@
 #include "core/csv.hpp"
 #include "core/hash.hpp"
 #include "core/input_problems.hpp"
+#include "core/run_output.hpp"
 #include "fe/strip.hpp"
 #include "io/case_reduction.hpp"
 #include "io/deck_context.hpp"
@@ -207,6 +208,15 @@ void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out) {
         c.bad(ht, "output.history.kind",
               "expected reaction, applied, displacement, strain, tool_force or tool_offset, found \"" + sig.kind + "\"");
       if (sig.component > 2) c.bad(ht, "output.history.component", "expected 0, 1 or 2, found " + std::to_string(sig.component));
+      // Each name is a column of history.csv: unique, and none of the run's own
+      // columns (a name twice ended the run with exit 3 from the CSV writer).
+      const auto own = run_output::run_history_columns();
+      if (ht.get("name") && sig.name.empty()) c.bad(*ht.get("name"), "output.history.name", "expected a column name, found an empty one");
+      for (const auto& o : out.history)
+        if (!sig.name.empty() && o.name == sig.name)
+          c.bad(*ht.get("name"), "output.history.name", "expected a unique column name, found '" + sig.name + "' twice");
+      if (std::find(own.begin(), own.end(), sig.name) != own.end())
+        c.bad(*ht.get("name"), "output.history.name", "'" + sig.name + "' is a column every run writes; choose another name");
       out.history.push_back(sig);
     }
 }
@@ -275,6 +285,7 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
   if (problems.empty()) {
     problems.attempt([&] { check_cost(c, root, d); });
     material_warnings(c, root, d);
+    mesh_warnings(c, root, d);
   }
   problems.throw_if_any();
   return d;

@@ -34,4 +34,12 @@ void check_cost(const DeckContext& c, const toml::table& root, Deck& d);
 /// Material values outside the range of real materials: warnings in d.warnings.
 void material_warnings(const DeckContext& c, const toml::table& root, Deck& d);
 
+/// One element through the thickness in a bending case (issue 53), a warning
+/// in d.warnings at the [mesh] line: the mesh is one layer thick (every
+/// element has two opposite faces on the mesh's surface, whatever the mesh
+/// kind) and a tool has a curved surface (a cylinder or a torus: a pin, a die
+/// or punch radius) that the sheet bends over.  Meshes above 2e6 elements are
+/// not examined (the face count needs 48 bytes per element).
+void mesh_warnings(const DeckContext& c, const toml::table& root, Deck& d);
+
 }  // namespace drawbend::io

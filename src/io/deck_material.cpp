@@ -58,8 +58,7 @@ std::shared_ptr<const material::Material> make_material(const DeckContext& c, co
 // friction = { law = "surface", nodes = "table_6_1.csv" | lines = "table_5_16.csv",
 //              p_min, p_max, v_min, v_max (nodes only; default Sec. 6.3), interval = 100 }
 static std::shared_ptr<friction::FrictionLaw> make_surface_friction(const DeckContext& c, const toml::table& t,
-                                                                    const std::string& dir) {
-  const std::string w = "contact.friction";
+                                                                    const std::string& dir, const std::string& w) {
   const std::size_t before = c.count();
   c.allowed(t, w, {"law", "nodes", "lines", "interval", "p_min", "p_max", "v_min", "v_max"});
   const int interval = c.count_of(t, "interval", w, 100, 1);
@@ -94,8 +93,7 @@ static std::shared_ptr<friction::FrictionLaw> make_surface_friction(const DeckCo
 }
 
 std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const toml::table& t,
-                                                     const std::string& dir) {
-  const std::string w = "contact.friction";
+                                                     const std::string& dir, const std::string& w) {
   const std::size_t before = c.count();
   const std::string l = c.str(t, "law", w);
   if (l == "coulomb") {
@@ -105,7 +103,7 @@ std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const
     if (c.count() > before) return nullptr;
     return std::make_shared<friction::Coulomb>(mu);
   }
-  if (l == "surface") return make_surface_friction(c, t, dir);
+  if (l == "surface") return make_surface_friction(c, t, dir, w);
   if (l != "stribeck")
     c.fail(t.get("law") ? *t.get("law") : static_cast<const toml::node&>(t), w + ".law",
            "expected \"coulomb\", \"stribeck\" or \"surface\", found \"" + l + "\"");

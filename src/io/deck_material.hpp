@@ -26,8 +26,11 @@ std::shared_ptr<const material::Material> make_material(const DeckContext& c, co
 /// friction = { law = "surface", nodes = "table_6_1.csv" | lines = "table_5_16.csv", interval = 100,
 ///              p_min = 0, p_max = 80, v_min = 6.35, v_max = 101.6 }  (the mu(p, v) law of Ch. 6;
 ///              v_min/v_max only with nodes: with lines they are the outer lines' speeds)
+/// `w` names the table in messages ("contact.friction" in a deck; a builder's
+/// --friction checked on its own names the option or its file's [friction]).
 std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const toml::table& t,
-                                                     const std::string& deck_dir);
+                                                     const std::string& deck_dir,
+                                                     const std::string& w = "contact.friction");
 
 /// [mesh] kind = "quarter_disk": radius, thickness [mm], core, ring, through
 /// (element counts), core_fraction (fe/disk.hpp).  Problems are recorded in

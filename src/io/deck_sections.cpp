@@ -226,6 +226,10 @@ void read_steps(const DeckContext& c, const toml::table& root, fe::Model& m, boo
       const std::string w = "step '" + s.name + "'";
       c.allowed(t, w, {"name", "duration", "damping", "friction", "quasi_static", "fixed", "velocity", "rotation",
                        "force", "tool_drive"});
+      for (const auto& other : m.steps)  // messages and logs name a step by its name
+        if (other.name == s.name)
+          c.bad(t.get("name") ? *t.get("name") : static_cast<const toml::node&>(t), w + ".name",
+                "expected a unique step name, found it twice");
       s.duration = c.positive(t, "duration", w);
       s.damping = c.in_range(t, "damping", w, 0.0, 0.0);
       s.friction = c.boolean(t, "friction", w, true);

@@ -10,7 +10,10 @@
 
 #include "core/quote.hpp"
 #include "core/csv.hpp"
+#include "core/input_problems.hpp"
 #include "core/toml_read.hpp"
+#include "io/deck_context.hpp"
+#include "io/deck_material.hpp"
 
 namespace drawbend::io {
 
@@ -67,6 +70,19 @@ std::string inline_text(const toml::table& t) { return value_text(t); }
 
 }  // namespace
 
+namespace {
+/// The law checked on its own, as the deck reader checks [contact.friction]
+/// (io/deck_material.hpp), so that a problem names where the user wrote it
+/// ("--friction:1: friction.mu", or friction_model.toml:7: friction.p_max; a
+/// nodes file's own file:line) and not a line of the deck built from it.
+void check_friction(const toml::table& t, const std::string& where, const std::string& dir) {
+  InputProblems problems(where);
+  const DeckContext c(where, problems);
+  problems.attempt([&] { (void)make_friction(c, t, dir, "friction"); });
+  problems.throw_if_any();
+}
+}  // namespace
+
 std::string friction_argument(const std::string& text, const std::string& base_dir) {
   if (text.empty()) return text;
   const std::size_t first = text.find_first_not_of(" \t");
@@ -74,6 +90,7 @@ std::string friction_argument(const std::string& text, const std::string& base_d
     toml::table root = parse_toml("friction = " + text, "--friction");
     auto* t = root["friction"].as_table();
     if (!t) throw InputError("--friction: expected a TOML inline table such as { law = \"coulomb\", mu = 0.1 }");
+    check_friction(*t, "--friction", base_dir);
     return absolutise(*t, fs::path(base_dir)) ? inline_text(*t) : text;
   }
   const fs::path file = fs::path(base_dir) / text;
@@ -83,6 +100,7 @@ std::string friction_argument(const std::string& text, const std::string& base_d
   toml::table root = parse_toml_file(file.string());
   auto* t = root["friction"].as_table();
   if (!t) throw InputError(file.string() + ": expected a [friction] table (the loop's friction_model.toml has one)");
+  check_friction(*t, file.string(), file.parent_path().string());
   absolutise(*t, file.parent_path());
   return inline_text(*t);
 }

@@ -36,7 +36,9 @@
 
 #include "core/file_gate.hpp"
 #include "core/csv.hpp"
+#include "core/input_problems.hpp"
 #include "core/toml_read.hpp"
+#include "io/deck_context.hpp"
 #include "friction/surface_law.hpp"
 #include "loop/export_detail.hpp"
 
@@ -223,38 +225,69 @@ void set_list_options(ExportOptions& o, const std::string& parts, const std::str
   }
 }
 
+namespace {
+// The domain a friction model may state: contact pressures up to 1e4 MPa (ten
+// times the hardest tool steel's yield) and sliding speeds up to 1e4 mm/s (10
+// m/s, above any press), the bounds of the builders' options (cli/option_bounds.hpp).
+constexpr double kMaxPressureMPa = 1e4;
+constexpr double kMaxSpeedMMs = 1e4;
+}  // namespace
+
 ExportModel read_friction_model(const std::string& path) {
+  // Every key read as the deck reader reads [contact.friction] (io/deck_context.hpp):
+  // file:line: key messages, every problem of the file in one message, a wrong
+  // type or an unknown key an error rather than a silent default.
   const toml::table t = parse_toml_file(path);
-  const auto* f = t["friction"].as_table();
-  if (!f) throw InputError(path + ": no [friction] table (write it with `drawbend loop`)");
-  const auto law = (*f)["law"].value<std::string>();
-  if (!law || *law != "surface")
-    throw InputError(path + ": [friction] law must be \"surface\" (the nine-node surface) for export");
-  const auto nodes = (*f)["nodes"].value<std::string>();
-  if (!nodes) throw InputError(path + ": [friction] has no 'nodes' file");
+  InputProblems problems(path);
+  const io::DeckContext c(path, problems);
+  c.allowed(t, "friction_model", {"friction", "model"});
+  const toml::table* f = nullptr;
+  problems.attempt([&] { f = c.table(t, "friction", "friction_model", true); });
+  if (!f) {
+    problems.throw_if_any();
+    throw InputError(path + ": no [friction] table (write it with `drawbend loop`)");
+  }
+  const std::string w = "friction";
+  c.allowed(*f, w, {"law", "nodes", "interval", "p_min", "p_max", "v_min", "v_max"});
+  const std::string law = c.str(*f, "law", w);
+  if (f->get("law") && law != "surface" && c.count() == 0)
+    c.bad(*f->get("law"), w + ".law", "expected \"surface\" (the nine-node surface) for export, found \"" + law + "\"");
+  c.count_of(*f, "interval", w, 100, 1);
   friction::SurfaceDomain d;
-  d.p_min = (*f)["p_min"].value<double>().value_or(d.p_min);
-  d.p_max = (*f)["p_max"].value<double>().value_or(d.p_max);
-  d.v_min = (*f)["v_min"].value<double>().value_or(d.v_min);
-  d.v_max = (*f)["v_max"].value<double>().value_or(d.v_max);
-  const std::filesystem::path file = std::filesystem::path(path).parent_path() / *nodes;
+  d.p_min = c.num(*f, "p_min", w, d.p_min);
+  d.p_max = c.num(*f, "p_max", w, d.p_max);
+  d.v_min = c.num(*f, "v_min", w, d.v_min);
+  d.v_max = c.num(*f, "v_max", w, d.v_max);
+  const bool read = !std::isnan(d.p_min + d.p_max + d.v_min + d.v_max);  // else the value's problem is recorded
+  if (read && !(d.p_min >= 0 && d.p_min < d.p_max && d.p_max <= kMaxPressureMPa))
+    c.bad(*f, w, "expected 0 <= p_min < p_max <= " + fmt_shortest(kMaxPressureMPa) + " [MPa], found " +
+                     fmt_shortest(d.p_min) + " and " + fmt_shortest(d.p_max));
+  if (read && !(d.v_min > 0 && d.v_min < d.v_max && d.v_max <= kMaxSpeedMMs))
+    c.bad(*f, w, "expected 0 < v_min < v_max <= " + fmt_shortest(kMaxSpeedMMs) + " [mm/s], found " +
+                     fmt_shortest(d.v_min) + " and " + fmt_shortest(d.v_max));
+  const std::string nodes = c.str(*f, "nodes", w);
   ExportModel m;
-  name_input(file.string(), path + ": [friction] nodes");  // read through the file gate (core/file_gate.hpp)
-  std::tie(m.rd, m.td) = friction::load_surface_nodes(file.string(), d);
+  if (const auto* mt = c.table(t, "model", "model", false)) {
+    c.allowed(*mt, "model", {"data", "lubricant", "td_copied_from_rd", "rd_copied_from_td"});
+    m.data = c.str(*mt, "data", "model", std::string());
+    m.lubricant = c.str(*mt, "lubricant", "model", std::string());
+    m.td_copied = c.boolean(*mt, "td_copied_from_rd", "model", false);
+    m.rd_copied = c.boolean(*mt, "rd_copied_from_td", "model", false);
+  }
+  problems.throw_if_any();
+  if (nodes.empty()) c.fail(*f->get("nodes"), w + ".nodes", "expected the name of the nodes CSV, found an empty string");
+  const std::filesystem::path file = std::filesystem::path(path).parent_path() / nodes;
+  const std::string key = c.where(*f->get("nodes"), w + ".nodes");
+  name_input(file.string(), key);  // read through the file gate (core/file_gate.hpp)
   try {
+    std::tie(m.rd, m.td) = friction::load_surface_nodes(file.string(), d);
     m.rd.validate();
+    m.td.validate();
   } catch (const std::invalid_argument& e) {
-    throw InputError(path + ": " + e.what());
+    throw InputError(key + ": " + e.what());
   }
   m.source = path;
-  if (const auto* mt = t["model"].as_table()) {
-    m.data = (*mt)["data"].value<std::string>().value_or("");
-    m.lubricant = (*mt)["lubricant"].value<std::string>().value_or("");
-    m.td_copied = (*mt)["td_copied_from_rd"].value<bool>().value_or(false);
-    m.rd_copied = (*mt)["rd_copied_from_td"].value<bool>().value_or(false);
-  } else {
-    m.td_copied = m.rd.mu == m.td.mu;  // no [model] table: identical directions, TD taken as the copy
-  }
+  if (!t.get("model")) m.td_copied = m.rd.mu == m.td.mu;  // no [model] table: identical directions, TD taken as the copy
   return m;
 }
 

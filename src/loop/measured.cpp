@@ -223,6 +223,9 @@ Dataset parse_measured(const std::string& text, const std::string& path) {
     for (const auto& e : d.extra_columns) s.extra.push_back(cell(e));
     if (d.problems.size() == before) {  // physical plausibility of parsed values
       if (s.pin_d_mm <= 0) problem(lineno, "pin_diameter_mm", "pin diameter must be positive");
+      if (s.pin_d_mm > kMaxPinDiameterMM)
+        problem(lineno, "pin_diameter_mm", "expected a pin diameter up to " + fmt(kMaxPinDiameterMM) +
+                                               " mm (a draw-bend pin; check the units), found " + fmt(s.pin_d_mm) + " mm");
       if (s.speed_mm_s <= 0)
         problem(lineno, "speed_mm_s", "expected a sliding speed > 0 mm/s, found " + fmt(s.speed_mm_s) +
                                           " (a test without sliding measures no friction)");

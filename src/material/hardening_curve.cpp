@@ -12,6 +12,8 @@ namespace drawbend::material {
 
 namespace {
 
+constexpr double kMaxFlowStressMPa = 1e5;
+
 // Checks the requirements of HardeningCurve; `where(i)` names point i in messages.
 void validate(const std::vector<double>& x, const std::vector<double>& y,
               const std::function<std::string(std::size_t)>& where, const std::string& source) {
@@ -26,6 +28,12 @@ void validate(const std::vector<double>& x, const std::vector<double>& y,
       throw InputError(where(i) + ": plastic strain must increase strictly, found " + fmt(x[i], 17) +
                        " after " + fmt(x[i - 1], 17));
     if (!(y[i] > 0.0)) throw InputError(where(i) + ": true stress must be positive, found " + fmt(y[i], 17));
+    // 1e5 MPa (100 GPa) is above the modulus of aluminium and twenty times the
+    // strongest steels' flow stress (~5 GPa): a stress beyond it is in other
+    // units (Pa, kPa), and as a flow stress it never yields (issue 53: 1e308 was accepted).
+    if (y[i] > kMaxFlowStressMPa)
+      throw InputError(where(i) + ": true stress " + fmt(y[i], 6) + " MPa is above " + fmt(kMaxFlowStressMPa, 6) +
+                       " MPa, beyond any metal (check the units: MPa)");
     if (i > 0 && y[i] < y[i - 1])
       throw InputError(where(i) + ": true stress must not decrease (no softening), found " + fmt(y[i], 17) +
                        " after " + fmt(y[i - 1], 17));

@@ -207,6 +207,17 @@ SheetTests load_sheet_tests(const std::string& path) {
       if (t.text(row, col).empty()) return;
       const double v = t.number(row, col);
       if (!(v > 0)) throw InputError(t.where(row, col) + ": must be > 0, found " + fmt_shortest(v));
+      // Beyond any sheet metal: yield-stress ratios to RD lie near 0.7 to 1.4 and
+      // r-values near 0.2 to 3; a ratio outside [0.1, 10] or an r-value outside
+      // Hill'48's [0.001, 1000] (material/hill48.hpp) is a unit or typing error
+      // (a stress in MPa instead of a ratio), which the fit would turn into a
+      // meaningless yield surface (before issue 53 a ratio 1e300 gave exit 0).
+      const bool ratio = std::string(col) == "stress_ratio";
+      const double lo = ratio ? 0.1 : 1e-3, hi = ratio ? 10 : 1e3;
+      if (!(v >= lo && v <= hi))
+        throw InputError(t.where(row, col) + ": expected " + (ratio ? "a yield-stress ratio to RD" : "an r-value") +
+                         " in [" + fmt_shortest(lo) + ", " + fmt_shortest(hi) + "] (sheet metals: " +
+                         (ratio ? "0.7 to 1.4" : "0.2 to 3") + "), found " + fmt_shortest(v));
       for (const auto& d : out.data)
         if (d.kind == k && std::abs(d.angle_deg - angle) < 1e-9)
           throw InputError(t.where(row, col) + ": the same test is given twice (also " + d.where + ")");

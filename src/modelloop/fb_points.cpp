@@ -27,6 +27,9 @@ std::vector<FbPoint> read_fb_points(const std::string& csv_path) {
       continue;
     }
     if (p.pin_mm <= 0) problems.push_back(t.where(r, "pin_diameter_mm") + ": must be > 0 mm");
+    if (p.pin_mm > kMaxPinDiameterMM)
+      problems.push_back(t.where(r, "pin_diameter_mm") + ": expected a pin diameter up to " + fmt(kMaxPinDiameterMM) +
+                         " mm (a draw-bend pin; check the units), found " + fmt(p.pin_mm) + " mm");
     if (p.back_tension_N <= 0) problems.push_back(t.where(r, "back_tension_N") + ": must be > 0 N");
     if (p.bending_N <= 0) problems.push_back(t.where(r, "bending_force_N") + ": must be > 0 N");
     // The same bound as `drawbend loop` (core/strip_limits.hpp): before it, a

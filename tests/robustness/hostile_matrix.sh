@@ -1,0 +1,194 @@
+#!/usr/bin/env bash
+# Issue 53: every command as a careless user and a hostile script would call
+# it, one row per class of input (the classes that the option and entry-point
+# matrices do not cover): an option given twice, an option where a value
+# belongs, units written into a value, Windows line endings, duplicated TOML
+# keys and tables, wrong types and unknown keys in a friction model, absurd
+# values in the CSV tables (a flow stress of 1e308 MPa, a stress ratio of
+# 1e300, a wall time of 1e-300 s), unwritable output folders, and a builder's
+# --friction error that must name the option or the user's file.  Each case
+# states the exit code and a pattern the first message line must match.
+# Prints one table row per case:  | command | class | exit | first line |
+# With --check, exits 1 unless every case matched.
+# Usage: hostile_matrix.sh DRAWBEND WORKDIR [--check]
+set -u
+cap_memory() { [ -n "${ASAN_OPTIONS:-}" ] || ulimit -v 2000000; }
+drawbend=$1 work=$2 check=${3:-}
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+limit=${HOSTILE_MATRIX_SECONDS:-60}
+rm -rf "$work"
+mkdir -p "$work"
+cd "$work" || exit 1
+deck=$here/decks/restart_block.toml
+failed=0
+# expect LABEL CLASS RC PATTERN CMD...: the exit code must be RC and PATTERN
+# (grep -E) must match a line of the output (the table shows the first line
+# that starts with input error / error / warning / numerical fault).
+expect() {
+  local label=$1 class=$2 want=$3 pattern=$4
+  shift 4
+  local out rc first
+  out=$( (cap_memory; timeout -k 5 "$limit" "$@") 2>&1 </dev/null)
+  rc=$?
+  first=$(printf '%s\n' "$out" | grep -a -m1 -E '^(input error|numerical fault|error|data problem|warning)' | cut -c1-300)
+  [ -z "$first" ] && first=$(printf '%s\n' "$out" | grep -a -m1 . | cut -c1-300)
+  printf '| %s | %s | %s | %s |\n' "$label" "$class" "$rc" "${first//|/\\|}"
+  if [ -n "$check" ]; then
+    local hay=$out  # a file with several problems: "N problems in FILE:" first, then each
+    if [ "$rc" != "$want" ] || ! printf '%s\n' "$hay" | grep -a -qE -- "$pattern"; then
+      echo "FAILED: $label ($class): exit $rc, expected $want and a message matching: $pattern"
+      failed=1
+    fi
+  fi
+}
+
+# The inputs.
+sed 's/$/\r/' "$deck" >deck_crlf.toml
+{ cat "$deck"; printf '\n[case]\nname = "again"\n'; } >dup_table.toml
+awk '/^duration = / && !d { print; print "duration = 1.0"; d = 1; next } { print }' "$deck" >dup_key.toml
+sed '0,/^E = .*/s//E = "70000 MPa"/' "$deck" >units.toml
+printf 'plastic_strain,true_stress_MPa\n0,1e300\n0.1,1e308\n' >curve_huge.csv
+printf 'plastic_strain,true_stress_MPa\r\n0,100\r\n0.1,150\r\n' >curve_crlf.csv
+printf 'node,mu_RD,mu_TD\n1,0.1,0.1\n' >nodes_short.csv
+mkdir -p model
+grep -v '^#' "$root/data/thesis/table_6_1.csv" >model/nodes.csv
+fm() { printf '[friction]\nlaw = "surface"\nnodes = "nodes.csv"\n%b' "$2" >"model/$1.toml"; }
+fm units 'p_min = "0 MPa"\n'
+fm unknown 'colour = 1\n'
+fm reversed 'p_min = 80.0\np_max = 0.0\n'
+fm huge 'v_max = 1e300\n'
+fm good 'p_min = 0.0\np_max = 80.0\nv_min = 6.35\nv_max = 101.6\n'
+sed 's/$/\r/' model/good.toml >model/crlf.toml
+printf 'test,angle_deg,stress_ratio,r_value\r\nuniaxial,0,1.0,0.7\r\nuniaxial,45,0.98,0.6\r\nuniaxial,90,1.01,0.8\r\nbalanced_biaxial,,1.0,\r\n' >cal_crlf.csv
+printf 'test,angle_deg,stress_ratio,r_value\nuniaxial,0,1.0,0.7\nuniaxial,45,1e300,0.6\nuniaxial,90,1.01,0.8\n' >cal_huge.csv
+mkdir -p runs/a
+cp "$deck" runs/a/deck.toml
+printf 'quantity,value\nwall_time,1e-300\n' >runs/a/summary.csv
+printf 'pin_diameter_mm,back_tension_N,bending_force_N\r\n12.7,1000,200\r\n25.4,1000,150\r\n' >ml_crlf.csv
+
+echo "| command | class | exit | first line of the message |"
+echo "|---|---|---|---|"
+# Command-line classes, on every command that takes options.
+# COMMAND, an option given twice (two values), and a string option left without its value.
+while read -r cmd twice v1 v2 bare; do
+  extra=
+  [ "$cmd" = plan ] && extra=$deck
+  expect "$cmd" "option twice" 2 "option '--$twice' given twice" "$drawbend" $cmd $extra --$twice $v1 --$twice $v2
+  expect "$cmd" "option as a value" 2 "option '--$bare' needs a value, found the option '--$twice'" "$drawbend" $cmd $extra --$bare --$twice $v1
+done <<'LIST'
+drawbend-deck threads 1 2 name
+block-deck threads 1 2 name
+strip-deck threads 1 2 hardening
+cup-deck refine 1 2 base
+synth seed 1 2 out
+plan nodes 1 2 nodes
+LIST
+expect run "option twice" 2 "--out' given twice" "$drawbend" run "$deck" --out o1 --out o2 --quiet
+expect run "option as a value" 2 "--out' needs a value, found the option '--quiet'" "$drawbend" run "$deck" --out --quiet
+expect run "option before the deck" 2 "expected CASE.toml first, found the option '--out'" "$drawbend" run --out o3 "$deck"
+expect loop "option twice" 2 "--permutations' given twice" "$drawbend" loop "$root/data/measured/thesis_drawbend.csv" --out l1 --permutations 19 --permutations 99
+expect export "option twice" 2 "--to' given twice" "$drawbend" export model/good.toml --to lsdyna --to abaqus --out e.k
+expect calibrate "option twice" 2 "--a' given twice" "$drawbend" calibrate cal_crlf.csv --out c1 --a 8 --a 6
+expect model-loop "option twice" 2 "--out' given twice" "$drawbend" model-loop ml_crlf.csv --out m1 --out m2
+# Vanishing dimensions (1e-300: a unit error; a pin or a die radius of 1e-300 mm was written with exit 0).
+while read -r cmd opt; do
+  pre= out=
+  case $cmd in block-deck | strip-deck) out="--out tiny.toml" ;; model-loop) pre=ml_crlf.csv out="--out m4" ;; esac
+  expect "$cmd" "$opt 1e-300" 2 "--$opt: expected (0 or )?a value in \\[0.0*1, " "$drawbend" $cmd $pre --$opt 1e-300 $out
+done <<'LIST'
+drawbend-deck pin-diameter
+drawbend-deck thickness
+drawbend-deck speed
+block-deck size
+block-deck speed
+block-deck pressure
+strip-deck thickness
+strip-deck speed
+cup-deck die-radius
+cup-deck stroke
+model-loop thickness
+LIST
+# An empty file wherever a file is read: exit 2 naming it.
+: >empty.toml
+: >empty.csv
+mkdir -p emodel
+printf '[friction]\nlaw = "surface"\nnodes = "empty.csv"\n' >emodel/friction_model.toml
+: >emodel/empty.csv
+expect run "empty deck" 2 "empty.toml" "$drawbend" run empty.toml --out o11 --quiet
+expect run "empty --restart" 2 "empty.csv" "$drawbend" run "$deck" --restart empty.csv --out o12 --quiet
+expect drawbend-deck "empty --material" 2 "empty.toml" "$drawbend" drawbend-deck --material empty.toml
+expect drawbend-deck "empty --hardening" 2 "empty.csv" "$drawbend" drawbend-deck --hardening empty.csv
+expect block-deck "empty --surface-nodes" 2 "empty.csv" "$drawbend" block-deck --surface-nodes empty.csv --out e.toml
+expect strip-deck "empty --stribeck-table" 2 "empty.csv" "$drawbend" strip-deck --stribeck-table empty.csv --out e.toml
+expect cup-deck "empty --base" 2 "empty.toml" "$drawbend" cup-deck --base empty.toml
+expect loop "empty data" 2 "empty.csv" "$drawbend" loop empty.csv --out l2 --figures=
+expect model-loop "empty data" 2 "empty.csv" "$drawbend" model-loop empty.csv --out m5
+expect export "empty model" 2 "empty.toml" "$drawbend" export empty.toml --to lsdyna --out e6.k
+expect export "empty nodes file" 2 "empty.csv" "$drawbend" export emodel/friction_model.toml --to lsdyna --out e7.k
+expect calibrate "empty tests" 2 "empty.csv" "$drawbend" calibrate empty.csv --out c4
+expect calibrate "empty --compare" 2 "empty.toml" "$drawbend" calibrate cal_crlf.csv --out c5 --compare empty.toml
+expect plan "empty deck" 2 "empty.toml" "$drawbend" plan empty.toml
+# Units written into a value (an option, a deck key, a table cell).
+expect drawbend-deck "units in an option" 2 "--pin-diameter: expected a number, found '12.7 mm'" "$drawbend" drawbend-deck --pin-diameter "12.7 mm"
+expect run "units in a deck value" 2 "units.toml:[0-9]+: material.E: expected a finite number, found the string \"70000 MPa\"" "$drawbend" run units.toml --out o4 --quiet
+expect export "units in a model value" 2 "units.toml:4: friction.p_min: expected a finite number, found the string \"0 MPa\"" "$drawbend" export model/units.toml --to lsdyna --out e1.k
+# Duplicated keys and tables.
+expect run "duplicated key" 2 "dup_key.toml:[0-9]+:[0-9]+: TOML syntax error: .*cannot redefine existing .*'duration'" "$drawbend" run dup_key.toml --out o5 --quiet
+expect run "duplicated table" 2 "dup_table.toml:[0-9]+:[0-9]+: TOML syntax error: .*cannot redefine existing table 'case'" "$drawbend" run dup_table.toml --out o6 --quiet
+expect plan "duplicated key" 2 "dup_key.toml:[0-9]+:[0-9]+: TOML syntax error" "$drawbend" plan dup_key.toml
+# Names given twice in a deck (steps name messages, history names are CSV columns).
+sed 's/^name = "slide"/name = "press"/' "$deck" >dup_step.toml
+expect run "step name twice" 2 "dup_step.toml:[0-9]+: step 'press'.name: expected a unique step name, found it twice" "$drawbend" run dup_step.toml --out o9 --quiet
+sed 's/kind = "tool_force", target = "floor", component = 2/kind = "tool_force", target = "floor", component = 2 }, { name = "friction_N", kind = "tool_force", target = "floor", component = 1/' "$deck" >dup_history.toml
+expect run "history column twice" 2 "dup_history.toml:[0-9]+: output.history.name: expected a unique column name, found 'friction_N' twice" "$drawbend" run dup_history.toml --out o10 --quiet
+# Unknown keys and impossible domains in export's friction model (a silent default before).
+expect export "unknown key" 2 "unknown.toml:4: friction.colour: unknown key" "$drawbend" export model/unknown.toml --to lsdyna --out e2.k
+expect export "reversed domain" 2 "reversed.toml:1: friction: expected 0 <= p_min < p_max <= 10000 \\[MPa\\], found 80 and 0" "$drawbend" export model/reversed.toml --to lsdyna --out e3.k
+expect export "huge domain" 2 "huge.toml:1: friction: expected 0 < v_min < v_max <= 10000 \\[mm/s\\], found 6.35 and 1e\\+300" "$drawbend" export model/huge.toml --to openradioss --parts 1,2 --out e4.rad
+# Windows line endings: valid, accepted.
+expect run "CRLF deck" 0 "summary: [0-9]+ cycles" "$drawbend" run deck_crlf.toml --out o7 --quiet
+expect export "CRLF model" 0 "wrote e5.k" "$drawbend" export model/crlf.toml --to lsdyna --out e5.k
+expect calibrate "CRLF tests" 0 "wrote c2/material.toml" "$drawbend" calibrate cal_crlf.csv --out c2
+expect drawbend-deck "CRLF hardening" 0 "back_tension in this deck" "$drawbend" drawbend-deck --hardening curve_crlf.csv
+expect plan "CRLF deck" 0 "1 cases" "$drawbend" plan deck_crlf.toml
+# Absurd numbers in tables: exit 2 naming file:line (exit 0 before).
+expect drawbend-deck "flow stress 1e308 MPa" 2 "curve_huge.csv:2: true stress 1e\\+300 MPa is above 100000 MPa" "$drawbend" drawbend-deck --hardening curve_huge.csv
+expect calibrate "stress ratio 1e300" 2 "cal_huge.csv:3: column 'stress_ratio': expected a yield-stress ratio to RD in \\[0.1, 10\\]" "$drawbend" calibrate cal_huge.csv --out c3
+printf 'pin_diameter_mm,back_tension_N,bending_force_N\n1e300,1000,200\n25.4,1000,150\n' >ml_pin.csv
+expect model-loop "pin diameter 1e300 mm" 2 "ml_pin.csv:2: column 'pin_diameter_mm': expected a pin diameter up to 1000 mm" "$drawbend" model-loop ml_pin.csv --out m3
+expect plan "wall time 1e-300 s" 0 "warning: .*summary.csv: wall_time 1e-300 s is not a run's wall time" "$drawbend" plan runs
+# Unwritable output folders: exit 2 before any work (calibrate: exit 3, a file-system error, before).
+expect drawbend-deck "unwritable --run" 2 "--run '/proc/x': cannot create the folder" "$drawbend" drawbend-deck --run /proc/x
+touch a_file
+expect drawbend-deck "a file as --run" 2 "--run 'a_file': cannot be a folder, because 'a_file' is a file" "$drawbend" drawbend-deck --run a_file
+expect calibrate "unwritable --out" 2 "--out '/proc/x': cannot create the folder" "$drawbend" calibrate cal_crlf.csv --out /proc/x
+expect export "unwritable --out" 2 "--out.*/proc" "$drawbend" export model/good.toml --to lsdyna --out /proc/e.k
+# A builder's --friction: the option or the user's file named, not the generated deck's line.
+expect block-deck "--friction missing nodes file" 2 "--friction:1: friction.nodes: cannot open 'nope.csv'" "$drawbend" block-deck --friction '{ law = "surface", nodes = "nope.csv" }' --out b1.toml
+expect block-deck "--friction short nodes file" 2 "--friction:1: friction.nodes: .*nodes_short.csv: nodal friction values: expected 9 rows" "$drawbend" block-deck --friction '{ law = "surface", nodes = "nodes_short.csv" }' --out b2.toml
+expect block-deck "--surface-nodes short file" 2 "--surface-nodes: .*nodes_short.csv: nodal friction values: expected 9 rows" "$drawbend" block-deck --surface-nodes nodes_short.csv --out b3.toml
+expect block-deck "--friction negative mu" 2 "--friction:1: friction.mu: expected a friction coefficient >= 0, found -1" "$drawbend" block-deck --friction '{ law = "coulomb", mu = -1 }' --out b4.toml
+expect block-deck "--friction a model file" 2 "reversed.toml:1: friction: expected 0 <= p_min < p_max" "$drawbend" block-deck --friction model/reversed.toml --out b5.toml
+expect cup-deck "--friction missing nodes file" 2 "--friction 'nope.csv': cannot open file for reading" "$drawbend" cup-deck --friction nope.csv
+expect cup-deck "--friction short nodes file" 2 "--friction: nodes_short.csv: nodal friction values: expected 9 rows" "$drawbend" cup-deck --friction nodes_short.csv
+expect strip-deck "--friction wrong type" 2 "--friction:1: friction.mu: expected a finite number, found the string \"0.1\"" "$drawbend" strip-deck --friction '{ law = "coulomb", mu = "0.1" }' --out s1.toml
+expect drawbend-deck "--friction wrong type" 2 "--friction:1: friction.mu: expected a finite number" "$drawbend" drawbend-deck --friction '{ law = "coulomb", mu = "0.1" }'
+# One element through the thickness of a bending case: a warning of the deck
+# (every builder and `run`), not only of drawbend-deck's option.
+expect drawbend-deck "one element through the thickness" 0 "warning: drawbend-deck \\(the deck it writes\\): mesh: one element through the thickness under the face set 'zmin', and the sheet bends over the curved surface of tool 'pin'" \
+  "$drawbend" drawbend-deck --through 1
+"$drawbend" drawbend-deck --through 1 --element-length 2 --draw-length 2 >one_layer.toml 2>/dev/null
+expect run "one element through the thickness" 0 "warning: .*one_layer.toml:[0-9]+: mesh: one element through the thickness" \
+  "$drawbend" run one_layer.toml --out o8 --quiet --checkpoint-every 1 --halt-after-cycles 1
+# No warning where the sheet is thicker: one element across the strip is not one through it,
+# and a flat floor bends nothing.
+for case in "drawbend-deck --across 1 --through 4" "block-deck --elements 1 --out b6.toml"; do
+  out=$("$drawbend" $case 2>&1 >/dev/null)
+  printf '| %s | no warning | %s | %s |\n' "${case%% *}" "$?" "$(printf '%s' "$out" | grep -m1 warning)"
+  if [ -n "$check" ] && printf '%s' "$out" | grep -q "one element through"; then
+    echo "FAILED: $case: a one-element warning where the sheet is not one element thick or bends over nothing"
+    failed=1
+  fi
+done
+exit $failed
