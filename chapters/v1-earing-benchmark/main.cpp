@@ -17,10 +17,12 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "material/hill48.hpp"
 #include "material/yld2004_fit.hpp"
+#include "material/yld2004_plasticity.hpp"
 #include "sim/case_pool.hpp"
 #include "study/run_health.hpp"
 #include "study/chapter.hpp"
@@ -35,6 +37,10 @@ double g_cycles = 60000;                     // cycles over the stroke
 double g_stroke = 20.0;                      // punch travel [mm] (quick tier: to the force peak)
 double g_ramp = 10;                          // punch travel of the speed ramp [mm]
 double g_polar = -1;                         // quarter_disk polar_radius [mm] (< 0: the deck's; 0: none)
+// Diagnostic runs (docs: results.md "Why the low-r cups tore"): a subset of the variants and process alternatives.
+std::string g_variants;                      // comma-separated variant ids (empty: all, the chapter's run)
+double g_gap = 0, g_holder_force = 0, g_mu = -1;
+bool g_voce = false;
 
 std::string fmt_list(const std::vector<std::pair<double, double>>& v) {
   std::string s;
@@ -61,7 +67,22 @@ void body(study::Chapter& c) {
   for (std::size_t k = 0; k < vars.size(); ++k) idx[vars[k].id] = k;
   for (const char* need : {"von_mises", "hill48_r", "hill48_s"})
     if (!idx.count(need)) throw InputError(vt.path + ": missing variant " + need);
-  const v1::Variant& hr = vars[idx.at("hill48_r")];
+  const v1::Variant hr = vars[idx.at("hill48_r")], hsv = vars[idx.at("hill48_s")];
+  // A diagnostic run draws only the listed variants; the checks that compare variants then are not claimed
+  // (the chapter's own run, with every variant, claims them all).
+  const bool subset = !g_variants.empty();
+  if (subset) {
+    std::vector<v1::Variant> keep;
+    std::string rest = g_variants + ",";
+    for (std::size_t p; (p = rest.find(',')) != std::string::npos; rest.erase(0, p + 1)) {
+      const std::string id = rest.substr(0, p);
+      if (!idx.count(id)) throw InputError("--variants: no variant '" + id + "' in " + vt.path);
+      keep.push_back(vars[idx.at(id)]);
+    }
+    vars = keep;
+    idx.clear();
+    for (std::size_t k = 0; k < vars.size(); ++k) idx[vars[k].id] = k;
+  }
   // 1b. Yld2004-18p fitted to every published material test (drawbend calibrate's fit, equal weights on the
   // relative residuals), and the loop's before and after on those tests: measured, both Hill'48 calibrations,
   // the fit, and POSTECH's published Yld2004-18p for the same sheet.
@@ -74,7 +95,6 @@ void body(study::Chapter& c) {
     if (v.type == "yld2004") v.a = fit.raw.a, v.c1 = fit.raw.c1, v.c2 = fit.raw.c2;
   {
     const material::Hill48 h_r = material::Hill48::from_r_values(hr.r0, hr.r45, hr.r90);
-    const v1::Variant& hsv = vars[idx.at("hill48_s")];
     const material::Hill48 h_s = material::Hill48::from_stress_ratios(hsv.s45, hsv.s90, hsv.sb);
     const std::vector<material::NamedYield> models = {
         {"hill48_r", nullptr, &h_r}, {"hill48_s", nullptr, &h_s}, {"yld2004", &fit.yield, nullptr},
@@ -102,6 +122,7 @@ void body(study::Chapter& c) {
   spec.cycles = static_cast<long>(g_cycles), spec.stroke = g_stroke;
   spec.polar_radius = g_polar;
   spec.ramp = g_ramp;
+  spec.gap = g_gap, spec.holder_force = g_holder_force, spec.mu = g_mu, spec.voce = g_voce;
   if (spec.through < 3) throw InputError("--through: at least 3 elements through the thickness (issue 19)");
   // A full draw or a partial stroke?  By its area, the blank (r = 53.75 mm) makes a wall of about
   // (53.75^2 - 30.6^2) / (2 x 30.6) = 32 mm over the 30.6 mm mid-wall radius; its rim clears the die's shoulder
@@ -146,6 +167,12 @@ void body(study::Chapter& c) {
   sim::run_cases(vars.size(), [&](std::size_t k) {
     runs[k] = v1::draw(deck, vars[k], spec, c.out("tables/cup_" + vars[k].id + ".vtu"));
   });
+  {  // the Yld2004-18p return map's health over the run (every point update of the Yld2004-18p cup)
+    const auto rc = material::Yld2004Plasticity::return_counts();
+    c.value("yld_returns", std::to_string(rc.plastic) + " plastic updates, " + std::to_string(rc.split) +
+                               " with sub-increments, " + std::to_string(rc.fallback) + " not converged (radial fallback)");
+    std::fprintf(stderr, "  Yld2004-18p returns: %ld plastic, %ld split, %ld fallback\n", rc.plastic, rc.split, rc.fallback);
+  }
   c.value("runs_wall", fmt_fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(), 1), "s");
   // 4. Tables.
   auto ht = c.table({"variant", "angle_from_RD_deg", "cup_height_mm"},
@@ -286,6 +313,11 @@ void body(study::Chapter& c) {
                          " mm at the end: the flange has left the holder (" + v.label + ")",
                      r.rim_r_max < v1::kFlangeOutRadius, "the benchmark's cup is drawn to the end of the stroke");
   }
+  if (subset) {  // a diagnostic run: its tables only (the page's comparisons need every variant)
+    c.save(ht, "cup_height"), c.save(ot, "flange_outline"), c.save(ft, "punch_force"), c.save(tt, "thickness");
+    c.save(gt, "hourglass_regions"), c.save(st, "summary");
+    return;
+  }
   // Von Mises earing against the mesh bound; ears where the r-values put them.  After a full draw the
   // profile is the cup height; after a partial stroke (the quick tier) it is the flange outline, the rim's
   // radius, whose excess over its mean becomes wall height once the flange is drawn in (chosen before the run).
@@ -388,5 +420,10 @@ int main(int argc, char** argv) {
   ch.options().add(g_stroke, "stroke", "punch travel [mm]");
   ch.options().add(g_ramp, "ramp", "punch travel over which the punch accelerates uniformly from rest [mm]");
   ch.options().add(g_polar, "polar-radius", "quarter disk: rows are circles from this radius out [mm] (< 0: the deck's, 0: none)");
+  ch.options().add(g_variants, "variants", "diagnostic run: only these variant ids, comma-separated (empty: all)");
+  ch.options().add(g_gap, "gap", "diagnostic run: holder-die gap [mm] (0: the published 1.04 mm)");
+  ch.options().add(g_holder_force, "holder-force", "diagnostic run: holder force on the quarter blank [N] (0: the deck's; < 0: the holder held fixed at the gap)");
+  ch.options().add(g_mu, "mu", "diagnostic run: Coulomb mu on every contact (< 0: the published 0.07)");
+  ch.options().add(g_voce, "voce", "diagnostic run: the published Voce curve instead of Swift");
   return study::run_chapter(ch, argc, argv, body);
 }

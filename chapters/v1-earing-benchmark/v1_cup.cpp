@@ -11,6 +11,7 @@
 #include <toml++/toml.h>
 
 #include "core/csv.hpp"
+#include "fe/contact_springs.hpp"
 #include "fe/mesh.hpp"
 #include "fe/solver.hpp"
 #include "io/deck.hpp"
@@ -50,6 +51,39 @@ toml::table deck_table(const std::string& deck, const Variant& var, const RunSpe
   if (spec.polar_radius == 0) mesh->erase("polar_radius");
   if (spec.polar_radius > 0) mesh->insert_or_assign("polar_radius", spec.polar_radius);
   mat->insert_or_assign("type", var.type);
+  if (spec.voce) {  // the published alternative 330.2 - 190 exp(-12.4 eps_p) (aa6016_t4_esaform2021.csv header)
+    mat->erase("swift");
+    mat->insert_or_assign("voce", toml::table{{"sigma0", 330.2 - 190.0}, {"Q", 190.0}, {"b", 12.4}});
+  }
+  auto* tools = root["tool"].as_array();
+  if (!tools) throw InputError(deck + ": expected [[tool]] tables");
+  for (auto& node : *tools) {
+    auto& t = *node.as_table();
+    const std::string name = t["name"].value_or(std::string());
+    if (name == "die" && spec.gap > 0) {  // shift the die by (gap - deck's gap): its face, shoulder and opening
+      const double shift = spec.gap - 1.04;
+      for (auto& sn : *t["surface"].as_array()) {
+        auto& sf = *sn.as_table();
+        auto* o = sf["origin"].as_array();
+        o->replace(o->begin() + 2, o->at(2).value_or(0.0) + shift);
+        if (auto z = sf["z_min"].value<double>()) sf.insert_or_assign("z_min", *z + shift);
+      }
+    }
+    if (name == "holder" && spec.holder_force > 0) {  // force-driven (keeps the deck's stop, if any)
+      t.insert_or_assign("drive", "force");
+      t.insert_or_assign("direction", toml::array{0.0, 0.0, 1.0});
+      t.insert_or_assign("force", spec.holder_force);
+    }
+    if (name == "holder" && spec.holder_force < 0) {  // held fixed at the gap, as before issue 54's runs
+      t.insert_or_assign("drive", "fixed");
+      for (const char* k : {"direction", "force", "mass", "stop"}) t.erase(k);
+    }
+    if (t["drive"].value_or(std::string()) == "force" && !t.contains("mass"))
+      t.insert_or_assign("mass", 1.0);  // set from the contact stiffness and dt in draw()
+  }
+  if (spec.mu >= 0)
+    for (auto& node : *root["contact"].as_array())
+      if (auto* f = node.as_table()->get("friction")) f->as_table()->insert_or_assign("mu", spec.mu);
   if (var.type == "hill48") {
     toml::table h;
     if (var.r0 > 0) {
@@ -137,6 +171,8 @@ CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec,
   m.steps[1].duration = spec.stroke / spec.speed + 0.5 * tr;
   m.steps[0].duration = 200 * dt;
   m.steps[0].damping = 1.0 / (50 * dt);
+  for (auto& t : m.tools)
+    if (t.drive == fe::Tool::Drive::force) t.mass = fe::tool_mass_half_omega_dt(fe::tool_contact_stiffness(m, t.name), dt);
   const fe::Mesh& mesh = m.mesh;
   const double v0 = sheet_volume(mesh, mesh.x, mesh.y, mesh.z);
   fe::Solver s(m);

@@ -27,6 +27,11 @@ struct RunSpec {
   double speed = 100.0;  ///< punch speed [mm/s] (rate-independent material and Coulomb friction: only dt x speed matters)
   int core = 8, ring = 14, through = 3;  ///< quarter_disk element counts
   double polar_radius = -1;  ///< quarter_disk rows are circles from this radius out [mm]; 0: none; < 0: the deck's
+  // Process alternatives for the diagnostic runs (defaults: the deck as published).
+  double gap = 0;           ///< holder-die gap [mm] (0: the deck's 1.04 mm); the die moves, the holder stays at z = 0
+  double holder_force = 0;  ///< > 0: holder force [N, quarter blank]; < 0: holder held fixed; 0: the deck's holder
+  double mu = -1;           ///< >= 0: Coulomb mu on every contact (< 0: the deck's)
+  bool voce = false;        ///< the published Voce curve instead of Swift
 };
 
 struct CupResult {

@@ -3,6 +3,7 @@
 // and a sequence of steps with their boundary conditions and loads.
 // Units: mm, N, MPa, s, t/mm^3 (so that N = t mm/s^2).
 #include <array>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -72,6 +73,9 @@ struct Tool {
   History speed;            ///< velocity drive [mm/s]
   History force;            ///< force drive: applied force along direction [N]
   double mass = 0;          ///< force drive: rigid-body mass [t]
+  /// force drive: the largest offset along `direction` [mm] (a stop, as a blank holder pressed onto spacers:
+  /// the force holds the tool there until the sheet pushes it back with more); +inf: none.
+  double stop = std::numeric_limits<double>::infinity();
 };
 
 /// Node-to-rigid-surface penalty contact between a face set and a tool.

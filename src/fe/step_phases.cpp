@@ -253,7 +253,10 @@ void move_tools(const Model& m, const StepPlan& plan, double th, double ts, doub
       const double Fs = tool_force[k][0] * d[0] + tool_force[k][1] * d[1] + tool_force[k][2] * d[2];
       const double a = (tool.force(ts) + Fs) / tool.mass;
       const double along = tool_vel[k][0] * d[0] + tool_vel[k][1] * d[1] + tool_vel[k][2] * d[2];
-      const double vnew = (along * a1 + a * a2);
+      double vnew = (along * a1 + a * a2);
+      // A stop at `tool.stop` along d: the tool rests there (no further motion along d) while pushed onto it.
+      const double at = tool_offset[k][0] * d[0] + tool_offset[k][1] * d[1] + tool_offset[k][2] * d[2];
+      if (at + dt * vnew > tool.stop) vnew = std::max(0.0, tool.stop - at) / dt;
       tool_vel[k] = {vnew * d[0], vnew * d[1], vnew * d[2]};
     } else {
       tool_vel[k] = {0, 0, 0};

@@ -100,7 +100,7 @@ void read_tools(const DeckContext& c, const toml::table& root, fe::Model& m) {
       fe::Tool tool;
       tool.name = c.str(t, "name", "tool");
       const std::string w = "tool '" + tool.name + "'";
-      c.allowed(t, w, {"name", "drive", "direction", "speed", "force", "mass", "surface"});
+      c.allowed(t, w, {"name", "drive", "direction", "speed", "force", "mass", "stop", "surface"});
       for (const auto& other : m.tools)
         if (other.name == tool.name) c.bad(t, w, "expected a unique tool name, found it twice");
       tool.drive = drive(c, t, "drive", w);
@@ -109,6 +109,9 @@ void read_tools(const DeckContext& c, const toml::table& root, fe::Model& m) {
       if (tool.drive == fe::Tool::Drive::force) {
         tool.force = c.history(t, "force", w);
         tool.mass = c.positive(t, "mass", w);
+        if (t.get("stop")) tool.stop = c.num(t, "stop", w);
+      } else if (t.get("stop")) {
+        c.bad(t, w, "stop: only a force-driven tool (drive = \"force\") has a stop");
       }
       const auto* surfs = c.array_of_tables(t, "surface", w);
       if (!surfs || surfs->empty()) c.bad(t, w, "expected at least one [[tool.surface]], found none");

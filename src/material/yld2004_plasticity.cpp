@@ -1,5 +1,6 @@
 #include "material/yld2004_plasticity.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
@@ -13,6 +14,7 @@ constexpr int kMaxBackYld = 3;
 constexpr int kMaxIter = 60;     // iterations per (sub-)increment
 constexpr int kMaxSub = 256;     // at most this many sub-increments (1, 4, 16, 64, 256)
 constexpr double kTol = 1e-6;    // converged: |f| <= kTol R and 2 G x |n' - n| <= kTol R
+std::atomic<long> g_plastic{0}, g_split{0}, g_fallback{0};
 inline double contract(const double a[6], const double b[6]) {  // a : b, tensor shears
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2.0 * (a[3] * b[3] + a[4] * b[4] + a[5] * b[5]);
 }
@@ -163,7 +165,9 @@ void Yld2004Plasticity::update(const double deps[6], const Spin& spin, double si
   for (int c = 0; c < 6; ++c) trial[c] = ts[c], dts[c] = ts[c] - s0[c];
   double dl = 0.0;
   bool ok = false;
+  bool split_used = false;
   for (int m = 1; m <= kMaxSub && !ok; m *= 4) {
+    split_used = m > 1;
     for (int k = 0; k < nback_; ++k) sheet_transform(Q, back + 6 * k, an[k], true);
     for (int c = 0; c < 6; ++c) ts[c] = m == 1 ? trial[c] : s0[c];
     dl = 0.0;
@@ -182,6 +186,9 @@ void Yld2004Plasticity::update(const double deps[6], const Spin& spin, double si
       if (sb - isotropic_stress(ep + dl) > 0.0) ok = return_map(ts, an, ep, dl, sb, nt);
     }
   }
+  g_plastic.fetch_add(1, std::memory_order_relaxed);
+  if (!ok) g_fallback.fetch_add(1, std::memory_order_relaxed);
+  if (split_used) g_split.fetch_add(1, std::memory_order_relaxed);
   if (!ok) {  // admissible fallback: the last iterate scaled radially onto the surface
     for (int c = 0; c < 6; ++c) {
       xi[c] = ts[c];
@@ -194,6 +201,11 @@ void Yld2004Plasticity::update(const double deps[6], const Spin& spin, double si
   sheet_transform(Q, ts, sigma, false);
   for (int k = 0; k < nback_; ++k) sheet_transform(Q, an[k], back + 6 * k, false);
   state[0] = ep + dl;
+}
+
+Yld2004Plasticity::ReturnCounts Yld2004Plasticity::return_counts() {
+  return {g_plastic.load(std::memory_order_relaxed), g_split.load(std::memory_order_relaxed),
+          g_fallback.load(std::memory_order_relaxed)};
 }
 
 double Yld2004Plasticity::tangent_ratio(const double* sigma, const double* state) const {

@@ -81,6 +81,13 @@ class Yld2004Plasticity final : public Material {
   /// The normalised parameter set in use, and the factor it was scaled by (1 for a normalised input).
   const Yld2004& yield() const { return yld_; }
   double scaled_by() const { return scale_; }
+  /// Plastic updates since the program started (every instance, every thread): all of them, those that
+  /// needed sub-increments, and those that fell back to the radial scaling (the return map's health in a run;
+  /// relaxed counters, they change no result).
+  struct ReturnCounts {
+    long plastic = 0, split = 0, fallback = 0;
+  };
+  static ReturnCounts return_counts();
 
  private:
   // One return from the local trial stress ts and back stresses an (sheet axes, modified in place) at

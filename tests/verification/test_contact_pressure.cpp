@@ -72,3 +72,37 @@ BOOST_AUTO_TEST_CASE(tool_contact_stiffness_closed_form) {
   fe::Solver solver(m);
   BOOST_CHECK_NO_THROW(solver.run());
 }
+
+// A force-driven tool with a stop (a blank holder pressed onto spacers, deck
+// key `stop`): pushed by a constant force F = 10 N along +z with nothing in
+// contact, a tool of m = 1e-7 t would travel F t^2 / (2 m) = 2 mm in
+// t = 2e-4 s; with stop = 0.2 mm it ends at the stop exactly (to rounding)
+// and at rest.  Pushed the other way it leaves the stop freely: after the same
+// time it is at -(F t^2 / (2 m)) within the first-order error of the speed
+// ramp of one cycle (1 %).
+BOOST_AUTO_TEST_CASE(force_driven_tool_rests_on_its_stop) {
+  for (const double sign : {1.0, -1.0}) {
+    fe::Model m = block(2, 2, 0.5, 4, 4, 1, elastic());
+    m.mass_scaling = 100;
+    contact::Surface far;
+    far.origin = {0, 0, 5.0};
+    far.axis = {0, 0, -1};
+    m.add_rigid_contact("holder", far, "zmax");
+    fe::Tool& holder = m.tools.back();
+    holder.drive = fe::Tool::Drive::force;
+    holder.direction = {0, 0, 1};
+    holder.force = fe::History::constant(10.0 * sign);
+    holder.mass = 1e-7;
+    holder.stop = 0.2;
+    m.steps.push_back(fe::Step{});
+    m.steps.back().duration = 2e-4;
+    fe::Solver solver(m);
+    solver.run();
+    const double z = solver.tool_offset("holder")[2];
+    if (sign > 0) {
+      BOOST_TEST(z == 0.2, boost::test_tools::tolerance(1e-12));
+    } else {
+      BOOST_TEST(z == -2.0, boost::test_tools::tolerance(0.01));
+    }
+  }
+}
