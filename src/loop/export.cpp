@@ -8,10 +8,29 @@
 //    *DEFINE_TABLE giving mu from the contact pressure (the table's values) and
 //    the relative sliding speed (each curve's abscissa), read by the
 //    SURFACE_TO_SURFACE and ONE_WAY_SURFACE_TO_SURFACE contacts with the shell
-//    thickness offset.  _ORTHO_FRICTION: four more cards (FS1 FD1 DC1 VC1 LC1 OA
-//    A B for direction 1 of the slave side, FS2 FD2 DC2 VC2 LC2 for direction 2,
-//    then the same two for the master side); LC1/LC2 a table whose values are
-//    sliding speeds and whose curves give mu against pressure.  *DEFINE_TABLE:
+//    thickness offset.  _ORTHO_FRICTION: four more cards right after card 3
+//    (before the optional cards A-G): FS1_S FD1_S DC1_S VC1_S LC1_S OACS_S LCFS
+//    LCPS (direction 1, SURFA = slave side), FS2_S FD2_S DC2_S VC2_S LC2_S
+//    (direction 2), then the same two for SURFB (_M); LC1/LC2: a table giving mu
+//    in that direction "as a function of the relative velocity and interface
+//    pressure ... each curve in the table definition defines the coefficient of
+//    friction versus the interface pressure corresponding to a particular value
+//    of the relative velocity"; OACS (integer) = 0: directions of the segment
+//    slid on, 1: directions of the sliding node; LCFS (mu against the angle of
+//    sliding from direction 1; when given, FS, FD, DC, VC and LC are ignored) and
+//    LCPS (a pressure scale on LCFS) left blank.  Sources: the card layout of
+//    OpenRadioss's LS-DYNA reader, hm_cfg_files/config/CFG/Keyword971_R14.1/
+//    CONTACT/OneWaySurfToSurf.cfg (commit bd4557b), and the field texts of the
+//    Keyword User's Manual as carried by ansys/pydyna, keyword class
+//    ContactFormingOneWaySurfaceToSurfaceOrthoFriction (auto/contact/
+//    contact_forming_one_way_surface_to_surface_ortho_friction.py); FS = 2 there:
+//    "the dynamic coefficient of friction points to the table ... (The table ID
+//    is give[n] by FD ...), giving the coefficient of friction as a function of
+//    the relative velocity and pressure", for SURFACE_TO_SURFACE and ONE_WAY_
+//    SURFACE_TO_SURFACE, "in combination with the thickness offset option".
+//    Which variable the FS = 2 table's values are (pressure here, curves of mu
+//    against speed) is the manual's figure, which that text does not carry.
+//    *DEFINE_TABLE:
 //    card TBID SFA OFFA (10 characters each), then one value per line (20
 //    characters); *DEFINE_CURVE: LCID SIDR SFA SFO OFFA OFFO DATTYP, then
 //    abscissa and ordinate in 20-character fields.
@@ -359,22 +378,23 @@ ExportResult export_lsdyna(const ExportModel& m, const ExportOptions& o) {
   } else {
     h << "$ orthotropic: *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ORTHO_FRICTION, LC1 = table " << tables[0]
       << " (RD), LC2 = table " << tables[1] << " (TD),\n"
-      << "$ on the slave (sheet) side; direction 1 is the sheet's material direction (OA = 0 deg from it):\n"
-      << "$ set the sheet elements' material axes along RD.  FS/FD of card 2 are not used for the sheet.\n"
-      << "$ The master-side cards (FS1_M ...) repeat the sheet's tables; how LS-DYNA combines the two sides\n"
-      << "$ and reads OA/A/B was not checked against a solver here: check both on a block slide first.\n"
+      << "$ on the slave (sheet, SURFA) side.  OACS_S = 1: the directions are those of the sliding node, i.e.\n"
+      << "$ the sheet's (0 would take the directions of the tool segment slid on): set the sheet elements'\n"
+      << "$ material axes with direction 1 along RD.  LCFS/LCPS blank (an LCFS curve would replace LC1/LC2).\n"
+      << "$ FS/FD of card 2 are not used for the sheet.  The SURFB cards (FS1_M ...) repeat the tables; a\n"
+      << "$ one-way contact checks only SURFA nodes.  Not run in LS-DYNA here: check on a block slide first.\n"
       << "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ORTHO_FRICTION_ID\n$      CID\n" << ifield(o.contact_id, 10)
       << "\n$     SSID      MSID     SSTYP     MSTYP    SBOXID    MBOXID       SPR       MPR\n" << ids << "\n"
       << "$       FS        FD        DC        VC       VDC    PENCHK        BT        DT\n"
       << field(0, 10) << field(0, 10) << "\n"
       << "$      SFS       SFM       SST       MST      SFST      SFMT       FSF       VSF\n"
       << field(1, 10) << field(1, 10) << "\n"
-      << "$    FS1_S     FD1_S     DC1_S     VC1_S     LC1_S      OA_S       A_S       B_S\n"
-      << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(tables[0], 10) << field(0, 10) << "\n"
+      << "$    FS1_S     FD1_S     DC1_S     VC1_S     LC1_S    OACS_S      LCFS      LCPS\n"
+      << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(tables[0], 10) << ifield(1, 10) << "\n"
       << "$    FS2_S     FD2_S     DC2_S     VC2_S     LC2_S\n"
       << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(tables[1], 10) << "\n"
-      << "$    FS1_M     FD1_M     DC1_M     VC1_M     LC1_M      OA_M       A_M       B_M\n"
-      << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(tables[0], 10) << field(0, 10) << "\n"
+      << "$    FS1_M     FD1_M     DC1_M     VC1_M     LC1_M    OACS_M      LCFM      LCPM\n"
+      << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(tables[0], 10) << ifield(1, 10) << "\n"
       << "$    FS2_M     FD2_M     DC2_M     VC2_M     LC2_M\n"
       << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(tables[1], 10) << "\n";
   }

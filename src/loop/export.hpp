@@ -29,7 +29,8 @@
 //               pressure; curves: mu against relative sliding speed); `ortho`:
 //               *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ORTHO_FRICTION with
 //               LC1 (RD) and LC2 (TD) tables (values: sliding speed; curves: mu
-//               against pressure, one per speed).
+//               against pressure, one per speed) on the four cards after card 3,
+//               OACS_S = 1 (the sliding sheet node's directions), LCFS/LCPS blank.
 //  abaqus       standard: *FRICTION, ANISOTROPIC, DEPENDENCIES = 0 with data
 //               lines mu_1 (RD), mu_2 (TD), slip rate, contact pressure;
 //               explicit: *FRICTION isotropic (mu, slip rate, pressure) for one

@@ -182,7 +182,12 @@ ExportResult export_openradioss(const ExportModel& m, const ExportOptions& o) {
     h << "# direction: orthotropic pair, Idir = 1 (direction 1 = RD, direction 2 = TD, /FRIC_ORIENT below).\n"
       << "#   KNOWN: in an OpenRadioss engine test (block on plate, TYPE7) Idir = 1 with Iform = 2 gave the law\n"
       << "#   sliding along TD but only Fric of direction 1 along RD (C1-C5 lost); Idir = 1 needs shell parts.\n"
-      << "#   The isotropic form (--direction rd|td|mean) gave the law within 0.3 %.  Check before use.\n";
+      << "#   The isotropic form (--direction rd|td|mean) gave the law within 0.3 %.  Check before use.\n"
+      << "#   The engine's source (int07/i7for3.F, orthotropic Ifric = 1) evaluates direction k's law at the\n"
+      << "#   speed v . dir_k floored at 1e-30: a SIGNED component, so sliding against dir_k or across it\n"
+      << "#   drops that direction's speed terms (C2, C3, C5); the isotropic form uses the full speed.\n"
+      << "#   The starter sets the directions on the shells of the interface's MAIN surface\n"
+      << "#   (interf1/inintr_orthdirfric.F): for the sheet's RD the sheet must be the main surface.\n";
   else
     h << "# direction: isotropic pair law for " << o.direction << " (--direction rd|td|mean|ortho).\n";
   h << "# interfaces that honour /FRICTION: /INTER/TYPE7, TYPE24, TYPE25 (also 11, 19): set fric_ID (columns\n"

@@ -23,7 +23,14 @@
 //  A (1-20) O (21-40).  Between curves of a table: linear in the value; outside
 //  the values: the end curve.  Curves: linear, extrapolated from the end segment.
 //  *CONTACT_..._ID: card CID; card 1 SSID MSID SSTYP MSTYP ...; card 2 FS FD ...;
-//  card 3; _ORTHO_FRICTION: four more cards (FS1 FD1 DC1 VC1 LC1 OA A B x2 sides ...).
+//  card 3; _ORTHO_FRICTION: four more cards right after card 3, FS1_S FD1_S DC1_S
+//  VC1_S LC1_S OACS_S LCFS LCPS / FS2_S FD2_S DC2_S VC2_S LC2_S / the same two for
+//  SURFB (_M).  OACS integer (0: directions of the segment slid on, 1: of the
+//  sliding node); LCFS, when given, replaces FS FD DC VC LC (mu against the angle
+//  from direction 1), LCPS scales it with pressure.  Layout from OpenRadioss's
+//  LS-DYNA reader (hm_cfg_files/config/CFG/Keyword971_R14.1/CONTACT/
+//  OneWaySurfToSurf.cfg) and the manual's field texts as carried by ansys/pydyna
+//  (ContactFormingOneWaySurfaceToSurfaceOrthoFriction).
 //
 //  Abaqus (Keywords Reference, *FRICTION): '**' comments; data lines separated
 //  by commas.  ANISOTROPIC: mu1, mu2, slip rate, pressure; isotropic: mu, slip
@@ -192,6 +199,7 @@ struct DynaContact {
   int cid = 0, ssid = 0, msid = 0, sstyp = 0, mstyp = 0;
   double fs = 0, fd = 0;
   int lc1_s = 0, lc2_s = 0, lc1_m = 0, lc2_m = 0;
+  int oacs_s = 0, oacs_m = 0, lcfs = 0, lcps = 0, lcfm = 0, lcpm = 0;
 };
 struct DynaFile {
   std::map<int, DynaTable> tables;
@@ -262,12 +270,25 @@ inline DynaFile read_lsdyna(const std::string& path) {
       c.fd = col(c2.second, 11, 20, where(c2));
       card();  // card 3
       if (kw.find("ORTHO_FRICTION") != std::string::npos) {
+        // an integer field must hold an integer (LS-DYNA's reader refuses "1.5" there)
+        auto icol = [&](const std::pair<int, std::string>& cd, int a0, int b0) {
+          const double x = col(cd.second, a0, b0, where(cd));
+          if (x != std::floor(x)) throw std::runtime_error(where(cd) + ": columns " + std::to_string(a0) + "-" +
+                                                           std::to_string(b0) + " must hold an integer");
+          return static_cast<int>(x);
+        };
         const auto& a = card();
-        c.lc1_s = static_cast<int>(col(a.second, 41, 50, where(a)));
+        c.lc1_s = icol(a, 41, 50);
+        c.oacs_s = icol(a, 51, 60);
+        c.lcfs = icol(a, 61, 70);
+        c.lcps = icol(a, 71, 80);
         const auto& bb = card();
         c.lc2_s = static_cast<int>(col(bb.second, 41, 50, where(bb)));
         const auto& cm = card();
-        c.lc1_m = static_cast<int>(col(cm.second, 41, 50, where(cm)));
+        c.lc1_m = icol(cm, 41, 50);
+        c.oacs_m = icol(cm, 51, 60);
+        c.lcfm = icol(cm, 61, 70);
+        c.lcpm = icol(cm, 71, 80);
         const auto& dm = card();
         c.lc2_m = static_cast<int>(col(dm.second, 41, 50, where(dm)));
       }

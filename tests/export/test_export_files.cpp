@@ -215,6 +215,9 @@ void check_lsdyna(const Model& m, const std::string& file, const std::string& di
   } else {
     BOOST_TEST(c.keyword.find("ORTHO_FRICTION") != std::string::npos);
     BOOST_REQUIRE(f.tables.count(c.lc1_s) && f.tables.count(c.lc2_s));
+    // the sheet's directions (OACS = 1: the sliding SURFA node's), and no LCFS curve that would replace LC1/LC2
+    BOOST_TEST(c.oacs_s == 1);
+    BOOST_TEST((c.lcfs == 0 && c.lcps == 0 && c.lcfm == 0 && c.lcpm == 0));
     for (int dir : {1, 2}) {
       const auto& t = f.tables.at(dir == 1 ? c.lc1_s : c.lc2_s);  // values: speed; curves: mu against pressure
       for (const auto& [p, v] : points(m.d, 200, 10, 10, 13 + dir))
