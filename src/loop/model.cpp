@@ -159,12 +159,24 @@ std::vector<std::vector<double>> spline_basis(const std::vector<double>& x_in, i
     B[0][i] = x[i];
     for (int k = 0; k + 1 < nb; ++k) B[k + 1][i] = dk(k, x[i]) - dk(K - 2, x[i]);
   }
-  for (auto& col : B) {
-    double cm = 0, cq = 0;
+  // Centred, then orthonormalised in order (modified Gram-Schmidt, unit sd):
+  // the same span, so the same fitted shape, but the fit's normal equations
+  // are well conditioned (the raw truncated cubics are nearly collinear and
+  // made Levenberg-Marquardt crawl).
+  for (size_t c = 0; c < B.size(); ++c) {
+    auto& col = B[c];
+    double cm = 0;
     for (double v : col) cm += v / n;
-    for (double v : col) cq += (v - cm) * (v - cm) / n;
+    for (double& v : col) v -= cm;
+    for (size_t p = 0; p < c; ++p) {
+      double dot = 0;
+      for (size_t i = 0; i < n; ++i) dot += col[i] * B[p][i] / n;
+      for (size_t i = 0; i < n; ++i) col[i] -= dot * B[p][i];
+    }
+    double cq = 0;
+    for (double v : col) cq += v * v / n;
     const double cs = cq > 1e-24 ? std::sqrt(cq) : 1.0;
-    for (double& v : col) v = (v - cm) / cs;
+    for (double& v : col) v /= cs;
   }
   return B;
 }
