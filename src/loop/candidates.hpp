@@ -20,15 +20,24 @@
 //   main      categorical: one mean per level; numeric: z, plus z^2 with 4+
 //             distinct values;
 //   levels    numeric with 3-8 distinct values: one mean per value (a peak at
-//             a middle level has no linear part); more values: 5 quantile bins
-//             (a step or any smooth shape);
+//             a middle level has no linear part); more values: quantile bins,
+//             8 when the variable has 80 or more units (rows, or tests for a
+//             test-level variable), else 5 (a step, bump, periodic or any
+//             smooth shape);
 //   scaled    the effect scaled with dF/dmu of the row (an effect on mu is
-//             larger in newtons where the friction force is larger);
+//             larger in newtons where the friction force is larger): a slope,
+//             and for numeric variables also the levels/bins so scaled;
 //   per input the main/levels probe separately within each group of each of
 //             the model's inputs (pin, speed, direction, lubricant; residual
-//             centred per block x group), for effects that act in one cell only.
-// The candidate's statistic is the family's largest explained sum of squares
-// per degree of freedom relative to that probe's residual sum of squares; the
+//             centred per block x group), for effects that act in one cell
+//             only; numeric variables with more than 8 values get a slope and
+//             the quantile bins per group.
+// The candidate's statistic is the family's largest probe on a common scale:
+// each probe's explained sum of squares over its calibration scale (the mean
+// ESS under 200 pilot permutations, on their own random stream, divided by its
+// dof) is about chi^2(dof), mapped to a normal deviate by the Wilson-Hilferty
+// cube root, so probes of 1 and of 20 dof compete by how surprising each is;
+// probes whose ESS does not change under permutation are dropped.  The
 // permutation test permutes the variable (all probes at once) within blocks:
 // test-level variables (constant within each test) between the tests of a
 // block, row-level variables between the rows of a test.  The permutation

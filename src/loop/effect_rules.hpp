@@ -92,6 +92,50 @@ struct CategoricalBy {
   }
 };
 
+/// mu (1 + sum_j beta_j B_j(x)): natural cubic spline basis (fit_model: f.basis), per group of `by` when set.
+struct Smooth {
+  static int count(const Design&, const Effect& e) { return e.n_basis * (e.by.empty() ? 1 : e.n_groups); }
+  static void apply(const EffectArgs& a, Terms& t) {
+    const auto& B = a.f.basis[a.k];
+    const int g = a.e.by.empty() ? 0 : a.f.group[a.k][a.i];
+    const double* th = a.th + static_cast<size_t>(g) * a.e.n_basis;
+    for (int j = 0; j < a.e.n_basis; ++j) t.factor += th[j] * B[static_cast<size_t>(j)][a.i];
+  }
+  static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
+    const int G = e.by.empty() ? 1 : e.n_groups;
+    for (int g = 0; g < G; ++g)
+      for (int j = 0; j < e.n_basis; ++j)
+        n[s + g * e.n_basis + j] = "beta spline " + std::to_string(j + 1) + " of " + e.variable +
+                                   (e.by.empty() ? "" : " [" + e.by + " group " + std::to_string(g + 1) + "]");
+  }
+};
+
+/// outlet force + c_{g,j} B_j (numeric: spline basis, f.basis) or + c_{g,level} (levels but the first),
+/// g the pin with by = "pin" (else one group).
+struct ForceOffset {
+  static int per_group(const Effect& e) { return e.n_basis > 0 ? e.n_basis : std::max(0, e.n_levels - 1); }
+  static int count(const Design&, const Effect& e) { return per_group(e) * (e.by.empty() ? 1 : e.n_groups); }
+  static void apply(const EffectArgs& a, Terms& t) {
+    const int g = a.e.by.empty() ? 0 : a.f.group[a.k][a.i];
+    const double* th = a.th + static_cast<size_t>(g) * per_group(a.e);
+    if (a.e.n_basis > 0) {
+      const auto& B = a.f.basis[a.k];
+      for (int j = 0; j < a.e.n_basis; ++j) t.add_N += th[j] * B[static_cast<size_t>(j)][a.i];
+    } else {
+      const int l = a.f.level[a.k][a.i];
+      if (l > 0) t.add_N += th[l - 1];
+    }
+  }
+  static void name(const Design&, const Effect& e, const Names& level_names, int s, Names& n) {
+    const int G = e.by.empty() ? 1 : e.n_groups, P = per_group(e);
+    for (int g = 0; g < G; ++g)
+      for (int j = 0; j < P; ++j)
+        n[s + g * P + j] = "force c " + (e.n_basis > 0 ? "spline " + std::to_string(j + 1) + " of " + e.variable + " (N per SD)"
+                                                       : "[" + e.variable + " = " + level_names[j + 1] + "] (N)") +
+                           (e.by.empty() ? "" : " [" + e.by + " group " + std::to_string(g + 1) + "]");
+  }
+};
+
 /// mu (1 + beta tanh(z)).
 struct Saturating : OneParam {
   static void apply(const EffectArgs& a, Terms& t) { t.factor += a.th[0] * std::tanh(a.f.drift_z[a.k][a.i]); }
@@ -174,6 +218,8 @@ decltype(auto) visit_rule(EffectKind k, F&& f) {
     case EffectKind::generic_linear_by: return f(LinearBy{});
     case EffectKind::categorical_by: return f(CategoricalBy{});
     case EffectKind::bending_linear: break;  // on the bending lines (model.cpp), no friction parameter
+    case EffectKind::generic_smooth: return f(Smooth{});
+    case EffectKind::force_offset: return f(ForceOffset{});
   }
   return f(BendingTension{});
 }

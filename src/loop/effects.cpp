@@ -23,6 +23,8 @@ std::string effect_name(EffectKind k) {
     case EffectKind::generic_linear_by: return "generic_linear_by_group";
     case EffectKind::categorical_by: return "group_factor_by_group";
     case EffectKind::bending_linear: return "bending_linear";
+    case EffectKind::generic_smooth: return "generic_smooth";
+    case EffectKind::force_offset: return "force_offset";
   }
   return "?";
 }
@@ -73,6 +75,14 @@ std::string effect_meaning(EffectKind k) {
     case EffectKind::bending_linear:
       return "bending channel: the bending force F_B + c_pin z per pin (z the variable's z-score), fitted with "
              "the bending lines on the rotating-pin rows; a sheet thickness or yield stress acts here";
+    case EffectKind::generic_smooth:
+      return "generic smooth effect of any shape: mu (1 + sum_j beta_j B_j(x)), B_j a natural cubic spline basis "
+             "with knots at quantiles of x (a bump, U, step, periodic or sigmoid shape), optionally per group of a "
+             "model input; its dof chosen by held-out error; no physics claimed";
+    case EffectKind::force_offset:
+      return "force channel: an extra force on the outlet force of every row, fixed and rotating pin (F_out + "
+             "sum_j c_j B_j(x), levels or a spline of x, optionally per pin), fitted jointly with friction and the "
+             "bending lines: a drag, a bending-force change (thickness, yield stress) or an offset of the load cell";
   }
   return "";
 }
@@ -96,7 +106,9 @@ std::vector<EffectKind> generic_effects(bool categorical) {
   return {EffectKind::generic_linear, EffectKind::generic_saturating};
 }
 
-bool acts_on_bending(EffectKind k) { return k == EffectKind::bending_linear || k == EffectKind::bending_tension; }
+bool acts_on_bending(EffectKind k) {
+  return k == EffectKind::bending_linear || k == EffectKind::bending_tension || k == EffectKind::force_offset;
+}
 
 bool is_identity(const std::string& c) { return c == "test_id"; }
 

@@ -26,6 +26,9 @@ enum class EffectKind {
   generic_linear_by,   ///< mu * (1 + beta_g z): one slope per group g of a model input (pin, speed, direction)
   categorical_by,      ///< mu * (1 + g_{group,level}): a group factor per group of a model input
   bending_linear,      ///< bending channel: F_B + c_pin z per pin (fitted with the bending lines), z the z-score
+  generic_smooth,      ///< mu * (1 + sum_j beta_j B_j(x)): natural cubic spline of n_basis dof (per group with `by`)
+  force_offset,        ///< outlet force + sum_j c_j B_j(x) on every row, rotating included (levels: one c per level
+                       ///< but the first; numeric: spline basis of n_basis dof); per pin with by = "pin"
 };
 
 struct Effect {
@@ -37,6 +40,7 @@ struct Effect {
   /// own parameters ("pin", "speed_mm_s", "direction_deg" or "lubricant").
   std::string by;
   int n_groups = 0;      ///< number of groups of `by`
+  int n_basis = 0;       ///< generic_smooth: spline basis functions (dof of the shape, constant excluded)
 };
 
 std::string effect_name(EffectKind k);

@@ -17,7 +17,8 @@ namespace {
 bool generic_kind(EffectKind k) {
   return k == EffectKind::drift || k == EffectKind::generic_linear || k == EffectKind::generic_saturating ||
          k == EffectKind::categorical || k == EffectKind::generic_log || k == EffectKind::generic_exp ||
-         k == EffectKind::generic_linear_by || k == EffectKind::categorical_by || k == EffectKind::bending_linear;
+         k == EffectKind::generic_linear_by || k == EffectKind::categorical_by || k == EffectKind::bending_linear ||
+         k == EffectKind::generic_smooth || k == EffectKind::force_offset;
 }
 
 bool applicable(const Design& d, const ModelSpec& s, EffectKind k, const std::string& var) {
@@ -33,13 +34,14 @@ bool applicable(const Design& d, const ModelSpec& s, EffectKind k, const std::st
   if (k == EffectKind::direction_fourier && d.n_dir_params < 2) return false;
   if (k == EffectKind::generic_linear || k == EffectKind::generic_saturating || k == EffectKind::drift ||
       k == EffectKind::generic_log || k == EffectKind::generic_exp || k == EffectKind::generic_linear_by ||
-      k == EffectKind::bending_linear) {
+      k == EffectKind::bending_linear || k == EffectKind::generic_smooth) {
     try {
       const std::vector<double> x = d.values(var);
       double lo = INFINITY, hi = -INFINITY;
       for (double v : x) lo = std::min(lo, v), hi = std::max(hi, v);
       if (!(hi > lo)) return false;
       if (k == EffectKind::generic_log && !(lo > 0)) return false;
+      if (k == EffectKind::generic_smooth && std::set<double>(x.begin(), x.end()).size() <= 8) return false;
     } catch (const InputError&) {
       return false;
     }
@@ -80,7 +82,8 @@ ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const s
   e.variable = variable;
   e.by = by;
   if (k == EffectKind::bending_tension) t.bending_linear = true;
-  if (k == EffectKind::categorical || k == EffectKind::categorical_by) {
+  if (k == EffectKind::categorical || k == EffectKind::categorical_by ||
+      (k == EffectKind::force_offset && d.data->extra_index(variable) >= 0)) {
     std::vector<std::string> names;
     d.levels(variable, &names);
     e.n_levels = static_cast<int>(names.size());
@@ -142,14 +145,22 @@ double mse_diff_se(const CvResult& a, const CvResult& b, const Folds& f) {
 std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
                                  const CvResult& cur, const JointFit& cur_joint, double thr, double min_gain_N,
                                  const std::function<void(const std::string&)>& progress) {
+  struct Part {
+    EffectKind k;
+    std::string by;
+    int nb = 0;  // generic_smooth: spline dof
+  };
   struct Plan {
-    std::vector<std::pair<EffectKind, std::string>> parts;  // kind, by
+    std::vector<Part> parts;
   };
   std::vector<Plan> plans;
   for (EffectKind k : effects_for(c.name))
     if (applicable(d, spec, k, c.name)) plans.push_back({{{k, ""}}});
-  if (c.kind == "column") {
-    const auto bys = by_inputs(d);
+  // Generic forms for a column of the data, and for a numeric model input the
+  // base model does not use (speed when it is continuous, not a cell level).
+  if (c.kind == "column" || (c.name == "speed_mm_s" && !d.speed_is_level)) {
+    auto bys = by_inputs(d);
+    bys.erase(std::remove(bys.begin(), bys.end(), c.name), bys.end());
     auto add = [&](EffectKind k, const std::string& by = "") {
       if (applicable(d, spec, k, c.name)) plans.push_back({{{k, by}}});
     };
@@ -157,6 +168,8 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
       add(EffectKind::categorical);
       if (c.levels.size() <= 4)
         for (const auto& by : bys) add(EffectKind::categorical_by, by);
+      add(EffectKind::force_offset);  // levels on the force channel
+      if (c.levels.size() <= 4) add(EffectKind::force_offset, "pin");
     } else {
       for (EffectKind k : {EffectKind::generic_linear, EffectKind::generic_saturating, EffectKind::generic_log,
                            EffectKind::generic_exp})
@@ -166,6 +179,21 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
         if (std::isfinite(v)) distinct.insert(v);
       if (distinct.size() >= 3 && distinct.size() <= 8) add(EffectKind::categorical);
       for (const auto& by : bys) add(EffectKind::generic_linear_by, by);
+      // A smooth of any shape (bump, U, periodic, sigmoid, step), 3 or 5 dof
+      // overall and 3 per group of a model input: held-out error and the
+      // one-standard-error rule choose among it and the simpler forms.
+      if (applicable(d, spec, EffectKind::generic_smooth, c.name)) {
+        for (int nb : {3, 5}) plans.push_back({{{EffectKind::generic_smooth, "", nb}}});
+        for (const auto& by : bys) plans.push_back({{{EffectKind::generic_smooth, by, 3}}});
+      }
+      // The force channel (rotating rows too): linear per pin, a smooth, a smooth per pin.
+      if (applicable(d, spec, EffectKind::force_offset, c.name)) {
+        plans.push_back({{{EffectKind::force_offset, "pin", 1}}});
+        if (distinct.size() >= 3 && distinct.size() <= 8 && d.data->extra_index(c.name) >= 0)
+          plans.push_back({{{EffectKind::force_offset, "", 0}}});  // levels
+        if (distinct.size() > 8)
+          for (const std::string by : {"", "pin"}) plans.push_back({{{EffectKind::force_offset, by, 3}}});
+      }
       if (applicable(d, spec, EffectKind::bending_linear, c.name)) {
         plans.push_back({{{EffectKind::bending_linear, ""}}});
         if (applicable(d, spec, EffectKind::generic_linear, c.name))
@@ -178,9 +206,11 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
     FormTrial t;
     t.spec = spec;
     bool bend = false, fric = false;
-    for (const auto& [k, by] : p.parts) {
+    for (const auto& [k, by, nb] : p.parts) {
       t.spec = with_effect(d, t.spec, k, c.name, by);
-      t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (by.empty() ? "" : " (" + by + ")");
+      if (nb > 0) t.spec.effects.back().n_basis = nb;
+      t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (nb > 0 ? " " + std::to_string(nb) + " dof" : "") +
+                (by.empty() ? "" : " (" + by + ")");
       t.meaning += (t.meaning.empty() ? "" : "; ") + effect_meaning(k);
       (acts_on_bending(k) ? bend : fric) = true;
     }

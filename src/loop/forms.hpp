@@ -9,8 +9,14 @@
 //              direction group; numeric: linear, saturating tanh, logarithmic
 //              (positive columns), saturating exponential (lambda on a grid),
 //              levels (3-8 distinct values), linear per pin / speed /
-//              direction group, and the bending channel (F_B + c_pin z) alone
-//              or with a linear friction term ("both").
+//              direction group, a smooth of any shape (natural cubic spline,
+//              3 or 5 dof, and 3 dof per pin / speed / direction group), the
+//              force channel (an extra force on every row, rotating included,
+//              fitted jointly: linear per pin, levels, a 3-dof smooth overall
+//              and per pin), and the bending channel (F_B + c_pin z) alone
+//              or with a linear friction term ("both").  A numeric model input
+//              the base model does not use (speed when continuous) gets the
+//              generic forms too.
 // Each form is added to the current model and must pass three gates as before:
 // the nested-model F test at the Bonferroni threshold, a lower held-out RMS,
 // and the minimum effect.  Among the forms that pass, the one kept is the

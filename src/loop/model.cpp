@@ -91,7 +91,8 @@ void fit_bending_channels(const Design& d, const std::vector<int>& train, bool l
 // Per-pin least-squares bending line on the training rotating rows.  Not
 // analysis::fit_line: that one takes the means as (sum x)/n where this sums
 // x/n (other last bits), and the standard errors here need sxx and the means.
-void fit_bending(const Design& d, const std::vector<int>& train, bool linear, Fit& f) {
+void fit_bending(const Design& d, const std::vector<int>& train, bool linear, Fit& f,
+                 const std::vector<double>* off = nullptr) {
   const size_t np = d.pins.size();
   f.b0.assign(np, std::nan(""));
   f.b1.assign(np, 0.0);
@@ -100,7 +101,7 @@ void fit_bending(const Design& d, const std::vector<int>& train, bool linear, Fi
     for (int i : train)
       if (d.rows[i].rotating && d.rows[i].pin == static_cast<int>(p)) {
         x.push_back(d.rows[i].fback);
-        y.push_back(d.rows[i].y - d.rows[i].fback);
+        y.push_back(d.rows[i].y - d.rows[i].fback - (off ? (*off)[i] : 0.0));
       }
     if (x.empty()) {
       f.b0[p] = p < d.bend_fallback.size() ? d.bend_fallback[p] : std::nan("");
@@ -129,6 +130,57 @@ void fit_bending(const Design& d, const std::vector<int>& train, bool linear, Fi
   }
 }
 
+// Natural cubic spline basis of x with nb non-constant columns (ESL eq. 5.4-5.5:
+// N_1 = x, N_{k+1} = d_k - d_{K-1}, d_k = ((x - xi_k)_+^3 - (x - xi_K)_+^3) / (xi_K - xi_k)),
+// K = nb + 1 knots at equally spaced quantiles of x (the boundary knots at its
+// extremes, so the shape is linear beyond them), x z-scored first; every
+// column centred and scaled to unit sd over the rows, so the constant stays
+// with mu and the fit is well conditioned.
+std::vector<std::vector<double>> spline_basis(const std::vector<double>& x_in, int nb) {
+  const size_t n = x_in.size();
+  std::vector<double> x = x_in, xs;
+  double m = 0, q = 0;
+  for (double v : x) m += v / n;
+  for (double v : x) q += (v - m) * (v - m) / n;
+  const double sd = q > 0 ? std::sqrt(q) : 1.0;
+  for (double& v : x) v = (v - m) / sd;
+  xs = x;
+  std::sort(xs.begin(), xs.end());
+  const int K = nb + 1;
+  std::vector<double> xi(K);
+  for (int k = 0; k < K; ++k) xi[k] = xs[static_cast<size_t>(std::llround(static_cast<double>(k) * (n - 1) / (K - 1)))];
+  auto cube = [](double v) { return v > 0 ? v * v * v : 0.0; };
+  auto dk = [&](int k, double v) {
+    const double w = xi[K - 1] - xi[k];
+    return w > 1e-12 ? (cube(v - xi[k]) - cube(v - xi[K - 1])) / w : 0.0;
+  };
+  std::vector<std::vector<double>> B(nb, std::vector<double>(n, 0.0));
+  for (size_t i = 0; i < n; ++i) {
+    B[0][i] = x[i];
+    for (int k = 0; k + 1 < nb; ++k) B[k + 1][i] = dk(k, x[i]) - dk(K - 2, x[i]);
+  }
+  // Centred, then orthonormalised in order (modified Gram-Schmidt, unit sd):
+  // the same span, so the same fitted shape, but the fit's normal equations
+  // are well conditioned (the raw truncated cubics are nearly collinear and
+  // made Levenberg-Marquardt crawl).
+  for (size_t c = 0; c < B.size(); ++c) {
+    auto& col = B[c];
+    double cm = 0;
+    for (double v : col) cm += v / n;
+    for (double& v : col) v -= cm;
+    for (size_t p = 0; p < c; ++p) {
+      double dot = 0;
+      for (size_t i = 0; i < n; ++i) dot += col[i] * B[p][i] / n;
+      for (size_t i = 0; i < n; ++i) col[i] -= dot * B[p][i];
+    }
+    double cq = 0;
+    for (double v : col) cq += v * v / n;
+    const double cs = cq > 1e-24 ? std::sqrt(cq) : 1.0;
+    for (double& v : col) v /= cs;
+  }
+  return B;
+}
+
 }  // namespace
 
 Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& train_in) {
@@ -142,6 +194,7 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   f.level.assign(spec.effects.size(), {});
   f.level_names.assign(spec.effects.size(), {});
   f.group.assign(spec.effects.size(), {});
+  f.basis.assign(spec.effects.size(), {});
   std::vector<int> bending_effects;
   for (size_t k = 0; k < spec.effects.size(); ++k) {
     const Effect& e = spec.effects[k];
@@ -166,7 +219,14 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
     }
     if (kk == EffectKind::categorical || kk == EffectKind::categorical_by)
       f.level[k] = d.levels(e.variable, &f.level_names[k]);
-    if (kk == EffectKind::generic_linear_by || kk == EffectKind::categorical_by) {
+    if ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && e.n_basis > 0)
+      f.basis[k] = spline_basis(d.values(e.variable), e.n_basis);
+    if (kk == EffectKind::force_offset) {
+      f.has_force = true;
+      if (e.n_basis == 0) f.level[k] = d.levels(e.variable, &f.level_names[k]);
+    }
+    if (kk == EffectKind::generic_linear_by || kk == EffectKind::categorical_by ||
+        ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && !e.by.empty())) {
       int n = 0;
       f.group[k] = d.groups(e.by, &n);
     }
@@ -178,10 +238,16 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   std::vector<int> rows;
   for (int i : train)
     if (!d.rows[i].rotating && !std::isnan(f.b0[d.rows[i].pin])) rows.push_back(i);
+  std::vector<int> mu_rows = rows;  // for the initial mu
+  // A force-channel effect acts on the rotating rows too: they join the fit
+  // (they carry no friction parameter, only the force channel's).
+  if (f.has_force)
+    for (int i : train)
+      if (d.rows[i].rotating && !std::isnan(f.b0[d.rows[i].pin])) rows.push_back(i);
   // Initial mu per cell and direction from Eq. (5.1) row by row.
   Eigen::VectorXd th = Eigen::VectorXd::Zero(L.n);
   std::vector<double> sum(L.n, 0.0), cnt(L.n, 0.0);
-  for (int i : rows) {
+  for (int i : mu_rows) {
     const Row& r = d.rows[i];
     const double ffric = r.y - r.fback - (f.b0[r.pin] + f.b1[r.pin] * r.fback) - (f.bend_extra.empty() ? 0.0 : f.bend_extra[i]);
     const double mu = ffric > 0 ? analysis::mu_from_friction(ffric, r.fback, kWrapRad) : 0.0;
@@ -206,6 +272,18 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   Eigen::MatrixXd J;
   double sse = 0;
   if (n > 0) sse = levenberg_marquardt(th, resid, J, f.converged, row);
+  if (n > 0 && f.has_force && bending_effects.empty()) {
+    // The bending lines refitted to the rotating rows less the force channel,
+    // then the friction and force parameters again (one alternation).
+    std::vector<double> off(d.rows.size(), 0.0);
+    for (int i : train)
+      if (d.rows[i].rotating && !std::isnan(f.b0[d.rows[i].pin]))
+        off[i] = predict_row(d, f, L, th, i, nullptr) - d.rows[i].fback - f.b0[d.rows[i].pin] -
+                 f.b1[d.rows[i].pin] * d.rows[i].fback;
+    f.params.clear();
+    fit_bending(d, train, linear_bending, f, &off);
+    sse = levenberg_marquardt(th, resid, J, f.converged, row);
+  }
   f.theta = th;
   f.rss = sse;
   f.n_fixed = n;

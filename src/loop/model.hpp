@@ -129,6 +129,9 @@ struct Fit {
   std::vector<double> b0, b1;       ///< bending line per pin (NaN: no rotating rows)
   std::vector<std::vector<double>> drift_z;  ///< per effect: its feature per row (z-score, log or exp transform)
   std::vector<std::vector<int>> group;       ///< per effect with a `by`: group index per row
+  /// per generic_smooth effect: its spline basis, n_basis columns of one value per row
+  std::vector<std::vector<std::vector<double>>> basis;
+  bool has_force = false;  ///< the spec has a force_offset effect (rotating rows get its term too)
   std::vector<double> bend_extra;   ///< per row: bending-channel effects' c_pin z (empty: none)
   std::vector<std::vector<int>> level;       ///< level index per row of each categorical effect
   std::vector<std::vector<std::string>> level_names;

@@ -29,6 +29,7 @@ struct Layout {
 /// fixed-pin row: mu = (mu0 + a1 p) * factor * pinf.
 struct Terms {
   double a1 = 0, factor = 1, pinf = 1;
+  double add_N = 0;  ///< force-channel effects: added to the outlet force of the row (rotating rows too)
 };
 
 /// What an effect's rule (effect_rules.hpp) sees when it adds its term for row i (r is the row,

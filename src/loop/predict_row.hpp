@@ -23,7 +23,16 @@ inline double predict_row(const Design& d, const Fit& f, const Layout& L, const 
   const double bend_x = f.bend_extra.empty() ? 0.0 : f.bend_extra[i];  // bending-channel effects
   const double bend = f.b0[r.pin] + f.b1[r.pin] * r.fback + bend_x;
   if (std::isnan(bend)) return std::nan("");
-  if (r.rotating) return r.fback + bend;
+  if (r.rotating) {
+    if (!f.has_force) return r.fback + bend;
+    Terms t;
+    for (size_t k = 0; k < f.spec.effects.size(); ++k)
+      if (f.spec.effects[k].kind == EffectKind::force_offset) {
+        const Effect& e = f.spec.effects[k];
+        visit_rule(e.kind, [&](auto rule) { rule.apply(EffectArgs{d, f, r, i, k, e, th.data() + L.eff_start[k]}, t); });
+      }
+    return r.fback + bend + t.add_N;
+  }
   const int ir = L.mu_rd[r.cell], it = L.mu_td[r.cell];
   double mu0;
   if (ir >= 0 && it >= 0) mu0 = analysis::ellipse_mu(th[ir], th[it], r.cos_phi, r.sin_phi);
@@ -45,7 +54,7 @@ inline double predict_row(const Design& d, const Fit& f, const Layout& L, const 
   }
   if (mu_out) *mu_out = mu;
   if (p_out) *p_out = analysis::pressure_at_tension(r.pw_ref, r.fback, bend, ff, r.fref, bend_ref);
-  return r.fback + bend + ff;
+  return r.fback + bend + ff + t.add_N;
 }
 
 }  // namespace detail

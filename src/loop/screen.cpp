@@ -31,6 +31,7 @@ struct ProbeDef {
   int nstrata = 1, nlev = 1, dof = 1;
   std::vector<double> ur, urw, un, uw2;
   double sst = 0;  // sum of squares of the centred residual (constant under permutation)
+  double scale = 1;      // ESS / scale ~ chi^2(dof) under permutation (calibrated on a pilot sample)
   // row-level data for the held-out probe
   std::vector<int> row_stratum;
   mutable std::vector<double> s1, s2, s3, s4;
@@ -91,6 +92,12 @@ struct ProbeDef {
     return 0;
   }
 };
+
+// Wilson-Hilferty normal deviate of X = ESS / scale ~ chi^2(dof) (see the statistic in rank_candidates).
+double probe_z(const ProbeDef& p, double ess) {
+  const double k = p.dof, x = std::max(0.0, ess) / p.scale, c = 2.0 / (9.0 * k);
+  return (std::cbrt(x / k) - (1 - c)) / std::sqrt(c);
+}
 
 // Held-out fractional reduction of the residual SSE by a probe, with the same
 // folds as the model: on the training rows of each fold the probe is fitted
@@ -255,9 +262,15 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         for (int i : rows) xs.push_back(c.x[i]);
         std::sort(xs.begin(), xs.end());
         std::vector<double> cut;
-        for (int b = 1; b < 5; ++b) cut.push_back(xs[xs.size() * b / 5]);
+        // Quantile bins: 8 when the variable has enough units (tests for a
+        // test-level variable) for a periodic or bump shape, else 5.
+        std::set<int> units;
+        for (int i : rows) units.insert(c.test_level ? f.test[i] : i);
+        const int nb = units.size() >= 80 ? 8 : 5;
+        for (int b = 1; b < nb; ++b) cut.push_back(xs[xs.size() * b / nb]);
+        cut.erase(std::unique(cut.begin(), cut.end()), cut.end());
         for (int i : rows) lv[i] = static_cast<int>(std::upper_bound(cut.begin(), cut.end(), c.x[i]) - cut.begin());
-        nlev = 5;
+        nlev = static_cast<int>(cut.size()) + 1;
       }
     }
     // Units and permutation groups.
@@ -322,9 +335,12 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     if (c.categorical) add(Shape::levels, "levels", none, 1);
     else {
       add(Shape::quad, distinct.size() >= 4 ? "linear + quadratic" : "linear", none, 1);
-      if (nlev > 2) add(Shape::levels, distinct.size() <= 8 ? "levels" : "5 quantile bins", none, 1);
+      if (nlev > 2) add(Shape::levels, distinct.size() <= 8 ? "levels" : std::to_string(nlev) + " quantile bins", none, 1);
     }
     if (weighted) add(c.categorical ? Shape::wlevels : Shape::wslope, "scaled with dF/dmu", none, 1);
+    if (weighted && !c.categorical && nlev > 2)  // a multiplicative effect of any shape
+      add(Shape::wlevels, (distinct.size() <= 8 ? "levels" : std::to_string(nlev) + " quantile bins") +
+                              std::string(" scaled with dF/dmu"), none, 1);
     if (ctx)
       for (const auto& [input, g] : ctx->modifiers) {
         if (same_input(c.name, input)) continue;
@@ -333,6 +349,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         for (int i : rows) seen.insert(g[i]), ng = std::max(ng, g[i] + 1);
         if (seen.size() < 2) continue;
         add(c.categorical || distinct.size() <= 8 ? Shape::levels : Shape::slopes, "per " + input, g, ng);
+        if (!c.categorical && distinct.size() > 8) add(Shape::levels, "bins per " + input, g, ng);
       }
     int dof_max = 0;
     for (const auto& p : probes) dof_max = std::max(dof_max, p.dof);
@@ -342,15 +359,62 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
       out.push_back(res);
       continue;
     }
-    // Statistic: the family's largest explained fraction per degree of freedom.
+    // Statistic: the family's largest probe on a common scale.  Each probe's
+    // explained sum of squares is X = ESS / scale (calibrated below), about
+    // chi^2 with the probe's dof on null data; the Wilson-Hilferty cube root
+    // maps it to a normal deviate, so a probe
+    // of 1 dof and one of 8 compete by how surprising each is, not by the
+    // explained fraction per dof (which buried every many-level probe).  The
+    // permutation test calibrates the maximum, so the transform only decides
+    // how the probes share the family's power.
     auto stat = [&](const std::vector<double>& a, const std::vector<int>& b, int* best) {
-      double t = -1;
+      double t = -INFINITY;
       for (size_t j = 0; j < probes.size(); ++j) {
-        const double v = probes[j].ess(a, b) / (probes[j].dof * probes[j].sst);
+        const double v = probe_z(probes[j], probes[j].ess(a, b));
         if (v > t) t = v, *best = static_cast<int>(j);
       }
       return t;
     };
+    // Calibration: ESS of each probe under a pilot sample of permutations (its
+    // own random stream, so the test's permutations stay independent of it).
+    // The permutation distribution is the same whichever permutation the data
+    // are, so constants taken from it keep the test exact.  scale = mean ESS /
+    // dof puts every probe on the chi^2(dof) scale even when whole tests are
+    // the units (a test's rows share its scatter, so ESS / s^2 of the rows
+    // would inflate with the dof); a probe whose ESS does not change under
+    // permutation (a variable constant within every permutation group) is
+    // dropped.
+    {
+      std::mt19937_64 prng(seed + 7919 * ci + 104729);
+      std::vector<int> pp(U);
+      for (size_t u = 0; u < U; ++u) pp[u] = static_cast<int>(u);
+      std::vector<double> qz(U);
+      std::vector<int> ql(U);
+      const int P = 200;
+      std::vector<double> m1(probes.size(), 0.0), m2(probes.size(), 0.0);
+      for (int j = 0; j < P; ++j) {
+        for (const auto& g : groups)
+          for (size_t k = g.size(); k > 1; --k) std::swap(pp[g[k - 1]], pp[g[prng() % k]]);
+        for (size_t u = 0; u < U; ++u) qz[u] = xz[pp[u]], ql[u] = xl[pp[u]];
+        for (size_t q = 0; q < probes.size(); ++q) {
+          const double e = probes[q].ess(qz, ql);
+          m1[q] += e / P, m2[q] += e * e / P;
+        }
+      }
+      std::vector<ProbeDef> kept;
+      for (size_t q = 0; q < probes.size(); ++q) {
+        const double var = m2[q] - m1[q] * m1[q];
+        if (!(m1[q] > 0) || !(var > 1e-12 * m1[q] * m1[q])) continue;
+        probes[q].scale = m1[q] / probes[q].dof;
+        kept.push_back(std::move(probes[q]));
+      }
+      probes = std::move(kept);
+    }
+    if (probes.empty()) {
+      res.p_value = 1;
+      out.push_back(res);
+      continue;
+    }
     int best = 0;
     const double T = stat(xz, xl, &best);
     res.stat = probes[best].ess(xz, xl);
@@ -378,7 +442,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         for (const auto& g : groups)  // Fisher-Yates within the group
           for (size_t k = g.size(); k > 1; --k) std::swap(perm[g[k - 1]], perm[g[mod(rng(), k)]]);
         for (size_t u = 0; u < U; ++u) pz[u] = xz[perm[u]], pl[u] = xl[perm[u]];
-        if (stat(pz, pl, &dummy) >= T * (1 - 1e-12)) ++ge;
+        if (stat(pz, pl, &dummy) >= T - 1e-12 * std::max(1.0, std::abs(T))) ++ge;
       }
       dec = sequential_decision(ge, b, thr);
       if (dec != 0) break;

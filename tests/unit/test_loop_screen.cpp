@@ -82,8 +82,13 @@ BOOST_AUTO_TEST_CASE(one_cell_effect_seen_per_group) {
     if (pin[i] == 0) r[i] = c.x[i] - mz, ss += r[i] * r[i];
   ctx.modifiers.push_back({"pin", pin});
   const auto res = rank_candidates({c}, r, f, 2000, 7, 0.05, &ctx);
-  BOOST_TEST(res[0].probe == "per pin");
-  BOOST_TEST(res[0].stat == ss, tt::tolerance(1e-9));
+  // The strongest probe is one of the per-pin probes (issue 50: the family has
+  // a slope and quantile bins per group).  The slope explains the residual
+  // exactly (ESS = ss, the whole residual sum of squares); the bins explain at
+  // most the whole (ESS <= SST = ss).
+  BOOST_TEST((res[0].probe == "per pin" || res[0].probe == "bins per pin"));
+  if (res[0].probe == "per pin") BOOST_TEST(res[0].stat == ss, tt::tolerance(1e-9));
+  else BOOST_TEST(res[0].stat <= ss * (1 + 1e-12));
   BOOST_TEST(res[0].significant);
 }
 

@@ -1,0 +1,36 @@
+#!/bin/bash
+# Development scorer of the loop on generator 1 (blind) sets, scored as in
+# chapters/ch7-closing-the-loop/heldout_protocol.md (set i: class i % 6, noise
+# 3 N when (i / 6) even, else 8 N; detected = first step names an alias AND
+# final held-out RMS <= 2 x the true noise sd; null: any step is a false alarm).
+# ONLY for development seeds (heldout_protocol_v2.md: 50500000..50500143,
+# 52000000..52999999); never on held-out seeds 53100000+ or 54200000+.
+# usage: blind_dev.sh BIN SEED0 N OUTDIR [PERM] [FIRST]
+#   one line per set: i class noise outcome final/noise time | truth | steps
+BIN=$1; S0=$2;
+if (( S0 >= 53100000 && S0 < 53200000 )) || (( S0 >= 54200000 && S0 < 54300000 )); then
+  echo "held-out seeds: not for development (heldout_protocol_v2.md)" >&2; exit 2; fi
+N=$3; OUT=$4; PERM=${5:-2000}; FIRST=${6:-0}
+classes=(level smooth interaction bending test-level null)
+mkdir -p $OUT
+for ((i=FIRST;i<N;i++)); do
+  cls=${classes[$((i%6))]}; if (( (i/6)%2 )); then noise=8; else noise=3; fi
+  s=$((S0+i)); d=$OUT/set$i
+  $BIN synth --generator blind --class $cls --seed $s --noise $noise --out $d >/dev/null 2>&1
+  /usr/bin/time -f %e -o $d/time $BIN loop $d/data.csv --out $d/loop --permutations $PERM --threads 1 >$d/log 2>&1
+  python3 - $d $cls $noise $i <<'PY'
+import json,sys
+d,cls,noise,i=sys.argv[1],sys.argv[2],float(sys.argv[3]),sys.argv[4]
+t=json.load(open(d+'/truth.json')); 
+try: r=json.load(open(d+'/loop/loop_summary.json'))
+except Exception as e: print(i,cls,'ERROR',e); sys.exit()
+st=r['steps']; fin=r['heldout_rms_N']/noise
+tm=open(d+'/time').read().split()[-1]
+if cls=='null': out='quiet' if not st else 'FALSE_ALARM'
+else:
+  named = bool(st) and st[0]['variable'] in t['aliases']
+  out = 'detected' if named and fin<=2 else 'named_high' if named else 'no_step' if not st else 'wrong_first'
+steps='; '.join(s['variable']+'->'+s['effect'] for s in st)
+print(i,cls,noise,out,'%.2f'%fin,tm+'s','|',t.get('variable'),t.get('shape'),t.get('channel'),t.get('cell'),'k=%.1f'%t.get('k',0),'|',steps)
+PY
+done
