@@ -187,7 +187,15 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
         for (const auto& by : bys) plans.push_back({{{EffectKind::generic_smooth, by, 3}}});
       }
       // The force channel (rotating rows too): linear per pin, a smooth, a smooth per pin.
-      if (applicable(d, spec, EffectKind::force_offset, c.name)) {
+      // Each needs a number on every row: a column with empty cells (missing
+      // values) gets none of them, as it gets none of the generic forms above.
+      bool every_row_numeric = true;
+      try {
+        d.values(c.name);
+      } catch (const InputError&) {
+        every_row_numeric = false;
+      }
+      if (every_row_numeric && applicable(d, spec, EffectKind::force_offset, c.name)) {
         plans.push_back({{{EffectKind::force_offset, "pin", 1}}});
         if (distinct.size() >= 3 && distinct.size() <= 8 && d.data->extra_index(c.name) >= 0)
           plans.push_back({{{EffectKind::force_offset, "", 0}}});  // levels

@@ -27,7 +27,7 @@ BOOST_AUTO_TEST_CASE(escapes_quotes_backslashes_and_controls) {
 BOOST_AUTO_TEST_CASE(toml_reads_back_what_was_quoted) {
   std::string all;
   for (int c = 1; c < 128; ++c) all += static_cast<char>(c);
-  for (const std::string s : {std::string("plain"), std::string("C:\\data\\a \"b\".csv"), std::string("two\nlines"),
+  for (const std::string& s : {std::string("plain"), std::string("C:\\data\\a \"b\".csv"), std::string("two\nlines"),
                               std::string("\xC2\xB5m"), all}) {
     const toml::table t = toml::parse("k = " + string_literal(s) + "\n");
     BOOST_TEST(t["k"].value<std::string>().value_or("<none>") == s);
