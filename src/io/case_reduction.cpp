@@ -12,28 +12,13 @@ namespace drawbend::io {
 
 namespace {
 
-/// The step named `name` and the last contact pair on `tool` (InputError if either is missing).
-struct Where {
-  int step = -1, pair = -1;
-};
-
-Where locate(const ReductionSpec& r, const fe::Model& m) {
-  Where w;
-  for (std::size_t k = 0; k < m.steps.size(); ++k)
-    if (m.steps[k].name == r.step) w.step = static_cast<int>(k);
-  for (std::size_t k = 0; k < m.contacts.size(); ++k)
-    if (m.contacts[k].tool == r.tool) w.pair = static_cast<int>(k);
-  if (w.step < 0) throw InputError("output.reduce.step: no step named \"" + r.step + "\"");
-  if (w.pair < 0) throw InputError("output.reduce.tool: no [[contact]] on a tool named \"" + r.tool + "\"");
-  return w;
-}
 
 ReducedValue scalar(const std::string& q, double v) { return {q, NAN, NAN, v}; }
 
 /// Block sliding (sim/block_case): friction ratios over the last third of the slide.
 class BlockSlide : public CaseReduction {
  public:
-  BlockSlide(const ReductionSpec& r, const fe::Model& m) : r_(r), w_(locate(r, m)), duration_(m.steps[w_.step].duration) {}
+  BlockSlide(const ReductionSpec& r, const fe::Model& m) : r_(r), w_(reduction_place(r, m)), duration_(m.steps[w_.step].duration) {}
   void cycle(const fe::Solver& s, const fe::Progress& p) override {
     if (p.step_index != w_.step || p.step_time < duration_ * 2.0 / 3.0) return;
     const auto F = s.tool_force(r_.tool);
@@ -55,7 +40,7 @@ class BlockSlide : public CaseReduction {
 
  private:
   ReductionSpec r_;
-  Where w_;
+  ReductionPlace w_;
   double duration_;
   double fx_ = 0, fy_ = 0, fz_ = 0;
 };
@@ -63,7 +48,7 @@ class BlockSlide : public CaseReduction {
 /// The strip draw (sim/strip_draw_case): mu of the die and the slip speed of a probe node under it.
 class StripDraw : public CaseReduction {
  public:
-  StripDraw(const ReductionSpec& r, const fe::Model& m) : r_(r), w_(locate(r, m)), duration_(m.steps[w_.step].duration) {
+  StripDraw(const ReductionSpec& r, const fe::Model& m) : r_(r), w_(reduction_place(r, m)), duration_(m.steps[w_.step].duration) {
     const auto [xmin, xmax] = std::minmax_element(m.mesh.x.begin(), m.mesh.x.end());
     const auto [ymin, ymax] = std::minmax_element(m.mesh.y.begin(), m.mesh.y.end());
     cx_ = 0.5 * (*xmin + *xmax);
@@ -129,7 +114,7 @@ class StripDraw : public CaseReduction {
   }
 
   ReductionSpec r_;
-  Where w_;
+  ReductionPlace w_;
   double duration_, cx_ = 0, cy_ = 0;
   int probe_ = -1;
   double t0_ = 0;
@@ -141,7 +126,7 @@ class StripDraw : public CaseReduction {
 /// Cup drawing (sim/cup_case), a quarter model: the punch curve and the cup at the end of the stroke.
 class CupDraw : public CaseReduction {
  public:
-  CupDraw(const ReductionSpec& r, const fe::Model& m) : r_(r), w_(locate(r, m)) {
+  CupDraw(const ReductionSpec& r, const fe::Model& m) : r_(r), w_(reduction_place(r, m)) {
     bool holder = false;
     for (const auto& t : m.tools) holder = holder || t.name == r.holder;
     if (!holder) throw InputError("output.reduce.holder: no tool named \"" + r.holder + "\"");
@@ -189,7 +174,7 @@ class CupDraw : public CaseReduction {
 
  private:
   ReductionSpec r_;
-  Where w_;
+  ReductionPlace w_;
   double z0_ = 0, die_force_ = 0;
   std::vector<std::pair<double, double>> curve_;
 };
@@ -207,15 +192,12 @@ double parse_cell(const CsvTable& t, const CsvRow& row, const std::string& col) 
 
 }  // namespace
 
-const std::vector<std::string>& reduction_kinds() {
-  static const std::vector<std::string> k{"block_slide", "strip_draw", "cup_draw"};
-  return k;
-}
 
 std::unique_ptr<CaseReduction> make_reduction(const ReductionSpec& r, const fe::Model& m) {
   if (r.kind == "block_slide") return std::make_unique<BlockSlide>(r, m);
   if (r.kind == "strip_draw") return std::make_unique<StripDraw>(r, m);
   if (r.kind == "cup_draw") return std::make_unique<CupDraw>(r, m);
+  check_reduction(r, m);  // throws: the kind is none of the above
   throw InputError("output.reduce.kind: expected block_slide, strip_draw or cup_draw, found \"" + r.kind + "\"");
 }
 

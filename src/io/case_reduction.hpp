@@ -65,6 +65,19 @@ class CaseReduction {
 
 /// The kinds known: block_slide, strip_draw, cup_draw.
 const std::vector<std::string>& reduction_kinds();
+
+/// Where a reduction reads: the index of the step named `r.step` and of the
+/// last contact pair on `r.tool` (InputError naming output.reduce.* if either
+/// is missing).  In io/reduction_place.cpp, apart from the reductions, so the
+/// deck reader checks a deck without the solver.
+struct ReductionPlace {
+  int step = -1, pair = -1;
+};
+ReductionPlace reduction_place(const ReductionSpec& r, const fe::Model& m);
+
+/// The deck reader's check of `[output] reduce`: its kind is known and its
+/// tool and step exist (InputError otherwise).
+void check_reduction(const ReductionSpec& r, const fe::Model& m);
 /// The accumulator for `r` on `m`; throws InputError naming a tool without a
 /// contact pair or an unknown step.
 std::unique_ptr<CaseReduction> make_reduction(const ReductionSpec& r, const fe::Model& m);

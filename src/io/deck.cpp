@@ -281,7 +281,7 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
   if (problems.empty())
     problems.attempt([&] { m.validate(); });
   if (problems.empty() && !d.output.reduce.kind.empty())  // its tool and step exist
-    problems.attempt([&] { make_reduction(d.output.reduce, m); });
+    problems.attempt([&] { check_reduction(d.output.reduce, m); });
   if (problems.empty()) {
     problems.attempt([&] { check_cost(c, root, d); });
     material_warnings(c, root, d);
