@@ -50,6 +50,7 @@ struct Study {
   std::string check;               ///< check id prefix ("ch7.heldout")
   std::string protocol;            ///< the protocol file the checks cite
   int sets = 0, seed0 = 0;
+  std::string scope = "held-out";  ///< in the check texts; "development-data" once the seeds are spent
 };
 
 void run_study(Chapter& c, const Config& cfg, const Study& st) {
@@ -158,11 +159,11 @@ void run_study(Chapter& c, const Config& cfg, const Study& st) {
                    null_base_ok, st.protocol + " check 2: null data are the base model plus noise, so a larger "
                    "error would be a generator the loop's base cannot represent, not a false alarm of the loop");
   c.checks().claim(study::Kind::simulated, st.check + ".detected",
-                   "held-out detection rate (" + st.generator + ") >= 90 % (" + std::to_string(eff_det) + " of " +
+                   st.scope + " detection rate (" + st.generator + ") >= 90 % (" + std::to_string(eff_det) + " of " +
                        std::to_string(eff_sets) + ")",
                    rate >= 0.9, st.protocol + " check 3: issue 50's goal on data the loop was not written for");
   c.checks().claim(study::Kind::simulated, st.check + ".null",
-                   "held-out false alarms (" + st.generator + ") on at most 1/12 of the null sets (" +
+                   st.scope + " false alarms (" + st.generator + ") on at most 1/12 of the null sets (" +
                        std::to_string(null_alarm) + " of " + std::to_string(null_sets) + ")",
                    12 * null_alarm <= null_sets, st.protocol + " check 4: issue 50's goal (at most 1 in 12)");
 }
@@ -170,8 +171,12 @@ void run_study(Chapter& c, const Config& cfg, const Study& st) {
 }  // namespace
 
 void heldout_study(Chapter& c, const Config& cfg) {
-  run_study(c, cfg, {"blind", "demonstration 4 (held out)", "heldout_runs", "heldout_summary", "h", "hc_",
-                     "ch7.heldout", "heldout_protocol.md", cfg.heldout_sets, cfg.heldout_seed0});
+  // The first protocol's seeds were run twice in the session that wrote them;
+  // heldout_protocol_v2.md made them development data (the loop has since been
+  // changed after looking at them), so their checks no longer say held out.
+  run_study(c, cfg, {"blind", "demonstration 4 (the first protocol's seeds, development data since heldout_protocol_v2.md)",
+                     "heldout_runs", "heldout_summary", "h", "hc_", "ch7.heldout", "heldout_protocol.md",
+                     cfg.heldout_sets, cfg.heldout_seed0, "development-data"});
 }
 
 void heldout2_study(Chapter& c, const Config& cfg) {
