@@ -3,13 +3,14 @@
 # chapters/ch7-closing-the-loop/heldout_protocol.md (set i: class i % 6, noise
 # 3 N when (i / 6) even, else 8 N; detected = first step names an alias AND
 # final held-out RMS <= 2 x the true noise sd; null: any step is a false alarm).
-# ONLY for development seeds (heldout_protocol_v2.md: 50500000..50500143,
-# 52000000..52999999); never on held-out seeds 53100000+ or 54200000+.
+# ONLY for development seeds (heldout_protocol_v3.md: 50500000..50500143,
+# 52000000..52999999, 53100000..53100143; wild 54200000..54200143 and
+# 55000000+); never on held-out seeds 57100000+ or 57200000+.
 # usage: blind_dev.sh BIN SEED0 N OUTDIR [PERM] [FIRST]
 #   one line per set: i class noise outcome final/noise time | truth | steps
 BIN=$1; S0=$2;
-if (( S0 >= 53100000 && S0 < 53200000 )) || (( S0 >= 54200000 && S0 < 54300000 )); then
-  echo "held-out seeds: not for development (heldout_protocol_v2.md)" >&2; exit 2; fi
+if (( S0 >= 57000000 && S0 < 58000000 )); then
+  echo "held-out seeds: not for development (heldout_protocol_v3.md)" >&2; exit 2; fi
 N=$3; OUT=$4; PERM=${5:-2000}; FIRST=${6:-0}
 classes=(level smooth interaction bending test-level null)
 mkdir -p $OUT
