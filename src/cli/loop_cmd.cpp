@@ -120,11 +120,12 @@ int loop_main(int argc, char** argv) {
           "rotating-pin rows: swift (Eq. 2.1), fe (the FE map's bending_force_N) or none (F_B = 0)");
   opt.add(figures, "figures", "directory of the gnuplot scripts (empty: no figures)");
   opt.add(gnuplot, "gnuplot", "gnuplot executable");
-  std::string exports = "lsdyna,openradioss,abaqus", export_parts = "1,2";
+  std::string exports = "lsdyna,openradioss,abaqus", export_parts;
   loop::ExportOptions eo;
   opt.add(exports, "export", "friction-model exports written next to friction_model.toml: none or a list of lsdyna, "
                              "openradioss, abaqus (drawbend export --help for the other options)");
-  opt.add(export_parts, "parts", "SHEET,TOOL part IDs written in the exports (OpenRadioss needs them)");
+  opt.add(export_parts, "parts", "SHEET,TOOL part IDs written in the exports (default 1,2, marked in each file "
+                                 "as placeholders to set by hand)");
   opt.add(eo.direction, "direction", "direction of the isotropic exports: rd, td, mean (ortho: both, see drawbend export)");
   std::string model_help = "empirical";
   opt.add(model_help, "model",
@@ -156,7 +157,8 @@ int loop_main(int argc, char** argv) {
     lo.bending_linear = bending != "constant";
     lo.progress = true;
     lo.seed = static_cast<std::uint64_t>(seed);
-    loop::set_list_options(eo, export_parts, "", "");
+    eo.parts_placeholder = export_parts.empty();
+    loop::set_list_options(eo, eo.parts_placeholder ? "1,2" : export_parts, "", "");
     eo.validate("lsdyna");
     if (exports != "none")  // the list checked before the analysis, not after it
       (void)loop::write_exports({}, exports, eo);

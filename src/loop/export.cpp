@@ -23,13 +23,29 @@
 //    CONTACT/OneWaySurfToSurf.cfg (commit bd4557b), and the field texts of the
 //    Keyword User's Manual as carried by ansys/pydyna, keyword class
 //    ContactFormingOneWaySurfaceToSurfaceOrthoFriction (auto/contact/
-//    contact_forming_one_way_surface_to_surface_ortho_friction.py); FS = 2 there:
-//    "the dynamic coefficient of friction points to the table ... (The table ID
-//    is give[n] by FD ...), giving the coefficient of friction as a function of
-//    the relative velocity and pressure", for SURFACE_TO_SURFACE and ONE_WAY_
-//    SURFACE_TO_SURFACE, "in combination with the thickness offset option".
-//    Which variable the FS = 2 table's values are (pressure here, curves of mu
-//    against speed) is the manual's figure, which that text does not carry.
+//    contact_forming_one_way_surface_to_surface_ortho_friction.py).
+//    FS = 2, which variable the table's values are: CONFIRMED from the
+//    manual's text as carried by ansys/pydyna (commit baa7279,
+//    src/ansys/dyna/core/keywords/keyword_classes/auto/
+//    contact_automatic_single_surface.py, card 2 common to *CONTACT): FS
+//    "EQ.2: For a subset of SURFACE_TO_SURFACE type contacts, FD is a table ID
+//    (see *DEFINE_TABLE). That table specifies two or more values of contact
+//    pressure, with each pressure value in the table corresponding to a curve
+//    of friction coefficient as a function of relative velocity", and FD
+//    "FS.EQ.2: Table ID for table that specifies two or more values of contact
+//    pressure, with each pressure value in the table corresponding to a curve
+//    of friction coefficient as a function of relative velocity".  So values:
+//    pressure, curves: mu against speed (written so).  The older text of the
+//    same field (e.g. pydyna's ContactSurfaceToSurfaceThermalFriction) names
+//    the contacts:
+//    "For contact types SURFACE_TO_SURFACE and ONE_WAY_SURFACE_TO_SURFACE ...
+//    This option must be used in combination with the thickness offset
+//    option"; the shell thickness option is THKOPT/SHLTHK (SHLTHK = 1 or 2:
+//    "Shell thickness considered in type surface to surface and node to
+//    surface type contact options"), on the contact's optional card or in
+//    *CONTROL_CONTACT.  Hence the isotropic card written is
+//    *CONTACT_ONE_WAY_SURFACE_TO_SURFACE, a type the text names; not checked
+//    in an LS-DYNA run here.
 //    *DEFINE_TABLE:
 //    card TBID SFA OFFA (10 characters each), then one value per line (20
 //    characters); *DEFINE_CURVE: LCID SIDR SFA SFO OFFA OFFO DATTYP, then
@@ -366,10 +382,15 @@ ExportResult export_lsdyna(const ExportModel& m, const ExportOptions& o) {
   const std::string ids = ifield(o.sheet_part, 10) + ifield(o.tool_part, 10) + ifield(3, 10) + ifield(3, 10);
   if (!ortho) {
     h << "$ isotropic, direction " << o.direction << " (--direction rd|td|mean; ortho for the orthotropic form).\n"
-      << "$ FS = 2, FD = table " << tables[0] << ": read by *CONTACT_SURFACE_TO_SURFACE and\n"
-      << "$ *CONTACT_ONE_WAY_SURFACE_TO_SURFACE (and their FORMING_ forms) with the shell thickness offset; other\n"
-      << "$ contact types do not read the table.  SSID/MSID = sheet/tool part IDs (--parts, SSTYP = MSTYP = 3).\n"
-      << "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ID\n$      CID\n" << ifield(o.contact_id, 10) << "\n"
+      << "$ FS = 2, FD = table " << tables[0] << ": the manual's FS field, \"FD is a table ID (see *DEFINE_TABLE). That\n"
+      << "$ table specifies two or more values of contact pressure, with each pressure value in the table\n"
+      << "$ corresponding to a curve of friction coefficient as a function of relative velocity\", for\n"
+      << "$ *CONTACT_SURFACE_TO_SURFACE and *CONTACT_ONE_WAY_SURFACE_TO_SURFACE \"in combination with the\n"
+      << "$ thickness offset option\"; other contact types do not read the table.  Not run in LS-DYNA here.\n"
+      << "$ SSID/MSID = sheet/tool part IDs (--parts, SSTYP = MSTYP = 3).\n"
+      << "$ SET BY HAND: the shell thickness offset (SHLTHK = 1 or 2: THKOPT = 1 on the contact's optional card D,\n"
+      << "$   or *CONTROL_CONTACT SHLTHK); the deck's units N, mm, s.\n"
+      << "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID\n$      CID\n" << ifield(o.contact_id, 10) << "\n"
       << "$     SSID      MSID     SSTYP     MSTYP    SBOXID    MBOXID       SPR       MPR\n" << ids << "\n"
       << "$       FS        FD        DC        VC       VDC    PENCHK        BT        DT\n"
       << field(2, 10) << ifield(tables[0], 10) << field(0, 10) << field(0, 10) << field(0, 10) << "\n"
@@ -383,6 +404,7 @@ ExportResult export_lsdyna(const ExportModel& m, const ExportOptions& o) {
       << "$ material axes with direction 1 along RD.  LCFS/LCPS blank (an LCFS curve would replace LC1/LC2).\n"
       << "$ FS/FD of card 2 are not used for the sheet.  The SURFB cards (FS1_M ...) repeat the tables; a\n"
       << "$ one-way contact checks only SURFA nodes.  Not run in LS-DYNA here: check on a block slide first.\n"
+      << "$ SET BY HAND: the sheet elements' material axes (direction 1 = RD); the deck's units N, mm, s.\n"
       << "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ORTHO_FRICTION_ID\n$      CID\n" << ifield(o.contact_id, 10)
       << "\n$     SSID      MSID     SSTYP     MSTYP    SBOXID    MBOXID       SPR       MPR\n" << ids << "\n"
       << "$       FS        FD        DC        VC       VDC    PENCHK        BT        DT\n"
@@ -400,6 +422,9 @@ ExportResult export_lsdyna(const ExportModel& m, const ExportOptions& o) {
   }
   if (o.sheet_part == 0 || o.tool_part == 0)
     h << "$ SET BY HAND: SSID and MSID are 0 (no --parts given): put your sheet and tool part IDs.\n";
+  else if (o.parts_placeholder)
+    h << "$ SET BY HAND: SSID " << o.sheet_part << " and MSID " << o.tool_part
+      << " are drawbend loop's PLACEHOLDERS: put your sheet and tool part IDs\n$   (or drawbend export --parts SHEET,TOOL).\n";
   r.text = h.str() + body.str() + "*END\n";
   return r;
 }
@@ -484,8 +509,10 @@ std::string write_exports(const std::vector<std::string>& tomls, const std::stri
   md << "\n## Exports to other solvers\n\n";
   if (list.empty()) return md.str() + "None written (--export none); `drawbend export` writes them later.\n";
   md << "Written with `drawbend export` defaults (direction " << o.direction << ", parts " << o.sheet_part << ","
-     << o.tool_part << ": set yours with `drawbend export FILE.toml --to FORMAT --parts SHEET,TOOL`). Each file's "
-        "header states the data range, the behaviour outside it and its error against the law.\n\n"
+     << o.tool_part << (o.parts_placeholder ? ", PLACEHOLDERS: no --parts given" : "")
+     << ": set yours with `drawbend export FILE.toml --to FORMAT --parts SHEET,TOOL`). Each file's "
+        "header states the data range, the behaviour outside it, its error against the law and what you must "
+        "still set by hand (`SET BY HAND`).\n\n"
      << "| model | file | error against the law |\n|---|---|---|\n";
   for (const auto& t : tomls) {
     const std::string name = std::filesystem::path(t).filename().string();

@@ -24,9 +24,10 @@
 //               /FRIC_ORIENT for the sheet part with the rolling direction.
 //               Part IDs are required (an all-zero pair is dropped silently by
 //               the starter).
-//  lsdyna       isotropic (rd|td|mean): *CONTACT_..._SURFACE_TO_SURFACE with
+//  lsdyna       isotropic (rd|td|mean): *CONTACT_ONE_WAY_SURFACE_TO_SURFACE with
 //               FS = 2, FD = the *DEFINE_TABLE of mu(p, v) (values: contact
-//               pressure; curves: mu against relative sliding speed); `ortho`:
+//               pressure; curves: mu against relative sliding speed: the
+//               manual's FS/FD text, cited in export.cpp); `ortho`:
 //               *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ORTHO_FRICTION with
 //               LC1 (RD) and LC2 (TD) tables (values: sliding speed; curves: mu
 //               against pressure, one per speed) on the four cards after card 3,
@@ -66,6 +67,7 @@ ExportModel read_friction_model(const std::string& toml_path);
 struct ExportOptions {
   std::string direction = "rd";       ///< rd, td, mean or ortho
   int sheet_part = 0, tool_part = 0;  ///< part IDs (required by openradioss; lsdyna: SSID/MSID)
+  bool parts_placeholder = false;     ///< the part IDs are `drawbend loop`'s defaults, not the user's: said in the header
   int friction_id = 1;                ///< /FRICTION and /FRIC_ORIENT ID (bands: ID, ID+1, ...)
   std::array<double, 3> rd_vector{1, 0, 0};  ///< rolling direction in the deck's axes
   double max_rel_error = 0.05;        ///< OpenRadioss fit bound per band

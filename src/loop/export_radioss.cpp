@@ -180,22 +180,37 @@ ExportResult export_openradioss(const ExportModel& m, const ExportOptions& o) {
       << fmt_shortest(edges[k + 1]) << " mm/s\n";
   if (ortho)
     h << "# direction: orthotropic pair, Idir = 1 (direction 1 = RD, direction 2 = TD, /FRIC_ORIENT below).\n"
-      << "#   KNOWN: in an OpenRadioss engine test (block on plate, TYPE7) Idir = 1 with Iform = 2 gave the law\n"
-      << "#   sliding along TD but only Fric of direction 1 along RD (C1-C5 lost); Idir = 1 needs shell parts.\n"
-      << "#   The isotropic form (--direction rd|td|mean) gave the law within 0.3 %.  Check before use.\n"
-      << "#   The engine's source (int07/i7for3.F, orthotropic Ifric = 1) evaluates direction k's law at the\n"
-      << "#   speed v . dir_k floored at 1e-30: a SIGNED component, so sliding against dir_k or across it\n"
-      << "#   drops that direction's speed terms (C2, C3, C5); the isotropic form uses the full speed.\n"
-      << "#   The starter sets the directions on the shells of the interface's MAIN surface\n"
-      << "#   (interf1/inintr_orthdirfric.F): for the sheet's RD the sheet must be the main surface.\n";
+      << "#   DOES NOT GIVE THE LAW in OpenRadioss bd4557b (its engine, block slide on a TYPE7 interface,\n"
+      << "#   Iform = 2, real density and mass-scaled, docs/exports.md of drawbend):\n"
+      << "#   - direction 1 loses C1-C5: the engine reads them one pair block past where the starter puts\n"
+      << "#     them (engine/source/interfaces/int07/frictionparts_model.F line 202, FRICTIONPARTS_MODEL_ORTHO:\n"
+      << "#     TABCOEF_FRIC(LENC+2*LENC*ADRCOEF+J+2) for (ADRCOEF-1)); measured F_T/F_N along RD 0.404, 3.13,\n"
+      << "#     0.0101 where the law is 0.053, 0.043, 0.030.  With that one index corrected (a local build)\n"
+      << "#     RD gave the law within 1.2 % (the polynomial within 0.15 %).\n"
+      << "#   - direction k's speed terms take the SIGNED speed v . dir_k floored at 1e-30 (int07/i7for3.F),\n"
+      << "#     and dir_2 = n x dir_1 (n: the main segment's normal): sliding against dir_k drops C2, C3, C5\n"
+      << "#     (along -dir_2: Fric + C1 p + C4 p^2 exactly, +6 to +45 % against the law; along +dir_2: the\n"
+      << "#     law within 0.2 %).  So a sheet sliding both ways cannot get the speed terms in both.\n"
+      << "#   - the starter puts the directions on the shells of the interface's MAIN surface\n"
+      << "#     (interf1/inintr_orthdirfric.F): for the sheet's RD the sheet must be the main surface.\n"
+      << "#   Use the isotropic form (--direction rd|td|mean): it gave the law in the same engine.\n";
   else
     h << "# direction: isotropic pair law for " << o.direction << " (--direction rd|td|mean|ortho).\n";
   h << "# interfaces that honour /FRICTION: /INTER/TYPE7, TYPE24, TYPE25 (also 11, 19): set fric_ID (columns\n"
     << "#   91-100 of the Ifric card of /INTER/TYPE7) to the /FRICTION ID.  Units of the deck: N, mm, s (/BEGIN).\n"
     << "# parts: sheet " << o.sheet_part << ", tool " << o.tool_part
     << " (--parts); the engine takes p = nodal normal force / area of the main\n"
-    << "#   (tool) segment: mesh the tool about as fine as the sheet.  Iform = 1 (viscous) caps the friction\n"
-    << "#   force at sqrt(2 K m VIS_F) v: measured 25-51 % of mu F_N on a block of real density.\n";
+    << "#   (tool) segment: mesh the tool about as fine as the sheet.\n"
+    << "# Iform = 2 (written) is the form that gave the law.  Iform = 0 or 1 (viscous, total; the starter\n"
+    << "#   reads 0 as 1) caps the friction force per node at sqrt(2 K m VIS_F) v (K contact stiffness, m\n"
+    << "#   nodal mass; int07/i7for3.F): measured on a block of real density at 10 mm/s, F_T/F_N 0.0267,\n"
+    << "#   0.0133, 0.0082 at 4, 8, 13 MPa (-50, -80, -90 % against the law: one force for every p); the\n"
+    << "#   polynomial within 0.15 % at 50 and 95 mm/s, and at 10 mm/s with the mass scaled x1000.\n"
+    << "# SET BY HAND: fric_ID of your interface = the /FRICTION of your speed band (above);\n#   "
+    << (o.parts_placeholder ? "part IDs " + std::to_string(o.sheet_part) + " (sheet) and " + std::to_string(o.tool_part) +
+                                  " (tool) are drawbend loop's PLACEHOLDERS: put yours (drawbend export --parts);\n#   "
+                            : std::string())
+    << "/FRIC_ORIENT VX VY VZ = the rolling direction in your deck's axes (--rd-vector); /BEGIN units Mg, mm, s.\n";
   std::ostringstream o_;
   auto block = [&](const std::vector<double>& c) {
     o_ << "#                 C1                  C2                  C3                  C4                  C5\n"

@@ -23,7 +23,13 @@
 //  A (1-20) O (21-40).  Between curves of a table: linear in the value; outside
 //  the values: the end curve.  Curves: linear, extrapolated from the end segment.
 //  *CONTACT_..._ID: card CID; card 1 SSID MSID SSTYP MSTYP ...; card 2 FS FD ...;
-//  card 3; _ORTHO_FRICTION: four more cards right after card 3, FS1_S FD1_S DC1_S
+//  card 3.  FS = 2 (the manual's FS/FD text, as carried by ansys/pydyna commit
+//  baa7279, contact_automatic_single_surface.py): "FD is a table ID (see
+//  *DEFINE_TABLE). That table specifies two or more values of contact pressure,
+//  with each pressure value in the table corresponding to a curve of friction
+//  coefficient as a function of relative velocity", read by the
+//  SURFACE_TO_SURFACE and ONE_WAY_SURFACE_TO_SURFACE contacts; so this reader
+//  evaluates FD's table at (value = pressure, abscissa = speed).  _ORTHO_FRICTION: four more cards right after card 3, FS1_S FD1_S DC1_S
 //  VC1_S LC1_S OACS_S LCFS LCPS / FS2_S FD2_S DC2_S VC2_S LC2_S / the same two for
 //  SURFB (_M).  OACS integer (0: directions of the segment slid on, 1: of the
 //  sliding node); LCFS, when given, replaces FS FD DC VC LC (mu against the angle

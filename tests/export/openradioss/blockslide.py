@@ -3,8 +3,18 @@
 
 Not run by CI (CI has no OpenRadioss); see README.md in this folder.  Standard library only.
 
-  blockslide.py MODEL.toml --out DIR [--direction rd|td|mean] [--points 4,10 8,50 13,95]
+  blockslide.py MODEL.toml --out DIR [--direction rd|td|mean|ortho] [--points 4,10 8,50 13,95]
                 [--densities real=2.7e-9 scaled=2.7e-6] [--drawbend PATH] [--rad FILE]
+                [--parts SHEET,TOOL] [--rd-vector X,Y,Z] [--iform 0|1|2]
+
+--parts and --rd-vector go to `drawbend export` (default 1,2 and 1,0,0; part 1 is the block, part 2
+the plate).  --direction ortho writes the orthotropic pair (Idir = 1); the block slides along +X, so
+the law compared is RD's when the rolling direction is along +-X and TD's when it is along +-Y (any
+other --rd-vector is refused).  The starter puts the directions on the shells of the interface's main
+surface (the plate, part 2): use --parts 2,1 so /FRIC_ORIENT names the plate.  --iform rewrites
+columns 41-50 of every /FRICTION's Ifric card of the exported file (an experiment on the export, said
+in the report; Iform 0 and 1: viscous total formulation, VIS_F as written, 1).  --engine runs another
+engine build (a patched one, for instance).  A vector starting with '-' is given as --rd-vector=-1,0,0.
 
 Environment: OPENRADIOSS_PATH (the build's root, with exec/starter_linux64_gf, exec/engine_linux64_gf
 and hm_cfg_files; `openradioss_env.sh` of build_openradioss.sh sets it), TH_TO_CSV (OpenRadioss/Tools
@@ -95,8 +105,12 @@ def read_rad(path):
             while j < len(cards) and not cards[j].startswith("/"):
                 pc, a, b = cards[j], cards[j + 1], cards[j + 2]
                 c = [col(a, 1 + 20 * k, 20 + 20 * k) for k in range(5)]
-                pairs.append(dict(parts=(int(col(pc, 21, 30)), int(col(pc, 31, 40))), idir=int(col(pc, 51, 60)),
-                                  c=c, fric=col(b, 21, 40)))
+                pr = dict(parts=(int(col(pc, 21, 30)), int(col(pc, 31, 40))), idir=int(col(pc, 51, 60)),
+                          c=c, fric=col(b, 21, 40))
+                if pr["idir"] == 1:  # direction 2's two cards follow
+                    a2, b2 = cards[j + 3], cards[j + 4]
+                    pr["dir2"] = dict(c=[col(a2, 1 + 20 * k, 20 + 20 * k) for k in range(5)], fric=col(b2, 21, 40))
+                pairs.append(pr)
                 j += 5 if int(col(pc, 51, 60)) == 1 else 3
             fr[fid] = dict(ifric=ifric, iform=iform, pairs=pairs)
             i = j
@@ -115,6 +129,22 @@ def read_rad(path):
     if stated is None:
         sys.exit(f"{path}: no stated maximum relative error in the header")
     return fr, bands, stated
+
+
+def set_iform(path, iform):
+    """Columns 41-50 of the Ifric card (the second card after each /FRICTION/ID) set to iform."""
+    lines = open(path).read().split("\n")
+    out, after = [], -1
+    for l in lines:
+        if l.startswith("/FRICTION/"):
+            after = 0
+        elif after >= 0 and l and not l.startswith("#"):
+            after += 1
+            if after == 2:
+                l = l.ljust(50)[:40] + f"{iform:10d}" + l[50:]
+                after = -1
+        out.append(l)
+    open(path, "w").write("\n".join(out))
 
 
 def poly_mu(pair, p, v):
@@ -176,11 +206,12 @@ def read_th(case_dir, run_name, th_to_csv):
     if len(named) == 2:  # forces: integrate back to impulses (trapezoid)
         kn = next(k for k, h in enumerate(head) if h.split()[-1] == "FNZ")
         kx = next(k for k, h in enumerate(head) if h.split()[-1] == "FTX")
+        ky = next(k for k, h in enumerate(head) if h.split()[-1] == "FTY")
         imp = lambda k: [0.0] + [sum(0.5 * (data[j][k] + data[j + 1][k]) * (t[j + 1] - t[j]) for j in range(i))
                                  for i in range(1, len(t))]
-        return t, imp(kn), imp(kx)
+        return t, imp(kn), imp(kx), imp(ky)
     n = len(data[0])
-    return t, [r[n - 4] for r in data], [r[n - 3] for r in data]
+    return t, [r[n - 4] for r in data], [r[n - 3] for r in data], [r[n - 2] for r in data]
 
 
 def main():
@@ -194,23 +225,35 @@ def main():
     ap.add_argument("--rad", help="use this exported file instead of running drawbend export")
     ap.add_argument("--t-end", type=float, default=0.010)
     ap.add_argument("--dry", action="store_true", help="write the decks only")
+    ap.add_argument("--parts", default="1,2")
+    ap.add_argument("--rd-vector", default="1,0,0")
+    ap.add_argument("--iform", type=int, choices=[0, 1, 2])
+    ap.add_argument("--engine", help="engine executable (default: $OPENRADIOSS_PATH/exec/engine_linux64_gf)")
     a = ap.parse_args()
+    rdv = [float(x) for x in a.rd_vector.split(",")]
+    nrd = math.sqrt(sum(x * x for x in rdv))
+    along = abs(rdv[0]) / nrd  # 1: sliding (+X) along RD, 0: along TD
+    if a.direction == "ortho" and 1e-9 < along < 1 - 1e-9:
+        sys.exit("--direction ortho: --rd-vector must lie along X or Y (the law compared is RD's or TD's)")
+    slid = "td" if a.direction == "ortho" and along < 0.5 else "rd" if a.direction == "ortho" else a.direction
     orpath = os.environ.get("OPENRADIOSS_PATH", "")
     if not orpath and not a.dry:
         sys.exit("OPENRADIOSS_PATH is not set (source openradioss_env.sh of build_openradioss.sh)")
     starter = os.path.join(orpath, "exec", "starter_linux64_gf")
-    engine = os.path.join(orpath, "exec", "engine_linux64_gf")
+    engine = a.engine or os.path.join(orpath, "exec", "engine_linux64_gf")
     th_to_csv = os.environ.get("TH_TO_CSV") or shutil.which("th_to_csv") or ("" if a.dry else sys.exit("TH_TO_CSV not set"))
     os.makedirs(a.out, exist_ok=True)
     rad = os.path.join(a.out, "friction_openradioss.rad")
     if a.rad:
         shutil.copy(a.rad, rad)
     else:
-        subprocess.run([a.drawbend, "export", a.model, "--to", "openradioss", "--parts", "1,2", "--direction",
-                        a.direction, "--out", rad], check=True)
+        subprocess.run([a.drawbend, "export", a.model, "--to", "openradioss", "--parts", a.parts, "--direction",
+                        a.direction, "--rd-vector", a.rd_vector, "--out", rad], check=True)
+    if a.iform is not None:
+        set_iform(rad, a.iform)
     friction_text = open(rad).read().rstrip("\n")
     fr, bands, stated = read_rad(rad)
-    law, dom = read_law(a.model, a.direction)
+    law, dom = read_law(a.model, slid)
     plate_nodes, plate_shells = plate_cards()
     t_end = a.t_end
     t1, t2 = 0.2 * t_end, 0.4 * t_end  # load ramp, speed ramp
@@ -239,26 +282,32 @@ def main():
             if not echo_done and lst:
                 shutil.copy(listing, os.path.join(a.out, "starter_listing_first_case.out"))
                 echo_done = True
-            eng = None
+            eng = eng_y = None
             if rc_s == 0 and ne == 0:
                 rc_e, out_e = run([engine, "-i", run_name + "_0001.rad"], case, "engine.log")
                 th = read_th(case, run_name, th_to_csv)
                 if th:
-                    t, i_n, i_t = th
+                    t, i_n, i_t, i_ty = th
                     ia = min(range(len(t)), key=lambda k: abs(t[k] - t_a))
                     dn, dt_ = i_n[-1] - i_n[ia], i_t[-1] - i_t[ia]
                     if dn != 0:
                         eng = abs(dt_ / dn)
+                        eng_y = abs((i_ty[-1] - i_ty[ia]) / dn)
             pl = [pr for pr in fr[fid]["pairs"] if set(pr["parts"]) == {1, 2}]
+            if pl and a.direction == "ortho" and slid == "td":
+                pl = [pl[0]["dir2"]]
             poly = poly_mu(pl[0], p, v) if pl else float("nan")
             mu_law = law(p, v)
             rows.append(dict(case=name, rho=rho, p=p, v=v, fid=fid, errors=ne, warnings=nw, engine=eng, poly=poly,
-                             law=mu_law))
+                             law=mu_law, across=eng_y))
     # report
-    lines = [f"stated max relative error of the file: {100 * stated:.3f} %  (model {a.model}, direction {a.direction})",
+    lines = [f"stated max relative error of the file: {100 * stated:.3f} %  (model {a.model}, direction {a.direction}, "
+             f"parts {a.parts}, rd-vector {a.rd_vector}, sliding along +X = {slid.upper()}"
+             + (f", Iform SET TO {a.iform} in the exported file" if a.iform is not None else ", Iform as exported")
+             + (f", engine {a.engine}" if a.engine else "") + ")",
              "| case | rho [Mg/mm^3] | p [MPa] | v [mm/s] | fric_ID | starter errors | warnings | engine F_T/F_N"
-             " | exported polynomial | law | engine vs law | engine vs polynomial | within stated |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             " | engine F_across/F_N | exported polynomial | law | engine vs law | engine vs polynomial | within stated |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     ok = True
     for r in rows:
         e = r["engine"]
@@ -267,7 +316,8 @@ def main():
         good = e is not None and r["errors"] == 0 and r["warnings"] == 0 and abs(rel) <= stated
         ok &= good
         lines.append(f"| {r['case']} | {r['rho']} | {r['p']:g} | {r['v']:g} | {r['fid']} | {r['errors']} | {r['warnings']} | "
-                     + (f"{e:.5f}" if e is not None else "no result") + f" | {r['poly']:.5f} | {r['law']:.5f} | "
+                     + (f"{e:.5f}" if e is not None else "no result") + " | "
+                     + (f"{r['across']:.5f}" if r['across'] is not None else "-") + f" | {r['poly']:.5f} | {r['law']:.5f} | "
                      f"{100 * rel:+.2f} % | {100 * relp:+.2f} % | {'yes' if good else 'NO'} |")
     text = "\n".join(lines) + "\n"
     open(os.path.join(a.out, "blockslide_report.md"), "w").write(text)
