@@ -185,14 +185,15 @@ ExportResult export_openradioss(const ExportModel& m, const ExportOptions& o) {
       << "#   - direction 1 loses C1-C5: the engine reads them one pair block past where the starter puts\n"
       << "#     them (engine/source/interfaces/int07/frictionparts_model.F line 202, FRICTIONPARTS_MODEL_ORTHO:\n"
       << "#     TABCOEF_FRIC(LENC+2*LENC*ADRCOEF+J+2) for (ADRCOEF-1)); measured F_T/F_N along RD 0.404, 3.13,\n"
-      << "#     0.0101 where the law is 0.053, 0.043, 0.030.  With that one index corrected (a local build)\n"
-      << "#     RD gave the law within 1.2 % (the polynomial within 0.15 %).\n"
+      << "#     0.0101 where the law is 0.053, 0.043, 0.030 (and TD -32 % in the 2nd band).  With that one\n"
+      << "#     index corrected (a local build) RD gave the law within 1.2 % (the polynomial within 0.15 %).\n"
       << "#   - direction k's speed terms take the SIGNED speed v . dir_k floored at 1e-30 (int07/i7for3.F),\n"
       << "#     and dir_2 = n x dir_1 (n: the main segment's normal): sliding against dir_k drops C2, C3, C5\n"
-      << "#     (along -dir_2: Fric + C1 p + C4 p^2 exactly, +6 to +45 % against the law; along +dir_2: the\n"
-      << "#     law within 0.2 %).  So a sheet sliding both ways cannot get the speed terms in both.\n"
+      << "#     (along -dir_2: Fric + C1 p + C4 p^2 exactly, +6 to +45 % against the law; along -dir_1 with the\n"
+      << "#     index corrected: +16 to +311 %).  So a sheet sliding both ways cannot get the speed terms in both.\n"
       << "#   - the starter puts the directions on the shells of the interface's MAIN surface\n"
-      << "#     (interf1/inintr_orthdirfric.F): for the sheet's RD the sheet must be the main surface.\n"
+      << "#     (interf1/inintr_orthdirfric.F): for the sheet's RD the sheet must be the main surface\n"
+      << "#     (/FRIC_ORIENT on the solid secondary part instead: -38 %); with Iform = 1 the test blew up.\n"
       << "#   Use the isotropic form (--direction rd|td|mean): it gave the law in the same engine.\n";
   else
     h << "# direction: isotropic pair law for " << o.direction << " (--direction rd|td|mean|ortho).\n";
