@@ -73,7 +73,8 @@ struct DrawBendSpec {
   /// theory (analysis::bend_unbend's default constraint) and of 2-D
   /// plane-strain codes.  false (the default): the edge is free, as on the
   /// real strip, and F_B lies below plane strain by the edges' relaxation (on
-  /// the quick mesh, 2 across, 3.9 % on the 42 mm pin; docs/issue51-large-pin.md).
+  /// the 42 mm pin 3.9 % with 2 elements across, 5.9 % with 4 or 8;
+  /// docs/issue51-large-pin.md).
   bool plane_strain_width = false;
 };
 
