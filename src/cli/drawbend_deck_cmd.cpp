@@ -64,6 +64,9 @@ int drawbend_deck_command(int argc, char** argv) {
   opt.add(s.bend_inlet_slides, "bend-inlet-slides",
           "step 1 (bend) with the inlet end sliding under the back tension (true) or clamped (false), which "
           "stretches the strip by about 1 % before the test (docs/issue51-large-pin.md)");
+  opt.add(s.plane_strain_width, "plane-strain-width",
+          "hold the strip's free edge across the width in every step (true: plane strain, the width condition of "
+          "plane-strain beam theory) or leave it free as on the real strip (false)");
   opt.add(s.snapshots, "frames",
           "contact maps and .vtu frames written per step (bend, tension, draw): 3 x N + 1 frames in all");
   opt.add(bending_force, "bending-force",

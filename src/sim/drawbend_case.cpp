@@ -122,9 +122,13 @@ std::string deck_text(const DrawBendSpec& s) {
   // the inlet end clamped the strip is stretched plastically by ~1.3 %
   // (issue 51); spec.bend_inlet_slides lets the inlet end slide instead.
   const double a = (R + t / 2) * M_PI / 4;
+  // Each step's fixed list starts with the symmetry plane (and, for a
+  // plane-strain width, the free edge held across the width).
+  const std::string sym = std::string("fixed = [ { set = \"ymin\", dof = [false, true, false] }") +
+                          (s.plane_strain_width ? ", { set = \"ymax\", dof = [false, true, false] }" : "");
   o << "\n[[step]]\nname = \"bend\"\nduration = " << num(t1) << "\ndamping = " << num(50.0 / ts)
     << "\nfriction = false\n"
-    << "fixed = [ { set = \"ymin\", dof = [false, true, false] }, { set = \"xmin\", dof = ["
+    << sym << ", { set = \"xmin\", dof = ["
     << (s.bend_inlet_slides ? "false" : "true") << ", true, true] } ]\n";
   if (s.bend_inlet_slides)  // the back tension, ramped over the first half of the bend
     o << "force = [ { set = \"xmin\", direction = [-1.0, 0.0, 0.0], magnitude = { t = [0.0, " << num(t1 / 2)
@@ -135,14 +139,14 @@ std::string deck_text(const DrawBendSpec& s) {
     << ", 0.0] } } ]\n\n"
     << "[[step]]\nname = \"tension\"\nduration = " << num(t2) << "\ndamping = " << num(150.0 / ts)
     << "\nfriction = false\n"
-    << "fixed = [ { set = \"ymin\", dof = [false, true, false] }, { set = \"xmax\", dof = [true, true, true] }, "
+    << sym << ", { set = \"xmax\", dof = [true, true, true] }, "
        "{ set = \"xmin\", dof = [false, false, true] } ]\n"
     << "force = [ { set = \"xmin\", direction = [-1.0, 0.0, 0.0], magnitude = "
     << (s.bend_inlet_slides ? num(s.back_tension)  // already on from step 1: step 2 only settles
                             : "{ t = [0.0, " + num(t2 / 2) + "], v = [0.0, " + num(s.back_tension) + "] }")
     << " } ]\n\n"
     << "[[step]]\nname = \"draw\"\nduration = " << num(t3) << "\n"
-    << "fixed = [ { set = \"ymin\", dof = [false, true, false] }, { set = \"xmax\", dof = [true, true, false] }, "
+    << sym << ", { set = \"xmax\", dof = [true, true, false] }, "
        "{ set = \"xmin\", dof = [false, false, true] } ]\n"
     << "force = [ { set = \"xmin\", direction = [-1.0, 0.0, 0.0], magnitude = " << num(s.back_tension) << " } ]\n"
     << "velocity = [ { set = \"xmax\", direction = [0.0, 0.0, -1.0], speed = { t = [0.0, "

@@ -68,6 +68,14 @@ struct DrawBendSpec {
   /// the clamped step's pace, leaves the strip loose on the pin and it snaps
   /// taut later, which yields the inlet leg instead (docs/issue51-large-pin.md).
   bool bend_inlet_slides = false;
+  /// The strip's free edge (the set ymax) held in y in every step: plane
+  /// strain across the width, the width condition of plane-strain beam
+  /// theory (analysis::bend_unbend's default constraint) and of 2-D
+  /// plane-strain codes.  false (the default): the edge is free, as on the
+  /// real strip, and F_B lies below plane strain by the edges' relaxation (on
+  /// the 42 mm pin 3.9 % with 2 elements across, 5.9 % with 4 or 8;
+  /// docs/issue51-large-pin.md).
+  bool plane_strain_width = false;
 };
 
 /// Mid-surface wrap length (D/2 + t/2) * pi/2 [mm].

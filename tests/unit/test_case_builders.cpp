@@ -15,6 +15,9 @@
 //  - The default block deck builds the model of data/cases/block_surface.toml
 //    (the same mesh, numerics, steps and loads), so the two cannot drift apart.
 //  - Bad values throw InputError naming the field and its unit.
+//  - Draw-bend deck (src/sim/drawbend_case) with plane_strain_width: the free
+//    edge (set ymax) is held in y, and only in y, in each of the 3 steps; the
+//    default deck holds it in none.
 #define BOOST_TEST_MODULE case_builders
 #include <boost/test/unit_test.hpp>
 
@@ -25,6 +28,7 @@
 #include "core/csv.hpp"
 #include "io/deck.hpp"
 #include "sim/block_case.hpp"
+#include "sim/drawbend_case.hpp"
 #include "sim/fe_options.hpp"
 #include "sim/strip_draw_case.hpp"
 
@@ -120,4 +124,22 @@ BOOST_AUTO_TEST_CASE(bad_values_name_the_field) {
   s = sim::default_strip_draw_spec(kData);
   s.nz = 0;
   BOOST_TEST(throws_naming([&] { sim::strip_draw_deck_text(s); }, "nz"));
+}
+
+BOOST_AUTO_TEST_CASE(drawbend_plane_strain_width_holds_the_edge) {
+  auto edge_holds = [](bool plane_strain) {
+    sim::DrawBendSpec s;
+    s.hardening = kData + "/materials/aa5754_o_rd.csv";
+    s.plane_strain_width = plane_strain;
+    const io::Deck d = io::parse_deck(sim::deck_text(s), "drawbend.toml");
+    int held = 0;
+    for (const auto& step : d.model.steps)
+      for (const auto& f : step.fixed)
+        if (f.set == "ymax") held += (!f.dof[0] && f.dof[1] && !f.dof[2]) ? 1 : 100;
+    return std::make_pair(d.model.steps.size(), held);
+  };
+  const auto [steps, held] = edge_holds(true);
+  BOOST_TEST(steps == 3u);
+  BOOST_TEST(held == 3);
+  BOOST_TEST(edge_holds(false).second == 0);
 }

@@ -30,6 +30,21 @@
 //    within 0.5 % of the beam (plastic_bending.bend_unbend_work), and F_B's
 //    eighths along the draw scatter by about +-4 % on this mesh; the clamped
 //    deck's pre-stretch gave +24 %.
+// 3. plane_strain_bending_force: the same deck with the strip's free edge held
+//    across the width (plane_strain_width: plane strain, the width condition
+//    of plane-strain beam theory and of 2-D plane-strain codes) against
+//    analysis::bend_unbend in plane strain (c = 2/sqrt(3), modulus E / (1 -
+//    nu^2)), the same curve and tension: 65.20 N / 25.4 = 2.567 N on the 1 mm
+//    strip.  Tolerance 5 % (relative), the reason of case 2, written before
+//    the run: the full-width strip on the quick mesh with its edge held gave
+//    66.08 N (+1.35 %), with it free 63.47 N (-2.7 %), so the shortfall of
+//    the chapters' free strip below plane-strain beam theory on this pin is
+//    the width condition, not the solver; a pin this large keeps the beam's
+//    small-strain idealisations small (stretch 0.9 % in the bend; on the
+//    12.7 mm pin, 1.8 %, the converged plane-strain FE lies 4 % below the
+//    beam, docs/issue51-large-pin.md).  The narrow strip's two cases differ
+//    only by the edge condition, so together they show that F_B moves from
+//    plane stress to plane strain with it by the beam's factor (1.29).
 #define BOOST_TEST_MODULE drawbend_prestretch
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -61,11 +76,12 @@ struct Run {
   CsvTable history;
 };
 
-const Run& the_run() {
-  static const Run run = [] {
+Run make_run(bool plane_strain) {
+  {
     Run r;
     sim::DrawBendSpec& s = r.spec;
-    s.name = "prestretch";
+    s.name = plane_strain ? "prestretch_plane_strain" : "prestretch";
+    s.plane_strain_width = plane_strain;
     s.pin_diameter = 42.0;
     s.width = 0.5;
     s.across = 1;
@@ -87,7 +103,7 @@ const Run& the_run() {
     const std::size_t at = text.find(head);
     BOOST_REQUIRE(at != std::string::npos);
     text.insert(at + head.size(), probes.str());
-    const fs::path dir = fs::temp_directory_path() / "drawbend_verify_prestretch";
+    const fs::path dir = fs::temp_directory_path() / ("drawbend_verify_" + s.name);
     fs::remove_all(dir);
     fs::create_directories(dir);
     io::Deck deck = io::parse_deck(text, (dir / "deck.toml").string());
@@ -98,8 +114,41 @@ const Run& the_run() {
     io::run_case(deck, ro, log);
     r.history = read_csv((dir / "history.csv").string());
     return r;
-  }();
+  }
+}
+
+const Run& the_run() {
+  static const Run run = make_run(false);
   return run;
+}
+
+const Run& plane_strain_run() {
+  static const Run run = make_run(true);
+  return run;
+}
+
+/// F_B = F_Y - F_X [N], mean over the last third of the draw.
+double fe_bending_force(const Run& r) {
+  std::vector<double> fb;
+  for (const auto& row : r.history.rows)
+    if (r.history.text(row, "step") == "draw")
+      fb.push_back(r.history.number(row, "F_Y_full_strip_N") - r.history.number(row, "F_X_full_strip_N"));
+  if (fb.size() <= 30) return NAN;
+  double sum = 0;
+  const std::size_t from = 2 * fb.size() / 3;
+  for (std::size_t i = from; i < fb.size(); ++i) sum += fb[i];
+  return sum / static_cast<double>(fb.size() - from);
+}
+
+/// analysis::bend_unbend on the run's curve and tension with constraint c [N].
+double beam_bending_force(const Run& r, double c) {
+  const material::HardeningCurve curve = material::HardeningCurve::load(r.spec.hardening);
+  analysis::BendMaterial bm;
+  bm.constraint = c;
+  bm.flow = [curve](double p) { return curve.stress(p); };
+  bm.dflow = [curve](double p) { return curve.slope(p); };
+  return analysis::bend_unbend({r.spec.pin_diameter, r.spec.thickness, 2 * r.spec.width, 2 * r.spec.back_tension, 200, 400}, bm)
+      .bending_force_N;
 }
 
 }  // namespace
@@ -125,24 +174,18 @@ BOOST_AUTO_TEST_CASE(inlet_leg_elastic) {
 
 BOOST_AUTO_TEST_CASE(bending_force) {
   const Run& r = the_run();
-  std::vector<double> fb;
-  for (const auto& row : r.history.rows)
-    if (r.history.text(row, "step") == "draw")
-      fb.push_back(r.history.number(row, "F_Y_full_strip_N") - r.history.number(row, "F_X_full_strip_N"));
-  BOOST_REQUIRE(fb.size() > 30);
-  double sum = 0;
-  const std::size_t from = 2 * fb.size() / 3;
-  for (std::size_t i = from; i < fb.size(); ++i) sum += fb[i];
-  const double fe_fb = sum / static_cast<double>(fb.size() - from);
-  const material::HardeningCurve curve = material::HardeningCurve::load(r.spec.hardening);
-  analysis::BendMaterial bm;
-  bm.constraint = 1.0;  // plane stress: the narrow strip's sides are free
-  bm.flow = [curve](double p) { return curve.stress(p); };
-  bm.dflow = [curve](double p) { return curve.slope(p); };
-  const double beam =
-      analysis::bend_unbend({r.spec.pin_diameter, r.spec.thickness, 2 * r.spec.width, 2 * r.spec.back_tension, 200, 400}, bm)
-          .bending_force_N;
+  const double fe_fb = fe_bending_force(r);
+  const double beam = beam_bending_force(r, 1.0);  // plane stress: the narrow strip's sides are free
   BOOST_TEST_MESSAGE("F_B " << fe_fb << " N (last third of the draw), beam theory " << beam << " N, error "
                             << 100 * (fe_fb - beam) / beam << " %");
+  BOOST_TEST(std::abs(fe_fb - beam) / beam < 0.05);
+}
+
+BOOST_AUTO_TEST_CASE(plane_strain_bending_force) {
+  const Run& r = plane_strain_run();
+  const double fe_fb = fe_bending_force(r);
+  const double beam = beam_bending_force(r, analysis::BendMaterial{}.constraint);  // plane strain, E / (1 - nu^2)
+  BOOST_TEST_MESSAGE("plane-strain width: F_B " << fe_fb << " N (last third of the draw), beam theory (plane strain) "
+                                                << beam << " N, error " << 100 * (fe_fb - beam) / beam << " %");
   BOOST_TEST(std::abs(fe_fb - beam) / beam < 0.05);
 }
