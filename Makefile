@@ -37,7 +37,7 @@ study: build
 
 report: study
 	@cmake --build $(BUILD) --target report
-	@echo "report: $(BUILD)/report/study.html"
+	@echo "report: $(BUILD)/report/index.html (one file: $(BUILD)/report/study.html)"
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'full|pending' $(CTEST_ARGS)
