@@ -153,6 +153,16 @@ int loop_main(int argc, char** argv) {
     // --threads N > 0 gives Eigen N.
     Eigen::setNbThreads(threads > 0 ? threads : 1);
     const BendingSource bsrc = bending_source(bending);  // throws on an unknown name
+    // A --figures folder given is checked before the analysis (before, a
+    // missing folder gave "figures could not be drawn ('gnuplot' failed or is
+    // missing)", blaming gnuplot); the default one, when missing, stays the
+    // warning that loop.md repeats.
+    if (opt.given("figures") && !figures.empty() &&
+        !std::filesystem::is_regular_file(std::filesystem::path(figures) / "loop_residual.gp"))
+      throw InputError("--figures '" + clip_for_message(figures) + "': expected the folder of the loop's gnuplot "
+                       "scripts (with loop_residual.gp: figures/ of the source tree; '' for no figures), found " +
+                       (std::filesystem::is_directory(figures) ? "a folder without them"
+                        : std::filesystem::exists(figures) ? "a path that is not a folder" : "nothing there"));
     if (lo.cv != "auto" && lo.cv != "test" && lo.cv != "bt-block")  // before the data are read, named
       throw InputError("--cv: expected auto, test or bt-block, found '" + clip_for_message(lo.cv) + "'");
     lo.bending_linear = bending != "constant";
