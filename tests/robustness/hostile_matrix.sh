@@ -192,6 +192,11 @@ expect loop "option without exports" 2 "--parts: applies only with exports" "$dr
 expect export "option of another format" 2 "--rd-vector: applies only with --to openradioss" "$drawbend" export model/good.toml --to lsdyna --rd-vector 0,1,0 --out e8.k
 expect export "option of another format" 2 "--abaqus: applies only with --to abaqus" "$drawbend" export model/good.toml --to lsdyna --abaqus explicit --out e9.k
 expect loop "unknown name" 2 "input error: --cv: expected auto, test or bt-block, found 'word'" "$drawbend" loop "$root/data/measured/thesis_drawbend.csv" --out l4 --cv word
+# A binary file where CSV text belongs (a program's first 4 kB; an .xlsx is a zip): named as binary, not
+# as UTF-16 (NUL bytes between the characters of UTF-16 text sit on every other byte).
+head -c 4096 "$drawbend" >binary.csv
+expect loop "binary file as data" 2 "binary.csv: the file holds NUL bytes \\(a binary file" "$drawbend" loop binary.csv --out l5
+expect calibrate "binary file as tests" 2 "binary.csv: the file holds NUL bytes \\(a binary file" "$drawbend" calibrate binary.csv --out c6
 # A value too large for its type (1e300 cycles was cast to a long).
 expect run "--checkpoint-every 1e300" 2 "--checkpoint-every: expected a whole number of cycles .*found '1e300'" "$drawbend" run "$deck" --out o13 --quiet --checkpoint-every 1e300
 # help, version and --help take nothing more (version extra was exit 0).
