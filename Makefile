@@ -1,10 +1,10 @@
 # Top-level wrapper.
 #   make        installs missing Debian packages, builds, regenerates every
 #               chapter at paper fidelity (the `full` draw-bend meshes) and
-#               writes build-full/report/study.html; Chapter 8 runs its quick
+#               writes build-full/report/index.html (+ study.html); Chapter 8 runs its quick
 #               tier there (its whole full study takes hours: `make test-full`);
 #   make quick  the same report from the quick meshes of the test suite in
-#               build/report/study.html (quicker: the quick meshes of `make test`);
+#               build/report/index.html (quicker: the quick meshes of `make test`);
 #   make test   builds and runs the CTest suite (unit + chapter + report) in build/;
 #   make install PREFIX=DIR  installs drawbend, its data and docs under DIR (/usr/local).
 BUILD ?= build
@@ -37,7 +37,7 @@ study: build
 
 report: study
 	@cmake --build $(BUILD) --target report
-	@echo "report: $(BUILD)/report/study.html"
+	@echo "report: $(BUILD)/report/index.html (one file: $(BUILD)/report/study.html)"
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE 'full|pending' $(CTEST_ARGS)

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Check the generated report HTML for what a reader trips over (issue 55).
 
-  python3 check_html.py REPORT.html [--forbid PATH]... [--width-em W] [--wide warn|fail]
+  python3 check_html.py PAGE.html... [--forbid PATH]... [--width-em W] [--wide warn|fail]
 
 1. Stray list numbers: an <ol> with a start attribute other than 1.  The
    report's numbered lists all start at 1; an <ol start="10"> is a wrapped
@@ -18,10 +18,16 @@
    Such a table scrolls in its own box (report/style.css); that fails only
    when the table has a note column (the checks tables), which must stay in
    view.  --wide warn lists them all without failing.
+4. Broken links: an href="#id" with no such id on its page, or an
+   href="PAGE.html#id" to a page beside it without that id or that is missing
+   (the report as pages, drawbend-report --pages, links across its pages).
+Each page given is checked; links are checked among the pages of one folder.
 Exit 0 when nothing fails, 1 otherwise; every finding is printed.
 """
 import argparse
 import html.parser
+import os
+import re
 import sys
 
 CHAR_EM = 0.55
@@ -99,24 +105,19 @@ def min_width_em(table):
     return sum(cols.values())
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("html")
-    ap.add_argument("--forbid", action="append", default=[])
-    ap.add_argument("--width-em", type=float, default=56.0)
-    ap.add_argument("--wide", choices=["warn", "fail"], default="fail")
-    o = ap.parse_args()
-    text = open(o.html, encoding="utf-8").read()
+def check_page(path, o):
+    """Checks 1-3 on one page: (number of failures, tables, tables wider than the page)."""
+    text = open(path, encoding="utf-8").read()
     s = Scan()
     s.feed(text)
     bad = 0
     for start, line in s.ols:
-        print(f"{o.html}:{line}: stray numbered list (starts at {start}): a wrapped line began with a number")
+        print(f"{path}:{line}: stray numbered list (starts at {start}): a wrapped line began with a number")
         bad += 1
     for f in o.forbid:
         if f and f in text:
             n = text.count(f)
-            print(f"{o.html}: {n} occurrence(s) of the absolute path {f}")
+            print(f"{path}: {n} occurrence(s) of the absolute path {f}")
             bad += 1
     wide = [(min_width_em(t), t) for t in s.tables]
     over = [(w, t) for w, t in wide if w > o.width_em]
@@ -125,13 +126,57 @@ def main():
         name = " ".join((t["id"] or t["caption"][:60] or "(no caption)").split())
         noted = has_note(t)
         hidden += noted
-        print(f"{o.html}:{t['line']}: table '{name}' needs {w:.0f} em, the page has {o.width_em:.0f} em: "
+        print(f"{path}:{t['line']}: table '{name}' needs {w:.0f} em, the page has {o.width_em:.0f} em: "
               + ("its note column is out of view" if noted else "it scrolls in its own box"))
     if o.wide == "fail":
         bad += hidden
-    print(f"check_html: {len(s.tables)} tables ({len(over)} wider than {o.width_em:.0f} em, {hidden} of them with "
-          f"a note column out of view), "
+    print(f"check_html: {path}: {len(s.tables)} tables ({len(over)} wider than {o.width_em:.0f} em, {hidden} of them "
+          f"with a note column out of view), "
           f"{len(s.ols)} stray numbered lists, {sum(f in text for f in o.forbid if f)} absolute paths")
+    return bad
+
+
+ID = re.compile(r' id="([^"]*)"')
+HREF = re.compile(r'href="([^"#:]*\.html)?#([^"]*)"|href="([^"#:/]+\.html)"')
+
+
+def ids_of(path, cache):
+    if path not in cache:
+        cache[path] = set(ID.findall(open(path, encoding="utf-8").read())) if os.path.isfile(path) else None
+    return cache[path]
+
+
+def check_links(path, cache):
+    """Check 4: every link to an anchor or a page beside this one leads somewhere."""
+    text = open(path, encoding="utf-8").read()
+    folder = os.path.dirname(path)
+    bad, n = 0, 0
+    for m in HREF.finditer(text):
+        page, anchor, bare = m.group(1), m.group(2), m.group(3)
+        target = os.path.join(folder, page or bare) if (page or bare) else path
+        ids = ids_of(target, cache)
+        n += 1
+        if ids is None:
+            print(f"{path}: link to {page or bare}: no such page")
+            bad += 1
+        elif anchor is not None and anchor not in ids:
+            print(f"{path}: link to {(page or '')}#{anchor}: no such id" + (f" in {page}" if page else " on the page"))
+            bad += 1
+    print(f"check_html: {path}: {n} links, {bad} broken")
+    return bad
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("html", nargs="+")
+    ap.add_argument("--forbid", action="append", default=[])
+    ap.add_argument("--width-em", type=float, default=56.0)
+    ap.add_argument("--wide", choices=["warn", "fail"], default="fail")
+    o = ap.parse_args()
+    bad, cache = 0, {}
+    for path in o.html:
+        bad += check_page(path, o)
+        bad += check_links(path, cache)
     return 1 if bad else 0
 
 

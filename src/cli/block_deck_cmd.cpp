@@ -56,6 +56,9 @@ int block_deck_command(int argc, char** argv) {
   opt.range("speed-ramp", 0, kTimeS, "s", true);
   if (!opt.parse(argc, argv)) return 0;
   name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
+  // A regular file of a stated size, named by its option, before the deck is built (a FIFO or a
+  // folder was named by the generated deck's line, with "cannot open").
+  if (!s.hardening.empty()) (void)read_input(s.hardening);
   name_input(s.surface_nodes, "--surface-nodes");
   // --friction and --surface-nodes checked on their own, so that a problem names
   // the option or the user's file and line, not a line of the generated deck.

@@ -88,6 +88,9 @@ int drawbend_deck_command(int argc, char** argv) {
   opt.range("frames", 1, 1000).range("bending-force", 0, kForceN, "N").range("yield-stress", 0, 1e4, "MPa");
   if (!opt.parse(argc, argv)) return 0;
   name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
+  // A regular file of a stated size, named by its option, before the deck is built (a FIFO or a
+  // folder was named by the generated deck's line, with "cannot open").
+  if (!s.hardening.empty()) (void)read_input(s.hardening);
   name_input(s.material, "--material");
   check_threads(threads);
   // Relative files are the user's, from the current folder (io/portable_paths.hpp).

@@ -50,6 +50,9 @@ int export_main(int argc, char** argv) {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
     apply_threads(threads);
     if (to.empty()) throw std::invalid_argument("--to: expected lsdyna, openradioss or abaqus");
+    // The options of one format given for another: refused, not ignored.
+    opt.only_when(to == "openradioss", {"rd-vector", "speed-band", "max-rel-error"}, "with --to openradioss");
+    opt.only_when(to == "abaqus", {"abaqus"}, "with --to abaqus");
     loop::set_list_options(eo, parts, rd_vector, band);
     eo.contact_id = eo.friction_id;
     eo.validate(to == "lsdyna" || to == "openradioss" || to == "abaqus" ? to : "lsdyna");

@@ -154,9 +154,22 @@ int loop_main(int argc, char** argv) {
     // --threads N > 0 gives Eigen N.
     Eigen::setNbThreads(threads > 0 ? threads : 1);
     const BendingSource bsrc = bending_source(bending);  // throws on an unknown name
+    // A --figures folder given is checked before the analysis (before, a
+    // missing folder gave "figures could not be drawn ('gnuplot' failed or is
+    // missing)", blaming gnuplot); the default one, when missing, stays the
+    // warning that loop.md repeats.
+    if (opt.given("figures") && !figures.empty() &&
+        !std::filesystem::is_regular_file(std::filesystem::path(figures) / "loop_residual.gp"))
+      throw InputError("--figures '" + clip_for_message(figures) + "': expected the folder of the loop's gnuplot "
+                       "scripts (with loop_residual.gp: figures/ of the source tree; '' for no figures), found " +
+                       (std::filesystem::is_directory(figures) ? "a folder without them"
+                        : std::filesystem::exists(figures) ? "a path that is not a folder" : "nothing there"));
+    if (lo.cv != "auto" && lo.cv != "test" && lo.cv != "bt-block")  // before the data are read, named
+      throw InputError("--cv: expected auto, test or bt-block, found '" + clip_for_message(lo.cv) + "'");
     lo.bending_linear = bending != "constant";
     lo.progress = true;
     lo.seed = static_cast<std::uint64_t>(seed);
+    opt.only_when(exports != "none", {"parts", "direction"}, "with exports (--export is none)");
     eo.parts_placeholder = export_parts.empty();
     loop::set_list_options(eo, eo.parts_placeholder ? "1,2" : export_parts, "", "");
     eo.validate("lsdyna");
@@ -229,6 +242,16 @@ int synth_main(int argc, char** argv) {
     apply_threads(threads);
     if (generator != "library" && generator != "blind" && generator != "wild")
       throw InputError("--generator: expected library, blind or wild, found '" + generator + "'");
+    // An option the chosen generator does not read is refused, not ignored
+    // (before, --class with the library generator and --data without
+    // --from-thesis were accepted and did nothing).
+    const bool held_out = generator != "library";
+    opt.only_when(from_thesis, {"data", "points"}, "with --from-thesis");
+    opt.only_when(!from_thesis, {"effect", "noise", "seed", "amplitude", "tests-per-pin", "rows-per-test", "maps",
+                                 "generator", "class"}, "without --from-thesis (it writes the thesis fits as they are)");
+    opt.only_when(held_out, {"class"}, "with --generator blind or wild");
+    opt.only_when(!held_out, {"effect", "amplitude", "tests-per-pin", "rows-per-test", "maps"},
+                  "with --generator library (blind and wild read --class, --noise and --seed only)");
     // Sizes and noise a draw-bend data set can have (before 2026-11-29,
     // --rows-per-test -5 ended in "cannot create std::vector larger than
     // max_size()" with exit 3, 1e8 ran for minutes, and --noise -1 wrote data).

@@ -24,7 +24,17 @@ int main(int argc, char** argv) {
            "  drawbend drawbend-deck --pin-diameter 12.7 --element-length 1.5 --through 2 --draw-length 12 --run my-free\n"
            "  drawbend loop data/measured/thesis_drawbend.csv --out my-loop\n"
            "  drawbend help run\n";
-  // `drawbend help CMD` is `drawbend CMD --help`.
+  // `drawbend help CMD` is `drawbend CMD --help`; `help`, `version` and
+  // `--help` take nothing more (a stray word is an input error, not exit 0).
+  const std::string first = argc >= 2 ? argv[1] : "";
+  const bool bare = first == "version" || first == "--version" || first == "--help" || first == "-h" ||
+                    (first == "help" && argc >= 3 && (std::string(argv[2]) == "help" || std::string(argv[2]) == "version"));
+  if (bare && argc > (first == "help" ? 3 : 2)) {
+    std::cerr << "input error: drawbend " << first << (first == "help" ? std::string(" ") + argv[2] : "")
+              << ": unexpected argument '" << argv[first == "help" ? 3 : 2] << "' (it takes none; see drawbend --help)\n";
+    return 2;
+  }
+  if (first == "help" && argc == 3 && std::string(argv[2]) == "help") argc = 2;  // help help: the list
   std::vector<char*> args(argv, argv + argc);
   static char help_flag[] = "--help";
   if (argc >= 3 && std::string(argv[1]) == "help") {

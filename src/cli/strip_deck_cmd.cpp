@@ -60,6 +60,10 @@ int strip_deck_command(int argc, char** argv) {
   if (!opt.parse(argc, argv)) return 0;
   name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
   name_input(s.stribeck_table, "--stribeck-table");
+  // A regular file of a stated size, named by its option, before the deck is built (a FIFO or a
+  // folder was named by the generated deck's line, with "cannot open").
+  if (!s.hardening.empty()) (void)read_input(s.hardening);
+  if (!s.stribeck_table.empty()) (void)read_input(s.stribeck_table);
   // --friction checked on its own (io/portable_paths.hpp): a problem names the option, not the generated deck.
   s.friction = io::friction_argument(s.friction, std::filesystem::current_path().string());
   return write_deck_out(deck_with_threads(sim::strip_draw_deck_text(s), threads), out, "strip-deck");

@@ -34,13 +34,19 @@ std::string csv_text_utf8(const std::string& text, const std::string& path, std:
     throw InputError(path + ": the file is UTF-32 text; expected UTF-8" + how);
   if (starts("\xFF\xFE", 2) || starts("\xFE\xFF", 2))
     throw InputError(path + ": the file is UTF-16 text (it starts with a UTF-16 byte-order mark); expected UTF-8" + how);
-  // UTF-16 without a mark: NUL bytes between ASCII characters.
-  std::size_t nul = 0;
+  // UTF-16 without a mark: NUL bytes between ASCII characters, all on the
+  // odd (LE) or all on the even (BE) bytes; NUL bytes elsewhere: a binary file
+  // (a program, a spreadsheet's .xlsx), which is not called UTF-16.
+  std::size_t nul = 0, nul_odd = 0;
   const std::size_t probe = std::min<std::size_t>(text.size(), 4096);
-  for (std::size_t i = 0; i < probe; ++i) nul += text[i] == '\0';
-  if (probe >= 4 && nul * 4 >= probe)
+  for (std::size_t i = 0; i < probe; ++i)
+    if (text[i] == '\0') ++nul, nul_odd += i % 2;
+  const std::size_t one_side = std::max(nul_odd, nul - nul_odd), other = nul - one_side;
+  if (probe >= 4 && one_side * 4 >= probe && other * 20 <= one_side)
     throw InputError(path + ": the file holds NUL bytes between its characters (UTF-16 text?); expected UTF-8" + how);
-  if (nul > 0) throw InputError(path + ": the file holds NUL bytes: expected CSV text (UTF-8)");
+  if (nul > 0)
+    throw InputError(path + ": the file holds NUL bytes (a binary file, e.g. a program or an .xlsx workbook?): "
+                            "expected CSV text (UTF-8)");
   std::string t = text.rfind("\xEF\xBB\xBF", 0) == 0 ? text.substr(3) : text;
   if (valid_utf8(t) == t) return t;
   std::string out;

@@ -132,7 +132,18 @@ bool Options::parse(int argc, char** argv) {
     opt->set(value);
     if (opt->check) opt->check(value);
   }
+  given_ = seen;
   return true;
+}
+
+bool Options::given(const std::string& name) const {
+  return std::find(given_.begin(), given_.end(), name) != given_.end();
+}
+
+void Options::only_when(bool applies, const std::vector<std::string>& names, const std::string& when) const {
+  if (applies) return;
+  for (const auto& n : names)
+    if (given(n)) throw std::invalid_argument("--" + n + ": applies only " + when + " (given here, it would be ignored)");
 }
 
 std::vector<std::string> Options::echo() const {

@@ -33,6 +33,13 @@ class Options {
   /// std::invalid_argument with a clear message on bad input.
   bool parse(int argc, char** argv);
   std::vector<std::string> echo() const;
+  /// Whether the last parse() saw option `name` on the command line.
+  bool given(const std::string& name) const;
+  /// Refuse the options of `names` that were given while `applies` is false:
+  /// std::invalid_argument "--name: applies only WHEN (given here, it would
+  /// be ignored)" for the first one (an option that does nothing is a typing
+  /// error, not a silent default).
+  void only_when(bool applies, const std::vector<std::string>& names, const std::string& when) const;
   std::string usage() const;
   /// An example command line, shown at the end of --help under "Examples".
   /// Each must run as written from the source folder after a build, with
@@ -51,6 +58,7 @@ class Options {
   std::string program_, description_;
   std::vector<Opt> opts_;
   std::vector<std::string> examples_;
+  std::vector<std::string> given_;
 };
 
 }  // namespace drawbend

@@ -23,11 +23,20 @@ bool readable(const std::string& path) {
   return std::filesystem::is_regular_file(path, ec);
 }
 
-/// "cannot open FILE" with the rule that found it (a relative path is the deck folder's).
+/// "cannot open FILE" with the rule that found it (a relative path is the deck folder's),
+/// or what the path is when it is there but not a regular file (a folder, a FIFO, a device).
 std::string missing(const std::string& file, const std::string& dir) {
-  if (!std::filesystem::path(file).is_relative()) return "cannot open '" + file + "' for reading";
-  return "cannot open '" + file + "' for reading (relative paths are resolved against the deck's folder, " +
-         (dir.empty() ? std::string(".") : dir) + ")";
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(relative_to(dir, file), ec);
+  std::string what = "cannot open '" + file + "' for reading";
+  if (!ec && fs::exists(st) && !fs::is_regular_file(st))
+    what = "'" + file + "': expected a regular file, found " +
+           (fs::is_directory(st) ? "a folder" : fs::is_fifo(st) ? "a FIFO (named pipe)"
+            : fs::is_character_file(st) || fs::is_block_file(st) ? "a device" : "something else");
+  if (!fs::path(file).is_relative()) return what;
+  return what + " (relative paths are resolved against the deck's folder, " + (dir.empty() ? std::string(".") : dir) +
+         ")";
 }
 
 }  // namespace

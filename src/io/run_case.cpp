@@ -76,10 +76,13 @@ void parse_checkpoint_every(const std::string& spec, RunOptions& opt) {
   } catch (const std::exception&) {
     used = 0;
   }
-  const bool ok = used == num.size() && !num.empty() && v > 0 && std::isfinite(v) && (seconds || v == std::floor(v));
+  // At most 1e15 cycles (a long holds it; 1e300 cycles was cast to a long,
+  // undefined behaviour) and 1e6 simulated seconds (no case simulates more).
+  const bool ok = used == num.size() && !num.empty() && v > 0 && std::isfinite(v) && (seconds || v == std::floor(v)) &&
+                  v <= (seconds ? 1e6 : 1e15);
   if (!ok)
-    throw std::invalid_argument("--checkpoint-every: expected a whole number of cycles (e.g. 500) or simulated seconds "
-                                "with an 's' (e.g. 2e-3s), found '" + spec + "'");
+    throw std::invalid_argument("--checkpoint-every: expected a whole number of cycles (e.g. 500, at most 1e15) or "
+                                "simulated seconds with an 's' (e.g. 2e-3s, at most 1e6s), found '" + spec + "'");
   if (seconds) opt.checkpoint_every_s = v;
   else opt.checkpoint_every_cycles = static_cast<long>(v);
 }

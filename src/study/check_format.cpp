@@ -108,10 +108,7 @@ std::string html_escape(const std::string& s) {
   return o;
 }
 
-namespace {
-/// Escaped text that may break after each of `after` (a check id at '.', a path at '/'), so that one long
-/// name does not set the width of the table and push the note column out of view.
-std::string breakable(const std::string& s, const std::string& after) {
+std::string html_breakable(const std::string& s, const std::string& after) {
   std::string o;
   for (char c : s) {
     o += html_escape(std::string(1, c));
@@ -119,7 +116,6 @@ std::string breakable(const std::string& s, const std::string& after) {
   }
   return o;
 }
-}  // namespace
 
 std::string checks_html_table(const CsvTable& t, const std::string& caption) {
   std::ostringstream os;
@@ -132,15 +128,15 @@ std::string checks_html_table(const CsvTable& t, const std::string& caption) {
     const std::string& unit = t.text(r, "unit");
     const std::string& tol = t.text(r, "tolerance");
     const std::string& status = t.text(r, "status");
-    os << "<tr class=\"row-" << html_escape(status) << "\"><td class=\"id\">" << breakable(t.text(r, "id"), ".")
+    os << "<tr class=\"row-" << html_escape(status) << "\"><td class=\"id\">" << html_breakable(t.text(r, "id"), "._")
        << "</td>";
     if (kinds) os << "<td>" << html_escape(kind_of(t, r)) << "</td>";
-    os << "<td class=\"quantity\">" << breakable(t.text(r, "quantity"), "/_") << "</td><td class=\"num\">"
+    os << "<td class=\"quantity\">" << html_breakable(t.text(r, "quantity"), "/_") << "</td><td class=\"num\">"
        << html_escape(display_value(t.text(r, "thesis"), unit, tol)) << "</td><td class=\"num\">"
        << html_escape(display_value(t.text(r, "ours"), unit, tol)) << "</td><td class=\"num\">"
        << html_escape(display_tolerance(tol, unit)) << "</td><td>" << html_escape(display_unit(unit))
        << "</td><td><span class=\"status-" << html_escape(status) << "\">" << html_escape(status)
-       << "</span></td><td class=\"note\">" << html_escape(t.text(r, "note")) << "</td></tr>\n";
+       << "</span></td><td class=\"note\">" << html_breakable(t.text(r, "note"), "/_") << "</td></tr>\n";
   }
   os << "</tbody>\n</table>\n</div>\n";
   return os.str();

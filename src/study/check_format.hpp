@@ -43,6 +43,11 @@ const std::vector<std::string>& kind_order();
 
 /// Escape &, <, > and " for HTML.
 std::string html_escape(const std::string& s);
+/// Escaped text that may break after each character of `after` (<wbr>): a
+/// check id at '.' and '_', a quantity or a note at '/' and '_', so that one
+/// long name does not set the width of a checks table and push its note
+/// column out of view (report/check_html.py measures the narrowest layout).
+std::string html_breakable(const std::string& s, const std::string& after);
 
 /// A chapter's checks as an HTML table (raw HTML inside the Markdown, so the
 /// report controls its classes): check, kind, quantity, thesis, ours,

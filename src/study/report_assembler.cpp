@@ -213,8 +213,8 @@ std::string expand_chapter(const std::string& markdown, const ChapterSource& ch)
   return out.str();
 }
 
-std::string assemble_report(const std::vector<ChapterSource>& chapters, const std::string& title,
-                            const FrontInfo& info) {
+std::string report_front_markdown(const std::vector<ChapterSource>& chapters, const std::string& title,
+                                  const FrontInfo& info) {
   std::ostringstream os;
   os << front_yaml(chapters, info, title) << front_page(chapters, info);
   std::string stale_list;
@@ -223,18 +223,28 @@ std::string assemble_report(const std::vector<ChapterSource>& chapters, const st
   if (!stale_list.empty())
     os << "\n::: {.stale}\n**STALE results**: " << stale_list
        << " were computed from inputs that have changed since; their Provenance sections list which.\n:::\n";
-  for (const auto& ch : chapters) {
-    os << "\n";
-    for (const char* part : {"intro.md", "results.md"}) {
-      const std::string p = ch.src_dir + "/" + part;
-      if (!fs::exists(p)) throw InputError(p + ": missing");
-      ChapterSource located = ch;
-      located.src_dir = p;
-      os << expand_chapter(read_file(p), located) << "\n";
-    }
-    os << provenance_section(ch);
-  }
   return os.str();
+}
+
+std::string chapter_markdown(const ChapterSource& ch) {
+  std::ostringstream os;
+  os << "\n";
+  for (const char* part : {"intro.md", "results.md"}) {
+    const std::string p = ch.src_dir + "/" + part;
+    if (!fs::exists(p)) throw InputError(p + ": missing");
+    ChapterSource located = ch;
+    located.src_dir = p;
+    os << expand_chapter(read_file(p), located) << "\n";
+  }
+  os << provenance_section(ch);
+  return os.str();
+}
+
+std::string assemble_report(const std::vector<ChapterSource>& chapters, const std::string& title,
+                            const FrontInfo& info) {
+  std::string md = report_front_markdown(chapters, title, info);
+  for (const auto& ch : chapters) md += chapter_markdown(ch);
+  return md;
 }
 
 std::vector<ChapterSource> discover_chapters(const std::string& src_root, const std::string& out_root) {

@@ -43,6 +43,14 @@ struct FrontInfo;  // study/report_front.hpp
 std::string assemble_report(const std::vector<ChapterSource>& chapters, const std::string& title,
                             const FrontInfo& info);
 
+/// The parts of that report: the title block and front page (with the list
+/// of stale chapters), and one chapter followed by its provenance.  The
+/// report is their concatenation; `drawbend-report --pages` renders each as
+/// a page of its own (study/report_pages.hpp).
+std::string report_front_markdown(const std::vector<ChapterSource>& chapters, const std::string& title,
+                                  const FrontInfo& info);
+std::string chapter_markdown(const ChapterSource& ch);
+
 /// Chapters found under src_root (directories with intro.md), sorted by name.
 std::vector<ChapterSource> discover_chapters(const std::string& src_root, const std::string& out_root);
 

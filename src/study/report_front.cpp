@@ -327,8 +327,8 @@ std::string front_page(const std::vector<ChapterSource>& chapters, const FrontIn
       ++ndis;
       const std::string &unit = t.text(r, "unit"), &tol = t.text(r, "tolerance"), &note = t.text(r, "note");
       std::ostringstream row;
-      row << "<td class=\"id\"><a href=\"#checks-" << c.ch->id << "\">" << html_escape(t.text(r, "id"))
-          << "</a></td><td class=\"quantity\">" << html_escape(t.text(r, "quantity")) << "</td><td class=\"num\">"
+      row << "<td class=\"id\"><a href=\"#checks-" << c.ch->id << "\">" << html_breakable(t.text(r, "id"), "._")
+          << "</a></td><td class=\"quantity\">" << html_breakable(t.text(r, "quantity"), "/_") << "</td><td class=\"num\">"
           << html_escape(display_value(t.text(r, "thesis"), unit, tol)) << "</td><td class=\"num\">"
           << html_escape(display_value(t.text(r, "ours"), unit, tol)) << "</td><td class=\"num\">"
           << html_escape(display_tolerance(tol, unit)) << "</td><td>" << html_escape(display_unit(unit)) << "</td>";
@@ -344,7 +344,7 @@ std::string front_page(const std::vector<ChapterSource>& chapters, const FrontIn
       if (k == 0)
         nr << "<td class=\"note\"" << (rows.size() > 1 ? " rowspan=\"" + std::to_string(rows.size()) + "\"" : "")
            << ">" << (rows.size() > 1 ? "<em>The " + std::to_string(rows.size()) + " checks beside this note:</em> " : "")
-           << html_escape(note) << "</td>";
+           << html_breakable(note, "/_") << "</td>";
       nr << "</tr>\n";
     }
   if (ndis > 0)
@@ -373,10 +373,10 @@ std::string front_page(const std::vector<ChapterSource>& chapters, const FrontIn
        << "<caption>Thesis statements and values that the thesis's own inputs do not reproduce, one row per "
           "cause.</caption>\n<thead><tr><th>checks</th><th>most likely explanation</th></tr></thead>\n<tbody>\n";
     for (const auto& [note, ids] : causes) {
-      os << "<tr><td class=\"id\"><a href=\"#checks-" << ids.front().second << "\">" << html_escape(ids.front().first)
+      os << "<tr><td class=\"id\"><a href=\"#checks-" << ids.front().second << "\">" << html_breakable(ids.front().first, "._")
          << "</a>";
       if (ids.size() > 1) os << " and " << ids.size() - 1 << " more";
-      os << "</td><td class=\"note\">" << html_escape(note) << "</td></tr>\n";
+      os << "</td><td class=\"note\">" << html_breakable(note, "/_") << "</td></tr>\n";
     }
     os << "</tbody>\n</table>\n</div>\n\n";
   }

@@ -22,7 +22,11 @@ fifo=$work/fifo
 mkfifo "$fifo"
 "$drawbend" synth --effect none --seed 1 --tests-per-pin 2 --rows-per-test 5 --out "$work/synth" >/dev/null
 good_deck=$decks/restart_block.toml
+cal=$here/../../data/materials/aa6016_t4_esaform2021.csv
 printf 'pin_diameter_mm,back_tension_N,bending_force_N\n12.7,1000,200\n25.4,1000,150\n' >"$work/ml.csv"
+mkdir -p "$work/good_model"
+grep -v '^#' "$here/../../data/thesis/table_6_1.csv" >"$work/good_model/nodes.csv"
+printf '[friction]\nlaw = "surface"\nnodes = "nodes.csv"\n' >"$work/good_model/friction_model.toml"
 failed=0
 # run_case LABEL INPUT-DESCRIPTION PATH-THAT-MUST-BE-NAMED CMD...
 run_case() {
@@ -65,6 +69,18 @@ for kind in missing folder device fifo; do
   run_case "model-loop DATA" $kind "$p" "$drawbend" model-loop "$p" --out "$work/out/ml"
   run_case "model-loop --hardening" $kind "$p" "$drawbend" model-loop "$work/ml.csv" --hardening "$p" --out "$work/out/ml"
   run_case "export MODEL" $kind "$p" "$drawbend" export "$p" --to lsdyna --out "$work/out/f.k"
+  run_case "loop --figures" $kind "$p" "$drawbend" loop "$work/synth/data.csv" --figures "$p" --out "$work/out/loop"
+  run_case "calibrate TESTS" $kind "$p" "$drawbend" calibrate "$p" --out "$work/out/cal"
+  run_case "calibrate --compare" $kind "$p" "$drawbend" calibrate "$cal" --compare "$p" --out "$work/out/cal"
+  run_case "plan DECK" $kind "$p" "$drawbend" plan "$p"
+  run_case "drawbend-deck --friction" $kind "$p" "$drawbend" drawbend-deck --friction "$p"
+  run_case "block-deck --friction" $kind "$p" "$drawbend" block-deck --friction "$p" --out "$work/out/block.toml"
+  run_case "strip-deck --friction" $kind "$p" "$drawbend" strip-deck --friction "$p" --out "$work/out/strip.toml"
+  run_case "cup-deck --friction" $kind "$p" "$drawbend" cup-deck --friction "$p"
+  run_case "synth --maps" $kind "$p" "$drawbend" synth --maps "$p" --out "$work/out/synth"
+  # A path inside a deck: the hardening curve a deck names.
+  sed "s|^hardening = .*|hardening = \"$p\"|" "$decks/bom_deck.toml" >"$work/deck_$kind.toml"
+  run_case "run: deck's hardening" $kind "$p" "$drawbend" run "$work/deck_$kind.toml" --out "$work/out/run_h" --quiet
   # export's nodes file: a friction model whose [friction] nodes names the path.
   mkdir -p "$work/model_$kind"
   printf '[friction]\nlaw = "surface"\nnodes = "%s"\n' "$p" >"$work/model_$kind/friction_model.toml"
@@ -78,6 +94,7 @@ for kind in fifo folder; do
   esac
   run_case "block-deck --out" "out=$kind" "$p" "$drawbend" block-deck --out "$p"
   run_case "strip-deck --out" "out=$kind" "$p" "$drawbend" strip-deck --out "$p"
+  run_case "export --out" "out=$kind" "$p" "$drawbend" export "$work/good_model/friction_model.toml" --to lsdyna --out "$p"
   [ -p "$fifo" ] || { echo "| (the FIFO was replaced by a file) | | | |"; rm -f "$fifo"; mkfifo "$fifo"; }
 done
 leftovers=$(find "$work" -name '*.tmp*' | wc -l)

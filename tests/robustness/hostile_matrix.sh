@@ -181,6 +181,29 @@ expect drawbend-deck "one element through the thickness" 0 "warning: drawbend-de
 "$drawbend" drawbend-deck --through 1 --element-length 2 --draw-length 2 >one_layer.toml 2>/dev/null
 expect run "one element through the thickness" 0 "warning: .*one_layer.toml:[0-9]+: mesh: one element through the thickness" \
   "$drawbend" run one_layer.toml --out o8 --quiet --checkpoint-every 1 --halt-after-cycles 1
+# An option the chosen mode does not read: refused, naming it (synth's --class
+# with the library generator, --data without --from-thesis, loop's --parts with
+# --export none were accepted and ignored with exit 0 before).
+expect synth "option of another generator" 2 "--class: applies only with --generator blind or wild" "$drawbend" synth --class word --out y1
+expect synth "option of another generator" 2 "--effect: applies only with --generator library" "$drawbend" synth --generator blind --effect speed --out y2
+expect synth "option without --from-thesis" 2 "--data: applies only with --from-thesis" "$drawbend" synth --data word --out y3
+expect synth "option with --from-thesis" 2 "--seed: applies only without --from-thesis" "$drawbend" synth --from-thesis --seed 3 --out y4
+expect loop "option without exports" 2 "--parts: applies only with exports" "$drawbend" loop "$root/data/measured/thesis_drawbend.csv" --out l3 --export none --parts 3,4
+expect export "option of another format" 2 "--rd-vector: applies only with --to openradioss" "$drawbend" export model/good.toml --to lsdyna --rd-vector 0,1,0 --out e8.k
+expect export "option of another format" 2 "--abaqus: applies only with --to abaqus" "$drawbend" export model/good.toml --to lsdyna --abaqus explicit --out e9.k
+expect loop "unknown name" 2 "input error: --cv: expected auto, test or bt-block, found 'word'" "$drawbend" loop "$root/data/measured/thesis_drawbend.csv" --out l4 --cv word
+# A binary file where CSV text belongs (a program's first 4 kB; an .xlsx is a zip): named as binary, not
+# as UTF-16 (NUL bytes between the characters of UTF-16 text sit on every other byte).
+head -c 4096 "$drawbend" >binary.csv
+expect loop "binary file as data" 2 "binary.csv: the file holds NUL bytes \\(a binary file" "$drawbend" loop binary.csv --out l5
+expect calibrate "binary file as tests" 2 "binary.csv: the file holds NUL bytes \\(a binary file" "$drawbend" calibrate binary.csv --out c6
+# A value too large for its type (1e300 cycles was cast to a long).
+expect run "--checkpoint-every 1e300" 2 "--checkpoint-every: expected a whole number of cycles .*found '1e300'" "$drawbend" run "$deck" --out o13 --quiet --checkpoint-every 1e300
+# help, version and --help take nothing more (version extra was exit 0).
+expect drawbend "version with an argument" 2 "drawbend version: unexpected argument 'extra'" "$drawbend" version extra
+expect drawbend "--help with an argument" 2 "drawbend --help: unexpected argument 'extra'" "$drawbend" --help extra
+expect drawbend "help help" 0 "^usage: drawbend COMMAND" "$drawbend" help help
+expect drawbend "help of an unknown command" 2 "unknown command 'nosuch'" "$drawbend" help nosuch
 # No warning where the sheet is thicker: one element across the strip is not one through it,
 # and a flat floor bends nothing.
 for case in "drawbend-deck --across 1 --through 4" "block-deck --elements 1 --out b6.toml"; do

@@ -32,7 +32,7 @@ base_args() {  # the command line of a command before the option under test
     loop) echo "loop $work/synth/data.csv --out $work/o_loop --figures=" ;;
     model-loop) echo "model-loop $work/ml.csv --out $work/o_ml" ;;
     synth) echo "synth --out $work/o_synth" ;;
-    export) echo "export $work/model/friction_model.toml --to lsdyna --out $work/o_f.k" ;;
+    export) echo "export $work/model/friction_model.toml --to openradioss --parts 1,2 --out $work/o_f.rad" ;;
     calibrate) echo "calibrate $here/../../data/materials/aa6016_t4_esaform2021.csv --out $work/o_cal" ;;
     plan) echo "plan $here/decks/restart_block.toml" ;;
   esac

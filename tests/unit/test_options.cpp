@@ -6,6 +6,10 @@
 //  - the help shows "--name true|false" and the default as true/false; echo()
 //    gives "name = true";
 //  - a numeric option rejects trailing text ("3x") naming the option.
+//  - given() is true exactly for the options on the command line (also when
+//    the value equals the default); only_when(false, {"n"}, "with X") throws
+//    "--n: applies only with X (given here, it would be ignored)" when --n was
+//    given, and nothing when it was not or when the condition holds.
 #define BOOST_TEST_MODULE options
 #include <boost/test/unit_test.hpp>
 #include <stdexcept>
@@ -79,4 +83,20 @@ BOOST_AUTO_TEST_CASE(bool_help_and_echo) {
 
 BOOST_AUTO_TEST_CASE(integer_rejects_trailing_text) {
   BOOST_TEST(error_of({"--n", "3x"}) == "--n: expected an integer, found '3x'");
+}
+
+BOOST_AUTO_TEST_CASE(given_and_only_when) {
+  Cli c;
+  c.parse({"--n", "0"});
+  BOOST_TEST(c.o.given("n"));
+  BOOST_TEST(!c.o.given("on"));
+  BOOST_CHECK_NO_THROW(c.o.only_when(true, {"n"}, "with X"));
+  BOOST_CHECK_NO_THROW(c.o.only_when(false, {"on", "off"}, "with X"));
+  std::string msg;
+  try {
+    c.o.only_when(false, {"on", "n"}, "with X");
+  } catch (const std::invalid_argument& e) {
+    msg = e.what();
+  }
+  BOOST_TEST(msg == "--n: applies only with X (given here, it would be ignored)");
 }

@@ -17,6 +17,12 @@
 //    selected passes are not counted as agreement.
 //  - Two disagreements sharing one note show the note once (rowspan="2"),
 //    a third with its own note stands alone: the note text appears once each.
+//  - html_breakable("a_b.c", "._") is "a_<wbr>b.<wbr>c".
+//  - link_pages on a front page and two chapter pages (x.html, y.html): the
+//    front page's href="#checks-y" becomes "y.html#checks-y"; x's link to
+//    "#y-sec" becomes "y.html#y-sec", its own "#x-sec" stays; every page
+//    carries all three pages' contents, its own entry marked current; x has
+//    two bars (no previous chapter, next y), y two (previous x, no next).
 #define BOOST_TEST_MODULE report_front
 #include <boost/test/unit_test.hpp>
 #include <algorithm>
@@ -26,6 +32,7 @@
 #include "study/check_format.hpp"
 #include "study/list_audit.hpp"
 #include "study/report_front.hpp"
+#include "study/report_pages.hpp"
 
 using namespace drawbend;
 using namespace drawbend::study;
@@ -185,4 +192,51 @@ BOOST_AUTO_TEST_CASE(list_audit_checks_each_entry_on_its_chapters_tiers) {
   BOOST_TEST(dead.size() == 2u);
   BOOST_TEST((dead == std::vector<std::string>{"cha.9", "zz.1"}));
   fs::remove_all(root);
+}
+
+BOOST_AUTO_TEST_CASE(breakable_text_breaks_after_the_given_characters) {
+  BOOST_TEST(study::html_breakable("a_b.c", "._") == "a_<wbr>b.<wbr>c");
+  BOOST_TEST(study::html_breakable("a<b", "") == "a&lt;b");
+}
+
+BOOST_AUTO_TEST_CASE(pages_share_contents_and_link_across) {
+  auto page = [](const std::string& toc, const std::string& body) {
+    return "<html><body>\n<nav id=\"TOC\" role=\"doc-toc\">\n<ul>\n" + toc + "</ul>\n</nav>\n" + body +
+           "\n</body></html>";
+  };
+  std::vector<study::HtmlPage> p{
+      {"index.html", "Front page",
+       page("<li><a href=\"#summary\">About</a></li>\n", "<h1 id=\"summary\">About</h1><a href=\"#checks-y\">y</a>")},
+      {"x.html", "Chapter X",
+       page("<li><a href=\"#x\">X</a><ul><li><a href=\"#x-sec\">S</a></li></ul></li>\n",
+            "<h1 id=\"x\">X</h1><h2 id=\"x-sec\">S</h2><a href=\"#x-sec\">here</a> <a href=\"#y-sec\">there</a>")},
+      {"y.html", "Chapter Y",
+       page("<li><a href=\"#y\">Y</a><ul><li><a href=\"#y-sec\">T</a></li></ul></li>\n",
+            "<h1 id=\"y\">Y</h1><h2 id=\"y-sec\">T</h2><div id=\"checks-y\"></div>")}};
+  BOOST_TEST(study::toc_items(p[1].html).find("href=\"#x-sec\"") != std::string::npos);
+  study::link_pages(p);
+  const std::string &f = p[0].html, &x = p[1].html, &y = p[2].html;
+  BOOST_TEST(f.find("<a href=\"y.html#checks-y\">y</a>") != std::string::npos);
+  BOOST_TEST(x.find("<a href=\"#x-sec\">here</a>") != std::string::npos);
+  BOOST_TEST(x.find("<a href=\"y.html#y-sec\">there</a>") != std::string::npos);
+  for (const std::string& h : {f, x, y}) {
+    BOOST_TEST(std::count(h.begin(), h.end(), '\n') > 0);
+    BOOST_TEST((h.find("#summary\"") != std::string::npos && h.find("#x-sec\"") != std::string::npos &&
+                h.find("#y-sec\"") != std::string::npos));
+  }
+  BOOST_TEST(x.find("<li class=\"current\"><a aria-current=\"page\" href=\"#x\">X</a>") != std::string::npos);
+  BOOST_TEST(x.find("<a href=\"index.html#summary\">About</a>") != std::string::npos);
+  BOOST_TEST(x.find("<nav id=\"TOC\" class=\"pages\"") != std::string::npos);
+  BOOST_TEST(f.find("class=\"pages\"") == std::string::npos);  // the front page lists every section
+  auto count = [](const std::string& h, const std::string& what) {
+    std::size_t n = 0;
+    for (auto at = h.find(what); at != std::string::npos; at = h.find(what, at + 1)) ++n;
+    return n;
+  };
+  BOOST_TEST(count(x, "class=\"pagenav\"") == 2u);
+  BOOST_TEST(count(x, "class=\"prev\"") == 0u);
+  BOOST_TEST(count(x, "<a class=\"next\" href=\"y.html\">Chapter Y &rarr;</a>") == 2u);
+  BOOST_TEST(count(y, "<a class=\"prev\" href=\"x.html\">&larr; Chapter X</a>") == 2u);
+  BOOST_TEST(count(y, "class=\"next\"") == 0u);
+  BOOST_TEST(count(f, "class=\"pagenav\"") == 0u);
 }

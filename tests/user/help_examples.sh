@@ -20,6 +20,10 @@ fail() { echo "FAIL: $*"; exit 1; }
 "$bin" help > "$work/help.txt" || fail "drawbend help: exit $?"
 grep -q '^  help \[COMMAND\]' "$work/help.txt" || fail "drawbend help does not list help"
 "$bin" version | grep -q '^drawbend [0-9]' || fail "drawbend version"
+# Every command drawbend help lists is in the list above (a new command gets its examples run too).
+for c in $(sed -n '2,/^  help \[COMMAND\]/p' "$work/help.txt" | awk '/^  [a-z]/ {print $1}' | grep -vx help); do
+  printf ' %s ' "${all[@]}" | grep -q " $c " || fail "drawbend help lists '$c', which this test does not check"
+done
 for c in "${all[@]}"; do
   "$bin" "$c" --help > "$work/$c.help" 2>&1 || fail "$c --help: exit $?"
   "$bin" "$c" -h > "$work/$c.h" 2>&1 || fail "$c -h: exit $?"

@@ -11,6 +11,7 @@
 #     absolute build path: the HTML passes the checker (no stray list, no absolute
 #     path of repo/, no over-wide table), and its contents list the sections
 #     (toc-depth 2: a link to the section heading, not only the chapter).
+#  3. The same study as pages (see 3. below).
 # Usage: report_html.sh DRAWBEND_REPORT PANDOC CSS CHECK_HTML WORK_DIR
 set -u
 report=$1 pandoc=$2 css=$3 check=$4 work=$5
@@ -67,4 +68,32 @@ printf 'pin_mm,mu,note\n12.7,0.1,read from %s/build/chapters/ch4/maps/pin_12.7mm
 python3 "$check" "$work/study.html" --forbid "$repo/" > "$work/study.out" || fail "the report fails the checker: $(cat "$work/study.out")"
 grep -q 'href="#what-it-does"' "$work/study.html" || fail "the contents do not list the sections"
 grep -q 'build/chapters/ch4/maps' "$work/study.html" || fail "the relative path is not shown"
-echo "report: checker catches stray lists, absolute paths, wide tables; a report assembled from a small study passes it"
+# 3. The report as pages (--pages): a second chapter, chy; the front page is
+#    index.html, each chapter a page with the shared contents (its own entry
+#    marked current, the other chapter's sections linked into its page), a bar
+#    to the neighbours and the front page, and no broken link anywhere (the
+#    front page's links to each chapter's checks table point into its page).
+#    A link to an id on no page is caught by the checker.
+ysrc="$repo/chapters/chy" && yout="$repo/build/chapters/chy"
+mkdir -p "$ysrc" "$yout" || exit 1
+printf '# Chapter Y \xe2\x80\x94 the other one {#chy}\n\n## Its only section\n\nSee [Z](#chz).\n\n@checks\n' > "$ysrc/intro.md"
+printf '## More\n\nText.\n' > "$ysrc/results.md"
+printf 'id,kind,quantity,thesis,ours,tolerance,unit,status,note\nchy.a,thesis,x,1,1,0.1,-,pass,fine\n' > "$yout/checks.csv"
+"$report" --chapters-src "$repo/chapters" --chapters-out "$repo/build/chapters" --out '' --pages "$work/pages" \
+  --css "$css" --pandoc "$pandoc" > "$work/pages.out" 2>&1 || fail "drawbend-report --pages: $(cat "$work/pages.out")"
+for p in index chy chz; do [ -s "$work/pages/$p.html" ] || fail "no page $p.html"; done
+[ -e "$work/study.html" ] || fail "the single file went missing"
+python3 "$check" "$work/pages/"*.html --forbid "$repo/" > "$work/pages.check" ||
+  fail "the pages fail the checker: $(cat "$work/pages.check")"
+grep -q 'href="chz.html#checks-chz"' "$work/pages/index.html" || fail "the front page does not link into chz.html"
+grep -q 'href="chy.html#its-only-section"' "$work/pages/chz.html" || fail "chz's contents do not list chy's sections"
+grep -q '<li class="current"><a aria-current="page" href="#chz">' "$work/pages/chz.html" || fail "chz's own entry is not marked"
+grep -q 'href="#chz"' "$work/pages/chy.html" && fail "chy links #chz on its own page"
+grep -q 'href="chz.html#chz"' "$work/pages/chy.html" || fail "chy's link to Z does not lead into chz.html"
+[ "$(grep -c 'class="pagenav"' "$work/pages/chy.html")" = 2 ] || fail "chy.html lacks its two page bars"
+grep -q '<a class="next" href="chz.html">Chapter Z' "$work/pages/chy.html" || fail "chy.html does not lead on to Chapter Z"
+grep -q '<a class="index" href="index.html">Front page</a>' "$work/pages/chz.html" || fail "chz.html does not lead back"
+sed 's/href="chz.html#chz"/href="chz.html#nowhere"/' "$work/pages/chy.html" > "$work/pages/broken.html"
+python3 "$check" "$work/pages/broken.html" > "$work/broken.out" && fail "a broken link passed the checker"
+grep -q 'link to chz.html#nowhere: no such id in chz.html' "$work/broken.out" || fail "broken link not named: $(cat "$work/broken.out")"
+echo "report: checker catches stray lists, absolute paths, wide tables, broken links; a report assembled from a small study passes it, as one file and as pages"
