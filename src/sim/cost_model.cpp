@@ -13,8 +13,8 @@ double ns_per_element_cycle(const std::string& kind) {
   if (kind == "strip_draw") return 160;
   if (kind == "block_slide") return 190;
   if (kind == "cup_draw") return 210;
-  if (kind == "earing_cup") return 280;
-  return 280;
+  if (kind == "earing_cup") return 310;
+  return 310;
 }
 
 CasePrediction predict_case(const io::Deck& d) {
