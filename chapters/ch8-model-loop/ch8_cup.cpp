@@ -34,8 +34,9 @@
 #include <toml++/toml.h>
 
 #include "ch8_steps.hpp"
-#include "sim/case_pool.hpp"
+#include "core/hash.hpp"
 #include "sim/cup_case.hpp"
+#include "sim/deck_job.hpp"
 #include "material/hardening_curve.hpp"
 
 namespace ch8 {
@@ -190,10 +191,18 @@ void cup_loop(Chapter& c, const Config& cfg, const modelloop::ModelLoopResult& b
     rd_curve = (std::filesystem::path(s.deck).parent_path() / *h).lexically_normal().string();
   }
 
-  // Runs side by side in the case pool.
+  // Each run a file-level job (sim/deck_job.hpp) through the case pool: its
+  // deck in runs/cup_<deck fingerprint> (as the draw-bend runs' fb_<...>), the
+  // run folder kept, the result read back from it (sim::read_cup_run).
   auto run = [&](const std::vector<sim::CupSpec>& specs) {
-    std::vector<sim::CupResult> r(specs.size());
-    sim::run_cases(specs.size(), [&](std::size_t k) { r[k] = sim::draw_cup(specs[k]); });
+    std::vector<std::string> names, texts;
+    for (const auto& sp : specs) {
+      texts.push_back(sim::cup_deck_text(sp));
+      names.push_back("cup_" + hex64(fnv1a64(texts.back())));
+    }
+    const auto dirs = sim::run_jobs(names, texts, c.out("runs"), cfg.reuse_runs, "Chapter 8's cup loop");
+    std::vector<sim::CupResult> r;
+    for (std::size_t k = 0; k < specs.size(); ++k) r.push_back(sim::read_cup_run(specs[k], dirs[k]));
     return r;
   };
   auto f15 = [&](const sim::CupResult& r) { return sim::force_at(r, s.d_eval) / 1000; };

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <sstream>
 
@@ -15,11 +16,15 @@
 #include "fe/mesh.hpp"
 #include "fe/solver.hpp"
 #include "io/deck.hpp"
+#include "io/case_reduction.hpp"
 #include "io/run_case.hpp"
+#include "sim/deck_job.hpp"
 
 namespace v1 {
 
 using namespace drawbend;
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -38,6 +43,13 @@ double sheet_volume(const fe::Mesh& mesh, const std::vector<double>& x, const st
     v += fe::hex_volume(ex, ey, ez);
   }
   return v;
+}
+
+toml::table* tool_table(toml::table& root, const std::string& name) {
+  if (auto* tools = root["tool"].as_array())
+    for (auto& t : *tools)
+      if (auto* tt = t.as_table(); tt && (*tt)["name"].value_or(std::string()) == name) return tt;
+  return nullptr;
 }
 
 toml::table deck_table(const std::string& deck, const Variant& var, const RunSpec& spec) {
@@ -109,38 +121,6 @@ toml::table deck_table(const std::string& deck, const Variant& var, const RunSpe
   return root;
 }
 
-// Energy stored in the hourglass springs of every element [mJ], by mode group (in-plane xi*eta, twist
-// xi*eta, xi*eta*zeta): 32 Q^2 / K per mode (Q += dt K/64 q, power Q q), with K of the element kernel
-// (src/fe/element_kernel.hpp) on the element's current volume and half-lengths along its natural axes.
-std::vector<std::array<double, 3>> hourglass_stored(const fe::Solver& s, const fe::Mesh& mesh, double E, double nu) {
-  const double G = E / (2 * (1 + nu));
-  const auto& q = s.hourglass_forces();
-  std::vector<std::array<double, 3>> out(mesh.hex.size());
-  for (std::size_t e = 0; e < mesh.hex.size(); ++e) {
-    double ex[8], ey[8], ez[8];
-    for (int a = 0; a < 8; ++a) ex[a] = s.x()[mesh.hex[e][a]], ey[a] = s.y()[mesh.hex[e][a]], ez[a] = s.z()[mesh.hex[e][a]];
-    const double V = fe::hex_volume(ex, ey, ez);
-    // half-lengths: half the mean length of the 4 edges along xi (0-1), eta (0-3), zeta (0-4)
-    const int edges[3][4][2] = {{{0, 1}, {3, 2}, {4, 5}, {7, 6}}, {{0, 3}, {1, 2}, {4, 7}, {5, 6}}, {{0, 4}, {1, 5}, {2, 6}, {3, 7}}};
-    double ih2[3];
-    for (int d = 0; d < 3; ++d) {
-      double len = 0;
-      for (const auto& ed : edges[d])
-        len += 0.25 * std::sqrt(std::pow(ex[ed[1]] - ex[ed[0]], 2) + std::pow(ey[ed[1]] - ey[ed[0]], 2) +
-                                std::pow(ez[ed[1]] - ez[ed[0]], 2));
-      ih2[d] = 4.0 / (len * len);
-    }
-    const double K2[3] = {E * V * ih2[0] / 3, E * V * ih2[1] / 3, G * V * (ih2[0] + ih2[1]) / 3};
-    for (int i = 0; i < 3; ++i) {
-      const double w2 = 32 * q[6 * e + i] * q[6 * e + i] / K2[i];
-      const double w3 = 32 * q[6 * e + 3 + i] * q[6 * e + 3 + i] / (E * V * ih2[i] / 9);
-      out[e][i < 2 ? 0 : 1] += w2;
-      out[e][2] += w3;
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 int region_of(double r, double z) {
@@ -150,84 +130,80 @@ int region_of(double r, double z) {
   return z >= 11.04 ? 2 : 3;
 }
 
-CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec, const std::string& vtu) {
-  std::ostringstream text;
-  const toml::table root = deck_table(deck, var, spec);
-  text << root;
-  const double young = root["material"]["E"].value_or(0.0), poisson = root["material"]["nu"].value_or(0.0);
-  io::Deck d = io::parse_deck(text.str(), deck);
-  fe::Model& m = d.model;
+std::string deck_text(const std::string& deck, const Variant& var, const RunSpec& spec) {
+  toml::table root = deck_table(deck, var, spec);
+  std::ostringstream text0;
+  text0 << root;
+  const io::Deck d = io::parse_deck(text0.str(), deck);
+  const fe::Model& m = d.model;
   if (m.steps.size() != 2) throw InputError(deck + ": expected two steps (settle, draw)");
-  fe::Tool* punch = nullptr;
-  for (auto& t : m.tools)
-    if (t.name == "punch") punch = &t;
+  auto* punch = tool_table(root, "punch");
   if (!punch) throw InputError(deck + ": no tool named 'punch'");
   // Mass scaling: the stroke in spec.cycles cycles.
   const double dt = spec.stroke / spec.speed / static_cast<double>(spec.cycles);
-  m.target_dt = dt / m.dt_safety;
+  root["numerics"].as_table()->insert_or_assign("target_dt", dt / m.dt_safety);
   // speed ramp: uniform acceleration over spec.ramp mm (time 2 ramp / speed), or over 2 % of the cycles
   const double tr = spec.ramp > 0 ? 2.0 * spec.ramp / spec.speed : 0.02 * static_cast<double>(spec.cycles) * dt;
-  punch->speed = {{0.0, tr}, {0.0, spec.speed}};
-  m.steps[1].duration = spec.stroke / spec.speed + 0.5 * tr;
-  m.steps[0].duration = 200 * dt;
-  m.steps[0].damping = 1.0 / (50 * dt);
-  for (auto& t : m.tools)
-    if (t.drive == fe::Tool::Drive::force) t.mass = fe::tool_mass_half_omega_dt(fe::tool_contact_stiffness(m, t.name), dt);
-  const fe::Mesh& mesh = m.mesh;
-  const double v0 = sheet_volume(mesh, mesh.x, mesh.y, mesh.z);
-  fe::Solver s(m);
-  s.run_step(0);
+  punch->insert_or_assign("speed", toml::table{{"t", toml::array{0.0, tr}}, {"v", toml::array{0.0, spec.speed}}});
+  auto* steps = root["step"].as_array();
+  steps->get(0)->as_table()->insert_or_assign("duration", 200 * dt);
+  steps->get(0)->as_table()->insert_or_assign("damping", 1.0 / (50 * dt));
+  steps->get(1)->as_table()->insert_or_assign("duration", spec.stroke / spec.speed + 0.5 * tr);
+  for (const auto& t : m.tools)
+    if (t.drive == fe::Tool::Drive::force)
+      tool_table(root, t.name)->insert_or_assign("mass", fe::tool_mass_half_omega_dt(fe::tool_contact_stiffness(m, t.name), dt));
+  // What the chapter measures, kept by the run (io/case_reduction.hpp, kind earing_cup).
+  if (!root["output"].as_table()) root.insert_or_assign("output", toml::table{});
+  root["output"].as_table()->insert_or_assign(
+      "reduce", toml::table{{"kind", "earing_cup"}, {"tool", "punch"}, {"step", m.steps[1].name}, {"stroke", spec.stroke},
+                            {"every", static_cast<int64_t>(std::max(1L, spec.cycles / 300))}});
+  std::ostringstream o;
+  o << "# ESAFORM 2021 cup, variant " << var.id << ", written by chapter v1-earing-benchmark (v1_cup.cpp) from " << deck
+    << ".\n# Stroke " << spec.stroke << " mm in " << spec.cycles << " cycles.  Units: mm, N, MPa, s, t/mm^3.  Rerun with: "
+    << "drawbend run deck.toml --out DIR\n"
+    << root << "\n";
+  return o.str();
+}
+
+CupResult read_run(const std::string& dir, const RunSpec& spec) {
+  const std::string where = (fs::path(dir) / io::kReductionFile).string();
+  const auto rows = io::read_reduction(where);
+  const io::Deck d = io::read_deck((fs::path(dir) / "deck.toml").string());
+  const fe::Mesh& mesh = d.model.mesh;
   CupResult r;
   r.elements = mesh.num_elements();
   r.layers = spec.through;
-  const double z0 = s.tool_offset("punch")[2];
-  const long every = std::max(1L, spec.cycles / 300);
-  const long c0 = s.cycles();
-  int reported = 0;
-  std::vector<double> hg_work(mesh.hex.size(), 0.0);
-  const auto regions = [&](double travel) {  // where the hourglass energy is now
-    const auto stored = hourglass_stored(s, mesh, young, poisson);
+  r.cycles = static_cast<long>(io::reduced(rows, "cycles", where));
+  r.kinetic_ratio = io::reduced(rows, "kinetic_ratio", where);
+  r.max_kinetic_ratio = io::reduced(rows, "max_kinetic_ratio", where);
+  r.hourglass_ratio = io::reduced(rows, "hourglass_ratio", where);
+  r.balance_error = io::reduced(rows, "balance_error", where);
+  r.added_mass_ratio = io::reduced(rows, "added_mass_ratio", where);
+  std::vector<double> X, Y, Z;  // the sheet's nodes at the end
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const auto& row = rows[k];
+    if (row.quantity == "curve") r.curve.push_back({row.x, row.value});
+    if (row.quantity == "node") X.push_back(row.x), Y.push_back(row.y), Z.push_back(row.value);
+    if (row.quantity != "hourglass") continue;
+    // Where the hourglass energy is at this snapshot, by region (kRegions).
+    if (k + 2 * mesh.hex.size() >= rows.size()) throw InputError(where + ": a hourglass snapshot without its elements");
     std::array<std::array<double, 6>, 5> acc{};
     for (std::size_t e = 0; e < mesh.hex.size(); ++e) {
-      double cx = 0, cy = 0, cz = 0;
-      for (int a = 0; a < 8; ++a) cx += s.x()[mesh.hex[e][a]] / 8, cy += s.y()[mesh.hex[e][a]] / 8, cz += s.z()[mesh.hex[e][a]] / 8;
-      auto& row = acc[region_of(std::hypot(cx, cy), cz)];
-      row[2] += hg_work[e];
-      for (int k = 0; k < 3; ++k) row[3 + k] += stored[e][k];
+      const auto& w = rows[k + 1 + 2 * e];
+      const auto& st = rows[k + 2 + 2 * e];
+      if (w.quantity != "hg_work" || st.quantity != "hg_stored") throw InputError(where + ": a hourglass snapshot cut short");
+      auto& a = acc[region_of(w.x, w.y)];
+      a[2] += w.value;
+      a[3] += st.x, a[4] += st.y, a[5] += st.value;
     }
     for (int g = 0; g < 5; ++g) {
-      acc[g][0] = travel, acc[g][1] = g;
+      acc[g][0] = row.x, acc[g][1] = g;
       r.hourglass_regions.push_back(acc[g]);
     }
-  };
-  s.run_step(1, [&](const fe::Progress& p) {
-    const auto& inc = s.hourglass_increments();
-    for (std::size_t e = 0; e < hg_work.size(); ++e) hg_work[e] += inc[e];
-    const auto& e = s.energies();
-    const double travel = s.tool_offset("punch")[2] - z0;  // [mm]
-    if (e.internal > 0 && travel > 0.1 * spec.stroke) r.max_kinetic_ratio = std::max(r.max_kinetic_ratio, e.kinetic / e.internal);
-    const int tenths = static_cast<int>(10.0 * travel / spec.stroke + 1e-9);
-    if (tenths > reported) {  // progress: one line per tenth of the stroke
-      reported = tenths;
-      regions(travel);
-      std::ostringstream line;
-      line << "  cup " << var.id << ": " << 10 * tenths << " % of " << spec.stroke << " mm (cycle " << p.cycle - c0
-           << "), punch force " << -4e-3 * s.tool_force("punch")[2] << " kN, kinetic/internal "
-           << (e.internal > 0 ? e.kinetic / e.internal : 0) << ", hourglass/internal "
-           << (e.internal > 0 ? e.hourglass / e.internal : 0) << "\n";
-      std::fputs(line.str().c_str(), stderr);
-    }
-    if (p.cycle % every) return;
-    r.curve.push_back({travel, -4.0 * s.tool_force("punch")[2]});  // full blank
-  });
-  if (reported < 10) regions(s.tool_offset("punch")[2] - z0);  // the end, when the last cycle fell short of it
-  r.cycles = s.cycles();
-  const auto& e = s.energies();
-  r.kinetic_ratio = e.internal > 0 ? e.kinetic / e.internal : 0;
-  r.hourglass_ratio = e.internal > 0 ? e.hourglass / e.internal : 0;
-  r.balance_error = e.balance_error();
-  r.added_mass_ratio = s.added_mass() / s.physical_mass();
-  r.volume_ratio = sheet_volume(mesh, s.x(), s.y(), s.z()) / v0;
+  }
+  if (X.size() != static_cast<std::size_t>(mesh.num_nodes()))
+    throw InputError(where + ": " + std::to_string(X.size()) + " node rows for " + std::to_string(mesh.num_nodes()) + " nodes");
+  r.volume_ratio = sheet_volume(mesh, X, Y, Z) / sheet_volume(mesh, mesh.x, mesh.y, mesh.z);
   // Columns of nodes through the thickness, by reference plan position.
   const double t = *std::max_element(mesh.z.begin(), mesh.z.end());
   std::map<std::pair<long, long>, std::vector<int>> columns;
@@ -237,7 +213,7 @@ CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec,
   for (int i = 0; i < mesh.num_nodes(); ++i) columns[key(i)].push_back(i);
   // The cup's outer bottom: the top face at the centre.
   double z_bottom = -1e30;
-  for (int i : columns.at({0L, 0L})) z_bottom = std::max(z_bottom, s.z()[i]);
+  for (int i : columns.at({0L, 0L})) z_bottom = std::max(z_bottom, Z[i]);
   const double R = std::hypot(mesh.x[mesh.node_set("rim").front()], mesh.y[mesh.node_set("rim").front()]);
   r.rim_z_min = 1e30;
   for (const auto& [k, col] : columns) {
@@ -247,10 +223,10 @@ CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec,
     if (std::abs(rr - R) < 1e-6 * R) {  // rim column
       double zm = 0, rm = 0;
       for (int i : col) {
-        zm += s.z()[i] / static_cast<double>(col.size());
-        rm += std::hypot(s.x()[i], s.y()[i]) / static_cast<double>(col.size());
-        r.rim_r_max = std::max(r.rim_r_max, std::hypot(s.x()[i], s.y()[i]));
-        r.rim_z_min = std::min(r.rim_z_min, s.z()[i]);
+        zm += Z[i] / static_cast<double>(col.size());
+        rm += std::hypot(X[i], Y[i]) / static_cast<double>(col.size());
+        r.rim_r_max = std::max(r.rim_r_max, std::hypot(X[i], Y[i]));
+        r.rim_z_min = std::min(r.rim_z_min, Z[i]);
       }
       r.height.push_back({ang, z_bottom - zm});
       r.outline.push_back({ang, rm});
@@ -267,15 +243,27 @@ CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec,
       if (mesh.z[i] > mesh.z[top]) top = i;
     }
     if (mesh.z[top] - mesh.z[bot] < 0.5 * t) throw std::runtime_error("v1: a node column without top and bottom");
-    const double mx = 0.5 * (s.x()[top] + s.x()[bot]), my = 0.5 * (s.y()[top] + s.y()[bot]);
-    r.thickness.push_back({line, rr, std::hypot(mx, my), 0.5 * (s.z()[top] + s.z()[bot]),
-                           std::sqrt(std::pow(s.x()[top] - s.x()[bot], 2) + std::pow(s.y()[top] - s.y()[bot], 2) +
-                                     std::pow(s.z()[top] - s.z()[bot], 2))});
+    const double mx = 0.5 * (X[top] + X[bot]), my = 0.5 * (Y[top] + Y[bot]);
+    r.thickness.push_back({line, rr, std::hypot(mx, my), 0.5 * (Z[top] + Z[bot]),
+                           std::sqrt(std::pow(X[top] - X[bot], 2) + std::pow(Y[top] - Y[bot], 2) +
+                                     std::pow(Z[top] - Z[bot], 2))});
   }
   std::sort(r.height.begin(), r.height.end());
   std::sort(r.outline.begin(), r.outline.end());
   std::sort(r.thickness.begin(), r.thickness.end());
-  if (!vtu.empty()) io::write_fields(s, vtu);
+  return r;
+}
+
+
+CupResult draw(const std::string& deck, const Variant& var, const RunSpec& spec, const std::string& vtu,
+               const std::string& dir, bool reuse) {
+  sim::run_deck_job(fs::path(dir).filename().string(), deck_text(deck, var, spec), dir, reuse);
+  CupResult r = read_run(dir, spec);
+  if (!vtu.empty()) {  // the end-of-stroke fields: the run's last snapshot
+    int k = 0;
+    while (fs::exists(fs::path(dir) / ("fields_" + std::to_string(k + 1) + ".vtu"))) ++k;
+    fs::copy_file(fs::path(dir) / ("fields_" + std::to_string(k) + ".vtu"), vtu, fs::copy_options::overwrite_existing);
+  }
   return r;
 }
 

@@ -69,8 +69,17 @@ inline constexpr double kFlangeOutRadius = 31.2 + 10.0;
 inline constexpr const char* kRegions[5] = {"punch face", "punch nose", "wall", "die shoulder", "flange"};
 int region_of(double r, double z);
 
-/// Draw the cup from `deck` with `variant`; writes the final fields to `vtu` when set.
-CupResult draw(const std::string& deck, const Variant& variant, const RunSpec& spec, const std::string& vtu);
+/// The deck of a run (TOML, runnable by `drawbend run`): `deck` with the variant's material, the mesh, the
+/// process alternatives, the mass scaling and punch ramp of `spec` as deck keys, and the reduction the chapter
+/// reads (io/case_reduction.hpp, kind earing_cup).
+std::string deck_text(const std::string& deck, const Variant& variant, const RunSpec& spec);
+/// The measurements of a finished run folder of deck_text (its reduction.csv and deck.toml).
+CupResult read_run(const std::string& dir, const RunSpec& spec);
+/// Draw the cup from `deck` with `variant` as a file-level job (sim/deck_job.hpp) in the run folder `dir`
+/// (kept; with `reuse`, a folder holding the same deck and a finished run is read, not rerun), then read_run;
+/// copies the run's end-of-stroke fields to `vtu` when set.
+CupResult draw(const std::string& deck, const Variant& variant, const RunSpec& spec, const std::string& vtu,
+               const std::string& dir, bool reuse = false);
 
 /// Ears (local maxima) and troughs (local minima) of a profile h(theta) on 0..90 deg mirrored about 0 and
 /// 90 deg (orthotropic symmetry): (angle, height) each.

@@ -4,7 +4,7 @@
 // with the deck reader and listed with its elements, predicted cycles, CPU
 // time and memory; then the total CPU-hours and the makespan on N nodes of C
 // cores by the largest-first schedule of the case pool.  Where a folder holds
-// a finished run (summary.csv), its measured wall time and the ratio of
+// a finished run (summary.csv), its measured CPU time (run.log) and the ratio of
 // predicted to measured CPU time are listed too, with their median and worst:
 // how well the model predicts on this machine.
 //
@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 #include "core/csv.hpp"
@@ -34,7 +35,9 @@ struct Row {
   double measured_cpu = NAN;  ///< wall time x threads of a finished run [s]
 };
 
-/// A finished run's CPU seconds: summary.csv's wall_time x the threads its log names.
+/// A finished run's CPU seconds: its log's "cpu:" line (the run's one thread,
+/// io/run_case.hpp), else summary.csv's wall_time x the threads its log names
+/// (which counts the waits of a machine shared with other work).
 double measured_cpu(const fs::path& dir) {
   std::error_code ec;
   if (!fs::is_regular_file(dir / "summary.csv", ec)) return NAN;
@@ -54,11 +57,15 @@ double measured_cpu(const fs::path& dir) {
     return NAN;
   }
   long threads = 1;
+  double cpu = NAN;
   if (fs::is_regular_file(dir / "run.log", ec)) {
     std::istringstream in(read_file((dir / "run.log").string()));
-    for (std::string l; std::getline(in, l);)
+    for (std::string l; std::getline(in, l);) {
       if (l.rfind("  threads: ", 0) == 0) threads = std::clamp(std::strtol(l.c_str() + 11, nullptr, 10), 1L, 4096L);
+      if (l.rfind("  cpu: ", 0) == 0) cpu = std::strtod(l.c_str() + 7, nullptr);
+    }
   }
+  if (!std::isnan(wall) && cpu >= 1e-3 && cpu <= 3.2e7) return cpu;
   return wall * static_cast<double>(threads);
 }
 
@@ -73,6 +80,17 @@ void collect(const fs::path& p, std::vector<fs::path>& decks) {
        !ec && it != end; it.increment(ec))
     if (it->path().filename() == "deck.toml" && it->is_regular_file(ec)) decks.push_back(it->path());
   std::sort(decks.begin(), decks.end());
+}
+
+/// "# WHAT n finished runs: median, range, worst factor" of predicted / measured ratios.
+void ratio_line(const std::string& what, std::vector<double> ratio) {
+  if (ratio.empty()) return;
+  std::sort(ratio.begin(), ratio.end());
+  const double median = ratio.size() % 2 ? ratio[ratio.size() / 2]
+                                         : 0.5 * (ratio[ratio.size() / 2 - 1] + ratio[ratio.size() / 2]);
+  const double worst = std::max(ratio.back(), 1 / ratio.front());
+  std::cout << "# " << what << " " << ratio.size() << " finished runs: median " << fmt(median, 3) << ", range "
+            << fmt(ratio.front(), 3) << " to " << fmt(ratio.back(), 3) << " (worst factor " << fmt(worst, 3) << ")\n";
 }
 
 }  // namespace
@@ -131,18 +149,19 @@ int plan_command(int argc, char** argv) {
   double total = 0;
   for (double c : cpu) total += c;
   std::cout << "# " << rows.size() << " cases, " << fmt(total / 3600, 3) << " CPU-hours predicted (model: "
-            << sim::kNsPerElementCycle << " ns per element-cycle x elements x predicted cycles)\n";
+            << "elements x predicted cycles x ns per element-cycle of the case's kind: draw-bend "
+            << sim::ns_per_element_cycle("") << ", strip_draw " << sim::ns_per_element_cycle("strip_draw")
+            << ", block_slide " << sim::ns_per_element_cycle("block_slide") << ", cup_draw "
+            << sim::ns_per_element_cycle("cup_draw") << ", earing_cup " << sim::ns_per_element_cycle("earing_cup") << ")\n";
   std::cout << "# makespan on " << nodes << " node(s) x " << cores << " core(s): "
             << fmt(sim::makespan_seconds(cpu, nodes, cores) / 60, 3) << " min (largest first)\n";
-  if (!ratio.empty()) {
-    std::sort(ratio.begin(), ratio.end());
-    const double median = ratio.size() % 2 ? ratio[ratio.size() / 2]
-                                           : 0.5 * (ratio[ratio.size() / 2 - 1] + ratio[ratio.size() / 2]);
-    const double worst = std::max(ratio.back(), 1 / ratio.front());
-    std::cout << "# predicted / measured CPU over " << ratio.size() << " finished runs: median " << fmt(median, 3)
-              << ", range " << fmt(ratio.front(), 3) << " to " << fmt(ratio.back(), 3) << " (worst factor "
-              << fmt(worst, 3) << ")\n";
-  }
+  ratio_line("predicted / measured CPU over", ratio);
+  std::map<std::string, std::vector<double>> by_kind;  // the same per case kind
+  for (const auto& r : rows)
+    if (std::isfinite(r.measured_cpu) && r.measured_cpu > 0)
+      by_kind[r.p.kind.empty() ? "draw-bend" : r.p.kind].push_back(r.p.cpu_seconds / r.measured_cpu);
+  if (by_kind.size() > 1)
+    for (auto& [kind, v] : by_kind) ratio_line("  " + kind + ":", v);
   return 0;
 }
 

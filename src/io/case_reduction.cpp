@@ -197,8 +197,9 @@ std::unique_ptr<CaseReduction> make_reduction(const ReductionSpec& r, const fe::
   if (r.kind == "block_slide") return std::make_unique<BlockSlide>(r, m);
   if (r.kind == "strip_draw") return std::make_unique<StripDraw>(r, m);
   if (r.kind == "cup_draw") return std::make_unique<CupDraw>(r, m);
+  if (r.kind == "earing_cup") return make_earing_reduction(r, m);
   check_reduction(r, m);  // throws: the kind is none of the above
-  throw InputError("output.reduce.kind: expected block_slide, strip_draw or cup_draw, found \"" + r.kind + "\"");
+  throw InputError("output.reduce.kind: expected block_slide, strip_draw, cup_draw or earing_cup, found \"" + r.kind + "\"");
 }
 
 void write_reduction(const std::string& path, const std::string& what, const std::vector<ReducedValue>& rows) {

@@ -7,6 +7,7 @@
 //   reduce = { kind = "block_slide", tool = "floor", step = "slide" }
 //   reduce = { kind = "strip_draw", tool = "die", step = "draw", ramp = 0.01 }
 //   reduce = { kind = "cup_draw", tool = "punch", step = "draw", holder = "lower_die", every = 75 }
+//   reduce = { kind = "earing_cup", tool = "punch", step = "draw", stroke = 45, every = 200 }
 // and io::run_case feeds it every cycle, then writes <out>/reduction.csv:
 // rows `quantity, x, y, value`, every number as the shortest text that reads
 // back as the same double (fmt_shortest), so a reader gets the in-memory bits.
@@ -34,6 +35,19 @@
 //   added_mass_ratio, die_lift (the holder's offset z), cycles, and per element
 //   rows `centroid` (x, y, value = z [mm]) and `state` (x = plastic strain,
 //   y = von Mises stress [MPa]).
+// - earing_cup (chapter v1-earing-benchmark; a quarter model, forces times
+//   4; io/earing_reduction.cpp): over `step`, with the punch `tool`'s travel d
+//   since the step began [mm]: every `every`-th cycle a row `curve` (x = d,
+//   value = -4 F_z [N]); the hourglass work of every element summed over the
+//   cycles; the largest kinetic / internal energy once d > stroke / 10; at the
+//   first cycle of each tenth of `stroke` (and at the end if the last tenth
+//   was not reached) a row `hourglass` (x = d, value = its number) and per
+//   element rows `hg_work` (x = radius, y = z of the element's centre [mm],
+//   value = the work so far [mJ]) and `hg_stored` (x, y, value: the energy in
+//   its hourglass springs by mode, xi*eta in plane, twist, xi*eta*zeta [mJ]).
+//   At the end cycles, kinetic_ratio, max_kinetic_ratio, hourglass_ratio,
+//   balance_error, added_mass_ratio, and per node a row `node` (x, y,
+//   value = z: its current position [mm]).
 // The order of every sum is the order of the cycles and of the contact nodes:
 // deterministic for any thread count.  A restarted run cannot keep a reduction
 // (its sums began before the checkpoint): run_case refuses one.
@@ -63,7 +77,7 @@ class CaseReduction {
   virtual std::vector<ReducedValue> finish(const fe::Solver& s) const = 0;
 };
 
-/// The kinds known: block_slide, strip_draw, cup_draw.
+/// The kinds known: block_slide, strip_draw, cup_draw, earing_cup.
 const std::vector<std::string>& reduction_kinds();
 
 /// Where a reduction reads: the index of the step named `r.step` and of the
@@ -78,6 +92,8 @@ ReductionPlace reduction_place(const ReductionSpec& r, const fe::Model& m);
 /// The deck reader's check of `[output] reduce`: its kind is known and its
 /// tool and step exist (InputError otherwise).
 void check_reduction(const ReductionSpec& r, const fe::Model& m);
+/// The earing_cup accumulator (io/earing_reduction.cpp).
+std::unique_ptr<CaseReduction> make_earing_reduction(const ReductionSpec& r, const fe::Model& m);
 /// The accumulator for `r` on `m`; throws InputError naming a tool without a
 /// contact pair or an unknown step.
 std::unique_ptr<CaseReduction> make_reduction(const ReductionSpec& r, const fe::Model& m);

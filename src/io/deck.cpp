@@ -173,16 +173,17 @@ void read_numerics(const DeckContext& c, const toml::table& t, Deck& d) {
 void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out) {
   c.allowed(t, "output", {"history_interval", "fields_per_step", "vtk_format", "history", "reduce"});
   if (const auto* rt = c.table(t, "reduce", "output", false)) {
-    c.allowed(*rt, "output.reduce", {"kind", "tool", "step", "ramp", "holder", "every"});
+    c.allowed(*rt, "output.reduce", {"kind", "tool", "step", "ramp", "holder", "every", "stroke"});
     out.reduce.kind = c.str(*rt, "kind", "output.reduce");
     const auto& kinds = reduction_kinds();
     if (std::find(kinds.begin(), kinds.end(), out.reduce.kind) == kinds.end())
-      c.bad(*rt, "output.reduce.kind", "expected block_slide, strip_draw or cup_draw, found \"" + out.reduce.kind + "\"");
+      c.bad(*rt, "output.reduce.kind", "expected block_slide, strip_draw, cup_draw or earing_cup, found \"" + out.reduce.kind + "\"");
     out.reduce.tool = c.str(*rt, "tool", "output.reduce");
     out.reduce.step = c.str(*rt, "step", "output.reduce");
     out.reduce.ramp = c.in_range(*rt, "ramp", "output.reduce", 0.0, 0.0);
     out.reduce.holder = c.str(*rt, "holder", "output.reduce", std::string());
     out.reduce.every = c.count_of(*rt, "every", "output.reduce", 1, 1);
+    out.reduce.stroke = c.in_range(*rt, "stroke", "output.reduce", 0.0, 0.0);
   }
   out.history_interval = c.in_range(t, "history_interval", "output", 0.0, 0.0);
   out.fields_per_step = c.count_of(t, "fields_per_step", "output", 1, 1);

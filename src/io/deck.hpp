@@ -35,12 +35,13 @@ struct HistorySignal {
 /// A study's own reduction of the run, kept every cycle and written to
 /// reduction.csv (io/case_reduction.hpp); kind "" = none.
 struct ReductionSpec {
-  std::string kind;  ///< "block_slide", "strip_draw" or "cup_draw"
+  std::string kind;  ///< "block_slide", "strip_draw", "cup_draw" or "earing_cup"
   std::string tool;  ///< the tool whose force (and contact pair) it reduces
   std::string step;  ///< the step it reduces
   double ramp = 0;   ///< strip_draw: the speed ramp of the step [s]
   std::string holder;  ///< cup_draw: the force-driven blank holder tool
-  int every = 1;       ///< cup_draw: a curve point every this many cycles
+  int every = 1;       ///< cup_draw, earing_cup: a curve point every this many cycles
+  double stroke = 0;   ///< earing_cup: the punch stroke [mm] (its tenths are the snapshots)
 };
 
 struct OutputSpec {

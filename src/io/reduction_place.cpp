@@ -8,7 +8,7 @@
 namespace drawbend::io {
 
 const std::vector<std::string>& reduction_kinds() {
-  static const std::vector<std::string> k{"block_slide", "strip_draw", "cup_draw"};
+  static const std::vector<std::string> k{"block_slide", "strip_draw", "cup_draw", "earing_cup"};
   return k;
 }
 
@@ -26,7 +26,7 @@ ReductionPlace reduction_place(const ReductionSpec& r, const fe::Model& m) {
 void check_reduction(const ReductionSpec& r, const fe::Model& m) {
   const auto& kinds = reduction_kinds();
   if (std::find(kinds.begin(), kinds.end(), r.kind) == kinds.end())
-    throw InputError("output.reduce.kind: expected block_slide, strip_draw or cup_draw, found \"" + r.kind + "\"");
+    throw InputError("output.reduce.kind: expected block_slide, strip_draw, cup_draw or earing_cup, found \"" + r.kind + "\"");
   reduction_place(r, m);
 }
 

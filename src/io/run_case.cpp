@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -178,7 +179,9 @@ void log_energies(const observe::Run& run, const std::string& friction_warnings)
   for (double v : {e.kinetic, e.internal, e.hourglass, e.damping, e.initial_kinetic}) big = std::max(big, std::abs(v));
   const int dec = big > 0 ? std::clamp(3 - static_cast<int>(std::floor(std::log10(big))), 0, 12) : 3;
   auto E = [dec](double v) { return fmt_fixed(v, dec); };
-  run.log << "summary: " << r.cycles << " cycles in " << fmt(r.wall_seconds, 3) << " s wall\n"
+  run.log << "summary: " << r.cycles << " cycles in " << fmt(r.wall_seconds, 3) << " s wall\n";
+  if (std::isfinite(r.cpu_seconds)) run.log << "  cpu: " << fmt(r.cpu_seconds, 4) << " s (the run's one thread)\n";
+  run.log
           << "  energy [mJ]: work on the sheet " << E(e.external_work) << " = kinetic " << E(e.kinetic) << " + internal "
           << E(e.internal) << " + hourglass " << E(e.hourglass) << " + damping " << E(e.damping)
           << (e.initial_kinetic != 0 ? " - initial kinetic " + E(e.initial_kinetic) : "") << " + residual "
@@ -193,7 +196,14 @@ void log_energies(const observe::Run& run, const std::string& friction_warnings)
 }
 
 /// The end-of-run invariants into run.r.
-void fill_summary(observe::Run& run, std::chrono::steady_clock::time_point wall0) {
+/// CPU seconds used by the calling thread so far.
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+void fill_summary(observe::Run& run, std::chrono::steady_clock::time_point wall0, double cpu0) {
   const fe::Solver& solver = run.solver;
   const auto& e = solver.energies();
   RunSummary& r = run.r;
@@ -205,6 +215,7 @@ void fill_summary(observe::Run& run, std::chrono::steady_clock::time_point wall0
   r.added_mass_ratio = solver.added_mass() / solver.physical_mass();
   r.max_penetration = solver.max_penetration();
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  if (omp_get_max_threads() == 1) r.cpu_seconds = thread_cpu_seconds() - cpu0;
 }
 
 }  // namespace
@@ -217,6 +228,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   const int threads = opt.threads > 0 ? opt.threads : deck.threads;
   if (threads > 0) omp_set_num_threads(threads);
   const auto wall0 = std::chrono::steady_clock::now();
+  const double cpu0 = thread_cpu_seconds();
   for (const auto& w : deck.warnings) log << "warning: " << w << "\n";  // before the solver can fail
   fe::Solver solver(deck.model);
   solver.set_warning_handler([&log](const std::string& w) { log << "\nwarning: " << w << "\n"; });
@@ -265,7 +277,7 @@ RunSummary run_case(Deck& deck, const RunOptions& opt, std::ostream& log) {
   write_pvd((fs::path(opt.out_dir) / "fields.pvd").string(), frame_collection(deck.model, run.rs.snapshots));
   if (reduction) write_reduction((fs::path(opt.out_dir) / kReductionFile).string(), "case '" + deck.model.name + "'",
                                    reduction->finish(solver));
-  fill_summary(run, wall0);
+  fill_summary(run, wall0, cpu0);
   log_energies(run, write_summary(run));
   write_run_result(deck, solver, opt.out_dir, opt.result, log);  // result.toml (io/run_result.hpp)
   return run.r;

@@ -49,6 +49,10 @@ struct RunSummary {
   double added_mass_ratio = 0;      ///< added / physical mass
   double max_penetration = 0;       ///< [mm]
   double wall_seconds = 0;
+  /// CPU time of the run's thread [s] when it ran on one thread (NaN otherwise:
+  /// OpenMP's other threads are not counted); run.log's "cpu:" line, which
+  /// `drawbend plan` prefers to wall x threads on a machine shared with others.
+  double cpu_seconds = NAN;
   bool halted = false;              ///< stopped by halt_after_cycles (no final outputs)
   std::string checkpoint;           ///< last checkpoint written ("" if none)
   int interrupted = 0;              ///< the signal that stopped the run (0: none)

@@ -7,12 +7,23 @@
 
 namespace drawbend::sim {
 
+double ns_per_element_cycle(const std::string& kind) {
+  // Measured 2026-12-02 (docs/cluster.md): 250 ns / median(predicted / measured) per kind.
+  if (kind.empty()) return 130;
+  if (kind == "strip_draw") return 160;
+  if (kind == "block_slide") return 190;
+  if (kind == "cup_draw") return 210;
+  if (kind == "earing_cup") return 310;
+  return 310;
+}
+
 CasePrediction predict_case(const io::Deck& d) {
   CasePrediction p;
   p.name = d.model.name;
+  p.kind = d.output.reduce.kind;
   p.elements = d.model.mesh.num_elements();
   p.cycles = d.cost.cycles;
-  p.cpu_seconds = p.elements * p.cycles * kNsPerElementCycle * 1e-9;
+  p.cpu_seconds = p.elements * p.cycles * ns_per_element_cycle(p.kind) * 1e-9;
   p.memory_mb = d.cost.memory_mb;
   return p;
 }

@@ -2,17 +2,20 @@
 // What a case will cost before it runs: the CPU time and memory a job asks
 // for (sim::JobNeeds for the Slurm executor) and what `drawbend plan` lists.
 //
-// Model: CPU seconds = elements x predicted cycles x kNsPerElementCycle.  The
-// predicted cycles are the deck's own estimate (io::CostEstimate: end time /
-// initial stable step with mass scaling), a lower bound, since the step shrinks
-// as elements deform; the constant carries that shrinkage and the contact,
-// output and history work per element-cycle.  It was calibrated on the quick
-// tier's draw-bend runs of `make test` (36 runs, 2026-12-01, AMD EPYC Zen 4,
-// 2 cores: at 700 ns the prediction was 2.76 x the measured CPU time
-// (median; 1.74 to 3.66), so 700 / 2.76 = 254, rounded to 250; docs/cluster.md).  A job asks for kTimeFactor x the prediction (at
-// least kMinMinutes) so that a slower node or a busier file system does not
-// end a good run in TIMEOUT; memory is the deck's estimate x 2 plus the
-// process's fixed part.
+// Model: CPU seconds = elements x predicted cycles x ns_per_element_cycle(kind).
+// The predicted cycles are the deck's own estimate (io::CostEstimate: end time
+// / initial stable step with mass scaling), a lower bound, since the step
+// shrinks as elements deform; the constant carries that shrinkage and the
+// contact, output and history work per element-cycle, and so depends on the
+// kind of case (the deck's [output] reduce kind; none: a draw-bend case).
+// Calibration (docs/cluster.md): the quick tier's runs of every kind, by the
+// CPU time each run measured on its one thread (io::RunSummary::cpu_seconds),
+// 2026-12-02, AMD EPYC Zen 4: each constant is the old one (250 ns) over the
+// median ratio predicted / measured of its kind.  A job asks for kTimeFactor
+// x the prediction (at least kMinMinutes) so that a slower node, a costlier
+// material than the kind's median (Hill'48, Yld2004-18p cups) or a busier file
+// system does not end a good run in TIMEOUT; memory is the deck's estimate x
+// 2 plus the process's fixed part.
 #include <string>
 #include <vector>
 
@@ -21,13 +24,16 @@
 
 namespace drawbend::sim {
 
-inline constexpr double kNsPerElementCycle = 250;  ///< calibrated, see the header
+/// Calibrated CPU nanoseconds per element-cycle of a case kind (see the header):
+/// "" (draw-bend), block_slide, strip_draw, cup_draw, earing_cup; another kind: the largest.
+double ns_per_element_cycle(const std::string& kind);
 inline constexpr double kTimeFactor = 4;
 inline constexpr double kMinMinutes = 5;
 inline constexpr double kFixedMemoryMb = 120;
 
 struct CasePrediction {
   std::string name;
+  std::string kind;  ///< the deck's [output] reduce kind ("": draw-bend)
   double elements = 0, cycles = 0;
   double cpu_seconds = 0;  ///< on one core
   double memory_mb = 0;

@@ -1,6 +1,7 @@
 // Three small draw-bend cases through the case pool, written to OUT/cases.csv
 // (every result to 17 significant digits), then a small block slide and strip
-// draw (OUT/kinds.csv, the same way), with their run folders under
+// draw (OUT/kinds.csv, the same way) and the first 2 mm of Chapter 6's cup
+// (OUT/cups.csv), with their run folders under
 // OUT/runs/: the driver of tests/cluster/executor_check.sh, which runs it with
 // each executor (local, command, slurm; sim/executor.hpp) and compares the
 // outputs byte for byte.  The cases are the quick tier's draw-bend deck
@@ -19,6 +20,7 @@
 #include "core/options.hpp"
 #include "sim/block_case.hpp"
 #include "sim/case_pool.hpp"
+#include "sim/cup_case.hpp"
 #include "sim/fe_options.hpp"
 #include "sim/strip_draw_case.hpp"
 
@@ -77,6 +79,17 @@ int main(int argc, char** argv) {
     };
     k.row({b.name, g(rb.mu_x), g(rb.mu_y), "", g(rb.v_mean), "", std::to_string(rb.cycles)});
     k.row({st.name, "", "", g(rs.mu), g(rs.v_mean), g(rs.p_mean), std::to_string(rs.cycles)});
+    // A cup (sim/cup_case, kind cup_draw), its first 2 mm: curve, end state and fields from its folder.
+    sim::CupSpec cup;
+    cup.deck = std::string(DRAWBEND_DATA_DIR) + "/cases/cup_draw.toml";
+    cup.stroke = 2;
+    cup.cycles = 2000;
+    const sim::CupResult rc = sim::draw_cup_job(cup, out + "/runs/cup0", true);
+    k.row({"cup0", "", "", "", "", "", std::to_string(rc.cycles)});
+    CsvWriter cw({"case", "punch_force_N", "die_force_N", "size_rd_mm", "max_strain", "max_strain_angle_deg", "points"});
+    cw.row({"cup0", g(rc.curve.back().second), g(rc.die_force), g(rc.size_rd), g(rc.max_strain), g(rc.max_strain_angle),
+            std::to_string(rc.curve.size())});
+    cw.save(out + "/cups.csv");
     k.save(out + "/kinds.csv");
     return 0;
   });

@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # The executors, for real (sim/executor.hpp; ctest cluster.executors):
-#  1. three short draw-bend cases, a block slide and a strip draw run in
+#  1. three short draw-bend cases, a block slide, a strip draw and a cup run in
 #     process (DRAWBEND_EXECUTOR=local);
 #  2. the same through a command template (a shell wrapper that runs the job);
 #  3. the same through a single-node Slurm started here (tests/cluster/local_slurm.sh);
 #  4. Slurm again, one job cancelled (scancel) while it runs: the driver must
 #     fail naming the case, the job id and CANCELLED, leave that case without a
 #     summary.csv, and a rerun must complete with the same results.
-# Every run's cases.csv and kinds.csv and every run folder's deck, reduction.csv, history, contact maps and
+# Every run's cases.csv, kinds.csv and cups.csv and every run folder's deck, reduction.csv, history, contact maps and
 # ParaView files must equal the local run's byte for byte (summary.csv too,
 # less its wall_time row; history.csv and summary.csv less their first line,
 # result.toml less its deck = line, which names the
@@ -25,7 +25,8 @@ fail() { echo "FAIL: $*"; exit 1; }
 same_runs() {  # same_runs A B: byte-identical outputs
   local a=$1 b=$2 f
   cmp "$a/cases.csv" "$b/cases.csv" || fail "cases.csv differs: $a vs $b"
-  cmp "$a/kinds.csv" "$b/kinds.csv" || fail "kinds.csv (block, strip draw) differs: $a vs $b"
+  cmp "$a/kinds.csv" "$b/kinds.csv" || fail "kinds.csv (block, strip draw, cup) differs: $a vs $b"
+  cmp "$a/cups.csv" "$b/cups.csv" || fail "cups.csv differs: $a vs $b"
   for f in "$a"/runs/*/*; do
     local n=${f#"$a"/}
     case $n in
