@@ -38,8 +38,8 @@ struct CombinedState {
 
 /// The state of point gp of elements e0 .. e0+W-1, from (to_state false) or
 /// to (true) ev.state.
-template <int W, bool to_state, class T>
-inline void move_state(const PointsView& ev, int e0, int gp, CombinedState<T>& st) {
+template <int W, bool to_state, class T, class View>
+inline void move_state(const View& ev, int e0, int gp, CombinedState<T>& st) {
   const CombinedParams& P = ev.combined;
   double* p[W];
   for (int l = 0; l < W; ++l) p[l] = ev.state + (2 * static_cast<std::size_t>(e0 + l) + gp) * ev.ns;
@@ -269,8 +269,8 @@ inline void combined_tangent_ratio(const CombinedParams& P, const T s[6], const 
 /// The material section of element_block<W> for CombinedPlasticity
 /// (lane_points): states from and to ev.state, each point turned with its
 /// spin (spin[gp]) when the material uses it.
-template <int W, class T>
-inline void combined_points(const PointsView& ev, int e0, const T s[2][6], const T deps[2][6], const T spin[2][3],
+template <int W, class T, class View>
+inline void combined_points(const View& ev, int e0, const T s[2][6], const T deps[2][6], const T spin[2][3],
                             const T& V, T& ratio, T snew[2][6]) {
   const bool turn = ev.spin && ev.dtp != 0.0;
   CombinedState<T> st[2];

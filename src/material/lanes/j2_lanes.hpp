@@ -179,8 +179,8 @@ inline void proximity_ratio(const T& f, const T& H, double E, T& ratio) {
 /// points are updated before either's ratio: the updates are independent
 /// chains of square roots and divisions, and side by side the processor can
 /// overlap them.
-template <int W, class T, class Update, class RatioOf>
-inline void lane_points(const PointsView& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio,
+template <int W, class T, class Update, class RatioOf, class View>
+inline void lane_points(const View& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio,
                         T snew[2][6], Update&& update, RatioOf&& ratio_of) {
   T ie = {}, r[2];
   for (int gp = 0; gp < 2; ++gp) {
@@ -315,8 +315,8 @@ inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, const
 
 /// The material section of element_block<W> for J2 isotropic (lane_points):
 /// the plastic strains from and to ev.state.
-template <int W, class T>
-inline void j2_points(const PointsView& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio,
+template <int W, class T, class View>
+inline void j2_points(const View& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio,
                       T snew[2][6]) {
   T ep[2];  // the points' plastic strains (one state value per point)
   load_records<2>(ev.state + 2 * static_cast<std::size_t>(e0), ep);
