@@ -68,6 +68,9 @@ struct DrawBendSpec {
   /// the clamped step's pace, leaves the strip loose on the pin and it snaps
   /// taut later, which yields the inlet leg instead (docs/issue51-large-pin.md).
   bool bend_inlet_slides = false;
+  /// OpenMP threads of `drawbend run` written into the deck's [numerics]
+  /// (0: none written, the default; the deck writers' --threads).
+  int threads = 0;
 };
 
 /// Mid-surface wrap length (D/2 + t/2) * pi/2 [mm].
