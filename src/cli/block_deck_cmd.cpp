@@ -69,7 +69,9 @@ int block_deck_command(int argc, char** argv) {
       const std::string what = e.what();  // the file gate's messages name the option already
       throw InputError((what.rfind("--surface-nodes", 0) == 0 ? "" : "--surface-nodes: ") + what);
     }
-  return write_deck_out(deck_with_threads(sim::block_deck_text(s), threads), out, "block-deck");
+  check_threads(threads);
+  s.threads = threads;  // written into the deck's [numerics] by the builder
+  return write_deck_out(sim::block_deck_text(s), out, "block-deck");
 }
 
 }  // namespace drawbend::cli

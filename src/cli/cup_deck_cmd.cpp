@@ -69,7 +69,8 @@ int cup_deck_command(int argc, char** argv) {
   if (punch_radius < 0 || die_radius < 0) throw std::invalid_argument("--punch-radius/--die-radius: expected >= 0 mm");
   if (punch_radius > 0) s.punch_radius = punch_radius;
   if (die_radius > 0) s.die_radius = die_radius;
-  std::cout << checked_deck(deck_with_threads(sim::cup_deck_text(s), threads), "cup-deck");
+  s.threads = threads;  // set in the deck's [numerics] by the builder
+  std::cout << checked_deck(sim::cup_deck_text(s), "cup-deck");
   return 0;
 }
 

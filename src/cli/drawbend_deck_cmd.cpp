@@ -110,9 +110,10 @@ int drawbend_deck_command(int argc, char** argv) {
   const std::string tag = full ? "full strip" : "half model";
   s.back_tension = back_tension * to_half;
   if (run_dir.empty()) {
+    s.threads = threads;  // written into the deck's [numerics] by the builder (a run's deck keeps none)
     std::cout << "# back_tension in this deck is on the half model: " << fmt(s.back_tension, 6) << " N ("
               << fmt(back_tension, 6) << " N on the " << tag << ")\n"
-              << checked_deck(deck_with_threads(sim::deck_text(s), threads), "drawbend-deck");
+              << checked_deck(sim::deck_text(s), "drawbend-deck");
     return 0;
   }
   ensure_writable_dir(run_dir, "--run");  // before any work: exit 2, not a file-system error

@@ -66,7 +66,9 @@ int strip_deck_command(int argc, char** argv) {
   if (!s.stribeck_table.empty()) (void)read_input(s.stribeck_table);
   // --friction checked on its own (io/portable_paths.hpp): a problem names the option, not the generated deck.
   s.friction = io::friction_argument(s.friction, std::filesystem::current_path().string());
-  return write_deck_out(deck_with_threads(sim::strip_draw_deck_text(s), threads), out, "strip-deck");
+  check_threads(threads);
+  s.threads = threads;  // written into the deck's [numerics] by the builder
+  return write_deck_out(sim::strip_draw_deck_text(s), out, "strip-deck");
 }
 
 }  // namespace drawbend::cli

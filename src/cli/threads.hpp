@@ -10,8 +10,10 @@
 //   - `model-loop` (and `loop --model fe`) gives its FE runs N threads in all
 //     (sim::set_case_threads: cases side by side, threads within a case);
 //   - commands that write a deck (block-deck, strip-deck, cup-deck, and
-//     drawbend-deck without --run) write N into the deck's [numerics] threads,
-//     so that `drawbend run` of that deck uses it (deck_with_threads).
+//     drawbend-deck without --run) set the builder spec's `threads` field
+//     (sim::DrawBendSpec, BlockSpec, StripDrawSpec, CupSpec), which the
+//     builder writes into the deck's [numerics] threads, so that
+//     `drawbend run` of that deck uses it.
 #include <string>
 
 #ifdef _OPENMP
@@ -44,13 +46,5 @@ inline void apply_threads(int n) {
   if (n > 0) omp_set_num_threads(n);
 #endif
 }
-
-/// A deck's text with `threads = n` in its [numerics] table: the table's own
-/// `threads` line replaced if it has one (a cup deck's --base may), else the
-/// line inserted as the table's first key, else a [numerics] table appended;
-/// the text as it was for n = 0.  The result is parsed again, and a deck in
-/// which numerics.threads is not n (a layout this line-based edit does not
-/// know) is an error, never a deck that `drawbend run` would refuse.
-std::string deck_with_threads(const std::string& text, int n);
 
 }  // namespace drawbend::cli

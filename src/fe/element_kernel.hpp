@@ -1,6 +1,6 @@
 // The element loop of the explicit solver: the hexahedron with two
 // integration points through the thickness, for one element or for W elements
-// side by side (one per lane, fe/lanes.hpp).  Compiled once per instruction
+// side by side (one per lane, core/lanes.hpp).  Compiled once per instruction
 // set (fe/element_view.hpp); the solver's driver is fe/element_forces.cpp.
 //
 // Why two points.  A one-point element crossed by the neutral axis of a bent,
@@ -43,14 +43,21 @@
 #include <cstdint>
 #include <cstring>
 
-#include "fe/combined_lanes.hpp"
+#include "core/lane_records.hpp"
+#include "fe/corner_slots.hpp"
 #include "fe/element_view.hpp"
 #include "fe/hex8_geometry.hpp"
-#include "fe/material_lanes.hpp"
+#include "material/lanes/combined_lanes.hpp"
+#include "material/lanes/j2_lanes.hpp"
 
 namespace drawbend::fe::DRAWBEND_ISA {
 
 namespace kernel {
+// The material updates on the lanes: each model's lane twin, beside its scalar
+// law in material/lanes/, compiled here for this instruction set.
+using material::lanes::DRAWBEND_ISA::combined_points;
+using material::lanes::DRAWBEND_ISA::j2_points;
+
 constexpr double kRelax = 0.01;                 // tangent ratio relaxes over ~100 cycles (no chatter)
 constexpr double kZg = 0.57735026918962576;    // 1/sqrt(3)
 inline constexpr material::Spin kNoSpin{};       // for materials without rotating history
@@ -119,7 +126,7 @@ inline bool nodes_run_on(const std::array<int, 8>* hex) {
 
 /// The mean velocity gradient Ln and the modes' coordinates hxa and local
 /// velocities gl (R^T sum_a v_a gamma_alpha,a) from the corner velocities v.
-/// Out of line on AVX2, as scatter_forces (DRAWBEND_OUTLINE, fe/lanes.hpp).
+/// Out of line on AVX2, as scatter_forces (DRAWBEND_OUTLINE, fe/hex8_geometry.hpp).
 template <class T>
 DRAWBEND_OUTLINE void velocity_gradient(const HexWalshT<T>& g, const T v[3][8], T hxa[4][3], T Ln[3][3],
                                         T gl[4][3]) {
@@ -151,7 +158,7 @@ DRAWBEND_OUTLINE void velocity_gradient(const HexWalshT<T>& g, const T v[3][8], 
 /// hex_walsh_t: GCC then spills less of the block (AVX2 kernel on Zen 1, bar
 /// 1,600, one thread: 265 ns with the three out of line, 279 with hex_walsh_t
 /// alone, 291 with all inline; moving the points' strains out too: 270).
-/// Inlined on AVX-512, which has twice the registers (DRAWBEND_OUTLINE, fe/lanes.hpp).
+/// Inlined on AVX-512, which has twice the registers (DRAWBEND_OUTLINE, fe/hex8_geometry.hpp).
 template <int W, class T>
 DRAWBEND_OUTLINE void scatter_forces(const ElementView& ev, int e0, const HexWalshT<T>& g, const T Mf[3][3],
                                      const T C[4][3]) {
@@ -325,7 +332,7 @@ int element_block(const ElementView& ev, int e0) {
   }
   // ... the material update, with the stress power increment per unit volume
   // by the midpoint rule; the tangent ratio.  J2 and CombinedPlasticity on
-  // the lanes, branch-free (fe/material_lanes.hpp, fe/combined_lanes.hpp);
+  // the lanes, branch-free (material/lanes/j2_lanes.hpp, combined_lanes.hpp);
   // other materials one point at a time (each turns its own history with the
   // point's spin).
   const material::Material& mat = *ev.mat;

@@ -6,7 +6,7 @@
 // `baseline` (the x86-64 baseline, SSE2) and, where the compiler and machine
 // allow it, `avx2` (4 doubles per instruction, no FMA) and `avx512` (8 elements
 // side by side, 8 doubles per instruction, no FMA).  All give the same
-// bits (fe/lanes.hpp says why), which tests/unit/test_element_kernel.cpp
+// bits (core/lanes.hpp says why), which tests/unit/test_element_kernel.cpp
 // checks; the solver picks the widest one the CPU has.
 #include <array>
 #include <cstdint>
@@ -14,17 +14,21 @@
 #include "fe/node_view.hpp"
 #include "material/combined_plasticity.hpp"
 #include "material/j2_isotropic.hpp"
+#include "material/lanes/points_view.hpp"
 #include "material/material.hpp"
 
 namespace drawbend::fe {
 
 /// Doubles per corner slot: fx, fy, fz [N].  (Four, with a zero, would make a
 /// slot one 32-byte store in the vector kernels: no faster on the 1,600-element
-/// bar than the two stores of fe/lane_records.hpp, and 5 % slower on the
+/// bar than the two stores of fe/corner_slots.hpp, and 5 % slower on the
 /// 64,000-element bar, whose corner buffer then outgrows the caches by a third
 /// more: make bench, 2026-11-27.)
 inline constexpr int kCornerStride = 3;
 
+/// The part the materials' lane twins read and write (sig, state, ie_inc, ns,
+/// spin, the bound flags and constants, dtp) is their contract,
+/// material/lanes/points_view.hpp, checked below.
 struct ElementView {
   const std::array<int, 8>* hex = nullptr;  ///< connectivity
   /// The nodes (Solver::node_view()); the element loop only reads their
@@ -58,6 +62,8 @@ struct ElementView {
   /// time-stamp-counter ticks spent in the material updates (atomic, per block).
   std::uint64_t* material_ticks = nullptr;
 };
+
+static_assert(material::lanes::is_points_view<ElementView>(), "the lane twins' view (material/lanes/points_view.hpp)");
 
 /// Process elements [begin, end), `width` (1, 4, or 8 in the avx512 kernel)
 /// side by side and the rest one by one.  Returns the lowest inverted element in the range, or -1.

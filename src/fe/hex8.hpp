@@ -42,7 +42,7 @@ void volume_derivatives(const double x[8], const double y[8], const double z[8],
                         double dvdz[8]);
 
 /// Element geometry at the current configuration; T = double for one element,
-/// a vector of doubles for several side by side (fe/lanes.hpp).
+/// a vector of doubles for several side by side (core/lanes.hpp).
 template <class T>
 struct HexGeometryT {
   T B[3][8];   ///< uniform gradient dN_a/dx_i averaged over the element [1/mm]

@@ -1,5 +1,5 @@
 #pragma once
-// The hexahedron's geometry as templates over the lane type (fe/lanes.hpp):
+// The hexahedron's geometry as templates over the lane type (core/lanes.hpp):
 // one source for the scalar functions of hex8.cpp and for the element loop's
 // vector kernels (fe/element_kernel.hpp).
 //
@@ -8,11 +8,28 @@
 // never stand in for the baseline one at link time.
 #include <cmath>
 
+#include "core/lanes.hpp"
 #include "fe/hex8.hpp"
-#include "fe/lanes.hpp"
 
 #ifndef DRAWBEND_ISA
 #define DRAWBEND_ISA baseline
+#endif
+
+// DRAWBEND_OUTLINE marks the element kernel's three large pieces (hex_walsh_t,
+// velocity_gradient, scatter_forces): out of line where a vector has 16
+// registers (AVX2, and the scalar build), inlined into the block where it has
+// 32 (AVX-512).  With 16, GCC spills less of the block when they are calls
+// (AVX2 kernel on Zen 1, bar 1,600, one thread: 265 ns with the three out of
+// line, 291 with all inline; fe/element_kernel.hpp).  With 32 the calls' cost
+// is the larger one: AVX-512 kernel on Zen 4 (AMD EPYC family 25 model 17,
+// KVM), 1 thread, bar 1,600 with J2, 8 alternations of both builds: 86.1 ns
+// shortest and 87.6 median inlined against 88.0 and 91.0; the strip, 5
+// alternations: 90.7 shortest against 98.6 (2026-11-29).  Inlining changes
+// no bits (no contraction, no reassociation: the same operations in the same order).
+#if defined(__AVX512F__)
+#define DRAWBEND_OUTLINE __attribute__((always_inline)) inline
+#else
+#define DRAWBEND_OUTLINE __attribute__((noinline)) inline
 #endif
 
 namespace drawbend::fe::DRAWBEND_ISA {
@@ -121,7 +138,7 @@ struct HexWalshT {
 /// Returns false, with only the volume set, when the volume of any lane is
 /// not positive.  Out of line on purpose where vectors have 16 registers:
 /// inlined into the element kernel's block, GCC spills more there
-/// (DRAWBEND_OUTLINE, fe/lanes.hpp).
+/// (DRAWBEND_OUTLINE, above).
 template <class T>
 DRAWBEND_OUTLINE bool hex_walsh_t(const T x[8], const T y[8], const T z[8], HexWalshT<T>& g) {
   walsh_volume_gradient_t(x, y, z, g.X, g.G);

@@ -102,7 +102,7 @@ class CombinedPlasticity final : public Material {
 
   /// The constants behind update() and tangent_ratio(), for code that must
   /// compute their bits in another form (the element kernel's lanes:
-  /// fe/combined_lanes.hpp and fe/hill48_lanes.hpp repeat both step by step;
+  /// material/lanes/combined_lanes.hpp and material/lanes/hill48_lanes.hpp repeat both step by step;
   /// a change here must be made there, or test_element_kernel fails).
   struct LaneParams {
     double lambda, G, E;     ///< elastic constants [MPa]

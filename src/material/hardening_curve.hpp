@@ -62,7 +62,7 @@ class HardeningCurve {
   double segment_end(int k) const noexcept;
 
   /// The arrays behind segment() and stress_on(), for code that must compute
-  /// their bits in another form (the element kernel's lanes: fe/material_lanes.hpp).
+  /// their bits in another form (the element kernel's lanes: material/lanes/j2_lanes.hpp).
   struct Table {
     const double *x, *y, *h;  ///< points and slopes
     const int* bins;          ///< bins[b]: segment containing b * bin width

@@ -38,7 +38,7 @@ class J2Isotropic final : public Material {
 
   const HardeningCurve& curve() const { return curve_; }
   /// The constants of update_point() and tangent_ratio() as plain numbers, for
-  /// the element kernel's lane version of both (fe/material_lanes.hpp), which
+  /// the element kernel's lane version of both (material/lanes/j2_lanes.hpp), which
   /// gives their bits.  Valid while this material lives.
   /// ratio_one_q2: a q^2 at or below which tangent_ratio() is exactly 1 for
   /// any ep >= 0, so the lanes need no curve look-up, square root or division

@@ -1,7 +1,7 @@
 #pragma once
 // Which lane twin (the element kernel's vector version of a material's
-// update, fe/material_lanes.hpp and fe/combined_lanes.hpp) a material has,
-// with its constants: filled by Material::bind_lanes(), read by
+// update, material/lanes/j2_lanes.hpp and combined_lanes.hpp) a material
+// has, with its constants: filled by Material::bind_lanes(), read by
 // fe::bind_lanes() (fe/element_forces.cpp).  A model with a new lane twin
 // adds its flag and constants here and overrides bind_lanes().
 #include "material/combined_plasticity.hpp"

@@ -26,8 +26,8 @@
 // Extending: a new model derives from Material with its own state layout
 // (state_size() doubles per point) and follows the rules above; the element
 // code does not change.  A model with a lane twin of its update (the element
-// kernel's vector lanes: J2Isotropic, CombinedPlasticity) says so through
-// bind_lanes() (material/lane_binding.hpp); the others run point by point.
+// kernel's vector lanes, material/lanes/: J2Isotropic, CombinedPlasticity) says so
+// through bind_lanes() (material/lane_binding.hpp); the others run point by point.
 #include <cstddef>
 #include <string>
 

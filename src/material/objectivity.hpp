@@ -13,7 +13,7 @@
 // orientation while the sheet wraps round a pin.  The element kernel rotates
 // the stress with rotate_symmetric() before Material::update(); a material
 // rotates its own tensors and axes with the same functions and the same spin
-// inside update().  T is double or a lane vector (fe/lanes.hpp): the
+// inside update().  T is double or a lane vector (core/lanes.hpp): the
 // operations and their order are the same, so results are bit-identical
 // across kernels.
 namespace drawbend::material {

@@ -33,7 +33,7 @@ static void sheet_to_matrix(const double v[6], double A[3][3]) {
   A[2][0] = A[0][2] = v[5];
 }
 // As P (A P^T) with P = Q or Q^T: 45 multiplications where the sum over
-// Q_ik A_km Q_jm term by term took 162 (fe/hill48_lanes.hpp's sheet_transform,
+// Q_ik A_km Q_jm term by term took 162 (material/lanes/hill48_lanes.hpp's sheet_transform,
 // the same arithmetic in the same order).  B is symmetric in exact
 // arithmetic, so one entry of each off-diagonal pair gives its shear (B01,
 // B12, B20; the term-by-term form averaged both).

@@ -24,7 +24,7 @@ SheetAxes sheet_axes(const std::array<double, 3>& rd, const std::array<double, 3
 
 /// A Voigt tensor (tensor shears) between global and sheet axes; the rows of Q
 /// are RD, TD, ND: local = Q A Q^T (to_local), global = Q^T A Q.  (The lanes of
-/// fe/hill48_lanes.hpp repeat its arithmetic in the same order.)
+/// material/lanes/hill48_lanes.hpp repeat its arithmetic in the same order.)
 void sheet_transform(const double Q[3][3], const double v[6], double out[6], bool to_local);
 /// c = a x b.
 void cross3(const double a[3], const double b[3], double c[3]);

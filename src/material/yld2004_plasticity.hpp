@@ -36,8 +36,8 @@
 // CombinedPlasticity's Hill'48; the back stresses and axes turn with the spin.
 //
 // Lanes: none.  The element kernel runs this model through update() on the
-// scalar path (fe/element_forces.cpp binds lanes only for J2Isotropic and
-// CombinedPlasticity), so its results are the same bits for any thread count
+// scalar path (it does not override Material::bind_lanes; only J2Isotropic
+// and CombinedPlasticity have twins, in material/lanes/), so its results are the same bits for any thread count
 // and instruction set (the per-point update reads nothing outside its state).
 #include "material/combined_plasticity.hpp"
 #include "material/hardening_curve.hpp"

@@ -67,7 +67,8 @@ std::string block_deck_text(const BlockSpec& s) {
   for (const char* axis : {"x", "y", "z"}) o << axis << " = { from = 0.0, to = " << L << ", n = " << n << " }\n";
   o << "\n" << material_section("", s.hardening) << "\n"
     << "[sheet]\nrolling_direction = [1.0, 0.0, 0.0]  # RD: friction texture (and material axes) start from it\n\n"
-    << "[numerics]\ndt_safety = 0.8\nmass_scaling = " << toml_float(s.mass_scaling) << "\n\n"
+    << "[numerics]\n" << numerics_threads_line(s.threads) << "dt_safety = 0.8\nmass_scaling = " << toml_float(s.mass_scaling)
+    << "\n\n"
     << "[[tool]]\nname = \"floor\"\ndrive = \"fixed\"\n[[tool.surface]]\nkind = \"plane\"\n"
     << "origin = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\n\n"
     << "[[contact]]\nfaces = \"zmin\"\ntool = \"floor\"\npenalty = " << toml_float(s.penalty)

@@ -41,6 +41,9 @@ struct BlockSpec {
   double press_damping = 2e4;   ///< mass-proportional damping of step 1 [1/s]
   double slide_time = 3e-3;     ///< duration of step 2 [s]
   double speed_ramp = 5e-4;     ///< speed ramp of step 2 [s]
+  /// OpenMP threads of `drawbend run` written into the deck's [numerics]
+  /// (0: none written, the default; the deck writers' --threads).
+  int threads = 0;
 };
 
 /// The spec with the data files of this tree (DRAWBEND_DATA_DIR): the RD

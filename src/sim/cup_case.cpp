@@ -289,6 +289,7 @@ std::string cup_deck_text(const CupSpec& spec) {
   const fe::Model& m = deck.model;
   const double dt = spec.stroke / spec.speed / spec.cycles, tr = 0.02 * spec.cycles * dt;
   root["numerics"].as_table()->insert_or_assign("target_dt", dt / m.dt_safety);
+  if (spec.threads > 0) root["numerics"].as_table()->insert_or_assign("threads", spec.threads);
   auto* steps = root["step"].as_array();
   if (!steps || steps->size() != 2) throw InputError(spec.deck + ": expected two steps (clamp, draw)");
   steps->get(0)->as_table()->insert_or_assign("duration", 400 * dt);

@@ -34,6 +34,9 @@ struct CupSpec {
   /// "none" = frictionless; otherwise the path of a Table 6.1-format nodes CSV.
   std::string friction;
   std::string vtu;             ///< write the end-of-stroke fields here when set
+  /// OpenMP threads of `drawbend run` in the deck's [numerics] (0: the base
+  /// deck's, if any; cup-deck's --threads).
+  int threads = 0;
 };
 
 /// One cup-drawing run.  Forces for the full blank [N], sizes and positions [mm].

@@ -15,6 +15,7 @@
 #include "io/run_case.hpp"
 #include "io/run_result.hpp"
 #include "sim/deck_job.hpp"
+#include "sim/deck_writer.hpp"
 #include "sim/material_choice.hpp"
 
 namespace drawbend::sim {
@@ -106,7 +107,7 @@ std::string deck_text(const DrawBendSpec& s) {
     << "z = { from = " << num(R) << ", to = " << num(R + t) << ", n = " << s.through << " }\n\n"
     << material_section(s.material, s.hardening) << "\n"
     << (s.strip_direction == "rd" && s.material.empty() ? std::string() : sheet_section(s.strip_direction) + "\n")
-    << "[numerics]\ndt_safety = 0.8\nmass_scaling = " << num(s.mass_scaling) << "\n\n"
+    << "[numerics]\n" << numerics_threads_line(s.threads) << "dt_safety = 0.8\nmass_scaling = " << num(s.mass_scaling) << "\n\n"
     << "[[tool]]\nname = \"pin\"\ndrive = \"fixed\"\n[[tool.surface]]\nkind = \"cylinder\"\n"
     << "origin = [0.0, 0.0, 0.0]\naxis = [0.0, 1.0, 0.0]\nradius = " << num(R) << "\n\n"
     << "[[contact]]\nfaces = \"zmin\"\ntool = \"pin\"\npenalty = " << num(s.penalty) << "\n";

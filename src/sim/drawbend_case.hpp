@@ -76,6 +76,9 @@ struct DrawBendSpec {
   /// the 42 mm pin 3.9 % with 2 elements across, 5.9 % with 4 or 8;
   /// docs/issue51-large-pin.md).
   bool plane_strain_width = false;
+  /// OpenMP threads of `drawbend run` written into the deck's [numerics]
+  /// (0: none written, the default; the deck writers' --threads).
+  int threads = 0;
 };
 
 /// Mid-surface wrap length (D/2 + t/2) * pi/2 [mm].

@@ -68,7 +68,7 @@ std::string text(const StripDrawSpec& s, double dt, double die_mass) {
     << "y = { from = 0.0, to = " << toml_float(s.width) << ", n = " << s.ny << " }\n"
     << "z = { from = 0.0, to = " << toml_float(s.thickness) << ", n = " << s.nz << " }\n\n"
     << material_section("", s.hardening) << "\n"
-    << "[numerics]\ndt_safety = 0.8\ntarget_dt = " << toml_float(dt) << "\n\n"
+    << "[numerics]\n" << numerics_threads_line(s.threads) << "dt_safety = 0.8\ntarget_dt = " << toml_float(dt) << "\n\n"
     << "[guards]\n"
     << "# The strip slides nearly rigidly, so its internal energy stays tiny (0.01 mJ)\n"
     << "# and the hourglass energy reaches tens of times that in the slow cases (26x at\n"

@@ -47,6 +47,9 @@ struct StripDrawSpec {
   /// Friction of the die as a TOML inline table, e.g. `{ law = "coulomb", mu = 0.1 }`;
   /// empty: the Stribeck law on `stribeck_table` with `interval`.
   std::string friction;
+  /// OpenMP threads of `drawbend run` written into the deck's [numerics]
+  /// (0: none written, the default; the deck writers' --threads).
+  int threads = 0;
 };
 
 /// The spec with the data files of this tree: the RD hardening curve of

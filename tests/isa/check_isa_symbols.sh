@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The per-instruction-set element kernels (src/fe/element_kernel_avx2.cpp,
 # _avx512.cpp) are compiled with -mavx2 / -mavx512f.  Any code they define
-# outside their own namespace (drawbend::fe::avx2::, ::avx512::) is a weak or
+# outside their own namespaces (drawbend::fe::avx2:: and the materials' lane
+# twins' drawbend::material::lanes::avx2::; ::avx512:: alike) is a weak or
 # global symbol that the linker may keep for EVERY caller: an AVX-512 copy of
 # a shared inline function would then crash an AVX2-only machine with an
 # illegal instruction.  This test lists the code symbols each kernel object
@@ -24,7 +25,7 @@ for m in $members; do
   # Code symbols: T/t global/local text, W weak (inline functions, templates), i indirect.
   out=$(nm -C --defined-only "$tmp/$m" | awk '$2 ~ /^[TWi]$/' | cut -d' ' -f3- | grep -v "::${isa}::" || true)
   if [ -n "$out" ]; then
-    echo "$m defines code outside drawbend::fe::${isa}:: (compiled for ${isa}; the linker may use it everywhere):"
+    echo "$m defines code outside the ::${isa}:: namespaces (compiled for ${isa}; the linker may use it everywhere):"
     echo "$out" | sed 's/^/  /'
     bad=1
   fi

@@ -1,4 +1,4 @@
-// The element kernel on vector lanes (fe/element_kernel.hpp, fe/lanes.hpp).
+// The element kernel on vector lanes (fe/element_kernel.hpp, core/lanes.hpp).
 // Answers:
 //  - Bit-identity: on 11 distorted, spinning, plastically loaded elements, three
 //    cycles of the kernel four elements side by side (baseline and, where the
@@ -9,12 +9,12 @@
 //    Chaboche back stress (whose state holds back stresses and axes that turn
 //    with the spin).  Every per-element record (stresses, states, hourglass
 //    forces, ratio, energies, steps) passes through the lanes' record
-//    transposes (fe/lane_records.hpp: 1, 2, 6 and 12 values per element), so a
+//    transposes (core/lane_records.hpp: 1, 2, 6 and 12 values per element), so a
 //    misplaced value there fails this comparison.
-//  - J2 on the lanes (fe/material_lanes.hpp): a block mixing elastic points,
+//  - J2 on the lanes (material/lanes/j2_lanes.hpp): a block mixing elastic points,
 //    points below the initial yield stress, plastic points and points whose
 //    increment crosses several curve points gives the scalar bits.
-//  - Combined hardening on the lanes (fe/combined_lanes.hpp): for von Mises
+//  - Combined hardening on the lanes (material/lanes/combined_lanes.hpp): for von Mises
 //    and Hill'48 with isotropic, split and two-term Chaboche hardening, a block
 //    mixing elastic and plastic points, loaded for three cycles and then
 //    reversed for three (Bauschinger re-yielding the other way), gives the
@@ -184,7 +184,7 @@ std::vector<double> run_mixed(ElementRangeFn f, int width, std::vector<double>* 
   return b.outputs();
 }
 
-/// The combined-hardening models on the lanes (fe/combined_lanes.hpp), each
+/// The combined-hardening models on the lanes (material/lanes/combined_lanes.hpp), each
 /// on j2_fine's curve: von Mises with the split form, with two Chaboche terms
 /// and with isotropic hardening only (no spin: nothing to turn), and Hill'48
 /// with isotropic hardening, the split form and two Chaboche terms.

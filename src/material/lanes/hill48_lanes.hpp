@@ -1,6 +1,6 @@
 #pragma once
 // Hill'48 in the sheet frame on W elements side by side, for the combined-
-// hardening model on the lanes (fe/combined_lanes.hpp): the sheet axes turned
+// hardening model on the lanes (material/lanes/combined_lanes.hpp): the sheet axes turned
 // with the spin and re-orthonormalised, tensors into and out of the sheet
 // axes, the Hill'48 equivalent stress and the relative-stress solve
 // (I + kappa T M) xi = xi*.  Each function is the scalar one named above it
@@ -9,14 +9,14 @@
 //
 // Why copies and not one template for both.  The scalar functions live in the
 // material library, built once for the x86-64 baseline; these are built per
-// instruction set in the kernel's namespace, so that an AVX instantiation can
+// instruction set, each in that set's namespace, so that an AVX instantiation can
 // never stand in for a baseline one at link time.  A change to either side
 // must be made to both: tests/unit/test_element_kernel.cpp fails on any
 // difference in the bits.
 //
 // Compiled once per instruction set, in its namespace (as element_kernel.hpp):
 // nothing here may be an inline function shared with other translation units.
-#include "fe/lanes.hpp"
+#include "core/lanes.hpp"
 #include "material/hill48.hpp"
 #include "material/objectivity.hpp"
 
@@ -24,7 +24,7 @@
 #define DRAWBEND_ISA baseline  // as fe/hex8_geometry.hpp: the kernel's own source sets it
 #endif
 
-namespace drawbend::fe::DRAWBEND_ISA::kernel {
+namespace drawbend::material::lanes::DRAWBEND_ISA {
 
 /// cross(a, b, c): c = a x b.
 template <class T>
@@ -83,7 +83,7 @@ inline void sheet_transform(const T Q[3][3], const T v[6], T out[6]) {
 
 /// equivalent(x): q = sigma_bar(x), Hill'48 in the sheet axes.
 template <class T>
-inline void hill_equivalent(const material::Hill48& h, const T x[6], T& q) {
+inline void hill_equivalent(const Hill48& h, const T x[6], T& q) {
   const T a = x[1] - x[2], b = x[2] - x[0], c = x[0] - x[1];
   const T q2 = h.F * a * a + h.G * b * b + h.H * c * c + 2.0 * (h.N * x[3] * x[3] + h.L * x[4] * x[4] + h.M * x[5] * x[5]);
   lane_sqrt(q2, q);
@@ -91,7 +91,7 @@ inline void hill_equivalent(const material::Hill48& h, const T x[6], T& q) {
 
 /// solve_relative(kappa, xs, xi): (I + kappa T M) xi = xs.
 template <class T>
-inline void hill_solve_relative(const material::Hill48& h, const T& kappa, const T xs[6], T xi[6]) {
+inline void hill_solve_relative(const Hill48& h, const T& kappa, const T xs[6], T xi[6]) {
   const double F = h.F, G = h.G, H = h.H;
   const T A[3][3] = {{1.0 + kappa * (G + H), -kappa * H, -kappa * G},
                      {-kappa * H, 1.0 + kappa * (F + H), -kappa * F},
@@ -110,4 +110,4 @@ inline void hill_solve_relative(const material::Hill48& h, const T& kappa, const
   xi[5] = xs[5] / (1.0 + kappa * h.M);
 }
 
-}  // namespace drawbend::fe::DRAWBEND_ISA::kernel
+}  // namespace drawbend::material::lanes::DRAWBEND_ISA

@@ -1,7 +1,8 @@
 #pragma once
-// Lanes of elements for the element loop: the same source computes one
-// element (T = double) or W elements side by side (T = a GCC vector of W
-// doubles, one element per lane).
+// Lanes of elements: the same source computes one element (T = double) or W
+// elements side by side (T = a GCC vector of W doubles, one element per lane).
+// The primitives of the element kernel (fe/element_kernel.hpp) and of the
+// materials' lane twins (material/lanes/), which both build on them.
 //
 // Why this keeps the results bit for bit.  A vector add, subtract, multiply,
 // divide or square root is the IEEE operation on each lane, so lane l of a
@@ -20,24 +21,7 @@
 #include <immintrin.h>
 #endif
 
-// DRAWBEND_OUTLINE marks the element kernel's three large pieces (hex_walsh_t,
-// velocity_gradient, scatter_forces): out of line where a vector has 16
-// registers (AVX2, and the scalar build), inlined into the block where it has
-// 32 (AVX-512).  With 16, GCC spills less of the block when they are calls
-// (AVX2 kernel on Zen 1, bar 1,600, one thread: 265 ns with the three out of
-// line, 291 with all inline; fe/element_kernel.hpp).  With 32 the calls' cost
-// is the larger one: AVX-512 kernel on Zen 4 (AMD EPYC family 25 model 17,
-// KVM), 1 thread, bar 1,600 with J2, 8 alternations of both builds: 86.1 ns
-// shortest and 87.6 median inlined against 88.0 and 91.0; the strip, 5
-// alternations: 90.7 shortest against 98.6 (2026-11-29).  Inlining changes
-// no bits (no contraction, no reassociation: the same operations in the same order).
-#if defined(__AVX512F__)
-#define DRAWBEND_OUTLINE __attribute__((always_inline)) inline
-#else
-#define DRAWBEND_OUTLINE __attribute__((noinline)) inline
-#endif
-
-namespace drawbend::fe {
+namespace drawbend {
 
 template <int W>
 struct Lanes;
@@ -142,4 +126,4 @@ __attribute__((always_inline)) inline bool all_positive(const T& v) {
   return !any_set(~(v > 0.0));
 }
 
-}  // namespace drawbend::fe
+}  // namespace drawbend

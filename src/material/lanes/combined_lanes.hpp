@@ -14,20 +14,20 @@
 // lane has left it, a lane that has left it (or never entered) is masked, and
 // the iteration count is the scalar one for each lane.  The back stresses and
 // the sheet axes turn with the point's spin as in the scalar code, elastic
-// points included.  Curve look-ups are per lane (fe/material_lanes.hpp).
+// points included.  Curve look-ups are per lane (material/lanes/j2_lanes.hpp).
 //
 // Compiled once per instruction set, in its namespace (as element_kernel.hpp):
 // nothing here may be an inline function shared with other translation units.
 #include <cstddef>
 
-#include "fe/element_view.hpp"
-#include "fe/hill48_lanes.hpp"
-#include "fe/lanes.hpp"
-#include "fe/material_lanes.hpp"
+#include "core/lanes.hpp"
+#include "material/lanes/hill48_lanes.hpp"
+#include "material/lanes/j2_lanes.hpp"
+#include "material/lanes/points_view.hpp"
 
-namespace drawbend::fe::DRAWBEND_ISA::kernel {
+namespace drawbend::material::lanes::DRAWBEND_ISA {
 
-using CombinedParams = material::CombinedPlasticity::LaneParams;
+using CombinedParams = CombinedPlasticity::LaneParams;
 
 /// One point's state of W elements: [eps_p, alpha_1 .. alpha_nback (6 each),
 /// RD (3), ND (3)] (the axes only for Hill'48).
@@ -38,8 +38,8 @@ struct CombinedState {
 
 /// The state of point gp of elements e0 .. e0+W-1, from (to_state false) or
 /// to (true) ev.state.
-template <int W, bool to_state, class T>
-inline void move_state(const ElementView& ev, int e0, int gp, CombinedState<T>& st) {
+template <int W, bool to_state, class T, class View>
+inline void move_state(const View& ev, int e0, int gp, CombinedState<T>& st) {
   const CombinedParams& P = ev.combined;
   double* p[W];
   for (int l = 0; l < W; ++l) p[l] = ev.state + (2 * static_cast<std::size_t>(e0 + l) + gp) * ev.ns;
@@ -269,8 +269,8 @@ inline void combined_tangent_ratio(const CombinedParams& P, const T s[6], const 
 /// The material section of element_block<W> for CombinedPlasticity
 /// (lane_points): states from and to ev.state, each point turned with its
 /// spin (spin[gp]) when the material uses it.
-template <int W, class T>
-inline void combined_points(const ElementView& ev, int e0, const T s[2][6], const T deps[2][6], const T spin[2][3],
+template <int W, class T, class View>
+inline void combined_points(const View& ev, int e0, const T s[2][6], const T deps[2][6], const T spin[2][3],
                             const T& V, T& ratio, T snew[2][6]) {
   const bool turn = ev.spin && ev.dtp != 0.0;
   CombinedState<T> st[2];
@@ -286,4 +286,4 @@ inline void combined_points(const ElementView& ev, int e0, const T s[2][6], cons
       [&](int gp, const T* sn, T& r) { combined_tangent_ratio<W>(ev.combined, sn, st[gp], Q[gp], seg[gp], r); });
 }
 
-}  // namespace drawbend::fe::DRAWBEND_ISA::kernel
+}  // namespace drawbend::material::lanes::DRAWBEND_ISA

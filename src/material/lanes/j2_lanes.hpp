@@ -12,19 +12,27 @@
 // segment-by-segment search of the plastic strain loops as long as its
 // slowest lane, which is once unless a lane crosses a curve point.
 //
-// Compiled once per instruction set, in its namespace (as element_kernel.hpp):
-// nothing here may be an inline function shared with other translation units.
+// Here too, for every model on the lanes (material/lanes/combined_lanes.hpp):
+// the hardening curve's look-ups and the points section (lane_points).
+//
+// Compiled once per instruction set, in its namespace (as element_kernel.hpp,
+// which includes it): nothing here may be an inline function shared with
+// other translation units.
 #include <cmath>
 #include <limits>
 
-#include "fe/element_view.hpp"
-#include "fe/lane_records.hpp"
-#include "fe/lanes.hpp"
+#include "core/lane_records.hpp"
+#include "core/lanes.hpp"
+#include "material/lanes/points_view.hpp"
 
-namespace drawbend::fe::DRAWBEND_ISA::kernel {
+#ifndef DRAWBEND_ISA
+#define DRAWBEND_ISA baseline  // as fe/hex8_geometry.hpp: the kernel's own source sets it
+#endif
 
-using J2Params = material::J2Isotropic::LaneParams;
-using CurveTable = material::HardeningCurve::Table;
+namespace drawbend::material::lanes::DRAWBEND_ISA {
+
+using J2Params = J2Isotropic::LaneParams;
+using CurveTable = HardeningCurve::Table;
 
 /// HardeningCurve::segment(), on its table.
 inline int curve_segment(const CurveTable& c, double ep) {
@@ -171,8 +179,8 @@ inline void proximity_ratio(const T& f, const T& H, double E, T& ratio) {
 /// points are updated before either's ratio: the updates are independent
 /// chains of square roots and divisions, and side by side the processor can
 /// overlap them.
-template <int W, class T, class Update, class RatioOf>
-inline void lane_points(const ElementView& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio,
+template <int W, class T, class Update, class RatioOf, class View>
+inline void lane_points(const View& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio,
                         T snew[2][6], Update&& update, RatioOf&& ratio_of) {
   T ie = {}, r[2];
   for (int gp = 0; gp < 2; ++gp) {
@@ -269,7 +277,7 @@ inline bool j2_update(const J2Params& P, const T d[6], T s[6], T& ep, LaneSegmen
 /// serve again where no lane's segment changed.  When every lane is well
 /// inside the initial yield surface (q^2 <= P.ratio_one_q2, ep >= 0) the
 /// ratio is 1 without the curve (J2Isotropic::LaneParams says why).  Through
-/// a reference, as lane_sqrt (fe/lanes.hpp): no vector return.
+/// a reference, as lane_sqrt (core/lanes.hpp): no vector return.
 template <int W, class T>
 inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, const LaneSegments<W, T>* hint, T& ratio) {
   const T p = (s[0] + s[1] + s[2]) * (1.0 / 3.0);
@@ -307,8 +315,8 @@ inline void j2_tangent_ratio(const J2Params& P, const T s[6], const T& ep, const
 
 /// The material section of element_block<W> for J2 isotropic (lane_points):
 /// the plastic strains from and to ev.state.
-template <int W, class T>
-inline void j2_points(const ElementView& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio,
+template <int W, class T, class View>
+inline void j2_points(const View& ev, int e0, const T s[2][6], const T deps[2][6], const T& V, T& ratio,
                       T snew[2][6]) {
   T ep[2];  // the points' plastic strains (one state value per point)
   load_records<2>(ev.state + 2 * static_cast<std::size_t>(e0), ep);
@@ -321,4 +329,4 @@ inline void j2_points(const ElementView& ev, int e0, const T s[2][6], const T de
   store_records<2>(ev.state + 2 * static_cast<std::size_t>(e0), ep);
 }
 
-}  // namespace drawbend::fe::DRAWBEND_ISA::kernel
+}  // namespace drawbend::material::lanes::DRAWBEND_ISA
