@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <numeric>
@@ -65,9 +66,10 @@ void lab_style(Dataset& d) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string out = "bench/loop_cost.csv";
+  std::string out = "bench/loop_cost.csv", summaries;
   Options opt("bench_loop", "make bench: the measured-data loop on 50,000 synthetic rows (wall and CPU seconds)");
   opt.add(out, "out", "results CSV");
+  opt.add(summaries, "summaries", "directory for each form's loop_summary.json (empty: none); compare before/after a speed change");
   try {
     if (!opt.parse(argc, argv)) return 0;
   } catch (const std::invalid_argument& e) {
@@ -101,6 +103,10 @@ int main(int argc, char** argv) {
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const double cpu = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
     const long long evals = lm_jacobian_row_evaluations() - e0;
+    if (!summaries.empty()) {
+      std::filesystem::create_directories(summaries);
+      std::ofstream(std::filesystem::path(summaries) / (form + "_loop_summary.json")) << summary_json(r);
+    }
     w.row({form, std::to_string(d.rows.size()), fmt(wall, 4), fmt(cpu, 4), std::to_string(r.steps.size()),
            r.steps.empty() ? "none" : r.steps[0].variable + " -> " + r.steps[0].effect, std::to_string(evals), "10"});
     std::cout << "loop on " << d.rows.size() << " rows (" << form << "): " << fmt(wall, 4) << " s wall, " << fmt(cpu, 4)

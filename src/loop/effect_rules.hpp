@@ -5,10 +5,18 @@
 // visit_rule is the one switch over EffectKind; its callers (layout,
 // predict_row, friction_names) pass a generic lambda, so each rule's functions
 // are called directly and inline in the fits' inner loop.  Adding an effect
-// kind means adding one rule here and one line in visit_rule.
+// kind means adding one rule here and one line in visit_rule.  A rule may
+// say which of its parameters a row reads (`static int reads(const
+// EffectArgs&, int* out)`: offsets from its first parameter, returns how
+// many; at most its count); without it every one of its parameters is
+// assumed read (rule_reads).  The fits evaluate their Jacobians only there
+// and check the claim (least_squares.hpp), so a wrong `reads` costs a dense
+// fit, never a wrong one.
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/csv.hpp"
@@ -27,6 +35,7 @@ struct OneParam {
 struct PressureMu {
   static int count(const Design& d, const Effect&) { return static_cast<int>(d.cells.size()); }
   static void apply(const EffectArgs& a, Terms& t) { t.a1 = a.th[a.r.cell]; }
+  static int reads(const EffectArgs& a, int* o) { return o[0] = a.r.cell, 1; }
   static void name(const Design& d, const Effect&, const Names&, int s, Names& n) {
     for (size_t c = 0; c < d.cells.size(); ++c) n[s + c] = "a1 [" + d.cells[c] + "] (1/MPa)";
   }
@@ -71,6 +80,7 @@ struct LinearBy {
   static void apply(const EffectArgs& a, Terms& t) {
     t.factor += a.th[a.f.group[a.k][a.i]] * a.f.drift_z[a.k][a.i];
   }
+  static int reads(const EffectArgs& a, int* o) { return o[0] = a.f.group[a.k][a.i], 1; }
   static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
     for (int g = 0; g < e.n_groups; ++g)
       n[s + g] = "beta per SD of " + e.variable + " [" + e.by + " group " + std::to_string(g + 1) + "]";
@@ -83,6 +93,10 @@ struct CategoricalBy {
   static void apply(const EffectArgs& a, Terms& t) {
     const int l = a.f.level[a.k][a.i];
     if (l > 0) t.factor += a.th[a.f.group[a.k][a.i] * (a.e.n_levels - 1) + l - 1];
+  }
+  static int reads(const EffectArgs& a, int* o) {
+    const int l = a.f.level[a.k][a.i];
+    return l > 0 ? (o[0] = a.f.group[a.k][a.i] * (a.e.n_levels - 1) + l - 1, 1) : 0;
   }
   static void name(const Design&, const Effect& e, const Names& level_names, int s, Names& n) {
     for (int g = 0; g < e.n_groups; ++g)
@@ -100,6 +114,11 @@ struct Smooth {
     const int g = a.e.by.empty() ? 0 : a.f.group[a.k][a.i];
     const double* th = a.th + static_cast<size_t>(g) * a.e.n_basis;
     for (int j = 0; j < a.e.n_basis; ++j) t.factor += th[j] * B[static_cast<size_t>(j)][a.i];
+  }
+  static int reads(const EffectArgs& a, int* o) {
+    const int g = a.e.by.empty() ? 0 : a.f.group[a.k][a.i];
+    for (int j = 0; j < a.e.n_basis; ++j) o[j] = g * a.e.n_basis + j;
+    return a.e.n_basis;
   }
   static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
     const int G = e.by.empty() ? 1 : e.n_groups;
@@ -126,6 +145,15 @@ struct ForceOffset {
       if (l > 0) t.add_N += th[l - 1];
     }
   }
+  static int reads(const EffectArgs& a, int* o) {
+    const int g = a.e.by.empty() ? 0 : a.f.group[a.k][a.i], P = per_group(a.e);
+    if (a.e.n_basis > 0) {
+      for (int j = 0; j < a.e.n_basis; ++j) o[j] = g * P + j;
+      return a.e.n_basis;
+    }
+    const int l = a.f.level[a.k][a.i];
+    return l > 0 ? (o[0] = g * P + l - 1, 1) : 0;
+  }
   static void name(const Design&, const Effect& e, const Names& level_names, int s, Names& n) {
     const int G = e.by.empty() ? 1 : e.n_groups, P = per_group(e);
     for (int g = 0; g < G; ++g)
@@ -151,6 +179,10 @@ struct Categorical {
     const int l = a.f.level[a.k][a.i];
     if (l > 0) t.factor += a.th[l - 1];
   }
+  static int reads(const EffectArgs& a, int* o) {
+    const int l = a.f.level[a.k][a.i];
+    return l > 0 ? (o[0] = l - 1, 1) : 0;
+  }
   static void name(const Design&, const Effect& e, const Names& level_names, int s, Names& n) {
     for (int l = 1; l < e.n_levels; ++l) n[s + l - 1] = "g [" + e.variable + " = " + level_names[l] + "]";
   }
@@ -161,6 +193,9 @@ struct DirectionLevel {
   static int count(const Design& d, const Effect&) { return d.n_dir_params; }
   static void apply(const EffectArgs& a, Terms& t) {
     if (a.r.dir >= 0 && a.d.dir_param[a.r.dir] >= 0) t.factor += a.th[a.d.dir_param[a.r.dir]];
+  }
+  static int reads(const EffectArgs& a, int* o) {
+    return a.r.dir >= 0 && a.d.dir_param[a.r.dir] >= 0 ? (o[0] = a.d.dir_param[a.r.dir], 1) : 0;
   }
   static void name(const Design& d, const Effect&, const Names&, int s, Names& n) {
     for (size_t k = 0; k < d.fixed_directions.size(); ++k)
@@ -184,6 +219,7 @@ struct PinSurface {
   static void apply(const EffectArgs& a, Terms& t) {
     if (a.r.pin > 0) t.pinf += a.th[a.r.pin - 1];
   }
+  static int reads(const EffectArgs& a, int* o) { return a.r.pin > 0 ? (o[0] = a.r.pin - 1, 1) : 0; }
   static void name(const Design& d, const Effect&, const Names&, int s, Names& n) {
     for (size_t p = 1; p < d.pins.size(); ++p) n[s + p - 1] = "s_pin " + fmt(d.pins[p]) + " mm";
   }
@@ -195,6 +231,25 @@ struct BendingTension {
   static void apply(const EffectArgs&, Terms&) {}
   static void name(const Design&, const Effect&, const Names&, int, Names&) {}
 };
+
+/// The offsets (from the effect's first parameter) of the parameters rule R may
+/// read for the row of a: R::reads when it has one, else all R::count of them.
+template <class R, class = void>
+struct HasReads : std::false_type {};
+template <class R>
+struct HasReads<R, std::void_t<decltype(R::reads(std::declval<const EffectArgs&>(), std::declval<int*>()))>>
+    : std::true_type {};
+template <class R>
+void rule_reads(const EffectArgs& a, std::vector<int>& out) {
+  const int n = R::count(a.d, a.e);
+  const size_t at = out.size();
+  out.resize(at + static_cast<size_t>(n));
+  int m = n;
+  if constexpr (HasReads<R>::value) m = R::reads(a, out.data() + at);
+  else
+    for (int j = 0; j < n; ++j) out[at + j] = j;
+  out.resize(at + static_cast<size_t>(m));
+}
 
 /// Calls f(Rule{}) with the rule of kind k: the one switch over EffectKind
 /// (-Wswitch checks that every kind has a rule).

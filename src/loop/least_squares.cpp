@@ -14,8 +14,30 @@ std::atomic<long long> g_row_evals{0};
 
 long long lm_jacobian_row_evaluations() { return g_row_evals.load(); }
 
+namespace {
+// Does every row keep its residual r[k] bit for bit when all the columns it
+// does not read are perturbed at once (the step of the Jacobian)?  Rows with a
+// residual that is not finite are not asked (they get dense columns).
+bool reads_hold(const Eigen::VectorXd& th, const Eigen::VectorXd& r, const RowResidualFn& row, const RowReads& reads,
+                long long& evals) {
+  const int p = static_cast<int>(th.size()), n = static_cast<int>(r.size());
+  Eigen::VectorXd tp = th;
+  for (int j = 0; j < p; ++j) tp[j] += 1e-7 * std::max(1.0, std::abs(th[j]));
+  Eigen::VectorXd t = tp;
+  for (int k = 0; k < n; ++k) {
+    if (!std::isfinite(r[k])) continue;
+    for (int j : reads[k]) t[j] = th[j];
+    const double v = row(t, k);
+    ++evals;
+    for (int j : reads[k]) t[j] = tp[j];
+    if (!(v == r[k])) return false;
+  }
+  return true;
+}
+}  // namespace
+
 double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::MatrixXd& J, bool& converged,
-                           const RowResidualFn& row) {
+                           const RowResidualFn& row, const RowReads* reads) {
   const int p = static_cast<int>(th.size());
   const Eigen::VectorXd th_start = th;
   Eigen::VectorXd r = resid(th);
@@ -23,13 +45,37 @@ double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::
   double sse = r.squaredNorm(), lambda = 1e-3;
   J.resize(n, p);
   std::vector<std::vector<int>> support;  // rows of each column; empty: dense
+  // Structural columns (`reads`): rows of each column, checked at the start.
+  std::vector<std::vector<int>> structure;
+  if (row && reads && n > 0 && static_cast<int>(reads->size()) == n) {
+    long long evals = 0;
+    const bool hold = reads_hold(th, r, row, *reads, evals);
+    g_row_evals += evals;
+    if (hold) {
+      structure.assign(p, {});
+      for (int k = 0; k < n; ++k)
+        if (std::isfinite(r[k]))
+          for (int j : (*reads)[k]) structure[j].push_back(k);
+        else
+          for (int j = 0; j < p; ++j) structure[j].push_back(k);
+      for (auto& s : structure) {
+        std::sort(s.begin(), s.end());
+        s.erase(std::unique(s.begin(), s.end()), s.end());
+      }
+    }
+  }
+  bool use_structure = !structure.empty();
   auto jacobian = [&]() {
     long long evals = 0;
     for (int j = 0; j < p; ++j) {
       Eigen::VectorXd t2 = th;
       const double h = 1e-7 * std::max(1.0, std::abs(th[j]));
       t2[j] += h;
-      if (support.empty()) {
+      if (support.empty() && use_structure) {  // the dense column, on the rows that may read theta_j
+        J.col(j).setZero();
+        for (int k : structure[j]) J(k, j) = (r[k] - row(t2, k)) / h;
+        evals += static_cast<long long>(structure[j].size());
+      } else if (support.empty()) {
         J.col(j) = (r - resid(t2)) / h;  // d(prediction)/d(theta)
         evals += n;
       } else {
@@ -80,13 +126,20 @@ double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::
   const bool was_sparse = !support.empty();
   const std::vector<std::vector<int>> used = std::move(support);
   support.clear();
-  jacobian();  // dense: the one returned for the standard errors
+  if (use_structure) {  // the structure must hold at the solution too (non-finite rows: dense columns)
+    for (int k = 0; k < n && use_structure; ++k)
+      if (!std::isfinite(r[k])) use_structure = false;
+    long long evals = 0;
+    if (use_structure) use_structure = reads_hold(th, r, row, *reads, evals);
+    g_row_evals += evals;
+  }
+  jacobian();  // dense (or the structure's entries of it): the one returned for the standard errors
   if (was_sparse) {
     const std::vector<std::vector<int>> now = pattern();
     for (int j = 0; j < p; ++j)
       if (!std::includes(used[j].begin(), used[j].end(), now[j].begin(), now[j].end())) {
         th = th_start;  // a derivative outside the first pattern: the dense fit instead
-        return levenberg_marquardt(th, resid, J, converged);
+        return levenberg_marquardt(th, resid, J, converged);  // no `reads`: dense throughout
       }
   }
   return sse;

@@ -15,10 +15,21 @@
 //    nonzero entry outside those rows, the fit is rerun from the start with
 //    dense Jacobians only, so the answer never rests on a wrong pattern.  When
 //    the pattern holds, every Jacobian equals the dense one bit for bit (a row
-//    that does not read theta_j gives exactly 0), and so does the fit.
+//    that does not read theta_j gives exactly 0), and so does the fit;
+//  - with `reads` as well (per row, the columns of theta it may read: a
+//    superset, from the model's structure), the first and the last Jacobian
+//    are evaluated only on those entries instead of densely (about 2 p n row
+//    evaluations per fit saved; issue 50 item 6).  The claim is checked at the
+//    start and at the end with one evaluation per row: every column it does
+//    not list perturbed at once must leave the row's residual unchanged bit for
+//    bit; if not, the fit runs dense as without `reads`.  A row whose residual
+//    is not finite gets every column (as the dense Jacobian gives it).  So the
+//    Jacobians, the pattern, its check and the fit are those of the dense
+//    first Jacobian bit for bit.
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -28,8 +39,11 @@ using ResidualFn = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
 
 using RowResidualFn = std::function<double(const Eigen::VectorXd&, int)>;
 
+/// Per row of the residual, the columns of theta it may read (ascending or not; a superset).
+using RowReads = std::vector<std::vector<int>>;
+
 double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::MatrixXd& J, bool& converged,
-                           const RowResidualFn& row = nullptr);
+                           const RowResidualFn& row = nullptr, const RowReads* reads = nullptr);
 
 /// Row evaluations made by levenberg_marquardt's Jacobians since the program
 /// started (a counter for the complexity test of issue 50, not a timing).

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 #include "core/quote.hpp"
@@ -158,6 +160,59 @@ ModelSpec without(const ModelSpec& spec, const Step& s, bool bending_linear) {
 }
 
 
+// The fits are deterministic, so a model's cross-validation, joint fit and
+// full fit on the same data and folds are computed once per run and reused
+// (the base model was cross-validated three times and jointly fitted three
+// times in a run with one step; issue 50 item 6).  Keyed by everything that
+// defines the model: the bending option and each effect in order, with its
+// parameters (lambda to the last bit).
+std::string spec_key(const ModelSpec& s) {
+  std::ostringstream k;
+  k << s.bending_linear;
+  for (const auto& e : s.effects) {
+    char lam[40];
+    std::snprintf(lam, sizeof lam, "%a", e.lambda_mm);
+    k << '|' << static_cast<int>(e.kind) << ',' << e.variable.size() << ':' << e.variable << ',' << lam << ','
+      << e.n_levels << ',' << e.by.size() << ':' << e.by << ',' << e.n_groups << ',' << e.n_basis;
+  }
+  return k.str();
+}
+
+class FitMemo {
+ public:
+  FitMemo(const Design& d, const Folds& f) : d_(d), f_(f) {}
+  CvResult cv(const ModelSpec& s) {
+    const std::string k = spec_key(s);
+    auto it = cv_.find(k);
+    if (it == cv_.end()) it = cv_.emplace(k, cross_validate(d_, s, f_)).first;
+    return it->second;
+  }
+  JointFit joint(const ModelSpec& s) {
+    const std::string k = spec_key(s);
+    auto it = joint_.find(k);
+    if (it == joint_.end()) it = joint_.emplace(k, fit_joint(d_, s)).first;
+    return it->second;
+  }
+  Fit fit(const ModelSpec& s) {
+    const std::string k = spec_key(s);
+    auto it = fit_.find(k);
+    if (it == fit_.end()) it = fit_.emplace(k, fit_model(d_, s)).first;
+    return it->second;
+  }
+  /// Results computed elsewhere (a form's trial) for model s.
+  void remember(const ModelSpec& s, const CvResult& cv, const JointFit& j) {
+    cv_.emplace(spec_key(s), cv);
+    joint_.emplace(spec_key(s), j);
+  }
+
+ private:
+  const Design& d_;
+  const Folds& f_;
+  std::map<std::string, CvResult> cv_;
+  std::map<std::string, JointFit> joint_;
+  std::map<std::string, Fit> fit_;
+};
+
 }  // namespace
 
 LoopResult run_loop(const Design& d, const LoopOptions& o) {
@@ -172,10 +227,11 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
   ModelSpec spec;
   spec.bending_linear = o.bending_linear;
   progress(o, "base model: cross-validation (" + std::to_string(d.rows.size()) + " rows)");
-  const CvResult base_cv = cross_validate(d, spec, res.folds);
+  FitMemo memo(d, res.folds);
+  const CvResult base_cv = memo.cv(spec);
   CvResult cur = base_cv;
-  Fit cur_fit = fit_model(d, spec);
-  JointFit cur_joint = fit_joint(d, spec);
+  Fit cur_fit = memo.fit(spec);
+  JointFit cur_joint = memo.joint(spec);
   std::vector<CandidateResult> last_rank;
   std::vector<Step> steps;
   const auto prog = [&](const std::string& m) { progress(o, m); };
@@ -266,7 +322,8 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
       spec = best_form.spec;
       cur = best_form.cv;
       cur_joint = best_form.joint;
-      cur_fit = fit_model(d, spec);
+      memo.remember(spec, cur, cur_joint);
+      cur_fit = memo.fit(spec);
       s.rms_after = cur.rms;
       s.max_after = cur.max_abs;
       steps.push_back(s);
@@ -283,8 +340,8 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
     double worst = -1;
     for (size_t j = 0; j < steps.size(); ++j) {
       const ModelSpec t = without(spec, steps[j], o.bending_linear);
-      const double p = f_test(fit_joint(d, t), cur_joint);
-      const CvResult cv = cross_validate(d, t, res.folds);
+      const double p = f_test(memo.joint(t), cur_joint);
+      const CvResult cv = memo.cv(t);
       if ((p > thr || cv.rms <= cur.rms) && p > worst) worst = p, drop = static_cast<int>(j);
     }
     if (drop < 0) break;
@@ -293,19 +350,19 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
                           " given the later effects)");
     spec = without(spec, steps[drop], o.bending_linear);
     steps.erase(steps.begin() + drop);
-    cur = cross_validate(d, spec, res.folds);
-    cur_fit = fit_model(d, spec);
-    cur_joint = fit_joint(d, spec);
+    cur = memo.cv(spec);
+    cur_fit = memo.fit(spec);
+    cur_joint = memo.joint(spec);
   }
   // Report order: undeclared variables first, then base-model terms, each by its
   // contribution (held-out MSE lost when it alone is removed), not by the order found.
   if (!steps.empty()) {
     for (auto& s : steps) {
       const ModelSpec t = without(spec, s, o.bending_linear);
-      const CvResult cv = cross_validate(d, t, res.folds);
+      const CvResult cv = memo.cv(t);
       s.contribution = cv.rms * cv.rms - cur.rms * cur.rms;
-      s.p_value = f_test(fit_joint(d, t), cur_joint);
-      s.params = new_params(fit_model(d, t), cur_fit);
+      s.p_value = f_test(memo.joint(t), cur_joint);
+      s.params = new_params(memo.fit(t), cur_fit);
       if (s.effect.rfind("generic", 0) == 0)
         s.sign = sign_text(s, s.variable);
     }
@@ -321,7 +378,7 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
       for (const auto& e : s.added)
         if (e.kind == EffectKind::bending_tension) t.bending_linear = true;
         else t.effects.push_back(e);
-      const CvResult cv = &s == &steps.back() ? cur : cross_validate(d, t, res.folds);
+      const CvResult cv = &s == &steps.back() ? cur : memo.cv(t);
       s.rms_before = prev.rms, s.max_before = prev.max_abs;
       s.rms_after = cv.rms, s.max_after = cv.max_abs;
       res.cv.push_back(cv);

@@ -269,9 +269,12 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
     return r;
   };
   auto row = [&](const Eigen::VectorXd& t, int k) { return d.rows[rows[k]].y - predict_row(d, f, L, t, rows[k], nullptr); };
+  // Which parameters each row may read: the Jacobians are evaluated there only.
+  RowReads reads(n);
+  for (int k = 0; k < n; ++k) detail::row_reads(d, f, L, rows[k], reads[k]);
   Eigen::MatrixXd J;
   double sse = 0;
-  if (n > 0) sse = levenberg_marquardt(th, resid, J, f.converged, row);
+  if (n > 0) sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads);
   if (n > 0 && f.has_force && bending_effects.empty()) {
     // The bending lines refitted to the rotating rows less the force channel,
     // then the friction and force parameters again (one alternation).
@@ -282,7 +285,7 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
                  f.b1[d.rows[i].pin] * d.rows[i].fback;
     f.params.clear();
     fit_bending(d, train, linear_bending, f, &off);
-    sse = levenberg_marquardt(th, resid, J, f.converged, row);
+    sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads);
   }
   f.theta = th;
   f.rss = sse;
@@ -341,10 +344,22 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec) {
     }
     return d.rows[rows[k]].y - predict_row(d, g, L, tf, rows[k], nullptr);
   };
+  // Each row reads its pin's bending line and its friction parameters.
+  std::vector<int> pin_param(d.pins.size(), -1);
+  for (size_t q = 0; q < pins.size(); ++q) pin_param[pins[q]] = static_cast<int>(q);
+  RowReads reads(rows.size());
+  for (size_t k = 0; k < rows.size(); ++k) {
+    const int q = pin_param[d.rows[rows[k]].pin];
+    reads[k].push_back(q);
+    if (linear) reads[k].push_back(static_cast<int>(pins.size()) + q);
+    const size_t at = reads[k].size();
+    detail::row_reads(d, f, L, rows[k], reads[k]);
+    for (size_t c = at; c < reads[k].size(); ++c) reads[k][c] += nb;
+  }
   Eigen::MatrixXd J;
   bool conv = false;
   JointFit j;
-  j.rss = levenberg_marquardt(th, resid, J, conv, row);
+  j.rss = levenberg_marquardt(th, resid, J, conv, row, &reads);
   j.n = static_cast<int>(rows.size());
   j.p = static_cast<int>(th.size());
   for (const auto& q : f.params)  // bending-channel coefficients: held at the bending fit, but parameters

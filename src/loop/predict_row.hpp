@@ -57,6 +57,28 @@ inline double predict_row(const Design& d, const Fit& f, const Layout& L, const 
   return r.fback + bend + ff + t.add_N;
 }
 
+/// The columns of th that predict_row(d, f, L, th, i, ...) may read for row i
+/// (a superset; least_squares.hpp checks it), appended to out: the row's cell's
+/// mu_RD and mu_TD, and what each effect's rule may read (rule_reads).
+inline void row_reads(const Design& d, const Fit& f, const Layout& L, int i, std::vector<int>& out) {
+  const Row& r = d.rows[i];
+  static const Eigen::VectorXd none;  // EffectArgs::th is not read by rule_reads
+  if (!r.rotating) {
+    if (L.mu_rd[r.cell] >= 0) out.push_back(L.mu_rd[r.cell]);
+    if (L.mu_td[r.cell] >= 0) out.push_back(L.mu_td[r.cell]);
+  } else if (!f.has_force) {
+    return;
+  }
+  for (size_t k = 0; k < f.spec.effects.size(); ++k) {
+    const Effect& e = f.spec.effects[k];
+    if (r.rotating && e.kind != EffectKind::force_offset) continue;
+    const EffectArgs a{d, f, r, i, k, e, none.data()};
+    const size_t at = out.size();
+    visit_rule(e.kind, [&](auto rule) { rule_reads<decltype(rule)>(a, out); });
+    for (size_t j = at; j < out.size(); ++j) out[j] += L.eff_start[k];
+  }
+}
+
 }  // namespace detail
 
 }  // namespace drawbend::loop

@@ -10,6 +10,11 @@
 //  - a pattern that changes: r_k = y_k - a tanh(s x_k) started at a = 0, where
 //    d/ds is 0 on every row at the start but not at the solution: the fit
 //    falls back to dense Jacobians and equals the dense fit bit for bit.
+//  - structural reads: the group factor with `reads` (row k reads theta_g(k))
+//    equals the dense fit bit for bit and evaluates at most 2 n (the two
+//    checks) + 2 n (first and last Jacobian) + 100 n rows; with a wrong claim
+//    (row k said to read theta_(g(k)+1)) the check fails and the fit still
+//    equals the dense one bit for bit.
 #define BOOST_TEST_MODULE lm_sparse
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -66,4 +71,35 @@ BOOST_AUTO_TEST_CASE(changing_pattern_falls_back_to_dense) {
   BOOST_TEST((a.array() == b.array()).all());
   BOOST_TEST(std::abs(a[0] - 2) < 0.05);
   BOOST_TEST(std::abs(a[1] - 1.5) < 0.1);
+}
+
+BOOST_AUTO_TEST_CASE(structural_reads_are_exact_and_checked) {
+  const int n = 4000, p = 40;
+  Eigen::VectorXd y(n);
+  for (int k = 0; k < n; ++k) y[k] = std::exp(0.01 * (k % p)) + 1e-3 * std::sin(k);
+  auto row = [&](const Eigen::VectorXd& t, int k) { return y[k] - std::exp(t[k % p]); };
+  auto resid = [&](const Eigen::VectorXd& t) {
+    Eigen::VectorXd r(n);
+    for (int k = 0; k < n; ++k) r[k] = row(t, k);
+    return r;
+  };
+  RowReads right(n), wrong(n);
+  for (int k = 0; k < n; ++k) right[k] = {k % p}, wrong[k] = {(k + 1) % p};
+  Eigen::VectorXd th_dense = Eigen::VectorXd::Constant(p, 0.5), th_right = th_dense, th_wrong = th_dense;
+  Eigen::MatrixXd Jd, Jr, Jw;
+  bool cd = false, cr = false, cw = false;
+  const double sd = levenberg_marquardt(th_dense, resid, Jd, cd);
+  const long long c0 = lm_jacobian_row_evaluations();
+  const double sr = levenberg_marquardt(th_right, resid, Jr, cr, row, &right);
+  const long long c1 = lm_jacobian_row_evaluations();
+  const double sw = levenberg_marquardt(th_wrong, resid, Jw, cw, row, &wrong);
+  BOOST_TEST(sd == sr);
+  BOOST_TEST(sd == sw);
+  BOOST_TEST((th_dense.array() == th_right.array()).all());
+  BOOST_TEST((th_dense.array() == th_wrong.array()).all());
+  BOOST_TEST((Jd.array() == Jr.array()).all());
+  BOOST_TEST((Jd.array() == Jw.array()).all());
+  BOOST_TEST(cd == cr);
+  BOOST_TEST(c1 - c0 <= 4LL * n + 100LL * n);
+  BOOST_TEST_MESSAGE("row evaluations with reads: " << c1 - c0);
 }
