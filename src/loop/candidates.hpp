@@ -110,6 +110,11 @@ struct CandidateResult {
   double sd_between = 0; ///< identity variables: between-test standard deviation [N]
   std::string probe;     ///< the probe of the family with the largest statistic
   std::string cv_probe;  ///< the probe with the largest held-out gain
+  /// When the strongest probe is a per-input one: the input and the group of
+  /// its strongest one-group sub-probe (the cell an effect may be confined
+  /// to; -1: none).
+  std::string cell_by;
+  int cell_group = -1;
 };
 
 /// What the screen knows of the model: the model's inputs as groups per row
