@@ -187,7 +187,8 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
       progress(o, "round " + std::to_string(round + 1) + ": ranking candidates (held-out RMS " + fmt(cur.rms, 4) + " N)");
       const auto cands = make_candidates(d, cur.pred);
       if (round == 0) res.candidates = cands;
-      const ScreenContext ctx = screen_context(d, cur_fit, cur.pred);
+      ScreenContext ctx = screen_context(d, cur_fit, cur.pred);
+      ctx.one_cell = o.cell_probes;
       const auto rank =
           rank_candidates(cands, cur.resid, res.folds, o.permutations, o.seed + 1000003ULL * round, o.alpha, &ctx);
       res.rankings.push_back(rank);

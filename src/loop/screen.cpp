@@ -20,11 +20,8 @@ namespace {
 
 enum class Shape { levels, wlevels, quad, slopes, wslope };
 
-// Pilot permutations per candidate for the probes' calibration scales (any
-// constant keeps the test exact; 100 puts each scale within about 14 % for
-// 1 dof and costs half of the 200 used before, most of the screen's time
-// for the candidates decided in the first batch).
-constexpr int kPilot = 100;
+// Pilot permutations per candidate for the probes' calibration scales.
+constexpr int kPilot = 200;
 
 // One probe of a candidate over units (tests or rows).  Its residual is centred
 // per stratum (a block, or a block x group of a model input); ur/urw/un/uw2 are
@@ -42,7 +39,8 @@ struct ProbeDef {
   int nstrata = 1, nlev = 1, ngroups = 1;
   bool cells = false;            // sub-probes per group of the input
   std::vector<int> dof;          // per sub-probe (0: dropped)
-  std::vector<double> scale;     // per sub-probe: ESS / scale ~ chi^2(dof) under permutation (pilot)
+  std::vector<double> scale;     // per sub-probe: ESS / scale ~ chi^2(kdof) under permutation (pilot)
+  std::vector<double> kdof;      // per sub-probe: the chi^2's dof (0: dof; one-group: moment-matched)
   std::vector<double> ur, urw, un, uw2;
   double sst = 0;  // sum of squares of the centred residual (constant under permutation)
   // row-level data for the held-out probe
@@ -136,7 +134,7 @@ struct ProbeDef {
 
 // Wilson-Hilferty normal deviate of X = ESS / scale ~ chi^2(dof) (see the statistic in rank_candidates).
 double probe_z(const ProbeDef& p, int j, double ess) {
-  const double k = p.dof[j], x = std::max(0.0, ess) / p.scale[j], c = 2.0 / (9.0 * k);
+  const double k = p.kdof[j], x = std::max(0.0, ess) / p.scale[j], c = 2.0 / (9.0 * k);
   return (std::cbrt(x / k) - (1 - c)) / std::sqrt(c);
 }
 
@@ -348,7 +346,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
       p.label = label;
       p.input = input;
       p.ngroups = ngroups;
-      p.cells = !input.empty() && ngroups > 1 && (shape == Shape::levels || shape == Shape::slopes);
+      p.cells = ctx && ctx->one_cell && !input.empty() && ngroups > 1 && (shape == Shape::levels || shape == Shape::slopes);
       p.nlev = nlev;
       p.row_stratum.assign(n, 0);
       p.nstrata = nblocks * ngroups;
@@ -391,6 +389,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         }
       }
       p.scale.assign(p.nsub(), 1.0);
+      p.kdof.assign(p.nsub(), 1.0);
       if (dof > 0 && p.sst > 0) probes.push_back(std::move(p));
     };
     const std::vector<int> none;
@@ -475,7 +474,17 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
           const size_t h = off[q] + k;
           const double var = m2[h] - m1[h] * m1[h];
           if (!(m1[h] > 0) || !(var > 1e-12 * m1[h] * m1[h]) || probes[q].dof[k] <= 0) probes[q].dof[k] = 0;
-          else probes[q].scale[k] = m1[h] / probes[q].dof[k];
+          else if (k == 0) probes[q].kdof[k] = probes[q].dof[k], probes[q].scale[k] = m1[h] / probes[q].dof[k];
+          else {
+            // A one-group sub-probe: scaled chi^2 matched to the pilot's mean
+            // AND variance (Satterthwaite).  Its ESS can be nearly constant
+            // under permutation (a row-level variable permuted within tests
+            // while the residual of its group varies between tests); on the
+            // chi^2(dof) scale such a probe would sit at a fixed deviate and
+            // could win every permutation's maximum, hiding the other probes.
+            probes[q].kdof[k] = 2 * m1[h] * m1[h] / var;
+            probes[q].scale[k] = m1[h] / probes[q].kdof[k];
+          }
         }
         if (probes[q].dof[0] > 0 || std::any_of(probes[q].dof.begin(), probes[q].dof.end(), [](int v) { return v > 0; }))
           kept.push_back(std::move(probes[q]));

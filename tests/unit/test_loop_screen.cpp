@@ -83,6 +83,7 @@ BOOST_AUTO_TEST_CASE(one_cell_effect_seen_per_group) {
   for (size_t i = 0; i < r.size(); ++i)
     if (pin[i] == 0) r[i] = c.x[i] - mz, ss += r[i] * r[i];
   ctx.modifiers.push_back({"pin", pin});
+  ctx.one_cell = true;  // the opt-in one-cell sub-probes
   const auto res = rank_candidates({c}, r, f, 2000, 7, 0.05, &ctx);
   // The strongest probe is one of the per-pin probes (issue 50: the family has
   // a slope and quantile bins per group).  The slope explains the residual

@@ -7,6 +7,7 @@
 # 52000000..52999999, 53100000..53100143; wild 54200000..54200143 and
 # 55000000+); never on held-out seeds 57100000+ or 57200000+.
 # usage: blind_dev.sh BIN SEED0 N OUTDIR [PERM] [FIRST] [GEN]
+#   LOOP_ARGS (environment): extra loop options, e.g. "--cell-probes true"
 #   PERM: permutation cap, default 20000 as the loop (with 2000 no candidate
 #   can be decided significant at alpha/25 candidates: every step undecided)
 #   GEN blind (default) or wild (generator 2: class 'channel' in place of
@@ -24,7 +25,7 @@ for ((i=FIRST;i<N;i++)); do
   cls=${classes[$((i%6))]}; if (( (i/6)%2 )); then noise=8; else noise=3; fi
   s=$((S0+i)); d=$OUT/set$i
   $BIN synth --generator $GEN --class $cls --seed $s --noise $noise --out $d >/dev/null 2>&1
-  /usr/bin/time -f %e -o $d/time $BIN loop $d/data.csv --out $d/loop --permutations $PERM --threads 1 >$d/log 2>&1
+  /usr/bin/time -f %e -o $d/time $BIN loop $d/data.csv --out $d/loop --permutations $PERM --threads 1 $LOOP_ARGS >$d/log 2>&1
   python3 - $d $cls $noise $i <<'PY'
 import json,sys
 d,cls,noise,i=sys.argv[1],sys.argv[2],float(sys.argv[3]),sys.argv[4]
