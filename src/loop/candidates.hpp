@@ -31,11 +31,22 @@
 //             the model's inputs (pin, speed, direction, lubricant; residual
 //             centred per block x group), for effects that act in one cell
 //             only; numeric variables with more than 8 values get a slope and
-//             the quantile bins per group.
+//             the quantile bins per group;
+//   one cell  (opt-in, ScreenContext::one_cell) each per-input probe's shape pooled over the strata of ONE
+//             group of its input (one common slope, 1 dof, or common level
+//             means, levels - 1 dof, in that group and nothing elsewhere): an
+//             effect confined to one pin, speed, direction or lubricant is
+//             one surprise there instead of being diluted over every group's
+//             slope; computed from the per-input probe's own sums, so it adds
+//             no pass over the units.  The strongest such group of the best
+//             per-input probe is passed to the forms (cell_by, cell_group).
+//             Its scale matches the pilot's mean and variance (a scaled
+//             chi^2 of moment-matched dof), as its ESS may hardly vary under
+//             permutation.
 // The candidate's statistic is the family's largest probe on a common scale:
 // each probe's explained sum of squares over its calibration scale (the mean
-// ESS under 200 pilot permutations, on their own random stream, divided by its
-// dof) is about chi^2(dof), mapped to a normal deviate by the Wilson-Hilferty
+// ESS under the pilot permutations, on their own random stream, divided by its
+// dof; 200 pilot permutations) is about chi^2(dof), mapped to a normal deviate by the Wilson-Hilferty
 // cube root, so probes of 1 and of 20 dof compete by how surprising each is;
 // probes whose ESS does not change under permutation are dropped.  The
 // permutation test permutes the variable (all probes at once) within blocks:
@@ -110,6 +121,11 @@ struct CandidateResult {
   double sd_between = 0; ///< identity variables: between-test standard deviation [N]
   std::string probe;     ///< the probe of the family with the largest statistic
   std::string cv_probe;  ///< the probe with the largest held-out gain
+  /// When the strongest probe is a per-input one: the input and the group of
+  /// its strongest one-group sub-probe (the cell an effect may be confined
+  /// to; -1: none).
+  std::string cell_by;
+  int cell_group = -1;
 };
 
 /// What the screen knows of the model: the model's inputs as groups per row
@@ -118,6 +134,9 @@ struct CandidateResult {
 struct ScreenContext {
   std::vector<std::pair<std::string, std::vector<int>>> modifiers;
   std::vector<double> mu_weight;
+  /// The one-cell sub-probes (off by default: development only, see
+  /// LoopOptions::cell_probes; off, the screen is exactly the one before them).
+  bool one_cell = false;
 };
 
 /// Clopper-Pearson decision of a permutation p-value with k exceedances in b

@@ -74,44 +74,55 @@ struct Linear : OneParam {
   }
 };
 
-/// mu (1 + beta_g z): one slope per group g of the effect's `by` input.
+/// Groups of `by` with their own parameters: all, or the one cell (e.cell >= 0).
+inline int own_groups(const Effect& e) { return e.cell >= 0 ? 1 : e.n_groups; }
+/// Parameter block of row i's group (0 for the cell), -1 when the effect does not act there.
+inline int group_slot(const EffectArgs& a) {
+  const int g = a.f.group[a.k][a.i];
+  return a.e.cell < 0 ? g : g == a.e.cell ? 0 : -1;
+}
+inline std::string group_text(const Effect& e, int g) {
+  return e.by + " group " + std::to_string((e.cell >= 0 ? e.cell : g) + 1) + (e.cell >= 0 ? " only" : "");
+}
+
+/// mu (1 + beta_g z): one slope per group g of the effect's `by` input (or in one group only).
 struct LinearBy {
-  static int count(const Design&, const Effect& e) { return e.n_groups; }
+  static int count(const Design&, const Effect& e) { return own_groups(e); }
   static void apply(const EffectArgs& a, Terms& t) {
-    t.factor += a.th[a.f.group[a.k][a.i]] * a.f.drift_z[a.k][a.i];
+    const int g = group_slot(a);
+    if (g >= 0) t.factor += a.th[g] * a.f.drift_z[a.k][a.i];
   }
   static int reads(const EffectArgs& a, int* o) { return o[0] = a.f.group[a.k][a.i], 1; }
   static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
-    for (int g = 0; g < e.n_groups; ++g)
-      n[s + g] = "beta per SD of " + e.variable + " [" + e.by + " group " + std::to_string(g + 1) + "]";
+    for (int g = 0; g < own_groups(e); ++g) n[s + g] = "beta per SD of " + e.variable + " [" + group_text(e, g) + "]";
   }
 };
 
 /// mu (1 + g_{group,level}), one factor per level but the first in every group of `by`.
 struct CategoricalBy {
-  static int count(const Design&, const Effect& e) { return e.n_groups * std::max(0, e.n_levels - 1); }
+  static int count(const Design&, const Effect& e) { return own_groups(e) * std::max(0, e.n_levels - 1); }
   static void apply(const EffectArgs& a, Terms& t) {
-    const int l = a.f.level[a.k][a.i];
-    if (l > 0) t.factor += a.th[a.f.group[a.k][a.i] * (a.e.n_levels - 1) + l - 1];
+    const int l = a.f.level[a.k][a.i], g = group_slot(a);
+    if (l > 0 && g >= 0) t.factor += a.th[g * (a.e.n_levels - 1) + l - 1];
   }
   static int reads(const EffectArgs& a, int* o) {
     const int l = a.f.level[a.k][a.i];
     return l > 0 ? (o[0] = a.f.group[a.k][a.i] * (a.e.n_levels - 1) + l - 1, 1) : 0;
   }
   static void name(const Design&, const Effect& e, const Names& level_names, int s, Names& n) {
-    for (int g = 0; g < e.n_groups; ++g)
+    for (int g = 0; g < own_groups(e); ++g)
       for (int l = 1; l < e.n_levels; ++l)
-        n[s + g * (e.n_levels - 1) + l - 1] =
-            "g [" + e.variable + " = " + level_names[l] + ", " + e.by + " group " + std::to_string(g + 1) + "]";
+        n[s + g * (e.n_levels - 1) + l - 1] = "g [" + e.variable + " = " + level_names[l] + ", " + group_text(e, g) + "]";
   }
 };
 
 /// mu (1 + sum_j beta_j B_j(x)): natural cubic spline basis (fit_model: f.basis), per group of `by` when set.
 struct Smooth {
-  static int count(const Design&, const Effect& e) { return e.n_basis * (e.by.empty() ? 1 : e.n_groups); }
+  static int count(const Design&, const Effect& e) { return e.n_basis * (e.by.empty() ? 1 : own_groups(e)); }
   static void apply(const EffectArgs& a, Terms& t) {
     const auto& B = a.f.basis[a.k];
-    const int g = a.e.by.empty() ? 0 : a.f.group[a.k][a.i];
+    const int g = a.e.by.empty() ? 0 : group_slot(a);
+    if (g < 0) return;
     const double* th = a.th + static_cast<size_t>(g) * a.e.n_basis;
     for (int j = 0; j < a.e.n_basis; ++j) t.factor += th[j] * B[static_cast<size_t>(j)][a.i];
   }
@@ -121,11 +132,11 @@ struct Smooth {
     return a.e.n_basis;
   }
   static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
-    const int G = e.by.empty() ? 1 : e.n_groups;
+    const int G = e.by.empty() ? 1 : own_groups(e);
     for (int g = 0; g < G; ++g)
       for (int j = 0; j < e.n_basis; ++j)
         n[s + g * e.n_basis + j] = "beta spline " + std::to_string(j + 1) + " of " + e.variable +
-                                   (e.by.empty() ? "" : " [" + e.by + " group " + std::to_string(g + 1) + "]");
+                                   (e.by.empty() ? "" : " [" + group_text(e, g) + "]");
   }
 };
 

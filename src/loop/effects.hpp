@@ -40,6 +40,10 @@ struct Effect {
   /// own parameters ("pin", "speed_mm_s", "direction_deg" or "lubricant").
   std::string by;
   int n_groups = 0;      ///< number of groups of `by`
+  /// generic_linear_by / categorical_by / generic_smooth with `by`: >= 0 confines
+  /// the effect to that one group of `by` (one cell: a pin, speed, direction or
+  /// lubricant), with one group's parameters; -1: every group its own.
+  int cell = -1;
   int n_basis = 0;       ///< generic_smooth: spline basis functions (dof of the shape, constant excluded)
 };
 

@@ -144,11 +144,13 @@ double mse_diff_se(const CvResult& a, const CvResult& b, const Folds& f) {
 
 std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
                                  const CvResult& cur, const JointFit& cur_joint, double thr, double min_gain_N,
-                                 const std::function<void(const std::string&)>& progress) {
+                                 const std::function<void(const std::string&)>& progress, const std::string& cell_by,
+                                 int cell_group) {
   struct Part {
     EffectKind k;
     std::string by;
-    int nb = 0;  // generic_smooth: spline dof
+    int nb = 0;     // generic_smooth: spline dof
+    int cell = -1;  // >= 0: confined to that group of `by`
   };
   struct Plan {
     std::vector<Part> parts;
@@ -208,17 +210,34 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
           plans.push_back({{{EffectKind::bending_linear, ""}, {EffectKind::generic_linear, ""}}});
       }
     }
+    // An effect confined to one cell (the group of a model input the screen's
+    // strongest one-group probe points at): a slope, a 3-dof smooth or the
+    // levels in that cell only, none elsewhere.  Held-out error and the
+    // one-standard-error rule choose between it and the global forms.
+    if (cell_group >= 0 && !cell_by.empty() && cell_by != c.name) {
+      std::set<double> distinct;
+      for (double v : c.x)
+        if (std::isfinite(v)) distinct.insert(v);
+      const bool levels = c.categorical || (distinct.size() >= 3 && distinct.size() <= 8);
+      if (levels && d.data->extra_index(c.name) >= 0 && applicable(d, spec, EffectKind::categorical_by, c.name))
+        plans.push_back({{{EffectKind::categorical_by, cell_by, 0, cell_group}}});
+      if (!c.categorical && applicable(d, spec, EffectKind::generic_linear_by, c.name))
+        plans.push_back({{{EffectKind::generic_linear_by, cell_by, 0, cell_group}}});
+      if (!c.categorical && applicable(d, spec, EffectKind::generic_smooth, c.name))
+        plans.push_back({{{EffectKind::generic_smooth, cell_by, 3, cell_group}}});
+    }
   }
   std::vector<FormTrial> out;
   for (const Plan& p : plans) {
     FormTrial t;
     t.spec = spec;
     bool bend = false, fric = false;
-    for (const auto& [k, by, nb] : p.parts) {
+    for (const auto& [k, by, nb, cell] : p.parts) {
       t.spec = with_effect(d, t.spec, k, c.name, by);
       if (nb > 0) t.spec.effects.back().n_basis = nb;
+      t.spec.effects.back().cell = cell;
       t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (nb > 0 ? " " + std::to_string(nb) + " dof" : "") +
-                (by.empty() ? "" : " (" + by + ")");
+                (by.empty() ? "" : " (" + by + (cell >= 0 ? " group " + std::to_string(cell + 1) + " only" : "") + ")");
       t.meaning += (t.meaning.empty() ? "" : "; ") + effect_meaning(k);
       (acts_on_bending(k) ? bend : fric) = true;
     }

@@ -10,7 +10,10 @@
 //              (positive columns), saturating exponential (lambda on a grid),
 //              levels (3-8 distinct values), linear per pin / speed /
 //              direction group, a smooth of any shape (natural cubic spline,
-//              3 or 5 dof, and 3 dof per pin / speed / direction group), the
+//              3 or 5 dof, and 3 dof per pin / speed / direction group;
+//              and, where the screen's strongest probe is confined to one group
+//              of a model input, a slope, a 3-dof smooth or the levels in that
+//              one group only), the
 //              force channel (an extra force on every row, rotating included,
 //              fitted jointly: linear per pin, levels, a 3-dof smooth overall
 //              and per pin), and the bending channel (F_B + c_pin z) alone
@@ -52,9 +55,12 @@ ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const s
                       const std::string& by = "");
 
 /// Every applicable form for candidate c, each cross-validated and tested.
+/// cell_by / cell_group (the screen's strongest one-group probe, -1: none)
+/// add the forms confined to that one group of a model input.
 std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
                                  const CvResult& cur, const JointFit& cur_joint, double threshold, double min_gain_N,
-                                 const std::function<void(const std::string&)>& progress);
+                                 const std::function<void(const std::string&)>& progress,
+                                 const std::string& cell_by = "", int cell_group = -1);
 
 /// Index of the form kept (simplest within one standard error of the best
 /// among those passed), -1 when none passed.

@@ -151,7 +151,7 @@ ModelSpec without(const ModelSpec& spec, const Step& s, bool bending_linear) {
   t.effects.clear();
   for (const auto& e : spec.effects) {
     bool mine = false;
-    for (const auto& m : s.added) mine = mine || (m.kind == e.kind && m.variable == e.variable && m.by == e.by);
+    for (const auto& m : s.added) mine = mine || (m.kind == e.kind && m.variable == e.variable && m.by == e.by && m.cell == e.cell);
     if (!mine) t.effects.push_back(e);
   }
   for (const auto& m : s.added)
@@ -243,7 +243,8 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
       progress(o, "round " + std::to_string(round + 1) + ": ranking candidates (held-out RMS " + fmt(cur.rms, 4) + " N)");
       const auto cands = make_candidates(d, cur.pred);
       if (round == 0) res.candidates = cands;
-      const ScreenContext ctx = screen_context(d, cur_fit, cur.pred);
+      ScreenContext ctx = screen_context(d, cur_fit, cur.pred);
+      ctx.one_cell = o.cell_probes;
       const auto rank =
           rank_candidates(cands, cur.resid, res.folds, o.permutations, o.seed + 1000003ULL * round, o.alpha, &ctx);
       res.rankings.push_back(rank);
@@ -267,7 +268,8 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
         // and the input needs no undeclared variable.
         if (!cand->confounded_with.empty() && input_significant(rank, cand->confounded_with)) continue;
         ++tried;
-        const auto trials = try_forms(d, res.folds, spec, *cand, cur, cur_joint, thr, o.min_effect * sigma, prog);
+        const auto trials =
+            try_forms(d, res.folds, spec, *cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by, c.cell_group);
         const int keep = choose_form(trials, res.folds);
         Step s;
         s.variable = c.name;

@@ -7,12 +7,14 @@
 //   screen     every candidate is probed by a family of probes (its levels, a
 //              step or smooth shape, a term scaled with dF/dmu, and its effect
 //              within each group of the model's inputs: pin, speed, direction,
-//              lubricant), one permutation test of the family's maximum, so
+//              lubricant, and, opt-in, confined to one group of one of them), one
+//              permutation test of the family's maximum, so
 //              the multiplicity of the family is inside the candidate's p
 //              (candidates.hpp);
 //   forms      each of the `contenders` strongest significant candidates gets
 //              every applicable form (library physics, generic shapes, the
-//              bending channel, per-group forms), each gated by the
+//              bending channel, per-group forms, forms confined to the
+//              screen's strongest one-group cell), each gated by the
 //              nested-model F test (bending and friction refitted jointly),
 //              a lower held-out error and the minimum effect; the simplest
 //              form within one standard error of the best is kept (forms.hpp);
@@ -62,6 +64,9 @@ struct LoopOptions {
   bool progress = false;  ///< print progress to stderr
   /// Significant candidates given their best form per round (the best of them is added).
   int contenders = 3;
+  /// Opt-in (--cell-probes; development, not yet scored on enough data): the
+  /// screen's one-cell sub-probes and the forms confined to one cell.
+  bool cell_probes = false;
 };
 
 struct Step {

@@ -20,24 +20,37 @@ namespace {
 
 enum class Shape { levels, wlevels, quad, slopes, wslope };
 
+// Pilot permutations per candidate for the probes' calibration scales.
+constexpr int kPilot = 200;
+
 // One probe of a candidate over units (tests or rows).  Its residual is centred
 // per stratum (a block, or a block x group of a model input); ur/urw/un/uw2 are
 // per unit: sum of centred residual, of weight x centred residual, row count
-// and sum of squared weights.
+// and sum of squared weights.  A per-input probe (ngroups > 1, stratum = block
+// x ngroups + group) also gives one sub-probe per group g, the same shape
+// pooled over the strata of group g only (a common slope, or common level
+// means, in that one cell and none elsewhere): an effect confined to one pin,
+// speed, direction or lubricant is one surprise of 1 (or levels - 1) dof
+// there, not diluted over every cell's slope.  Sub-probe 0 is the probe itself.
 struct ProbeDef {
   Shape shape = Shape::levels;
-  std::string label;
+  std::string label, input;
   std::vector<int> stratum;  // per unit
-  int nstrata = 1, nlev = 1, dof = 1;
+  int nstrata = 1, nlev = 1, ngroups = 1;
+  bool cells = false;            // sub-probes per group of the input
+  std::vector<int> dof;          // per sub-probe (0: dropped)
+  std::vector<double> scale;     // per sub-probe: ESS / scale ~ chi^2(kdof) under permutation (pilot)
+  std::vector<double> kdof;      // per sub-probe: the chi^2's dof (0: dof; one-group: moment-matched)
   std::vector<double> ur, urw, un, uw2;
   double sst = 0;  // sum of squares of the centred residual (constant under permutation)
-  double scale = 1;      // ESS / scale ~ chi^2(dof) under permutation (calibrated on a pilot sample)
   // row-level data for the held-out probe
   std::vector<int> row_stratum;
-  mutable std::vector<double> s1, s2, s3, s4;
-  // Explained sum of squares with the unit values xz (z-score) and xl (level).
-  double ess(const std::vector<double>& xz, const std::vector<int>& xl) const {
+  mutable std::vector<double> s1, s2, s3, s4, c1, c2;
+  int nsub() const { return cells ? 1 + ngroups : 1; }
+  // Explained sums of squares of every sub-probe with the unit values xz (z-score) and xl (level).
+  void eval(const std::vector<double>& xz, const std::vector<int>& xl, double* out) const {
     const size_t U = ur.size();
+    const int G = ngroups;
     switch (shape) {
       case Shape::levels:
       case Shape::wlevels: {
@@ -51,7 +64,23 @@ struct ProbeDef {
         double e = 0;
         for (size_t k = 0; k < s1.size(); ++k)
           if (s2[k] > 0) e += s1[k] * s1[k] / s2[k];
-        return e;
+        out[0] = e;
+        if (cells) {
+          c1.assign(static_cast<size_t>(G) * nlev, 0.0), c2.assign(c1.size(), 0.0);
+          for (size_t k = 0; k < s1.size(); ++k) {
+            const size_t q = static_cast<size_t>((k / nlev) % G) * nlev + k % nlev;
+            c1[q] += s1[k], c2[q] += s2[k];
+          }
+          for (int g = 0; g < G; ++g) {
+            double eg = 0;
+            for (int l = 0; l < nlev; ++l) {
+              const size_t q = static_cast<size_t>(g) * nlev + l;
+              if (c2[q] > 0) eg += c1[q] * c1[q] / c2[q];
+            }
+            out[1 + g] = eg;
+          }
+        }
+        return;
       }
       case Shape::slopes: {  // one centred slope per stratum
         s1.assign(nstrata, 0.0), s2.assign(nstrata, 0.0), s3.assign(nstrata, 0.0), s4.assign(nstrata, 0.0);
@@ -60,16 +89,22 @@ struct ProbeDef {
           s1[s] += un[u] * xz[u], s2[s] += un[u] * xz[u] * xz[u], s3[s] += xz[u] * ur[u], s4[s] += un[u];
         }
         double e = 0;
+        if (cells) c1.assign(G, 0.0), c2.assign(G, 0.0);
         for (int s = 0; s < nstrata; ++s) {
           const double a = s4[s] > 0 ? s2[s] - s1[s] * s1[s] / s4[s] : 0;
           if (a > 1e-12) e += s3[s] * s3[s] / a;
+          if (cells && a > 1e-12) c1[s % G] += s3[s], c2[s % G] += a;
         }
-        return e;
+        out[0] = e;
+        if (cells)
+          for (int g = 0; g < G; ++g) out[1 + g] = c2[g] > 1e-12 ? c1[g] * c1[g] / c2[g] : 0.0;
+        return;
       }
       case Shape::wslope: {  // one slope on z w (multiplicative: the effect scales with dF/dmu)
         double b = 0, a = 0;
         for (size_t u = 0; u < U; ++u) b += xz[u] * urw[u], a += xz[u] * xz[u] * uw2[u];
-        return a > 1e-12 ? b * b / a : 0.0;
+        out[0] = a > 1e-12 ? b * b / a : 0.0;
+        return;
       }
       case Shape::quad: {  // z and z^2, centred per stratum
         s1.assign(nstrata, 0.0), s2.assign(nstrata, 0.0), s4.assign(nstrata, 0.0);
@@ -82,30 +117,38 @@ struct ProbeDef {
         }
         for (int k = 0; k < nstrata; ++k)
           if (s4[k] > 0) q11 -= s1[k] * s1[k] / s4[k], q12 -= s1[k] * s2[k] / s4[k], q22 -= s2[k] * s2[k] / s4[k];
-        if (dof == 1) return q11 > 1e-12 ? b1 * b1 / q11 : 0.0;
+        const double lin = q11 > 1e-12 ? b1 * b1 / q11 : 0.0;
+        if (dof[0] == 1) { out[0] = lin; return; }
         const double det = q11 * q22 - q12 * q12;
-        if (det <= 1e-12 * std::max(1.0, q11 * q22)) return q11 > 1e-12 ? b1 * b1 / q11 : 0.0;
-        const double c1 = (q22 * b1 - q12 * b2) / det, c2 = (q11 * b2 - q12 * b1) / det;
-        return c1 * b1 + c2 * b2;
+        if (det <= 1e-12 * std::max(1.0, q11 * q22)) { out[0] = lin; return; }
+        const double c1q = (q22 * b1 - q12 * b2) / det, c2q = (q11 * b2 - q12 * b1) / det;
+        out[0] = c1q * b1 + c2q * b2;
+        return;
       }
     }
-    return 0;
+  }
+  std::string sub_label(int j) const {
+    return j == 0 ? label : label + ": " + input + " group " + std::to_string(j) + " only";
   }
 };
 
 // Wilson-Hilferty normal deviate of X = ESS / scale ~ chi^2(dof) (see the statistic in rank_candidates).
-double probe_z(const ProbeDef& p, double ess) {
-  const double k = p.dof, x = std::max(0.0, ess) / p.scale, c = 2.0 / (9.0 * k);
+double probe_z(const ProbeDef& p, int j, double ess) {
+  const double k = p.kdof[j], x = std::max(0.0, ess) / p.scale[j], c = 2.0 / (9.0 * k);
   return (std::cbrt(x / k) - (1 - c)) / std::sqrt(c);
 }
 
 // Held-out fractional reduction of the residual SSE by a probe, with the same
 // folds as the model: on the training rows of each fold the probe is fitted
 // (stratum means plus its shape), the held-out rows predicted; against the
-// stratum means alone.  z, l, w per row.
+// stratum means alone.  z, l, w per row.  cell >= 0: the probe's one-group
+// sub-probe (levels or slope pooled over the strata of group `cell`, nothing
+// elsewhere).
 double probe_cv(const ProbeDef& p, const std::vector<int>& rows, const std::vector<double>& z,
                 const std::vector<int>& l, const std::vector<double>& w, const std::vector<double>& r,
-                const Folds& f) {
+                const Folds& f, int cell = -1) {
+  // pooled index of stratum s: itself, or 0 for the strata of the cell (-1: outside it)
+  auto pool = [&](int s) { return cell < 0 ? s : s % p.ngroups == cell ? 0 : -1; };
   double sse0 = 0, sse1 = 0;
   const int S = p.nstrata, L = p.nlev;
   for (int k = 0; k < f.k; ++k) {
@@ -120,14 +163,14 @@ double probe_cv(const ProbeDef& p, const std::vector<int>& rows, const std::vect
       if (f.fold[i] != k) mz[p.row_stratum[i]] += z[i] / sn[p.row_stratum[i]], mz2[p.row_stratum[i]] += z[i] * z[i] / sn[p.row_stratum[i]];
     for (int i : rows) {
       if (f.fold[i] == k) continue;
-      const int s = p.row_stratum[i];
+      const int s = p.row_stratum[i], ps = pool(s);
+      if (ps < 0) continue;
       const double rc = r[i] - sm[s];
+      const size_t li = static_cast<size_t>(ps) * L + l[i];
       switch (p.shape) {
-        case Shape::levels: lm[static_cast<size_t>(s) * L + l[i]] += rc, ln[static_cast<size_t>(s) * L + l[i]] += 1; break;
-        case Shape::wlevels:
-          lm[static_cast<size_t>(s) * L + l[i]] += w[i] * rc, ln[static_cast<size_t>(s) * L + l[i]] += w[i] * w[i];
-          break;
-        case Shape::slopes: sx[s] += (z[i] - mz[s]) * (z[i] - mz[s]), sxr[s] += (z[i] - mz[s]) * rc; break;
+        case Shape::levels: lm[li] += rc, ln[li] += 1; break;
+        case Shape::wlevels: lm[li] += w[i] * rc, ln[li] += w[i] * w[i]; break;
+        case Shape::slopes: sx[ps] += (z[i] - mz[s]) * (z[i] - mz[s]), sxr[ps] += (z[i] - mz[s]) * rc; break;
         case Shape::wslope: q11 += z[i] * z[i] * w[i] * w[i], b1 += z[i] * w[i] * rc; break;
         case Shape::quad: {
           const double f1 = z[i] - mz[s], f2 = z[i] * z[i] - mz2[s];
@@ -139,20 +182,20 @@ double probe_cv(const ProbeDef& p, const std::vector<int>& rows, const std::vect
     double c1 = 0, c2 = 0;
     if (p.shape == Shape::quad) {
       const double det = q11 * q22 - q12 * q12;
-      if (p.dof == 2 && det > 1e-12 * std::max(1.0, q11 * q22)) c1 = (q22 * b1 - q12 * b2) / det, c2 = (q11 * b2 - q12 * b1) / det;
+      if (p.dof[0] == 2 && det > 1e-12 * std::max(1.0, q11 * q22)) c1 = (q22 * b1 - q12 * b2) / det, c2 = (q11 * b2 - q12 * b1) / det;
       else if (q11 > 1e-12) c1 = b1 / q11;
     }
     if (p.shape == Shape::wslope && q11 > 1e-12) c1 = b1 / q11;
     for (int i : rows) {
       if (f.fold[i] != k) continue;
-      const int s = p.row_stratum[i];
+      const int s = p.row_stratum[i], ps = pool(s);
       if (sn[s] <= 0) continue;
       double pr = sm[s];
-      const size_t li = static_cast<size_t>(s) * L + l[i];
-      switch (p.shape) {
+      const size_t li = static_cast<size_t>(std::max(ps, 0)) * L + l[i];
+      if (ps >= 0) switch (p.shape) {
         case Shape::levels: pr += ln[li] > 0 ? lm[li] / ln[li] : 0; break;
         case Shape::wlevels: pr += ln[li] > 0 ? w[i] * lm[li] / ln[li] : 0; break;
-        case Shape::slopes: pr += sx[s] > 1e-12 ? sxr[s] / sx[s] * (z[i] - mz[s]) : 0; break;
+        case Shape::slopes: pr += sx[ps] > 1e-12 ? sxr[ps] / sx[ps] * (z[i] - mz[s]) : 0; break;
         case Shape::wslope: pr += c1 * z[i] * w[i]; break;
         case Shape::quad: pr += c1 * (z[i] - mz[s]) + c2 * (z[i] * z[i] - mz2[s]); break;
       }
@@ -296,10 +339,14 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     const size_t U = xz.size();
     // The probe family.
     std::vector<ProbeDef> probes;
-    auto add = [&](Shape shape, const std::string& label, const std::vector<int>& row_group, int ngroups) {
+    auto add = [&](Shape shape, const std::string& label, const std::vector<int>& row_group, int ngroups,
+                   const std::string& input = "") {
       ProbeDef p;
       p.shape = shape;
       p.label = label;
+      p.input = input;
+      p.ngroups = ngroups;
+      p.cells = ctx && ctx->one_cell && !input.empty() && ngroups > 1 && (shape == Shape::levels || shape == Shape::slopes);
       p.nlev = nlev;
       p.row_stratum.assign(n, 0);
       p.nstrata = nblocks * ngroups;
@@ -315,7 +362,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         p.ur[u] += rc, p.urw[u] += w * rc, p.un[u] += 1, p.uw2[u] += w * w;
         p.sst += rc * rc;
       }
-      // degrees of freedom on the observed data
+      // degrees of freedom on the observed data (whole probe, then one per group)
       std::map<int, std::set<int>> lev_in;
       std::map<int, std::set<double>> z_in;
       for (int i : rows) lev_in[p.row_stratum[i]].insert(lv[i]), z_in[p.row_stratum[i]].insert(z[i]);
@@ -328,7 +375,21 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         dof = distinct.size() >= 4 ? 2 : 1;
       else
         dof = 1;
-      p.dof = dof;
+      p.dof.assign(p.nsub(), 0);
+      p.dof[0] = dof;
+      if (p.cells) {
+        std::vector<std::set<int>> lev_g(ngroups);
+        for (int i : rows) lev_g[p.row_stratum[i] % ngroups].insert(lv[i]);
+        for (int g = 0; g < ngroups; ++g) {
+          if (shape == Shape::slopes) {
+            for (const auto& [s, v] : z_in) p.dof[1 + g] = p.dof[1 + g] || (s % ngroups == g && v.size() > 1);
+          } else {
+            p.dof[1 + g] = std::max(0, static_cast<int>(lev_g[g].size()) - 1);
+          }
+        }
+      }
+      p.scale.assign(p.nsub(), 1.0);
+      p.kdof.assign(p.nsub(), 1.0);
       if (dof > 0 && p.sst > 0) probes.push_back(std::move(p));
     };
     const std::vector<int> none;
@@ -348,11 +409,11 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         std::set<int> seen;
         for (int i : rows) seen.insert(g[i]), ng = std::max(ng, g[i] + 1);
         if (seen.size() < 2) continue;
-        add(c.categorical || distinct.size() <= 8 ? Shape::levels : Shape::slopes, "per " + input, g, ng);
-        if (!c.categorical && distinct.size() > 8) add(Shape::levels, "bins per " + input, g, ng);
+        add(c.categorical || distinct.size() <= 8 ? Shape::levels : Shape::slopes, "per " + input, g, ng, input);
+        if (!c.categorical && distinct.size() > 8) add(Shape::levels, "bins per " + input, g, ng, input);
       }
     int dof_max = 0;
-    for (const auto& p : probes) dof_max = std::max(dof_max, p.dof);
+    for (const auto& p : probes) dof_max = std::max(dof_max, p.dof[0]);
     res.dof = dof_max;
     if (probes.empty()) {
       res.p_value = 1;
@@ -367,11 +428,19 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     // explained fraction per dof (which buried every many-level probe).  The
     // permutation test calibrates the maximum, so the transform only decides
     // how the probes share the family's power.
-    auto stat = [&](const std::vector<double>& a, const std::vector<int>& b, int* best) {
+    // Sub-probe values of every probe: vals[off[j] + k] is sub-probe k of probe j.
+    std::vector<size_t> off(probes.size() + 1, 0);
+    for (size_t j = 0; j < probes.size(); ++j) off[j + 1] = off[j] + probes[j].nsub();
+    std::vector<double> vals(off.back());
+    auto stat = [&](const std::vector<double>& a, const std::vector<int>& b, int* best, int* best_sub) {
       double t = -INFINITY;
       for (size_t j = 0; j < probes.size(); ++j) {
-        const double v = probe_z(probes[j], probes[j].ess(a, b));
-        if (v > t) t = v, *best = static_cast<int>(j);
+        probes[j].eval(a, b, &vals[off[j]]);
+        for (int k = 0; k < probes[j].nsub(); ++k) {
+          if (probes[j].dof[k] <= 0) continue;
+          const double v = probe_z(probes[j], k, vals[off[j] + k]);
+          if (v > t) t = v, *best = static_cast<int>(j), *best_sub = k;
+        }
       }
       return t;
     };
@@ -383,52 +452,94 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     // the units (a test's rows share its scatter, so ESS / s^2 of the rows
     // would inflate with the dof); a probe whose ESS does not change under
     // permutation (a variable constant within every permutation group) is
-    // dropped.
+    // dropped (a sub-probe so: its dof set to 0).
     {
       std::mt19937_64 prng(seed + 7919 * ci + 104729);
       std::vector<int> pp(U);
       for (size_t u = 0; u < U; ++u) pp[u] = static_cast<int>(u);
       std::vector<double> qz(U);
       std::vector<int> ql(U);
-      const int P = 200;
-      std::vector<double> m1(probes.size(), 0.0), m2(probes.size(), 0.0);
+      const int P = kPilot;
+      std::vector<double> m1(off.back(), 0.0), m2(off.back(), 0.0);
       for (int j = 0; j < P; ++j) {
         for (const auto& g : groups)
           for (size_t k = g.size(); k > 1; --k) std::swap(pp[g[k - 1]], pp[g[prng() % k]]);
         for (size_t u = 0; u < U; ++u) qz[u] = xz[pp[u]], ql[u] = xl[pp[u]];
-        for (size_t q = 0; q < probes.size(); ++q) {
-          const double e = probes[q].ess(qz, ql);
-          m1[q] += e / P, m2[q] += e * e / P;
-        }
+        for (size_t q = 0; q < probes.size(); ++q) probes[q].eval(qz, ql, &vals[off[q]]);
+        for (size_t q = 0; q < off.back(); ++q) m1[q] += vals[q] / P, m2[q] += vals[q] * vals[q] / P;
       }
       std::vector<ProbeDef> kept;
       for (size_t q = 0; q < probes.size(); ++q) {
-        const double var = m2[q] - m1[q] * m1[q];
-        if (!(m1[q] > 0) || !(var > 1e-12 * m1[q] * m1[q])) continue;
-        probes[q].scale = m1[q] / probes[q].dof;
-        kept.push_back(std::move(probes[q]));
+        for (int k = 0; k < probes[q].nsub(); ++k) {
+          const size_t h = off[q] + k;
+          const double var = m2[h] - m1[h] * m1[h];
+          if (!(m1[h] > 0) || !(var > 1e-12 * m1[h] * m1[h]) || probes[q].dof[k] <= 0) probes[q].dof[k] = 0;
+          else if (k == 0) probes[q].kdof[k] = probes[q].dof[k], probes[q].scale[k] = m1[h] / probes[q].dof[k];
+          else {
+            // A one-group sub-probe: scaled chi^2 matched to the pilot's mean
+            // AND variance (Satterthwaite).  Its ESS can be nearly constant
+            // under permutation (a row-level variable permuted within tests
+            // while the residual of its group varies between tests); on the
+            // chi^2(dof) scale such a probe would sit at a fixed deviate and
+            // could win every permutation's maximum, hiding the other probes.
+            probes[q].kdof[k] = 2 * m1[h] * m1[h] / var;
+            probes[q].scale[k] = m1[h] / probes[q].kdof[k];
+          }
+        }
+        if (probes[q].dof[0] > 0 || std::any_of(probes[q].dof.begin(), probes[q].dof.end(), [](int v) { return v > 0; }))
+          kept.push_back(std::move(probes[q]));
       }
       probes = std::move(kept);
+      off.assign(probes.size() + 1, 0);
+      for (size_t j = 0; j < probes.size(); ++j) off[j + 1] = off[j] + probes[j].nsub();
+      vals.assign(off.back(), 0.0);
     }
     if (probes.empty()) {
       res.p_value = 1;
       out.push_back(res);
       continue;
     }
-    int best = 0;
-    const double T = stat(xz, xl, &best);
-    res.stat = probes[best].ess(xz, xl);
-    res.probe = probes[best].label;
-    // Held-out gain: the best of the probes (a probe of the wrong shape must not hide a variable).
+    int best = 0, best_sub = 0;
+    const double T = stat(xz, xl, &best, &best_sub);
+    res.stat = vals[off[best] + best_sub];
+    res.probe = probes[best].sub_label(best_sub);
+    // The strongest one-group sub-probe of the best probe's input (the cell
+    // the forms try an effect confined to), when the best probe is per input.
+    if (probes[best].cells) {
+      double zb = -INFINITY;
+      for (int k = 1; k < probes[best].nsub(); ++k)
+        if (probes[best].dof[k] > 0) {
+          const double v = probe_z(probes[best], k, vals[off[best] + k]);
+          if (v > zb) zb = v, res.cell_group = k - 1, res.cell_by = probes[best].input;
+        }
+    }
+    // Held-out gain: the best of the probes (a probe of the wrong shape must
+    // not hide a variable), and of each per-input probe's strongest one-group
+    // sub-probe.
     std::vector<double> wrow(n, 1.0);
     if (weighted) wrow = ctx->mu_weight;
     res.cv_reduction = -INFINITY;
-    for (const auto& p : probes) {
-      const double cv = probe_cv(p, rows, z, lv, wrow, resid, f);
-      if (cv > res.cv_reduction) res.cv_reduction = cv, res.cv_probe = p.label;
+    for (size_t j = 0; j < probes.size(); ++j) {
+      const ProbeDef& p = probes[j];
+      if (p.dof[0] > 0) {
+        const double cv = probe_cv(p, rows, z, lv, wrow, resid, f);
+        if (cv > res.cv_reduction) res.cv_reduction = cv, res.cv_probe = p.label;
+      }
+      if (!p.cells) continue;
+      int kb = 0;
+      double zb = -INFINITY;
+      for (int k = 1; k < p.nsub(); ++k)
+        if (p.dof[k] > 0) {
+          const double v = probe_z(p, k, vals[off[j] + k]);
+          if (v > zb) zb = v, kb = k;
+        }
+      if (kb > 0) {
+        const double cv = probe_cv(p, rows, z, lv, wrow, resid, f, kb - 1);
+        if (cv > res.cv_reduction) res.cv_reduction = cv, res.cv_probe = p.sub_label(kb);
+      }
     }
     std::mt19937_64 rng(seed + 7919 * ci);
-    int ge = 0, b = 0, dec = 0, dummy = 0;
+    int ge = 0, b = 0, dec = 0, dummy = 0, dummy_sub = 0;
     std::vector<int> perm(U);
     for (size_t u = 0; u < U; ++u) perm[u] = static_cast<int>(u);
     std::vector<double> pz(U);
@@ -442,7 +553,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         for (const auto& g : groups)  // Fisher-Yates within the group
           for (size_t k = g.size(); k > 1; --k) std::swap(perm[g[k - 1]], perm[g[mod(rng(), k)]]);
         for (size_t u = 0; u < U; ++u) pz[u] = xz[perm[u]], pl[u] = xl[perm[u]];
-        if (stat(pz, pl, &dummy) >= T - 1e-12 * std::max(1.0, std::abs(T))) ++ge;
+        if (stat(pz, pl, &dummy, &dummy_sub) >= T - 1e-12 * std::max(1.0, std::abs(T))) ++ge;
       }
       dec = sequential_decision(ge, b, thr);
       if (dec != 0) break;

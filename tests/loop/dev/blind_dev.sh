@@ -6,19 +6,26 @@
 # ONLY for development seeds (heldout_protocol_v3.md: 50500000..50500143,
 # 52000000..52999999, 53100000..53100143; wild 54200000..54200143 and
 # 55000000+); never on held-out seeds 57100000+ or 57200000+.
-# usage: blind_dev.sh BIN SEED0 N OUTDIR [PERM] [FIRST]
-#   one line per set: i class noise outcome final/noise time | truth | steps
+# usage: blind_dev.sh BIN SEED0 N OUTDIR [PERM] [FIRST] [GEN]
+#   LOOP_ARGS (environment): extra loop options, e.g. "--cell-probes true"
+#   PERM: permutation cap, default 20000 as the loop (with 2000 no candidate
+#   can be decided significant at alpha/25 candidates: every step undecided)
+#   GEN blind (default) or wild (generator 2: class 'channel' in place of
+#   'bending'); one line per set: i class noise outcome final/noise time | truth | steps
 BIN=$1; S0=$2;
 if (( S0 >= 57000000 && S0 < 58000000 )); then
   echo "held-out seeds: not for development (heldout_protocol_v3.md)" >&2; exit 2; fi
-N=$3; OUT=$4; PERM=${5:-2000}; FIRST=${6:-0}
+N=$3; OUT=$4; PERM=${5:-20000}; FIRST=${6:-0}; GEN=${7:-blind}
+if (( S0 + N > 57000000 && S0 < 58000000 )); then
+  echo "range reaches held-out seeds 57000000-57999999: not for development" >&2; exit 2; fi
 classes=(level smooth interaction bending test-level null)
+if [ "$GEN" = wild ]; then classes=(level smooth interaction channel test-level null); fi
 mkdir -p $OUT
 for ((i=FIRST;i<N;i++)); do
   cls=${classes[$((i%6))]}; if (( (i/6)%2 )); then noise=8; else noise=3; fi
   s=$((S0+i)); d=$OUT/set$i
-  $BIN synth --generator blind --class $cls --seed $s --noise $noise --out $d >/dev/null 2>&1
-  /usr/bin/time -f %e -o $d/time $BIN loop $d/data.csv --out $d/loop --permutations $PERM --threads 1 >$d/log 2>&1
+  $BIN synth --generator $GEN --class $cls --seed $s --noise $noise --out $d >/dev/null 2>&1
+  /usr/bin/time -f %e -o $d/time $BIN loop $d/data.csv --out $d/loop --permutations $PERM --threads 1 $LOOP_ARGS >$d/log 2>&1
   python3 - $d $cls $noise $i <<'PY'
 import json,sys
 d,cls,noise,i=sys.argv[1],sys.argv[2],float(sys.argv[3]),sys.argv[4]
