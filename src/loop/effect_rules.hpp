@@ -92,7 +92,10 @@ struct LinearBy {
     const int g = group_slot(a);
     if (g >= 0) t.factor += a.th[g] * a.f.drift_z[a.k][a.i];
   }
-  static int reads(const EffectArgs& a, int* o) { return o[0] = a.f.group[a.k][a.i], 1; }
+  static int reads(const EffectArgs& a, int* o) {
+    const int g = group_slot(a);
+    return g >= 0 ? (o[0] = g, 1) : 0;
+  }
   static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
     for (int g = 0; g < own_groups(e); ++g) n[s + g] = "beta per SD of " + e.variable + " [" + group_text(e, g) + "]";
   }
@@ -106,8 +109,8 @@ struct CategoricalBy {
     if (l > 0 && g >= 0) t.factor += a.th[g * (a.e.n_levels - 1) + l - 1];
   }
   static int reads(const EffectArgs& a, int* o) {
-    const int l = a.f.level[a.k][a.i];
-    return l > 0 ? (o[0] = a.f.group[a.k][a.i] * (a.e.n_levels - 1) + l - 1, 1) : 0;
+    const int l = a.f.level[a.k][a.i], g = group_slot(a);
+    return l > 0 && g >= 0 ? (o[0] = g * (a.e.n_levels - 1) + l - 1, 1) : 0;
   }
   static void name(const Design&, const Effect& e, const Names& level_names, int s, Names& n) {
     for (int g = 0; g < own_groups(e); ++g)
@@ -127,7 +130,8 @@ struct Smooth {
     for (int j = 0; j < a.e.n_basis; ++j) t.factor += th[j] * B[static_cast<size_t>(j)][a.i];
   }
   static int reads(const EffectArgs& a, int* o) {
-    const int g = a.e.by.empty() ? 0 : a.f.group[a.k][a.i];
+    const int g = a.e.by.empty() ? 0 : group_slot(a);  // the rule's own slot (one-cell forms: 0, or none)
+    if (g < 0) return 0;
     for (int j = 0; j < a.e.n_basis; ++j) o[j] = g * a.e.n_basis + j;
     return a.e.n_basis;
   }
@@ -256,9 +260,17 @@ void rule_reads(const EffectArgs& a, std::vector<int>& out) {
   const size_t at = out.size();
   out.resize(at + static_cast<size_t>(n));
   int m = n;
-  if constexpr (HasReads<R>::value) m = R::reads(a, out.data() + at);
-  else
+  if constexpr (HasReads<R>::value) {
+    m = R::reads(a, out.data() + at);
+    bool inside = m >= 0 && m <= n;  // a claim outside the rule's own block is not believed
+    for (int j = 0; inside && j < m; ++j) inside = out[at + j] >= 0 && out[at + j] < n;
+    if (!inside) {
+      m = n;
+      for (int j = 0; j < n; ++j) out[at + j] = j;
+    }
+  } else {
     for (int j = 0; j < n; ++j) out[at + j] = j;
+  }
   out.resize(at + static_cast<size_t>(m));
 }
 
