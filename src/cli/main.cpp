@@ -34,6 +34,11 @@ int main(int argc, char** argv) {
               << ": unexpected argument '" << argv[first == "help" ? 3 : 2] << "' (it takes none; see drawbend --help)\n";
     return 2;
   }
+  if (first == "help" && argc > 3) {  // help CMD takes nothing more
+    std::cerr << "input error: drawbend help " << argv[2] << ": unexpected argument '" << argv[3]
+              << "' (help takes one command name; see drawbend --help)\n";
+    return 2;
+  }
   if (first == "help" && argc == 3 && std::string(argv[2]) == "help") argc = 2;  // help help: the list
   std::vector<char*> args(argv, argv + argc);
   static char help_flag[] = "--help";

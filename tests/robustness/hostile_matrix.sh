@@ -203,6 +203,7 @@ expect run "--checkpoint-every 1e300" 2 "--checkpoint-every: expected a whole nu
 expect drawbend "version with an argument" 2 "drawbend version: unexpected argument 'extra'" "$drawbend" version extra
 expect drawbend "--help with an argument" 2 "drawbend --help: unexpected argument 'extra'" "$drawbend" --help extra
 expect drawbend "help help" 0 "^usage: drawbend COMMAND" "$drawbend" help help
+expect drawbend "help CMD with an argument" 2 "drawbend help run: unexpected argument 'extra'" "$drawbend" help run extra
 expect drawbend "help of an unknown command" 2 "unknown command 'nosuch'" "$drawbend" help nosuch
 # No warning where the sheet is thicker: one element across the strip is not one through it,
 # and a flat floor bends nothing.
