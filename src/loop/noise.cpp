@@ -12,7 +12,7 @@ namespace drawbend::loop {
 NoiseFloor replicate_noise(const Design& d) {
   NoiseFloor nf;
   const auto& R = d.data->rows;
-  nf.order = d.data->has_time ? "time_s" : d.data->has_sliding ? "sliding_distance_mm" : "file order";
+  nf.order = d.data->has_time ? "time_s" : d.data->has_sliding ? "sliding_distance_mm" : "file";
   std::map<std::string, std::vector<int>> tests;
   for (size_t i = 0; i < R.size(); ++i) tests[R[i].test_id].push_back(static_cast<int>(i));
   double num = 0, den = 0, mean_y = 0;
