@@ -7,12 +7,15 @@
 // (Fig. 4.9) and the areas per pressure range (Fig. 4.11).
 // Forces: half model, N.  Pressures MPa, lengths mm, speeds mm/s.
 //
-// Recipe:
-//   1. Six runs: three pins x {frictionless, Stribeck (Table 3.3)} at 50 mm/s.
-//   2. Our Tables 4.1/4.2 beside the thesis's; checks and trends.
-//   3. Pressure maps (Figs. 4.2-4.5), row profiles and force histories.
-//   4. The new method on our maps and forces, orders 1 and 2 (Fig. 4.10).
-//   5. Areas per pressure range (Fig. 4.11).
+// Recipe (fe_study, one named step a line):
+//   1. run_pins: six runs, three pins x {frictionless, Stribeck (Table 3.3)}
+//      at 50 mm/s, and the 42 mm pin frictionless on the alternative Swift fit.
+//   2. tables_4_fe: our Tables 4.1/4.2 beside the thesis's; checks and trends.
+//   3. maps_and_histories: pressure maps (Figs. 4.2-4.5; exported for
+//      Chapter 7), row profiles and force histories.
+//   4. new_method: the new method on our maps and forces, orders 1 and 2
+//      (Fig. 4.10), and the conventional method's bias.
+//   5. pressure_areas: areas per pressure range (Fig. 4.11).
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -39,10 +42,45 @@ using namespace drawbend::analysis;
 
 namespace {
 
+/// The thesis's inputs of the finite-element part.
+struct Inputs {
+  std::string sc;  ///< data/thesis/scalars.csv
+  CsvTable t41, t42;
+  StribeckParams law;  ///< Table 3.3
+  double v = 0;        ///< outlet speed [mm/s]
+  double w_half = 0;   ///< half the strip width [mm] (the half model)
+  double t_strip = 0;  ///< strip thickness [mm]
+};
+
 struct PinRuns {
   double D = 0;
   sim::DrawBendResult free, strib;
 };
+
+/// The runs of step 1: per pin frictionless and Stribeck, and the 42 mm
+/// frictionless run on the alternative Swift fit.
+struct Runs {
+  std::vector<PinRuns> pins;
+  sim::DrawBendResult alt42;
+};
+
+/// Step 2's derived quantities per pin, in the order of Tables 4.1/4.2.
+struct Derived {
+  std::vector<PinTest> pins;
+  std::vector<double> FB, FT, cs, mu_conv, P_avg;
+};
+
+Inputs load_inputs(const study::Chapter& c) {
+  Inputs in;
+  in.sc = c.data("thesis/scalars.csv");
+  in.t41 = read_csv(c.data("thesis/table_4_1.csv"));
+  in.t42 = read_csv(c.data("thesis/table_4_2.csv"));
+  in.law = study::load_stribeck(c.data("thesis/table_3_3.csv"));
+  in.v = study::scalar(in.sc, "ch4_outlet_speed").value;
+  in.w_half = study::scalar(in.sc, "ch5_strip_width").value / 2;
+  in.t_strip = study::scalar(in.sc, "ch5_strip_thickness").value;
+  return in;
+}
 
 /// Draw-step force histories of two runs on one time base, for the figure.
 void save_histories(study::Chapter& c, const PinRuns& r, const std::string& name) {
@@ -54,30 +92,20 @@ void save_histories(study::Chapter& c, const PinRuns& r, const std::string& name
   c.save(w, name);
 }
 
-}  // namespace
-
-void fe_study(study::Chapter& c, const FeOptions& o) {
-  const std::string sc = c.data("thesis/scalars.csv");
-  const CsvTable t41 = read_csv(c.data("thesis/table_4_1.csv"));
-  const CsvTable t42 = read_csv(c.data("thesis/table_4_2.csv"));
-  const StribeckParams law = study::load_stribeck(c.data("thesis/table_3_3.csv"));
-  const double v = study::scalar(sc, "ch4_outlet_speed").value;
-  const double w_half = study::scalar(sc, "ch5_strip_width").value / 2;
-  const double t_strip = study::scalar(sc, "ch5_strip_thickness").value;
-
-  // 1. The runs.  Mass scaling keeps the inertia of the draw (rho v^2) equal
-  // to that of the reference run (1e4 at 100 mm/s), so the step-3 dynamics do
-  // not change with the thesis's 50 mm/s; the Stribeck law sees the real speed.
-  const auto wall0 = std::chrono::steady_clock::now();
+/// Step 1's jobs: per pin of Table 4.1, frictionless and Stribeck.  Mass
+/// scaling keeps the inertia of the draw (rho v^2) equal to that of the
+/// reference run (1e4 at 100 mm/s), so the step-3 dynamics do not change with
+/// the thesis's 50 mm/s; the Stribeck law sees the real speed.
+std::vector<sim::CaseJob> pin_jobs(const study::Chapter& c, const FeOptions& o, const Inputs& in) {
   std::vector<sim::CaseJob> jobs;  // per pin: frictionless, Stribeck; run side by side
-  for (const auto& row : t41.rows) {
+  for (const auto& row : in.t41.rows) {
     sim::DrawBendSpec s = o.base;
-    s.pin_diameter = t41.number(row, "pin_diameter_mm");
-    s.thickness = t_strip;
-    s.width = w_half;
-    s.back_tension = t41.number(row, "FX_prime_N");
-    s.speed = v;
-    s.mass_scaling = sim::mass_scaling_for_speed(o.base.mass_scaling, v);
+    s.pin_diameter = in.t41.number(row, "pin_diameter_mm");
+    s.thickness = in.t_strip;
+    s.width = in.w_half;
+    s.back_tension = in.t41.number(row, "FX_prime_N");
+    s.speed = in.v;
+    s.mass_scaling = sim::mass_scaling_for_speed(o.base.mass_scaling, in.v);
     s.hardening = c.data("materials/aa5754_o_rd.csv");
     s.name = "ch4_d" + fmt(s.pin_diameter) + "_frictionless";
     jobs.push_back({s, c.out("runs/" + s.name)});
@@ -85,125 +113,144 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     s.friction = "{ law = \"stribeck\", table = \"" + c.data("thesis/table_3_3.csv") + "\", interval = 100 }";
     jobs.push_back({s, c.out("runs/" + s.name)});
   }
-  // The stated cause of ch4.fe.d42.FB (the low-strain part of the flow curve),
-  // tested: the 42 mm frictionless run again on the alternative Swift fit that
-  // takes the 0.2 % yield stress at eps_p = 0.002 (fit_swift(..., 0.002): an
-  // initial yield about 8 % lower, under 1 % change beyond eps_p = 0.05).
-  {
-    const CsvTable t51 = read_csv(c.data("thesis/table_5_1.csv"));
-    const auto& rd = t51.rows.front();
-    const material::SwiftLaw alt =
-        material::fit_swift(t51.number(rd, "YS02_MPa"), t51.number(rd, "UTS_MPa"), t51.number(rd, "n"), 0.002);
-    CsvWriter w({"plastic_strain", "true_stress_MPa"});
-    w.comment("AA5754-O RD, Swift fit with the 0.2 % yield stress at eps_p = 0.002 (fit_swift(..., 0.002)): K = " +
-              fmt(alt.K, 10) + " MPa, eps0 = " + fmt(alt.eps0, 10) + ", n = " + fmt(alt.n));
-    w.comment("units: plastic_strain: -; true_stress_MPa: MPa");
-    for (double e : material::swift_table_strains())
-      w.row({fmt(e, 6), fmt_fixed(alt.stress(e), material::swift_table_stress_decimals)});
-    const std::string path = c.out("tables/aa5754_o_rd_swift_eps_y_0.002.csv");
-    w.save(path);
-    sim::DrawBendSpec s = jobs[jobs.size() - 2].spec;  // the 42 mm frictionless run
-    s.hardening = std::filesystem::absolute(path).string();  // the deck resolves relative paths from its own dir
-    s.name += "_swift_eps_y_0.002";
-    jobs.push_back({s, c.out("runs/" + s.name)});
-  }
+  return jobs;
+}
+
+/// The stated cause of ch4.fe.d42.FB (the low-strain part of the flow curve),
+/// tested: the 42 mm frictionless run (`free42`) again on the alternative
+/// Swift fit that takes the 0.2 % yield stress at eps_p = 0.002
+/// (fit_swift(..., 0.002): an initial yield about 8 % lower, under 1 % change
+/// beyond eps_p = 0.05).  Writes the fit's table.
+sim::CaseJob swift_alternative_job(const study::Chapter& c, const sim::CaseJob& free42) {
+  const CsvTable t51 = read_csv(c.data("thesis/table_5_1.csv"));
+  const auto& rd = t51.rows.front();
+  const material::SwiftLaw alt =
+      material::fit_swift(t51.number(rd, "YS02_MPa"), t51.number(rd, "UTS_MPa"), t51.number(rd, "n"), 0.002);
+  CsvWriter w({"plastic_strain", "true_stress_MPa"});
+  w.comment("AA5754-O RD, Swift fit with the 0.2 % yield stress at eps_p = 0.002 (fit_swift(..., 0.002)): K = " +
+            fmt(alt.K, 10) + " MPa, eps0 = " + fmt(alt.eps0, 10) + ", n = " + fmt(alt.n));
+  w.comment("units: plastic_strain: -; true_stress_MPa: MPa");
+  for (double e : material::swift_table_strains())
+    w.row({fmt(e, 6), fmt_fixed(alt.stress(e), material::swift_table_stress_decimals)});
+  const std::string path = c.out("tables/aa5754_o_rd_swift_eps_y_0.002.csv");
+  w.save(path);
+  sim::DrawBendSpec s = free42.spec;
+  s.hardening = std::filesystem::absolute(path).string();  // the deck resolves relative paths from its own dir
+  s.name += "_swift_eps_y_0.002";
+  return {s, c.out("runs/" + s.name)};
+}
+
+/// Step 1: the runs side by side, their wall time, the alternative fit's
+/// F_B against the thesis's, and the mesh of the runs.
+Runs run_pins(study::Chapter& c, const FeOptions& o, const Inputs& in) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  std::vector<sim::CaseJob> jobs = pin_jobs(c, o, in);
+  jobs.push_back(swift_alternative_job(c, jobs[jobs.size() - 2]));  // the 42 mm frictionless run
   std::vector<sim::DrawBendResult> all = sim::run_drawbend_all(jobs, o.reuse);
-  const sim::DrawBendResult alt42 = std::move(all.back());
+  Runs runs;
+  runs.alt42 = std::move(all.back());
   all.pop_back();
-  std::vector<PinRuns> runs;
   for (std::size_t i = 0; i + 1 < all.size(); i += 2) {
     PinRuns r;
     r.D = all[i].spec.pin_diameter;
     r.free = std::move(all[i]);
     r.strib = std::move(all[i + 1]);
-    runs.push_back(std::move(r));
+    runs.pins.push_back(std::move(r));
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   c.value("fe_wall", fmt_fixed(wall / 60.0, 1), "min");
-  {
-    const double fb_base = runs.back().free.tension_rise(), fb_alt = alt42.tension_rise();
-    const double fb_thesis = t41.number(t41.rows.back(), "FB_N");
-    c.value("FB_d42_alt", fmt_fixed(fb_alt, 1), "N");
-    c.value("FB_d42_alt_change", fmt_fixed(100 * (fb_alt - fb_base) / fb_base, 1), "%");
-    c.value("FB_d42_alt_vs_thesis", fmt_fixed(100 * (fb_alt - fb_thesis) / fb_thesis, 1), "%");
-    const std::string rid = "ch4.fe.d42.frictionless_swift_eps_y_0.002";
-    study::check_run_health(c.checks(), rid, alt42.spec.name,
-                            {alt42.balance_error, alt42.kinetic_ratio, alt42.hourglass_ratio});
-  }
-  c.value("fe_speed", fmt(v), "mm/s");
+  const sim::DrawBendResult& alt42 = runs.alt42;
+  const double fb_base = runs.pins.back().free.tension_rise(), fb_alt = alt42.tension_rise();
+  const double fb_thesis = in.t41.number(in.t41.rows.back(), "FB_N");
+  c.value("FB_d42_alt", fmt_fixed(fb_alt, 1), "N");
+  c.value("FB_d42_alt_change", fmt_fixed(100 * (fb_alt - fb_base) / fb_base, 1), "%");
+  c.value("FB_d42_alt_vs_thesis", fmt_fixed(100 * (fb_alt - fb_thesis) / fb_thesis, 1), "%");
+  const std::string rid = "ch4.fe.d42.frictionless_swift_eps_y_0.002";
+  study::check_run_health(c.checks(), rid, alt42.spec.name,
+                          {alt42.balance_error, alt42.kinetic_ratio, alt42.hourglass_ratio});
+  c.value("fe_speed", fmt(in.v), "mm/s");
   c.value("fe_h", fmt(o.base.element_length), "mm");
   c.value("fe_across", std::to_string(o.base.across));
   c.value("fe_through", std::to_string(o.base.through));
-  c.value("fe_ms", fmt(sim::mass_scaling_for_speed(o.base.mass_scaling, v)));
+  c.value("fe_ms", fmt(sim::mass_scaling_for_speed(o.base.mass_scaling, in.v)));
+  return runs;
+}
 
-  // 2. Tables 4.1/4.2, ours beside the thesis's.
+/// Step 2: Tables 4.1/4.2, ours beside the thesis's; checks per pin and the
+/// trends the chapter states.
+Derived tables_4_fe(study::Chapter& c, const Inputs& in, const std::vector<PinRuns>& runs) {
+  const CsvTable &t41 = in.t41, &t42 = in.t42;
   auto tab = c.table({"pin_mm", "FXp_N", "FYp_thesis_N", "FYp_ours_N", "FB_thesis_N", "FB_ours_N", "FY_thesis_N",
                       "FY_ours_N", "FT_thesis_N", "FT_ours_N", "c_thesis", "c_ours", "mu_conv_ours", "P_avg_ours_MPa"},
                      "Tables 4.1/4.2: thesis and our FE (half-model forces, N)");
-  std::vector<PinTest> pins;
-  std::vector<double> FB, FT, cs, mu_conv, P_avg;
+  Derived d;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const auto& r = runs[i];
     const auto& a = t41.rows[i];
     const auto& b = t42.rows[i];
     const double FXp = r.free.F_back, FYp = r.free.F_out, FX = r.strib.F_back, FY = r.strib.F_out;
-    FB.push_back(FYp - FXp);
-    FT.push_back(FY - FX - FB.back());
-    cs.push_back(pressure_ratio(FX, FY, FXp, FYp));
-    mu_conv.push_back(mu_rope(FX, FY, FB.back(), M_PI / 2));
-    P_avg.push_back(average_pressure(FX, FY, r.D / 2, 2 * w_half, ForceBasis::half_model));
+    d.FB.push_back(FYp - FXp);
+    d.FT.push_back(FY - FX - d.FB.back());
+    d.cs.push_back(pressure_ratio(FX, FY, FXp, FYp));
+    d.mu_conv.push_back(mu_rope(FX, FY, d.FB.back(), M_PI / 2));
+    d.P_avg.push_back(average_pressure(FX, FY, r.D / 2, 2 * in.w_half, ForceBasis::half_model));
     const std::string id = "ch4.fe.d" + fmt(r.D);
-    const std::string d = fmt(r.D);
+    const std::string dm = fmt(r.D);
     // F_B: our flow curve is a Swift fit to the NGTC tensile data (Table 5.1);
     // the thesis's input curve is not printed, and F_B scales with the flow
     // stress at the bending strain (about 8 % on the 12.7 mm pin).
-    c.checks().agree(study::Kind::simulated, id + ".FB", "T4.1 bending force F_B, pin " + d + " mm", t41.number(a, "FB_N"), FB.back(),
-                     0.10 * t41.number(a, "FB_N"), "N",
+    c.checks().agree(study::Kind::simulated, id + ".FB", "T4.1 bending force F_B, pin " + dm + " mm", t41.number(a, "FB_N"),
+                     d.FB.back(), 0.10 * t41.number(a, "FB_N"), "N",
                      "10 %: different hardening input (Swift fit of Table 5.1) and code (H3DMAP vs ours)");
-    c.checks().agree(study::Kind::simulated, id + ".FT", "T4.2 friction force F_T, pin " + d + " mm", t42.number(b, "FT_N"), FT.back(),
-                     0.15 * t42.number(b, "FT_N"), "N",
+    c.checks().agree(study::Kind::simulated, id + ".FT", "T4.2 friction force F_T, pin " + dm + " mm", t42.number(b, "FT_N"),
+                     d.FT.back(), 0.15 * t42.number(b, "FT_N"), "N",
                      "15 %: F_T is a difference of forces, and mu(p) of Table 3.3 weighs the pressure peaks, "
                      "which depend on mesh and contact algorithm");
     // c: with F_X = F_X' (the same back tension), c - 1 = F_T/(F_X' + F_Y')
     // exactly, so c carries F_T's relative uncertainty on c - 1 only (stated
     // before the run): 15 % of the thesis's c - 1, plus half its printed digit.
     const auto c_printed = study::printed(t42, b, "c");
-    c.checks().agree(study::Kind::simulated, id + ".c", "T4.2 pressure ratio c, pin " + d + " mm", c_printed.value,
-                     cs.back(), 0.15 * (c_printed.value - 1) + c_printed.half_ulp, "-",
+    c.checks().agree(study::Kind::simulated, id + ".c", "T4.2 pressure ratio c, pin " + dm + " mm", c_printed.value,
+                     d.cs.back(), 0.15 * (c_printed.value - 1) + c_printed.half_ulp, "-",
                      "c - 1 = F_T/(F_X'+F_Y'): F_T's 15 % on c - 1, + half the printed digit");
-    tab.row({d, fmt_fixed(FXp, 1), t41.text(a, "FY_prime_N"), fmt_fixed(FYp, 1), t41.text(a, "FB_N"),
-             fmt_fixed(FB.back(), 1), t42.text(b, "FY_N"), fmt_fixed(FY, 1), t42.text(b, "FT_N"),
-             fmt_fixed(FT.back(), 1), t42.text(b, "c"), fmt_fixed(cs.back(), 4), fmt_fixed(mu_conv.back(), 4),
-             fmt_fixed(P_avg.back(), 2)});
-    c.value("FB_d" + d, fmt_fixed(FB.back(), 1), "N");
-    c.value("FB_vs_thesis_d" + d, fmt_fixed(100 * (FB.back() / t41.number(a, "FB_N") - 1), 1), "%");
-    c.value("FT_d" + d, fmt_fixed(FT.back(), 1), "N");
-    c.value("c_d" + d, fmt_fixed(cs.back(), 3));
-    c.value("mufe_d" + d, fmt_fixed(mu_conv.back(), 4));
+    tab.row({dm, fmt_fixed(FXp, 1), t41.text(a, "FY_prime_N"), fmt_fixed(FYp, 1), t41.text(a, "FB_N"),
+             fmt_fixed(d.FB.back(), 1), t42.text(b, "FY_N"), fmt_fixed(FY, 1), t42.text(b, "FT_N"),
+             fmt_fixed(d.FT.back(), 1), t42.text(b, "c"), fmt_fixed(d.cs.back(), 4), fmt_fixed(d.mu_conv.back(), 4),
+             fmt_fixed(d.P_avg.back(), 2)});
+    c.value("FB_d" + dm, fmt_fixed(d.FB.back(), 1), "N");
+    c.value("FB_vs_thesis_d" + dm, fmt_fixed(100 * (d.FB.back() / t41.number(a, "FB_N") - 1), 1), "%");
+    c.value("FT_d" + dm, fmt_fixed(d.FT.back(), 1), "N");
+    c.value("c_d" + dm, fmt_fixed(d.cs.back(), 3));
+    c.value("mufe_d" + dm, fmt_fixed(d.mu_conv.back(), 4));
     // Quasi-static invariants of the runs (printed by each run, checked here).
     for (const auto* x : {&r.free, &r.strib}) {
       const std::string rid = id + (x == &r.free ? ".frictionless" : ".stribeck");
       study::check_run_health(c.checks(), rid, x->spec.name, {x->balance_error, x->kinetic_ratio, x->hourglass_ratio});
     }
     PinTest pt;
-    pt.map = r.free.pressure_map("pin " + d + " mm, frictionless");
-    pt.c = cs.back();
-    pt.friction_force_N = FT.back();
-    pins.push_back(pt);
+    pt.map = r.free.pressure_map("pin " + dm + " mm, frictionless");
+    pt.c = d.cs.back();
+    pt.friction_force_N = d.FT.back();
+    d.pins.push_back(pt);
   }
   c.save(tab, "table_4_fe");
   // Trends the chapter states: F_B, F_T and c fall as the pin grows (Tables
   // 4.1/4.2) and so does the conventional mu (Fig. 4.9, Sec. 4.3).
   auto falls = [](const std::vector<double>& x) { return x[0] > x[1] && x[1] > x[2]; };
-  c.checks().claim(study::Kind::simulated, "ch4.fe.FB_falls", "F_B falls with pin diameter (Table 4.1)", falls(FB), "ours");
-  c.checks().claim(study::Kind::simulated, "ch4.fe.FT_falls", "F_T falls with pin diameter (Table 4.2)", falls(FT), "ours");
-  c.checks().claim(study::Kind::simulated, "ch4.fe.c_falls", "c falls with pin diameter (Table 4.2)", falls(cs), "ours");
-  c.checks().claim(study::Kind::simulated, "ch4.fe.mu_conv_falls", "conventional mu falls with pin diameter (Fig. 4.9)", falls(mu_conv),
-                   "ours: " + fmt(mu_conv[0], 4) + ", " + fmt(mu_conv[1], 4) + ", " + fmt(mu_conv[2], 4));
+  c.checks().claim(study::Kind::simulated, "ch4.fe.FB_falls", "F_B falls with pin diameter (Table 4.1)", falls(d.FB), "ours");
+  c.checks().claim(study::Kind::simulated, "ch4.fe.FT_falls", "F_T falls with pin diameter (Table 4.2)", falls(d.FT), "ours");
+  c.checks().claim(study::Kind::simulated, "ch4.fe.c_falls", "c falls with pin diameter (Table 4.2)", falls(d.cs), "ours");
+  c.checks().claim(study::Kind::simulated, "ch4.fe.mu_conv_falls", "conventional mu falls with pin diameter (Fig. 4.9)",
+                   falls(d.mu_conv),
+                   "ours: " + fmt(d.mu_conv[0], 4) + ", " + fmt(d.mu_conv[1], 4) + ", " + fmt(d.mu_conv[2], 4));
+  return d;
+}
 
-  // 3. Maps, profiles, histories.  The frictionless maps are also exported in
-  // the format of `drawbend loop --maps` (Chapter 7): maps/pin_<D>mm.csv, the
-  // solver's contact map with the full-strip reference back tension stated.
+/// Step 3: maps, profiles, histories.  The frictionless maps are also
+/// exported in the format of `drawbend loop --maps` (Chapter 7):
+/// maps/pin_<D>mm.csv, the solver's contact map with the full-strip reference
+/// back tension stated.
+void maps_and_histories(study::Chapter& c, const std::vector<PinRuns>& runs) {
   std::filesystem::create_directories(c.out("maps"));
   for (const auto& r : runs) {
     const std::string d = fmt(r.D);
@@ -237,24 +284,29 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     for (const auto& q : r.free.map) pmax = std::max(pmax, q.pressure);
     c.value("pmaxall_d" + d, fmt_fixed(pmax, 1), "MPa");
   }
+}
 
-  // 4. The new method on our maps and forces (Eqs. 4.2-4.5), orders 1 and 2,
-  // against the input Stribeck curve at the draw speed.
-  const NewMethodResult n1 = solve_new_method(pins, 1), n2 = solve_new_method(pins, 2);
-  const double p_split = study::scalar(sc, "ch4_valid_pressure_range_max").value;  // 40 MPa
+/// Step 4: the new method on our maps and forces (Eqs. 4.2-4.5), orders 1 and
+/// 2, against the input Stribeck curve at the draw speed; the conventional
+/// method's bias.
+void new_method(study::Chapter& c, const Inputs& in, const std::vector<PinRuns>& runs, const Derived& d) {
+  const double v = in.v;
+  const NewMethodResult n1 = solve_new_method(d.pins, 1), n2 = solve_new_method(d.pins, 2);
+  const double p_split = study::scalar(in.sc, "ch4_valid_pressure_range_max").value;  // 40 MPa
   auto curve = c.table({"p_MPa", "mu_input", "mu_new_order1", "mu_new_order2"},
                        "input Stribeck mu(p) at " + fmt(v) + " mm/s and the new method's back-prediction");
   double err_lo = 0, err_hi = 0, p_top = 0;
   for (const auto& q : runs[0].free.map) p_top = std::max(p_top, q.pressure);
   for (double p = 1; p <= std::max(p_top, 60.0) + 1e-9; p += 1.0) {
-    const double mu_in = stribeck_mu(v, p, law);
+    const double mu_in = stribeck_mu(v, p, in.law);
     curve.row({fmt(p), fmt(mu_in, 5), fmt(n1.mu(p), 5), fmt(n2.mu(p), 5)});
     const double e = std::abs(n2.mu(p) - mu_in) / mu_in;
     (p <= p_split ? err_lo : err_hi) = std::max(p <= p_split ? err_lo : err_hi, e);
   }
   c.save(curve, "new_method_curve");
   auto pts = c.table({"pin_mm", "P_avg_MPa", "mu_conventional"}, "conventional mu (Eq. 2.3) at Eq. (2.2) pressure");
-  for (std::size_t i = 0; i < runs.size(); ++i) pts.row({fmt(runs[i].D), fmt_fixed(P_avg[i], 2), fmt_fixed(mu_conv[i], 4)});
+  for (std::size_t i = 0; i < runs.size(); ++i)
+    pts.row({fmt(runs[i].D), fmt_fixed(d.P_avg[i], 2), fmt_fixed(d.mu_conv[i], 4)});
   c.save(pts, "conventional_points");
   c.plot("fig_4_10", "fig_4_10",
          {{"curvefile", c.out("tables/new_method_curve.csv")}, {"pointsfile", c.out("tables/conventional_points.csv")}});
@@ -273,11 +325,14 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   // Sec. 4.4: "the conventional method overestimates the friction coefficients":
   // mu_conv above the input mu at its own average pressure, every pin.
   bool over = true;
-  for (std::size_t i = 0; i < runs.size(); ++i) over = over && mu_conv[i] > stribeck_mu(v, P_avg[i], law);
+  for (std::size_t i = 0; i < runs.size(); ++i) over = over && d.mu_conv[i] > stribeck_mu(v, d.P_avg[i], in.law);
   c.checks().claim(study::Kind::simulated, "ch4.fe.conventional_overestimates", "conventional mu above the input mu at P_avg, all pins (Fig. 4.10)",
                    over, "ours");
+}
 
-  // 5. Contact area per pressure range, all pins (Fig. 4.11: 12.7 mm pin).
+/// Step 5: contact area per pressure range, all pins (Fig. 4.11: 12.7 mm pin).
+void pressure_areas(study::Chapter& c, const Inputs& in, const std::vector<PinRuns>& runs) {
+  const double p_split = study::scalar(in.sc, "ch4_valid_pressure_range_max").value;  // 40 MPa
   const std::vector<double> edges{0, 10, 20, 30, 40, 50, 60, 70, 80};
   std::vector<std::string> head{"range_MPa"};
   std::vector<std::vector<double>> areas;
@@ -305,6 +360,17 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
                    "some, but under 10 %, of the 12.7 mm pin's contact above 40 MPa (Sec. 4.4)",
                    above > 0 && above < 0.10 * total,
                    fmt(100 * above / std::max(total, 1e-12), 3) + " % above 40 MPa");
+}
+
+}  // namespace
+
+void fe_study(study::Chapter& c, const FeOptions& o) {
+  const Inputs in = load_inputs(c);
+  const Runs runs = run_pins(c, o, in);                    // 1. the runs
+  const Derived d = tables_4_fe(c, in, runs.pins);         // 2. Tables 4.1/4.2, ours beside the thesis's
+  maps_and_histories(c, runs.pins);                        // 3. maps, profiles, histories
+  new_method(c, in, runs.pins, d);                         // 4. the new method (Fig. 4.10)
+  pressure_areas(c, in, runs.pins);                        // 5. areas per pressure range (Fig. 4.11)
 }
 
 }  // namespace ch4
