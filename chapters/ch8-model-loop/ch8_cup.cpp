@@ -38,6 +38,7 @@
 #include "sim/cup_case.hpp"
 #include "sim/deck_job.hpp"
 #include "material/hardening_curve.hpp"
+#include "modelloop/material_edits.hpp"
 
 namespace ch8 {
 
@@ -192,17 +193,18 @@ struct BendingHardening {
   double beta = -1, x_sat = 0, gamma = 0;
 };
 
-/// Read from the accepted members' materials (TOML inline tables).
+/// Read from the accepted members' materials (inline tables), typed
+/// (modelloop::material_of): the last accepted split or back stress.
 BendingHardening bending_hardening(const modelloop::ModelLoopResult& bending) {
   BendingHardening h;
   for (const auto& st : bending.steps)
     if (!st.spec.material.empty() && st.spec.material.front() == '{') {
-      const std::string doc = "m = " + st.spec.material;
-      const toml::table t = toml::parse(std::string_view(doc));
-      if (const auto b = t["m"]["kinematic"]["beta"].value<double>()) h.beta = *b, h.x_sat = 0;
-      const auto C = t["m"]["kinematic"]["C"][0].value<double>();
-      const auto g = t["m"]["kinematic"]["gamma"][0].value<double>();
-      if (C && g && *g > 0) h.x_sat = *C / *g, h.gamma = *g, h.beta = -1;
+      const io::MaterialSpec m = modelloop::material_of(st.spec);
+      if (!m.kinematic) continue;
+      if (const auto* b = std::get_if<io::KinematicSplit>(&*m.kinematic)) h.beta = b->beta, h.x_sat = 0;
+      const auto* ch = std::get_if<io::KinematicChaboche>(&*m.kinematic);
+      if (ch && !ch->C.empty() && !ch->gamma.empty() && ch->gamma[0] > 0)
+        h.x_sat = ch->C[0] / ch->gamma[0], h.gamma = ch->gamma[0], h.beta = -1;
     }
   return h;
 }

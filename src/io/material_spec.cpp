@@ -297,6 +297,15 @@ std::string to_toml(const MaterialSpec& m) {
   return s + surface_line(m.surface);
 }
 
+std::string to_toml_inline(const MaterialSpec& m) {
+  const std::string s = to_toml(m);
+  std::string keys;
+  std::size_t p = s.find('\n') + 1;  // after "[material]"
+  for (std::size_t e; (e = s.find('\n', p)) != std::string::npos; p = e + 1)
+    keys += (keys.empty() ? "" : ", ") + s.substr(p, e - p);
+  return "{ " + keys + " }";
+}
+
 material::HardeningCurve make_flow_curve(const FlowCurve& f, const std::string& dir) {
   if (const auto* p = std::get_if<CurveFile>(&f)) {
     std::filesystem::path file(p->path);

@@ -4,7 +4,8 @@
 // knows the [material] keys goes through here: the deck reader
 // (io/deck_material.cpp builds the Material from the spec), the builders'
 // `--material` choice (sim/material_choice.cpp) and the model-level loop's
-// candidates (modelloop/material_edits.cpp reads a flow curve through it).
+// candidates (modelloop/material_edits.hpp: they set fields of the typed
+// value and write it back with to_toml_inline, naming no key).
 //
 // [material]: type = "elastic" | "j2" | "j2_combined" | "hill48" | "yld2004"; E [MPa], nu,
 // density [t/mm^3]; the plastic types take one flow curve:
@@ -135,14 +136,18 @@ MaterialSpec from_toml(const DeckContext& c, const toml::table& t);
 MaterialSpec read_material(const toml::table& t, const std::string& where);
 
 /// The keys that choose a flow curve (the five forms above), for code that
-/// swaps one curve for another in a [material] table (the model loop's
-/// candidates) without listing them again.
+/// completes a partial [material] table (sim::material_choice) without
+/// listing them again.
 inline constexpr const char* kFlowCurveKeys[] = {"hardening", "yield", "tangent", "voce", "swift"};
 /// Whether t names a flow curve (one of kFlowCurveKeys).
 bool has_flow_curve(const toml::table& t);
 
 /// "[material]\n" and one line per key, in the fixed order above.
 std::string to_toml(const MaterialSpec& m);
+/// The same keys as one TOML inline table, "{ type = ..., E = ..., ... }" (to_toml's
+/// lines joined): a material carried as text in a builder's spec
+/// (sim::DrawBendSpec::material), as the model loop's candidates write it.
+std::string to_toml_inline(const MaterialSpec& m);
 
 /// The flow curve's table; `dir` resolves a relative CurveFile path ("" for
 /// as written).  Throws InputError for an unreadable or bad table file.

@@ -38,8 +38,13 @@ void make_split(ModelCandidate& c, const std::string& arg, const std::string&) {
   for (double b : values_of(c.name, arg)) {
     if (b < 0 || b > 1) throw InputError("candidate '" + c.name + "': beta must lie in [0, 1]");
     c.members.push_back({"split beta " + fmt(b), [b](DrawBendSpec& s) {
-                           // replaces the model's material, and with it a Chaboche back stress
-                           s.material = "{ type = \"j2_combined\", kinematic = { beta = " + fmt_shortest(b) + " } }";
+                           // replaces the model's material, and with it a Chaboche back stress; the flow
+                           // curve is left unset: the spec's own table (s.hardening) when the deck is built
+                           io::MaterialSpec m;
+                           m.type = io::MaterialType::j2_combined;
+                           m.curve.reset();
+                           m.kinematic = io::KinematicSplit{b};
+                           set_material(s, m);
                          }});
   }
 }
@@ -52,20 +57,33 @@ void make_published(ModelCandidate& c, const std::string& kind, const std::strin
   const bool voce = kind == "voce";
   const std::string f =
       data_dir + (voce ? "/materials/aa5754_o_voce_hou2020.toml" : "/materials/aa5754_o_hill48_hou2020.toml");
-  const toml::table fm = material_table(f);
-  toml::table add;
+  const io::MaterialSpec fm = material_file(f);
   if (voce) {
     c.what = "published Voce flow curve (Hou 2020) instead of the tabulated RD (Swift) curve";
-    add.insert("voce", *file_key(fm, f, "voce").node());
-  } else {
-    c.what = "Hill'48 yield surface, published r-values (Hou 2020), on the same flow curve";
-    add.insert("type", "hill48");
-    add.insert("hill48", *file_key(fm, f, "hill48").node());
+    const auto* v = fm.curve ? std::get_if<io::CurveVoce>(&*fm.curve) : nullptr;
+    if (!v) throw InputError(f + ": [material] has no 'voce'");
+    const io::FlowCurve curve = *v;
+    c.members.push_back({"Voce flow curve", [curve](DrawBendSpec& s) {
+                           // Voce on a combined model is carved by its back stress (kept)
+                           io::MaterialSpec m = material_of(s);
+                           m.curve = carved_curve(m, curve);
+                           set_material(s, m);
+                         }});
+    return;
   }
-  c.members.push_back({voce ? "Voce flow curve" : "Hill'48", [add](DrawBendSpec& s) {
-                         // hill48 on a combined model keeps its back stress (hill48 takes `kinematic`);
-                         // Voce on it is carved by that back stress
-                         s.material = merged_material(s.material, carved_curve(s, add));
+  c.what = "Hill'48 yield surface, published r-values (Hou 2020), on the same flow curve";
+  if (fm.type != io::MaterialType::hill48) throw InputError(f + ": [material] has no 'hill48'");
+  const io::YieldSurface surface = fm.surface;
+  c.members.push_back({"Hill'48", [surface](DrawBendSpec& s) {
+                         // hill48 on a combined model keeps its back stress (hill48 takes `kinematic`).
+                         // On a Chaboche model the flow curve is the spec's own table (s.hardening)
+                         // carved by the back stress, as before issue 49's typed edit: the current
+                         // curve when the back stress was carved from that table.
+                         io::MaterialSpec m = material_of(s);
+                         m.type = io::MaterialType::hill48;
+                         m.surface = surface;
+                         if (has_back_stress(m)) m.curve = carved_curve(m, io::CurveFile{s.hardening});
+                         set_material(s, m);
                        }});
 }
 void make_voce(ModelCandidate& c, const std::string&, const std::string& d) { make_published(c, "voce", d); }
@@ -86,14 +104,12 @@ void make_offset(ModelCandidate& c, const std::string&, const std::string& data_
   c.what = "Swift refitted with Table 5.1's 0.2 % offset yield stress at eps_p = 0.002 (K " + fmt(law.K, 5) +
            " MPa, e0 " + fmt(law.eps0, 4) + ", n " + fmt(law.n) + "; initial yield " + fmt(law.stress(0), 4) +
            " MPa): the flow curve below 1 % strain";
-  toml::table sw;
-  sw.insert("K", law.K);
-  sw.insert("e0", law.eps0);
-  sw.insert("n", law.n);
-  toml::table add;
-  add.insert("swift", sw);
-  c.members.push_back({"Swift at 0.2 % offset",
-                       [add](DrawBendSpec& s) { s.material = merged_material(s.material, carved_curve(s, add)); }});
+  const io::FlowCurve curve = io::CurveSwift{law.K, law.eps0, law.n};
+  c.members.push_back({"Swift at 0.2 % offset", [curve](DrawBendSpec& s) {
+                         io::MaterialSpec m = material_of(s);
+                         m.curve = carved_curve(m, curve);
+                         set_material(s, m);
+                       }});
 }
 
 /// One Armstrong-Frederick back stress carved out of the flow curve: early
@@ -118,11 +134,9 @@ void make_chaboche(ModelCandidate& c, const std::string& arg, const std::string&
       if (!(xs > 0)) throw InputError("candidate '" + c.name + "': X_sat must be > 0 MPa");
       const std::string label = "Chaboche X_sat " + fmt(xs) + " MPa" + (at == std::string::npos ? "" : ", gamma " + fmt(g));
       c.members.push_back({label, [xs, g](DrawBendSpec& s) {
-                             // replaces split's beta: the solver takes one form of back stress
-                             toml::table add = chaboche_material(s, xs, g);
-                             toml::table cur = material_table(s.material);
-                             if (cur["type"].value_or(std::string()) != "hill48") add.insert("type", "j2_combined");
-                             s.material = merged_material(s.material, add);
+                             io::MaterialSpec m = material_of(s);
+                             set_back_stress(m, xs, g);
+                             set_material(s, m);
                            }});
     }
   }

@@ -3,11 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "core/csv.hpp"
-#include "core/toml_read.hpp"
-#include "io/material_spec.hpp"
 #include "modelloop/model_loop.hpp"
 #include "sim/material_choice.hpp"
 
@@ -15,116 +12,42 @@ namespace drawbend::modelloop {
 
 using namespace drawbend::sim;
 
-/// The [material] table of a spec's material (empty: the isotropic J2 model on
-/// the spec's hardening curve; '{...}': an inline table; else a TOML file).
-toml::table material_table(const std::string& material) {
-  if (material.empty()) return toml::table{{"type", "j2"}};
-  if (material.front() != '{') {
-    toml::table file = parse_toml_file(material);
-    if (const auto* t = file["material"].as_table()) return *t;
-    throw InputError(material + ": expected a [material] table");
-  }
-  toml::table w = parse_toml("material = " + material, "--material");
-  if (const auto* t = w["material"].as_table()) return *t;
-  throw InputError("--material: expected a TOML inline table, found " + material);
+io::MaterialSpec material_of(const DrawBendSpec& s) { return material_choice(s.material, s.hardening); }
+
+void set_material(DrawBendSpec& s, const io::MaterialSpec& m) { s.material = io::to_toml_inline(m); }
+
+io::MaterialSpec material_file(const std::string& path) {
+  if (path.empty() || path.front() == '{') throw InputError("material file: expected a path, found '" + path + "'");
+  return material_choice(path, "");  // a file without a flow curve: no default (the caller takes other parts)
 }
 
-namespace {
-/// Every sub-table of t made inline (a material written as one inline table).
-void inline_all(toml::table& t) {
-  for (auto&& [k, v] : t)
-    if (auto* sub = v.as_table()) {
-      inline_all(*sub);
-      sub->is_inline(true);
-    }
-}
-}  // namespace
+material::HardeningCurve curve_of(const io::MaterialSpec& m) { return io::make_flow_curve(m.curve.value(), ""); }
 
-/// `current` with the keys of `add` set (a flow-curve key replaces the
-/// others), as an inline table: candidates compose (Voce or Hill'48 on top of
-/// an accepted combined-hardening model keep its back stress).
-std::string merged_material(const std::string& current, const toml::table& add) {
-  toml::table m = material_table(current);
-  if (io::has_flow_curve(add))
-    for (const char* k : io::kFlowCurveKeys) m.erase(k);
-  for (auto&& [k, v] : add) m.insert_or_assign(k, v);
-  inline_all(m);
-  m.is_inline(true);
-  std::ostringstream o;
-  o << m;
-  return o.str();
+bool has_back_stress(const io::MaterialSpec& m) {
+  const auto* ch = m.kinematic ? std::get_if<io::KinematicChaboche>(&*m.kinematic) : nullptr;
+  return ch && !ch->C.empty() && ch->C.size() == ch->gamma.size();
 }
 
-/// One key of a material file's [material] table (InputError if missing).
-toml::node_view<const toml::node> file_key(const toml::table& file_material, const std::string& path,
-                                           const char* key) {
-  if (!file_material.contains(key)) throw InputError(path + ": [material] has no '" + key + "'");
-  return file_material[key];
-}
-
-
-/// The flow curve of a [material] table, read by the typed reader
-/// (io/material_spec.hpp; `default_table`, a CSV path, when it names none).
-material::HardeningCurve curve_of(const toml::table& m, const std::string& default_table) {
-  toml::table filled = m;
-  const io::MaterialSpec spec = material_choice(filled, default_table, "--material");
-  return io::make_flow_curve(spec.curve.value_or(io::CurveFile{default_table}), "");
-}
-
-/// The flow curve a spec's material uses (curve_of on its material).
-material::HardeningCurve current_curve(const DrawBendSpec& s) { return curve_of(material_table(s.material), s.hardening); }
-
-/// An inline hardening table of plastic strains x and stresses r.
-toml::table hardening_table(const std::vector<double>& x, const std::vector<double>& r) {
-  toml::array ax, ay;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    ax.push_back(x[i]);
-    ay.push_back(r[i]);
-  }
-  toml::table h;
-  h.insert("plastic_strain", ax);
-  h.insert("true_stress_MPa", ay);
-  return h;
-}
-
-/// A new flow curve (`add`'s swift or voce) on a model with Chaboche back
-/// stresses: the curve is the monotonic response, so it is carved by the
-/// model's back-stress terms (X_k = C_k / gamma_k) as the chaboche candidate
-/// carves the table, and goes in as an inline hardening table.  Otherwise the
-/// back stress would come on top of the new curve and raise every flow stress
-/// by X_sat.  `add` unchanged when the model has no Chaboche terms.
-toml::table carved_curve(const DrawBendSpec& s, toml::table add) {
-  const toml::table cur = material_table(s.material);
-  const auto* C = cur["kinematic"]["C"].as_array();
-  const auto* g = cur["kinematic"]["gamma"].as_array();
-  if (!C || !g || C->size() != g->size() || C->empty()) return add;
-  material::HardeningCurve c = curve_of(add, s.hardening);
-  std::vector<double> r;
-  for (std::size_t k = 0; k < C->size(); ++k) {
-    const double gk = (*g)[k].value_or(0.0);
+io::FlowCurve carved_curve(const io::MaterialSpec& m, const io::FlowCurve& curve) {
+  if (!has_back_stress(m)) return curve;
+  const auto& ch = std::get<io::KinematicChaboche>(*m.kinematic);
+  material::HardeningCurve c = io::make_flow_curve(curve, "");
+  for (std::size_t k = 0; k < ch.C.size(); ++k) {
+    const double gk = ch.gamma[k];
     if (!(gk > 0))  // gamma 0 is linear (Prager) hardening: no saturation X_sat to carve
-      throw InputError("material: a new flow curve cannot be carved by the linear kinematic term C = " +
-                       fmt((*C)[k].value_or(0.0)) + " MPa with gamma " + fmt(gk) + " (no saturated back stress)");
-    const double xk = (*C)[k].value_or(0.0) / gk;
-    r = carved_isotropic_part(c, xk, gk);
+      throw InputError("material: a new flow curve cannot be carved by the linear kinematic term C = " + fmt(ch.C[k]) +
+                       " MPa with gamma " + fmt(gk) + " (no saturated back stress)");
+    const std::vector<double> r = carved_isotropic_part(c, ch.C[k] / gk, gk);
     c = material::HardeningCurve(c.plastic_strains(), r, "the carved curve");
   }
-  for (const char* k : {"voce", "swift"}) add.erase(k);
-  add.insert_or_assign("hardening", hardening_table(c.plastic_strains(), c.stresses()));
-  return add;
+  return io::CurveTable{c.plastic_strains(), c.stresses()};
 }
 
-/// The chaboche candidate's material (see carved_isotropic_part).
-toml::table chaboche_material(const DrawBendSpec& s, double x_sat, double gamma) {
-  const material::HardeningCurve c = current_curve(s);
-  const toml::table h = hardening_table(c.plastic_strains(), carved_isotropic_part(c, x_sat, gamma));
-  toml::table k;
-  k.insert("C", toml::array{gamma * x_sat});
-  k.insert("gamma", toml::array{gamma});
-  toml::table add;
-  add.insert("hardening", h);
-  add.insert("kinematic", k);
-  return add;
+void set_back_stress(io::MaterialSpec& m, double x_sat, double gamma) {
+  const material::HardeningCurve c = curve_of(m);
+  m.curve = io::CurveTable{c.plastic_strains(), carved_isotropic_part(c, x_sat, gamma)};
+  m.kinematic = io::KinematicChaboche{{gamma * x_sat}, {gamma}};  // replaces split's beta: the solver takes one form
+  if (m.type != io::MaterialType::hill48) m.type = io::MaterialType::j2_combined;
 }
 
 std::vector<double> carved_isotropic_part(const material::HardeningCurve& c, double x_sat, double gamma) {

@@ -1,47 +1,49 @@
 #pragma once
-// How a model-loop candidate edits the material of a draw-bend spec.  A
-// spec's material is text (empty: isotropic J2 on the spec's hardening
-// curve; "{...}": a TOML inline table; else a material file); these read it as
-// a [material] table, set keys and write it back as one inline table.  The
-// flow-curve keys are the typed reader's (io::kFlowCurveKeys): a new flow
-// curve replaces the old one whatever form it had.
+// How a model-loop candidate edits the material of a draw-bend spec: as a
+// typed value.  A spec's material is text (empty: isotropic J2 on the spec's
+// hardening curve; "{...}": a TOML inline table; else a material file).
+// material_of reads it into an io::MaterialSpec through the one reader
+// (sim::material_choice: every key checked, the defaults filled), a candidate
+// sets fields of that value, and set_material writes it back through the one
+// writer (io::to_toml_inline).  No [material] key is named here or in the
+// catalogue: a new flow curve replaces the old one whatever form it had
+// because the curve is one field.
 #include <string>
 #include <vector>
 
-#include <toml++/toml.h>
-
+#include "io/material_spec.hpp"
 #include "material/hardening_curve.hpp"
 #include "sim/drawbend_case.hpp"
 
 namespace drawbend::modelloop {
 
-/// The [material] table of a spec's material (InputError if a file has none).
-toml::table material_table(const std::string& material);
+/// The typed material of a spec (defaults filled; a file's relative flow-curve
+/// path taken from the file's folder).  InputError for a bad material.
+io::MaterialSpec material_of(const sim::DrawBendSpec& s);
 
-/// `current` with the keys of `add` set (a flow-curve key replaces the
-/// others), as an inline table: candidates compose (Voce or Hill'48 on top of
-/// an accepted combined-hardening model keep its back stress).
-std::string merged_material(const std::string& current, const toml::table& add);
+/// The spec's material set to `m` (written as one inline table).
+void set_material(sim::DrawBendSpec& s, const io::MaterialSpec& m);
 
-/// One key of a material file's [material] table (InputError naming `path` if missing).
-toml::node_view<const toml::node> file_key(const toml::table& file_material, const std::string& path, const char* key);
+/// The typed [material] of a material file (data/materials/*.toml); InputError naming `path`.
+io::MaterialSpec material_file(const std::string& path);
 
-/// The flow curve of a [material] table (`default_table`, a CSV path, when it names none).
-material::HardeningCurve curve_of(const toml::table& m, const std::string& default_table);
+/// The flow curve of a material read by material_of (its curve is always set).
+material::HardeningCurve curve_of(const io::MaterialSpec& m);
 
-/// The flow curve a spec's material uses.
-material::HardeningCurve current_curve(const sim::DrawBendSpec& s);
+/// Whether the material has Armstrong-Frederick (Chaboche) back stresses.
+bool has_back_stress(const io::MaterialSpec& m);
 
-/// An inline hardening table of plastic strains x and stresses r [MPa].
-toml::table hardening_table(const std::vector<double>& x, const std::vector<double>& r);
+/// A new flow curve `curve` for a model with Chaboche back stresses: the curve
+/// is the monotonic response, so it is carved by the model's back-stress terms
+/// (X_k = C_k / gamma_k, carved_isotropic_part) and becomes an inline table;
+/// otherwise the back stress would come on top of it and raise every flow
+/// stress by X_sat.  `curve` unchanged when the model has none; InputError on
+/// a linear term (gamma 0: no saturated back stress to carve).
+io::FlowCurve carved_curve(const io::MaterialSpec& m, const io::FlowCurve& curve);
 
-/// A new flow curve (`add`'s swift or voce) on a model with Chaboche back
-/// stresses, carved by their saturated values so that the back stress does
-/// not come on top of it; `add` unchanged when the model has none.
-toml::table carved_curve(const sim::DrawBendSpec& s, toml::table add);
-
-/// The chaboche candidate's material keys: one back stress (X_sat [MPa],
-/// gamma) and the flow curve carved by it (carved_isotropic_part).
-toml::table chaboche_material(const sim::DrawBendSpec& s, double x_sat, double gamma);
+/// The chaboche candidate's edit: one back stress (X_sat [MPa], gamma) in place
+/// of any other kinematic part, the flow curve carved by it
+/// (carved_isotropic_part), and the type j2_combined unless the surface is Hill'48.
+void set_back_stress(io::MaterialSpec& m, double x_sat, double gamma);
 
 }  // namespace drawbend::modelloop

@@ -8,6 +8,8 @@
 //    or is one of the robustness decks whose material is wrong on purpose;
 //  - the builders' thesis default writes exactly the text the builders always
 //    wrote (so every default deck and its run cache stay the same);
+//  - the inline form (io::to_toml_inline) of every spec above reads back to
+//    the same spec through sim::material_choice;
 //  - numbers are written in their shortest round-trip form: 70000.0, 0.33,
 //    2.7e-9, 1e+20, 0.1;
 //  - a bad --material names "--material:1: material.voce.sigma0";
@@ -43,6 +45,9 @@ void round_trip(const io::MaterialSpec& spec, const std::string& what) {
   const io::MaterialSpec back = io::read_material(*parse_toml(text, what + " (written)")["material"].as_table(), what);
   BOOST_TEST((back == spec), what << " reads back to another spec:\n" << text);
   BOOST_TEST(io::to_toml(back) == text, what);
+  // The inline form (a builder spec's material text, the model loop's candidates) reads back the same.
+  const std::string inl = io::to_toml_inline(spec);
+  BOOST_TEST((sim::material_choice(inl, "unused.csv") == spec), what << " inline:\n" << inl);
 }
 }  // namespace
 

@@ -44,6 +44,7 @@
 #include "core/csv.hpp"
 #include "material/hardening_curve.hpp"
 #include "modelloop/model_loop.hpp"
+#include "sim/material_choice.hpp"
 
 using namespace drawbend;
 
@@ -84,7 +85,12 @@ BOOST_AUTO_TEST_CASE(spec_and_candidates) {
   BOOST_REQUIRE_EQUAL(c.members.size(), 2u);
   sim::DrawBendSpec t = base;
   c.members[1].apply(t);
-  BOOST_TEST(t.material == "{ type = \"j2_combined\", kinematic = { beta = 0.6 } }");
+  {  // the typed material the member wrote: j2_combined, beta 0.6, the spec's own flow curve
+    const io::MaterialSpec m = sim::material_choice(t.material, "own.csv");
+    BOOST_TEST((m.type == io::MaterialType::j2_combined));
+    BOOST_TEST(std::get<io::KinematicSplit>(m.kinematic.value()).beta == 0.6);
+    BOOST_TEST(std::get<io::CurveFile>(m.curve.value()).path == "own.csv");
+  }
   t = base;
   modelloop::named_candidate("ms:2500", "/data").members[0].apply(t);
   BOOST_TEST(t.mass_scaling == 2500.0);
