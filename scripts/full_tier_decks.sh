@@ -5,7 +5,8 @@
 # full tier).  Draw-bend cases: every quick-tier draw-bend deck of Chapters
 # 2-5 and 8 rebuilt by `drawbend drawbend-deck` with the full tier's mesh
 # (0.5 mm elements, 4 across; Chapter 2's *_fine cases 0.25 mm) and, for
-# Chapter 8, its mass scaling (625 at 100 mm/s: 2500 at its 50 mm/s);
+# Chapter 8, its mass scaling (625 at 100 mm/s: 2500 at its 50 mm/s) and
+# its run's material type (combined hardening where it had it);
 # Chapter 8's numerical studies (3 pins x mass scaling 10000/2500/625; 25.4
 # and 42 mm pins x 2/4/8 across at the quick tier's 40000)
 # and 6 more loop runs (Voce and Hill'48 after the back stress, 2 per pin).
@@ -26,9 +27,9 @@ db=$1 quick=$2 out=$3   # drawbend binary, a quick tier's build/chapters, output
 rm -rf "$out"; mkdir -p "$out"
 n=0
 deck() { n=$((n+1)); mkdir -p "$out/$1"; cat > "$out/$1/deck.toml"; }
-fb() {  # fb NAME PIN SPEED SLIDE MS EL ACROSS
+fb() {  # fb NAME PIN SPEED SLIDE MS EL ACROSS [MATERIAL: a [material] inline table; none: J2]
   "$db" drawbend-deck --name "$1" --pin-diameter "$2" --speed "$3" --draw-length "$4" --mass-scaling "$5" \
-        --element-length "$6" --across "$7" | deck "$1"
+        --element-length "$6" --across "$7" ${8:+--material "$8"} | deck "$1"
 }
 for d in "$quick"/ch2-fe-study/runs/*/ "$quick"/ch3-stribeck/runs/ch3_d*/ "$quick"/ch4-new-method/runs/*/ \
          "$quick"/ch5-measured/runs/*/ "$quick"/ch8-model-loop/runs/fb_*/; do
@@ -40,7 +41,10 @@ for d in "$quick"/ch2-fe-study/runs/*/ "$quick"/ch3-stribeck/runs/ch3_d*/ "$quic
   ms=$(grep -m1 '^mass_scaling' "$f" | sed -E 's/.*= *//')
   el=0.5; case $name in *_fine) el=0.25 ;; esac
   [ "$ch" = ch8-model-loop ] && ms=$(awk -v m="$ms" 'BEGIN{print m/16}')  # 625 at 100 mm/s instead of 1e4
-  fb "full_${ch}_$name" "$pin" "$speed" "$slide" "$ms" "$el" 4
+  # the run's material type and back stresses (its cost: sim/cost_model.hpp material_factor); its curve is not kept
+  mat=$(awk '/^\[material\]/{m=1;next} /^\[/{m=0} m&&/^(type|kinematic) = /' "$f" | paste -sd, -)
+  case $mat in *j2_combined*) mat="{ $mat }" ;; *) mat= ;; esac
+  fb "full_${ch}_$name" "$pin" "$speed" "$slide" "$ms" "$el" 4 "$mat"
 done
 f8=$(ls -d "$quick"/ch8-model-loop/runs/fb_*/ | head -1)
 for pin in 12.7 25.4 42; do

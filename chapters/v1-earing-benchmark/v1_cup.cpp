@@ -179,6 +179,12 @@ CupResult read_run(const std::string& dir, const RunSpec& spec) {
   r.hourglass_ratio = io::reduced(rows, "hourglass_ratio", where);
   r.balance_error = io::reduced(rows, "balance_error", where);
   r.added_mass_ratio = io::reduced(rows, "added_mass_ratio", where);
+  {  // the material's event counts, which the run writes to its summary (io/run_case.cpp)
+    const CsvTable sum = read_csv((fs::path(dir) / "summary.csv").string());
+    for (const auto& row : sum.rows)
+      if (const std::string& q = sum.text(row, "quantity"); q.rfind("material_", 0) == 0)
+        r.material_counts[q.substr(9)] = std::lround(sum.number(row, "value"));
+  }
   std::vector<double> X, Y, Z;  // the sheet's nodes at the end
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const auto& row = rows[k];

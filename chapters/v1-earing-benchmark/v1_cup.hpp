@@ -2,6 +2,7 @@
 // One ESAFORM 2021 cup (chapter v1-earing-benchmark): draw a quarter blank
 // with a material variant and measure the cup.  Units: mm, N, MPa, s.
 #include <array>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -57,6 +58,9 @@ struct CupResult {
   double rim_z_min = 0;  ///< lowest rim node at the end [mm]
   long cycles = 0;
   int elements = 0, layers = 0;
+  /// The material's event counts over the run, by name (the run's summary.csv rows material_<name>:
+  /// Yld2004-18p's plastic_updates, split_updates, fallback_updates; none for the other models).
+  std::map<std::string, long> material_counts;
 };
 
 /// Where the die shoulder ends and the flat die face under the holder begins [mm]: the die opening radius

@@ -5,8 +5,9 @@
 // time and memory; then the total CPU-hours and the makespan on N nodes of C
 // cores by the largest-first schedule of the case pool.  Where a folder holds
 // a finished run (summary.csv), its measured CPU time (run.log) and the ratio of
-// predicted to measured CPU time are listed too, with their median and worst:
-// how well the model predicts on this machine.
+// predicted to measured CPU time are listed too, with their median and worst,
+// over all runs, per case kind and per material type: how well the model
+// predicts on this machine.
 //
 //   drawbend plan build/chapters --nodes 4 --cores 2
 //   drawbend plan my.toml
@@ -132,7 +133,8 @@ int plan_command(int argc, char** argv) {
     r.measured_cpu = measured_cpu(d.parent_path());
     rows.push_back(r);
   }
-  std::cout << "deck,elements,cycles_predicted,cpu_s_predicted,memory_mb,cpu_s_measured,predicted_over_measured\n";
+  std::cout << "deck,elements,cycles_predicted,cpu_s_predicted,memory_mb,cpu_s_measured,predicted_over_measured,kind,"
+               "material\n";
   std::vector<double> cpu, ratio;
   for (const auto& r : rows) {
     cpu.push_back(r.p.cpu_seconds);
@@ -144,7 +146,7 @@ int plan_command(int argc, char** argv) {
     } else {
       std::cout << ",";
     }
-    std::cout << "\n";
+    std::cout << "," << (r.p.kind.empty() ? "draw-bend" : r.p.kind) << "," << r.p.material << "\n";
   }
   double total = 0;
   for (double c : cpu) total += c;
@@ -152,7 +154,11 @@ int plan_command(int argc, char** argv) {
             << "elements x predicted cycles x ns per element-cycle of the case's kind: draw-bend "
             << sim::ns_per_element_cycle("") << ", strip_draw " << sim::ns_per_element_cycle("strip_draw")
             << ", block_slide " << sim::ns_per_element_cycle("block_slide") << ", cup_draw "
-            << sim::ns_per_element_cycle("cup_draw") << ", earing_cup " << sim::ns_per_element_cycle("earing_cup") << ")\n";
+            << sim::ns_per_element_cycle("cup_draw") << ", earing_cup " << sim::ns_per_element_cycle("earing_cup")
+            << "; x material factor:";
+  for (const auto& m : sim::costed_materials())
+    std::cout << (m == sim::costed_materials().front() ? " " : ", ") << m << " " << sim::material_factor(m);
+  std::cout << ")\n";
   std::cout << "# makespan on " << nodes << " node(s) x " << cores << " core(s): "
             << fmt(sim::makespan_seconds(cpu, nodes, cores) / 60, 3) << " min (largest first)\n";
   ratio_line("predicted / measured CPU over", ratio);
@@ -162,6 +168,12 @@ int plan_command(int argc, char** argv) {
       by_kind[r.p.kind.empty() ? "draw-bend" : r.p.kind].push_back(r.p.cpu_seconds / r.measured_cpu);
   if (by_kind.size() > 1)
     for (auto& [kind, v] : by_kind) ratio_line("  " + kind + ":", v);
+  std::map<std::string, std::vector<double>> by_material;  // and per material type
+  for (const auto& r : rows)
+    if (std::isfinite(r.measured_cpu) && r.measured_cpu > 0)
+      by_material[r.p.material].push_back(r.p.cpu_seconds / r.measured_cpu);
+  if (by_material.size() > 1)
+    for (auto& [material, v] : by_material) ratio_line("  material " + material + ":", v);
   return 0;
 }
 

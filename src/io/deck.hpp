@@ -68,6 +68,7 @@ struct CostEstimate {
   double memory_mb = 0;    ///< mesh and solver state [MB]
   double mass_factor = 1;  ///< (physical + added mass) / physical mass
   double output_mb = 0;    ///< history.csv and the .vtu field frames [MB] (deck_limits.cpp)
+  std::string material;    ///< the sheet's [material] type (j2, j2_combined, hill48, yld2004, elastic): its update's cost
 };
 
 struct Deck {

@@ -84,6 +84,7 @@ bool check_memory(const DeckContext& c, const toml::node& where, const std::stri
 void check_cost(const DeckContext& c, const toml::table& root, Deck& d) {
   const fe::Model& m = d.model;
   if (!m.material || m.mesh.num_elements() == 0) return;
+  d.cost.material = root["material"]["type"].value_or(std::string());  // read and checked with the material
   const fe::Mesh& mesh = m.mesh;
   const double c_wave = m.material->wave_speed();
   double dt_min = INFINITY, phys = 0, scaled = 0;

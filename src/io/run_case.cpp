@@ -163,6 +163,11 @@ std::string write_summary(const observe::Run& run) {
           flog += "  warning: contact " + std::to_string(p) + " (" + m.contacts[p].tool + "): " + fmt(n, 12) + " " +
                   name + " (friction evaluated at the domain edge)\n";
       }
+  // The material's own event counts (material/material.hpp, event_counts: e.g. Yld2004-18p's returns), over
+  // the whole run; a restarted run's material counted only since the restart, so it writes none.
+  if (m.material && run.opt.restart.empty())
+    for (const auto& [name, n] : m.material->event_counts())
+      sum.row({"material_" + name, std::to_string(n), "point updates"});
   sum.save((std::filesystem::path(run.opt.out_dir) / "summary.csv").string());
   return flog;
 }

@@ -50,6 +50,8 @@ void Material::back_stress(const double* /*state*/, double alpha[6]) const {
 
 void Material::bind_lanes(LaneBinding& /*b*/) const {}
 
+std::vector<std::pair<std::string, long>> Material::event_counts() const { return {}; }
+
 double von_mises(const double s[6]) noexcept {
   const double p = (s[XX] + s[YY] + s[ZZ]) / 3.0;
   const double a = s[XX] - p, b = s[YY] - p, c = s[ZZ] - p;

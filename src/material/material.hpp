@@ -30,6 +30,8 @@
 // through bind_lanes() (material/lane_binding.hpp); the others run point by point.
 #include <cstddef>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "material/objectivity.hpp"
 
@@ -104,6 +106,12 @@ class Material {
   /// reads instead of asking for the model's type.  Default: none (the update
   /// runs point by point).  Out of line, as tangent_ratio.
   virtual void bind_lanes(LaneBinding& b) const;
+  /// Events of this instance's updates since it was built, by name (e.g. Yld2004-18p's plastic updates,
+  /// those that needed sub-increments and those that fell back to the radial scaling): the health of the
+  /// update over a run, written by the run to its summary.csv (io/run_case.cpp, rows material_<name>).
+  /// Counted whatever the thread, they change no result; for a deterministic run they are deterministic.
+  /// Default: none.  Out of line, as tangent_ratio.
+  virtual std::vector<std::pair<std::string, long>> event_counts() const;
 };
 
 /// Isotropic linear elastic constants and the derived moduli.  The constructor

@@ -14,7 +14,6 @@ constexpr int kMaxBackYld = 3;
 constexpr int kMaxIter = 60;     // iterations per (sub-)increment
 constexpr int kMaxSub = 256;     // at most this many sub-increments (1, 4, 16, 64, 256)
 constexpr double kTol = 1e-6;    // converged: |f| <= kTol R and 2 G x |n' - n| <= kTol R
-std::atomic<long> g_plastic{0}, g_split{0}, g_fallback{0};
 inline double contract(const double a[6], const double b[6]) {  // a : b, tensor shears
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2.0 * (a[3] * b[3] + a[4] * b[4] + a[5] * b[5]);
 }
@@ -186,9 +185,9 @@ void Yld2004Plasticity::update(const double deps[6], const Spin& spin, double si
       if (sb - isotropic_stress(ep + dl) > 0.0) ok = return_map(ts, an, ep, dl, sb, nt);
     }
   }
-  g_plastic.fetch_add(1, std::memory_order_relaxed);
-  if (!ok) g_fallback.fetch_add(1, std::memory_order_relaxed);
-  if (split_used) g_split.fetch_add(1, std::memory_order_relaxed);
+  counts_->plastic.fetch_add(1, std::memory_order_relaxed);
+  if (!ok) counts_->fallback.fetch_add(1, std::memory_order_relaxed);
+  if (split_used) counts_->split.fetch_add(1, std::memory_order_relaxed);
   if (!ok) {  // admissible fallback: the last iterate scaled radially onto the surface
     for (int c = 0; c < 6; ++c) {
       xi[c] = ts[c];
@@ -203,9 +202,14 @@ void Yld2004Plasticity::update(const double deps[6], const Spin& spin, double si
   state[0] = ep + dl;
 }
 
-Yld2004Plasticity::ReturnCounts Yld2004Plasticity::return_counts() {
-  return {g_plastic.load(std::memory_order_relaxed), g_split.load(std::memory_order_relaxed),
-          g_fallback.load(std::memory_order_relaxed)};
+Yld2004Plasticity::ReturnCounts Yld2004Plasticity::return_counts() const {
+  return {counts_->plastic.load(std::memory_order_relaxed), counts_->split.load(std::memory_order_relaxed),
+          counts_->fallback.load(std::memory_order_relaxed)};
+}
+
+std::vector<std::pair<std::string, long>> Yld2004Plasticity::event_counts() const {
+  const ReturnCounts c = return_counts();
+  return {{"plastic_updates", c.plastic}, {"split_updates", c.split}, {"fallback_updates", c.fallback}};
 }
 
 double Yld2004Plasticity::tangent_ratio(const double* sigma, const double* state) const {

@@ -39,6 +39,9 @@
 // scalar path (it does not override Material::bind_lanes; only J2Isotropic
 // and CombinedPlasticity have twins, in material/lanes/), so its results are the same bits for any thread count
 // and instruction set (the per-point update reads nothing outside its state).
+#include <atomic>
+#include <memory>
+
 #include "material/combined_plasticity.hpp"
 #include "material/hardening_curve.hpp"
 #include "material/material.hpp"
@@ -81,13 +84,15 @@ class Yld2004Plasticity final : public Material {
   /// The normalised parameter set in use, and the factor it was scaled by (1 for a normalised input).
   const Yld2004& yield() const { return yld_; }
   double scaled_by() const { return scale_; }
-  /// Plastic updates since the program started (every instance, every thread): all of them, those that
-  /// needed sub-increments, and those that fell back to the radial scaling (the return map's health in a run;
-  /// relaxed counters, they change no result).
+  /// Plastic updates of this instance since it was built (every thread): all of them, those that needed
+  /// sub-increments, and those that fell back to the radial scaling (the return map's health in a run;
+  /// relaxed counters, they change no result).  event_counts() gives them as plastic_updates,
+  /// split_updates, fallback_updates, which a run writes to its summary.csv.
   struct ReturnCounts {
     long plastic = 0, split = 0, fallback = 0;
   };
-  static ReturnCounts return_counts();
+  ReturnCounts return_counts() const;
+  std::vector<std::pair<std::string, long>> event_counts() const override;
 
  private:
   // One return from the local trial stress ts and back stresses an (sheet axes, modified in place) at
@@ -104,6 +109,11 @@ class Yld2004Plasticity final : public Material {
   int nback_;
   int ns_;
   double s0_;
+  // The counters, on a cache line of their own (the constants above are read by every thread).
+  struct alignas(64) Counters {
+    std::atomic<long> plastic{0}, split{0}, fallback{0};
+  };
+  std::unique_ptr<Counters> counts_ = std::make_unique<Counters>();
 };
 
 }  // namespace drawbend::material

@@ -344,3 +344,31 @@ BOOST_AUTO_TEST_CASE(set_up_check_refuses_bad_sets) {
                     std::invalid_argument);
   aniso().validate();  // a convex, closed set passes
 }
+
+// Event counts are the instance's own (Material::event_counts; a run writes them to summary.csv): along a
+// strain path, plastic_updates equals the number of updates in which eps_p grew (the trial point lay outside
+// the surface), split and fallback stay 0 for von Mises (one radial return converges), and a second instance
+// that made no update counts nothing.
+BOOST_AUTO_TEST_CASE(event_counts_are_per_instance) {
+  const auto curve = HardeningCurve::swift(498.8, 0.0089, 0.285);
+  const Yld2004Plasticity y(E, NU, RHO, curve, KinematicHardening{}, Yld2004::isotropic(2.0));
+  const Yld2004Plasticity other(E, NU, RHO, curve, KinematicHardening{}, Yld2004::isotropic(2.0));
+  V6 s{};
+  auto st = fresh(y);
+  long grew = 0;
+  for (int k = 0; k < 40; ++k) {
+    const double d[6] = {k % 10 < 7 ? 4e-4 : -4e-4, 0, 0, 0, 0, 0};  // loading, then unloading elastically
+    const double ep = st[0];
+    y.update(d, s.data(), st.data());
+    if (st[0] > ep) ++grew;
+  }
+  const auto n = y.event_counts();
+  BOOST_TEST(n.size() == 3u);
+  BOOST_TEST(n[0].first == "plastic_updates");
+  BOOST_TEST(n[0].second == grew);
+  BOOST_TEST(grew > 5);
+  BOOST_TEST(grew < 40);
+  BOOST_TEST(n[1].second == 0);
+  BOOST_TEST(n[2].second == 0);
+  for (const auto& [name, v] : other.event_counts()) BOOST_TEST(v == 0, name);
+}
