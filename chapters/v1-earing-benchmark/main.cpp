@@ -39,8 +39,9 @@ double g_stroke = 20.0;                      // punch travel [mm] (quick tier: t
 double g_ramp = 10;                          // punch travel of the speed ramp [mm]
 double g_polar = -1;                         // quarter_disk polar_radius [mm] (< 0: the deck's; 0: none)
 // Diagnostic runs (docs: results.md "Why the low-r cups tore"): a subset of the variants and process alternatives.
-std::string g_variants;                      // comma-separated variant ids (empty: all, the chapter's run)
-double g_gap = 0, g_holder_force = 0, g_mu = -1;
+std::string g_variants;
+std::string g_yld_set;                       // diagnostic run: the yld2004 variant's set from this TOML instead of the fit                      // comma-separated variant ids (empty: all, the chapter's run)
+double g_gap = 0, g_holder_force = 0, g_mu = -1, g_clearance = 0;
 bool g_voce = false;
 
 std::string fmt_list(const std::vector<std::pair<double, double>>& v) {
@@ -94,6 +95,11 @@ void body(study::Chapter& c) {
       material::load_yld2004_toml(c.data("materials/aa6016_t4_yld2004_postech2022.toml")).normalised();
   for (auto& v : vars)
     if (v.type == "yld2004") v.a = fit.raw.a, v.c1 = fit.raw.c1, v.c2 = fit.raw.c2;
+  if (!g_yld_set.empty()) {  // diagnostic: another parameter set (as written; the solver normalises it)
+    const material::Yld2004 alt = material::load_yld2004_toml(g_yld_set);
+    for (auto& v : vars)
+      if (v.type == "yld2004") v.a = alt.a, v.c1 = alt.c1, v.c2 = alt.c2;
+  }
   {
     const material::Hill48 h_r = material::Hill48::from_r_values(hr.r0, hr.r45, hr.r90);
     const material::Hill48 h_s = material::Hill48::from_stress_ratios(hsv.s45, hsv.s90, hsv.sb);
@@ -106,6 +112,24 @@ void body(study::Chapter& c) {
                                      "relative residual) and POSTECH's published Yld2004-18p; residual of the fit");
     for (std::size_t k = 1; k < rows.size(); ++k) cal.row(rows[k]);
     c.save(cal, "calibration");
+    // Between the tested angles, and the flange's pure shear that no test sees (results.md, "Where the
+    // 52.5 deg ear comes from"): every 7.5 deg.
+    std::vector<std::string> head{"angle_deg", "sigma_measured", "r_measured"};
+    for (const auto& m : models)
+      for (const char* q : {"sigma_", "r_", "flange_"}) head.push_back(q + m.name);
+    auto ang = c.table(head, "Every 7.5 deg from RD: the tests (where given) and each function's sigma_t/sigma_0, r_t and "
+                             "flange strain ratio -d eps_r/d eps_h under sigma_r = -sigma_h at that polar angle "
+                             "(1: no thickness change; below 1 the flange thickens)");
+    for (int k = 0; k <= 12; ++k) {
+      const double t = 7.5 * k;
+      const auto opt = [](double v) { return std::isnan(v) ? std::string() : fmt_fixed(v, 3); };
+      std::vector<std::string> row{fmt_shortest(t), opt(tests.uniaxial_stress(t)), opt(tests.r_value(t))};
+      for (const auto& m : models)
+        row.insert(row.end(), {fmt_fixed(m.uniaxial_ratio(t), 4), fmt_fixed(m.r_value(t), 4),
+                               fmt_fixed(m.flange_shear_ratio(t), 4)});
+      ang.row(row);
+    }
+    c.save(ang, "yield_angles");
     for (const auto& m : models) {
       c.value("rms_s_" + m.name, fmt(m.rms(tests, material::SheetDatum::uniaxial_stress), 3));
       c.value("rms_r_" + m.name, fmt(m.rms(tests, material::SheetDatum::uniaxial_r), 3));
@@ -124,6 +148,7 @@ void body(study::Chapter& c) {
   spec.polar_radius = g_polar;
   spec.ramp = g_ramp;
   spec.gap = g_gap, spec.holder_force = g_holder_force, spec.mu = g_mu, spec.voce = g_voce;
+  spec.clearance = g_clearance;
   if (spec.through < 3) throw InputError("--through: at least 3 elements through the thickness (issue 19)");
   // A full draw or a partial stroke?  By its area, the blank (r = 53.75 mm) makes a wall of about
   // (53.75^2 - 30.6^2) / (2 x 30.6) = 32 mm over the 30.6 mm mid-wall radius; its rim clears the die's shoulder
@@ -427,6 +452,8 @@ int main(int argc, char** argv) {
   ch.options().add(g_gap, "gap", "diagnostic run: holder-die gap [mm] (0: the published 1.04 mm)");
   ch.options().add(g_holder_force, "holder-force", "diagnostic run: holder force on the quarter blank [N] (0: the deck's; < 0: the holder held fixed at the gap)");
   ch.options().add(g_mu, "mu", "diagnostic run: Coulomb mu on every contact (< 0: the published 0.07)");
+  ch.options().add(g_clearance, "clearance", "diagnostic run: punch-die clearance [mm] (0: the published 1.2 mm; the die opening, shoulder and face move out)");
+  ch.options().add(g_yld_set, "yld2004-set", "diagnostic run: the Yld2004-18p variant's parameter set from this TOML (yld2004 = {a, c1, c2}) instead of the fit (empty: the fit)");
   ch.options().add(g_voce, "voce", "diagnostic run: the published Voce curve instead of Swift");
   return study::run_chapter(ch, argc, argv, body);
 }

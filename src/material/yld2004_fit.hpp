@@ -81,6 +81,11 @@ struct NamedYield {
   const Hill48* hill = nullptr;
   double predict(const SheetDatum& d) const;
   double rms(const SheetTests& t, SheetDatum::Kind k) const;
+  /// The function's uniaxial sigma_t / sigma_0, r_t and flange_shear_ratio (material/yield_points.hpp) at angle t
+  /// to RD [deg]: the curves between the tested angles, and the flange's pure-shear state that no sheet test sees.
+  double uniaxial_ratio(double angle_deg) const;
+  double r_value(double angle_deg) const;
+  double flange_shear_ratio(double angle_deg) const;
 };
 /// The table of every datum: header {datum, angle_deg, measured, weight, <model names>..., residual (the
 /// model at `residual_of` minus measured)}, one row per datum, numbers with 4 decimals.
