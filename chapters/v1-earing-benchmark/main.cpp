@@ -130,6 +130,32 @@ void body(study::Chapter& c) {
       ang.row(row);
     }
     c.save(ang, "yield_angles");
+    // The fit's local minima (its starts, grouped where they converged to the same set): how well each fits the
+    // tests, and the flange's shear ratio either side of 45 deg, where no test looks.
+    auto mins = c.table({"starts", "cost", "rms_sigma", "rms_r", "sigma_b", "sigma_ps0", "flange_37.5", "flange_52.5",
+                         "flange_90", "the_fit"},
+                        "The Yld2004-18p fit's converged starts, grouped by the set they reached, best cost first: cost "
+                        "(weighted squared relative residuals), RMS over sigma(theta)/sigma0 and r(theta), sigma_b and "
+                        "sigma_ps(0), and the flange strain ratio at 37.5, 52.5 and 90 deg");
+    std::vector<material::Yld2004Fit::Local> loc = fit.local;
+    std::stable_sort(loc.begin(), loc.end(), [](const auto& a, const auto& b) { return a.cost < b.cost; });
+    for (std::size_t i = 0; i < loc.size();) {
+      const material::NamedYield m{"m", &loc[i].yield, nullptr};
+      std::string starts;
+      std::size_t j = i;
+      for (; j < loc.size() && loc[j].cost - loc[i].cost < 1e-7 &&
+             std::abs(material::NamedYield{"n", &loc[j].yield, nullptr}.flange_shear_ratio(52.5) -
+                      m.flange_shear_ratio(52.5)) < 1e-4;
+           ++j)
+        starts += (starts.empty() ? "" : " ") + std::to_string(loc[j].start);
+      mins.row({starts, fmt_fixed(loc[i].cost, 5), fmt_fixed(m.rms(tests, material::SheetDatum::uniaxial_stress), 4),
+                fmt_fixed(m.rms(tests, material::SheetDatum::uniaxial_r), 4), fmt_fixed(loc[i].yield.biaxial_ratio(), 3),
+                fmt_fixed(loc[i].yield.plane_strain_ratio(0.0), 3), fmt_fixed(m.flange_shear_ratio(37.5), 3),
+                fmt_fixed(m.flange_shear_ratio(52.5), 3), fmt_fixed(m.flange_shear_ratio(90.0), 3),
+                i == 0 ? "yes" : ""});
+      i = j;
+    }
+    c.save(mins, "yld2004_minima");
     for (const auto& m : models) {
       c.value("rms_s_" + m.name, fmt(m.rms(tests, material::SheetDatum::uniaxial_stress), 3));
       c.value("rms_r_" + m.name, fmt(m.rms(tests, material::SheetDatum::uniaxial_r), 3));

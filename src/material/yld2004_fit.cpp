@@ -315,6 +315,7 @@ Yld2004Fit fit_yld2004(const SheetTests& tests, const FitWeights& w, double a) {
       const Yld2004 y = raw.normalised();
       y.validate();
       ++best.accepted;
+      best.local.push_back({s, cost, y});
       const double u[6] = {1, 0, 0, 0, 0, 0};
       if (cost < best.cost) best.yield = y, best.raw = raw, best.scale = raw.equivalent(u), best.cost = cost;
     } catch (const std::invalid_argument&) {

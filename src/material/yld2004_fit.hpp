@@ -63,6 +63,14 @@ struct Yld2004Fit {
   double scale = 1;  ///< sigma_bar of unit RD tension under raw
   double cost = 0;   ///< weighted sum of squared relative residuals
   int starts = 0, accepted = 0;  ///< starts tried, and those that converged to a valid set
+  /// Every accepted start's converged set (normalised), in start order: the local minima of the cost, which can
+  /// fit the tests about equally well and still differ where no test looks (Chapter v1, the flange's shear).
+  struct Local {
+    int start = 0;
+    double cost = 0;
+    Yld2004 yield;
+  };
+  std::vector<Local> local;
 };
 Yld2004Fit fit_yld2004(const SheetTests& tests, const FitWeights& w, double a = 8.0);
 

@@ -23,6 +23,7 @@
 //    to 1e-12.
 #define BOOST_TEST_MODULE yld2004_fit
 #include <boost/test/unit_test.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -83,6 +84,11 @@ BOOST_AUTO_TEST_CASE(fit_reproduces_data_of_a_known_set) {
   for (const auto& d : t.data) BOOST_TEST(std::abs(predict(f.yield, d) - d.value) <= 1e-6, d.label());
   BOOST_TEST(f.raw.c1[6] == 1.0);
   BOOST_TEST(f.raw.c2[7] == 1.0);
+  // every accepted start is listed, and the best of them is the fit
+  BOOST_TEST(f.local.size() == static_cast<std::size_t>(f.accepted));
+  double lowest = INFINITY;
+  for (const auto& l : f.local) lowest = std::min(lowest, l.cost);
+  BOOST_TEST(lowest == f.cost);
 }
 
 BOOST_AUTO_TEST_CASE(bad_rows_name_file_line_column) {
