@@ -58,7 +58,8 @@ struct Config {
   double polar = -1;                     ///< quarter_disk polar_radius [mm] (< 0: the deck's; 0: none)
   // Diagnostic runs (docs: results.md "Why the low-r cups tore"): a subset of the variants and process alternatives.
   std::string variants;  ///< comma-separated variant ids (empty: all, the chapter's run)
-  double gap = 0, holder_force = 0, mu = -1;
+  std::string yld_set;  ///< diagnostic run: the yld2004 variant's set from this TOML instead of the fit
+  double gap = 0, holder_force = 0, mu = -1, clearance = 0;
   bool voce = false;
 };
 
@@ -153,10 +154,59 @@ Variants read_variants(const CsvTable& vt, const Config& cfg) {
   return vs;
 }
 
+/// Step 1c: between the tested angles, and the flange's pure shear that no test sees (results.md, "Where the
+/// 52.5 deg ear comes from"); and the fit's local minima.
+void yield_between_angles(study::Chapter& c, const material::SheetTests& tests,
+                          const std::vector<material::NamedYield>& models, const material::Yld2004Fit& fit) {
+  // every 7.5 deg
+  std::vector<std::string> head{"angle_deg", "sigma_measured", "r_measured"};
+  for (const auto& m : models)
+    for (const char* q : {"sigma_", "r_", "flange_"}) head.push_back(q + m.name);
+  auto ang = c.table(head, "Every 7.5 deg from RD: the tests (where given) and each function's sigma_t/sigma_0, r_t and "
+                           "flange strain ratio -d eps_r/d eps_h under sigma_r = -sigma_h at that polar angle "
+                           "(1: no thickness change; below 1 the flange thickens)");
+  for (int k = 0; k <= 12; ++k) {
+    const double t = 7.5 * k;
+    const auto opt = [](double v) { return std::isnan(v) ? std::string() : fmt_fixed(v, 3); };
+    std::vector<std::string> row{fmt_shortest(t), opt(tests.uniaxial_stress(t)), opt(tests.r_value(t))};
+    for (const auto& m : models)
+      row.insert(row.end(), {fmt_fixed(m.uniaxial_ratio(t), 4), fmt_fixed(m.r_value(t), 4),
+                             fmt_fixed(m.flange_shear_ratio(t), 4)});
+    ang.row(row);
+  }
+  c.save(ang, "yield_angles");
+  // The fit's local minima (its starts, grouped where they converged to the same set): how well each fits the
+  // tests, and the flange's shear ratio either side of 45 deg, where no test looks.
+  auto mins = c.table({"starts", "cost", "rms_sigma", "rms_r", "sigma_b", "sigma_ps0", "flange_37.5", "flange_52.5",
+                       "flange_90", "the_fit"},
+                      "The Yld2004-18p fit's converged starts, grouped by the set they reached, best cost first: cost "
+                      "(weighted squared relative residuals), RMS over sigma(theta)/sigma0 and r(theta), sigma_b and "
+                      "sigma_ps(0), and the flange strain ratio at 37.5, 52.5 and 90 deg");
+  std::vector<material::Yld2004Fit::Local> loc = fit.local;
+  std::stable_sort(loc.begin(), loc.end(), [](const auto& a, const auto& b) { return a.cost < b.cost; });
+  for (std::size_t i = 0; i < loc.size();) {
+    const material::NamedYield m{"m", &loc[i].yield, nullptr};
+    std::string starts;
+    std::size_t j = i;
+    for (; j < loc.size() && loc[j].cost - loc[i].cost < 1e-7 &&
+           std::abs(material::NamedYield{"n", &loc[j].yield, nullptr}.flange_shear_ratio(52.5) -
+                    m.flange_shear_ratio(52.5)) < 1e-4;
+         ++j)
+      starts += (starts.empty() ? "" : " ") + std::to_string(loc[j].start);
+    mins.row({starts, fmt_fixed(loc[i].cost, 5), fmt_fixed(m.rms(tests, material::SheetDatum::uniaxial_stress), 4),
+              fmt_fixed(m.rms(tests, material::SheetDatum::uniaxial_r), 4), fmt_fixed(loc[i].yield.biaxial_ratio(), 3),
+              fmt_fixed(loc[i].yield.plane_strain_ratio(0.0), 3), fmt_fixed(m.flange_shear_ratio(37.5), 3),
+              fmt_fixed(m.flange_shear_ratio(52.5), 3), fmt_fixed(m.flange_shear_ratio(90.0), 3),
+              i == 0 ? "yes" : ""});
+    i = j;
+  }
+  c.save(mins, "yld2004_minima");
+}
+
 /// Step 1b: Yld2004-18p fitted to every published material test (drawbend calibrate's fit, equal weights on the
 /// relative residuals), set on the yld2004 variants, and the loop's before and after on those tests: measured,
 /// both Hill'48 calibrations, the fit, and POSTECH's published Yld2004-18p for the same sheet.
-void calibrate_yld2004(study::Chapter& c, Variants& vs) {
+void calibrate_yld2004(study::Chapter& c, Variants& vs, const Config& cfg) {
   const material::SheetTests tests = material::load_sheet_tests(c.data("materials/aa6016_t4_esaform2021.csv"));
   const material::FitWeights weights;
   const material::Yld2004Fit fit = material::fit_yld2004(tests, weights, 8.0);
@@ -164,6 +214,11 @@ void calibrate_yld2004(study::Chapter& c, Variants& vs) {
       material::load_yld2004_toml(c.data("materials/aa6016_t4_yld2004_postech2022.toml")).normalised();
   for (auto& v : vs.list)
     if (v.type == "yld2004") v.a = fit.raw.a, v.c1 = fit.raw.c1, v.c2 = fit.raw.c2;
+  if (!cfg.yld_set.empty()) {  // diagnostic: another parameter set (as written; the solver normalises it)
+    const material::Yld2004 alt = material::load_yld2004_toml(cfg.yld_set);
+    for (auto& v : vs.list)
+      if (v.type == "yld2004") v.a = alt.a, v.c1 = alt.c1, v.c2 = alt.c2;
+  }
   const v1::Variant &hr = vs.hr, &hsv = vs.hsv;
   const material::Hill48 h_r = material::Hill48::from_r_values(hr.r0, hr.r45, hr.r90);
   const material::Hill48 h_s = material::Hill48::from_stress_ratios(hsv.s45, hsv.s90, hsv.sb);
@@ -176,6 +231,7 @@ void calibrate_yld2004(study::Chapter& c, Variants& vs) {
                                    "relative residual) and POSTECH's published Yld2004-18p; residual of the fit");
   for (std::size_t k = 1; k < rows.size(); ++k) cal.row(rows[k]);
   c.save(cal, "calibration");
+  yield_between_angles(c, tests, models, fit);
   for (const auto& m : models) {
     c.value("rms_s_" + m.name, fmt(m.rms(tests, material::SheetDatum::uniaxial_stress), 3));
     c.value("rms_r_" + m.name, fmt(m.rms(tests, material::SheetDatum::uniaxial_r), 3));
@@ -197,6 +253,7 @@ v1::RunSpec run_spec(const Config& cfg) {
   spec.polar_radius = cfg.polar;
   spec.ramp = cfg.ramp;
   spec.gap = cfg.gap, spec.holder_force = cfg.holder_force, spec.mu = cfg.mu, spec.voce = cfg.voce;
+  spec.clearance = cfg.clearance;
   if (spec.through < 3) throw InputError("--through: at least 3 elements through the thickness (issue 19)");
   return spec;
 }
@@ -502,7 +559,7 @@ void body(study::Chapter& c, const Config& cfg) {
   const CsvTable vt = read_csv(c.data("benchmarks/esaform2021.csv"));  // 1. inputs
   const std::string deck = c.data("cases/esaform2021_cup.toml");
   Variants vs = read_variants(vt, cfg);
-  calibrate_yld2004(c, vs);  // 1b
+  calibrate_yld2004(c, vs, cfg);  // 1b
   const v1::RunSpec spec = run_spec(cfg);
   const bool drawn = drawn_out(spec);
   const Bounds b = state_bounds(c, deck, spec, vs);                      // 2
@@ -535,6 +592,8 @@ int main(int argc, char** argv) {
   o.add(cfg.gap, "gap", "diagnostic run: holder-die gap [mm] (0: the published 1.04 mm)");
   o.add(cfg.holder_force, "holder-force", "diagnostic run: holder force on the quarter blank [N] (0: the deck's; < 0: the holder held fixed at the gap)");
   o.add(cfg.mu, "mu", "diagnostic run: Coulomb mu on every contact (< 0: the published 0.07)");
+  o.add(cfg.clearance, "clearance", "diagnostic run: punch-die clearance [mm] (0: the published 1.2 mm; the die opening, shoulder and face move out)");
+  o.add(cfg.yld_set, "yld2004-set", "diagnostic run: the Yld2004-18p variant's parameter set from this TOML (yld2004 = {a, c1, c2}) instead of the fit (empty: the fit)");
   o.add(cfg.voce, "voce", "diagnostic run: the published Voce curve instead of Swift");
   return study::run_chapter(ch, argc, argv, [&cfg](study::Chapter& c) { body(c, cfg); });
 }

@@ -81,6 +81,14 @@ toml::table deck_table(const std::string& deck, const Variant& var, const RunSpe
         if (auto z = sf["z_min"].value<double>()) sf.insert_or_assign("z_min", *z + shift);
       }
     }
+    if (name == "die" && spec.clearance > 0) {  // widen the opening: cylinder, shoulder torus and face r_min move out
+      const double dr = spec.clearance - 1.2;
+      for (auto& sn : *t["surface"].as_array()) {
+        auto& sf = *sn.as_table();
+        for (const char* k : {"radius", "r_min"})
+          if (auto v = sf[k].value<double>()) sf.insert_or_assign(k, *v + dr);
+      }
+    }
     if (name == "holder" && spec.holder_force > 0) {  // force-driven (keeps the deck's stop, if any)
       t.insert_or_assign("drive", "force");
       t.insert_or_assign("direction", toml::array{0.0, 0.0, 1.0});

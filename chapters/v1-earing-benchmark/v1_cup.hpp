@@ -33,6 +33,9 @@ struct RunSpec {
   double holder_force = 0;  ///< > 0: holder force [N, quarter blank]; < 0: holder held fixed; 0: the deck's holder
   double mu = -1;           ///< >= 0: Coulomb mu on every contact (< 0: the deck's)
   bool voce = false;        ///< the published Voce curve instead of Swift
+  /// > 0: punch-die clearance [mm] (die opening radius minus the punch's 30 mm; 0: the deck's 1.2 mm); the die's
+  /// opening, shoulder and face move out radially together, the holder stays.
+  double clearance = 0;
 };
 
 struct CupResult {

@@ -13,6 +13,11 @@
 //    [0, 1] (extended to 256 when d eps_ww is still negative at 1) to 1e-14,
 //    then sigma_tt / sigma_0.  NaN when uniaxial tension along t does not
 //    contract across it (d eps_ww >= 0 at beta = 0).
+//  - the flange of a drawn cup at polar angle t to RD: radial tension and hoop
+//    compression of equal size (sigma_r = -sigma_h, the pure shear of the
+//    flange's inner part), and the strain ratio -d eps_r / d eps_h of the
+//    normal (1 for an isotropic sheet: no thickness change; below 1 the
+//    flange thickens there, above 1 it thins).
 #include <cmath>
 
 namespace drawbend::material::points {
@@ -78,6 +83,17 @@ double plane_strain_ratio(const F& f, double t) {
   tension(0.0, s0);
   stress(0.5 * (lo + hi), s);
   return f.equivalent(s0) / f.equivalent(s);
+}
+
+template <class F>
+double flange_shear_ratio(const F& f, double t) {
+  const double c = std::cos(t), q = std::sin(t);
+  // sigma = e_r e_r - e_h e_h with e_r = (c, q), e_h = (-q, c)
+  const double s[6] = {c * c - q * q, q * q - c * c, 0, 2.0 * c * q, 0, 0};
+  double n[6];
+  f.gradient(s, n);
+  const double er = n[0] * c * c + n[1] * q * q + 2.0 * n[3] * c * q;
+  return -er / across(n, t);
 }
 
 }  // namespace drawbend::material::points

@@ -268,6 +268,16 @@ double NamedYield::rms(const SheetTests& t, SheetDatum::Kind k) const {
   return yld ? rms_of(*yld, t, k) : rms_of(HillFn{*hill}, t, k);
 }
 
+double NamedYield::uniaxial_ratio(double t) const {
+  return yld ? points::uniaxial_ratio(*yld, t * kDeg) : points::uniaxial_ratio(HillFn{*hill}, t * kDeg);
+}
+double NamedYield::r_value(double t) const {
+  return yld ? points::r_value(*yld, t * kDeg) : points::r_value(HillFn{*hill}, t * kDeg);
+}
+double NamedYield::flange_shear_ratio(double t) const {
+  return yld ? points::flange_shear_ratio(*yld, t * kDeg) : points::flange_shear_ratio(HillFn{*hill}, t * kDeg);
+}
+
 std::vector<std::vector<std::string>> calibration_table(const SheetTests& t, const FitWeights& w,
                                                         const std::vector<NamedYield>& models, std::size_t residual_of) {
   std::vector<std::vector<std::string>> rows;
@@ -305,6 +315,7 @@ Yld2004Fit fit_yld2004(const SheetTests& tests, const FitWeights& w, double a) {
       const Yld2004 y = raw.normalised();
       y.validate();
       ++best.accepted;
+      best.local.push_back({s, cost, y});
       const double u[6] = {1, 0, 0, 0, 0, 0};
       if (cost < best.cost) best.yield = y, best.raw = raw, best.scale = raw.equivalent(u), best.cost = cost;
     } catch (const std::invalid_argument&) {

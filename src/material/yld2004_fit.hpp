@@ -63,6 +63,14 @@ struct Yld2004Fit {
   double scale = 1;  ///< sigma_bar of unit RD tension under raw
   double cost = 0;   ///< weighted sum of squared relative residuals
   int starts = 0, accepted = 0;  ///< starts tried, and those that converged to a valid set
+  /// Every accepted start's converged set (normalised), in start order: the local minima of the cost, which can
+  /// fit the tests about equally well and still differ where no test looks (Chapter v1, the flange's shear).
+  struct Local {
+    int start = 0;
+    double cost = 0;
+    Yld2004 yield;
+  };
+  std::vector<Local> local;
 };
 Yld2004Fit fit_yld2004(const SheetTests& tests, const FitWeights& w, double a = 8.0);
 
@@ -81,6 +89,11 @@ struct NamedYield {
   const Hill48* hill = nullptr;
   double predict(const SheetDatum& d) const;
   double rms(const SheetTests& t, SheetDatum::Kind k) const;
+  /// The function's uniaxial sigma_t / sigma_0, r_t and flange_shear_ratio (material/yield_points.hpp) at angle t
+  /// to RD [deg]: the curves between the tested angles, and the flange's pure-shear state that no sheet test sees.
+  double uniaxial_ratio(double angle_deg) const;
+  double r_value(double angle_deg) const;
+  double flange_shear_ratio(double angle_deg) const;
 };
 /// The table of every datum: header {datum, angle_deg, measured, weight, <model names>..., residual (the
 /// model at `residual_of` minus measured)}, one row per datum, numbers with 4 decimals.

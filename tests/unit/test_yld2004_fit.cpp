@@ -15,8 +15,15 @@
 //    a zero of the cost; the fit need not find the same coefficients, since
 //    several sets share these 17 numbers).
 //  - load_sheet_tests refuses a bad row naming file:line: column.
+//  - The flange's strain ratio -d eps_r / d eps_h under sigma_r = -sigma_h
+//    (NamedYield::flange_shear_ratio): 1 at every angle for an isotropic
+//    function (von Mises, isotropic Yld2004 a = 8: pure shear changes no
+//    thickness); for Hill'48 at 0 deg (G + 2H) / (F + 2H) and at 90 deg
+//    (F + 2H) / (G + 2H) (the normal of diag(1, -1) is (G + 2H, -(F + 2H)));
+//    to 1e-12.
 #define BOOST_TEST_MODULE yld2004_fit
 #include <boost/test/unit_test.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -77,6 +84,11 @@ BOOST_AUTO_TEST_CASE(fit_reproduces_data_of_a_known_set) {
   for (const auto& d : t.data) BOOST_TEST(std::abs(predict(f.yield, d) - d.value) <= 1e-6, d.label());
   BOOST_TEST(f.raw.c1[6] == 1.0);
   BOOST_TEST(f.raw.c2[7] == 1.0);
+  // every accepted start is listed, and the best of them is the fit
+  BOOST_TEST(f.local.size() == static_cast<std::size_t>(f.accepted));
+  double lowest = INFINITY;
+  for (const auto& l : f.local) lowest = std::min(lowest, l.cost);
+  BOOST_TEST(lowest == f.cost);
 }
 
 BOOST_AUTO_TEST_CASE(bad_rows_name_file_line_column) {
@@ -97,4 +109,19 @@ BOOST_AUTO_TEST_CASE(bad_rows_name_file_line_column) {
     }
     BOOST_TEST(msg.find(want) != std::string::npos, row << " -> " << msg);
   }
+}
+
+BOOST_AUTO_TEST_CASE(flange_shear_ratio_closed_form) {
+  const Hill48 vm = Hill48::von_mises();
+  const Yld2004 iso = Yld2004::isotropic(8.0);
+  const Hill48 h = Hill48::from_r_values(0.525, 0.248, 0.429);
+  const NamedYield nvm{"vm", nullptr, &vm}, niso{"iso", &iso, nullptr}, nh{"h", nullptr, &h};
+  for (double t = 0; t <= 90.0; t += 7.5) {
+    BOOST_TEST(std::abs(nvm.flange_shear_ratio(t) - 1.0) < 1e-12, t);
+    BOOST_TEST(std::abs(niso.flange_shear_ratio(t) - 1.0) < 1e-12, t);
+  }
+  BOOST_TEST(std::abs(nh.flange_shear_ratio(0.0) - (h.G + 2 * h.H) / (h.F + 2 * h.H)) < 1e-12);
+  BOOST_TEST(std::abs(nh.flange_shear_ratio(90.0) - (h.F + 2 * h.H) / (h.G + 2 * h.H)) < 1e-12);
+  BOOST_TEST(std::abs(nh.r_value(45.0) - 0.248) < 1e-12);
+  BOOST_TEST(std::abs(nh.uniaxial_ratio(0.0) - 1.0) < 1e-12);
 }
