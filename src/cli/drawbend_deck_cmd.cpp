@@ -62,8 +62,9 @@ int drawbend_deck_command(int argc, char** argv) {
           "(data/materials/*.toml)");
   opt.add(s.strip_direction, "strip-direction", "the strip's axis is the rolling direction (rd) or the transverse one (td)");
   opt.add(s.bend_inlet_slides, "bend-inlet-slides",
-          "step 1 (bend) with the inlet end sliding under the back tension (true) or clamped (false), which "
-          "stretches the strip by about 1 % before the test (docs/issue51-large-pin.md)");
+          "step 1 (bend) with the inlet end sliding under the back tension (true, the default since issue 51) or "
+          "clamped (false, the decks before it, for reproduction), which stretches the strip by about 1.3 % before "
+          "the test (docs/issue51-large-pin.md)");
   opt.add(s.plane_strain_width, "plane-strain-width",
           "hold the strip's free edge across the width in every step (true: plane strain, the width condition of "
           "plane-strain beam theory) or leave it free as on the real strip (false)");

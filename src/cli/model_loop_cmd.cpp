@@ -117,6 +117,9 @@ int model_loop_command(int argc, char** argv, const char* name) {
           "base mass scaling (0: the quick tier's 1e4 at 100 mm/s scaled by (100/v)^2 at --speed, 4e4 at 50 mm/s)");
   opt.add(s.element_length, "element-length", "element length along the strip [mm]");
   opt.add(s.across, "across", "elements across the half width");
+  opt.add(s.bend_inlet_slides, "bend-inlet-slides",
+          "bend step with the inlet end sliding under the back tension (true, the default) or clamped as before "
+          "issue 51 (false, for reproduction)");
   opt.add(s.hardening, "hardening", "hardening curve CSV of the base (isotropic) model");
   int threads = 0;
   opt.add(threads, "threads",

@@ -8,10 +8,11 @@
 // (y = 0 plane), thickness 1.04 mm, a pin of diameter D with a 90 deg wrap,
 // and the thesis's three steps:
 //   1. "bend":    the outlet end moves on a circle and bends the straight
-//                 strip round the pin; the inlet end is clamped (Sec. 4.2),
-//                 which stretches the strip by ~1.3 % on the way, or, with
-//                 bend_inlet_slides, slides along the strip under the back
-//                 tension so that the strip is drawn in, not stretched;
+//                 strip round the pin; the inlet end slides along the strip
+//                 under the back tension so that the strip is drawn in, not
+//                 stretched (bend_inlet_slides, the default), or is clamped
+//                 (Sec. 4.2; the decks before issue 51), which stretches the
+//                 strip by ~1.3 % on the way;
 //   2. "tension": back tension ramped on the inlet end (held from step 1 if
 //                 it slides), outlet held, with dynamic relaxation so that
 //                 step 3 starts quiet;
@@ -54,20 +55,22 @@ struct DrawBendSpec {
   int snapshots = 4;            ///< contact maps / VTU snapshots in the draw step
   /// Step 1 with the inlet end sliding along the strip (x) under the back
   /// tension, ramped over the first half of the step, which lasts 3 times as
-  /// long as the clamped one.  false (the default, every chapter's decks so
-  /// far; Sec. 4.2 says the inlet end was fixed while the strip was bent
-  /// "loosely"): the inlet end is clamped, and the outlet end's circle about
-  /// (a, a), which keeps the strip's length only at its end, needs up to 1.1
-  /// mm more strip on the way (2.3 % of the outlet part at 30 deg on the 42
-  /// mm pin): the whole strip is stretched plastically by about 1.3 % (0.65 %
-  /// thinner) before the test, which hardens the material that later enters
-  /// the bend (issue 51: the source of the F_B excess over beam theory,
-  /// largest where the bending strain is smallest).  true: the strip is drawn
-  /// in instead, and F_B on the 42 mm pin is within 3 % of beam theory
-  /// (verification drawbend_prestretch.*).  Sliding free of tension, or at
-  /// the clamped step's pace, leaves the strip loose on the pin and it snaps
-  /// taut later, which yields the inlet leg instead (docs/issue51-large-pin.md).
-  bool bend_inlet_slides = false;
+  /// long as the clamped one.  true (the default of every chapter's decks
+  /// since issue 51): the strip is drawn in, not stretched, the inlet leg
+  /// stays elastic until it bends, and F_B on the 42 mm pin is within 3 % of
+  /// beam theory (verification drawbend_prestretch.*).  false (the decks
+  /// before issue 51, kept for reproduction; Sec. 4.2 says the inlet end was
+  /// fixed while the strip was bent "loosely"): the inlet end is clamped, and
+  /// the outlet end's circle about (a, a), which keeps the strip's length only
+  /// at its end, needs up to 1.1 mm more strip on the way (2.3 % of the outlet
+  /// part at 30 deg on the 42 mm pin): the whole strip is stretched
+  /// plastically by about 1.3 % (0.65 % thinner) before the test, which
+  /// hardens the material that later enters the bend (the source of the F_B
+  /// excess over beam theory, largest where the bending strain is smallest).
+  /// Sliding free of tension, or at the clamped step's pace, leaves the strip
+  /// loose on the pin and it snaps taut later, which yields the inlet leg
+  /// instead (docs/issue51-large-pin.md).
+  bool bend_inlet_slides = true;
   /// The strip's free edge (the set ymax) held in y in every step: plane
   /// strain across the width, the width condition of plane-strain beam
   /// theory (analysis::bend_unbend's default constraint) and of 2-D

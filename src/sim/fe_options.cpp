@@ -30,6 +30,9 @@ void add_fe_options(Options& o, DrawBendSpec& base, bool& run_fe, bool& reuse_ru
   o.add(base.across, "fe-across", "elements across the half width");
   o.add(base.through, "fe-through", "elements through the thickness");
   o.add(base.mass_scaling, "fe-mass-scaling", "mass scaling at 100 mm/s (scaled by (100/v)^2 at speed v)");
+  o.add(base.bend_inlet_slides, "fe-bend-inlet-slides",
+        "bend step with the inlet end sliding under the back tension (true) or clamped as before issue 51 (false, "
+        "for reproduction: it pre-stretches the strip ~1.3 %)");
 }
 
 }  // namespace drawbend::sim

@@ -29,8 +29,10 @@ void set_quick_mesh(DrawBendSpec& s);
 DrawBendSpec quick_deck_spec();
 
 /// Set the quick-tier mesh on `base` and register --fe, --reuse-runs,
-/// --fe-element-length, --fe-across, --fe-through and --fe-mass-scaling
-/// (--fe and --reuse-runs take true or false).
+/// --fe-element-length, --fe-across, --fe-through, --fe-mass-scaling and
+/// --fe-bend-inlet-slides (--fe, --reuse-runs and --fe-bend-inlet-slides take
+/// true or false; --fe-bend-inlet-slides false reproduces the clamped bend
+/// step of the decks before issue 51).
 void add_fe_options(Options& o, DrawBendSpec& base, bool& run_fe, bool& reuse_runs);
 
 }  // namespace drawbend::sim
