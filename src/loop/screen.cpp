@@ -245,12 +245,16 @@ int sequential_decision(int k, int b, double thr, double conf) {
 std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands, const std::vector<double>& resid,
                                              const Folds& f, int permutations, std::uint64_t seed, double alpha,
                                              const ScreenContext* ctx) {
-  std::vector<CandidateResult> out;
+  // One result per candidate, in the candidates' order whatever thread screens
+  // it (each candidate has its own random streams): the same for any count.
+  std::vector<CandidateResult> out(cands.size());
   const double thr = alpha / std::max<size_t>(1, cands.size());
   const size_t n = resid.size();
   int nblocks = 0;
   for (int b : f.block) nblocks = std::max(nblocks, b + 1);
   const bool weighted = ctx && ctx->mu_weight.size() == n;
+  const int nth = ctx ? std::max(1, ctx->threads) : 1;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nth) if (nth > 1 && cands.size() > 1)
   for (size_t ci = 0; ci < cands.size(); ++ci) {
     const Candidate& c = cands[ci];
     std::vector<int> rows;
@@ -267,7 +271,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     res.decision = "not significant";
     if (distinct.size() < 2) {
       res.p_value = 1;
-      out.push_back(res);
+      out[ci] = std::move(res);
       continue;
     }
     if (is_identity(c.name)) {  // random effect: one-way ANOVA of tests within blocks
@@ -297,7 +301,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
       }
       res.significant = res.p_value <= thr;
       res.decision = res.significant ? "significant (between-test scatter)" : "not significant";
-      out.push_back(res);
+      out[ci] = std::move(res);
       continue;
     }
     // Row values: z-score (numeric) and level index (categorical; numeric with
@@ -435,7 +439,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     res.dof = dof_max;
     if (probes.empty()) {
       res.p_value = 1;
-      out.push_back(res);
+      out[ci] = std::move(res);
       continue;
     }
     // Statistic: the family's largest probe on a common scale.  Each probe's
@@ -514,7 +518,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     }
     if (probes.empty()) {
       res.p_value = 1;
-      out.push_back(res);
+      out[ci] = std::move(res);
       continue;
     }
     int best = 0, best_sub = 0;
@@ -593,7 +597,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     res.significant = dec > 0 && res.cv_reduction > 0;
     res.decision = dec > 0 ? (res.cv_reduction > 0 ? "significant" : "significant, no held-out gain")
                            : dec < 0 ? "not significant" : "undecided";
-    out.push_back(res);
+    out[ci] = std::move(res);
   }
   std::stable_sort(out.begin(), out.end(), [](const CandidateResult& a, const CandidateResult& b) {
     if (a.significant != b.significant) return a.significant;
