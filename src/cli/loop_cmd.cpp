@@ -106,7 +106,7 @@ int loop_main(int argc, char** argv) {
   opt.add(lo.alpha, "alpha", "family-wise significance level (Bonferroni over candidates)");
   opt.add(lo.max_steps, "max-steps", "maximum number of effects to add");
   opt.add(lo.cell_probes, "cell-probes", "opt-in (development): screen and forms for effects confined to one pin, speed, direction or lubricant");
-  opt.add(threads, "threads", "threads of the screen (candidates at once) and of the fits' matrix products (0: one, the default; results identical for any count)");
+  opt.add(threads, "threads", "threads of the screen, candidates screened at once (0: one, the default; results identical for any count; the fits run on one thread)");
   // Every number range-checked as it is parsed (issue 53: --folds 0 ended on a
   // floating-point exception, --folds 1, negative permutations and alpha
   // outside (0, 1) ran and concluded differently).  Folds: at least 2 (one
