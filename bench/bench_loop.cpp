@@ -9,9 +9,11 @@
 //    text, rows in run order.  The coil column has 42 levels, so the loop
 //    fits a 41-parameter group factor; before the sparse Jacobian (issue 50
 //    item 6) this form took 3.7x the bench form's CPU on one thread.
-// One thread (Eigen's products; the loop's default).  Writes
+// One thread (Eigen's products; the loop's default; --threads N screens N
+// candidates at once, CPU seconds then summed over threads).  Writes
 // build/bench/loop_cost.csv: form, rows, wall seconds, CPU seconds, steps,
-// and the Jacobian row evaluations.  Never a timed test.
+// and the Jacobian row evaluations; --data DIR also writes each form's rows
+// (FORM.csv) for timing `drawbend loop` itself.  Never a timed test.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -27,6 +29,7 @@
 #include "core/options.hpp"
 #include "loop/least_squares.hpp"
 #include "loop/loop.hpp"
+#include "loop/measured.hpp"
 #include "loop/synth.hpp"
 
 using namespace drawbend;
@@ -66,10 +69,14 @@ void lab_style(Dataset& d) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string out = "bench/loop_cost.csv", summaries;
+  std::string out = "bench/loop_cost.csv", summaries, forms = "bench,lab-style", data;
+  int threads = 1;
   Options opt("bench_loop", "make bench: the measured-data loop on 50,000 synthetic rows (wall and CPU seconds)");
   opt.add(out, "out", "results CSV");
   opt.add(summaries, "summaries", "directory for each form's loop_summary.json (empty: none); compare before/after a speed change");
+  opt.add(forms, "forms", "the forms run: bench, lab-style or both (comma-separated)");
+  opt.add(threads, "threads", "threads of the loop's screen (LoopOptions::threads; CPU seconds are all threads')");
+  opt.add(data, "data", "directory to write each form's rows to as FORM.csv (drawbend loop's input; empty: none)");
   try {
     if (!opt.parse(argc, argv)) return 0;
   } catch (const std::invalid_argument& e) {
@@ -84,6 +91,7 @@ int main(int argc, char** argv) {
   w.comment(" drawbend loop on 50,000 synthetic rows, one thread; goal from issue 21 (10 s on one core)");
   Eigen::setNbThreads(1);
   for (const std::string form : {"bench", "lab-style"}) {
+    if (("," + forms + ",").find("," + form + ",") == std::string::npos) continue;
     SynthOptions so;
     so.effect = form == "bench" ? "drift" : "batch";
     so.noise_N = 5;
@@ -93,7 +101,12 @@ int main(int argc, char** argv) {
     SynthTruth truth;
     Dataset d = synthesize(so, maps, truth);
     if (form == "lab-style") lab_style(d);
+    if (!data.empty()) {
+      std::filesystem::create_directories(data);
+      write_measured((std::filesystem::path(data) / (form + ".csv")).string(), d);
+    }
     LoopOptions lo;
+    lo.threads = threads;
     lo.progress = true;
     const long long e0 = lm_jacobian_row_evaluations();
     const auto t0 = std::chrono::steady_clock::now();

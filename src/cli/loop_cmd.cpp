@@ -106,7 +106,7 @@ int loop_main(int argc, char** argv) {
   opt.add(lo.alpha, "alpha", "family-wise significance level (Bonferroni over candidates)");
   opt.add(lo.max_steps, "max-steps", "maximum number of effects to add");
   opt.add(lo.cell_probes, "cell-probes", "opt-in (development): screen and forms for effects confined to one pin, speed, direction or lubricant");
-  opt.add(threads, "threads", "threads of the fits' matrix products (0: one, the default: more never paid on a busy machine)");
+  opt.add(threads, "threads", "threads of the screen, candidates screened at once (0: one, the default; results identical for any count; the fits run on one thread)");
   // Every number range-checked as it is parsed (issue 53: --folds 0 ended on a
   // floating-point exception, --folds 1, negative permutations and alpha
   // outside (0, 1) ran and concluded differently).  Folds: at least 2 (one
@@ -147,13 +147,14 @@ int loop_main(int argc, char** argv) {
   return with_exit_codes([&] {
     if (!opt.parse(argc - 1, argv + 1)) return 0;
     apply_threads(threads);
-    // The loop's only parallel code is Eigen's matrix products (no OpenMP of
-    // its own), under 1 % of its time on one thread (perf, 50,000 rows,
-    // 2026-12-01), while on a busy machine Eigen's OpenMP threads spin against
-    // the other load: a 1,455-row set took 4.2 s with two threads against
-    // 0.77 s with one (issue 50, item 6).  So the default is one thread, and
-    // --threads N > 0 gives Eigen N.
-    Eigen::setNbThreads(threads > 0 ? threads : 1);
+    // Eigen's matrix products stay on one thread: under 1 % of the loop's time
+    // (perf, 50,000 rows, 2026-12-01), while on a busy machine its OpenMP
+    // threads spin against the other load (a 1,455-row set took 4.2 s with two
+    // threads against 0.77 s with one; a 12,360-row set 8.2 s CPU against 3.8,
+    // issue 50 item 6).  --threads N > 1 screens N candidates at once
+    // (rank_candidates; results identical for any N); the default is one.
+    Eigen::setNbThreads(1);
+    lo.threads = threads > 0 ? threads : 1;  // the screen's candidates (issue 50 item 6)
     const BendingSource bsrc = bending_source(bending);  // throws on an unknown name
     // A --figures folder given is checked before the analysis (before, a
     // missing folder gave "figures could not be drawn ('gnuplot' failed or is

@@ -137,6 +137,8 @@ struct ScreenContext {
   /// The one-cell sub-probes (off by default: development only, see
   /// LoopOptions::cell_probes; off, the screen is exactly the one before them).
   bool one_cell = false;
+  /// Threads screening candidates at once (results identical for any count).
+  int threads = 1;
 };
 
 /// Clopper-Pearson decision of a permutation p-value with k exceedances in b

@@ -67,6 +67,8 @@ struct LoopOptions {
   /// Opt-in (--cell-probes; development, not yet scored on enough data): the
   /// screen's one-cell sub-probes and the forms confined to one cell.
   bool cell_probes = false;
+  /// Threads of the screen (candidates screened at once; the same results for any count).
+  int threads = 1;
 };
 
 struct Step {

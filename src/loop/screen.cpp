@@ -47,6 +47,13 @@ struct ProbeDef {
   std::vector<int> row_stratum;
   mutable std::vector<double> s1, s2, s3, s4, c1, c2;
   int nsub() const { return cells ? 1 + ngroups : 1; }
+  // s4 = rows per stratum (sum of un in unit order): it does not depend on the
+  // permutation, so it is summed once, on the first eval.
+  void count_per_stratum() const {
+    if (s4.size() == static_cast<size_t>(nstrata)) return;
+    s4.assign(nstrata, 0.0);
+    for (size_t u = 0; u < un.size(); ++u) s4[stratum[u]] += un[u];
+  }
   // Explained sums of squares of every sub-probe with the unit values xz (z-score) and xl (level).
   void eval(const std::vector<double>& xz, const std::vector<int>& xl, double* out) const {
     const size_t U = ur.size();
@@ -57,9 +64,11 @@ struct ProbeDef {
         const bool w = shape == Shape::wlevels;
         s1.assign(static_cast<size_t>(nstrata) * nlev, 0.0);
         s2.assign(s1.size(), 0.0);
+        const double* a = w ? urw.data() : ur.data();
+        const double* b = w ? uw2.data() : un.data();
         for (size_t u = 0; u < U; ++u) {
           const size_t k = static_cast<size_t>(stratum[u]) * nlev + static_cast<size_t>(xl[u]);
-          s1[k] += w ? urw[u] : ur[u], s2[k] += w ? uw2[u] : un[u];
+          s1[k] += a[u], s2[k] += b[u];
         }
         double e = 0;
         for (size_t k = 0; k < s1.size(); ++k)
@@ -83,10 +92,13 @@ struct ProbeDef {
         return;
       }
       case Shape::slopes: {  // one centred slope per stratum
-        s1.assign(nstrata, 0.0), s2.assign(nstrata, 0.0), s3.assign(nstrata, 0.0), s4.assign(nstrata, 0.0);
-        for (size_t u = 0; u < U; ++u) {
+        s1.assign(nstrata, 0.0), s2.assign(nstrata, 0.0), s3.assign(nstrata, 0.0);
+        count_per_stratum();  // s4: rows per stratum, the same under every permutation
+        for (size_t u = 0; u < U;) {  // a run of units in one stratum: its sums held in registers
           const int s = stratum[u];
-          s1[s] += un[u] * xz[u], s2[s] += un[u] * xz[u] * xz[u], s3[s] += xz[u] * ur[u], s4[s] += un[u];
+          double a1 = s1[s], a2 = s2[s], a3 = s3[s];
+          for (; u < U && stratum[u] == s; ++u) a1 += un[u] * xz[u], a2 += un[u] * xz[u] * xz[u], a3 += xz[u] * ur[u];
+          s1[s] = a1, s2[s] = a2, s3[s] = a3;
         }
         double e = 0;
         if (cells) c1.assign(G, 0.0), c2.assign(G, 0.0);
@@ -107,13 +119,19 @@ struct ProbeDef {
         return;
       }
       case Shape::quad: {  // z and z^2, centred per stratum
-        s1.assign(nstrata, 0.0), s2.assign(nstrata, 0.0), s4.assign(nstrata, 0.0);
+        s1.assign(nstrata, 0.0), s2.assign(nstrata, 0.0);
+        count_per_stratum();
         double q11 = 0, q12 = 0, q22 = 0, b1 = 0, b2 = 0;
-        for (size_t u = 0; u < U; ++u) {
-          const double x = xz[u], x2 = x * x, n = un[u];
-          q11 += n * x2, q12 += n * x2 * x, q22 += n * x2 * x2;
-          s1[stratum[u]] += n * x, s2[stratum[u]] += n * x2, s4[stratum[u]] += n;
-          b1 += x * ur[u], b2 += x2 * ur[u];
+        for (size_t u = 0; u < U;) {  // runs of one stratum, as in slopes
+          const int s = stratum[u];
+          double a1 = s1[s], a2 = s2[s];
+          for (; u < U && stratum[u] == s; ++u) {
+            const double x = xz[u], x2 = x * x, n = un[u];
+            q11 += n * x2, q12 += n * x2 * x, q22 += n * x2 * x2;
+            a1 += n * x, a2 += n * x2;
+            b1 += x * ur[u], b2 += x2 * ur[u];
+          }
+          s1[s] = a1, s2[s] = a2;
         }
         for (int k = 0; k < nstrata; ++k)
           if (s4[k] > 0) q11 -= s1[k] * s1[k] / s4[k], q12 -= s1[k] * s2[k] / s4[k], q22 -= s2[k] * s2[k] / s4[k];
@@ -227,12 +245,16 @@ int sequential_decision(int k, int b, double thr, double conf) {
 std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands, const std::vector<double>& resid,
                                              const Folds& f, int permutations, std::uint64_t seed, double alpha,
                                              const ScreenContext* ctx) {
-  std::vector<CandidateResult> out;
+  // One result per candidate, in the candidates' order whatever thread screens
+  // it (each candidate has its own random streams): the same for any count.
+  std::vector<CandidateResult> out(cands.size());
   const double thr = alpha / std::max<size_t>(1, cands.size());
   const size_t n = resid.size();
   int nblocks = 0;
   for (int b : f.block) nblocks = std::max(nblocks, b + 1);
   const bool weighted = ctx && ctx->mu_weight.size() == n;
+  const int nth = ctx ? std::max(1, ctx->threads) : 1;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nth) if (nth > 1 && cands.size() > 1)
   for (size_t ci = 0; ci < cands.size(); ++ci) {
     const Candidate& c = cands[ci];
     std::vector<int> rows;
@@ -249,7 +271,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     res.decision = "not significant";
     if (distinct.size() < 2) {
       res.p_value = 1;
-      out.push_back(res);
+      out[ci] = std::move(res);
       continue;
     }
     if (is_identity(c.name)) {  // random effect: one-way ANOVA of tests within blocks
@@ -279,7 +301,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
       }
       res.significant = res.p_value <= thr;
       res.decision = res.significant ? "significant (between-test scatter)" : "not significant";
-      out.push_back(res);
+      out[ci] = std::move(res);
       continue;
     }
     // Row values: z-score (numeric) and level index (categorical; numeric with
@@ -417,7 +439,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     res.dof = dof_max;
     if (probes.empty()) {
       res.p_value = 1;
-      out.push_back(res);
+      out[ci] = std::move(res);
       continue;
     }
     // Statistic: the family's largest probe on a common scale.  Each probe's
@@ -496,7 +518,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     }
     if (probes.empty()) {
       res.p_value = 1;
-      out.push_back(res);
+      out[ci] = std::move(res);
       continue;
     }
     int best = 0, best_sub = 0;
@@ -548,10 +570,22 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     size_t kmax = 1;
     for (const auto& g : groups) kmax = std::max(kmax, g.size());
     const FastMod mod(kmax);  // mod(rng(), k) == rng() % k, without the division
+    // A group of consecutive units (rows of a test, in file order) is shuffled
+    // in place without reading its unit list: the same draws, the same swaps.
+    std::vector<char> run(groups.size(), 1);
+    for (size_t gi = 0; gi < groups.size(); ++gi)
+      for (size_t k = 1; k < groups[gi].size(); ++k) run[gi] = run[gi] && groups[gi][k] == groups[gi][0] + static_cast<int>(k);
     for (int batch = 100; b < cap; batch = std::min(cap - b, 2 * batch)) {
       for (int j = 0; j < batch; ++j, ++b) {
-        for (const auto& g : groups)  // Fisher-Yates within the group
-          for (size_t k = g.size(); k > 1; --k) std::swap(perm[g[k - 1]], perm[g[mod(rng(), k)]]);
+        for (size_t gi = 0; gi < groups.size(); ++gi) {  // Fisher-Yates within the group
+          const auto& g = groups[gi];
+          if (run[gi]) {
+            int* q = perm.data() + g[0];
+            for (size_t k = g.size(); k > 1; --k) std::swap(q[k - 1], q[mod(rng(), k)]);
+          } else {
+            for (size_t k = g.size(); k > 1; --k) std::swap(perm[g[k - 1]], perm[g[mod(rng(), k)]]);
+          }
+        }
         for (size_t u = 0; u < U; ++u) pz[u] = xz[perm[u]], pl[u] = xl[perm[u]];
         if (stat(pz, pl, &dummy, &dummy_sub) >= T - 1e-12 * std::max(1.0, std::abs(T))) ++ge;
       }
@@ -563,7 +597,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     res.significant = dec > 0 && res.cv_reduction > 0;
     res.decision = dec > 0 ? (res.cv_reduction > 0 ? "significant" : "significant, no held-out gain")
                            : dec < 0 ? "not significant" : "undecided";
-    out.push_back(res);
+    out[ci] = std::move(res);
   }
   std::stable_sort(out.begin(), out.end(), [](const CandidateResult& a, const CandidateResult& b) {
     if (a.significant != b.significant) return a.significant;

@@ -14,6 +14,11 @@
 //    held-out MSE by less than one standard error of the difference, the
 //    simpler (q = 1) is kept; when the gap is many standard errors the better
 //    one is kept.  A form that failed a gate is never kept.
+//  - Threads: five candidates (row-level and test-level, numeric and
+//    categorical, one carrying a planted slope) with two model inputs as
+//    modifiers, screened on 1, 2 and 3 threads: every result field is
+//    bit-for-bit the same (each candidate has its own random streams and its
+//    own slot in the result; issue 50 item 6).
 //  - Bending channel: noise-free rows with F_B = b0 + b1 F + c z on every row
 //    (rotating and fixed) and constant mu: the fit with a bending_linear effect
 //    on z recovers mu exactly and leaves rss ~ 0; without it rss > 0.
@@ -96,6 +101,51 @@ BOOST_AUTO_TEST_CASE(one_cell_effect_seen_per_group) {
   BOOST_TEST(res[0].significant);
   BOOST_TEST(res[0].cell_by == "pin");
   BOOST_TEST(res[0].cell_group == 0);
+}
+
+BOOST_AUTO_TEST_CASE(same_results_for_any_thread_count) {
+  const int tests = 36, rows = 6;
+  const Folds f = one_block(tests, rows);
+  std::vector<Candidate> cands = {{"temperature_C", "column", false, false, {}, {}, ""},
+                                  {"coil", "column", true, true, {}, {}, ""},
+                                  {"humidity_pct", "column", false, true, {}, {}, ""},
+                                  {"time_s", "column", false, false, {}, {}, ""},
+                                  {"operator", "column", true, true, {}, {}, ""}};
+  ScreenContext ctx;
+  std::vector<int> pin, speed;
+  std::vector<double> r;
+  for (int t = 0; t < tests; ++t)
+    for (int k = 0; k < rows; ++k) {
+      const double z = std::sin(1.3 * t + 0.7 * k);
+      cands[0].x.push_back(z);
+      cands[1].x.push_back(t % 4);
+      cands[2].x.push_back(std::cos(0.9 * t));
+      cands[3].x.push_back(t * rows + k);
+      cands[4].x.push_back((t / 6) % 3);
+      pin.push_back(t % 3), speed.push_back((t / 3) % 2);
+      r.push_back(0.8 * z + std::sin(12.9898 * (t * rows + k)));  // a slope on temperature plus scatter
+    }
+  ctx.modifiers = {{"pin", pin}, {"speed_mm_s", speed}};
+  ctx.mu_weight.assign(r.size(), 1.0);
+  for (size_t i = 0; i < r.size(); ++i) ctx.mu_weight[i] = 1 + 0.1 * pin[i];
+  ctx.threads = 1;
+  const auto one = rank_candidates(cands, r, f, 2000, 11, 0.05, &ctx);
+  for (int n : {2, 3}) {
+    ctx.threads = n;
+    const auto many = rank_candidates(cands, r, f, 2000, 11, 0.05, &ctx);
+    BOOST_TEST_REQUIRE(many.size() == one.size());
+    for (size_t i = 0; i < one.size(); ++i) {
+      BOOST_TEST(many[i].name == one[i].name);
+      BOOST_TEST(many[i].p_value == one[i].p_value);  // exact: the same permutations
+      BOOST_TEST(many[i].stat == one[i].stat);
+      BOOST_TEST(many[i].cv_reduction == one[i].cv_reduction);
+      BOOST_TEST(many[i].n_perm == one[i].n_perm);
+      BOOST_TEST(many[i].probe == one[i].probe);
+      BOOST_TEST(many[i].decision == one[i].decision);
+    }
+  }
+  BOOST_TEST(one[0].name == "temperature_C");  // the planted slope ranks first
+  BOOST_TEST(one[0].significant);
 }
 
 BOOST_AUTO_TEST_CASE(simplest_within_one_se) {
