@@ -254,6 +254,9 @@ v1::RunSpec run_spec(const Config& cfg) {
   spec.ramp = cfg.ramp;
   spec.gap = cfg.gap, spec.holder_force = cfg.holder_force, spec.mu = cfg.mu, spec.voce = cfg.voce;
   spec.clearance = cfg.clearance;
+  if (cfg.clearance != 0 && !(cfg.clearance >= 1.0 && cfg.clearance <= 10.0))  // NaN too
+    throw InputError("--clearance: the punch-die clearance must lie between the blank's 1.0 mm thickness and 10 mm "
+                     "(0: the published 1.2 mm)");
   if (spec.through < 3) throw InputError("--through: at least 3 elements through the thickness (issue 19)");
   return spec;
 }
