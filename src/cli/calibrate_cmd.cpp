@@ -65,6 +65,10 @@ int calibrate_command(int argc, char** argv) {
   ensure_writable_dir(out, "--out");  // checked before any work: exit 2, not a file-system error after the fit
   if (!compare.empty()) name_input(compare, "--compare");
   const material::SheetTests t = material::load_sheet_tests(path);
+  // The published set is read before the fit (seconds): a bad --compare is an
+  // input error at once, not after the work.
+  material::Yld2004 published;
+  if (!compare.empty()) published = material::load_yld2004_toml(compare).normalised();
   const double r0 = t.r_value(0), r45 = t.r_value(45), r90 = t.r_value(90);
   const double s45 = t.uniaxial_stress(45), s90 = t.uniaxial_stress(90), sb = t.biaxial_stress();
   std::vector<material::Hill48> hills;
@@ -83,11 +87,7 @@ int calibrate_command(int argc, char** argv) {
   const material::Yld2004Fit fit = material::fit_yld2004(t, w, a);
   models.push_back({"yld2004", &fit.yield, nullptr});
   const std::size_t fitted = models.size() - 1;
-  material::Yld2004 published;
-  if (!compare.empty()) {
-    published = material::load_yld2004_toml(compare).normalised();
-    models.push_back({"yld2004_published", &published, nullptr});
-  }
+  if (!compare.empty()) models.push_back({"yld2004_published", &published, nullptr});
   const auto rows = material::calibration_table(t, w, models, fitted);
   std::ostringstream csv;
   for (const auto& r : rows) {
