@@ -124,7 +124,7 @@ inline void combined_return(const CombinedParams& P, const T ts[6], const T an[3
   T side = {};
   for (int it = 0; it < 200 && any_lane<W>(active); ++it) {
     T x = hi - fhi * (hi - lo) / (fhi - flo);
-    x = (x > lo) & (x < hi) ? x : 0.5 * (lo + hi);
+    x = ((x > lo) & (x < hi)) ? x : 0.5 * (lo + hi);
     T fx;
     combined_residual<W>(P, ts, an, ep, s_ep, x, seg, xi, R, fx);
     dl = active ? x : dl;
@@ -134,8 +134,8 @@ inline void combined_return(const CombinedParams& P, const T ts[6], const T an[3
     const M done = (fx == 0.0) | ((fx <= tol) & (-fx <= tol)) | (hi - lo <= 1e-15 * hi);
     const M go = active & ~done;
     const M pos = go & (fx > 0.0), neg = go & ~(fx > 0.0);
-    fhi = pos & (side == 1.0) ? fhi * 0.5 : fhi;
-    flo = neg & (side == -1.0) ? flo * 0.5 : flo;
+    fhi = (pos & (side == 1.0)) ? fhi * 0.5 : fhi;
+    flo = (neg & (side == -1.0)) ? flo * 0.5 : flo;
     lo = pos ? x : lo;
     flo = pos ? fx : flo;
     hi = neg ? x : hi;
