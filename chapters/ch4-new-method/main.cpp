@@ -99,11 +99,6 @@ void body(study::Chapter& c, const ch4::FeOptions& fe) {
 int main(int argc, char** argv) {
   study::Chapter ch("ch4-new-method", "Chapter 4: the new method, re-derived and with our own simulations");
   ch4::FeOptions fe;  // the chapter's options
-  // Issue 51 made the sliding bend-step inlet the builder's default; this
-  // chapter keeps the clamped deck until it and Chapter 7, which reads its
-  // maps, are rerun and their gold and notes revised together
-  // (docs/issue51-large-pin.md, "The sliding inlet as the default").
-  fe.base.bend_inlet_slides = false;
   sim::add_fe_options(ch.options(), fe.base, fe.run, fe.reuse);
   return study::run_chapter(ch, argc, argv, [&fe](study::Chapter& c) { body(c, fe); });
 }
