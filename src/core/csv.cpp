@@ -5,6 +5,7 @@
 #include "core/input_problems.hpp"
 #include "core/provenance.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -55,6 +56,34 @@ std::vector<std::string> split_csv_line(const std::string& line, char sep) {
   return cells;
 }
 
+std::string csv_quote_problem(const std::string& line, char sep) {
+  enum { start, unquoted, quoted, closed } state = start;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char ch = line[i];
+    if (state == quoted) {
+      if (ch != '"') continue;
+      if (i + 1 < line.size() && line[i + 1] == '"') ++i;  // a doubled quote
+      else state = closed;
+    } else if (ch == sep) {
+      state = start;
+    } else if (ch == '"') {
+      if (state != start)
+        return "cell " + std::to_string(1 + std::count(line.begin(), line.begin() + static_cast<long>(i), sep)) +
+               ": a quote inside " + std::string(state == closed ? "a cell after its closing quote" : "an unquoted cell") +
+               ": quote the whole cell and double each quote in it (\"12\"\" pin\")";
+      state = quoted;
+    } else if (state == closed) {
+      if (ch != ' ' && ch != '\t' && ch != '\r')
+        return "cell " + std::to_string(1 + std::count(line.begin(), line.begin() + static_cast<long>(i), sep)) +
+               ": text after the cell's closing quote: quote the whole cell and double each quote in it";
+    } else if (state == start && ch != ' ' && ch != '\t') {
+      state = unquoted;
+    }
+  }
+  if (state == quoted) return "a quote opened and never closed";
+  return "";
+}
+
 CsvTable read_csv(const std::string& path) {
   return parse_csv(read_file(path), path);
 }
@@ -87,6 +116,10 @@ CsvTable parse_csv(const std::string& text, const std::string& path) {
     if (s.empty()) continue;
     if (s[0] == '#') {
       t.comments.push_back(trim(s.substr(1)));
+      continue;
+    }
+    if (const std::string q = csv_quote_problem(s); !q.empty()) {
+      problems.add(path + ":" + std::to_string(first) + ": " + q);
       continue;
     }
     auto cells = split_csv_line(s);

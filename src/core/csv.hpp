@@ -43,6 +43,12 @@ struct CsvTable {
 std::vector<std::string> split_csv_line(const std::string& line);
 /// The same with another separator (';' in spreadsheet exports with decimal commas).
 std::vector<std::string> split_csv_line(const std::string& line, char sep);
+/// What is malformed about the quotes of one CSV record, or "" when nothing:
+/// a '"' may open a cell (after leading blanks) and close it, and a quote
+/// inside a quoted cell is doubled (""); a quote inside an unquoted cell, text
+/// after a closing quote, or a quote left open is refused, not guessed at (a
+/// stray quote used to drop silently and shift the cells).
+std::string csv_quote_problem(const std::string& line, char sep = ',');
 /// The text without a leading UTF-8 byte-order mark.
 std::string strip_bom(const std::string& text);
 /// Whether a header line split at ',' is one cell holding ';' (a ';'-separated file).

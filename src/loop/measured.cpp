@@ -159,6 +159,11 @@ Dataset parse_measured(const std::string& text, const std::string& path) {
       }
       trim_trailing_empty_header(header);  // an empty formatted column at the right (Excel)
       header_line = lineno;
+      if (const std::string q = csv_quote_problem(line, sep); !q.empty()) {
+        problem(lineno, "", q);  // no row can be read by column names that may be cut wrongly
+        header_ok = false;
+        continue;
+      }
       for (auto& h : header) h = trim(h);
       header_ok = true;
       for (size_t i = 0; i < header.size(); ++i) {
@@ -184,6 +189,11 @@ Dataset parse_measured(const std::string& text, const std::string& path) {
       continue;
     }
     ++d.rows_read;
+    if (const std::string q = csv_quote_problem(line, sep); !q.empty()) {
+      problem(lineno, "", q);
+      ++d.rows_dropped;
+      continue;
+    }
     auto cells = split_csv_line(line, sep);
     drop_trailing_empty(cells, header.size());
     if (decimal_comma)

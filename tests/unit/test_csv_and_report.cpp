@@ -2,6 +2,11 @@
 // Closed-form answers:
 //  - split_csv_line("a,\"b,c\",d") = {a, "b,c", d}.
 //  - A ragged row is an InputError naming file:line; a non-number names file:line:column.
+//  - Quotes (csv_quote_problem): "" for `"a ""b""",c`, ` "x" ,y` and `a,"b;c"`;
+//    "cell 2: text after the cell's closing quote" for `1,"x"y`; "cell 2: ... unquoted
+//    cell" for `2,5"6`; "never closed" for `1,"x`; with ';' as the separator
+//    `"a";"b"` is fine.  read_csv of a file holding `1,"x"y` on line 3 is an
+//    InputError naming ":3: cell 2" (a stray quote used to drop silently).
 //  - a CsvWriter with a column named twice is refused (std::logic_error): the
 //    readers refuse such a file, so a chapter must fail when it makes one;
 //  - markdown_table escapes '|'; {{key}} expands to "value unit"; an unknown key
@@ -51,6 +56,24 @@ BOOST_AUTO_TEST_CASE(split_and_read) {
     BOOST_FAIL("expected InputError");
   } catch (const InputError& e) {
     BOOST_TEST(std::string(e.what()).find(":2:") != std::string::npos);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(stray_quotes_refused) {
+  BOOST_TEST(csv_quote_problem("\"a \"\"b\"\"\",c") == "");
+  BOOST_TEST(csv_quote_problem(" \"x\" ,y") == "");
+  BOOST_TEST(csv_quote_problem("a,\"b;c\"") == "");
+  BOOST_TEST(csv_quote_problem("\"a\";\"b\"", ';') == "");
+  BOOST_TEST(csv_quote_problem("1,\"x\"y").find("cell 2: text after the cell's closing quote") == 0u);
+  BOOST_TEST(csv_quote_problem("2,5\"6").find("cell 2: a quote inside an unquoted cell") == 0u);
+  BOOST_TEST(csv_quote_problem("1,\"x").find("never closed") != std::string::npos);
+  const std::string p = tmpdir() + "/q.csv";
+  write_file_atomic(p, "x,y\n0,1\n1,\"x\"y\n");
+  try {
+    read_csv(p);
+    BOOST_FAIL("expected InputError");
+  } catch (const InputError& e) {
+    BOOST_TEST(std::string(e.what()).find("q.csv:3: cell 2") != std::string::npos);
   }
 }
 
