@@ -52,11 +52,20 @@ void detail::ProbeDef::eval(const double* xz, const int* xl, double* out) const 
       s2.assign(K * L, 0.0);
       const double* a = w ? urw.data() : ur.data();
       const double* b = w ? uw2.data() : un.data();
-      for (size_t u = 0; u < U; ++u) {
-        const size_t k0 = static_cast<size_t>(stratum[u]) * nlev;
-        for (int j = 0; j < L; ++j) {
-          const size_t k = (k0 + static_cast<size_t>(xl[u * L + j])) * L + j;
-          s1[k] += a[u], s2[k] += b[u];
+      if (!w && !fixed_counts.empty()) {  // the counts are those of every permutation
+        for (size_t u = 0; u < U; ++u) {
+          const size_t k0 = static_cast<size_t>(stratum[u]) * nlev;
+          for (int j = 0; j < L; ++j) s1[(k0 + static_cast<size_t>(xl[u * L + j])) * L + j] += a[u];
+        }
+        for (size_t k = 0; k < K; ++k)
+          for (int j = 0; j < L; ++j) s2[k * L + j] = fixed_counts[k];
+      } else {
+        for (size_t u = 0; u < U; ++u) {
+          const size_t k0 = static_cast<size_t>(stratum[u]) * nlev;
+          for (int j = 0; j < L; ++j) {
+            const size_t k = (k0 + static_cast<size_t>(xl[u * L + j])) * L + j;
+            s1[k] += a[u], s2[k] += b[u];
+          }
         }
       }
       for (int j = 0; j < L; ++j) {
@@ -361,6 +370,15 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         add(c.categorical || distinct.size() <= 8 ? Shape::levels : Shape::slopes, "per " + input, g, ng, input);
         if (!c.categorical && distinct.size() > 8) add(Shape::levels, "bins per " + input, g, ng, input);
       }
+    for (auto& p : probes) {  // levels: counts no permutation changes (see ProbeDef::fixed_counts)
+      if (p.shape != Shape::levels) continue;
+      bool fixed = true;
+      for (const auto& g : groups)
+        for (int u : g) fixed = fixed && p.stratum[u] == p.stratum[g[0]] && p.un[u] == p.un[g[0]];
+      if (!fixed) continue;
+      p.fixed_counts.assign(static_cast<size_t>(p.nstrata) * p.nlev, 0.0);
+      for (size_t u = 0; u < U; ++u) p.fixed_counts[static_cast<size_t>(p.stratum[u]) * p.nlev + xl[u]] += p.un[u];
+    }
     int dof_max = 0;
     for (const auto& p : probes) dof_max = std::max(dof_max, p.dof[0]);
     res.dof = dof_max;
@@ -411,6 +429,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     };
     // Lanes past the last permutation of a pass repeat lane 0 (their values unused).
     auto fill_lanes = [&](std::vector<double>& a, std::vector<int>& b, int used) {
+      if (used == kLanes) return;
       for (size_t u = 0; u < U; ++u)
         for (int i = used; i < kLanes; ++i) a[u * kLanes + i] = a[u * kLanes], b[u * kLanes + i] = b[u * kLanes];
     };

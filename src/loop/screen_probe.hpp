@@ -41,6 +41,11 @@ struct ProbeDef {
   std::vector<double> kdof;      // per sub-probe: the chi^2's dof (0: dof; one-group: moment-matched)
   std::vector<double> ur, urw, un, uw2;
   double sst = 0;  // sum of squares of the centred residual (constant under permutation)
+  // levels (unweighted): the rows per (stratum, level) cell when no permutation
+  // changes them (every permutation group in one stratum, with one row count per
+  // unit: a row-level variable permuted within tests); sums of whole numbers, so
+  // the same bit for bit in any order; empty: summed on every eval.
+  std::vector<double> fixed_counts;
   // row-level data for the held-out probe
   std::vector<int> row_stratum;
   mutable std::vector<double> s1, s2, s3, s4, c1, c2;
