@@ -1,7 +1,6 @@
 // The screen: every candidate probed by a family of probes, one permutation
 // test of the family's maximum; see candidates.hpp.
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -35,10 +34,9 @@ bool same_input(const std::string& cand, const std::string& input) {
 
 }  // namespace
 
-// Every lane j runs exactly the operations of the one-permutation pass, in the
-// same order, on its own sums (lane j of a sum array at [k L + j]); so its
-// ESS is that of the permutation alone, bit for bit, and the lanes' chains of
-// additions overlap instead of waiting for one another.
+// Lane j: the one-permutation pass's operations in the same order on its own
+// sums ([k L + j]), so its ESS is bit for bit that of the permutation alone,
+// and the lanes' chains of additions overlap instead of waiting in turn.
 template <int L>
 void detail::ProbeDef::eval(const double* xz, const int* xl, double* out) const {
   const size_t U = ur.size();
@@ -321,14 +319,23 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         p.sst += rc * rc;
       }
       // degrees of freedom on the observed data (whole probe, then one per group)
-      std::map<int, std::set<int>> lev_in;
-      std::map<int, std::set<double>> z_in;
-      for (int i : rows) lev_in[p.row_stratum[i]].insert(lv[i]), z_in[p.row_stratum[i]].insert(z[i]);
+      // per stratum with rows: the levels seen, and whether z takes two values or more
+      const int S = p.nstrata;
+      std::vector<int> nseen(S, 0), zvar(S, 0);
+      std::vector<char> seen(static_cast<size_t>(S) * nlev, 0);
+      std::vector<double> z0(S, 0.0);
+      for (int i : rows) {
+        const int s = p.row_stratum[i];
+        if (!nseen[s]) z0[s] = z[i];
+        else if (z[i] != z0[s]) zvar[s] = 1;
+        char& sl = seen[static_cast<size_t>(s) * nlev + lv[i]];
+        nseen[s] += !sl, sl = 1;
+      }
       int dof = 0;
-      if (shape == Shape::levels || shape == Shape::wlevels)
-        for (const auto& [s, v] : lev_in) dof += static_cast<int>(v.size()) - 1 + (shape == Shape::wlevels ? 1 : 0);
-      else if (shape == Shape::slopes)
-        for (const auto& [s, v] : z_in) dof += v.size() > 1;
+      if (shape == Shape::levels || shape == Shape::wlevels) {
+        for (int s = 0; s < S; ++s) dof += nseen[s] ? nseen[s] - 1 + (shape == Shape::wlevels ? 1 : 0) : 0;
+      } else if (shape == Shape::slopes)
+        for (int s = 0; s < S; ++s) dof += zvar[s];
       else if (shape == Shape::quad)
         dof = distinct.size() >= 4 ? 2 : 1;
       else
@@ -340,7 +347,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         for (int i : rows) lev_g[p.row_stratum[i] % ngroups].insert(lv[i]);
         for (int g = 0; g < ngroups; ++g) {
           if (shape == Shape::slopes) {
-            for (const auto& [s, v] : z_in) p.dof[1 + g] = p.dof[1 + g] || (s % ngroups == g && v.size() > 1);
+            for (int s = 0; s < S; ++s) p.dof[1 + g] = p.dof[1 + g] || (s % ngroups == g && zvar[s]);
           } else {
             p.dof[1 + g] = std::max(0, static_cast<int>(lev_g[g].size()) - 1);
           }
