@@ -1,10 +1,8 @@
 // The screen: every candidate probed by a family of probes, one permutation
 // test of the family's maximum; see candidates.hpp.
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <map>
-#include <random>
 #include <set>
 
 #include <boost/math/distributions/fisher_f.hpp>
@@ -13,216 +11,20 @@
 #include "loop/candidates.hpp"
 #include "loop/effects.hpp"
 #include "loop/fast_mod.hpp"
+#include "loop/mt64.hpp"
+#include "loop/screen_probe.hpp"
 
 namespace drawbend::loop {
 
 namespace {
 
-enum class Shape { levels, wlevels, quad, slopes, wslope };
+using detail::kLanes;
+using detail::ProbeDef;
+using detail::Shape;
+using detail::probe_z;
 
 // Pilot permutations per candidate for the probes' calibration scales.
 constexpr int kPilot = 200;
-
-// One probe of a candidate over units (tests or rows).  Its residual is centred
-// per stratum (a block, or a block x group of a model input); ur/urw/un/uw2 are
-// per unit: sum of centred residual, of weight x centred residual, row count
-// and sum of squared weights.  A per-input probe (ngroups > 1, stratum = block
-// x ngroups + group) also gives one sub-probe per group g, the same shape
-// pooled over the strata of group g only (a common slope, or common level
-// means, in that one cell and none elsewhere): an effect confined to one pin,
-// speed, direction or lubricant is one surprise of 1 (or levels - 1) dof
-// there, not diluted over every cell's slope.  Sub-probe 0 is the probe itself.
-struct ProbeDef {
-  Shape shape = Shape::levels;
-  std::string label, input;
-  std::vector<int> stratum;  // per unit
-  int nstrata = 1, nlev = 1, ngroups = 1;
-  bool cells = false;            // sub-probes per group of the input
-  std::vector<int> dof;          // per sub-probe (0: dropped)
-  std::vector<double> scale;     // per sub-probe: ESS / scale ~ chi^2(kdof) under permutation (pilot)
-  std::vector<double> kdof;      // per sub-probe: the chi^2's dof (0: dof; one-group: moment-matched)
-  std::vector<double> ur, urw, un, uw2;
-  double sst = 0;  // sum of squares of the centred residual (constant under permutation)
-  // row-level data for the held-out probe
-  std::vector<int> row_stratum;
-  mutable std::vector<double> s1, s2, s3, s4, c1, c2;
-  int nsub() const { return cells ? 1 + ngroups : 1; }
-  // s4 = rows per stratum (sum of un in unit order): it does not depend on the
-  // permutation, so it is summed once, on the first eval.
-  void count_per_stratum() const {
-    if (s4.size() == static_cast<size_t>(nstrata)) return;
-    s4.assign(nstrata, 0.0);
-    for (size_t u = 0; u < un.size(); ++u) s4[stratum[u]] += un[u];
-  }
-  // Explained sums of squares of every sub-probe with the unit values xz (z-score) and xl (level).
-  void eval(const std::vector<double>& xz, const std::vector<int>& xl, double* out) const {
-    const size_t U = ur.size();
-    const int G = ngroups;
-    switch (shape) {
-      case Shape::levels:
-      case Shape::wlevels: {
-        const bool w = shape == Shape::wlevels;
-        s1.assign(static_cast<size_t>(nstrata) * nlev, 0.0);
-        s2.assign(s1.size(), 0.0);
-        const double* a = w ? urw.data() : ur.data();
-        const double* b = w ? uw2.data() : un.data();
-        for (size_t u = 0; u < U; ++u) {
-          const size_t k = static_cast<size_t>(stratum[u]) * nlev + static_cast<size_t>(xl[u]);
-          s1[k] += a[u], s2[k] += b[u];
-        }
-        double e = 0;
-        for (size_t k = 0; k < s1.size(); ++k)
-          if (s2[k] > 0) e += s1[k] * s1[k] / s2[k];
-        out[0] = e;
-        if (cells) {
-          c1.assign(static_cast<size_t>(G) * nlev, 0.0), c2.assign(c1.size(), 0.0);
-          for (size_t k = 0; k < s1.size(); ++k) {
-            const size_t q = static_cast<size_t>((k / nlev) % G) * nlev + k % nlev;
-            c1[q] += s1[k], c2[q] += s2[k];
-          }
-          for (int g = 0; g < G; ++g) {
-            double eg = 0;
-            for (int l = 0; l < nlev; ++l) {
-              const size_t q = static_cast<size_t>(g) * nlev + l;
-              if (c2[q] > 0) eg += c1[q] * c1[q] / c2[q];
-            }
-            out[1 + g] = eg;
-          }
-        }
-        return;
-      }
-      case Shape::slopes: {  // one centred slope per stratum
-        s1.assign(nstrata, 0.0), s2.assign(nstrata, 0.0), s3.assign(nstrata, 0.0);
-        count_per_stratum();  // s4: rows per stratum, the same under every permutation
-        for (size_t u = 0; u < U;) {  // a run of units in one stratum: its sums held in registers
-          const int s = stratum[u];
-          double a1 = s1[s], a2 = s2[s], a3 = s3[s];
-          for (; u < U && stratum[u] == s; ++u) a1 += un[u] * xz[u], a2 += un[u] * xz[u] * xz[u], a3 += xz[u] * ur[u];
-          s1[s] = a1, s2[s] = a2, s3[s] = a3;
-        }
-        double e = 0;
-        if (cells) c1.assign(G, 0.0), c2.assign(G, 0.0);
-        for (int s = 0; s < nstrata; ++s) {
-          const double a = s4[s] > 0 ? s2[s] - s1[s] * s1[s] / s4[s] : 0;
-          if (a > 1e-12) e += s3[s] * s3[s] / a;
-          if (cells && a > 1e-12) c1[s % G] += s3[s], c2[s % G] += a;
-        }
-        out[0] = e;
-        if (cells)
-          for (int g = 0; g < G; ++g) out[1 + g] = c2[g] > 1e-12 ? c1[g] * c1[g] / c2[g] : 0.0;
-        return;
-      }
-      case Shape::wslope: {  // one slope on z w (multiplicative: the effect scales with dF/dmu)
-        double b = 0, a = 0;
-        for (size_t u = 0; u < U; ++u) b += xz[u] * urw[u], a += xz[u] * xz[u] * uw2[u];
-        out[0] = a > 1e-12 ? b * b / a : 0.0;
-        return;
-      }
-      case Shape::quad: {  // z and z^2, centred per stratum
-        s1.assign(nstrata, 0.0), s2.assign(nstrata, 0.0);
-        count_per_stratum();
-        double q11 = 0, q12 = 0, q22 = 0, b1 = 0, b2 = 0;
-        for (size_t u = 0; u < U;) {  // runs of one stratum, as in slopes
-          const int s = stratum[u];
-          double a1 = s1[s], a2 = s2[s];
-          for (; u < U && stratum[u] == s; ++u) {
-            const double x = xz[u], x2 = x * x, n = un[u];
-            q11 += n * x2, q12 += n * x2 * x, q22 += n * x2 * x2;
-            a1 += n * x, a2 += n * x2;
-            b1 += x * ur[u], b2 += x2 * ur[u];
-          }
-          s1[s] = a1, s2[s] = a2;
-        }
-        for (int k = 0; k < nstrata; ++k)
-          if (s4[k] > 0) q11 -= s1[k] * s1[k] / s4[k], q12 -= s1[k] * s2[k] / s4[k], q22 -= s2[k] * s2[k] / s4[k];
-        const double lin = q11 > 1e-12 ? b1 * b1 / q11 : 0.0;
-        if (dof[0] == 1) { out[0] = lin; return; }
-        const double det = q11 * q22 - q12 * q12;
-        if (det <= 1e-12 * std::max(1.0, q11 * q22)) { out[0] = lin; return; }
-        const double c1q = (q22 * b1 - q12 * b2) / det, c2q = (q11 * b2 - q12 * b1) / det;
-        out[0] = c1q * b1 + c2q * b2;
-        return;
-      }
-    }
-  }
-  std::string sub_label(int j) const {
-    return j == 0 ? label : label + ": " + input + " group " + std::to_string(j) + " only";
-  }
-};
-
-// Wilson-Hilferty normal deviate of X = ESS / scale ~ chi^2(dof) (see the statistic in rank_candidates).
-double probe_z(const ProbeDef& p, int j, double ess) {
-  const double k = p.kdof[j], x = std::max(0.0, ess) / p.scale[j], c = 2.0 / (9.0 * k);
-  return (std::cbrt(x / k) - (1 - c)) / std::sqrt(c);
-}
-
-// Held-out fractional reduction of the residual SSE by a probe, with the same
-// folds as the model: on the training rows of each fold the probe is fitted
-// (stratum means plus its shape), the held-out rows predicted; against the
-// stratum means alone.  z, l, w per row.  cell >= 0: the probe's one-group
-// sub-probe (levels or slope pooled over the strata of group `cell`, nothing
-// elsewhere).
-double probe_cv(const ProbeDef& p, const std::vector<int>& rows, const std::vector<double>& z,
-                const std::vector<int>& l, const std::vector<double>& w, const std::vector<double>& r,
-                const Folds& f, int cell = -1) {
-  // pooled index of stratum s: itself, or 0 for the strata of the cell (-1: outside it)
-  auto pool = [&](int s) { return cell < 0 ? s : s % p.ngroups == cell ? 0 : -1; };
-  double sse0 = 0, sse1 = 0;
-  const int S = p.nstrata, L = p.nlev;
-  for (int k = 0; k < f.k; ++k) {
-    std::vector<double> sm(S, 0), sn(S, 0), sx(S, 0), sxx(S, 0), sxr(S, 0), lm(static_cast<size_t>(S) * L, 0),
-        ln(static_cast<size_t>(S) * L, 0);
-    double q11 = 0, q12 = 0, q22 = 0, b1 = 0, b2 = 0;
-    for (int i : rows)
-      if (f.fold[i] != k) sm[p.row_stratum[i]] += r[i], sn[p.row_stratum[i]] += 1;
-    for (int s = 0; s < S; ++s) sm[s] = sn[s] > 0 ? sm[s] / sn[s] : 0;
-    std::vector<double> mz(S, 0), mz2(S, 0);
-    for (int i : rows)
-      if (f.fold[i] != k) mz[p.row_stratum[i]] += z[i] / sn[p.row_stratum[i]], mz2[p.row_stratum[i]] += z[i] * z[i] / sn[p.row_stratum[i]];
-    for (int i : rows) {
-      if (f.fold[i] == k) continue;
-      const int s = p.row_stratum[i], ps = pool(s);
-      if (ps < 0) continue;
-      const double rc = r[i] - sm[s];
-      const size_t li = static_cast<size_t>(ps) * L + l[i];
-      switch (p.shape) {
-        case Shape::levels: lm[li] += rc, ln[li] += 1; break;
-        case Shape::wlevels: lm[li] += w[i] * rc, ln[li] += w[i] * w[i]; break;
-        case Shape::slopes: sx[ps] += (z[i] - mz[s]) * (z[i] - mz[s]), sxr[ps] += (z[i] - mz[s]) * rc; break;
-        case Shape::wslope: q11 += z[i] * z[i] * w[i] * w[i], b1 += z[i] * w[i] * rc; break;
-        case Shape::quad: {
-          const double f1 = z[i] - mz[s], f2 = z[i] * z[i] - mz2[s];
-          q11 += f1 * f1, q12 += f1 * f2, q22 += f2 * f2, b1 += f1 * rc, b2 += f2 * rc;
-          break;
-        }
-      }
-    }
-    double c1 = 0, c2 = 0;
-    if (p.shape == Shape::quad) {
-      const double det = q11 * q22 - q12 * q12;
-      if (p.dof[0] == 2 && det > 1e-12 * std::max(1.0, q11 * q22)) c1 = (q22 * b1 - q12 * b2) / det, c2 = (q11 * b2 - q12 * b1) / det;
-      else if (q11 > 1e-12) c1 = b1 / q11;
-    }
-    if (p.shape == Shape::wslope && q11 > 1e-12) c1 = b1 / q11;
-    for (int i : rows) {
-      if (f.fold[i] != k) continue;
-      const int s = p.row_stratum[i], ps = pool(s);
-      if (sn[s] <= 0) continue;
-      double pr = sm[s];
-      const size_t li = static_cast<size_t>(std::max(ps, 0)) * L + l[i];
-      if (ps >= 0) switch (p.shape) {
-        case Shape::levels: pr += ln[li] > 0 ? lm[li] / ln[li] : 0; break;
-        case Shape::wlevels: pr += ln[li] > 0 ? w[i] * lm[li] / ln[li] : 0; break;
-        case Shape::slopes: pr += sx[ps] > 1e-12 ? sxr[ps] / sx[ps] * (z[i] - mz[s]) : 0; break;
-        case Shape::wslope: pr += c1 * z[i] * w[i]; break;
-        case Shape::quad: pr += c1 * (z[i] - mz[s]) + c2 * (z[i] * z[i] - mz2[s]); break;
-      }
-      sse0 += (r[i] - sm[s]) * (r[i] - sm[s]);
-      sse1 += (r[i] - pr) * (r[i] - pr);
-    }
-  }
-  return sse0 > 0 ? 1 - sse1 / sse0 : 0.0;
-}
 
 // The names by which a candidate is itself one of the model's inputs.
 bool same_input(const std::string& cand, const std::string& input) {
@@ -231,6 +33,138 @@ bool same_input(const std::string& cand, const std::string& input) {
 }
 
 }  // namespace
+
+// Lane j: the one-permutation pass's operations in the same order on its own
+// sums ([k L + j]), so its ESS is bit for bit that of the permutation alone,
+// and the lanes' chains of additions overlap instead of waiting in turn.
+template <int L>
+void detail::ProbeDef::eval(const double* xz, const int* xl, double* out) const {
+  const size_t U = ur.size();
+  const int G = ngroups;
+  switch (shape) {
+    case Shape::levels:
+    case Shape::wlevels: {
+      const bool w = shape == Shape::wlevels;
+      const size_t K = static_cast<size_t>(nstrata) * nlev;
+      s1.assign(K * L, 0.0);
+      s2.assign(K * L, 0.0);
+      const double* a = w ? urw.data() : ur.data();
+      const double* b = w ? uw2.data() : un.data();
+      if (!w && !fixed_counts.empty()) {  // the counts are those of every permutation
+        for (size_t u = 0; u < U; ++u) {
+          const size_t k0 = static_cast<size_t>(stratum[u]) * nlev;
+          for (int j = 0; j < L; ++j) s1[(k0 + static_cast<size_t>(xl[u * L + j])) * L + j] += a[u];
+        }
+        for (size_t k = 0; k < K; ++k)
+          for (int j = 0; j < L; ++j) s2[k * L + j] = fixed_counts[k];
+      } else {
+        for (size_t u = 0; u < U; ++u) {
+          const size_t k0 = static_cast<size_t>(stratum[u]) * nlev;
+          for (int j = 0; j < L; ++j) {
+            const size_t k = (k0 + static_cast<size_t>(xl[u * L + j])) * L + j;
+            s1[k] += a[u], s2[k] += b[u];
+          }
+        }
+      }
+      for (int j = 0; j < L; ++j) {
+        double e = 0;
+        for (size_t k = 0; k < K; ++k)
+          if (s2[k * L + j] > 0) e += s1[k * L + j] * s1[k * L + j] / s2[k * L + j];
+        out[j] = e;
+      }
+      if (cells) {
+        c1.assign(static_cast<size_t>(G) * nlev * L, 0.0), c2.assign(c1.size(), 0.0);
+        for (size_t k = 0; k < K; ++k) {
+          const size_t q = static_cast<size_t>((k / nlev) % G) * nlev + k % nlev;
+          for (int j = 0; j < L; ++j) c1[q * L + j] += s1[k * L + j], c2[q * L + j] += s2[k * L + j];
+        }
+        for (int g = 0; g < G; ++g)
+          for (int j = 0; j < L; ++j) {
+            double eg = 0;
+            for (int l = 0; l < nlev; ++l) {
+              const size_t q = (static_cast<size_t>(g) * nlev + l) * L + j;
+              if (c2[q] > 0) eg += c1[q] * c1[q] / c2[q];
+            }
+            out[(1 + g) * L + j] = eg;
+          }
+      }
+      return;
+    }
+    case Shape::slopes: {  // one centred slope per stratum
+      s1.assign(static_cast<size_t>(nstrata) * L, 0.0), s2.assign(s1.size(), 0.0), s3.assign(s1.size(), 0.0);
+      count_per_stratum();  // s4: rows per stratum, the same under every permutation
+      for (size_t u = 0; u < U;) {  // a run of units in one stratum: its sums held in registers
+        const int s = stratum[u];
+        const size_t o = static_cast<size_t>(s) * L;
+        double a1[L], a2[L], a3[L];
+        for (int j = 0; j < L; ++j) a1[j] = s1[o + j], a2[j] = s2[o + j], a3[j] = s3[o + j];
+        for (; u < U && stratum[u] == s; ++u)
+          for (int j = 0; j < L; ++j) {
+            const double x = xz[u * L + j];
+            a1[j] += un[u] * x, a2[j] += un[u] * x * x, a3[j] += x * ur[u];
+          }
+        for (int j = 0; j < L; ++j) s1[o + j] = a1[j], s2[o + j] = a2[j], s3[o + j] = a3[j];
+      }
+      for (int j = 0; j < L; ++j) {
+        double e = 0;
+        if (cells) c1.assign(G, 0.0), c2.assign(G, 0.0);
+        for (int s = 0; s < nstrata; ++s) {
+          const size_t h = static_cast<size_t>(s) * L + j;
+          const double a = s4[s] > 0 ? s2[h] - s1[h] * s1[h] / s4[s] : 0;
+          if (a > 1e-12) e += s3[h] * s3[h] / a;
+          if (cells && a > 1e-12) c1[s % G] += s3[h], c2[s % G] += a;
+        }
+        out[j] = e;
+        if (cells)
+          for (int g = 0; g < G; ++g) out[(1 + g) * L + j] = c2[g] > 1e-12 ? c1[g] * c1[g] / c2[g] : 0.0;
+      }
+      return;
+    }
+    case Shape::wslope: {  // one slope on z w (multiplicative: the effect scales with dF/dmu)
+      double b[L] = {}, a[L] = {};
+      for (size_t u = 0; u < U; ++u)
+        for (int j = 0; j < L; ++j) {
+          const double x = xz[u * L + j];
+          b[j] += x * urw[u], a[j] += x * x * uw2[u];
+        }
+      for (int j = 0; j < L; ++j) out[j] = a[j] > 1e-12 ? b[j] * b[j] / a[j] : 0.0;
+      return;
+    }
+    case Shape::quad: {  // z and z^2, centred per stratum
+      s1.assign(static_cast<size_t>(nstrata) * L, 0.0), s2.assign(s1.size(), 0.0);
+      count_per_stratum();
+      double q11[L] = {}, q12[L] = {}, q22[L] = {}, b1[L] = {}, b2[L] = {};
+      for (size_t u = 0; u < U;) {  // runs of one stratum, as in slopes
+        const int s = stratum[u];
+        const size_t o = static_cast<size_t>(s) * L;
+        double a1[L], a2[L];
+        for (int j = 0; j < L; ++j) a1[j] = s1[o + j], a2[j] = s2[o + j];
+        for (; u < U && stratum[u] == s; ++u)
+          for (int j = 0; j < L; ++j) {
+            const double x = xz[u * L + j], x2 = x * x, n = un[u];
+            q11[j] += n * x2, q12[j] += n * x2 * x, q22[j] += n * x2 * x2;
+            a1[j] += n * x, a2[j] += n * x2;
+            b1[j] += x * ur[u], b2[j] += x2 * ur[u];
+          }
+        for (int j = 0; j < L; ++j) s1[o + j] = a1[j], s2[o + j] = a2[j];
+      }
+      for (int j = 0; j < L; ++j) {
+        for (int k = 0; k < nstrata; ++k) {
+          const size_t h = static_cast<size_t>(k) * L + j;
+          if (s4[k] > 0)
+            q11[j] -= s1[h] * s1[h] / s4[k], q12[j] -= s1[h] * s2[h] / s4[k], q22[j] -= s2[h] * s2[h] / s4[k];
+        }
+        const double lin = q11[j] > 1e-12 ? b1[j] * b1[j] / q11[j] : 0.0;
+        if (dof[0] == 1) { out[j] = lin; continue; }
+        const double det = q11[j] * q22[j] - q12[j] * q12[j];
+        if (det <= 1e-12 * std::max(1.0, q11[j] * q22[j])) { out[j] = lin; continue; }
+        const double c1q = (q22[j] * b1[j] - q12[j] * b2[j]) / det, c2q = (q11[j] * b2[j] - q12[j] * b1[j]) / det;
+        out[j] = c1q * b1[j] + c2q * b2[j];
+      }
+      return;
+    }
+  }
+}
 
 int sequential_decision(int k, int b, double thr, double conf) {
   if (b <= 0) return 0;
@@ -385,14 +319,23 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         p.sst += rc * rc;
       }
       // degrees of freedom on the observed data (whole probe, then one per group)
-      std::map<int, std::set<int>> lev_in;
-      std::map<int, std::set<double>> z_in;
-      for (int i : rows) lev_in[p.row_stratum[i]].insert(lv[i]), z_in[p.row_stratum[i]].insert(z[i]);
+      // per stratum with rows: the levels seen, and whether z takes two values or more
+      const int S = p.nstrata;
+      std::vector<int> nseen(S, 0), zvar(S, 0);
+      std::vector<char> seen(static_cast<size_t>(S) * nlev, 0);
+      std::vector<double> z0(S, 0.0);
+      for (int i : rows) {
+        const int s = p.row_stratum[i];
+        if (!nseen[s]) z0[s] = z[i];
+        else if (z[i] != z0[s]) zvar[s] = 1;
+        char& sl = seen[static_cast<size_t>(s) * nlev + lv[i]];
+        nseen[s] += !sl, sl = 1;
+      }
       int dof = 0;
-      if (shape == Shape::levels || shape == Shape::wlevels)
-        for (const auto& [s, v] : lev_in) dof += static_cast<int>(v.size()) - 1 + (shape == Shape::wlevels ? 1 : 0);
-      else if (shape == Shape::slopes)
-        for (const auto& [s, v] : z_in) dof += v.size() > 1;
+      if (shape == Shape::levels || shape == Shape::wlevels) {
+        for (int s = 0; s < S; ++s) dof += nseen[s] ? nseen[s] - 1 + (shape == Shape::wlevels ? 1 : 0) : 0;
+      } else if (shape == Shape::slopes)
+        for (int s = 0; s < S; ++s) dof += zvar[s];
       else if (shape == Shape::quad)
         dof = distinct.size() >= 4 ? 2 : 1;
       else
@@ -404,7 +347,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         for (int i : rows) lev_g[p.row_stratum[i] % ngroups].insert(lv[i]);
         for (int g = 0; g < ngroups; ++g) {
           if (shape == Shape::slopes) {
-            for (const auto& [s, v] : z_in) p.dof[1 + g] = p.dof[1 + g] || (s % ngroups == g && v.size() > 1);
+            for (int s = 0; s < S; ++s) p.dof[1 + g] = p.dof[1 + g] || (s % ngroups == g && zvar[s]);
           } else {
             p.dof[1 + g] = std::max(0, static_cast<int>(lev_g[g].size()) - 1);
           }
@@ -434,6 +377,15 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         add(c.categorical || distinct.size() <= 8 ? Shape::levels : Shape::slopes, "per " + input, g, ng, input);
         if (!c.categorical && distinct.size() > 8) add(Shape::levels, "bins per " + input, g, ng, input);
       }
+    for (auto& p : probes) {  // levels: counts no permutation changes (see ProbeDef::fixed_counts)
+      if (p.shape != Shape::levels) continue;
+      bool fixed = true;
+      for (const auto& g : groups)
+        for (int u : g) fixed = fixed && p.stratum[u] == p.stratum[g[0]] && p.un[u] == p.un[g[0]];
+      if (!fixed) continue;
+      p.fixed_counts.assign(static_cast<size_t>(p.nstrata) * p.nlev, 0.0);
+      for (size_t u = 0; u < U; ++u) p.fixed_counts[static_cast<size_t>(p.stratum[u]) * p.nlev + xl[u]] += p.un[u];
+    }
     int dof_max = 0;
     for (const auto& p : probes) dof_max = std::max(dof_max, p.dof[0]);
     res.dof = dof_max;
@@ -450,14 +402,15 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     // explained fraction per dof (which buried every many-level probe).  The
     // permutation test calibrates the maximum, so the transform only decides
     // how the probes share the family's power.
-    // Sub-probe values of every probe: vals[off[j] + k] is sub-probe k of probe j.
+    // Sub-probe values of every probe: vals[off[j] + k] is sub-probe k of probe j
+    // (of L permutations side by side: lane i at lvals[(off[j] + k) L + i]).
     std::vector<size_t> off(probes.size() + 1, 0);
     for (size_t j = 0; j < probes.size(); ++j) off[j + 1] = off[j] + probes[j].nsub();
-    std::vector<double> vals(off.back());
+    std::vector<double> vals(off.back()), lvals(off.back() * kLanes);
     auto stat = [&](const std::vector<double>& a, const std::vector<int>& b, int* best, int* best_sub) {
       double t = -INFINITY;
       for (size_t j = 0; j < probes.size(); ++j) {
-        probes[j].eval(a, b, &vals[off[j]]);
+        probes[j].eval<1>(a.data(), b.data(), &vals[off[j]]);
         for (int k = 0; k < probes[j].nsub(); ++k) {
           if (probes[j].dof[k] <= 0) continue;
           const double v = probe_z(probes[j], k, vals[off[j] + k]);
@@ -465,6 +418,27 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         }
       }
       return t;
+    };
+    // The same for kLanes permutations at once (unit values interleaved by lane),
+    // the statistic of lane i: the same comparisons in the same order.
+    auto eval_lanes = [&](const std::vector<double>& a, const std::vector<int>& b) {
+      for (size_t j = 0; j < probes.size(); ++j) probes[j].eval<kLanes>(a.data(), b.data(), &lvals[off[j] * kLanes]);
+    };
+    auto lane_stat = [&](int i) {
+      double t = -INFINITY;
+      for (size_t j = 0; j < probes.size(); ++j)
+        for (int k = 0; k < probes[j].nsub(); ++k) {
+          if (probes[j].dof[k] <= 0) continue;
+          const double v = probe_z(probes[j], k, lvals[(off[j] + k) * kLanes + i]);
+          if (v > t) t = v;
+        }
+      return t;
+    };
+    // Lanes past the last permutation of a pass repeat lane 0 (their values unused).
+    auto fill_lanes = [&](std::vector<double>& a, std::vector<int>& b, int used) {
+      if (used == kLanes) return;
+      for (size_t u = 0; u < U; ++u)
+        for (int i = used; i < kLanes; ++i) a[u * kLanes + i] = a[u * kLanes], b[u * kLanes + i] = b[u * kLanes];
     };
     // Calibration: ESS of each probe under a pilot sample of permutations (its
     // own random stream, so the test's permutations stay independent of it).
@@ -475,20 +449,31 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     // would inflate with the dof); a probe whose ESS does not change under
     // permutation (a variable constant within every permutation group) is
     // dropped (a sub-probe so: its dof set to 0).
+    size_t kmax = 1;
+    for (const auto& g : groups) kmax = std::max(kmax, g.size());
+    const FastMod mod(kmax);  // mod(rng(), k) == rng() % k, without the division
     {
-      std::mt19937_64 prng(seed + 7919 * ci + 104729);
+      Mt64 prng(seed + 7919 * ci + 104729);
       std::vector<int> pp(U);
       for (size_t u = 0; u < U; ++u) pp[u] = static_cast<int>(u);
-      std::vector<double> qz(U);
-      std::vector<int> ql(U);
+      std::vector<double> qz(U * kLanes);
+      std::vector<int> ql(U * kLanes);
       const int P = kPilot;
       std::vector<double> m1(off.back(), 0.0), m2(off.back(), 0.0);
-      for (int j = 0; j < P; ++j) {
-        for (const auto& g : groups)
-          for (size_t k = g.size(); k > 1; --k) std::swap(pp[g[k - 1]], pp[g[prng() % k]]);
-        for (size_t u = 0; u < U; ++u) qz[u] = xz[pp[u]], ql[u] = xl[pp[u]];
-        for (size_t q = 0; q < probes.size(); ++q) probes[q].eval(qz, ql, &vals[off[q]]);
-        for (size_t q = 0; q < off.back(); ++q) m1[q] += vals[q] / P, m2[q] += vals[q] * vals[q] / P;
+      for (int j0 = 0; j0 < P; j0 += kLanes) {
+        const int used = std::min(kLanes, P - j0);
+        for (int i = 0; i < used; ++i) {
+          for (const auto& g : groups)
+            for (size_t k = g.size(); k > 1; --k) std::swap(pp[g[k - 1]], pp[g[mod(prng(), k)]]);
+          for (size_t u = 0; u < U; ++u) qz[u * kLanes + i] = xz[pp[u]], ql[u * kLanes + i] = xl[pp[u]];
+        }
+        fill_lanes(qz, ql, used);
+        eval_lanes(qz, ql);
+        for (int i = 0; i < used; ++i)
+          for (size_t q = 0; q < off.back(); ++q) {
+            const double v = lvals[q * kLanes + i];
+            m1[q] += v / P, m2[q] += v * v / P;
+          }
       }
       std::vector<ProbeDef> kept;
       for (size_t q = 0; q < probes.size(); ++q) {
@@ -515,6 +500,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
       off.assign(probes.size() + 1, 0);
       for (size_t j = 0; j < probes.size(); ++j) off[j + 1] = off[j] + probes[j].nsub();
       vals.assign(off.back(), 0.0);
+      lvals.assign(off.back() * kLanes, 0.0);
     }
     if (probes.empty()) {
       res.p_value = 1;
@@ -560,34 +546,38 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         if (cv > res.cv_reduction) res.cv_reduction = cv, res.cv_probe = p.sub_label(kb);
       }
     }
-    std::mt19937_64 rng(seed + 7919 * ci);
-    int ge = 0, b = 0, dec = 0, dummy = 0, dummy_sub = 0;
+    Mt64 rng(seed + 7919 * ci);
+    int ge = 0, b = 0, dec = 0;
     std::vector<int> perm(U);
     for (size_t u = 0; u < U; ++u) perm[u] = static_cast<int>(u);
-    std::vector<double> pz(U);
-    std::vector<int> pl(U);
+    std::vector<double> pz(U * kLanes);
+    std::vector<int> pl(U * kLanes);
     const int cap = std::max(1, permutations);
-    size_t kmax = 1;
-    for (const auto& g : groups) kmax = std::max(kmax, g.size());
-    const FastMod mod(kmax);  // mod(rng(), k) == rng() % k, without the division
     // A group of consecutive units (rows of a test, in file order) is shuffled
     // in place without reading its unit list: the same draws, the same swaps.
     std::vector<char> run(groups.size(), 1);
     for (size_t gi = 0; gi < groups.size(); ++gi)
       for (size_t k = 1; k < groups[gi].size(); ++k) run[gi] = run[gi] && groups[gi][k] == groups[gi][0] + static_cast<int>(k);
     for (int batch = 100; b < cap; batch = std::min(cap - b, 2 * batch)) {
-      for (int j = 0; j < batch; ++j, ++b) {
-        for (size_t gi = 0; gi < groups.size(); ++gi) {  // Fisher-Yates within the group
-          const auto& g = groups[gi];
-          if (run[gi]) {
-            int* q = perm.data() + g[0];
-            for (size_t k = g.size(); k > 1; --k) std::swap(q[k - 1], q[mod(rng(), k)]);
-          } else {
-            for (size_t k = g.size(); k > 1; --k) std::swap(perm[g[k - 1]], perm[g[mod(rng(), k)]]);
+      for (int j = 0; j < batch; j += kLanes) {  // kLanes permutations per pass over the units
+        const int used = std::min(kLanes, batch - j);
+        for (int i = 0; i < used; ++i) {
+          for (size_t gi = 0; gi < groups.size(); ++gi) {  // Fisher-Yates within the group
+            const auto& g = groups[gi];
+            if (run[gi]) {
+              int* q = perm.data() + g[0];
+              for (size_t k = g.size(); k > 1; --k) std::swap(q[k - 1], q[mod(rng(), k)]);
+            } else {
+              for (size_t k = g.size(); k > 1; --k) std::swap(perm[g[k - 1]], perm[g[mod(rng(), k)]]);
+            }
           }
+          for (size_t u = 0; u < U; ++u) pz[u * kLanes + i] = xz[perm[u]], pl[u * kLanes + i] = xl[perm[u]];
         }
-        for (size_t u = 0; u < U; ++u) pz[u] = xz[perm[u]], pl[u] = xl[perm[u]];
-        if (stat(pz, pl, &dummy, &dummy_sub) >= T - 1e-12 * std::max(1.0, std::abs(T))) ++ge;
+        fill_lanes(pz, pl, used);
+        eval_lanes(pz, pl);
+        for (int i = 0; i < used; ++i)
+          if (lane_stat(i) >= T - 1e-12 * std::max(1.0, std::abs(T))) ++ge;
+        b += used;
       }
       dec = sequential_decision(ge, b, thr);
       if (dec != 0) break;
