@@ -350,8 +350,13 @@ int element_block(const ElementView& ev, int e0) {
       combined_points<W>(ev, e0, s, deps, spin, V, ratio, snew);
       on_lanes = true;
     } else if (ev.yld2004_lanes) {
+#if defined(__AVX__)
       yld2004_points<W>(ev, e0, s, deps, spin, V, ratio, snew);
       on_lanes = true;
+#endif
+      // The baseline kernel (SSE2: four lanes in two halves) keeps Yld2004-18p on the scalar path: its
+      // lanes cost 1.3 times the scalar path there (38.4 against 28.2-29.8 CPU s on bench_solver's
+      // yld2004 bar, docs/performance-log.md); on AVX2 and AVX-512 they cost a third of it.
     }
   }
   for (int l = 0; l < W && !on_lanes; ++l) {

@@ -41,7 +41,9 @@
 // the same libm calls, lane by lane), so that each lane gives this file's bits
 // for any thread count and instruction set (tests/unit/test_yld2004_lanes.cpp).
 // A lane whose first return (the whole increment) does not converge is handed
-// to update() here, which repeats it and goes on to the sub-increments.
+// to update() here, which repeats it and goes on to the sub-increments.  The
+// AVX2 and AVX-512 kernels use the lanes; the baseline kernel (SSE2) runs this
+// model point by point, where its lanes were slower (fe/element_kernel.hpp).
 #include <atomic>
 #include <memory>
 

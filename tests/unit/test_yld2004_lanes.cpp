@@ -11,12 +11,13 @@
 //    plane, uniaxial along RD - or along a random velocity field with spin,
 //    at rates from well inside the yield surface to increments of several
 //    times the yield strain, blocks of four and eight mixing the paths, for
-//    four cycles and then four with every velocity reversed.  The baseline
-//    kernel four side by side and, where the CPU has them, the AVX2 kernel
-//    (four) and the AVX-512 kernel (eight and four) give the bits of one
-//    element at a time in every output (stresses, states, hourglass forces and
+//    four cycles and then four with every velocity reversed.  Where the CPU
+//    has them, the AVX2 kernel (four side by side) and the AVX-512 kernel
+//    (eight and four) give the bits of one element at a time in every output (stresses, states, hourglass forces and
 //    ratios, corner forces, energy increments, stable steps) after both
-//    phases, and the same return counts (plastic, split, fallback updates).
+//    phases, and the same return counts (plastic, split, fallback updates);
+//    so does the baseline kernel four side by side, which runs this model
+//    point by point (fe/element_kernel.hpp says why).
 //  - Coverage, from the scalar run: elastic and plastic points in both
 //    phases; with the isotropic set, equibiaxial points whose transformed
 //    deviator has two principal values closer than the yield function's 1e-5
