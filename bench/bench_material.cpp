@@ -4,9 +4,11 @@
 // per point update on one thread.  J2 isotropic is the element loop's model
 // today; the others are CombinedPlasticity (material/combined_plasticity.hpp):
 // the split form, two Chaboche terms, Hill'48 alone and Hill'48 with Chaboche;
-// and Yld2004-18p (material/yld2004_plasticity.hpp, scalar path: no lanes) with
-// the set fitted to the ESAFORM 2021 AA6016-T4 tests (Chapter v1), a = 8,
-// alone and with two Chaboche terms.
+// and Yld2004-18p (material/yld2004_plasticity.hpp) with the set fitted to the
+// ESAFORM 2021 AA6016-T4 tests (Chapter v1), a = 8, alone and with two
+// Chaboche terms.  These are the scalar updates, one point at a time; the
+// element kernel runs each of these models on its vector lanes
+// (material/lanes/), which `--bar-material` times in the element loop.
 // Material constants: AA5754-O-like (E = 70 GPa, nu = 0.33, yield 100 MPa).
 // Timed on the thread's CPU clock (the update is serial: time the thread
 // spends descheduled on a shared machine is not the model's), the shortest of
@@ -16,6 +18,7 @@
 // rows `<model>_explicit_step`, plastic points on an explicit run's small
 // increments (an iterative return converges in fewer iterations there).
 #include "bench_material.hpp"
+#include "bench_models.hpp"
 
 #include <time.h>
 
@@ -68,10 +71,7 @@ void bench_material(CsvWriter& w, bool quick) {
   const double E = 70000, nu = 0.33, rho = 2.7e-9;
   auto curve = [] { return material::HardeningCurve::voce(100.0, 180.0, 14.0); };
   const auto hill = material::Hill48::from_r_values(0.65, 0.65, 0.72);
-  material::Yld2004 yld;  // fitted to data/materials/aa6016_t4_esaform2021.csv by drawbend calibrate (c44 = c55 = 1)
-  yld.a = 8;
-  yld.c1 = {1.0059518, 1.1865517, 0.0087202487, 0.75613553, 1.1445682, 0.84840891, 1, 1, 0.17885443};
-  yld.c2 = {0.87834346, 1.1811921, 1.0479014, 1.2886127, 0.036486783, 1.5701502, 1, 1, 1.5886608};
+  const material::Yld2004 yld = bench_yld2004_set();  // bench_models.hpp
   material::KinematicHardening split, chab, none;
   split.beta = 0.3;
   chab.chaboche = {{6000.0, 60.0}, {800.0, 5.0}};

@@ -7,10 +7,49 @@
 #include "fe/solver.hpp"
 #include "material/combined_plasticity.hpp"
 #include "material/j2_isotropic.hpp"
+#include "material/yld2004_plasticity.hpp"
 
 using namespace drawbend;
 
 // The materials and models: bench_models.hpp says what each is.
+namespace {
+/// A model run point by point: every call forwarded to `m`, but no lane twin bound (Material::bind_lanes
+/// not overridden), so that the element kernel takes its scalar path: the cost before the model's lanes.
+class ScalarPath final : public material::Material {
+ public:
+  explicit ScalarPath(std::shared_ptr<const material::Material> m) : m_(std::move(m)) {}
+  int state_size() const override { return m_->state_size(); }
+  using Material::init_state;
+  void init_state(double* s, const material::SheetAxes& a) const override { m_->init_state(s, a); }
+  using Material::update;
+  void update(const double d[6], const material::Spin& w, double s[6], double* st) const override {
+    m_->update(d, w, s, st);
+  }
+  double density() const override { return m_->density(); }
+  double youngs_modulus() const override { return m_->youngs_modulus(); }
+  double poisson_ratio() const override { return m_->poisson_ratio(); }
+  double tangent_ratio(const double* s, const double* st) const override { return m_->tangent_ratio(s, st); }
+  bool uses_spin() const override { return m_->uses_spin(); }
+  bool directional() const override { return m_->directional(); }
+  double plastic_strain(const double* st) const override { return m_->plastic_strain(st); }
+  bool has_back_stress() const override { return m_->has_back_stress(); }
+  void back_stress(const double* st, double a[6]) const override { m_->back_stress(st, a); }
+  bool sheet_axes(const double* st, double rd[3], double nd[3]) const override { return m_->sheet_axes(st, rd, nd); }
+  std::string describe() const override { return m_->describe() + " (scalar path)"; }
+
+ private:
+  std::shared_ptr<const material::Material> m_;
+};
+}  // namespace
+
+material::Yld2004 bench_yld2004_set() {
+  material::Yld2004 yld;
+  yld.a = 8;
+  yld.c1 = {1.0059518, 1.1865517, 0.0087202487, 0.75613553, 1.1445682, 0.84840891, 1, 1, 0.17885443};
+  yld.c2 = {0.87834346, 1.1811921, 1.0479014, 1.2886127, 0.036486783, 1.5701502, 1, 1, 1.5886608};
+  return yld;
+}
+
 std::shared_ptr<const material::Material> bar_material(const std::string& name) {
   const double E = 70000.0, nu = 0.33, rho = 2.7e-9;
   const material::HardeningCurve curve({0.0, 1.0}, {100.0, 600.0});
@@ -23,6 +62,12 @@ std::shared_ptr<const material::Material> bar_material(const std::string& name) 
   if (name == "chaboche") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, chab);
   if (name == "hill48") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, none, hill);
   if (name == "hill48_chaboche") return std::make_shared<material::CombinedPlasticity>(E, nu, rho, curve, chab, hill);
+  if (name == "yld2004") return std::make_shared<material::Yld2004Plasticity>(E, nu, rho, curve, none, bench_yld2004_set());
+  const std::string scalar = "_scalar";  // e.g. hill48_scalar: the same model on the kernel's scalar path
+  if (name.size() > scalar.size() && name.ends_with(scalar)) {
+    auto m = bar_material(name.substr(0, name.size() - scalar.size()));
+    return m ? std::make_shared<ScalarPath>(std::move(m)) : nullptr;
+  }
   return nullptr;
 }
 

@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   opt.add_flag(calculix_only, "calculix", "only CalculiX (ccx) and ours on the same bar, if ccx is installed");
   opt.add(only, "case", "only this case of the element-cycle costs: bar_1600, bar_8000, drawbend_4800 or bar_64000");
   opt.add(bar_mat, "bar-material",
-          "only the 1,600-element bar on 1 thread with this material: j2, split, chaboche, hill48 or hill48_chaboche");
+          "only the 1,600-element bar on 1 thread with this material: j2, split, chaboche, hill48, hill48_chaboche or yld2004, or one of them with _scalar appended (no lanes)");
   try {
     if (!opt.parse(argc, argv)) return 0;
   } catch (const std::invalid_argument& e) {
@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
     auto m = bar_material(bar_mat);
     if (!m) {
       std::cerr << "bench_solver: --bar-material '" << bar_mat
-                << "' is not j2, split, chaboche, hill48 or hill48_chaboche\n";
+                << "' is not j2, split, chaboche, hill48, hill48_chaboche or yld2004 (with _scalar or without)\n";
       return 2;
     }
     cases = {{"bar_1600_" + bar_mat, bar(40, 8, 5, std::move(m))}};

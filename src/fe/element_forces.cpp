@@ -30,6 +30,8 @@ void bind_lanes(ElementView& v) {
   if (b.j2) v.j2 = b.j2_params;
   v.combined_lanes = b.combined;
   if (b.combined) v.combined = b.combined_params;
+  v.yld2004_lanes = b.yld2004;
+  if (b.yld2004) v.yld2004 = b.yld2004_params;
 }
 
 bool avx512_kernel_available() {

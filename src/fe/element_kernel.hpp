@@ -34,7 +34,7 @@
 //
 // Structure (LULESH): gather -> geometry (in Walsh form, fe/hex8_geometry.hpp)
 // and strain rates on fixed-size locals (vector lanes) -> material update (J2
-// and combined hardening / Hill'48 on the lanes with masks; other models, and
+// and combined hardening / Hill'48 / Yld2004-18p on the lanes with masks; other models, and
 // W = 1, one point at a time) -> forces on fixed-size locals -> scatter into
 // the corner slots (node-major in the solver, so that its nodal sums read in
 // order).
@@ -49,6 +49,7 @@
 #include "fe/hex8_geometry.hpp"
 #include "material/lanes/combined_lanes.hpp"
 #include "material/lanes/j2_lanes.hpp"
+#include "material/lanes/yld2004_lanes.hpp"
 
 namespace drawbend::fe::DRAWBEND_ISA {
 
@@ -57,6 +58,7 @@ namespace kernel {
 // law in material/lanes/, compiled here for this instruction set.
 using material::lanes::DRAWBEND_ISA::combined_points;
 using material::lanes::DRAWBEND_ISA::j2_points;
+using material::lanes::DRAWBEND_ISA::yld2004_points;
 
 constexpr double kRelax = 0.01;                 // tangent ratio relaxes over ~100 cycles (no chatter)
 constexpr double kZg = 0.57735026918962576;    // 1/sqrt(3)
@@ -331,8 +333,9 @@ int element_block(const ElementView& ev, int e0) {
     rotate_and_strain(Lmid, dtp, s[gp], deps[gp], spin[gp]);
   }
   // ... the material update, with the stress power increment per unit volume
-  // by the midpoint rule; the tangent ratio.  J2 and CombinedPlasticity on
-  // the lanes, branch-free (material/lanes/j2_lanes.hpp, combined_lanes.hpp);
+  // by the midpoint rule; the tangent ratio.  J2, CombinedPlasticity and
+  // Yld2004Plasticity on the lanes, branch-free (material/lanes/j2_lanes.hpp,
+  // combined_lanes.hpp, yld2004_lanes.hpp);
   // other materials one point at a time (each turns its own history with the
   // point's spin).
   const material::Material& mat = *ev.mat;
@@ -346,6 +349,14 @@ int element_block(const ElementView& ev, int e0) {
     } else if (ev.combined_lanes) {
       combined_points<W>(ev, e0, s, deps, spin, V, ratio, snew);
       on_lanes = true;
+    } else if (ev.yld2004_lanes) {
+#if defined(__AVX__)
+      yld2004_points<W>(ev, e0, s, deps, spin, V, ratio, snew);
+      on_lanes = true;
+#endif
+      // The baseline kernel (SSE2: four lanes in two halves) keeps Yld2004-18p on the scalar path: its
+      // lanes cost 1.3 times the scalar path there (38.4 against 28.2-29.8 CPU s on bench_solver's
+      // yld2004 bar, docs/performance-log.md); on AVX2 and AVX-512 they cost a third of it.
     }
   }
   for (int l = 0; l < W && !on_lanes; ++l) {

@@ -14,6 +14,7 @@
 #include "fe/node_view.hpp"
 #include "material/combined_plasticity.hpp"
 #include "material/j2_isotropic.hpp"
+#include "material/yld2004_plasticity.hpp"
 #include "material/lanes/points_view.hpp"
 #include "material/material.hpp"
 
@@ -53,6 +54,8 @@ struct ElementView {
   material::J2Isotropic::LaneParams j2{};  ///< its constants, when j2_lanes
   bool combined_lanes = false;   ///< mat is CombinedPlasticity (von Mises or Hill'48): on the lanes too
   material::CombinedPlasticity::LaneParams combined{};  ///< its constants, when combined_lanes
+  bool yld2004_lanes = false;    ///< mat is Yld2004Plasticity: on the lanes too
+  material::Yld2004Plasticity::LaneParams yld2004{};  ///< its constants, when yld2004_lanes
   double E0 = 0, G0 = 0;         ///< elastic moduli [MPa]
   double hourglass = 0;          ///< hourglass stiffness scale
   double c_elastic = 0;          ///< nu / (1 - nu)
@@ -79,8 +82,8 @@ namespace avx512 {
 int element_range(const ElementView& v, int begin, int end, int width);
 }
 
-/// Sets v.j2_lanes, v.j2, v.combined_lanes and v.combined from v.mat: the lane
-/// version of its update where it has one (J2 isotropic, CombinedPlasticity:
+/// Sets v.j2_lanes, v.j2, v.combined_lanes, v.combined, v.yld2004_lanes and v.yld2004 from v.mat: the lane
+/// version of its update where it has one (J2 isotropic, CombinedPlasticity, Yld2004Plasticity:
 /// the material says so through Material::bind_lanes, material/lane_binding.hpp),
 /// else the scalar one.  Call after setting v.mat.
 void bind_lanes(ElementView& v);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/csv.hpp"
+#include "material/lane_binding.hpp"
 #include "material/sheet_frame.hpp"
 
 namespace drawbend::material {
@@ -200,6 +201,28 @@ void Yld2004Plasticity::update(const double deps[6], const Spin& spin, double si
   sheet_transform(Q, ts, sigma, false);
   for (int k = 0; k < nback_; ++k) sheet_transform(Q, an[k], back + 6 * k, false);
   state[0] = ep + dl;
+}
+
+Yld2004Plasticity::LaneParams Yld2004Plasticity::lane_params() const noexcept {
+  LaneParams p{el_.lambda, el_.G, el_.E, s0_, kin_.beta, {0, 0, 0}, {0, 0, 0},
+               static_cast<int>(kin_.chaboche.size()), nback_, yld_.a,
+               yld_.a == std::floor(yld_.a) && yld_.a <= 64,  // Yld2004's own test (yld2004.cpp, evaluate)
+               {}, {}, curve_.table(), this};
+  for (int k = 0; k < p.nterms; ++k) {
+    p.C[k] = kin_.chaboche[k].C;
+    p.gamma[k] = kin_.chaboche[k].gamma;
+  }
+  for (int i = 0; i < 9; ++i) p.c1[i] = yld_.c1[i], p.c2[i] = yld_.c2[i];
+  return p;
+}
+
+void Yld2004Plasticity::bind_lanes(LaneBinding& b) const {
+  b.yld2004 = true;
+  b.yld2004_params = lane_params();
+}
+
+void Yld2004Plasticity::count_lane_returns(long plastic) const {
+  counts_->plastic.fetch_add(plastic, std::memory_order_relaxed);
 }
 
 Yld2004Plasticity::ReturnCounts Yld2004Plasticity::return_counts() const {

@@ -35,10 +35,15 @@
 // State per point: [eps_p, alpha_1 (6), ..., alpha_n (6), RD (3), ND (3)], as
 // CombinedPlasticity's Hill'48; the back stresses and axes turn with the spin.
 //
-// Lanes: none.  The element kernel runs this model through update() on the
-// scalar path (it does not override Material::bind_lanes; only J2Isotropic
-// and CombinedPlasticity have twins, in material/lanes/), so its results are the same bits for any thread count
-// and instruction set (the per-point update reads nothing outside its state).
+// Lanes: material/lanes/yld2004_lanes.hpp (bind_lanes below) repeats update()
+// and tangent_ratio() on the element kernel's vector lanes with the same
+// arithmetic in the same order (the principal values' acos, cos and sin are
+// the same libm calls, lane by lane), so that each lane gives this file's bits
+// for any thread count and instruction set (tests/unit/test_yld2004_lanes.cpp).
+// A lane whose first return (the whole increment) does not converge is handed
+// to update() here, which repeats it and goes on to the sub-increments.  The
+// AVX2 and AVX-512 kernels use the lanes; the baseline kernel (SSE2) runs this
+// model point by point, where its lanes were slower (fe/element_kernel.hpp).
 #include <atomic>
 #include <memory>
 
@@ -93,6 +98,27 @@ class Yld2004Plasticity final : public Material {
   };
   ReturnCounts return_counts() const;
   std::vector<std::pair<std::string, long>> event_counts() const override;
+
+  /// The constants behind update() and tangent_ratio(), for the element kernel's lanes
+  /// (material/lanes/yld2004_lanes.hpp and yld2004_function_lanes.hpp repeat both step by step; a change
+  /// here must be made there, or test_yld2004_lanes fails).  self: this model, for the lanes it hands
+  /// back to update() and for the return counters.
+  struct LaneParams {
+    double lambda, G, E;    ///< elastic constants [MPa]
+    double s0, beta;        ///< initial yield stress [MPa]; split fraction (0: Chaboche or none)
+    double C[3], gamma[3];  ///< Chaboche terms: C [MPa], gamma [1]
+    int nterms, nback;      ///< Chaboche terms; back stresses in the state
+    double a;               ///< the exponent
+    bool integral;          ///< a is an integer <= 64 (powers by multiplication)
+    double c1[9], c2[9];    ///< the normalised C' and C''
+    HardeningCurve::Table curve;
+    const Yld2004Plasticity* self;
+  };
+  LaneParams lane_params() const noexcept;
+  void bind_lanes(LaneBinding& b) const override;
+  /// Counts `plastic` plastic updates done on the lanes (converged on the whole increment).  Not inline:
+  /// the per-instruction-set kernels call it, and must define no code outside their namespaces.
+  void count_lane_returns(long plastic) const;
 
  private:
   // One return from the local trial stress ts and back stresses an (sheet axes, modified in place) at

@@ -33,6 +33,7 @@
 #include <utility>
 #include <vector>
 
+#include "element_arrays.hpp"
 #include "fe/element_view.hpp"
 #include "material/hardening_curve.hpp"
 #include "material/combined_plasticity.hpp"
@@ -44,10 +45,8 @@ using namespace drawbend::fe;
 
 namespace {
 /// Independent elements (8 own nodes each) with their solver-like arrays.
-struct Block {
+struct Block : testing::ElementArrays {
   int ne;
-  std::vector<std::array<int, 8>> hex;
-  std::vector<double> x, y, z, vx, vy, vz, sig, state, hgq, ratio, corner, ie, hg, dt, mf;
   material::J2Isotropic j2{70000, 0.33, 2.7e-9, material::HardeningCurve({0, 0.1, 1}, {100, 200, 300})};
   material::CombinedPlasticity hill{70000,
                                     0.33,
@@ -122,32 +121,7 @@ struct Block {
     dt.assign(n, 0.0);
     mf.assign(n, 10.0);  // sqrt of a mass factor of 100
   }
-  ElementView view() {
-    ElementView v;
-    v.hex = hex.data();
-    v.nodes.n = static_cast<int>(x.size());
-    v.nodes.x = x.data(), v.nodes.y = y.data(), v.nodes.z = z.data();
-    v.nodes.vx = vx.data(), v.nodes.vy = vy.data(), v.nodes.vz = vz.data();
-    v.sig = sig.data(), v.state = state.data(), v.hgq = hgq.data(), v.hg_ratio = ratio.data();
-    v.corner = corner.data(), v.ie_inc = ie.data(), v.hg_inc = hg.data(), v.dt_elem = dt.data();
-    v.sqrt_mass_factor = mf.data();
-    v.mat = &mat;
-    v.ns = mat.state_size();
-    v.spin = mat.uses_spin();
-    v.E0 = mat.youngs_modulus(), v.G0 = mat.shear_modulus();
-    v.hourglass = 0.1;
-    v.c_elastic = 0.33 / 0.67;
-    v.dtp = 1e-4;
-    v.wave_speed = mat.wave_speed();
-    bind_lanes(v);
-    return v;
-  }
-  /// Everything the kernel writes, for bitwise comparison.
-  std::vector<double> outputs() const {
-    std::vector<double> o;
-    for (const auto* a : {&sig, &state, &hgq, &ratio, &corner, &ie, &hg, &dt}) o.insert(o.end(), a->begin(), a->end());
-    return o;
-  }
+  ElementView view() { return view_of(mat, 1e-4); }
 };
 
 std::vector<double> run(ElementRangeFn f, int width, int cycles, int* inverted = nullptr, bool invert5 = false,

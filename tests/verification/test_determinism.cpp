@@ -66,7 +66,7 @@ static void same_on_one_and_two_threads(std::shared_ptr<const material::Material
 
 BOOST_AUTO_TEST_CASE(one_and_two_threads_identical) { same_on_one_and_two_threads(nullptr, 1e-3); }
 
-// Yld2004-18p (scalar path, a = 8, anisotropic, with two Chaboche terms): the same bits on 1 and 2 threads,
+// Yld2004-18p (on the vector lanes, a = 8, anisotropic, with two Chaboche terms): the same bits on 1 and 2 threads,
 // over a tenth of the duration (its update costs several times J2's) and with a 20 MPa initial yield stress, so
 // that the block yields by then (checked).
 BOOST_AUTO_TEST_CASE(yld2004_one_and_two_threads_identical) {

@@ -256,13 +256,7 @@ inline void combined_tangent_ratio(const CombinedParams& P, const T s[6], const 
   isotropic_from_curve(P, sy, R);
   hill_equivalent(P.hill, xi, q);
   const T f = q / R;
-  for (int k = 0; k < P.nterms; ++k) {
-    const T v = -P.gamma[k] * st.ep;
-    T e = {};
-    for (int l = 0; l < W; ++l)
-      if (!(lane(f, l) <= 0.90)) set_lane(e, l, std::exp(lane(v, l)));
-    H += P.C[k] * e;
-  }
+  add_chaboche_tangent<W>(P.nterms, P.C, P.gamma, st.ep, f, H);
   proximity_ratio(f, H, P.E, ratio);
 }
 

@@ -169,6 +169,21 @@ inline void proximity_ratio(const T& f, const T& H, double E, T& ratio) {
   ratio = low ? one : (high ? plastic : between);
 }
 
+/// H += sum_k C[k] exp(-gamma[k] ep), the Chaboche terms' part of the monotonic
+/// uniaxial tangent (CombinedPlasticity::tangent_ratio, Yld2004Plasticity's),
+/// the exponentials lane by lane and only in the lanes that use them (f above
+/// 0.90, or NaN): proximity_ratio selects 1 where f <= 0.90 whatever H is.
+template <int W, class T>
+inline void add_chaboche_tangent(int nterms, const double C[], const double gamma[], const T& ep, const T& f, T& H) {
+  for (int k = 0; k < nterms; ++k) {
+    const T v = -gamma[k] * ep;
+    T e = {};
+    for (int l = 0; l < W; ++l)
+      if (!(lane(f, l) <= 0.90)) set_lane(e, l, std::exp(lane(v, l)));
+    H += C[k] * e;
+  }
+}
+
 /// The material section of element_block<W> shared by the models on the
 /// lanes: for each point, update(gp, sn) updates sn (in: the rotated stress
 /// s[gp], out: the new stress) and the point's state in ev.state, and

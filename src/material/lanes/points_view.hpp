@@ -11,6 +11,7 @@
 //   bool spin         the material rotates its own state (Material::uses_spin)
 //   bool j2_lanes, J2Isotropic::LaneParams j2                  (j2_lanes.hpp)
 //   bool combined_lanes, CombinedPlasticity::LaneParams combined  (combined_lanes.hpp)
+//   bool yld2004_lanes, Yld2004Plasticity::LaneParams yld2004     (yld2004_lanes.hpp)
 //   double dtp        length of the interval the velocities act over [s]
 // The twins take the view as a template parameter, so that no twin includes
 // an fe/ header and the kernel's view keeps its own layout (the machine code
@@ -20,6 +21,7 @@
 
 #include "material/combined_plasticity.hpp"
 #include "material/j2_isotropic.hpp"
+#include "material/yld2004_plasticity.hpp"
 
 namespace drawbend::material::lanes {
 
@@ -32,6 +34,8 @@ constexpr bool is_points_view() {
          std::is_same_v<decltype(View::j2), J2Isotropic::LaneParams> &&
          std::is_same_v<decltype(View::combined_lanes), bool> &&
          std::is_same_v<decltype(View::combined), CombinedPlasticity::LaneParams> &&
+         std::is_same_v<decltype(View::yld2004_lanes), bool> &&
+         std::is_same_v<decltype(View::yld2004), Yld2004Plasticity::LaneParams> &&
          std::is_same_v<decltype(View::dtp), double>;
 }
 
