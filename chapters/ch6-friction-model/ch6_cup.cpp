@@ -86,12 +86,12 @@ std::vector<std::size_t> cup_rows(const CupSetup& S, const std::string& cases) {
 /// The cases side by side (sim/case_pool.hpp), each a file-level job; their rows of the tables.
 CupRuns run_cups(study::Chapter& c, const CupSetup& S, const std::vector<std::size_t>& rows, CsvWriter& w,
                  CsvWriter& curves) {
-  [[maybe_unused]] const std::string &deck = S.deck, &sc = S.sc, &material = S.material;
+  const std::string &deck = S.deck, &material = S.material;
   const CsvTable& t65 = S.t65;
-  [[maybe_unused]] const double stroke = S.stroke, d_eval = S.d_eval;
-  [[maybe_unused]] const long cycles = S.cycles;
-  [[maybe_unused]] const int refine = S.refine;
-  [[maybe_unused]] const bool full = S.full, reuse = S.reuse;
+  const double stroke = S.stroke, d_eval = S.d_eval;
+  const long cycles = S.cycles;
+  const int refine = S.refine;
+  const bool reuse = S.reuse;
   std::vector<CupResult> runs(rows.size());
   sim::run_cases(rows.size(), [&](std::size_t k) {
     const auto& row = t65.rows[rows[k]];
@@ -142,21 +142,18 @@ void case1_field(study::Chapter& c, const CupRuns& R) {
 
 /// Where the strain peaks at the failure stroke (a run of the full tier).
 void failure_stroke(study::Chapter& c, const CupSetup& S) {
-  [[maybe_unused]] const std::string &deck = S.deck, &sc = S.sc, &material = S.material;
   const CsvTable& t65 = S.t65;
-  [[maybe_unused]] const double stroke = S.stroke, d_eval = S.d_eval;
-  [[maybe_unused]] const long cycles = S.cycles;
-  [[maybe_unused]] const int refine = S.refine;
-  [[maybe_unused]] const bool full = S.full, reuse = S.reuse;
+  const std::string& sc = S.sc;
+  const bool full = S.full;
   // Sec. 6.6.3, Figs. 6.26-6.27: where the strain peaks in case 1 at 21 mm (full only; the default
   // reports the end of the 17 mm stroke).
   const double d_fail = study::scalar(sc, "ch6_failure_stroke").value;
   if (full) {
     sim::CupSpec spec;
-    spec.deck = deck, spec.speed = t65.number(t65.rows.front(), "punch_speed_mm_s"), spec.stroke = d_fail;
-    spec.cycles = static_cast<long>(cycles * d_fail / stroke), spec.refine = refine, spec.material = material;
+    spec.deck = S.deck, spec.speed = t65.number(t65.rows.front(), "punch_speed_mm_s"), spec.stroke = d_fail;
+    spec.cycles = static_cast<long>(S.cycles * d_fail / S.stroke), spec.refine = S.refine, spec.material = S.material;
     spec.vtu = c.out("tables/cup_case1_21mm.vtu");
-    const CupResult r = sim::draw_cup_job(spec, c.out("runs/ch6_cup_case1_21mm"), reuse);
+    const CupResult r = sim::draw_cup_job(spec, c.out("runs/ch6_cup_case1_21mm"), S.reuse);
     c.value("cup_strain_21_r", fmt_fixed(r.max_strain_r, 1), "mm");
     c.value("cup_strain_21_z", fmt_fixed(r.max_strain_z, 1), "mm");
     c.value("cup_strain_21", fmt_fixed(r.max_strain, 3));
@@ -219,12 +216,10 @@ void cup_values(study::Chapter& c, const CupSetup& S, const CupRuns& R) {
 
 /// Sec. 6.6's claims and the health checks; the force figure.
 void cup_checks(study::Chapter& c, const CupSetup& S, const CupRuns& R) {
-  [[maybe_unused]] const std::string &deck = S.deck, &sc = S.sc, &material = S.material;
   const CsvTable& t65 = S.t65;
-  [[maybe_unused]] const double stroke = S.stroke, d_eval = S.d_eval;
-  [[maybe_unused]] const long cycles = S.cycles;
-  [[maybe_unused]] const int refine = S.refine;
-  [[maybe_unused]] const bool full = S.full, reuse = S.reuse;
+  const std::string& sc = S.sc;
+  const double d_eval = S.d_eval;
+  const bool full = S.full;
   const std::map<std::string, CupResult>& res = R.res;
   const CupResult &r1 = res.at("1"), &r9 = res.at(t65.text(t65.rows.back(), "case"));
   const double f1 = force_at(r1, d_eval) / 1000, f9 = force_at(r9, d_eval) / 1000;
