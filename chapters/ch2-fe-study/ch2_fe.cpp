@@ -66,7 +66,7 @@ double steady_distance(const sim::DrawBendResult& r, double band) {
 Runs runs(study::Chapter& c, const FeOptions& o) {
   Runs R;
   R.sc = c.data("thesis/scalars.csv");
-  [[maybe_unused]] const std::string& sc = R.sc;
+  const std::string& sc = R.sc;
   const CsvTable t41 = read_csv(c.data("thesis/table_4_1.csv"));
   const double mu_in = study::scalar(sc, "ch2_mu_input").value;
   R.w_half = study::scalar(sc, "ch5_strip_width").value / 2;
@@ -131,9 +131,9 @@ Runs runs(study::Chapter& c, const FeOptions& o) {
 
 // 2. Pressure map, rows and the contact arc; returns the arc on the chapter mesh.
 sim::ContactArc pressure_map_and_arc(study::Chapter& c, const Runs& R) {
-  [[maybe_unused]] const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
-  [[maybe_unused]] const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1], &gf = R.all[3], &gr = R.all[4];
-  [[maybe_unused]] const std::string& sc = R.sc;
+  const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
+  const sim::DrawBendResult &fr = R.all[0], &gr = R.all[4];
+  const std::string& sc = R.sc;
   // mu = 0.1, end of the draw.
   sim::save_map_grid(fr.map, c.out("tables/map_coulomb.dat"), "contact pressure [MPa], 12.7 mm pin, mu = 0.1");
   c.plot("pressure_map", "fig_2_6", {{"gridfile", c.out("tables/map_coulomb.dat")},
@@ -206,9 +206,8 @@ sim::ContactArc pressure_map_and_arc(study::Chapter& c, const Runs& R) {
 
 // 2. Pressure peaks at entry, exit and mid-wrap; the edge free of contact.
 void pressure_peaks(study::Chapter& c, const Runs& R) {
-  [[maybe_unused]] const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
-  [[maybe_unused]] const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1], &gf = R.all[3], &gr = R.all[4];
-  [[maybe_unused]] const std::string& sc = R.sc;
+  const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
+  const sim::DrawBendResult &fr = R.all[0], &gr = R.all[4];
   const auto rows = sim::rows_of(fr.map);
   const auto& centre = rows.front();
   const auto& edge = rows.back();
@@ -257,9 +256,8 @@ void pressure_peaks(study::Chapter& c, const Runs& R) {
 
 // 2. Maximum pressure, frictionless against mu = 0.1; returns the mu = 0.1 maximum.
 double max_pressure_difference(study::Chapter& c, const Runs& R) {
-  [[maybe_unused]] const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
-  [[maybe_unused]] const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1], &gf = R.all[3], &gr = R.all[4];
-  [[maybe_unused]] const std::string& sc = R.sc;
+  const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1], &gf = R.all[3], &gr = R.all[4];
+  const std::string& sc = R.sc;
   // Sec. 2.3.1: the frictionless maximum pressure is 1.2 % below the mu = 0.1
   // one.  Compared on the finer mesh; tolerance (stated before the run): the
   // change of the same difference between the two meshes, plus half the
@@ -287,9 +285,9 @@ double max_pressure_difference(study::Chapter& c, const Runs& R) {
 
 // 3. Strains of the tracked section.
 void tracked_strains(study::Chapter& c, const Runs& R) {
-  [[maybe_unused]] const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
-  [[maybe_unused]] const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1], &gf = R.all[3], &gr = R.all[4];
-  [[maybe_unused]] const std::string& sc = R.sc;
+  const sim::DrawBendSpec &s = R.s;
+  const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1], &gf = R.all[3], &gr = R.all[4];
+  const std::string& sc = R.sc;
   const double t = R.t;
   // Inside = contact side, outside = free side.
   auto st = c.table({"slide_mm", "strain_inside", "strain_outside"},
@@ -338,9 +336,7 @@ void tracked_strains(study::Chapter& c, const Runs& R) {
 
 // 3. Outside strain at mid-wrap and at the exit tangent against the slide.
 void mid_wrap_strain(study::Chapter& c, const Runs& R) {
-  [[maybe_unused]] const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
-  [[maybe_unused]] const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1], &gf = R.all[3], &gr = R.all[4];
-  [[maybe_unused]] const std::string& sc = R.sc;
+  const sim::DrawBendResult &fr = R.all[0];
   auto mw = c.table({"slide_mm", "outside_strain_at_mid_wrap", "outside_strain_at_exit"},
                     "outside log strain of the section at mid-wrap and at the exit tangent against the slide in the "
                     "draw (mu = 0.1); empty where no tracked section is there");
@@ -357,9 +353,8 @@ void mid_wrap_strain(study::Chapter& c, const Runs& R) {
 
 // 3. The steady strain along the strip (Fig. 2.13) and Wilson's linear rise; the field figures.
 void steady_strain_distribution(study::Chapter& c, const Runs& R) {
-  [[maybe_unused]] const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
-  [[maybe_unused]] const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1], &gf = R.all[3], &gr = R.all[4];
-  [[maybe_unused]] const std::string& sc = R.sc;
+  const sim::DrawBendSpec &s = R.s;
+  const sim::DrawBendResult &fr = R.all[0], &gr = R.all[4];
   const double Lw = sim::wrap_length(s);
   // Fig. 2.13: the steady distribution of the outside strain along the strip,
   // from upstream of the entry tangent (fraction < 0) to downstream of the exit
@@ -414,9 +409,9 @@ void steady_strain_distribution(study::Chapter& c, const Runs& R) {
 
 // 3. The slide to the steady state against the wrap length.
 void steady_state(study::Chapter& c, const Runs& R) {
-  [[maybe_unused]] const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
-  [[maybe_unused]] const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1], &gf = R.all[3], &gr = R.all[4];
-  [[maybe_unused]] const std::string& sc = R.sc;
+  const sim::DrawBendSpec &s = R.s;
+  const sim::DrawBendResult &fr = R.all[0];
+  const std::string& sc = R.sc;
   // The steady state (Sec. 2.3.2: the strains reach a uniform distribution):
   // the whole wrap is steady once the strip leaving it, at the exit tangent,
   // has a steady strain (within 2 % of its last value).  Also at mid-wrap,
@@ -442,9 +437,9 @@ void steady_state(study::Chapter& c, const Runs& R) {
 
 // 4. Forces: F_B against Swift, mu by Eq. (2.3).
 Forces forces(study::Chapter& c, const Runs& R) {
-  [[maybe_unused]] const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
-  [[maybe_unused]] const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1], &gf = R.all[3], &gr = R.all[4];
-  [[maybe_unused]] const std::string& sc = R.sc;
+  const sim::DrawBendSpec &s = R.s;
+  const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1];
+  const std::string& sc = R.sc;
   const double t = R.t, w_half = R.w_half;
   const double FB = ff.tension_rise();
   const double mu = mu_rope(fr.F_back, fr.F_out, FB, M_PI / 2);
@@ -481,9 +476,8 @@ Forces forces(study::Chapter& c, const Runs& R) {
 // 5. Mass scaling and mesh convergence.
 void mass_scaling_and_convergence(study::Chapter& c, const Runs& R, const Forces& F, const sim::ContactArc& arc,
                                   double pmax_r) {
-  [[maybe_unused]] const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
-  [[maybe_unused]] const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1], &gf = R.all[3], &gr = R.all[4];
-  [[maybe_unused]] const std::string& sc = R.sc;
+  const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
+  const sim::DrawBendResult &gf = R.all[3], &gr = R.all[4];
   const sim::DrawBendResult& fm = R.all[2];
   const double FB = F.FB, mu = F.mu;
   const double FB_ms = fm.tension_rise();
