@@ -7,13 +7,15 @@
 // plastic strain along the strip (Figs. 2.8, 2.15, 2.16) in ch2_fields.cpp.
 // Half model: forces in N; MPa; mm; s.
 //
-// Recipe:
-//   1. Runs: Coulomb 0.1 and frictionless at the chapter mesh; frictionless at
-//      a lower mass scaling; both at a finer mesh (convergence).
-//   2. Pressure map, row profiles, contact arc and peaks.
-//   3. Strain histories and the steady state.
-//   4. Forces: F_B against Swift, mu by Eq. (2.3).
-//   5. Mass scaling and mesh convergence.
+// Recipe (fe_study: one named step a call):
+//   1. runs: Coulomb 0.1 and frictionless at the chapter mesh; frictionless at
+//      a lower mass scaling; both at a finer mesh (convergence); penalty variants.
+//   2. pressure_map_and_arc, pressure_peaks, max_pressure_difference: the
+//      pressure map, row profiles, contact arc and peaks.
+//   3. tracked_strains, mid_wrap_strain, steady_strain_distribution,
+//      steady_state: strain histories and the steady state.
+//   4. forces: F_B against Swift, mu by Eq. (2.3).
+//   5. mass_scaling_and_convergence.
 #include <array>
 #include <chrono>
 #include <map>
@@ -34,6 +36,23 @@ using namespace drawbend::analysis;
 
 namespace {
 
+constexpr double threshold = 0.5;  // MPa: contact where the pressure exceeds this
+
+/// The chapter's runs and the inputs the steps share.
+struct Runs {
+  std::string sc;                     ///< data/thesis/scalars.csv
+  double t = 0, w_half = 0;           ///< strip thickness and half width [mm]
+  sim::DrawBendSpec s, s_ms, s_fine;  ///< the chapter mesh, the lower mass scaling, the finer mesh
+  std::array<double, 2> penalty_scale{0.3, 3.0};
+  /// mu = 0.1 (fr), frictionless (ff), frictionless at the lower mass scaling (fm), frictionless
+  /// and mu = 0.1 on the finer mesh (gf, gr), then the penalty variants of fr.
+  std::vector<sim::DrawBendResult> all;
+};
+
+struct Forces {
+  double FB = 0, mu = 0;  ///< bending force [N], mu by Eq. (2.3)
+};
+
 /// Sliding distance [mm] after which the outlet force stays within `band` of
 /// its final level (mean of the last third), from the start of the draw.
 double steady_distance(const sim::DrawBendResult& r, double band) {
@@ -43,18 +62,21 @@ double steady_distance(const sim::DrawBendResult& r, double band) {
   return last_out * r.spec.speed;  // the speed ramp is short: slide ~ speed x time
 }
 
-}  // namespace
-
-void fe_study(study::Chapter& c, const FeOptions& o) {
-  const std::string sc = c.data("thesis/scalars.csv");
+// 1. Runs.
+Runs runs(study::Chapter& c, const FeOptions& o) {
+  Runs R;
+  R.sc = c.data("thesis/scalars.csv");
+  const std::string& sc = R.sc;
   const CsvTable t41 = read_csv(c.data("thesis/table_4_1.csv"));
   const double mu_in = study::scalar(sc, "ch2_mu_input").value;
-  const double w_half = study::scalar(sc, "ch5_strip_width").value / 2;
-  const double t = study::scalar(sc, "ch5_strip_thickness").value;
+  R.w_half = study::scalar(sc, "ch5_strip_width").value / 2;
+  R.t = study::scalar(sc, "ch5_strip_thickness").value;
+  const double w_half = R.w_half, t = R.t;
 
-  // 1. Runs.  Chapter 2 states neither pin nor back tension: the 12.7 mm pin
+  // Chapter 2 states neither pin nor back tension: the 12.7 mm pin
   // and 57 MPa of Chapter 4 (Table 4.1), drawn at 100 mm/s.
-  sim::DrawBendSpec s = o.base;
+  sim::DrawBendSpec& s = R.s;
+  s = o.base;
   s.pin_diameter = 12.7;
   s.thickness = t;
   s.width = w_half;
@@ -63,9 +85,11 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   s.hardening = c.data("materials/aa5754_o_rd.csv");
   const auto wall0 = std::chrono::steady_clock::now();
   const std::string coulomb = "{ law = \"coulomb\", mu = " + fmt(mu_in) + " }";
-  sim::DrawBendSpec s_ms = s;
+  sim::DrawBendSpec& s_ms = R.s_ms;
+  s_ms = s;
   s_ms.mass_scaling = o.low_mass_scaling;
-  sim::DrawBendSpec s_fine = s;
+  sim::DrawBendSpec& s_fine = R.s_fine;
+  s_fine = s;
   s_fine.element_length = o.fine_element_length;
   std::vector<sim::CaseJob> jobs;
   auto job = [&](sim::DrawBendSpec x, const std::string& name, const std::string& friction) {
@@ -81,13 +105,14 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   // Contact-penalty variants of the mu = 0.1 run (chapter mesh): do the
   // penalty stiffness and the pressure threshold move the contact arc's exit
   // end (ch2.fe.contact_end)?  About 80 s each on the quick mesh.
-  const std::array<double, 2> penalty_scale{0.3, 3.0};
+  const std::array<double, 2>& penalty_scale = R.penalty_scale;
   for (double k : penalty_scale) {
     sim::DrawBendSpec sp = s;
     sp.penalty = s.penalty * k;
     job(sp, "ch2_coulomb_penalty_x" + fmt(k), coulomb);
   }
-  const std::vector<sim::DrawBendResult> all = sim::run_drawbend_all(jobs, o.reuse);  // side by side
+  R.all = sim::run_drawbend_all(jobs, o.reuse);  // side by side
+  const std::vector<sim::DrawBendResult>& all = R.all;
   const sim::DrawBendResult &fr = all[0], &ff = all[1], &fm = all[2], &gf = all[3], &gr = all[4];
   c.value("fe_wall", fmt_fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count() / 60, 1),
           "min");
@@ -101,8 +126,15 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   for (const auto* r : {&fr, &ff, &fm, &gf, &gr, &all[5], &all[6]})
     study::check_run_health(c.checks(), "ch2.fe." + r->spec.name, r->spec.name,
                             {r->balance_error, r->kinetic_ratio, r->hourglass_ratio});
+  return R;
+}
 
-  // 2. Pressure map (mu = 0.1, end of the draw), rows, contact arc, peaks.
+// 2. Pressure map, rows and the contact arc; returns the arc on the chapter mesh.
+sim::ContactArc pressure_map_and_arc(study::Chapter& c, const Runs& R) {
+  const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
+  const sim::DrawBendResult &fr = R.all[0], &gr = R.all[4];
+  const std::string& sc = R.sc;
+  // mu = 0.1, end of the draw.
   sim::save_map_grid(fr.map, c.out("tables/map_coulomb.dat"), "contact pressure [MPa], 12.7 mm pin, mu = 0.1");
   c.plot("pressure_map", "fig_2_6", {{"gridfile", c.out("tables/map_coulomb.dat")},
                                      {"title_text", "Contact pressure, 12.7 mm pin, μ = 0.1 (Fig. 2.6)"}});
@@ -111,8 +143,6 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
                                      {"title_text", "Pressure along the rows, centre (y = 0) to edge (Fig. 2.7)"}});
   const auto rows = sim::rows_of(fr.map);
   const auto& centre = rows.front();
-  const auto& edge = rows.back();
-  const double threshold = 0.5;  // MPa: contact where the pressure exceeds this
   const sim::ContactArc arc = sim::contact_arc(centre, threshold);
   const double node_deg = s.element_length / (s.pin_diameter / 2) * 180 / M_PI;  // node spacing round the pin
   const double node_deg_fine = s_fine.element_length / (s.pin_diameter / 2) * 180 / M_PI;
@@ -155,12 +185,12 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
     };
     add(fr, fr.spec.name);
     add(gr, gr.spec.name);
-    for (std::size_t k = 0; k < penalty_scale.size(); ++k) add(all[5 + k], all[5 + k].spec.name);
+    for (std::size_t k = 0; k < R.penalty_scale.size(); ++k) add(R.all[5 + k], R.all[5 + k].spec.name);
     c.save(sens, "contact_arc_sensitivity");
-    c.value("arc_end_penalty_soft", fmt_fixed(sim::contact_arc(sim::rows_of(all[5].map).front(), threshold).end_deg, 1),
+    c.value("arc_end_penalty_soft", fmt_fixed(sim::contact_arc(sim::rows_of(R.all[5].map).front(), threshold).end_deg, 1),
             "deg");
     c.value("arc_end_penalty_stiff",
-            fmt_fixed(sim::contact_arc(sim::rows_of(all[6].map).front(), threshold).end_deg, 1), "deg");
+            fmt_fixed(sim::contact_arc(sim::rows_of(R.all[6].map).front(), threshold).end_deg, 1), "deg");
     c.value("arc_end_thr_0.1", fmt_fixed(sim::contact_arc(centre, 0.1).end_deg, 1), "deg");
     c.value("arc_end_thr_2", fmt_fixed(sim::contact_arc(centre, 2.0).end_deg, 1), "deg");
   }
@@ -171,6 +201,16 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("arc_end", fmt_fixed(arc.end_deg, 1), "deg");
   c.value("arc", fmt_fixed(arc.angle(), 1), "deg");
   c.value("node_deg", fmt_fixed(node_deg, 1), "deg");
+  return arc;
+}
+
+// 2. Pressure peaks at entry, exit and mid-wrap; the edge free of contact.
+void pressure_peaks(study::Chapter& c, const Runs& R) {
+  const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
+  const sim::DrawBendResult &fr = R.all[0], &gr = R.all[4];
+  const auto rows = sim::rows_of(fr.map);
+  const auto& centre = rows.front();
+  const auto& edge = rows.back();
   const sim::Peaks pc = sim::peaks(centre), pe = sim::peaks(edge);
   c.value("peak_entry", fmt_fixed(pc.entry, 1), "MPa");
   c.value("peak_entry_deg", fmt_fixed(pc.entry_deg, 1), "deg");
@@ -212,6 +252,12 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
                    "edge-row pressure at 45 deg " + fmt(pe.middle, 3) + " MPa (" + fmt(s.element_length) + " mm), " +
                        fmt(pef.middle, 3) + " MPa (" + fmt(s_fine.element_length) + " mm); threshold " +
                        fmt(threshold) + " MPa");
+}
+
+// 2. Maximum pressure, frictionless against mu = 0.1; returns the mu = 0.1 maximum.
+double max_pressure_difference(study::Chapter& c, const Runs& R) {
+  const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1], &gf = R.all[3], &gr = R.all[4];
+  const std::string& sc = R.sc;
   // Sec. 2.3.1: the frictionless maximum pressure is 1.2 % below the mu = 0.1
   // one.  Compared on the finer mesh; tolerance (stated before the run): the
   // change of the same difference between the two meshes, plus half the
@@ -234,8 +280,16 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
                    "max pressure, mu = 0.1 over frictionless, percent, finer mesh", dmax_thesis.value, dmax_fine,
                    std::abs(dmax - dmax_fine) + dmax_thesis.half_ulp, "%",
                    "change of the difference between the two meshes + half the printed digit");
+  return pmax_r;
+}
 
-  // 3. Strains of the tracked section (inside = contact side, outside = free side).
+// 3. Strains of the tracked section.
+void tracked_strains(study::Chapter& c, const Runs& R) {
+  const sim::DrawBendSpec &s = R.s;
+  const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1], &gf = R.all[3], &gr = R.all[4];
+  const std::string& sc = R.sc;
+  const double t = R.t;
+  // Inside = contact side, outside = free side.
   auto st = c.table({"slide_mm", "strain_inside", "strain_outside"},
                     "longitudinal log strain of the tracked section vs slide in the draw step (mu = 0.1)");
   double eo_max = 0, ei_min = 0;
@@ -278,13 +332,11 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
                    "change of the difference between the two meshes + half the printed digit");
   c.checks().claim(study::Kind::simulated, "ch2.fe.outside_strain_above_bending", "peak outside strain above pure bending ln(1+t/(2R+t))",
                    eo_max > eb, fmt(100 * eo_max, 3) + " % vs " + fmt(100 * eb, 3) + " %");
-  // The steady state (Sec. 2.3.2: the strains reach a uniform distribution):
-  // the whole wrap is steady once the strip leaving it, at the exit tangent,
-  // has a steady strain (within 2 % of its last value).  Also at mid-wrap,
-  // and for the outlet force (within 2 % of its final level).
-  const double Lw = sim::wrap_length(s);
-  const double d_force = steady_distance(fr, 0.02), d_strain = fr.steady_strain_slide(0.02, 1.0);
-  const double d_mid = fr.steady_strain_slide(0.02, 0.5);
+}
+
+// 3. Outside strain at mid-wrap and at the exit tangent against the slide.
+void mid_wrap_strain(study::Chapter& c, const Runs& R) {
+  const sim::DrawBendResult &fr = R.all[0];
   auto mw = c.table({"slide_mm", "outside_strain_at_mid_wrap", "outside_strain_at_exit"},
                     "outside log strain of the section at mid-wrap and at the exit tangent against the slide in the "
                     "draw (mu = 0.1); empty where no tracked section is there");
@@ -297,6 +349,13 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   }
   c.save(mw, "mid_wrap_strain");
   c.plot("mid_wrap_strain", "fig_2_steady", {{"datafile", c.out("tables/mid_wrap_strain.csv")}});
+}
+
+// 3. The steady strain along the strip (Fig. 2.13) and Wilson's linear rise; the field figures.
+void steady_strain_distribution(study::Chapter& c, const Runs& R) {
+  const sim::DrawBendSpec &s = R.s;
+  const sim::DrawBendResult &fr = R.all[0], &gr = R.all[4];
+  const double Lw = sim::wrap_length(s);
   // Fig. 2.13: the steady distribution of the outside strain along the strip,
   // from upstream of the entry tangent (fraction < 0) to downstream of the exit
   // (> 1): the last section to pass each place, at the end of the draw, on
@@ -346,6 +405,20 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
                                                {"insidefinefile", c.out("tables/inside_strain_fine.csv")},
                                                {"wrapfile", fmt(Lw, 5)}});
   }
+}
+
+// 3. The slide to the steady state against the wrap length.
+void steady_state(study::Chapter& c, const Runs& R) {
+  const sim::DrawBendSpec &s = R.s;
+  const sim::DrawBendResult &fr = R.all[0];
+  const std::string& sc = R.sc;
+  // The steady state (Sec. 2.3.2: the strains reach a uniform distribution):
+  // the whole wrap is steady once the strip leaving it, at the exit tangent,
+  // has a steady strain (within 2 % of its last value).  Also at mid-wrap,
+  // and for the outlet force (within 2 % of its final level).
+  const double Lw = sim::wrap_length(s);
+  const double d_force = steady_distance(fr, 0.02), d_strain = fr.steady_strain_slide(0.02, 1.0);
+  const double d_mid = fr.steady_strain_slide(0.02, 0.5);
   c.value("d_steady_mid", fmt_fixed(d_mid, 1), "mm");
   c.value("ratio_steady_mid", fmt_fixed(d_mid / Lw, 2));
   c.value("wrap_length", fmt_fixed(Lw, 1), "mm");
@@ -360,8 +433,14 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.checks().claim(study::Kind::health, "ch2.fe.steady_before_window", "outlet force steady before the last third that is averaged",
                    d_force < (2.0 / 3.0) * sim::draw_length(s),
                    fmt(d_force, 3) + " mm of " + fmt(sim::draw_length(s), 3));
+}
 
-  // 4. Forces.
+// 4. Forces: F_B against Swift, mu by Eq. (2.3).
+Forces forces(study::Chapter& c, const Runs& R) {
+  const sim::DrawBendSpec &s = R.s;
+  const sim::DrawBendResult &fr = R.all[0], &ff = R.all[1];
+  const std::string& sc = R.sc;
+  const double t = R.t, w_half = R.w_half;
   const double FB = ff.tension_rise();
   const double mu = mu_rope(fr.F_back, fr.F_out, FB, M_PI / 2);
   const double mu_reg = mu_rope(fr.F_back, fr.F_out_regression, ff.F_out_regression - ff.F_back, M_PI / 2);
@@ -391,8 +470,16 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.save(fh, "forces");
   c.plot("force_history", "fig_2_19", {{"datafile", c.out("tables/forces.csv")},
                                        {"title_text", "Tension forces in the draw, 12.7 mm pin (Figs. 2.19-2.20)"}});
+  return {FB, mu};
+}
 
-  // 5. Mass scaling and mesh convergence.
+// 5. Mass scaling and mesh convergence.
+void mass_scaling_and_convergence(study::Chapter& c, const Runs& R, const Forces& F, const sim::ContactArc& arc,
+                                  double pmax_r) {
+  const sim::DrawBendSpec &s = R.s, &s_fine = R.s_fine;
+  const sim::DrawBendResult &gf = R.all[3], &gr = R.all[4];
+  const sim::DrawBendResult& fm = R.all[2];
+  const double FB = F.FB, mu = F.mu;
   const double FB_ms = fm.tension_rise();
   const double d_ms = 100 * (FB - FB_ms) / FB_ms;
   c.value("FB_low_ms", fmt_fixed(FB_ms, 1), "N");
@@ -412,6 +499,21 @@ void fe_study(study::Chapter& c, const FeOptions& o) {
   c.value("conv_FB", fmt_fixed(100 * (FB - FB_fine) / FB_fine, 2), "%");
   c.value("conv_mu", fmt_fixed(100 * (mu - mu_fine) / mu_fine, 2), "%");
   c.value("conv_pmax", fmt_fixed(100 * (pmax_r - pmax_fine) / pmax_fine, 1), "%");
+}
+
+}  // namespace
+
+void fe_study(study::Chapter& c, const FeOptions& o) {
+  const Runs R = runs(c, o);                                // 1
+  const sim::ContactArc arc = pressure_map_and_arc(c, R);  // 2
+  pressure_peaks(c, R);
+  const double pmax_r = max_pressure_difference(c, R);
+  tracked_strains(c, R);                                    // 3
+  mid_wrap_strain(c, R);
+  steady_strain_distribution(c, R);
+  steady_state(c, R);
+  const Forces F = forces(c, R);                            // 4
+  mass_scaling_and_convergence(c, R, F, arc, pmax_r);       // 5
 }
 
 }  // namespace ch2

@@ -32,59 +32,74 @@ double layer_mean(const std::vector<sim::StripElement>& els, double depth, doubl
   return n > 0 ? sum / n : NAN;
 }
 
-}  // namespace
+/// The two runs' last snapshots and what the steps share.
+struct Fields {
+  sim::DrawBendSpec s;      ///< the chapter mesh's run
+  double Lw = 0;            ///< wrap length [mm]
+  double E = 0, nu = 0;     ///< the runs' elasticity [MPa, -]
+  sim::StripFields f, g;    ///< chapter mesh, finer mesh
+};
 
-void field_figures(study::Chapter& c, const sim::DrawBendResult& fr, const sim::DrawBendResult& gr) {
-  const sim::DrawBendSpec& s = fr.spec;
-  const double Lw = sim::wrap_length(s);
+Fields read_fields(const sim::DrawBendResult& fr, const sim::DrawBendResult& gr) {
+  Fields F;
+  F.s = fr.spec;
+  F.Lw = sim::wrap_length(F.s);
   const io::Deck deck = io::read_deck(fr.dir + "/deck.toml");
-  const double E = deck.model.material->youngs_modulus(), nu = deck.model.material->poisson_ratio();
-  const sim::StripFields f = sim::read_fields_vtu(sim::last_fields_vtu(fr.dir));
-  const sim::StripFields g = sim::read_fields_vtu(sim::last_fields_vtu(gr.dir));
+  F.E = deck.model.material->youngs_modulus(), F.nu = deck.model.material->poisson_ratio();
+  F.f = sim::read_fields_vtu(sim::last_fields_vtu(fr.dir));
+  F.g = sim::read_fields_vtu(sim::last_fields_vtu(gr.dir));
+  return F;
+}
 
-  // Fig. 2.8: the node plane nearest mid-wrap (45 deg), as polylines of the
-  // mesh (layers across the width, then columns through the thickness), one
-  // gnuplot index per mesh; h = distance from the pin surface.
-  {
-    std::ostringstream o;
-    o << "# section of the strip nearest mid-wrap at the end of the draw, mu = 0.1 (Fig. 2.8)\n"
-      << "# index 0: chapter mesh, index 1: finer mesh; blocks: layers, then columns of nodes\n"
-      << "# y_mm (current, across the half width), h_mm (current radial distance from the pin surface)\n";
-    for (const auto* run : {&f, &g}) {
-      const sim::StripSection sec = sim::section_at(*run, s, 45.0);
-      const bool chapter_mesh = run == &f;
-      // Layers: nodes of one reference z (sorted by z0, then y0).
-      for (std::size_t i = 0; i < sec.nodes.size(); ++i) {
-        if (i > 0 && std::abs(sec.nodes[i].z0 - sec.nodes[i - 1].z0) > 1e-6) o << "\n";
-        o << fmt(sec.nodes[i].y, 6) << " " << fmt(sec.nodes[i].h, 6) << "\n";
-      }
-      o << "\n";
-      // Columns: nodes of one reference y.
-      std::vector<double> ys;
-      for (const auto& q : sec.nodes)
-        if (std::abs(q.z0 - sec.nodes.front().z0) < 1e-6) ys.push_back(q.y0);
-      for (double y0 : ys) {
-        for (const auto& q : sec.nodes)
-          if (std::abs(q.y0 - y0) < 1e-6) o << fmt(q.y, 6) << " " << fmt(q.h, 6) << "\n";
-        o << "\n";
-      }
-      o << "\n";
-      // The inside surface (lowest layer): centre and edge clearance from the pin.
-      const auto& centre = sec.nodes.front();
-      const auto* edge = &centre;
-      for (const auto& q : sec.nodes)
-        if (std::abs(q.z0 - centre.z0) < 1e-6 && q.y0 > edge->y0) edge = &q;
-      const std::string sfx = chapter_mesh ? "" : "_fine";
-      c.value("section_deg" + sfx, fmt_fixed(sec.angle_deg, 1), "deg");
-      c.value("section_centre_gap" + sfx, fmt_fixed(1000 * centre.h, 1), "µm");
-      c.value("section_edge_gap" + sfx, fmt_fixed(1000 * edge->h, 1), "µm");
+/// Fig. 2.8: the node plane nearest mid-wrap (45 deg), as polylines of the
+/// mesh (layers across the width, then columns through the thickness), one
+/// gnuplot index per mesh; h = distance from the pin surface.
+void mid_wrap_section(study::Chapter& c, const Fields& F) {
+  const sim::DrawBendSpec& s = F.s;
+  const sim::StripFields &f = F.f, &g = F.g;
+  std::ostringstream o;
+  o << "# section of the strip nearest mid-wrap at the end of the draw, mu = 0.1 (Fig. 2.8)\n"
+    << "# index 0: chapter mesh, index 1: finer mesh; blocks: layers, then columns of nodes\n"
+    << "# y_mm (current, across the half width), h_mm (current radial distance from the pin surface)\n";
+  for (const auto* run : {&f, &g}) {
+    const sim::StripSection sec = sim::section_at(*run, s, 45.0);
+    const bool chapter_mesh = run == &f;
+    // Layers: nodes of one reference z (sorted by z0, then y0).
+    for (std::size_t i = 0; i < sec.nodes.size(); ++i) {
+      if (i > 0 && std::abs(sec.nodes[i].z0 - sec.nodes[i - 1].z0) > 1e-6) o << "\n";
+      o << fmt(sec.nodes[i].y, 6) << " " << fmt(sec.nodes[i].h, 6) << "\n";
     }
-    write_file_atomic(c.out("tables/section_mid_wrap.dat"), o.str());
-    c.plot("strip_section", "fig_2_8",
-           {{"datafile", c.out("tables/section_mid_wrap.dat")}, {"thickness", fmt(s.thickness)}});
+    o << "\n";
+    // Columns: nodes of one reference y.
+    std::vector<double> ys;
+    for (const auto& q : sec.nodes)
+      if (std::abs(q.z0 - sec.nodes.front().z0) < 1e-6) ys.push_back(q.y0);
+    for (double y0 : ys) {
+      for (const auto& q : sec.nodes)
+        if (std::abs(q.y0 - y0) < 1e-6) o << fmt(q.y, 6) << " " << fmt(q.h, 6) << "\n";
+      o << "\n";
+    }
+    o << "\n";
+    // The inside surface (lowest layer): centre and edge clearance from the pin.
+    const auto& centre = sec.nodes.front();
+    const auto* edge = &centre;
+    for (const auto& q : sec.nodes)
+      if (std::abs(q.z0 - centre.z0) < 1e-6 && q.y0 > edge->y0) edge = &q;
+    const std::string sfx = chapter_mesh ? "" : "_fine";
+    c.value("section_deg" + sfx, fmt_fixed(sec.angle_deg, 1), "deg");
+    c.value("section_centre_gap" + sfx, fmt_fixed(1000 * centre.h, 1), "µm");
+    c.value("section_edge_gap" + sfx, fmt_fixed(1000 * edge->h, 1), "µm");
   }
+  write_file_atomic(c.out("tables/section_mid_wrap.dat"), o.str());
+  c.plot("strip_section", "fig_2_8",
+         {{"datafile", c.out("tables/section_mid_wrap.dat")}, {"thickness", fmt(s.thickness)}});
+}
 
-  // Figs. 2.15 and 2.16: the centre row of elements of the chapter mesh.
+/// Figs. 2.15 and 2.16: the centre row of elements of the chapter mesh; returns its elements.
+std::vector<sim::StripElement> centre_row_fields(study::Chapter& c, const Fields& F) {
+  const sim::DrawBendSpec& s = F.s;
+  const double Lw = F.Lw, E = F.E, nu = F.nu;
+  const sim::StripFields& f = F.f;
   const auto els = sim::strip_elements(f, s, E, nu);
   auto w = c.table({"position_mm", "length_mm", "depth", "layer", "sigma_L_MPa", "eps_L", "eps_p_L", "eps_p_eq"},
                    "centre-row elements at the end of the draw (mu = 0.1, chapter mesh): position of the centroid "
@@ -106,10 +121,16 @@ void field_figures(study::Chapter& c, const sim::DrawBendResult& fr, const sim::
                                      {"wrapfile", fmt(Lw, 5)},
                                      {"title_text", "Longitudinal plastic strain, centre row, μ = 0.1 (Fig. 2.16)"},
                                      {"cb_text", "Longitudinal plastic strain"}});
+  return els;
+}
 
-  // Fig. 2.13's inside curve: the longitudinal log strain of the element
-  // layer nearest the pin, centre row, at the end of the draw, on both meshes
-  // (the tracked sections of the history follow the outside surface only).
+/// Fig. 2.13's inside curve: the longitudinal log strain of the element
+/// layer nearest the pin, centre row, at the end of the draw, on both meshes
+/// (the tracked sections of the history follow the outside surface only).
+void inside_strain(study::Chapter& c, const Fields& F, const std::vector<sim::StripElement>& els) {
+  const sim::DrawBendSpec& s = F.s;
+  const double E = F.E, nu = F.nu;
+  const sim::StripFields &f = F.f, &g = F.g;
   for (const auto* run : {&f, &g}) {
     const bool chapter_mesh = run == &f;
     auto lt = c.table({"position_mm", "inside_strain"},
@@ -121,7 +142,13 @@ void field_figures(study::Chapter& c, const sim::DrawBendResult& fr, const sim::
       if (std::abs(e.y0 - el.front().y0) < 1e-6 && e.depth < 1.0 / s.through) lt.row({fmt(e.s, 6), fmt(e.eps_L, 6)});
     c.save(lt, chapter_mesh ? "inside_strain" : "inside_strain_fine");
   }
+}
 
+/// Sec. 2.3.2: the outside strain rises at the inlet, the inside strain at the outlet.
+void strain_rise_claim(study::Chapter& c, const Fields& F) {
+  const sim::DrawBendSpec& s = F.s;
+  const double Lw = F.Lw, E = F.E, nu = F.nu;
+  const sim::StripFields &f = F.f, &g = F.g;
   // Sec. 2.3.2 (Fig. 2.13): "the strain increase was concentrated at the
   // inlet region of outside surface and at the outlet region of inside
   // surface".  Stated before the run: the mean longitudinal log strain of the
@@ -154,6 +181,16 @@ void field_figures(study::Chapter& c, const sim::DrawBendResult& fr, const sim::
                    "outside strain rises at the inlet, inside strain at the outlet, both meshes (Sec. 2.3.2, Fig. 2.13)",
                    a.first && b.first,
                    "chapter mesh: " + a.second + "; finer mesh: " + b.second);
+}
+
+}  // namespace
+
+void field_figures(study::Chapter& c, const sim::DrawBendResult& fr, const sim::DrawBendResult& gr) {
+  const Fields F = read_fields(fr, gr);
+  mid_wrap_section(c, F);
+  const std::vector<sim::StripElement> els = centre_row_fields(c, F);
+  inside_strain(c, F, els);
+  strain_rise_claim(c, F);
 }
 
 }  // namespace ch2

@@ -8,6 +8,16 @@
 //   1. Scalar statements of Secs. 2.2-2.4 re-derived from their inputs.
 //   2. Swift's bending force, Eq. (2.1), with the inputs the chapter implies.
 //   3. Sliding distance at the steady-state time, at constant sliding speed.
+//
+// Sample runs (from the source folder after `make`; the binaries are in build/chapters/):
+//   chapter_ch2_fe_study --out build/chapters/ch2-fe-study
+//       (the quick tier, as `ctest -R chapter.ch2-fe-study` runs it)
+//   chapter_ch2_fe_study --tier full --fe-element-length 0.5 --fe-across 4 --fe-fine-element-length 0.25
+//       (the full tier's meshes (`make test-full`))
+//   chapter_ch2_fe_study --fe false
+//       (steps 1-3 only: the text's arithmetic and Swift's estimate, no FE run)
+//   chapter_ch2_fe_study --swift-pin-diameter 25.4
+//       (Swift's Eq. (2.1) on another assumed pin: the chapter does not state it)
 #include <cmath>
 
 #include "analysis/rope.hpp"

@@ -15,6 +15,14 @@
 //      the strip-draw builder (src/sim/strip_draw_case).
 //   7. Draw-bend on three pins at 10 MPa (Sec. 3.5, Figs. 3.10-3.18),
 //      ch3_drawbend.cpp.
+//
+// Sample runs (from the source folder after `make`; the binaries are in build/chapters/):
+//   chapter_ch3_stribeck --out build/chapters/ch3-stribeck
+//       (the quick tier, as `ctest -R chapter.ch3-stribeck` runs it)
+//   chapter_ch3_stribeck --tier full --fe-element-length 0.5 --fe-across 4
+//       (the full tier's mesh (`make test-full`))
+//   chapter_ch3_stribeck --fe false
+//       (the tables and curves only, no FE run)
 #include <cmath>
 
 #include "analysis/stribeck.hpp"

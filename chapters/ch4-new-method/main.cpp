@@ -14,6 +14,14 @@
 //   4. Back-tension stress F_X'/(t w/2) against the printed 57 MPa.
 //   5. Conventional mu (Eq. 2.3) and average pressure (Eq. 2.2), Fig. 4.9.
 //   6-10. Finite-element part (ch4_fe.cpp).
+//
+// Sample runs (from the source folder after `make`; the binaries are in build/chapters/):
+//   chapter_ch4_new_method --out build/chapters/ch4-new-method
+//       (the quick tier, as `ctest -R chapter.ch4-new-method` runs it)
+//   chapter_ch4_new_method --tier full --fe-element-length 0.5 --fe-across 4
+//       (the full tier's mesh (`make test-full`))
+//   chapter_ch4_new_method --fe false
+//       (steps 1-5 only: the re-derived tables, no FE run)
 #include <cmath>
 
 #include "analysis/pressure_ratio.hpp"

@@ -19,6 +19,14 @@
 //  10. Undiluted lubricant: second-order mu(p) from three pins (Figs. 5.31, 5.32).
 //  11. Sensitivity of a0, a1 to the map (mesh, penalty, hardening) and to c.
 // Steps 8-11 run our finite-element solver (--fe false skips them).
+//
+// Sample runs (from the source folder after `make`; the binaries are in build/chapters/):
+//   chapter_ch5_measured --out build/chapters/ch5-measured
+//       (the quick tier, as `ctest -R chapter.ch5-measured` runs it)
+//   chapter_ch5_measured --tier full --fe-map-variants true --fe-across-variant true
+//       (the full tier with the map and mesh variants (`make test-full`))
+//   chapter_ch5_measured --fe false
+//       (the measured-data part only, no FE run)
 #include <cmath>
 #include <iostream>
 

@@ -23,25 +23,42 @@ namespace ch6 {
 
 using namespace drawbend;
 
-void block_sliding(study::Chapter& c, bool reuse) {
-  sim::BlockSpec base;
-  base.hardening = c.data("materials/aa5754_o_rd.csv");
-  base.surface_nodes = c.data("thesis/table_6_1.csv");
-  const io::Deck deck = sim::block_deck(base);
-  const auto* law = dynamic_cast<const friction::SurfaceLaw*>(deck.model.contacts.at(0).friction.get());
-  if (!law) throw InputError("block builder: the floor contact must use the surface law");
-  auto spec = [&](double p, double v, double direction_deg) {
-    sim::BlockSpec s = base;
-    s.name = "ch6_block_a" + fmt(direction_deg) + "_p" + fmt(p) + "_v" + fmt(v);  // its run folder: runs/<name>
-    s.pressure = p;
-    s.speed = v;
-    s.direction_deg = direction_deg;
-    return s;
-  };
-  const double tol = 0.01;
-  const std::string reason = "steady sliding at uniform pressure: 1 % for explicit dynamics and penalty contact";
+namespace {
 
-  // Tables 6.2 and 6.3: along RD and TD.
+const double tol = 0.01;
+const std::string reason = "steady sliding at uniform pressure: 1 % for explicit dynamics and penalty contact";
+
+/// The block model of every case and the input law it must reproduce.
+struct BlockSetup {
+  sim::BlockSpec base;
+  io::Deck deck;                             ///< the base case, read: it owns the law
+  const friction::SurfaceLaw* law = nullptr;  ///< the floor contact's mu(p, v)
+};
+
+BlockSetup block_setup(study::Chapter& c) {
+  BlockSetup b;
+  b.base.hardening = c.data("materials/aa5754_o_rd.csv");
+  b.base.surface_nodes = c.data("thesis/table_6_1.csv");
+  b.deck = sim::block_deck(b.base);
+  b.law = dynamic_cast<const friction::SurfaceLaw*>(b.deck.model.contacts.at(0).friction.get());
+  if (!b.law) throw InputError("block builder: the floor contact must use the surface law");
+  return b;
+}
+
+/// The case at pressure p [MPa], speed v [mm/s] and direction [deg from RD]; its run folder is runs/<name>.
+sim::BlockSpec block_spec(const sim::BlockSpec& base, double p, double v, double direction_deg) {
+  sim::BlockSpec s = base;
+  s.name = "ch6_block_a" + fmt(direction_deg) + "_p" + fmt(p) + "_v" + fmt(v);
+  s.pressure = p;
+  s.speed = v;
+  s.direction_deg = direction_deg;
+  return s;
+}
+
+/// Tables 6.2 and 6.3: along RD and TD.
+void rd_td_slides(study::Chapter& c, const BlockSetup& B, bool reuse) {
+  const friction::SurfaceLaw* law = B.law;
+  auto spec = [&](double p, double v, double direction_deg) { return block_spec(B.base, p, v, direction_deg); };
   auto w = c.table({"direction", "pressure_MPa", "speed_mm_s", "mu_input", "mu_retrieved", "mu_cross", "error_pct",
                     "pressure_spread_pct", "cycles"},
                    "Block sliding along RD / TD (Tables 6.2, 6.3; Figs. 6.8, 6.9): mu = F_t/F_N against the input "
@@ -86,8 +103,10 @@ void block_sliding(study::Chapter& c, bool reuse) {
   c.save(w, "block_rd_td");
   c.value("block_worst_pct", fmt_fixed(100 * worst, 3), "%");
   c.value("block_worst_case", worst_case);
+}
 
-  // Input lines for Figs. 6.8 / 6.9: mu(p) at the four sliding speeds.
+/// Input lines for Figs. 6.8 / 6.9: mu(p) at the four sliding speeds.
+void input_lines(study::Chapter& c, const friction::SurfaceLaw* law) {
   auto lines = c.table({"p_MPa", "RD_v10", "RD_v40", "RD_v70", "RD_v100", "TD_v10", "TD_v40", "TD_v70", "TD_v100"},
                        "Input surfaces of Table 6.1 at the block-sliding speeds");
   for (double p = 0; p <= 80.0 + 1e-9; p += 2.0) {
@@ -101,8 +120,12 @@ void block_sliding(study::Chapter& c, bool reuse) {
     c.plot("block_sliding", dir == "RD" ? "fig_6_8" : "fig_6_9",
            {{"dir", dir}, {"linesfile", c.out("tables/block_input_lines.csv")},
             {"simfile", c.out("tables/block_rd_td.csv")}});
+}
 
-  // Table 6.4: directions at one pressure and speed, against the ellipse.
+/// Table 6.4: directions at one pressure and speed, against the ellipse.
+void direction_slides(study::Chapter& c, const BlockSetup& B, bool reuse) {
+  const friction::SurfaceLaw* law = B.law;
+  auto spec = [&](double p, double v, double direction_deg) { return block_spec(B.base, p, v, direction_deg); };
   const CsvTable t64 = read_csv(c.data("thesis/table_6_4.csv"));
   auto d = c.table({"direction_deg", "pressure_MPa", "speed_mm_s", "mu_x_input", "mu_y_input", "mu_x", "mu_y",
                     "magnitude_error_pct", "force_angle_deg"},
@@ -150,6 +173,15 @@ void block_sliding(study::Chapter& c, bool reuse) {
   c.value("dir_worst_pct", fmt_fixed(100 * worst_d, 3), "%");
   c.value("dir_worst_angle", fmt_fixed(worst_angle, 3), "deg");
   c.value("cost_thesis", fmt(study::scalar(c.data("thesis/scalars.csv"), "ch6_cost_increase").value), "%");
+}
+
+}  // namespace
+
+void block_sliding(study::Chapter& c, bool reuse) {
+  const BlockSetup B = block_setup(c);
+  rd_td_slides(c, B, reuse);
+  input_lines(c, B.law);
+  direction_slides(c, B, reuse);
 }
 
 }  // namespace ch6

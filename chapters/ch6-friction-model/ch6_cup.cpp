@@ -27,23 +27,44 @@ namespace ch6 {
 
 using namespace drawbend;
 
-void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const std::string& material, bool reuse) {
+namespace {
+
+/// The inputs of the cup study.
+struct CupSetup {
+  std::string deck, sc, material;  ///< data/cases/cup_draw.toml, data/thesis/scalars.csv, --cup-material
+  CsvTable t65;                    ///< Table 6.5
+  double stroke = 0, d_eval = 0;   ///< [mm]
+  long cycles = 0;                 ///< per stroke
+  int refine = 1;
+  bool full = false, reuse = false;
+};
+
+/// The cups drawn: results by case id, the ids for the figure ("1 9") and the page ("1, 9").
+struct CupRuns {
+  std::map<std::string, CupResult> res;
+  std::string ids, listed;
+};
+
+/// The inputs; the page names the material.
+CupSetup cup_setup(study::Chapter& c, bool full, const std::string& material, bool reuse) {
   c.value("cup_material", material.empty() ? std::string("isotropic J2 (von Mises) on the Table 5.1 RD curve, as the thesis")
                                            : "the material " + material + " (--cup-material)");
-  const std::string deck = c.data("cases/cup_draw.toml");
-  const CsvTable t65 = read_csv(c.data("thesis/table_6_5.csv"));
-  const std::string sc = c.data("thesis/scalars.csv");
-  const double stroke = study::scalar(sc, "ch6_max_stroke").value;
-  const double d_eval = study::scalar(sc, "ch6_punch_force_eval_displacement").value;
-  const long cycles = full ? 160000 : 30000;  // per stroke; the refined mesh halves the stable step
-  const int refine = full ? 2 : 1;
-  auto w = c.table({"case", "punch_speed_mm_s", "force_at_15mm_kN", "max_force_kN", "cup_size_RD_mm", "cup_size_TD_mm",
-                    "clamp_force_kN", "max_plastic_strain", "at_radius_mm", "at_height_mm", "at_angle_from_RD_deg",
-                    "kinetic_over_internal", "hourglass_over_internal", "cycles"},
-                   std::string("Cup drawing, quarter model, ") + (full ? "refined" : "coarse") +
-                       " mesh, ASSUMED 5 mm punch and die radii (Fig. 6.12 missing); forces for the full blank");
-  auto curves = c.table({"case", "punch_displacement_mm", "punch_force_kN"}, "Punch force against displacement");
-  // The cases side by side (sim/case_pool.hpp); default: the slowest and the fastest.
+  CupSetup S;
+  S.deck = c.data("cases/cup_draw.toml");
+  S.t65 = read_csv(c.data("thesis/table_6_5.csv"));
+  S.sc = c.data("thesis/scalars.csv");
+  S.material = material, S.full = full, S.reuse = reuse;
+  S.stroke = study::scalar(S.sc, "ch6_max_stroke").value;
+  S.d_eval = study::scalar(S.sc, "ch6_punch_force_eval_displacement").value;
+  S.cycles = full ? 160000 : 30000;  // per stroke; the refined mesh halves the stable step
+  S.refine = full ? 2 : 1;
+  return S;
+}
+
+/// The rows of Table 6.5 to draw; default: the slowest and the fastest.
+std::vector<std::size_t> cup_rows(const CupSetup& S, const std::string& cases) {
+  const CsvTable& t65 = S.t65;
+  const bool full = S.full;
   std::vector<std::size_t> rows;
   if (cases.empty()) {
     for (std::size_t i = 0; i < t65.rows.size(); ++i)
@@ -59,6 +80,18 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const s
                        t65.text(t65.rows.back(), "case") + "), separated by commas, including 1 and " +
                        t65.text(t65.rows.back(), "case"));
   }
+  return rows;
+}
+
+/// The cases side by side (sim/case_pool.hpp), each a file-level job; their rows of the tables.
+CupRuns run_cups(study::Chapter& c, const CupSetup& S, const std::vector<std::size_t>& rows, CsvWriter& w,
+                 CsvWriter& curves) {
+  const std::string &deck = S.deck, &material = S.material;
+  const CsvTable& t65 = S.t65;
+  const double stroke = S.stroke, d_eval = S.d_eval;
+  const long cycles = S.cycles;
+  const int refine = S.refine;
+  const bool reuse = S.reuse;
   std::vector<CupResult> runs(rows.size());
   sim::run_cases(rows.size(), [&](std::size_t k) {
     const auto& row = t65.rows[rows[k]];
@@ -69,8 +102,9 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const s
     spec.vtu = id == "1" ? c.out("tables/cup_case1.vtu") : "";
     runs[k] = sim::draw_cup_job(spec, c.out("runs/ch6_cup_case" + id), reuse);  // a file-level job (sim/deck_job.hpp)
   }, {}, sim::executor_jobs(sim::executor(), sim::default_case_jobs()));
-  std::map<std::string, CupResult> res;
-  std::string ids, listed;  // "1 9" for the figure, "1, 9" for the page
+  CupRuns R;
+  std::map<std::string, CupResult>& res = R.res;
+  std::string &ids = R.ids, &listed = R.listed;
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const auto& row = t65.rows[rows[k]];
     const std::string id = t65.text(row, "case");
@@ -89,8 +123,13 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const s
            fmt_fixed(r.max_strain_r, 2), fmt_fixed(r.max_strain_z, 2), fmt_fixed(r.max_strain_angle, 1),
            fmt(r.kinetic_ratio, 3), fmt(r.hourglass_ratio, 3), std::to_string(r.cycles)});
   }
-  // The fields of case 1 at the end of the stroke (Figs. 6.17, 6.21, 6.26): the
-  // quarter cup's elements by centroid, coloured by plastic strain and von Mises.
+  return R;
+}
+
+/// The fields of case 1 at the end of the stroke.
+void case1_field(study::Chapter& c, const CupRuns& R) {
+  const std::map<std::string, CupResult>& res = R.res;
+  // Figs. 6.17, 6.21, 6.26: the quarter cup's elements by centroid, coloured by plastic strain and von Mises.
   const std::string fstem = "cup_field";
   auto ft = c.table({"x_mm", "y_mm", "z_mm", "plastic_strain", "von_mises_MPa"},
                     "Cup case 1, end of stroke: element centroids (deformed), equivalent plastic strain, von Mises [MPa]");
@@ -99,15 +138,22 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const s
   c.save(ft, fstem);
   c.plot("cup_field", "fig_6_cup_field",
          {{"datafile", c.out("tables/" + fstem + ".csv")}});
+}
+
+/// Where the strain peaks at the failure stroke (a run of the full tier).
+void failure_stroke(study::Chapter& c, const CupSetup& S) {
+  const CsvTable& t65 = S.t65;
+  const std::string& sc = S.sc;
+  const bool full = S.full;
   // Sec. 6.6.3, Figs. 6.26-6.27: where the strain peaks in case 1 at 21 mm (full only; the default
   // reports the end of the 17 mm stroke).
   const double d_fail = study::scalar(sc, "ch6_failure_stroke").value;
   if (full) {
     sim::CupSpec spec;
-    spec.deck = deck, spec.speed = t65.number(t65.rows.front(), "punch_speed_mm_s"), spec.stroke = d_fail;
-    spec.cycles = static_cast<long>(cycles * d_fail / stroke), spec.refine = refine, spec.material = material;
+    spec.deck = S.deck, spec.speed = t65.number(t65.rows.front(), "punch_speed_mm_s"), spec.stroke = d_fail;
+    spec.cycles = static_cast<long>(S.cycles * d_fail / S.stroke), spec.refine = S.refine, spec.material = S.material;
     spec.vtu = c.out("tables/cup_case1_21mm.vtu");
-    const CupResult r = sim::draw_cup_job(spec, c.out("runs/ch6_cup_case1_21mm"), reuse);
+    const CupResult r = sim::draw_cup_job(spec, c.out("runs/ch6_cup_case1_21mm"), S.reuse);
     c.value("cup_strain_21_r", fmt_fixed(r.max_strain_r, 1), "mm");
     c.value("cup_strain_21_z", fmt_fixed(r.max_strain_z, 1), "mm");
     c.value("cup_strain_21", fmt_fixed(r.max_strain, 3));
@@ -131,8 +177,14 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const s
     c.value("cup_failure", "The thesis locates failure at " + fmt(d_fail) +
                                " mm, in RD (Figs. 6.26–6.27); that run is part of the `full` tier only.");
   }
-  c.save(w, "cup_cases");  // one name for both tiers: the page shows the tier that ran
-  c.save(curves, "cup_curves");
+}
+
+/// The page's numbers of cases 1 and 9.
+void cup_values(study::Chapter& c, const CupSetup& S, const CupRuns& R) {
+  const double d_eval = S.d_eval;
+  const CsvTable& t65 = S.t65;
+  const std::string& sc = S.sc;
+  const std::map<std::string, CupResult>& res = R.res;
   const std::string last = t65.text(t65.rows.back(), "case");
   const CupResult &r1 = res.at("1"), &r9 = res.at(last);
   const double f1 = force_at(r1, d_eval) / 1000, f9 = force_at(r9, d_eval) / 1000;
@@ -160,6 +212,20 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const s
   c.value("cup_band_td", fmt_fixed(r1.band_td, 3));
   c.value("cup_ke_max", fmt(std::max(r1.kinetic_ratio, r9.kinetic_ratio), 2));
   c.value("cup_hg_pct", fmt_fixed(100 * std::max(r1.hourglass_ratio, r9.hourglass_ratio), 1), "%");
+}
+
+/// Sec. 6.6's claims and the health checks; the force figure.
+void cup_checks(study::Chapter& c, const CupSetup& S, const CupRuns& R) {
+  const CsvTable& t65 = S.t65;
+  const std::string& sc = S.sc;
+  const double d_eval = S.d_eval;
+  const bool full = S.full;
+  const std::map<std::string, CupResult>& res = R.res;
+  const CupResult &r1 = res.at("1"), &r9 = res.at(t65.text(t65.rows.back(), "case"));
+  const double f1 = force_at(r1, d_eval) / 1000, f9 = force_at(r9, d_eval) / 1000;
+  const double e1 = study::scalar(sc, "ch6_punch_force_exp_case1").value, e9 = study::scalar(sc, "ch6_punch_force_exp_case9").value;
+  const std::string& listed = R.listed;
+  const std::string& ids = R.ids;
   // Sec. 6.6.2 in magnitude: the forces at 15 mm against the measured ones (the
   // physical truth; the thesis's own simulation was 2.9 % and 2.4 % above them).
   const double dx = study::scalar(sc, "ch6_force_drop_exp").value;
@@ -191,6 +257,25 @@ void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const s
           {"f9", fmt(study::scalar(sc, "ch6_punch_force_exp_case9").value)},
           {"s1", fmt(study::scalar(sc, "ch6_punch_force_sim_case1").value)},
           {"s9", fmt(study::scalar(sc, "ch6_punch_force_sim_case9").value)}, {"deval", fmt(d_eval)}, {"cases", ids}});
+}
+
+}  // namespace
+
+void cup_drawing(study::Chapter& c, bool full, const std::string& cases, const std::string& material, bool reuse) {
+  const CupSetup S = cup_setup(c, full, material, reuse);
+  auto w = c.table({"case", "punch_speed_mm_s", "force_at_15mm_kN", "max_force_kN", "cup_size_RD_mm", "cup_size_TD_mm",
+                    "clamp_force_kN", "max_plastic_strain", "at_radius_mm", "at_height_mm", "at_angle_from_RD_deg",
+                    "kinetic_over_internal", "hourglass_over_internal", "cycles"},
+                   std::string("Cup drawing, quarter model, ") + (full ? "refined" : "coarse") +
+                       " mesh, ASSUMED 5 mm punch and die radii (Fig. 6.12 missing); forces for the full blank");
+  auto curves = c.table({"case", "punch_displacement_mm", "punch_force_kN"}, "Punch force against displacement");
+  const CupRuns R = run_cups(c, S, cup_rows(S, cases), w, curves);
+  case1_field(c, R);
+  failure_stroke(c, S);
+  c.save(w, "cup_cases");  // one name for both tiers: the page shows the tier that ran
+  c.save(curves, "cup_curves");
+  cup_values(c, S, R);
+  cup_checks(c, S, R);
 }
 
 }  // namespace ch6

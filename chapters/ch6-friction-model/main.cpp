@@ -14,6 +14,16 @@
 //   6. Statements of Secs. 6.6.2-6.6.3 re-derived from other printed numbers.
 //   7. Block sliding with the law in our solver (ch6_block.cpp).
 //   8. Cup drawing (ch6_cup.cpp): coarse cases 1 and 9; --full: all nine, refined.
+//
+// Sample runs (from the source folder after `make`; the binaries are in build/chapters/):
+//   chapter_ch6_friction_model --out build/chapters/ch6-friction-model
+//       (as `ctest -R chapter.ch6-friction-model` runs it: cup cases 1 and 9)
+//   chapter_ch6_friction_model --full
+//       (all nine cups of Table 6.5 on the refined mesh; slow)
+//   chapter_ch6_friction_model --full --cup-cases 1,9
+//       (the end cases on the refined mesh: about 20 min on 2 cores)
+//   chapter_ch6_friction_model --cup-material data/materials/aa5754_o_hill48_hou2020.toml
+//       (the cups with Hill'48 instead of the thesis's isotropic J2)
 #include <cmath>
 
 #include "analysis/friction_surface.hpp"

@@ -20,22 +20,25 @@ namespace ch7 {
 using namespace drawbend;
 using namespace drawbend::loop;
 
-void synthetic_detection(Chapter& c, const Config& cfg) {
-  const MapLibrary maps = cfg.maps_dir.empty() ? MapLibrary::stand_in({12.7, 25.4, 42}) : MapLibrary::load_dir(cfg.maps_dir);
-  const double noises[3] = {2, 5, 10};
-  auto w = c.table({"effect", "noise_N", "seed", "truth_variable", "steps", "detected", "wrong_steps",
-                    "noise_estimate_N", "at_noise_level", "rms_base_N", "rms_final_N", "final_over_noise"},
-                   "demonstration 3: the loop on synthetic data (hidden law in truth, not given to the loop); "
-                   "held-out RMS of the outlet force in N; final_over_noise against the true noise sd; "
-                   "noise_estimate_N the loop's replicate-noise estimate (within-test scatter)");
-  struct Sum {
-    int sets = 0, detected = 0, wrong = 0, at_noise = 0, null_alarm = 0;
-    double worst_ratio = 0, noise_err = 0, noise_rel = 0;
-  };
-  std::map<std::pair<std::string, double>, Sum> sum;
+namespace {
+
+/// Counts over the data sets of one effect and noise level (or all of them).
+struct Sum {
+  int sets = 0, detected = 0, wrong = 0, at_noise = 0, null_alarm = 0;
+  double worst_ratio = 0, noise_err = 0, noise_rel = 0;
+};
+
+struct SynthSums {
+  std::map<std::pair<std::string, double>, Sum> sum;  ///< by effect and noise [N]
   Sum all_eff, all_null;
-  LoopOptions o;
-  o.permutations = cfg.permutations;
+};
+
+/// Every data set: synthesized, looped, one row of `w` each; the example plot.
+SynthSums run_sets(Chapter& c, const Config& cfg, const MapLibrary& maps, const LoopOptions& o, CsvWriter& w) {
+  const double noises[3] = {2, 5, 10};
+  SynthSums out;
+  std::map<std::pair<std::string, double>, Sum>& sum = out.sum;
+  Sum &all_eff = out.all_eff, &all_null = out.all_null;
   for (double noise : noises)
     for (const auto& effect : synth_effects()) {
       const bool null = effect == "none";
@@ -87,17 +90,26 @@ void synthetic_detection(Chapter& c, const Config& cfg) {
         }
       }
     }
-  c.save(w, "synth_runs");
+  return out;
+}
+
+/// The summary table by effect and noise level.
+void summary_table(Chapter& c, const SynthSums& S) {
   auto t = c.table({"effect", "noise_N", "sets", "detected", "wrong_steps", "sets_at_noise_level",
                     "null_sets_with_a_step", "worst_final_over_noise", "worst_noise_estimate_error",
                     "worst_noise_error_in_SE"},
                    "demonstration 3 summary: detection of hidden effects and false alarms on null sets");
-  for (const auto& [k, s] : sum)
+  for (const auto& [k, s] : S.sum)
     t.row({k.first, fmt(k.second), std::to_string(s.sets), k.first == "none" ? "-" : std::to_string(s.detected),
            std::to_string(s.wrong), std::to_string(s.at_noise), k.first == "none" ? std::to_string(s.null_alarm) : "-",
            k.first == "none" ? "-" : fmt(s.worst_ratio, 3), fmt(100 * s.noise_rel, 3) + " %",
            fmt(s.noise_err, 3)});
   c.save(t, "synth_summary");
+}
+
+/// The page's numbers and the detection, false-alarm and noise-estimate checks.
+void values_and_checks(Chapter& c, const Config& cfg, const MapLibrary& maps, const LoopOptions& o, const SynthSums& S) {
+  const Sum &all_eff = S.all_eff, &all_null = S.all_null;
   c.value("s_effect_sets", std::to_string(all_eff.sets));
   c.value("s_detected", std::to_string(all_eff.detected));
   c.value("s_wrong", std::to_string(all_eff.wrong));
@@ -129,6 +141,23 @@ void synthetic_detection(Chapter& c, const Config& cfg) {
                    "an estimated sd with dof degrees of freedom has a relative standard error 1/sqrt(2 dof) (45 tests x "
                    "2 dof here: 7.5 %); 4 standard errors is rarely reached by chance over the sets of this study, so a "
                    "larger error means within-test structure leaks into the estimate");
+}
+
+}  // namespace
+
+void synthetic_detection(Chapter& c, const Config& cfg) {
+  const MapLibrary maps = cfg.maps_dir.empty() ? MapLibrary::stand_in({12.7, 25.4, 42}) : MapLibrary::load_dir(cfg.maps_dir);
+  auto w = c.table({"effect", "noise_N", "seed", "truth_variable", "steps", "detected", "wrong_steps",
+                    "noise_estimate_N", "at_noise_level", "rms_base_N", "rms_final_N", "final_over_noise"},
+                   "demonstration 3: the loop on synthetic data (hidden law in truth, not given to the loop); "
+                   "held-out RMS of the outlet force in N; final_over_noise against the true noise sd; "
+                   "noise_estimate_N the loop's replicate-noise estimate (within-test scatter)");
+  LoopOptions o;
+  o.permutations = cfg.permutations;
+  const SynthSums S = run_sets(c, cfg, maps, o, w);
+  c.save(w, "synth_runs");
+  summary_table(c, S);
+  values_and_checks(c, cfg, maps, o, S);
 }
 
 }  // namespace ch7

@@ -23,6 +23,14 @@
 //      development data since heldout_protocol_v2.md).
 //  10. Demonstration 5 (held out): generator 1 on fresh seeds and generator 2
 //      ("wild") on its own (heldout_protocol_v2.md, heldout_protocol_v2_wild.md).
+//
+// Sample runs (from the source folder after `make`; the binaries are in build/chapters/):
+//   chapter_ch7_closing_the_loop --maps build/chapters/ch4-new-method/maps
+//       (as `ctest -R chapter.ch7-closing-the-loop` runs it, on Chapter 4's FE pressure maps)
+//   chapter_ch7_closing_the_loop
+//       (no --maps: the analytic pressure-map stand-in)
+//   chapter_ch7_closing_the_loop --null-seeds 40 --effect-seeds 5
+//       (a heavier synthetic sweep; development seeds only)
 #include "ch7_steps.hpp"
 
 int main(int argc, char** argv) {

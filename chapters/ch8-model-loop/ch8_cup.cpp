@@ -29,12 +29,14 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <sstream>
+#include <optional>
+#include <variant>
 
 #include <toml++/toml.h>
 
 #include "ch8_steps.hpp"
 #include "core/hash.hpp"
+#include "core/toml_read.hpp"
 #include "sim/cup_case.hpp"
 #include "sim/deck_job.hpp"
 #include "material/hardening_curve.hpp"
@@ -46,48 +48,35 @@ using namespace drawbend;
 
 namespace {
 
-/// A cup model: tool radii and a material built from named parts.
+/// A cup model: tool radii and a material built from named typed parts.
 struct CupModel {
   std::string label = "Chapter 6 model";
-  double punch_r = NAN, die_r = NAN;  ///< NaN: the deck's assumed 5 mm
-  std::string voce;                   ///< inline Voce table, empty: the deck's tabulated curve
-  double beta = -1;                   ///< split kinematic fraction, < 0: isotropic hardening
-  double x_sat = 0, gamma = 0;        ///< Armstrong-Frederick back stress [MPa, -]; x_sat 0: none
-  std::string curve;                  ///< the tabulated flow curve the back stress is carved from (CSV)
-  std::string hill;                   ///< inline Hill'48 table, empty: von Mises
-  std::string friction;               ///< sim::CupSpec::friction
+  double punch_r = NAN, die_r = NAN;         ///< NaN: the deck's assumed 5 mm
+  std::optional<io::CurveVoce> voce;         ///< the Voce flow curve; none: the deck's tabulated curve
+  double beta = -1;                          ///< split kinematic fraction, < 0: isotropic hardening
+  double x_sat = 0, gamma = 0;               ///< Armstrong-Frederick back stress [MPa, -]; x_sat 0: none
+  std::string curve;                         ///< the tabulated flow curve the back stress is carved from (CSV)
+  std::optional<io::YieldSurface> hill;      ///< Hill'48's surface; none: von Mises
+  std::string friction;                      ///< sim::CupSpec::friction
   bool combined() const { return beta >= 0 || x_sat > 0; }
+  /// The material as the builder's --material text: io::to_toml_inline of the
+  /// typed spec (no flow curve: the deck's, which the builder fills in);
+  /// empty: the deck's material.
   std::string material() const {
-    if (voce.empty() && !combined() && hill.empty()) return "";
-    std::string m = "{ type = \"" + std::string(!hill.empty() ? "hill48" : combined() ? "j2_combined" : "j2") + "\"";
-    if (x_sat > 0) {
-      m += ", " + back_stress();
+    if (!voce && !combined() && !hill) return "";
+    io::MaterialSpec m;
+    m.type = hill ? io::MaterialType::hill48 : combined() ? io::MaterialType::j2_combined : io::MaterialType::j2;
+    if (hill) m.surface = *hill;
+    if (x_sat > 0) {  // the flow curve (Voce when chosen, else `curve`) less the back stress's saturation
+      const material::HardeningCurve c =
+          voce ? material::HardeningCurve::voce(voce->sigma0, voce->Q, voce->b) : material::HardeningCurve::load(curve);
+      m.curve = io::CurveTable{c.plastic_strains(), modelloop::carved_isotropic_part(c, x_sat, gamma)};
+      m.kinematic = io::KinematicChaboche{{gamma * x_sat}, {gamma}};
     } else {
-      if (!voce.empty()) m += ", voce = " + voce;
-      if (beta >= 0) m += ", kinematic = { beta = " + fmt_shortest(beta) + " }";
+      if (voce) m.curve = *voce;
+      if (beta >= 0) m.kinematic = io::KinematicSplit{beta};
     }
-    if (!hill.empty()) m += ", hill48 = " + hill;
-    return m + " }";
-  }
-  /// The flow curve (Voce when chosen, else `curve`) less the back stress's
-  /// saturation, as an inline table, and the back stress itself.
-  std::string back_stress() const {
-    material::HardeningCurve c = material::HardeningCurve::load(curve);
-    if (!voce.empty()) {
-      const std::string doc = "v = " + voce;
-      const toml::table t = toml::parse(std::string_view(doc));
-      c = material::HardeningCurve::voce(t["v"]["sigma0"].value_or(0.0), t["v"]["Q"].value_or(0.0),
-                                         t["v"]["b"].value_or(0.0));
-    }
-    const std::vector<double>& x = c.plastic_strains();
-    const std::vector<double> r = modelloop::carved_isotropic_part(c, x_sat, gamma);
-    std::string px, py;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      px += (i ? ", " : "") + fmt_shortest(x[i]);
-      py += (i ? ", " : "") + fmt_shortest(r[i]);
-    }
-    return "hardening = { plastic_strain = [" + px + "], true_stress_MPa = [" + py + "] }, kinematic = { C = [" +
-           fmt_shortest(gamma * x_sat) + "], gamma = [" + fmt_shortest(gamma) + "] }";
+    return io::to_toml_inline(m);
   }
 };
 
@@ -108,13 +97,12 @@ sim::CupSpec spec_of(const CupSetup& s, const CupModel& m, double speed, double 
   return c;
 }
 
-std::string inline_table(const std::string& file, const std::string& key) {
-  const toml::table t = toml::parse_file(file);
-  const auto* n = t["material"][key].as_table();
-  if (!n) throw InputError(file + ": no [material] " + key + " table");
-  std::ostringstream o;
-  o << *n;
-  return o.str();
+/// The [material] of a material file, typed.
+io::MaterialSpec material_file(const std::string& file) {
+  const toml::table t = parse_toml_file(file);
+  const auto* m = t["material"].as_table();
+  if (!m) throw InputError(file + ": no [material] table");
+  return io::read_material(*m, file);
 }
 
 /// The die radius as a calibrated input: the radius whose case-1 force meets
@@ -211,10 +199,10 @@ BendingHardening bending_hardening(const modelloop::ModelLoopResult& bending) {
 
 /// The cup deck's own flow curve (a CSV path relative to the deck).
 std::string deck_flow_curve(const std::string& deck_path) {
-  const toml::table deck = toml::parse_file(deck_path);
-  const auto h = deck["material"]["hardening"].value<std::string>();
-  if (!h) throw InputError(deck_path + ": [material] hardening: expected the path of a flow-curve CSV");
-  return (std::filesystem::path(deck_path).parent_path() / *h).lexically_normal().string();
+  const io::CaseSpec deck = io::read_case(deck_path);
+  const io::CurveFile* f = deck.material && deck.material->curve ? std::get_if<io::CurveFile>(&*deck.material->curve) : nullptr;
+  if (!f) throw InputError(deck_path + ": [material] hardening: expected the path of a flow-curve CSV");
+  return (std::filesystem::path(deck_path).parent_path() / f->path).lexically_normal().string();
 }
 
 /// A candidate of the cup loop: named members, each an edit of the current model.
@@ -224,7 +212,7 @@ struct Cand {
 };
 
 /// The candidates, in the order tried (the die radius first: die_radius_calibration reads it).
-std::vector<Cand> cup_candidates(const std::string& voce, const std::string& hill, const BendingHardening& bh,
+std::vector<Cand> cup_candidates(const io::CurveVoce& voce, const io::YieldSurface& hill, const BendingHardening& bh,
                                  const std::string& rd_curve) {
   std::vector<Cand> cands;
   Cand d{"die corner radius (ASSUMED 5 mm)", {}};
@@ -384,7 +372,7 @@ void report_punch_force_loop(Chapter& c, const CupSetup& s, const CupSetup& fine
 /// friction isotropic (RD/TD mean) or anisotropic (Table 6.1) crossed with von
 /// Mises or Hill'48, in that order (isotropic/von Mises first).
 std::vector<sim::CupResult> attribution_runs(Chapter& c, const CupSetup& s, const CupSetup& fine, const CupModel& cur,
-                                             const std::string& hill, CupRunner& run) {
+                                             const io::YieldSurface& hill, CupRunner& run) {
   const std::string iso_nodes = c.out("tables/table_6_1_isotropic.csv");
   sim::write_isotropic_nodes(c.data("thesis/table_6_1.csv"), iso_nodes);
   std::vector<CupModel> grid;
@@ -393,7 +381,7 @@ std::vector<sim::CupResult> attribution_runs(Chapter& c, const CupSetup& s, cons
       CupModel m;
       m.punch_r = cur.punch_r, m.die_r = cur.die_r;
       m.friction = fr ? "" : iso_nodes;
-      m.hill = mat ? hill : "";
+      if (mat) m.hill = hill;
       m.label = std::string(fr ? "anisotropic friction (Table 6.1)" : "isotropic friction (RD/TD mean)") + ", " +
                 (mat ? "Hill'48" : "von Mises");
       grid.push_back(m);
@@ -464,8 +452,11 @@ void cup_loop(Chapter& c, const Config& cfg, const modelloop::ModelLoopResult& b
   // the ones checked there.
   CupSetup fine = s;
   if (cfg.full_study) fine.refine = 2, fine.cycles_per_max = 160000;
-  const std::string hill = inline_table(c.data("materials/aa5754_o_hill48_hou2020.toml"), "hill48");
-  const std::string voce = inline_table(c.data("materials/aa5754_o_voce_hou2020.toml"), "voce");
+  const io::YieldSurface hill = material_file(c.data("materials/aa5754_o_hill48_hou2020.toml")).surface;
+  const io::MaterialSpec voce_file = material_file(c.data("materials/aa5754_o_voce_hou2020.toml"));
+  if (!voce_file.curve || !std::holds_alternative<io::CurveVoce>(*voce_file.curve))
+    throw InputError(c.data("materials/aa5754_o_voce_hou2020.toml") + ": [material] voce: expected a Voce flow curve");
+  const io::CurveVoce voce = std::get<io::CurveVoce>(*voce_file.curve);
   const std::vector<Cand> cands = cup_candidates(voce, hill, bending_hardening(bending), deck_flow_curve(s.deck));
   CupRunner run{c, cfg.reuse_runs};
   const CupLoopState st = punch_force_loop(c, cfg, s, fine, cands, run);  // (a)

@@ -20,6 +20,16 @@
 //   5. The cup (Sec. 6.6): why the punch force is high (tool radii, flow
 //      curve, combined hardening, Hill'48), and the 2 x 2 attribution of the
 //      RD failure to frictional or material anisotropy at 21 mm.
+//
+// Sample runs (from the source folder after `make`; the binaries are in build/chapters/):
+//   chapter_ch8_model_loop --out build/chapters/ch8-model-loop
+//       (the quick tier, as `ctest -R chapter.ch8-model-loop` runs it)
+//   chapter_ch8_model_loop --tier full --full-study true --fe-mass-scaling 625
+//       (the whole full study (hours of CPU; `make test-full`))
+//   chapter_ch8_model_loop --cup false
+//       (the bending-force loop only, without the cup loop and the 2 x 2)
+//   chapter_ch8_model_loop --candidates voce,hill48
+//       (only these candidates, trained on the 12.7 mm pin)
 #include "ch8_steps.hpp"
 #include "sim/fe_options.hpp"
 

@@ -9,12 +9,11 @@
 #include <map>
 #include <sstream>
 
-#include <toml++/toml.h>
-
 #include "core/csv.hpp"
 #include "fe/contact_springs.hpp"
 #include "fe/mesh.hpp"
 #include "fe/solver.hpp"
+#include "io/case_spec.hpp"
 #include "io/deck.hpp"
 #include "io/case_reduction.hpp"
 #include "io/run_case.hpp"
@@ -45,88 +44,68 @@ double sheet_volume(const fe::Mesh& mesh, const std::vector<double>& x, const st
   return v;
 }
 
-toml::table* tool_table(toml::table& root, const std::string& name) {
-  if (auto* tools = root["tool"].as_array())
-    for (auto& t : *tools)
-      if (auto* tt = t.as_table(); tt && (*tt)["name"].value_or(std::string()) == name) return tt;
-  return nullptr;
+io::MaterialType type_of(const std::string& name) {
+  for (io::MaterialType t : {io::MaterialType::elastic, io::MaterialType::j2, io::MaterialType::j2_combined,
+                             io::MaterialType::hill48, io::MaterialType::yld2004})
+    if (name == io::type_name(t)) return t;
+  throw InputError("v1: unknown material type \"" + name + "\"");
 }
 
-toml::table deck_table(const std::string& deck, const Variant& var, const RunSpec& spec) {
-  toml::table root = toml::parse_file(deck);
-  auto* mesh = root["mesh"].as_table();
-  auto* mat = root["material"].as_table();
-  if (!mesh || !mat) throw InputError(deck + ": expected [mesh] and [material]");
-  mesh->insert_or_assign("core", int64_t{spec.core});
-  mesh->insert_or_assign("ring", int64_t{spec.ring});
-  mesh->insert_or_assign("through", int64_t{spec.through});
-  if (spec.polar_radius == 0) mesh->erase("polar_radius");
-  if (spec.polar_radius > 0) mesh->insert_or_assign("polar_radius", spec.polar_radius);
-  mat->insert_or_assign("type", var.type);
+// The deck with the variant's material (none for an empty type), the mesh and the process alternatives of `spec`.
+io::CaseSpec case_of(const std::string& deck, const Variant& var, const RunSpec& spec) {
+  io::CaseSpec c = io::read_case(deck);
+  if (!c.mesh || !c.material) throw InputError(deck + ": expected [mesh] and [material]");
+  io::MeshSpec& mesh = *c.mesh;
+  mesh.core = spec.core, mesh.ring = spec.ring, mesh.through = spec.through;
+  if (spec.polar_radius == 0) mesh.polar_radius.reset();
+  if (spec.polar_radius > 0) mesh.polar_radius = spec.polar_radius;
+  io::MaterialSpec& mat = *c.material;
+  if (!var.type.empty()) mat.type = type_of(var.type);
   if (spec.voce) {  // the published alternative 330.2 - 190 exp(-12.4 eps_p) (aa6016_t4_esaform2021.csv header)
-    mat->erase("swift");
-    mat->insert_or_assign("voce", toml::table{{"sigma0", 330.2 - 190.0}, {"Q", 190.0}, {"b", 12.4}});
+    mat.curve = io::CurveVoce{330.2 - 190.0, 190.0, 12.4};
+    c.material_sections.insert("voce");
   }
-  auto* tools = root["tool"].as_array();
-  if (!tools) throw InputError(deck + ": expected [[tool]] tables");
-  for (auto& node : *tools) {
-    auto& t = *node.as_table();
-    const std::string name = t["name"].value_or(std::string());
-    if (name == "die" && spec.gap > 0) {  // shift the die by (gap - deck's gap): its face, shoulder and opening
+  for (io::ToolSpec& t : c.tools) {
+    if (t.name == "die" && spec.gap > 0) {  // shift the die by (gap - deck's gap): its face, shoulder and opening
       const double shift = spec.gap - 1.04;
-      for (auto& sn : *t["surface"].as_array()) {
-        auto& sf = *sn.as_table();
-        auto* o = sf["origin"].as_array();
-        o->replace(o->begin() + 2, o->at(2).value_or(0.0) + shift);
-        if (auto z = sf["z_min"].value<double>()) sf.insert_or_assign("z_min", *z + shift);
+      for (io::SurfaceSpec& sf : t.surfaces) {
+        if (sf.origin) (*sf.origin)[2] += shift;
+        if (sf.z_min) *sf.z_min += shift;
       }
     }
-    if (name == "die" && spec.clearance > 0) {  // widen the opening: cylinder, shoulder torus and face r_min move out
+    if (t.name == "die" && spec.clearance > 0) {  // widen the opening: cylinder, shoulder torus and face r_min move out
       const double dr = spec.clearance - 1.2;
-      for (auto& sn : *t["surface"].as_array()) {
-        auto& sf = *sn.as_table();
-        for (const char* k : {"radius", "r_min"})
-          if (auto v = sf[k].value<double>()) sf.insert_or_assign(k, *v + dr);
+      for (io::SurfaceSpec& sf : t.surfaces) {
+        if (sf.radius) *sf.radius += dr;
+        if (sf.r_min) *sf.r_min += dr;
       }
     }
-    if (name == "holder" && spec.holder_force > 0) {  // force-driven (keeps the deck's stop, if any)
-      t.insert_or_assign("drive", "force");
-      t.insert_or_assign("direction", toml::array{0.0, 0.0, 1.0});
-      t.insert_or_assign("force", spec.holder_force);
+    if (t.name == "holder" && spec.holder_force > 0) {  // force-driven (keeps the deck's stop, if any)
+      t.drive = "force";
+      t.direction = io::Vec3Spec{0.0, 0.0, 1.0};
+      t.force = spec.holder_force;
+      t.rest.erase("force");
     }
-    if (name == "holder" && spec.holder_force < 0) {  // held fixed at the gap, as before issue 54's runs
-      t.insert_or_assign("drive", "fixed");
-      for (const char* k : {"direction", "force", "mass", "stop"}) t.erase(k);
+    if (t.name == "holder" && spec.holder_force < 0) {  // held fixed at the gap, as before issue 54's runs
+      t.drive = "fixed";
+      t.direction.reset(), t.force.reset(), t.mass.reset(), t.stop.reset();
+      for (const char* k : {"direction", "force", "mass", "stop"}) t.rest.erase(k);
     }
-    if (t["drive"].value_or(std::string()) == "force" && !t.contains("mass"))
-      t.insert_or_assign("mass", 1.0);  // set from the contact stiffness and dt in draw()
+    if (t.drive == "force" && !t.mass && !t.rest.contains("mass")) t.mass = 1.0;  // set from the contact stiffness and dt
   }
   if (spec.mu >= 0)
-    for (auto& node : *root["contact"].as_array())
-      if (auto* f = node.as_table()->get("friction")) f->as_table()->insert_or_assign("mu", spec.mu);
+    for (io::ContactSpec& p : c.contacts)
+      if (p.friction) p.friction->mu = spec.mu;
   if (var.type == "hill48") {
-    toml::table h;
-    if (var.r0 > 0) {
-      h.insert("r0", var.r0);
-      h.insert("r45", var.r45);
-      h.insert("r90", var.r90);
-    } else {
-      h.insert("s45", var.s45);
-      h.insert("s90", var.s90);
-      h.insert("sb", var.sb);
-    }
-    mat->insert_or_assign("hill48", h);
+    if (var.r0 > 0) mat.surface = io::Hill48R{var.r0, var.r45, var.r90};
+    else mat.surface = io::Hill48S{var.s45, var.s90, var.sb};
+    c.material_sections.insert("hill48");
   }
   if (var.type == "yld2004") {
-    toml::table y;
-    toml::array c1, c2;
-    for (int i = 0; i < 9; ++i) c1.push_back(var.c1[i]), c2.push_back(var.c2[i]);
-    y.insert("a", var.a);
-    y.insert("c1", c1);
-    y.insert("c2", c2);
-    mat->insert_or_assign("yld2004", y);
+    mat.surface = io::Yld2004Surface{var.a, var.c1, var.c2};
+    c.material_sections.insert("yld2004");
   }
-  return root;
+  return c;
 }
 
 }  // namespace
@@ -139,37 +118,31 @@ int region_of(double r, double z) {
 }
 
 std::string deck_text(const std::string& deck, const Variant& var, const RunSpec& spec) {
-  toml::table root = deck_table(deck, var, spec);
-  std::ostringstream text0;
-  text0 << root;
-  const io::Deck d = io::parse_deck(text0.str(), deck);
+  io::CaseSpec c = case_of(deck, var, spec);
+  const io::Deck d = io::parse_deck(io::to_toml(c), deck);
   const fe::Model& m = d.model;
   if (m.steps.size() != 2) throw InputError(deck + ": expected two steps (settle, draw)");
-  auto* punch = tool_table(root, "punch");
-  if (!punch) throw InputError(deck + ": no tool named 'punch'");
+  io::ToolSpec& punch = c.tool("punch", deck);
   // Mass scaling: the stroke in spec.cycles cycles.
   const double dt = spec.stroke / spec.speed / static_cast<double>(spec.cycles);
-  root["numerics"].as_table()->insert_or_assign("target_dt", dt / m.dt_safety);
+  if (!c.numerics) c.numerics.emplace();
+  c.numerics->target_dt = dt / m.dt_safety;
   // speed ramp: uniform acceleration over spec.ramp mm (time 2 ramp / speed), or over 2 % of the cycles
   const double tr = spec.ramp > 0 ? 2.0 * spec.ramp / spec.speed : 0.02 * static_cast<double>(spec.cycles) * dt;
-  punch->insert_or_assign("speed", toml::table{{"t", toml::array{0.0, tr}}, {"v", toml::array{0.0, spec.speed}}});
-  auto* steps = root["step"].as_array();
-  steps->get(0)->as_table()->insert_or_assign("duration", 200 * dt);
-  steps->get(0)->as_table()->insert_or_assign("damping", 1.0 / (50 * dt));
-  steps->get(1)->as_table()->insert_or_assign("duration", spec.stroke / spec.speed + 0.5 * tr);
+  punch.speed = io::HistorySpec{{0.0, tr}, {0.0, spec.speed}};
+  c.steps[0].duration = 200 * dt;
+  c.steps[0].damping = 1.0 / (50 * dt);
+  c.steps[1].duration = spec.stroke / spec.speed + 0.5 * tr;
   for (const auto& t : m.tools)
     if (t.drive == fe::Tool::Drive::force)
-      tool_table(root, t.name)->insert_or_assign("mass", fe::tool_mass_half_omega_dt(fe::tool_contact_stiffness(m, t.name), dt));
+      c.tool(t.name, deck).mass = fe::tool_mass_half_omega_dt(fe::tool_contact_stiffness(m, t.name), dt);
   // What the chapter measures, kept by the run (io/case_reduction.hpp, kind earing_cup).
-  if (!root["output"].as_table()) root.insert_or_assign("output", toml::table{});
-  root["output"].as_table()->insert_or_assign(
-      "reduce", toml::table{{"kind", "earing_cup"}, {"tool", "punch"}, {"step", m.steps[1].name}, {"stroke", spec.stroke},
-                            {"every", static_cast<int64_t>(std::max(1L, spec.cycles / 300))}});
+  c.reduce = io::ReduceSpec{"earing_cup", "punch", m.steps[1].name, {}, spec.stroke, {}, std::max(1L, spec.cycles / 300)};
   std::ostringstream o;
   o << "# ESAFORM 2021 cup, variant " << var.id << ", written by chapter v1-earing-benchmark (v1_cup.cpp) from " << deck
     << ".\n# Stroke " << spec.stroke << " mm in " << spec.cycles << " cycles.  Units: mm, N, MPa, s, t/mm^3.  Rerun with: "
     << "drawbend run deck.toml --out DIR\n"
-    << root << "\n";
+    << io::to_toml(c) << "\n";
   return o.str();
 }
 
@@ -296,9 +269,9 @@ Extrema extrema(const std::vector<std::pair<double, double>>& h) {
 }
 
 double polar_start(const std::string& deck, const RunSpec& spec) {
-  const toml::table root = deck_table(deck, Variant{}, spec);
-  const double R = root["mesh"]["radius"].value_or(0.0), cf = root["mesh"]["core_fraction"].value_or(0.5);
-  const double pr = root["mesh"]["polar_radius"].value_or(0.0), a = cf * R;
+  const io::MeshSpec mesh = *case_of(deck, Variant{}, spec).mesh;
+  const double R = mesh.radius.value_or(0.0), cf = mesh.core_fraction.value_or(0.5);
+  const double pr = mesh.polar_radius.value_or(0.0), a = cf * R;
   return pr > 0 ? a + (R - a) * std::floor(spec.ring * (pr - a) / (R - a)) / spec.ring : 0.0;
 }
 
@@ -306,8 +279,8 @@ double mesh_angular_error(const std::string& deck, const RunSpec& spec, double r
   // The ring of the O-grid (src/fe/disk.hpp): line k runs straight from the k-th core boundary point to its
   // point at k/(2n) x 90 deg on the circle of radius rp (the rim, or the start of the polar part), then
   // radially.  Where does it cross radius r?
-  const toml::table root = deck_table(deck, Variant{}, spec);
-  const double R = root["mesh"]["radius"].value_or(0.0), cf = root["mesh"]["core_fraction"].value_or(0.5);
+  const io::MeshSpec mesh = *case_of(deck, Variant{}, spec).mesh;
+  const double R = mesh.radius.value_or(0.0), cf = mesh.core_fraction.value_or(0.5);
   const int n = spec.core;
   const double a = cf * R;
   const double rp = polar_start(deck, spec) > 0 ? polar_start(deck, spec) : R;

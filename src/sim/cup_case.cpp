@@ -8,15 +8,13 @@
 #include <fstream>
 #include <sstream>
 
-#include <toml++/toml.h>
-
 #include "core/csv.hpp"
 #include "fe/contact_springs.hpp"
 #include "fe/solver.hpp"
+#include "io/case_spec.hpp"
 #include "io/deck.hpp"
 #include "io/case_reduction.hpp"
 #include "io/run_case.hpp"
-#include "core/toml_read.hpp"
 #include "material/material.hpp"
 #include "sim/deck_job.hpp"
 #include "sim/material_choice.hpp"
@@ -31,124 +29,91 @@ double elapsed_s(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-toml::table* tool_table(toml::table& root, const std::string& name) {
-  if (auto* tools = root["tool"].as_array())
-    for (auto& t : *tools)
-      if (auto* tt = t.as_table(); tt && (*tt)["name"].value_or(std::string()) == name) return tt;
-  return nullptr;
-}
-
-toml::table* surface(toml::table& tool, const std::string& kind) {
-  if (auto* s = tool["surface"].as_array())
-    for (auto& x : *s)
-      if (auto* t = x.as_table(); t && (*t)["kind"].value_or(std::string()) == kind) return t;
-  return nullptr;
-}
-
-double number(toml::table& t, const char* key, const std::string& where) {
-  if (auto v = t[key].value<double>()) return *v;
-  throw InputError(where + ": expected a number '" + key + "'");
-}
-
 // The punch: flat face r <= Rw - Rp, corner torus (tube Rp, centre z = -Rp),
 // wall cylinder r = Rw below z = -Rp.  Rw (the wall radius) is kept.
-void set_punch_radius(toml::table& root, double rp, const std::string& where) {
-  auto* punch = tool_table(root, "punch");
-  toml::table *plane = punch ? surface(*punch, "plane") : nullptr, *torus = punch ? surface(*punch, "torus") : nullptr,
-              *wall = punch ? surface(*punch, "cylinder") : nullptr;
+void set_punch_radius(io::CaseSpec& c, double rp, const std::string& where) {
+  io::ToolSpec* punch = nullptr;
+  for (auto& t : c.tools)
+    if (t.name == "punch") punch = &t;
+  io::SurfaceSpec *plane = punch ? punch->surface("plane") : nullptr, *torus = punch ? punch->surface("torus") : nullptr,
+                  *wall = punch ? punch->surface("cylinder") : nullptr;
   if (!plane || !torus || !wall) throw InputError(where + ": the punch needs plane, torus and cylinder surfaces");
-  const double rw = number(*wall, "radius", where + ": punch cylinder");
+  if (!wall->radius) throw InputError(where + ": punch cylinder: expected a number 'radius'");
+  const double rw = *wall->radius;
   if (!(rp > 0 && rp < rw)) throw InputError(where + ": punch radius " + fmt(rp) + " mm must lie in (0, " + fmt(rw) + ")");
-  plane->insert_or_assign("r_max", rw - rp);
-  torus->insert_or_assign("radius", rw - rp);
-  torus->insert_or_assign("tube_radius", rp);
-  torus->insert_or_assign("origin", toml::array{0.0, 0.0, -rp});
-  wall->insert_or_assign("z_max", -rp);
+  plane->r_max = rw - rp;
+  torus->radius = rw - rp;
+  torus->tube_radius = rp;
+  torus->origin = io::Vec3Spec{0.0, 0.0, -rp};
+  wall->z_max = -rp;
 }
 
 // The upper die: flat face r >= Rh + Rd at z = t, corner torus (tube Rd,
 // centre z = t + Rd), hole cylinder r = Rh above z = t + Rd.  Rh is kept.
-void set_die_radius(toml::table& root, double rd, const std::string& where) {
-  auto* die = tool_table(root, "upper_die");
-  toml::table *plane = die ? surface(*die, "plane") : nullptr, *torus = die ? surface(*die, "torus") : nullptr,
-              *hole = die ? surface(*die, "cylinder") : nullptr;
+void set_die_radius(io::CaseSpec& c, double rd, const std::string& where) {
+  io::ToolSpec* die = nullptr;
+  for (auto& t : c.tools)
+    if (t.name == "upper_die") die = &t;
+  io::SurfaceSpec *plane = die ? die->surface("plane") : nullptr, *torus = die ? die->surface("torus") : nullptr,
+                  *hole = die ? die->surface("cylinder") : nullptr;
   if (!plane || !torus || !hole) throw InputError(where + ": the upper die needs plane, torus and cylinder surfaces");
-  const double rh = number(*hole, "radius", where + ": upper-die cylinder");
-  const auto* o = (*plane)["origin"].as_array();
-  if (!o || o->size() != 3 || !o->get(2)->value<double>()) throw InputError(where + ": upper-die plane needs an origin");
-  const double zt = *o->get(2)->value<double>();
+  if (!hole->radius) throw InputError(where + ": upper-die cylinder: expected a number 'radius'");
+  const double rh = *hole->radius;
+  if (!plane->origin) throw InputError(where + ": upper-die plane needs an origin");
+  const double zt = (*plane->origin)[2];
   if (!(rd > 0 && rd < 20)) throw InputError(where + ": die radius " + fmt(rd) + " mm must lie in (0, 20)");
-  plane->insert_or_assign("r_min", rh + rd);
-  torus->insert_or_assign("radius", rh + rd);
-  torus->insert_or_assign("tube_radius", rd);
-  torus->insert_or_assign("origin", toml::array{0.0, 0.0, zt + rd});
-  hole->insert_or_assign("z_min", zt + rd);
+  plane->r_min = rh + rd;
+  torus->radius = rh + rd;
+  torus->tube_radius = rd;
+  torus->origin = io::Vec3Spec{0.0, 0.0, zt + rd};
+  hole->z_min = zt + rd;
 }
 
-// The base deck with the spec's mesh, radii, material and friction (paths absolute).
-toml::table base_table(const CupSpec& spec, int& layers) {
+// The base deck with the spec's mesh, radii, material and friction; relative
+// paths made absolute (the deck is written elsewhere).
+io::CaseSpec base_case(const CupSpec& spec) {
   if (spec.refine < 1) throw InputError(spec.deck + ": refine must be >= 1");
-  toml::table root = parse_toml_file(spec.deck);
+  io::CaseSpec c = io::read_case(spec.deck);
   const fs::path dir = fs::path(spec.deck).parent_path();
-  if (auto* mesh = root["mesh"].as_table())
-    for (const char* key : {"core", "ring", "through"})
-      if (auto* n = mesh->get(key); n && n->value<int64_t>()) {
-        const int64_t count = *n->value<int64_t>() * spec.refine;  // read before the node is replaced
-        mesh->insert_or_assign(key, count);
-        if (std::string(key) == "through") layers = static_cast<int>(count);
-      }
-  if (!spec.material.empty()) {  // the user's material over the deck's own flow curve
-    std::string curve = root["material"]["hardening"].value_or(std::string());
-    if (!curve.empty() && fs::path(curve).is_relative()) curve = (dir / curve).lexically_normal().string();
-    const std::string section = material_section(spec.material, curve);
-    root.insert_or_assign("material", *parse_toml(section, "--cup-material")["material"].as_table());
+  auto absolute = [&](std::string& p) {
+    if (fs::path(p).is_relative()) p = (dir / p).lexically_normal().string();
+  };
+  if (c.mesh)
+    for (auto* n : {&c.mesh->core, &c.mesh->ring, &c.mesh->through})
+      if (*n) **n *= spec.refine;
+  io::CurveFile* file = c.material && c.material->curve ? std::get_if<io::CurveFile>(&*c.material->curve) : nullptr;
+  if (!spec.material.empty())  // the user's material over the deck's own flow curve
+    c.material = material_choice(spec.material, !file                              ? std::string()
+                                                : fs::path(file->path).is_relative() ? (dir / file->path).lexically_normal().string()
+                                                                                     : file->path);
+  if (c.material && c.material->curve)
+    if (auto* f = std::get_if<io::CurveFile>(&*c.material->curve)) absolute(f->path);
+  if (!std::isnan(spec.punch_radius)) set_punch_radius(c, spec.punch_radius, spec.deck);
+  if (!std::isnan(spec.die_radius)) set_die_radius(c, spec.die_radius, spec.deck);
+  for (auto& p : c.contacts) {
+    if (spec.friction == "none") {
+      p.friction.reset();
+      continue;
+    }
+    if (!spec.friction.empty() && (!p.friction || !p.friction->nodes))
+      throw InputError(spec.deck + ": a contact pair without a Table 6.1 nodes friction");
+    if (!spec.friction.empty()) p.friction->nodes = fs::absolute(spec.friction).lexically_normal().string();
+    if (p.friction && p.friction->nodes) absolute(*p.friction->nodes);
   }
-  if (!std::isnan(spec.punch_radius)) set_punch_radius(root, spec.punch_radius, spec.deck);
-  if (!std::isnan(spec.die_radius)) set_die_radius(root, spec.die_radius, spec.deck);
-  if (!spec.friction.empty())
-    if (auto* pairs = root["contact"].as_array())
-      for (auto& p : *pairs) {
-        auto& t = *p.as_table();
-        if (spec.friction == "none") {
-          t.erase("friction");
-          continue;
-        }
-        auto* f = t["friction"].as_table();
-        if (!f || !f->get("nodes")) throw InputError(spec.deck + ": a contact pair without a Table 6.1 nodes friction");
-        f->insert_or_assign("nodes", fs::absolute(spec.friction).lexically_normal().string());
-      }
-  return root;
+  return c;
 }
 
 }  // namespace
 
 CupResult draw_cup(const CupSpec& spec) {
   const auto t_start = std::chrono::steady_clock::now();
-  const std::string deck_path = spec.deck;
   const double speed = spec.speed, stroke = spec.stroke;
   const long cycles = spec.cycles;
   const std::string& vtu = spec.vtu;
-  int layers = 0;
-  const toml::table root = base_table(spec, layers);
-  std::ostringstream text;
-  text << root;
-  io::Deck deck = io::parse_deck(text.str(), deck_path);
+  const io::CaseSpec c = cup_case(spec);  // the deck cup_deck_text writes, read as `drawbend run` reads it
+  io::Deck deck = io::parse_deck(io::to_toml(c), spec.deck);
   fe::Model& m = deck.model;
-  if (m.steps.size() != 2) throw InputError(deck_path + ": expected two steps (clamp, draw)");
-  fe::Tool* punch = nullptr;
-  for (auto& t : m.tools)
-    if (t.name == "punch") punch = &t;
-  if (!punch) throw InputError(deck_path + ": no tool named 'punch'");
-  // Time step: the stroke in `cycles` cycles (mass scaling to target_dt).
-  const double dt = stroke / speed / cycles;
-  m.target_dt = dt / m.dt_safety;
-  const double tr = 0.02 * cycles * dt;  // the speed ramp takes 2 % of the cycles
-  punch->speed = {{0.0, tr}, {0.0, speed}};
-  m.steps[1].duration = stroke / speed + 0.5 * tr;
-  m.steps[0].duration = 400 * dt;
-  m.steps[0].damping = 1.0 / (50 * dt);  // velocities relax in ~50 cycles while clamping
-  for (auto& t : m.tools)
-    if (t.drive == fe::Tool::Drive::force) t.mass = fe::tool_mass_half_omega_dt(fe::tool_contact_stiffness(m, t.name), dt);
+  const int layers = c.mesh && c.mesh->through ? static_cast<int>(*c.mesh->through) : 0;
   fe::Solver s(m);
   s.run_step(0);
   CupResult r;
@@ -222,7 +187,7 @@ CupResult read_cup_run(const CupSpec& spec, const std::string& dir) {
   r.added_mass_ratio = io::reduced(rows, "added_mass_ratio", where);
   r.die_lift = io::reduced(rows, "die_lift", where);
   r.cycles = static_cast<long>(io::reduced(rows, "cycles", where));
-  base_table(spec, r.layers);
+  if (const io::CaseSpec c = base_case(spec); c.mesh && c.mesh->through) r.layers = static_cast<int>(*c.mesh->through);
   const io::ReducedValue* centroid = nullptr;
   for (const auto& row : rows) {
     if (row.quantity == "curve") r.curve.push_back({row.x, row.value});
@@ -269,48 +234,35 @@ double force_at(const CupResult& r, double d) {
 }
 
 
-std::string cup_deck_text(const CupSpec& spec) {
-  int layers = 0;
-  toml::table root = base_table(spec, layers);
-  const fs::path dir = fs::path(spec.deck).parent_path();
-  // Paths relative to the base deck become absolute: the deck is written elsewhere.
-  auto absolute = [&](toml::table& t, const char* key) {
-    if (auto v = t[key].value<std::string>(); v && fs::path(*v).is_relative())
-      t.insert_or_assign(key, (dir / *v).lexically_normal().string());
-  };
-  if (auto* m = root["material"].as_table()) absolute(*m, "hardening");
-  if (auto* pairs = root["contact"].as_array())
-    for (auto& p : *pairs)
-      if (auto* f = (*p.as_table())["friction"].as_table()) absolute(*f, "nodes");
-  // The numbers draw_cup sets on the model, as deck keys.
-  std::ostringstream text0;
-  text0 << root;
-  io::Deck deck = io::parse_deck(text0.str(), spec.deck);
+io::CaseSpec cup_case(const CupSpec& spec) {
+  io::CaseSpec c = base_case(spec);
+  const io::Deck deck = io::parse_deck(io::to_toml(c), spec.deck);
   const fe::Model& m = deck.model;
+  // The stroke in `cycles` cycles (mass scaling to target_dt); the speed ramp takes 2 % of the cycles.
   const double dt = spec.stroke / spec.speed / spec.cycles, tr = 0.02 * spec.cycles * dt;
-  root["numerics"].as_table()->insert_or_assign("target_dt", dt / m.dt_safety);
-  if (spec.threads > 0) root["numerics"].as_table()->insert_or_assign("threads", spec.threads);
-  auto* steps = root["step"].as_array();
-  if (!steps || steps->size() != 2) throw InputError(spec.deck + ": expected two steps (clamp, draw)");
-  steps->get(0)->as_table()->insert_or_assign("duration", 400 * dt);
-  steps->get(0)->as_table()->insert_or_assign("damping", 1.0 / (50 * dt));
-  steps->get(1)->as_table()->insert_or_assign("duration", spec.stroke / spec.speed + 0.5 * tr);
-  auto* punch = tool_table(root, "punch");
-  if (!punch) throw InputError(spec.deck + ": no tool named 'punch'");
-  punch->insert_or_assign("speed", toml::table{{"t", toml::array{0.0, tr}}, {"v", toml::array{0.0, spec.speed}}});
+  if (!c.numerics) c.numerics.emplace();
+  c.numerics->target_dt = dt / m.dt_safety;
+  if (spec.threads > 0) c.numerics->threads = spec.threads;
+  if (c.steps.size() != 2) throw InputError(spec.deck + ": expected two steps (clamp, draw)");
+  c.steps[0].duration = 400 * dt;
+  c.steps[0].damping = 1.0 / (50 * dt);  // velocities relax in ~50 cycles while clamping
+  c.steps[1].duration = spec.stroke / spec.speed + 0.5 * tr;
+  c.tool("punch", spec.deck).speed = io::HistorySpec{{0.0, tr}, {0.0, spec.speed}};
   for (const auto& t : m.tools)
     if (t.drive == fe::Tool::Drive::force)
-      tool_table(root, t.name)->insert_or_assign("mass", fe::tool_mass_half_omega_dt(fe::tool_contact_stiffness(m, t.name), dt));
+      c.tool(t.name, spec.deck).mass = fe::tool_mass_half_omega_dt(fe::tool_contact_stiffness(m, t.name), dt);
   // The chapter's reduction, kept by the run (io/case_reduction.hpp): draw_cup's curve and end state.
-  if (!root["output"].as_table()) root.insert_or_assign("output", toml::table{});
-  root["output"].as_table()->insert_or_assign(
-      "reduce", toml::table{{"kind", "cup_draw"}, {"tool", "punch"}, {"step", m.steps[1].name}, {"holder", "lower_die"},
-                            {"every", static_cast<int64_t>(std::max(1L, spec.cycles / 400))}});
+  c.reduce = io::ReduceSpec{"cup_draw", "punch", m.steps[1].name, "lower_die", {}, {}, std::max(1L, spec.cycles / 400)};
+  return c;
+}
+
+std::string cup_deck_text(const CupSpec& spec) {
+  const io::CaseSpec c = cup_case(spec);
   std::ostringstream o;
   o << "# Cup-drawing deck written by drawbend's builder (src/sim/cup_case.cpp) from " << spec.deck << ".\n"
     << "# Punch speed " << spec.speed << " mm/s, stroke " << spec.stroke << " mm in " << spec.cycles
     << " cycles, mesh refinement " << spec.refine << ".\n# Units: mm, N, MPa, s, t/mm^3.  Rerun with: drawbend run deck.toml --out DIR\n"
-    << root << "\n";
+    << io::to_toml(c) << "\n";
   return o.str();
 }
 

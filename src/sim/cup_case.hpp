@@ -19,6 +19,8 @@
 #include <utility>
 #include <vector>
 
+#include "io/case_spec.hpp"
+
 namespace drawbend::sim {
 
 struct CupSpec {
@@ -58,9 +60,13 @@ struct CupResult {
   std::vector<std::array<double, 5>> field;
 };
 
-/// The deck text of a spec (TOML, runnable by `drawbend run`): the base deck with
-/// the mesh refined, the radii, material and friction replaced, and the speed,
-/// time step and step durations set as described above.
+/// The case of a spec (io/case_spec.hpp): the base deck read into a typed
+/// io::CaseSpec with the mesh refined, the radii, material and friction
+/// replaced (paths absolute), and the speed, time step, step durations, the
+/// force-driven tools' masses and the reduction set as described above.
+io::CaseSpec cup_case(const CupSpec& s);
+/// The deck text of a spec (TOML, runnable by `drawbend run`): a comment
+/// header and io::to_toml(cup_case(s)).
 std::string cup_deck_text(const CupSpec& s);
 /// Build and run a spec (progress: one line per 10 % of the stroke on stderr).
 CupResult draw_cup(const CupSpec& s);
