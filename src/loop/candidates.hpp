@@ -137,6 +137,8 @@ struct ScreenContext {
   /// The one-cell sub-probes (off by default: development only, see
   /// LoopOptions::cell_probes; off, the screen is exactly the one before them).
   bool one_cell = false;
+  /// Per-input probes of test-level variables pooled over blocks (screen.cpp: centred_by).
+  bool pooled_inputs = false;
   /// Threads screening candidates at once (results identical for any count).
   int threads = 1;
 };

@@ -38,6 +38,9 @@ struct ProbeDef {
   std::vector<int> stratum;  // per unit
   int nstrata = 1, nlev = 1, ngroups = 1;
   bool cells = false;            // sub-probes per group of the input
+  // Pooled over blocks (test-level variables): strata are the input's groups,
+  // the residual centred per block, then per group; rpre is that residual per row.
+  std::vector<double> rpre;
   std::vector<int> dof;          // per sub-probe (0: dropped)
   std::vector<double> scale;     // per sub-probe: ESS / scale ~ chi^2(kdof) under permutation (pilot)
   std::vector<double> kdof;      // per sub-probe: the chi^2's dof (0: dof; one-group: moment-matched)
@@ -224,6 +227,23 @@ double probe_cv(const ProbeDef& p, const std::vector<int>& rows, const std::vect
   return sse0 > 0 ? 1 - sse1 / sse0 : 0.0;
 }
 
+// The residual centred per group (a block) over the rows.  A test-level
+// variable is permuted between the tests of a block, and its per-input probe
+// is centred per block x group: with many cells and few tests per cell (the
+// bt-block designs) such a stratum holds one test or two, so an effect
+// confined to one pin, direction or lubricant had no test to be compared
+// with.  The pooled per-input probe (opt-in, ScreenContext::pooled_inputs)
+// takes the input's groups as strata over all blocks, the residual centred per
+// block and then per group, so the tests of one pin in different cells are
+// compared; it is still a permutation within blocks, so the test stays exact.
+std::vector<double> centred_by(const std::vector<int>& group, int ngroups, const std::vector<int>& rows,
+                               const std::vector<double>& r) {
+  std::vector<double> s(ngroups, 0.0), m(ngroups, 0.0), out = r;
+  for (int i : rows) s[group[i]] += r[i], m[group[i]] += 1;
+  for (int i : rows) out[i] = r[i] - s[group[i]] / m[group[i]];
+  return out;
+}
+
 // The names by which a candidate is itself one of the model's inputs.
 bool same_input(const std::string& cand, const std::string& input) {
   if (input == "pin") return cand == "pin" || cand == "pin_diameter_mm" || cand == "inv_R_per_mm";
@@ -254,6 +274,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
   for (int b : f.block) nblocks = std::max(nblocks, b + 1);
   const bool weighted = ctx && ctx->mu_weight.size() == n;
   const int nth = ctx ? std::max(1, ctx->threads) : 1;
+  const bool pooled_inputs = ctx && ctx->pooled_inputs;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nth) if (nth > 1 && cands.size() > 1)
   for (size_t ci = 0; ci < cands.size(); ++ci) {
     const Candidate& c = cands[ci];
@@ -362,24 +383,26 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     // The probe family.
     std::vector<ProbeDef> probes;
     auto add = [&](Shape shape, const std::string& label, const std::vector<int>& row_group, int ngroups,
-                   const std::string& input = "") {
+                   const std::string& input = "", bool pooled = false) {
       ProbeDef p;
       p.shape = shape;
       p.label = label;
       p.input = input;
       p.ngroups = ngroups;
-      p.cells = ctx && ctx->one_cell && !input.empty() && ngroups > 1 && (shape == Shape::levels || shape == Shape::slopes);
+      p.cells = !pooled && ctx && ctx->one_cell && !input.empty() && ngroups > 1 &&
+                (shape == Shape::levels || shape == Shape::slopes);
       p.nlev = nlev;
       p.row_stratum.assign(n, 0);
-      p.nstrata = nblocks * ngroups;
-      for (int i : rows) p.row_stratum[i] = f.block[i] * ngroups + (row_group.empty() ? 0 : row_group[i]);
+      p.nstrata = pooled ? ngroups : nblocks * ngroups;
+      for (int i : rows) p.row_stratum[i] = pooled ? row_group[i] : f.block[i] * ngroups + (row_group.empty() ? 0 : row_group[i]);
+      const std::vector<double>& r0 = pooled ? (p.rpre = centred_by(f.block, nblocks, rows, resid)) : resid;
       std::vector<double> sm(p.nstrata, 0.0), sn(p.nstrata, 0.0);
-      for (int i : rows) sm[p.row_stratum[i]] += resid[i], sn[p.row_stratum[i]] += 1;
+      for (int i : rows) sm[p.row_stratum[i]] += r0[i], sn[p.row_stratum[i]] += 1;
       p.stratum.assign(U, 0);
       p.ur.assign(U, 0.0), p.urw.assign(U, 0.0), p.un.assign(U, 0.0), p.uw2.assign(U, 0.0);
       for (int i : rows) {
         const int s = p.row_stratum[i], u = unit_of[i];
-        const double rc = resid[i] - sm[s] / sn[s], w = weighted ? ctx->mu_weight[i] : 1.0;
+        const double rc = r0[i] - sm[s] / sn[s], w = weighted ? ctx->mu_weight[i] : 1.0;
         p.stratum[u] = s;  // a test lies in one stratum (blocks and model inputs are constant within a test)
         p.ur[u] += rc, p.urw[u] += w * rc, p.un[u] += 1, p.uw2[u] += w * w;
         p.sst += rc * rc;
@@ -433,6 +456,9 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         if (seen.size() < 2) continue;
         add(c.categorical || distinct.size() <= 8 ? Shape::levels : Shape::slopes, "per " + input, g, ng, input);
         if (!c.categorical && distinct.size() > 8) add(Shape::levels, "bins per " + input, g, ng, input);
+        if (c.test_level && pooled_inputs)  // see centred_by
+          add(c.categorical || distinct.size() <= 8 ? Shape::levels : Shape::slopes, "per " + input + ", pooled over cells",
+              g, ng, input, true);
       }
     int dof_max = 0;
     for (const auto& p : probes) dof_max = std::max(dof_max, p.dof[0]);
@@ -544,7 +570,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     for (size_t j = 0; j < probes.size(); ++j) {
       const ProbeDef& p = probes[j];
       if (p.dof[0] > 0) {
-        const double cv = probe_cv(p, rows, z, lv, wrow, resid, f);
+        const double cv = probe_cv(p, rows, z, lv, wrow, p.rpre.empty() ? resid : p.rpre, f);
         if (cv > res.cv_reduction) res.cv_reduction = cv, res.cv_probe = p.label;
       }
       if (!p.cells) continue;
