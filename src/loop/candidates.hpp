@@ -32,6 +32,13 @@
 //             centred per block x group), for effects that act in one cell
 //             only; numeric variables with more than 8 values get a slope and
 //             the quantile bins per group;
+//   pooled    (opt-in, ScreenContext::pooled_inputs, `--pooled-inputs true`)
+//             for test-level variables, the per-input probe also with the
+//             input's groups pooled over the blocks (residual centred per block,
+//             then per group): centred per block x group, a stratum of a design
+//             with many cells holds one or two tests, so an effect confined to
+//             one pin, direction or lubricant had nothing to be compared with;
+//             still permuted within blocks, so the test stays exact;
 //   one cell  (opt-in, ScreenContext::one_cell) each per-input probe's shape pooled over the strata of ONE
 //             group of its input (one common slope, 1 dof, or common level
 //             means, levels - 1 dof, in that group and nothing elsewhere): an
@@ -137,6 +144,8 @@ struct ScreenContext {
   /// The one-cell sub-probes (off by default: development only, see
   /// LoopOptions::cell_probes; off, the screen is exactly the one before them).
   bool one_cell = false;
+  /// Per-input probes of test-level variables pooled over blocks (screen.cpp: centred_by).
+  bool pooled_inputs = false;
   /// Threads screening candidates at once (results identical for any count).
   int threads = 1;
 };

@@ -245,6 +245,7 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
       if (round == 0) res.candidates = cands;
       ScreenContext ctx = screen_context(d, cur_fit, cur.pred);
       ctx.one_cell = o.cell_probes;
+      ctx.pooled_inputs = o.pooled_inputs;
       ctx.threads = o.threads;
       const auto rank =
           rank_candidates(cands, cur.resid, res.folds, o.permutations, o.seed + 1000003ULL * round, o.alpha, &ctx);

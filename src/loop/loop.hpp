@@ -67,6 +67,8 @@ struct LoopOptions {
   /// Opt-in (--cell-probes; development, not yet scored on enough data): the
   /// screen's one-cell sub-probes and the forms confined to one cell.
   bool cell_probes = false;
+  /// Per-input probes of test-level variables pooled over the cells as well (screen.cpp: centred_by).
+  bool pooled_inputs = false;
   /// Threads of the screen (candidates screened at once; the same results for any count).
   int threads = 1;
 };

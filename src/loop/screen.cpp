@@ -21,6 +21,7 @@ namespace {
 using detail::kLanes;
 using detail::ProbeDef;
 using detail::Shape;
+using detail::centred_by;
 using detail::probe_z;
 
 // Pilot permutations per candidate for the probes' calibration scales.
@@ -33,138 +34,6 @@ bool same_input(const std::string& cand, const std::string& input) {
 }
 
 }  // namespace
-
-// Lane j: the one-permutation pass's operations in the same order on its own
-// sums ([k L + j]), so its ESS is bit for bit that of the permutation alone,
-// and the lanes' chains of additions overlap instead of waiting in turn.
-template <int L>
-void detail::ProbeDef::eval(const double* xz, const int* xl, double* out) const {
-  const size_t U = ur.size();
-  const int G = ngroups;
-  switch (shape) {
-    case Shape::levels:
-    case Shape::wlevels: {
-      const bool w = shape == Shape::wlevels;
-      const size_t K = static_cast<size_t>(nstrata) * nlev;
-      s1.assign(K * L, 0.0);
-      s2.assign(K * L, 0.0);
-      const double* a = w ? urw.data() : ur.data();
-      const double* b = w ? uw2.data() : un.data();
-      if (!w && !fixed_counts.empty()) {  // the counts are those of every permutation
-        for (size_t u = 0; u < U; ++u) {
-          const size_t k0 = static_cast<size_t>(stratum[u]) * nlev;
-          for (int j = 0; j < L; ++j) s1[(k0 + static_cast<size_t>(xl[u * L + j])) * L + j] += a[u];
-        }
-        for (size_t k = 0; k < K; ++k)
-          for (int j = 0; j < L; ++j) s2[k * L + j] = fixed_counts[k];
-      } else {
-        for (size_t u = 0; u < U; ++u) {
-          const size_t k0 = static_cast<size_t>(stratum[u]) * nlev;
-          for (int j = 0; j < L; ++j) {
-            const size_t k = (k0 + static_cast<size_t>(xl[u * L + j])) * L + j;
-            s1[k] += a[u], s2[k] += b[u];
-          }
-        }
-      }
-      for (int j = 0; j < L; ++j) {
-        double e = 0;
-        for (size_t k = 0; k < K; ++k)
-          if (s2[k * L + j] > 0) e += s1[k * L + j] * s1[k * L + j] / s2[k * L + j];
-        out[j] = e;
-      }
-      if (cells) {
-        c1.assign(static_cast<size_t>(G) * nlev * L, 0.0), c2.assign(c1.size(), 0.0);
-        for (size_t k = 0; k < K; ++k) {
-          const size_t q = static_cast<size_t>((k / nlev) % G) * nlev + k % nlev;
-          for (int j = 0; j < L; ++j) c1[q * L + j] += s1[k * L + j], c2[q * L + j] += s2[k * L + j];
-        }
-        for (int g = 0; g < G; ++g)
-          for (int j = 0; j < L; ++j) {
-            double eg = 0;
-            for (int l = 0; l < nlev; ++l) {
-              const size_t q = (static_cast<size_t>(g) * nlev + l) * L + j;
-              if (c2[q] > 0) eg += c1[q] * c1[q] / c2[q];
-            }
-            out[(1 + g) * L + j] = eg;
-          }
-      }
-      return;
-    }
-    case Shape::slopes: {  // one centred slope per stratum
-      s1.assign(static_cast<size_t>(nstrata) * L, 0.0), s2.assign(s1.size(), 0.0), s3.assign(s1.size(), 0.0);
-      count_per_stratum();  // s4: rows per stratum, the same under every permutation
-      for (size_t u = 0; u < U;) {  // a run of units in one stratum: its sums held in registers
-        const int s = stratum[u];
-        const size_t o = static_cast<size_t>(s) * L;
-        double a1[L], a2[L], a3[L];
-        for (int j = 0; j < L; ++j) a1[j] = s1[o + j], a2[j] = s2[o + j], a3[j] = s3[o + j];
-        for (; u < U && stratum[u] == s; ++u)
-          for (int j = 0; j < L; ++j) {
-            const double x = xz[u * L + j];
-            a1[j] += un[u] * x, a2[j] += un[u] * x * x, a3[j] += x * ur[u];
-          }
-        for (int j = 0; j < L; ++j) s1[o + j] = a1[j], s2[o + j] = a2[j], s3[o + j] = a3[j];
-      }
-      for (int j = 0; j < L; ++j) {
-        double e = 0;
-        if (cells) c1.assign(G, 0.0), c2.assign(G, 0.0);
-        for (int s = 0; s < nstrata; ++s) {
-          const size_t h = static_cast<size_t>(s) * L + j;
-          const double a = s4[s] > 0 ? s2[h] - s1[h] * s1[h] / s4[s] : 0;
-          if (a > 1e-12) e += s3[h] * s3[h] / a;
-          if (cells && a > 1e-12) c1[s % G] += s3[h], c2[s % G] += a;
-        }
-        out[j] = e;
-        if (cells)
-          for (int g = 0; g < G; ++g) out[(1 + g) * L + j] = c2[g] > 1e-12 ? c1[g] * c1[g] / c2[g] : 0.0;
-      }
-      return;
-    }
-    case Shape::wslope: {  // one slope on z w (multiplicative: the effect scales with dF/dmu)
-      double b[L] = {}, a[L] = {};
-      for (size_t u = 0; u < U; ++u)
-        for (int j = 0; j < L; ++j) {
-          const double x = xz[u * L + j];
-          b[j] += x * urw[u], a[j] += x * x * uw2[u];
-        }
-      for (int j = 0; j < L; ++j) out[j] = a[j] > 1e-12 ? b[j] * b[j] / a[j] : 0.0;
-      return;
-    }
-    case Shape::quad: {  // z and z^2, centred per stratum
-      s1.assign(static_cast<size_t>(nstrata) * L, 0.0), s2.assign(s1.size(), 0.0);
-      count_per_stratum();
-      double q11[L] = {}, q12[L] = {}, q22[L] = {}, b1[L] = {}, b2[L] = {};
-      for (size_t u = 0; u < U;) {  // runs of one stratum, as in slopes
-        const int s = stratum[u];
-        const size_t o = static_cast<size_t>(s) * L;
-        double a1[L], a2[L];
-        for (int j = 0; j < L; ++j) a1[j] = s1[o + j], a2[j] = s2[o + j];
-        for (; u < U && stratum[u] == s; ++u)
-          for (int j = 0; j < L; ++j) {
-            const double x = xz[u * L + j], x2 = x * x, n = un[u];
-            q11[j] += n * x2, q12[j] += n * x2 * x, q22[j] += n * x2 * x2;
-            a1[j] += n * x, a2[j] += n * x2;
-            b1[j] += x * ur[u], b2[j] += x2 * ur[u];
-          }
-        for (int j = 0; j < L; ++j) s1[o + j] = a1[j], s2[o + j] = a2[j];
-      }
-      for (int j = 0; j < L; ++j) {
-        for (int k = 0; k < nstrata; ++k) {
-          const size_t h = static_cast<size_t>(k) * L + j;
-          if (s4[k] > 0)
-            q11[j] -= s1[h] * s1[h] / s4[k], q12[j] -= s1[h] * s2[h] / s4[k], q22[j] -= s2[h] * s2[h] / s4[k];
-        }
-        const double lin = q11[j] > 1e-12 ? b1[j] * b1[j] / q11[j] : 0.0;
-        if (dof[0] == 1) { out[j] = lin; continue; }
-        const double det = q11[j] * q22[j] - q12[j] * q12[j];
-        if (det <= 1e-12 * std::max(1.0, q11[j] * q22[j])) { out[j] = lin; continue; }
-        const double c1q = (q22[j] * b1[j] - q12[j] * b2[j]) / det, c2q = (q11[j] * b2[j] - q12[j] * b1[j]) / det;
-        out[j] = c1q * b1[j] + c2q * b2[j];
-      }
-      return;
-    }
-  }
-}
 
 int sequential_decision(int k, int b, double thr, double conf) {
   if (b <= 0) return 0;
@@ -188,6 +57,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
   for (int b : f.block) nblocks = std::max(nblocks, b + 1);
   const bool weighted = ctx && ctx->mu_weight.size() == n;
   const int nth = ctx ? std::max(1, ctx->threads) : 1;
+  const bool pooled_inputs = ctx && ctx->pooled_inputs;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nth) if (nth > 1 && cands.size() > 1)
   for (size_t ci = 0; ci < cands.size(); ++ci) {
     const Candidate& c = cands[ci];
@@ -296,24 +166,27 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     // The probe family.
     std::vector<ProbeDef> probes;
     auto add = [&](Shape shape, const std::string& label, const std::vector<int>& row_group, int ngroups,
-                   const std::string& input = "") {
+                   const std::string& input = "", bool pooled = false) {
       ProbeDef p;
       p.shape = shape;
       p.label = label;
       p.input = input;
       p.ngroups = ngroups;
-      p.cells = ctx && ctx->one_cell && !input.empty() && ngroups > 1 && (shape == Shape::levels || shape == Shape::slopes);
+      p.cells = !pooled && ctx && ctx->one_cell && !input.empty() && ngroups > 1 &&
+                (shape == Shape::levels || shape == Shape::slopes);
       p.nlev = nlev;
       p.row_stratum.assign(n, 0);
-      p.nstrata = nblocks * ngroups;
-      for (int i : rows) p.row_stratum[i] = f.block[i] * ngroups + (row_group.empty() ? 0 : row_group[i]);
+      p.nstrata = pooled ? ngroups : nblocks * ngroups;
+      for (int i : rows)
+        p.row_stratum[i] = pooled ? row_group[i] : f.block[i] * ngroups + (row_group.empty() ? 0 : row_group[i]);
+      const std::vector<double>& r0 = pooled ? (p.rpre = centred_by(f.block, nblocks, rows, resid)) : resid;
       std::vector<double> sm(p.nstrata, 0.0), sn(p.nstrata, 0.0);
-      for (int i : rows) sm[p.row_stratum[i]] += resid[i], sn[p.row_stratum[i]] += 1;
+      for (int i : rows) sm[p.row_stratum[i]] += r0[i], sn[p.row_stratum[i]] += 1;
       p.stratum.assign(U, 0);
       p.ur.assign(U, 0.0), p.urw.assign(U, 0.0), p.un.assign(U, 0.0), p.uw2.assign(U, 0.0);
       for (int i : rows) {
         const int s = p.row_stratum[i], u = unit_of[i];
-        const double rc = resid[i] - sm[s] / sn[s], w = weighted ? ctx->mu_weight[i] : 1.0;
+        const double rc = r0[i] - sm[s] / sn[s], w = weighted ? ctx->mu_weight[i] : 1.0;
         p.stratum[u] = s;  // a test lies in one stratum (blocks and model inputs are constant within a test)
         p.ur[u] += rc, p.urw[u] += w * rc, p.un[u] += 1, p.uw2[u] += w * w;
         p.sst += rc * rc;
@@ -376,6 +249,9 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         if (seen.size() < 2) continue;
         add(c.categorical || distinct.size() <= 8 ? Shape::levels : Shape::slopes, "per " + input, g, ng, input);
         if (!c.categorical && distinct.size() > 8) add(Shape::levels, "bins per " + input, g, ng, input);
+        if (c.test_level && pooled_inputs)  // see centred_by
+          add(c.categorical || distinct.size() <= 8 ? Shape::levels : Shape::slopes, "per " + input + ", pooled over cells",
+              g, ng, input, true);
       }
     for (auto& p : probes) {  // levels: counts no permutation changes (see ProbeDef::fixed_counts)
       if (p.shape != Shape::levels) continue;
@@ -530,7 +406,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     for (size_t j = 0; j < probes.size(); ++j) {
       const ProbeDef& p = probes[j];
       if (p.dof[0] > 0) {
-        const double cv = probe_cv(p, rows, z, lv, wrow, resid, f);
+        const double cv = probe_cv(p, rows, z, lv, wrow, p.rpre.empty() ? resid : p.rpre, f);
         if (cv > res.cv_reduction) res.cv_reduction = cv, res.cv_probe = p.label;
       }
       if (!p.cells) continue;

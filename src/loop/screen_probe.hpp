@@ -2,10 +2,11 @@
 // Internal to the screen (candidates.hpp is the public header): one probe of a
 // candidate and its two uses.
 //
-//   screen.cpp    the probe family per candidate, its calibration and the
-//                 permutation test (ProbeDef::eval: explained sums of squares
-//                 of several permutations in one pass over the units)
-//   probe_cv.cpp  probe_cv: a probe's held-out gain on the model's folds
+//   screen.cpp        the probe family per candidate, its calibration and the
+//                     permutation test
+//   screen_probe.cpp  ProbeDef::eval: explained sums of squares of several
+//                     permutations in one pass over the units; probe_cv: a
+//                     probe's held-out gain on the model's folds; centred_by
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -36,6 +37,10 @@ struct ProbeDef {
   std::vector<int> stratum;  // per unit
   int nstrata = 1, nlev = 1, ngroups = 1;
   bool cells = false;            // sub-probes per group of the input
+  // Pooled over blocks (test-level variables, ScreenContext::pooled_inputs): strata
+  // are the input's groups, the residual centred per block, then per group;
+  // rpre is that residual per row (centred_by).
+  std::vector<double> rpre;
   std::vector<int> dof;          // per sub-probe (0: dropped)
   std::vector<double> scale;     // per sub-probe: ESS / scale ~ chi^2(kdof) under permutation (pilot)
   std::vector<double> kdof;      // per sub-probe: the chi^2's dof (0: dof; one-group: moment-matched)
@@ -84,5 +89,17 @@ inline double probe_z(const ProbeDef& p, int j, double ess) {
 double probe_cv(const ProbeDef& p, const std::vector<int>& rows, const std::vector<double>& z,
                 const std::vector<int>& l, const std::vector<double>& w, const std::vector<double>& r,
                 const Folds& f, int cell = -1);
+
+// The residual centred per group (a block) over the rows.  A test-level
+// variable is permuted between the tests of a block, and its per-input probe
+// is centred per block x group: with many cells and few tests per cell (the
+// bt-block designs) such a stratum holds one test or two, so an effect
+// confined to one pin, direction or lubricant had no test to be compared
+// with.  The pooled per-input probe takes the input's groups as strata over
+// all blocks, the residual centred per block and then per group, so the tests
+// of one pin in different cells are compared; it is still a permutation within
+// blocks, so the test stays exact.
+std::vector<double> centred_by(const std::vector<int>& group, int ngroups, const std::vector<int>& rows,
+                               const std::vector<double>& r);
 
 }  // namespace drawbend::loop::detail
