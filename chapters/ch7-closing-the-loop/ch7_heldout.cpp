@@ -185,10 +185,10 @@ void heldout2_study(Chapter& c, const Config& cfg) {
                                      : "NOT the protocols' held-out seeds (development seeds chosen by option): not a "
                                        "held-out result");
   run_study(c, cfg, {"blind", "demonstration 5 (held out, generator 1, fresh seeds)", "heldout_runs_blind",
-                     "heldout_summary_blind", "h2b", "h2bc_", "ch7.heldout2.blind", "heldout_protocol_v2.md",
+                     "heldout_summary_blind", "h2b", "h2bc_", "ch7.heldout2.blind", "heldout_protocol_v3.md",
                      cfg.heldout2_sets, cfg.heldout2_blind_seed0});
   run_study(c, cfg, {"wild", "demonstration 5 (held out, generator 2)", "heldout_runs_wild", "heldout_summary_wild",
-                     "h2w", "h2wc_", "ch7.heldout2.wild", "heldout_protocol_v2_wild.md", cfg.heldout2_sets,
+                     "h2w", "h2wc_", "ch7.heldout2.wild", "heldout_protocol_v3.md", cfg.heldout2_sets,
                      cfg.heldout2_wild_seed0});
 }
 

@@ -32,7 +32,7 @@
 //             centred per block x group), for effects that act in one cell
 //             only; numeric variables with more than 8 values get a slope and
 //             the quantile bins per group;
-//   pooled    (opt-in, ScreenContext::pooled_inputs, `--pooled-inputs true`)
+//   pooled    (ScreenContext::pooled_inputs; the loop's default, `--pooled-inputs false` drops it)
 //             for test-level variables, the per-input probe also with the
 //             input's groups pooled over the blocks (residual centred per block,
 //             then per group): centred per block x group, a stratum of a design

@@ -67,8 +67,11 @@ struct LoopOptions {
   /// Opt-in (--cell-probes; development, not yet scored on enough data): the
   /// screen's one-cell sub-probes and the forms confined to one cell.
   bool cell_probes = false;
-  /// Per-input probes of test-level variables pooled over the cells as well (screen.cpp: centred_by).
-  bool pooled_inputs = false;
+  /// Per-input probes of test-level variables pooled over the cells as well
+  /// (screen_probe.hpp: centred_by).  On by default since 2026-12-02 (turn 8):
+  /// development seeds 52100000/55100000 (tuning) 30/40 -> 30/40 and 29 -> 30,
+  /// 52300000/55300000 (check) 34 -> 34 and 27 -> 28, nulls 0/32 before and after.
+  bool pooled_inputs = true;
   /// Threads of the screen (candidates screened at once; the same results for any count).
   int threads = 1;
 };
