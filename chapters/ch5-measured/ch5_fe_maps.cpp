@@ -80,14 +80,16 @@ NewMethodResult identify(const Inputs& in, const FeMaps& m, const std::string& v
   return solve_new_method(tests, order);
 }
 
-FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
-  const std::string sc = c.data("thesis/scalars.csv");
-  const double v = study::scalar(sc, "ch4_outlet_speed").value;  // 50 mm/s
-  const double w_half = study::scalar(sc, "ch5_strip_width").value / 2;
-  const double t_strip = study::scalar(sc, "ch5_strip_thickness").value;
-  const double ms = sim::mass_scaling_for_speed(o.base.mass_scaling, v);
+namespace {
 
-  auto spec_for = [&](const std::string& variant, double pin) {
+/// Sec. 5.7.1's conditions and the deck of one map run (variant, pin).
+struct SpecFor {
+  Chapter& c;
+  const Inputs& in;
+  const FeOptions& o;
+  double v, w_half, t_strip, ms;  ///< mm/s, mm, mm, -
+
+  sim::DrawBendSpec operator()(const std::string& variant, double pin) const {
     sim::DrawBendSpec s = o.base;
     s.pin_diameter = pin;
     s.thickness = t_strip;
@@ -103,8 +105,21 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
     if (variant == "fine_across") s.across = o.fine_across > 0 ? o.fine_across : 2 * o.base.across;
     s.name = "ch5_d" + fmt(pin) + "_" + variant;
     return s;
-  };
+  }
+};
 
+/// The conditions from data/thesis/scalars.csv.
+SpecFor map_conditions(Chapter& c, const Inputs& in, const FeOptions& o) {
+  const std::string sc = c.data("thesis/scalars.csv");
+  const double v = study::scalar(sc, "ch4_outlet_speed").value;  // 50 mm/s
+  const double w_half = study::scalar(sc, "ch5_strip_width").value / 2;
+  const double t_strip = study::scalar(sc, "ch5_strip_thickness").value;
+  const double ms = sim::mass_scaling_for_speed(o.base.mass_scaling, v);
+  return {c, in, o, v, w_half, t_strip, ms};
+}
+
+/// All runs side by side (sim/case_pool.hpp).
+FeMaps run_maps(Chapter& c, const FeOptions& o, const SpecFor& spec_for) {
   FeMaps m;
   const auto wall0 = std::chrono::steady_clock::now();
   std::vector<sim::CaseJob> jobs;  // all runs side by side (sim/case_pool.hpp)
@@ -122,7 +137,11 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
   std::vector<sim::DrawBendResult> all = sim::run_drawbend_all(jobs, o.reuse);
   for (std::size_t i = 0; i < all.size(); ++i) m.runs[keys[i].first].emplace(keys[i].second, std::move(all[i]));
   m.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  return m;
+}
 
+/// The run table fe_runs, the run health checks and the base runs' values; the sum of the runs' wall times.
+double run_table(Chapter& c, const Inputs& in, const FeMaps& m) {
   // Run table, invariants and the bending force beside the measured one.
   auto tab = c.table({"run", "pin_mm", "variant", "F_back_half_N", "F_out_half_N", "F_B_full_N", "F_bend_T5.3_N",
                       "S1_full_N", "p_bar_MPa", "p_max_MPa", "energy_error", "KE_IE", "HG_IE", "cycles", "wall_s"},
@@ -154,6 +173,11 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
       }
     }
   c.save(tab, "fe_runs");
+  return cpu;
+}
+
+/// Figs. 5.12-5.14.
+void bending_figures(Chapter& c, const Inputs& in, const FeMaps& m) {
   // Figs. 5.12-5.14: the bending force of the rotating-pin tests against the
   // back tension (Table 5.3's fit over its printed range, full strip) with
   // our frictionless run at the back tension of Table 5.13 beside it.
@@ -177,6 +201,11 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
             {"pointfile", c.out("tables/bending_ours_d" + d + ".csv")},
             {"title_text", "Bending force, " + d + " mm pin, RD (Fig. " + fig.substr(4, 1) + "." + fig.substr(6) + ")"}});
   }
+}
+
+/// The runs' conditions and what ran.
+void map_values(Chapter& c, const FeOptions& o, const FeMaps& m, const SpecFor& spec_for, double cpu) {
+  const double v = spec_for.v, ms = spec_for.ms;
   c.value("fe_wall", fmt_fixed(m.wall_s / 60.0, 1), "min");
   c.value("fe_run_wall_sum", fmt_fixed(cpu / 60.0, 1), "min");
   c.value("fe_runs", std::to_string([&] {
@@ -201,7 +230,10 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
                                    "or `--fe-map-variants true`) runs them, and the rows below then have numbers");
   c.value("fe_penalty", fmt(o.base.penalty));
   c.value("fe_stiff_penalty", fmt(o.stiff_penalty));
+}
 
+/// Figs. 5.23-5.25.
+void map_figures(Chapter& c, const Inputs& in, const FeMaps& m) {
   // Figs. 5.23-5.25: the baseline maps (half model, as the thesis plots them).
   const char* fig[3] = {"fig_5_23_fe", "fig_5_24_fe", "fig_5_25_fe"};
   for (int k = 0; k < 3; ++k) {
@@ -215,6 +247,17 @@ FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
             {"title_text", "Our pressure map, " + fmt(kPins[k]) + " mm pin, back tension " +
                                fmt(in.back_tension(kPins[k])) + " N"}});
   }
+}
+
+}  // namespace
+
+FeMaps run_fe_maps(Chapter& c, const Inputs& in, const FeOptions& o) {
+  const SpecFor spec_for = map_conditions(c, in, o);
+  FeMaps m = run_maps(c, o, spec_for);
+  const double cpu = run_table(c, in, m);
+  bending_figures(c, in, m);
+  map_values(c, o, m, spec_for, cpu);
+  map_figures(c, in, m);
   return m;
 }
 

@@ -52,20 +52,39 @@ double max_abs(const std::vector<double>& x) {
   return s;
 }
 
-}  // namespace
+/// The diluted lines' changes: ours - Table 5.16 and each source's from our baseline.
+struct Changes {
+  std::vector<double> d0_thesis, d1_thesis;
+  std::map<std::string, std::vector<double>> d0, d1;
+};
 
-void map_sensitivity(Chapter& c, const Inputs& in, const FeMaps& m) {
-  const std::vector<double> pins{12.7, 25.4};
+/// One Table 5.16 line (Sec. 5.7.1 conditions).
+struct LineIn {
+  std::string dir;
+  double v, a0, a1;
+};
+
+/// The sources whose runs this tier made.
+std::vector<Source> sources_run(const FeMaps& m) {
   std::vector<Source> sources;
   for (const auto& s : kSources)
     if (m.has(s.variant, 12.7) && m.has(s.variant, 25.4)) sources.push_back(s);
+  return sources;
+}
+
+/// The tables sensitivity_a0 and sensitivity_a1.
+Changes sensitivity_tables(Chapter& c, const Inputs& in, const FeMaps& m, const std::vector<double>& pins,
+                           const std::vector<Source>& sources) {
+  Changes ch;
   std::vector<std::string> head{"direction", "speed_mm_s", "ours_minus_T5.16"};
   for (const auto& s : sources) head.push_back(s.key);
   auto t0 = c.table(head, "sensitivity of a0: ours - Table 5.16, and each source's change from our baseline "
                           "(variant - baseline; dimensionless)");
   auto t1 = c.table(head, "sensitivity of a1 [1/MPa]: ours - Table 5.16, and each source's change from our baseline");
-  std::vector<double> d0_thesis, d1_thesis;
-  std::map<std::string, std::vector<double>> d0, d1;
+  std::vector<double>& d0_thesis = ch.d0_thesis;
+  std::vector<double>& d1_thesis = ch.d1_thesis;
+  std::map<std::string, std::vector<double>>& d0 = ch.d0;
+  std::map<std::string, std::vector<double>>& d1 = ch.d1;
   for (const char* dir : kDirs)
     for (double v : kSpeeds) {
       const Polynomial base = identify(in, m, "base", CDef::printed, dir, v, pins, 1, false).mu;
@@ -88,7 +107,15 @@ void map_sensitivity(Chapter& c, const Inputs& in, const FeMaps& m) {
     }
   c.save(t0, "sensitivity_a0");
   c.save(t1, "sensitivity_a1");
+  return ch;
+}
 
+/// The table sensitivity_summary and its values.
+void sensitivity_summary(Chapter& c, const std::vector<Source>& sources, const Changes& ch) {
+  const std::vector<double>& d0_thesis = ch.d0_thesis;
+  const std::vector<double>& d1_thesis = ch.d1_thesis;
+  const std::map<std::string, std::vector<double>>& d0 = ch.d0;
+  const std::map<std::string, std::vector<double>>& d1 = ch.d1;
   auto sum = c.table({"source", "rms_da0", "max_abs_da0", "rms_da1_per_MPa", "max_abs_da1_per_MPa"},
                      "sensitivity summary over the 12 diluted lines (RD, TD x 3 speeds): RMS and largest change");
   auto add = [&](const std::string& key, const std::string& label, const std::vector<double>& a,
@@ -100,25 +127,30 @@ void map_sensitivity(Chapter& c, const Inputs& in, const FeMaps& m) {
     c.value("sens_max_a1_" + key, fmt_fixed(max_abs(b), 5), "1/MPa");
   };
   add("thesis", "ours - Table 5.16", d0_thesis, d1_thesis);
-  for (const auto& s : sources) add(s.key, s.label, d0[s.key], d1[s.key]);
+  for (const auto& s : sources) add(s.key, s.label, d0.at(s.key), d1.at(s.key));
   for (const auto& s : kSources)  // sources whose runs this tier did not make: "not run" in the page's table
     if (std::none_of(sources.begin(), sources.end(), [&](const Source& x) { return x.key == s.key; }))
       for (const char* q : {"sens_rms_a0_", "sens_rms_a1_", "sens_max_a0_", "sens_max_a1_"}) c.value(q + s.key, "not run");
   c.save(sum, "sensitivity_summary");
+}
 
-  // Map moments implied by Table 5.16 (the thesis's maps are not printed).
-  // Rows: the 6 lines; for pin j, F_j = c_j a0 S1_j + c_j^2 a1 S2_j.
-  struct LineIn {
-    std::string dir;
-    double v, a0, a1;
-  };
+/// Table 5.16's lines.
+std::vector<LineIn> thesis_lines(const Inputs& in) {
   std::vector<LineIn> lines;
   for (const char* dir : kDirs)
     for (double v : kSpeeds)
       for (const auto& l : in.lines)
         if (l.direction == dir && study::same(l.speed_mm_s, v)) lines.push_back({dir, v, l.a0.value, l.a1.value});
-  // Least-squares (S1, S2) of one pin from the lines, leaving out line `skip` (-1: none).
-  auto implied = [&](double pin, int skip) {
+  return lines;
+}
+
+/// Least-squares (S1, S2) of one pin from the lines, leaving out line `skip` (-1: none).
+struct Implied {
+  const Inputs& in;
+  const FeMaps& m;
+  const std::vector<LineIn>& lines;
+
+  std::pair<Eigen::Vector2d, double> operator()(double pin, int skip) const {
     Eigen::MatrixXd A(lines.size() - (skip >= 0), 2);
     Eigen::VectorXd F(A.rows());
     int i = 0;
@@ -132,7 +164,11 @@ void map_sensitivity(Chapter& c, const Inputs& in, const FeMaps& m) {
     }
     const Eigen::Vector2d S = A.colPivHouseholderQr().solve(F);
     return std::make_pair(S, std::sqrt((A * S - F).squaredNorm() / A.rows()));
-  };
+  }
+};
+
+/// The table implied_map_moments.
+void implied_moments(Chapter& c, const FeMaps& m, const std::vector<double>& pins, const Implied& implied) {
   auto mo = c.table({"pin_mm", "S1_implied_N", "S1_ours_N", "pbar_implied_MPa", "pbar_ours_MPa", "rms_residual_N"},
                     "map moments implied by Table 5.16 with Tables 5.14/5.15 (least squares over its six lines; "
                     "full strip, N; pbar = S2/S1, MPa) and ours");
@@ -149,6 +185,11 @@ void map_sensitivity(Chapter& c, const Inputs& in, const FeMaps& m) {
     c.value("implied_res_d" + fmt(pin), fmt_fixed(res, 1), "N");
   }
   c.save(mo, "implied_map_moments");
+}
+
+/// The table table_5_16_leave_one_out.
+void leave_one_out(Chapter& c, const Inputs& in, const FeMaps& m, const std::vector<double>& pins,
+                   const std::vector<LineIn>& lines, const Implied& implied) {
   // Each line from the maps that the other five lines imply (leave one out):
   // what the thesis's own maps give for that line, if the table is consistent.
   auto loo = c.table({"direction", "speed_mm_s", "a0_T5.16", "a0_from_other_lines", "a0_ours", "a1_T5.16_per_MPa",
@@ -174,6 +215,21 @@ void map_sensitivity(Chapter& c, const Inputs& in, const FeMaps& m) {
     c.value("loo_a1_" + key, fmt_fixed(a(1), 5), "1/MPa");
   }
   c.save(loo, "table_5_16_leave_one_out");
+}
+
+}  // namespace
+
+void map_sensitivity(Chapter& c, const Inputs& in, const FeMaps& m) {
+  const std::vector<double> pins{12.7, 25.4};
+  const std::vector<Source> sources = sources_run(m);
+  const Changes ch = sensitivity_tables(c, in, m, pins, sources);
+  sensitivity_summary(c, sources, ch);
+  // Map moments implied by Table 5.16 (the thesis's maps are not printed).
+  // Rows: the 6 lines; for pin j, F_j = c_j a0 S1_j + c_j^2 a1 S2_j.
+  const std::vector<LineIn> lines = thesis_lines(in);
+  const Implied implied{in, m, lines};
+  implied_moments(c, m, pins, implied);
+  leave_one_out(c, in, m, pins, lines, implied);
 }
 
 }  // namespace ch5

@@ -108,9 +108,9 @@ void save_blind(Chapter& c, const Inputs& in, const std::vector<modelloop::FbPoi
   (void)in;
 }
 
-}  // namespace
-
-modelloop::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg, const BeamTrace& trace) {
+/// Step 2b: the tier's candidates and the leave-one-pin-out loop on the FE.
+modelloop::BlindLoopResult run_blind_loop(Chapter& c, const Inputs& in, const Config& cfg, const BeamTrace& trace,
+                                          const std::vector<modelloop::FbPoint>& pts) {
   const std::string data_dir = c.data("");
   std::string list = cfg.candidates;
   // The tier's list.  First the Armstrong-Frederick back stress that beam
@@ -151,11 +151,11 @@ modelloop::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, cons
   lc.run_root = c.out("runs");
   lc.reuse = cfg.reuse_runs != 0;
   lc.runs_from = cfg.run_folders();
-  const auto pts = reference_points(in);
-  const modelloop::BlindLoopResult blind = modelloop::run_model_loop_blind(in.base, pts, candidates_for, lc);
-  const modelloop::ModelLoopResult& r = blind.in_sample;
-  save_blind(c, in, pts, blind);
+  return modelloop::run_model_loop_blind(in.base, pts, candidates_for, lc);
+}
 
+/// The table model_loop_steps.
+void save_steps(Chapter& c, const modelloop::ModelLoopResult& r) {
   // Steps: residual -> candidate -> decision.
   auto steps = c.table({"candidate", "what", "members_fit_rms_pct", "chosen", "fit_rms_pct", "heldout_rms_pct",
                         "heldout_max_pct", "decision"},
@@ -171,7 +171,11 @@ modelloop::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, cons
                fmt_fixed(100 * s.eval.held_rms, 1), fmt_fixed(100 * s.eval.held_max, 1), s.decision});
   }
   c.save(steps, "model_loop_steps");
+}
 
+/// Before/after per pin, the figure's table and the in-sample checks ch8.fb.insample.d*.
+void save_per_pin(Chapter& c, const Inputs& in, const BeamTrace& trace, const std::vector<modelloop::FbPoint>& pts,
+                  const modelloop::ModelLoopResult& r) {
   // Before/after per pin: measured, isotropic, each candidate's chosen member, final.
   std::vector<std::string> head = {"pin_mm", "R_over_t", "F_back_N", "role", "measured_N", "isotropic_N", "isotropic_err_pct"};
   for (const auto& s : r.steps) {
@@ -219,11 +223,28 @@ modelloop::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, cons
   c.save(tab, "fb_before_after");
   c.save(fig, "fb_figure");
   c.plot("model_loop_fb", "fb_per_pin", {{"datafile", c.out("tables/fb_figure.csv")}});
+}
+
+/// The loop's summary values.
+void loop_values(Chapter& c, const modelloop::BlindLoopResult& blind) {
+  const modelloop::ModelLoopResult& r = blind.in_sample;
   c.value("final_model", r.final_model.model);
   c.value("iso_held_rms", fmt_fixed(100 * r.baseline.held_rms, 1), "%");
   c.value("final_held_rms", fmt_fixed(100 * r.final_model.held_rms, 1), "%");
   c.value("loop_runs", std::to_string(blind.runs));
   c.value("loop_run_wall", fmt_fixed(blind.run_wall_s, 0), "s");
+}
+
+}  // namespace
+
+modelloop::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, const Config& cfg, const BeamTrace& trace) {
+  const auto pts = reference_points(in);
+  const modelloop::BlindLoopResult blind = run_blind_loop(c, in, cfg, trace, pts);
+  const modelloop::ModelLoopResult& r = blind.in_sample;
+  save_blind(c, in, pts, blind);
+  save_steps(c, r);
+  save_per_pin(c, in, trace, pts, r);
+  loop_values(c, blind);
   return r;
 }
 
