@@ -1,7 +1,6 @@
 // Validation chapter v1: the ESAFORM 2021 cup-drawing benchmark (AA6016-T4
 // earing; Habraken et al. 2022, doi 10.1007/s12289-022-01672-w).  A prediction
 // from the published inputs only: nothing here is fitted to the measured cup.
-//
 // Recipe (body(), one named step a line; the options are a Config):
 //   1.  read_variants: the material variants (data/benchmarks/esaform2021.csv)
 //       and the deck (data/cases/esaform2021_cup.toml: tools, blank, mu, E,
@@ -27,8 +26,7 @@
 //   chapter_v1_earing_benchmark --tier full --stroke 50 --cycles 150000 --ring 30
 //       (the full tier: the cups drawn out)
 //   chapter_v1_earing_benchmark --variants yld2004 --gap 1.25 --holder-force -1
-//       (a diagnostic run of results.md: one variant, a rigid holder at a wider
-//       gap; its tables only)
+//       (diagnostic, results.md: one variant, rigid holder, wider gap; tables only)
 #include <algorithm>
 #include <array>
 #include <chrono>
