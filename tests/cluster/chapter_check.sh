@@ -8,9 +8,12 @@
 # configuration lines that name the output folder and the executor, and the
 # values that are wall times (*_wall: db_wall, chapter_wall, runs_wall).
 # Exit 77 (skipped) when Slurm cannot be started (not root, no packages).
-#   chapter_check.sh CHAPTER_EXE DRAWBEND LOCAL_OUT OUT [slurm|command]
+#   chapter_check.sh CHAPTER_EXE DRAWBEND LOCAL_OUT OUT [slurm|command] [CHAPTER_ARGS...]
+# CHAPTER_ARGS (for example --tier full --full-study true) go to the chapter
+# as given; the local run in LOCAL_OUT must have had the same ones.
 set -u
 exe=$1 drawbend=$2 local_out=$3 out=$4 executor=${5:-slurm}
+shift $(( $# < 5 ? $# : 5 ))
 here=$(cd "$(dirname "$0")" && pwd)
 fail() { echo "FAIL: $*"; exit 1; }
 [ -s "$local_out/checks.csv" ] || fail "no local run of the chapter in $local_out"
@@ -26,7 +29,7 @@ case $executor in
 esac
 rm -rf "$out"
 t0=$(date +%s)
-DRAWBEND_BIN=$drawbend OMP_WAIT_POLICY=PASSIVE "$exe" --out "$out" --executor "$executor" > "$out.log" 2>&1 ||
+DRAWBEND_BIN=$drawbend OMP_WAIT_POLICY=PASSIVE "$exe" --out "$out" --executor "$executor" "$@" > "$out.log" 2>&1 ||
   { tail -30 "$out.log"; fail "the chapter through ${executor%%:*}"; }
 n=0
 for f in "$local_out"/checks.csv "$local_out"/values.csv "$local_out"/tables/*; do
