@@ -213,16 +213,31 @@ std::vector<double> pins_of(const std::vector<FbPoint>& points) {
   return pins;
 }
 
+/// Progress bound of one loop: the baseline, then per candidate its members on
+/// the fit pin and the chosen one on the other pins (a deck asked for twice runs once).
+std::size_t planned_runs(const std::vector<FbPoint>& points, const std::vector<ModelCandidate>& candidates,
+                         double fit_pin) {
+  std::size_t planned = points.size(), on_fit = 0;
+  for (const auto& p : points) on_fit += same_pin(p.pin_mm, fit_pin);
+  for (const auto& c : candidates) planned += c.members.size() * on_fit + (points.size() - on_fit);
+  return planned;
+}
+
+/// The fit pin of the fold that leaves `left` out: the remaining pin nearest the
+/// loop's fit pin (the fit pin itself when it remains).
+double fold_fit_pin(const std::vector<double>& pins, double left, double fit_pin) {
+  double f = same_pin(pins.front(), left) ? pins[1] : pins.front();
+  for (double d : pins)
+    if (!same_pin(d, left) && std::abs(d - fit_pin) < std::abs(f - fit_pin)) f = d;
+  return f;
+}
+
 }  // namespace
 
 ModelLoopResult run_model_loop(const DrawBendSpec& base, const std::vector<FbPoint>& points,
                                const std::vector<ModelCandidate>& candidates, const ModelLoopConfig& cfg) {
   Runner run(cfg);
-  // Progress: baseline, then per candidate its members on the fit pin and the chosen one held out.
-  std::size_t planned = points.size(), on_fit = 0;
-  for (const auto& p : points) on_fit += same_pin(p.pin_mm, cfg.fit_pin);
-  for (const auto& c : candidates) planned += c.members.size() * on_fit + (points.size() - on_fit);
-  run.set_planned(static_cast<int>(planned));
+  run.set_planned(static_cast<int>(planned_runs(points, candidates, cfg.fit_pin)));
   ModelLoopResult out = loop_on(run, base, points, candidates, cfg.fit_pin, cfg.min_gain, true);
   out.runs = run.runs();
   out.run_wall_s = run.wall();
@@ -236,6 +251,16 @@ BlindLoopResult run_model_loop_blind(const DrawBendSpec& base, const std::vector
     throw InputError("model loop: the leave-one-pin-out split needs measured points on at least 3 pins (one to "
                      "fit, one to choose, one left out), found " + std::to_string(pins.size()));
   Runner run(cfg);
+  // Progress bound: the in-sample loop, then per fold its loop and the left-out pin's two models.
+  std::size_t planned = planned_runs(points, candidates_for(cfg.fit_pin), cfg.fit_pin);
+  for (double left : pins) {
+    std::vector<FbPoint> seen;
+    for (const auto& p : points)
+      if (!same_pin(p.pin_mm, left)) seen.push_back(p);
+    const double fit = fold_fit_pin(pins, left, cfg.fit_pin);
+    planned += planned_runs(seen, candidates_for(fit), fit) + 2 * (points.size() - seen.size());
+  }
+  run.set_planned(static_cast<int>(planned));
   BlindLoopResult out;
   out.in_sample = loop_on(run, base, points, candidates_for(cfg.fit_pin), cfg.fit_pin,
                           cfg.min_gain, true);
@@ -246,9 +271,7 @@ BlindLoopResult run_model_loop_blind(const DrawBendSpec& base, const std::vector
     for (const auto& p : points) (same_pin(p.pin_mm, left) ? unseen : seen).push_back(p);
     // The fold's fit pin: the remaining pin nearest the loop's fit pin (the
     // fit pin itself when it remains); every other remaining pin chooses.
-    f.fit_pin_mm = pins.front() == left ? pins[1] : pins.front();
-    for (double d : pins)
-      if (!same_pin(d, left) && std::abs(d - cfg.fit_pin) < std::abs(f.fit_pin_mm - cfg.fit_pin)) f.fit_pin_mm = d;
+    f.fit_pin_mm = fold_fit_pin(pins, left, cfg.fit_pin);
     for (double d : pins)
       if (!same_pin(d, left) && !same_pin(d, f.fit_pin_mm)) f.select_pins.push_back(d);
     std::cout << "model loop, fold without the " << fmt(left) << " mm pin: fit on " << fmt(f.fit_pin_mm) << " mm\n"
