@@ -7,7 +7,9 @@
 #  - its Links column names the drawbend libraries of the library's
 #    target_link_libraries line, each of them is included by one of its
 #    sources, and every folder its sources include belongs to a library it
-#    reaches through its links.
+#    reaches through its links;
+#  - the README, the users' front door, stays under 8 kB (8,000 bytes): the
+#    developers' guide's limit; diaries belong in docs/performance-log.md.
 # Usage: check_layout.sh SOURCE_DIR.  Exit 1 with one line per mismatch.
 src=${1:?usage: check_layout.sh SOURCE_DIR}
 cd "$src" || exit 2
@@ -19,6 +21,8 @@ if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
 else
   folders=$( (ls -d */ | grep -v '^build'; ls -d src/*/) | sed 's|/$||')
 fi
+size=$(wc -c < README.md)
+[ "$size" -lt 8000 ] || { echo "README.md: $size bytes, the front door's limit is 8,000"; bad=1; }
 rows=$(sed -n '/^## Layout/,/^## /p' README.md | grep -o '^| `[^`]*/`' | sed 's/^| `//; s|/`$||')
 for f in $folders; do
   printf '%s\n' "$rows" | grep -qx "$f" || { echo "README.md: Layout: no row for folder '$f/'"; bad=1; }
