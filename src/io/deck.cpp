@@ -18,6 +18,7 @@
 #include "io/deck_limits.hpp"
 #include "io/deck_material.hpp"
 #include "io/deck_sections.hpp"
+#include "io/material_spec.hpp"
 #include "core/toml_read.hpp"
 
 namespace drawbend::io {
@@ -257,7 +258,7 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
       mesh_ok = check_memory(c, mt, "mesh", m.mesh.num_nodes(), m.mesh.num_elements(), d.limits);
     }
   });
-  problems.attempt([&] { m.material = make_material(c, *c.table(root, "material", "deck", true), dir); });
+  problems.attempt([&] { m.material = make_material(c, *c.table(root, "material", "deck", true), dir, &d.cost.material); });
   problems.attempt([&] {
     if (const auto* t = c.table(root, "numerics", "deck", false)) read_numerics(c, *t, d);
   });
@@ -285,7 +286,7 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
     problems.attempt([&] { check_reduction(d.output.reduce, m); });
   if (problems.empty()) {
     problems.attempt([&] { check_cost(c, root, d); });
-    material_warnings(c, root, d);
+    if (const auto* mt = root.get_as<toml::table>("material")) material_warnings(c, *mt, d.warnings);
     mesh_warnings(c, root, d);
   }
   problems.throw_if_any();

@@ -1,7 +1,8 @@
 #pragma once
-// Deck sections that build objects behind interfaces: the material and the
-// friction law.  Kept apart from deck.cpp so that new materials and laws are
-// added here only.
+// Deck sections that build objects behind interfaces: the friction law, and
+// the quarter disk's mesh.  Kept apart from deck.cpp so that new laws are
+// added here only.  The material is read and built by io/material_spec.hpp,
+// the one place that knows the [material] keys.
 #include <memory>
 #include <string>
 
@@ -10,15 +11,8 @@
 #include "fe/mesh.hpp"
 #include "friction/friction_law.hpp"
 #include "io/deck_context.hpp"
-#include "material/material.hpp"
 
 namespace drawbend::io {
-
-/// [material] (keys and checks: io/material_spec.hpp): read as a MaterialSpec,
-/// then built.  Value problems are recorded in c's collector; returns nullptr
-/// if the material could not be built.
-std::shared_ptr<const material::Material> make_material(const DeckContext& c, const toml::table& t,
-                                                        const std::string& deck_dir);
 
 /// friction = { law = "coulomb", mu = 0.1 }, or
 /// friction = { law = "stribeck", table = "table_3_1.csv" | mu_BL, mu_EHL, L_BL, L_EHL, Ra_um, eta_Pa_s,
