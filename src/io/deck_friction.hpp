@@ -1,14 +1,13 @@
 #pragma once
-// Deck sections that build objects behind interfaces: the friction law, and
-// the quarter disk's mesh.  Kept apart from deck.cpp so that new laws are
-// added here only.  The material is read and built by io/material_spec.hpp,
-// the one place that knows the [material] keys.
+// A contact's friction law from its deck table (a deck's [[contact]]
+// friction, a builder's --friction checked on its own): kept apart from
+// deck.cpp so that a new law is added here only.  The material is read and
+// built by io/material_spec.hpp, the one place that knows the [material] keys.
 #include <memory>
 #include <string>
 
 #include <toml++/toml.h>
 
-#include "fe/mesh.hpp"
 #include "friction/friction_law.hpp"
 #include "io/deck_context.hpp"
 
@@ -25,10 +24,5 @@ namespace drawbend::io {
 std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const toml::table& t,
                                                      const std::string& deck_dir,
                                                      const std::string& w = "contact.friction");
-
-/// [mesh] kind = "quarter_disk": radius, thickness [mm], core, ring, through
-/// (element counts), core_fraction (fe/disk.hpp).  Problems are recorded in
-/// c's collector; returns an empty mesh if it could not be built.
-fe::Mesh make_quarter_disk(const DeckContext& c, const toml::table& t);
 
 }  // namespace drawbend::io

@@ -1,9 +1,8 @@
-#include "io/deck_material.hpp"
+#include "io/deck_friction.hpp"
 
 #include <cmath>
 
 #include "core/csv.hpp"
-#include "fe/disk.hpp"
 #include "friction/stribeck_law.hpp"
 #include "friction/surface_law.hpp"
 
@@ -88,26 +87,6 @@ std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const
     return std::make_shared<friction::Stribeck>(p, interval);
   } catch (const std::invalid_argument& e) {
     c.fail(t, w, e.what());
-  }
-}
-
-fe::Mesh make_quarter_disk(const DeckContext& c, const toml::table& t) {
-  const std::size_t before = c.count();
-  c.allowed(t, "mesh", {"kind", "radius", "thickness", "core_fraction", "core", "ring", "through",
-                          "polar_radius"});
-  fe::QuarterDiskSpec s;
-  s.radius = c.positive(t, "radius", "mesh");
-  s.thickness = c.positive(t, "thickness", "mesh");
-  s.core_fraction = c.positive(t, "core_fraction", "mesh", s.core_fraction);
-  s.core = c.count_of(t, "core", "mesh", s.core, 1);
-  s.ring = c.count_of(t, "ring", "mesh", s.ring, 1);
-  s.through = c.count_of(t, "through", "mesh", s.through, 1);
-  if (t.contains("polar_radius")) s.polar_radius = c.positive(t, "polar_radius", "mesh");
-  if (c.count() > before) return {};
-  try {
-    return fe::quarter_disk(s);
-  } catch (const std::invalid_argument& e) {
-    c.fail(t, "mesh", e.what());
   }
 }
 
