@@ -35,8 +35,8 @@
 #include <map>
 
 #include "material/hill48.hpp"
+#include "io/material_spec.hpp"
 #include "material/yld2004_fit.hpp"
-#include "material/yld2004_plasticity.hpp"
 #include "sim/case_pool.hpp"
 #include "sim/executor.hpp"
 #include "study/run_health.hpp"
@@ -209,11 +209,11 @@ void calibrate_yld2004(study::Chapter& c, Variants& vs, const Config& cfg) {
   const material::FitWeights weights;
   const material::Yld2004Fit fit = material::fit_yld2004(tests, weights, 8.0);
   const material::Yld2004 postech =
-      material::load_yld2004_toml(c.data("materials/aa6016_t4_yld2004_postech2022.toml")).normalised();
+      io::load_yld2004_toml(c.data("materials/aa6016_t4_yld2004_postech2022.toml")).normalised();
   for (auto& v : vs.list)
     if (v.type == "yld2004") v.a = fit.raw.a, v.c1 = fit.raw.c1, v.c2 = fit.raw.c2;
   if (!cfg.yld_set.empty()) {  // diagnostic: another parameter set (as written; the solver normalises it)
-    const material::Yld2004 alt = material::load_yld2004_toml(cfg.yld_set);
+    const material::Yld2004 alt = io::load_yld2004_toml(cfg.yld_set);
     for (auto& v : vs.list)
       if (v.type == "yld2004") v.a = alt.a, v.c1 = alt.c1, v.c2 = alt.c2;
   }

@@ -63,7 +63,7 @@ io::CaseSpec case_of(const std::string& deck, const Variant& var, const RunSpec&
   if (!var.type.empty()) mat.type = type_of(var.type);
   if (spec.voce) {  // the published alternative 330.2 - 190 exp(-12.4 eps_p) (aa6016_t4_esaform2021.csv header)
     mat.curve = io::CurveVoce{330.2 - 190.0, 190.0, 12.4};
-    c.material_sections.insert("voce");
+    c.material_sections.insert(io::key_of(*mat.curve));
   }
   for (io::ToolSpec& t : c.tools) {
     if (t.name == "die" && spec.gap > 0) {  // shift the die by (gap - deck's gap): its face, shoulder and opening
@@ -99,11 +99,11 @@ io::CaseSpec case_of(const std::string& deck, const Variant& var, const RunSpec&
   if (var.type == "hill48") {
     if (var.r0 > 0) mat.surface = io::Hill48R{var.r0, var.r45, var.r90};
     else mat.surface = io::Hill48S{var.s45, var.s90, var.sb};
-    c.material_sections.insert("hill48");
+    c.material_sections.insert(io::key_of(mat.surface));
   }
   if (var.type == "yld2004") {
     mat.surface = io::Yld2004Surface{var.a, var.c1, var.c2};
-    c.material_sections.insert("yld2004");
+    c.material_sections.insert(io::key_of(mat.surface));
   }
   return c;
 }

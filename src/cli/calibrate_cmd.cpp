@@ -15,6 +15,7 @@
 #include "core/csv.hpp"
 #include "core/file_gate.hpp"
 #include "core/options.hpp"
+#include "io/material_spec.hpp"
 #include "material/yld2004_fit.hpp"
 
 namespace drawbend::cli {
@@ -68,7 +69,7 @@ int calibrate_command(int argc, char** argv) {
   // The published set is read before the fit (seconds): a bad --compare is an
   // input error at once, not after the work.
   material::Yld2004 published;
-  if (!compare.empty()) published = material::load_yld2004_toml(compare).normalised();
+  if (!compare.empty()) published = io::load_yld2004_toml(compare).normalised();
   const double r0 = t.r_value(0), r45 = t.r_value(45), r90 = t.r_value(90);
   const double s45 = t.uniaxial_stress(45), s90 = t.uniaxial_stress(90), sb = t.biaxial_stress();
   std::vector<material::Hill48> hills;

@@ -12,12 +12,14 @@
 #include "core/hash.hpp"
 #include "core/input_problems.hpp"
 #include "core/run_output.hpp"
+#include "fe/disk.hpp"
 #include "fe/strip.hpp"
 #include "io/case_reduction.hpp"
 #include "io/deck_context.hpp"
 #include "io/deck_limits.hpp"
-#include "io/deck_material.hpp"
+#include "io/deck_friction.hpp"
 #include "io/deck_sections.hpp"
+#include "io/material_spec.hpp"
 #include "core/toml_read.hpp"
 
 namespace drawbend::io {
@@ -102,6 +104,29 @@ std::vector<double> lines(const DeckContext& c, const toml::table& mesh, const s
   return v;
 }
 
+/// [mesh] kind = "quarter_disk": radius, thickness [mm], core, ring, through
+/// (element counts), core_fraction, polar_radius (fe/disk.hpp).  Problems are
+/// recorded in c's collector; returns an empty mesh if it could not be built.
+fe::Mesh make_quarter_disk(const DeckContext& c, const toml::table& t) {
+  const std::size_t before = c.count();
+  c.allowed(t, "mesh", {"kind", "radius", "thickness", "core_fraction", "core", "ring", "through",
+                          "polar_radius"});
+  fe::QuarterDiskSpec s;
+  s.radius = c.positive(t, "radius", "mesh");
+  s.thickness = c.positive(t, "thickness", "mesh");
+  s.core_fraction = c.positive(t, "core_fraction", "mesh", s.core_fraction);
+  s.core = c.count_of(t, "core", "mesh", s.core, 1);
+  s.ring = c.count_of(t, "ring", "mesh", s.ring, 1);
+  s.through = c.count_of(t, "through", "mesh", s.through, 1);
+  if (t.contains("polar_radius")) s.polar_radius = c.positive(t, "polar_radius", "mesh");
+  if (c.count() > before) return {};
+  try {
+    return fe::quarter_disk(s);
+  } catch (const std::invalid_argument& e) {
+    c.fail(t, "mesh", e.what());
+  }
+}
+
 /// The mesh, or nothing if a value problem (recorded) prevents building it.
 std::optional<fe::Mesh> read_mesh(const DeckContext& c, const toml::table& mesh, const RunLimits& lim) {
   const std::string kind = c.str(mesh, "kind", "mesh", std::string("block"));
@@ -118,7 +143,7 @@ std::optional<fe::Mesh> read_mesh(const DeckContext& c, const toml::table& mesh,
     return fe::structured_block(x, y, z);
   }
   if (kind == "quarter_disk") {
-    fe::Mesh disk = make_quarter_disk(c, mesh);  // deck_material.cpp
+    fe::Mesh disk = make_quarter_disk(c, mesh);
     if (disk.num_nodes() == 0) return std::nullopt;
     return disk;
   }
@@ -257,7 +282,7 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
       mesh_ok = check_memory(c, mt, "mesh", m.mesh.num_nodes(), m.mesh.num_elements(), d.limits);
     }
   });
-  problems.attempt([&] { m.material = make_material(c, *c.table(root, "material", "deck", true), dir); });
+  problems.attempt([&] { m.material = make_material(c, *c.table(root, "material", "deck", true), dir, &d.cost.material); });
   problems.attempt([&] {
     if (const auto* t = c.table(root, "numerics", "deck", false)) read_numerics(c, *t, d);
   });
@@ -285,7 +310,7 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
     problems.attempt([&] { check_reduction(d.output.reduce, m); });
   if (problems.empty()) {
     problems.attempt([&] { check_cost(c, root, d); });
-    material_warnings(c, root, d);
+    if (const auto* mt = root.get_as<toml::table>("material")) material_warnings(c, *mt, d.warnings);
     mesh_warnings(c, root, d);
   }
   problems.throw_if_any();

@@ -1,6 +1,7 @@
 #include "io/deck_context.hpp"
 
 #include <cmath>
+#include <filesystem>
 
 #include "core/file_gate.hpp"
 #include "core/csv.hpp"
@@ -219,6 +220,31 @@ const toml::array* DeckContext::array_of_tables(const toml::table& t, const std:
   for (const auto& e : *a)
     if (!e.is_table()) fail(e, what + "." + key, "expected an array of tables, found " + found(e));
   return a;
+}
+
+std::string deck_relative(const std::string& dir, const std::string& file) {
+  std::filesystem::path p(file);
+  if (p.is_relative()) p = std::filesystem::path(dir) / p;
+  return p.string();
+}
+
+bool readable_file(const std::string& path) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
+}
+
+std::string missing_file(const std::string& file, const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(deck_relative(dir, file), ec);
+  std::string what = "cannot open '" + file + "' for reading";
+  if (!ec && fs::exists(st) && !fs::is_regular_file(st))
+    what = "'" + file + "': expected a regular file, found " +
+           (fs::is_directory(st) ? "a folder" : fs::is_fifo(st) ? "a FIFO (named pipe)"
+            : fs::is_character_file(st) || fs::is_block_file(st) ? "a device" : "something else");
+  if (!fs::path(file).is_relative()) return what;
+  return what + " (relative paths are resolved against the deck's folder, " + (dir.empty() ? std::string(".") : dir) +
+         ")";
 }
 
 }  // namespace drawbend::io

@@ -67,4 +67,14 @@ class DeckContext {
   InputProblems& problems_;
 };
 
+/// A file a deck names: a relative path is taken from the deck's folder `dir`.
+std::string deck_relative(const std::string& dir, const std::string& file);
+/// Whether `path` is a regular file (not a folder, FIFO or device).
+bool readable_file(const std::string& path);
+/// "cannot open FILE" with the rule that found it (a relative path is the deck
+/// folder's), or what the path is when it is there but not a regular file (a
+/// folder, a FIFO, a device): the message for a file a deck names (a flow
+/// curve, a friction table).
+std::string missing_file(const std::string& file, const std::string& dir);
+
 }  // namespace drawbend::io

@@ -84,7 +84,6 @@ bool check_memory(const DeckContext& c, const toml::node& where, const std::stri
 void check_cost(const DeckContext& c, const toml::table& root, Deck& d) {
   const fe::Model& m = d.model;
   if (!m.material || m.mesh.num_elements() == 0) return;
-  d.cost.material = root["material"]["type"].value_or(std::string());  // read and checked with the material
   const fe::Mesh& mesh = m.mesh;
   const double c_wave = m.material->wave_speed();
   double dt_min = INFINITY, phys = 0, scaled = 0;
@@ -169,33 +168,6 @@ void check_cost(const DeckContext& c, const toml::table& root, Deck& d) {
           "the run would take about " + fmt(d.cost.cycles, 3) + " cycles (end time " + fmt(total, 4) +
               " s / stable step " + fmt(dt_min, 4) + " s), above [limits] max_cycles = " +
               fmt_shortest(d.limits.max_cycles) + " (raise it in [limits] if this is intended)");
-  }
-}
-
-void material_warnings(const DeckContext& c, const toml::table& root, Deck& d) {
-  // The range of real solids: a soft rubber (E ~ 1 MPa; 0.1 MPa leaves a
-  // margin) to diamond (1.05e6 MPa); aerogel (~1 kg/m^3 = 1e-12 t/mm^3) to
-  // osmium (22.6e3 kg/m^3 = 2.26e-8 t/mm^3).  Outside it a value is most
-  // likely in other units (GPa, kg/m^3).
-  struct Range {
-    const char* key;
-    double lo, hi;
-    const char* unit;
-    const char* why;
-  };
-  const Range ranges[] = {
-      {"E", 0.1, 1.2e6, "MPa", "a soft rubber to diamond"},
-      {"density", 1e-12, 2.3e-8, "t/mm^3", "an aerogel to osmium"},
-  };
-  for (const auto& r : ranges) {
-    const auto* n = at(root, "material", r.key);
-    if (!n) continue;
-    const auto v = n->value<double>();
-    if (!v || !(*v > 0) || !std::isfinite(*v)) continue;  // reported as an input error
-    if (*v < r.lo || *v > r.hi)
-      d.warnings.push_back(c.where(*n, std::string("material.") + r.key) + ": " + fmt_shortest(*v) + " " + r.unit +
-                           " is outside the range of real materials (" + fmt_shortest(r.lo) + " to " +
-                           fmt_shortest(r.hi) + " " + r.unit + ", " + r.why + "); check the units (mm, N, MPa, s, t/mm^3)");
   }
 }
 

@@ -31,9 +31,6 @@ bool check_memory(const DeckContext& c, const toml::node& where, const std::stri
 /// which reports it as a numerical fault naming the element.
 void check_cost(const DeckContext& c, const toml::table& root, Deck& d);
 
-/// Material values outside the range of real materials: warnings in d.warnings.
-void material_warnings(const DeckContext& c, const toml::table& root, Deck& d);
-
 /// One element through the thickness in a bending case (issue 53), a warning
 /// in d.warnings at the [mesh] line: the mesh is one layer thick (every
 /// element has two opposite faces on the mesh's surface, whatever the mesh

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/csv.hpp"
-#include "io/deck_material.hpp"
+#include "io/deck_friction.hpp"
 
 namespace drawbend::io {
 

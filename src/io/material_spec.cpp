@@ -9,6 +9,7 @@
 #include "core/quote.hpp"
 #include "core/csv.hpp"
 #include "core/input_problems.hpp"
+#include "core/toml_read.hpp"
 #include "material/combined_plasticity.hpp"
 #include "material/hill48.hpp"
 #include "material/yld2004_plasticity.hpp"
@@ -274,6 +275,19 @@ MaterialSpec from_toml(const DeckContext& c, const toml::table& t) {
   return m;
 }
 
+const char* key_of(const FlowCurve& f) {
+  if (std::holds_alternative<CurveLinear>(f)) return "yield";
+  if (std::holds_alternative<CurveVoce>(f)) return "voce";
+  if (std::holds_alternative<CurveSwift>(f)) return "swift";
+  return "hardening";
+}
+
+const char* key_of(const YieldSurface& s) {
+  if (std::holds_alternative<Hill48R>(s) || std::holds_alternative<Hill48S>(s)) return "hill48";
+  if (std::holds_alternative<Yld2004Surface>(s)) return "yld2004";
+  return "";
+}
+
 bool has_flow_curve(const toml::table& t) {
   for (const char* k : kFlowCurveKeys)
     if (t.contains(k)) return true;
@@ -342,6 +356,96 @@ std::shared_ptr<const material::Material> make_material(const MaterialSpec& m, c
     return std::make_shared<material::Yld2004Plasticity>(m.E, m.nu, m.density, std::move(curve), kin, yf);
   }
   return std::make_shared<material::CombinedPlasticity>(m.E, m.nu, m.density, std::move(curve), kin, make_hill(m.surface));
+}
+
+MaterialSpec read_partial_material(toml::table& t, const std::string& default_curve,
+                                   const std::optional<std::string>& curve_dir, const std::string& where) {
+  if (auto* h = t.get_as<std::string>("hardening"); h && curve_dir && std::filesystem::path(h->get()).is_relative())
+    *h = std::filesystem::absolute(std::filesystem::path(*curve_dir) / h->get()).lexically_normal().string();
+  const MaterialSpec d;
+  if (!t.contains("type")) t.insert("type", type_name(d.type));
+  if (!t.contains("E")) t.insert("E", d.E);
+  if (!t.contains("nu")) t.insert("nu", d.nu);
+  if (!t.contains("density")) t.insert("density", d.density);
+  const std::string type = t["type"].value_or(std::string());
+  if (type != type_name(MaterialType::elastic) && !has_flow_curve(t)) t.insert("hardening", default_curve);
+  return read_material(t, where);
+}
+
+std::shared_ptr<const material::Material> make_material(const DeckContext& c, const toml::table& t,
+                                                        const std::string& dir, std::string* type) {
+  const std::size_t before = c.count();
+  const MaterialSpec spec = from_toml(c, t);
+  if (c.count() > before) return nullptr;
+  if (type) *type = type_name(spec.type);
+  if (const auto* f = spec.curve ? std::get_if<CurveFile>(&*spec.curve) : nullptr;
+      f && !readable_file(deck_relative(dir, f->path))) {  // a missing file is named with the deck line that asked for it
+    c.bad(*t.get("hardening"), "material.hardening", missing_file(f->path, dir));
+    return nullptr;
+  }
+  try {
+    try {
+      return make_material(spec, dir);
+    } catch (const std::invalid_argument& e) {
+      if (spec.type == MaterialType::yld2004 && t.get("yld2004"))  // the yield function's own checks (convexity)
+        c.fail(*t.get("yld2004"), "material.yld2004", e.what());
+      throw;
+    }
+  } catch (const std::invalid_argument& e) {
+    c.fail(t, "material", e.what());
+  }
+}
+
+void material_warnings(const DeckContext& c, const toml::table& t, std::vector<std::string>& warnings) {
+  // The range of real solids: a soft rubber (E ~ 1 MPa; 0.1 MPa leaves a
+  // margin) to diamond (1.05e6 MPa); aerogel (~1 kg/m^3 = 1e-12 t/mm^3) to
+  // osmium (22.6e3 kg/m^3 = 2.26e-8 t/mm^3).  Outside it a value is most
+  // likely in other units (GPa, kg/m^3).
+  struct Range {
+    const char* key;
+    double lo, hi;
+    const char* unit;
+    const char* why;
+  };
+  const Range ranges[] = {
+      {"E", 0.1, 1.2e6, "MPa", "a soft rubber to diamond"},
+      {"density", 1e-12, 2.3e-8, "t/mm^3", "an aerogel to osmium"},
+  };
+  for (const auto& r : ranges) {
+    const toml::node* n = t.get(r.key);
+    if (!n) continue;
+    const auto v = n->value<double>();
+    if (!v || !(*v > 0) || !std::isfinite(*v)) continue;  // reported as an input error
+    if (*v < r.lo || *v > r.hi)
+      warnings.push_back(c.where(*n, std::string("material.") + r.key) + ": " + fmt_shortest(*v) + " " + r.unit +
+                         " is outside the range of real materials (" + fmt_shortest(r.lo) + " to " +
+                         fmt_shortest(r.hi) + " " + r.unit + ", " + r.why + "); check the units (mm, N, MPa, s, t/mm^3)");
+  }
+}
+
+material::Yld2004 load_yld2004_toml(const std::string& path) {
+  const toml::table root = parse_toml_file(path);
+  // A material file ([material] yld2004 = {...}, as `drawbend calibrate` writes it) or a published
+  // yield-function set alone (yld2004 = {...} at the top: no elasticity or flow curve, so no material).
+  const bool in_material = root["material"]["yld2004"].as_table() != nullptr;
+  const auto* y = in_material ? root["material"]["yld2004"].as_table() : root["yld2004"].as_table();
+  if (!y)
+    throw InputError(path + ": expected yld2004 = { a, c1 = [9 numbers], c2 = [9 numbers] }, at the top or in [material]");
+  const std::string at = path + ":" + std::to_string(y->source().begin.line) + (in_material ? ": material.yld2004" : ": yld2004");
+  material::Yld2004 out;
+  out.a = (*y)["a"].value_or(NAN);
+  for (const char* key : {"c1", "c2"}) {
+    const auto* arr = (*y)[key].as_array();
+    if (!arr || arr->size() != 9)
+      throw InputError(at + "." + key + ": expected 9 numbers c12, c13, c21, c23, c31, c32, c44, c55, c66");
+    for (std::size_t i = 0; i < 9; ++i) (key[1] == '1' ? out.c1 : out.c2)[i] = (*arr)[i].value_or(NAN);
+  }
+  try {
+    out.validate();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(at + ": " + e.what());
+  }
+  return out;
 }
 
 }  // namespace drawbend::io

@@ -1,11 +1,12 @@
 #pragma once
 // The [material] section of a case as a typed value: one reader (from_toml,
-// with file:line: key messages) and one writer (to_toml).  Every place that
-// knows the [material] keys goes through here: the deck reader
-// (io/deck_material.cpp builds the Material from the spec), the builders'
-// `--material` choice (sim/material_choice.cpp) and the model-level loop's
+// with file:line: key messages) and one writer (to_toml); this file and
+// material_spec.cpp are the one place that knows the [material] keys.  The
+// deck reader (io/deck.cpp: make_material and material_warnings on the
+// deck's table), the builders' `--material` choice (sim/material_choice.cpp:
+// read_partial_material fills in the defaults) and the model-level loop's
 // candidates (modelloop/material_edits.hpp: they set fields of the typed
-// value and write it back with to_toml_inline, naming no key).
+// value and write it back with to_toml_inline) go through here, naming no key.
 //
 // [material]: type = "elastic" | "j2" | "j2_combined" | "hill48" | "yld2004"; E [MPa], nu,
 // density [t/mm^3]; the plastic types take one flow curve:
@@ -40,6 +41,7 @@
 #include "io/deck_context.hpp"
 #include "material/hardening_curve.hpp"
 #include "material/material.hpp"
+#include "material/yld2004.hpp"
 
 namespace drawbend::io {
 
@@ -135,6 +137,14 @@ MaterialSpec from_toml(const DeckContext& c, const toml::table& t);
 /// InputError listing every problem.
 MaterialSpec read_material(const toml::table& t, const std::string& where);
 
+/// A partial [material] table t (a builder's --material) read as a spec: a flow-curve
+/// file named in t is first made absolute from `curve_dir` when one is given (a
+/// material file's folder); then the keys t lacks are inserted into it: type "j2",
+/// E, nu and density of MaterialSpec{} and, for a plastic type without a flow
+/// curve, hardening = default_curve.  `where` names t in messages (read_material).
+MaterialSpec read_partial_material(toml::table& t, const std::string& default_curve,
+                                   const std::optional<std::string>& curve_dir, const std::string& where);
+
 /// The keys that choose a flow curve (the five forms above), for code that
 /// completes a partial [material] table (sim::material_choice) without
 /// listing them again.
@@ -142,12 +152,25 @@ inline constexpr const char* kFlowCurveKeys[] = {"hardening", "yield", "tangent"
 /// Whether t names a flow curve (one of kFlowCurveKeys).
 bool has_flow_curve(const toml::table& t);
 
+/// The key a flow curve is written under: "hardening" (a file or an inline
+/// table), "yield", "voce" or "swift"; and a yield surface's: "hill48",
+/// "yld2004" ("" for von Mises).  For layout (CaseSpec::material_sections)
+/// without naming a key.
+const char* key_of(const FlowCurve& f);
+const char* key_of(const YieldSurface& s);
+
 /// "[material]\n" and one line per key, in the fixed order above.
 std::string to_toml(const MaterialSpec& m);
 /// The same keys as one TOML inline table, "{ type = ..., E = ..., ... }" (to_toml's
 /// lines joined): a material carried as text in a builder's spec
 /// (sim::DrawBendSpec::material), as the model loop's candidates write it.
 std::string to_toml_inline(const MaterialSpec& m);
+
+/// A Yld2004-18p parameter set from a TOML file with [material] yld2004 = { a, c1 = [9], c2 = [9] }
+/// (as `drawbend calibrate` writes it) or yld2004 = {...} at the top (a published set alone), as
+/// written, not normalised; InputError naming file:line: key when it is missing, malformed or
+/// refused by Yld2004::validate().
+material::Yld2004 load_yld2004_toml(const std::string& path);
 
 /// The flow curve's table; `dir` resolves a relative CurveFile path ("" for
 /// as written).  Throws InputError for an unreadable or bad table file.
@@ -157,5 +180,17 @@ material::HardeningCurve make_flow_curve(const FlowCurve& f, const std::string& 
 /// Throws InputError (a bad table file) or std::invalid_argument (constants
 /// the model refuses).
 std::shared_ptr<const material::Material> make_material(const MaterialSpec& m, const std::string& dir);
+
+/// The deck reader's [material] t: from_toml, a flow-curve file that is not a
+/// readable file named at its line, then the Material (the model's refusals
+/// as problems at the table, or at yld2004 for its convexity).  Problems are
+/// recorded in c's collector; returns nullptr if the material could not be built.
+/// `type` (when given) receives the type's name ("j2", ...) once the table is read.
+std::shared_ptr<const material::Material> make_material(const DeckContext& c, const toml::table& t,
+                                                        const std::string& deck_dir, std::string* type = nullptr);
+
+/// Values of [material] t outside the range of real materials (most likely
+/// other units): one warning each in `warnings` (file:line: material.KEY: ...).
+void material_warnings(const DeckContext& c, const toml::table& t, std::vector<std::string>& warnings);
 
 }  // namespace drawbend::io

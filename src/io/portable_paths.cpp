@@ -13,7 +13,7 @@
 #include "core/input_problems.hpp"
 #include "core/toml_read.hpp"
 #include "io/deck_context.hpp"
-#include "io/deck_material.hpp"
+#include "io/deck_friction.hpp"
 
 namespace drawbend::io {
 
@@ -72,7 +72,7 @@ std::string inline_text(const toml::table& t) { return value_text(t); }
 
 namespace {
 /// The law checked on its own, as the deck reader checks [contact.friction]
-/// (io/deck_material.hpp), so that a problem names where the user wrote it
+/// (io/deck_friction.hpp), so that a problem names where the user wrote it
 /// ("--friction:1: friction.mu", or friction_model.toml:7: friction.p_max; a
 /// nodes file's own file:line) and not a line of the deck built from it.
 void check_friction(const toml::table& t, const std::string& where, const std::string& dir) {

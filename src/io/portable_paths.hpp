@@ -4,7 +4,7 @@
 //
 // Input files named in a deck: [material] hardening, a friction table's
 // `nodes` / `lines` (surface law) and `table` (Stribeck law).  The deck reader
-// resolves a relative one against the deck's folder (io/deck_material.cpp)
+// resolves a relative one against the deck's folder (io/deck_friction.cpp)
 // and names the deck line when it cannot read it.
 //
 //  - friction_argument: a builder's --friction is either a TOML inline table

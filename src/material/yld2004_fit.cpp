@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "core/csv.hpp"
-#include "core/toml_read.hpp"
 #include "material/yield_points.hpp"
 
 namespace drawbend::material {
@@ -237,31 +236,6 @@ double predict(const Yld2004& y, const SheetDatum& d) { return predict_of(y, d);
 double predict(const Hill48& h, const SheetDatum& d) { return predict_of(HillFn{h}, d); }
 double rms_residual(const Yld2004& y, const SheetTests& t, SheetDatum::Kind k) { return rms_of(y, t, k); }
 double rms_residual(const Hill48& h, const SheetTests& t, SheetDatum::Kind k) { return rms_of(HillFn{h}, t, k); }
-
-Yld2004 load_yld2004_toml(const std::string& path) {
-  const toml::table root = parse_toml_file(path);
-  // A material file ([material] yld2004 = {...}, as `drawbend calibrate` writes it) or a published
-  // yield-function set alone (yld2004 = {...} at the top: no elasticity or flow curve, so no material).
-  const bool in_material = root["material"]["yld2004"].as_table() != nullptr;
-  const auto* y = in_material ? root["material"]["yld2004"].as_table() : root["yld2004"].as_table();
-  if (!y)
-    throw InputError(path + ": expected yld2004 = { a, c1 = [9 numbers], c2 = [9 numbers] }, at the top or in [material]");
-  const std::string at = path + ":" + std::to_string(y->source().begin.line) + (in_material ? ": material.yld2004" : ": yld2004");
-  Yld2004 out;
-  out.a = (*y)["a"].value_or(NAN);
-  for (const char* key : {"c1", "c2"}) {
-    const auto* arr = (*y)[key].as_array();
-    if (!arr || arr->size() != 9)
-      throw InputError(at + "." + key + ": expected 9 numbers c12, c13, c21, c23, c31, c32, c44, c55, c66");
-    for (std::size_t i = 0; i < 9; ++i) (key[1] == '1' ? out.c1 : out.c2)[i] = (*arr)[i].value_or(NAN);
-  }
-  try {
-    out.validate();
-  } catch (const std::invalid_argument& e) {
-    throw InputError(at + ": " + e.what());
-  }
-  return out;
-}
 
 double NamedYield::predict(const SheetDatum& d) const { return yld ? predict_of(*yld, d) : predict_of(HillFn{*hill}, d); }
 double NamedYield::rms(const SheetTests& t, SheetDatum::Kind k) const {

@@ -78,10 +78,6 @@ Yld2004Fit fit_yld2004(const SheetTests& tests, const FitWeights& w, double a = 
 double rms_residual(const Yld2004& y, const SheetTests& t, SheetDatum::Kind kind);
 double rms_residual(const Hill48& h, const SheetTests& t, SheetDatum::Kind kind);
 
-/// A parameter set from a TOML file with [material] yld2004 = { a, c1 = [9], c2 = [9] } (as written, not
-/// normalised); InputError naming file:line: key when it is missing, malformed or refused by validate().
-Yld2004 load_yld2004_toml(const std::string& path);
-
 /// One yield function of the calibration table: a Yld2004 or a Hill48 (exactly one set).
 struct NamedYield {
   std::string name;

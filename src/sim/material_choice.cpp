@@ -10,13 +10,7 @@
 namespace drawbend::sim {
 
 io::MaterialSpec material_choice(toml::table& m, const std::string& default_hardening, const std::string& where) {
-  if (!m.contains("type")) m.insert("type", "j2");
-  if (!m.contains("E")) m.insert("E", 70000.0);
-  if (!m.contains("nu")) m.insert("nu", 0.33);
-  if (!m.contains("density")) m.insert("density", 2.7e-9);
-  const std::string type = m["type"].value_or(std::string());
-  if (type != "elastic" && !io::has_flow_curve(m)) m.insert("hardening", default_hardening);
-  return io::read_material(m, where);
+  return io::read_partial_material(m, default_hardening, std::nullopt, where);
 }
 
 io::MaterialSpec material_choice(const std::string& material, const std::string& default_hardening) {
@@ -42,9 +36,9 @@ io::MaterialSpec material_choice(const std::string& material, const std::string&
     throw InputError("--material: expected a TOML inline table such as { type = \"j2_combined\", "
                      "kinematic = { beta = 0.5 } } or the path of a TOML file with a [material] table");
   // A flow-curve file named in a material file is that file's (relative to its folder).
-  if (auto* h = t->get_as<std::string>("hardening"); h && file && std::filesystem::path(h->get()).is_relative())
-    *h = std::filesystem::absolute(std::filesystem::path(material).parent_path() / h->get()).lexically_normal().string();
-  return material_choice(*t, default_hardening, file ? material : "--material");
+  const std::optional<std::string> dir =
+      file ? std::optional<std::string>(std::filesystem::path(material).parent_path().string()) : std::nullopt;
+  return io::read_partial_material(*t, default_hardening, dir, file ? material : "--material");
 }
 
 std::string material_section(const std::string& material, const std::string& default_hardening) {

@@ -1,4 +1,4 @@
-// The deck's material types and the sheet frame (io/deck_material.cpp, io/deck.cpp).
+// The deck's material types and the sheet frame (io/material_spec.cpp, io/deck.cpp).
 // Expected: valid j2_combined, hill48 and yld2004 decks build a CombinedPlasticity with the given
 // constants (Hill'48 returns r0/r45/r90; Voce at eps_p = 0 is sigma0); [sheet]
 // rolling_direction sets the model's RD (normalised); every non-physical value

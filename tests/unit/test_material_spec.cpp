@@ -17,12 +17,28 @@
 //    { type = "j2", yield = 150, tangent = 500 } carves the 150 MPa linear
 //    curve (its first stress 150 MPa at eps_p = 0, 650 - 30 (1 - exp(-100))
 //    at eps_p = 1), not the default RD table (99.71 MPa at eps_p = 0, which the
-//    code before this test carved: the test failed there with 99.71 != 150).
+//    code before this test carved: the test failed there with 99.71 != 150);
+//  - the keys io::key_of names (the layout of CaseSpec::material_sections) are
+//    the keys the writer writes the flow curve and the surface under;
+//  - io::load_yld2004_toml (drawbend calibrate --compare, Chapter v1) reads
+//    the same a, c1, c2 as the deck reader from the published set at the top
+//    and from a [material] table (the same text through the same parser:
+//    equal doubles).  KNOWN DEFECT, marked as 22 expected failures: the
+//    loader reads each coefficient with value_or(NAN), a float, so the 11
+//    coefficients of POSTECH's set that are not exact in float come out
+//    rounded to float (1.3329000473 for 1.3329), in both files.  The fix
+//    (value<double>()) changes calibrate --compare's and Chapter v1's
+//    published-set numbers in their last digits, so it is left to its own
+//    change; this test then passes without the marker;
+//  - a flow-curve file named in a material file is taken from that file's
+//    folder, and the builder's default curve (not the file's) stays as given.
 #define BOOST_TEST_MODULE material_spec
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include <toml++/toml.h>
@@ -126,4 +142,67 @@ BOOST_AUTO_TEST_CASE(model_loop_keeps_the_linear_curve) {
   BOOST_TEST(t->true_stress_MPa.front() == 150.0);
   BOOST_TEST(t->plastic_strain.back() == 1.0);
   BOOST_TEST(t->true_stress_MPa.back() == 650.0 - 30.0 * (1.0 - std::exp(-100.0)), boost::test_tools::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(key_of_names_the_written_keys) {
+  io::MaterialSpec m;
+  m.type = io::MaterialType::hill48;
+  const std::pair<io::FlowCurve, const char*> curves[] = {
+      {io::CurveFile{"c.csv"}, "hardening"}, {io::CurveTable{{0.0}, {100.0}}, "hardening"},
+      {io::CurveLinear{100.0, {}}, "yield"}, {io::CurveVoce{100.0, 50.0, 10.0}, "voce"},
+      {io::CurveSwift{400.0, 0.01, 0.2}, "swift"}};
+  for (const auto& [curve, key] : curves) {
+    m.curve = curve;
+    BOOST_TEST(std::string(io::key_of(curve)) == key);
+    BOOST_TEST(io::to_toml(m).find(std::string("\n") + key + " = ") != std::string::npos, key);
+  }
+  const std::pair<io::YieldSurface, const char*> surfaces[] = {
+      {io::Hill48R{0.7, 0.7, 0.9}, "hill48"}, {io::Hill48S{1.0, 1.0, 1.0}, "hill48"}, {io::Yld2004Surface{}, "yld2004"}};
+  for (const auto& [surface, key] : surfaces) {
+    m.surface = surface;
+    BOOST_TEST(std::string(io::key_of(surface)) == key);
+    BOOST_TEST(io::to_toml(m).find(std::string("\n") + key + " = ") != std::string::npos, key);
+  }
+  BOOST_TEST(std::string(io::key_of(io::YieldSurface(io::VonMises{}))).empty());
+}
+
+BOOST_AUTO_TEST_CASE(yld2004_file_reads_as_the_deck_does, *boost::unit_test::expected_failures(22)) {
+  const std::string published = kRepo + "/data/materials/aa6016_t4_yld2004_postech2022.toml";
+  const material::Yld2004 top = io::load_yld2004_toml(published);
+  const toml::table root = parse_toml_file(published);
+  const std::string line = [&] {
+    std::ostringstream o;
+    o << "yld2004 = " << *root["yld2004"].as_table() << "\n";
+    return o.str();
+  }();
+  const std::string dir = (fs::temp_directory_path() / "drawbend_test_material_spec").string();
+  fs::create_directories(dir);
+  const std::string file = dir + "/material.toml";
+  const std::string text = "[material]\ntype = \"yld2004\"\nE = 70000.0\nnu = 0.33\ndensity = 2.7e-9\nhardening = \"x.csv\"\n" + line;
+  std::ofstream(file) << text;
+  const material::Yld2004 in_material = io::load_yld2004_toml(file);
+  const io::MaterialSpec spec = io::read_material(*parse_toml(text, "t")["material"].as_table(), "t");
+  const auto& y = std::get<io::Yld2004Surface>(spec.surface);
+  for (const material::Yld2004& l : {top, in_material}) {
+    BOOST_TEST(l.a == y.a);
+    for (int i = 0; i < 9; ++i) {
+      BOOST_TEST(l.c1[i] == y.c1[i]);
+      BOOST_TEST(l.c2[i] == y.c2[i]);
+    }
+  }
+  fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(material_file_curve_is_its_folders) {
+  const fs::path dir = fs::temp_directory_path() / "drawbend_test_material_curve";
+  fs::create_directories(dir);
+  std::ofstream(dir / "with.toml") << "[material]\ntype = \"j2\"\nhardening = \"curve.csv\"\n";
+  std::ofstream(dir / "without.toml") << "[material]\ntype = \"j2\"\nE = 69000.0\n";
+  const io::MaterialSpec with = sim::material_choice((dir / "with.toml").string(), "default.csv");
+  BOOST_TEST(std::get<io::CurveFile>(with.curve.value()).path == fs::absolute(dir / "curve.csv").lexically_normal().string());
+  const io::MaterialSpec without = sim::material_choice((dir / "without.toml").string(), "default.csv");
+  BOOST_TEST(std::get<io::CurveFile>(without.curve.value()).path == "default.csv");
+  BOOST_TEST(without.E == 69000.0);
+  BOOST_TEST(without.nu == io::MaterialSpec{}.nu);
+  fs::remove_all(dir);
 }

@@ -1,24 +1,17 @@
 #pragma once
-// Deck sections that build objects behind interfaces: the material and the
-// friction law.  Kept apart from deck.cpp so that new materials and laws are
-// added here only.
+// A contact's friction law from its deck table (a deck's [[contact]]
+// friction, a builder's --friction checked on its own): kept apart from
+// deck.cpp so that a new law is added here only.  The material is read and
+// built by io/material_spec.hpp, the one place that knows the [material] keys.
 #include <memory>
 #include <string>
 
 #include <toml++/toml.h>
 
-#include "fe/mesh.hpp"
 #include "friction/friction_law.hpp"
 #include "io/deck_context.hpp"
-#include "material/material.hpp"
 
 namespace drawbend::io {
-
-/// [material] (keys and checks: io/material_spec.hpp): read as a MaterialSpec,
-/// then built.  Value problems are recorded in c's collector; returns nullptr
-/// if the material could not be built.
-std::shared_ptr<const material::Material> make_material(const DeckContext& c, const toml::table& t,
-                                                        const std::string& deck_dir);
 
 /// friction = { law = "coulomb", mu = 0.1 }, or
 /// friction = { law = "stribeck", table = "table_3_1.csv" | mu_BL, mu_EHL, L_BL, L_EHL, Ra_um, eta_Pa_s,
@@ -31,10 +24,5 @@ std::shared_ptr<const material::Material> make_material(const DeckContext& c, co
 std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const toml::table& t,
                                                      const std::string& deck_dir,
                                                      const std::string& w = "contact.friction");
-
-/// [mesh] kind = "quarter_disk": radius, thickness [mm], core, ring, through
-/// (element counts), core_fraction (fe/disk.hpp).  Problems are recorded in
-/// c's collector; returns an empty mesh if it could not be built.
-fe::Mesh make_quarter_disk(const DeckContext& c, const toml::table& t);
 
 }  // namespace drawbend::io

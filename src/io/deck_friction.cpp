@@ -1,68 +1,12 @@
-#include "io/deck_material.hpp"
+#include "io/deck_friction.hpp"
 
 #include <cmath>
-#include <filesystem>
 
 #include "core/csv.hpp"
-#include "fe/disk.hpp"
-#include "io/material_spec.hpp"
 #include "friction/stribeck_law.hpp"
 #include "friction/surface_law.hpp"
 
 namespace drawbend::io {
-
-namespace {
-std::string relative_to(const std::string& dir, const std::string& file) {
-  std::filesystem::path p(file);
-  if (p.is_relative()) p = std::filesystem::path(dir) / p;
-  return p.string();
-}
-
-bool readable(const std::string& path) {
-  std::error_code ec;
-  return std::filesystem::is_regular_file(path, ec);
-}
-
-/// "cannot open FILE" with the rule that found it (a relative path is the deck folder's),
-/// or what the path is when it is there but not a regular file (a folder, a FIFO, a device).
-std::string missing(const std::string& file, const std::string& dir) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status st = fs::status(relative_to(dir, file), ec);
-  std::string what = "cannot open '" + file + "' for reading";
-  if (!ec && fs::exists(st) && !fs::is_regular_file(st))
-    what = "'" + file + "': expected a regular file, found " +
-           (fs::is_directory(st) ? "a folder" : fs::is_fifo(st) ? "a FIFO (named pipe)"
-            : fs::is_character_file(st) || fs::is_block_file(st) ? "a device" : "something else");
-  if (!fs::path(file).is_relative()) return what;
-  return what + " (relative paths are resolved against the deck's folder, " + (dir.empty() ? std::string(".") : dir) +
-         ")";
-}
-
-}  // namespace
-
-std::shared_ptr<const material::Material> make_material(const DeckContext& c, const toml::table& t,
-                                                        const std::string& dir) {
-  const std::size_t before = c.count();
-  const MaterialSpec spec = from_toml(c, t);
-  if (c.count() > before) return nullptr;
-  if (const auto* f = spec.curve ? std::get_if<CurveFile>(&*spec.curve) : nullptr;
-      f && !readable(relative_to(dir, f->path))) {  // a missing file is named with the deck line that asked for it
-    c.bad(*t.get("hardening"), "material.hardening", missing(f->path, dir));
-    return nullptr;
-  }
-  try {
-    try {
-      return io::make_material(spec, dir);
-    } catch (const std::invalid_argument& e) {
-      if (spec.type == MaterialType::yld2004 && t.get("yld2004"))  // the yield function's own checks (convexity)
-        c.fail(*t.get("yld2004"), "material.yld2004", e.what());
-      throw;
-    }
-  } catch (const std::invalid_argument& e) {
-    c.fail(t, "material", e.what());
-  }
-}
 
 // friction = { law = "surface", nodes = "table_6_1.csv" | lines = "table_5_16.csv",
 //              p_min, p_max, v_min, v_max (nodes only; default Sec. 6.3), interval = 100 }
@@ -88,9 +32,9 @@ static std::shared_ptr<friction::FrictionLaw> make_surface_friction(const DeckCo
     c.bad(t, w, "with 'lines' the speed range is that of the outer lines; remove v_min/v_max");
   if (c.count() > before) return nullptr;
   const std::string key = nodes ? "nodes" : "lines";
-  const std::string file = relative_to(dir, c.str(t, key, w));
+  const std::string file = deck_relative(dir, c.str(t, key, w));
   if (c.count() > before) return nullptr;
-  if (!readable(file)) c.fail(*t.get(key), w + "." + key, missing(c.str(t, key, w), dir));
+  if (!readable_file(file)) c.fail(*t.get(key), w + "." + key, missing_file(c.str(t, key, w), dir));
   try {
     const auto [rd, td] = nodes ? friction::load_surface_nodes(file, d) : friction::load_surface_lines(file, d.p_min, d.p_max);
     return std::make_shared<friction::SurfaceLaw>(rd, td, interval);
@@ -122,8 +66,8 @@ std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const
   if (t.get("table")) {
     const std::string file = c.str(t, "table", w);
     if (c.count() > before) return nullptr;
-    if (!readable(relative_to(dir, file))) c.fail(*t.get("table"), w + ".table", missing(file, dir));
-    p = analysis::load_stribeck(relative_to(dir, file));
+    if (!readable_file(deck_relative(dir, file))) c.fail(*t.get("table"), w + ".table", missing_file(file, dir));
+    p = analysis::load_stribeck(deck_relative(dir, file));
   } else {
     p.mu_BL = c.in_range(t, "mu_BL", w, NAN, 0.0);
     p.mu_EHL = c.in_range(t, "mu_EHL", w, NAN, 0.0);
@@ -143,26 +87,6 @@ std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const
     return std::make_shared<friction::Stribeck>(p, interval);
   } catch (const std::invalid_argument& e) {
     c.fail(t, w, e.what());
-  }
-}
-
-fe::Mesh make_quarter_disk(const DeckContext& c, const toml::table& t) {
-  const std::size_t before = c.count();
-  c.allowed(t, "mesh", {"kind", "radius", "thickness", "core_fraction", "core", "ring", "through",
-                          "polar_radius"});
-  fe::QuarterDiskSpec s;
-  s.radius = c.positive(t, "radius", "mesh");
-  s.thickness = c.positive(t, "thickness", "mesh");
-  s.core_fraction = c.positive(t, "core_fraction", "mesh", s.core_fraction);
-  s.core = c.count_of(t, "core", "mesh", s.core, 1);
-  s.ring = c.count_of(t, "ring", "mesh", s.ring, 1);
-  s.through = c.count_of(t, "through", "mesh", s.through, 1);
-  if (t.contains("polar_radius")) s.polar_radius = c.positive(t, "polar_radius", "mesh");
-  if (c.count() > before) return {};
-  try {
-    return fe::quarter_disk(s);
-  } catch (const std::invalid_argument& e) {
-    c.fail(t, "mesh", e.what());
   }
 }
 
