@@ -13,7 +13,13 @@
 // options; the loop is never told the class, variable or noise.
 //   detected     the first step names one of the truth's aliases AND the
 //                final held-out RMS <= 2 x the true noise sd;
-//   false alarm  a null set on which the loop adds any effect.
+//   false alarm  a null set on which the loop adds an effect of an
+//                undeclared variable (a step of class "undeclared variable");
+//                a null set whose only steps are on the model's own inputs
+//                (class "base model": pin, pressure, speed, direction, back
+//                tension) is counted apart as base-model mismatch (issue 50
+//                item 4; until 2026-12-02 any effect counted as an alarm:
+//                runs 1-6 of heldout_record.md were scored so).
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -37,6 +43,7 @@ constexpr double kKMin = 2.5, kKMax = 6;           // effect RMS / noise sd, as 
 
 struct ClassSum {
   int sets = 0, detected = 0, named_rms_high = 0, wrong_first = 0, no_step = 0;
+  int base_only = 0;  ///< null sets with steps on the model's own inputs only (base-model mismatch)
 };
 }  // namespace
 
@@ -61,6 +68,7 @@ struct Tally {
   std::string generator_note, null_note;
   double worst_null_base = 0;
   int eff_sets = 0, eff_det = 0, null_sets = 0, null_alarm = 0;
+  int null_base_terms = 0;  ///< null sets with base-model terms only (not alarms)
   double rate = 0;
 };
 
@@ -110,8 +118,11 @@ Tally run_sets(Chapter& c, const Config& cfg, const Study& st, const std::vector
     ClassSum& s = sum[cls];
     s.sets++;
     if (null) {
-      outcome = r.steps.empty() ? "quiet" : "FALSE ALARM";
-      s.wrong_first += !r.steps.empty();
+      int undeclared = 0;
+      for (const auto& x : r.steps) undeclared += x.cls == "undeclared variable";
+      outcome = undeclared ? "FALSE ALARM" : r.steps.empty() ? "quiet" : "base-model mismatch (not an alarm)";
+      s.wrong_first += undeclared > 0;
+      s.base_only += undeclared == 0 && !r.steps.empty();
       worst_null_base = std::max(worst_null_base, base);
       if (!(base <= o.noise_ratio)) null_base_ok = false, null_note += " set " + std::to_string(i) + ": " + fmt(base, 3) + ";";
     } else if (named && fin <= kDetectRatio) {
@@ -140,16 +151,17 @@ void summary_table(Chapter& c, const Study& st, const std::vector<std::string>& 
   std::map<std::string, ClassSum>& sum = tally.sum;
   const double worst_null_base = tally.worst_null_base;
   auto t = c.table({"class", "sets", "detected", "named_but_rms_above_2sd", "wrong_first_step", "no_step",
-                    "false_alarms"},
-                   st.demo + ": per class; null sets count false alarms (any effect added)");
+                    "false_alarms", "base_model_mismatch_only"},
+                   st.demo + ": per class; null sets count false alarms (an effect of an undeclared variable added) "
+                   "and, apart, the sets whose only steps are on the model's own inputs (base-model mismatch)");
   int &eff_sets = tally.eff_sets, &eff_det = tally.eff_det, &null_sets = tally.null_sets, &null_alarm = tally.null_alarm;
   for (const auto& cls : classes) {
     const ClassSum& s = sum[cls];
     const bool null = cls == "null";
     t.row({cls, std::to_string(s.sets), null ? "-" : std::to_string(s.detected), null ? "-" : std::to_string(s.named_rms_high),
            null ? "-" : std::to_string(s.wrong_first), null ? "-" : std::to_string(s.no_step),
-           null ? std::to_string(s.wrong_first) : "-"});
-    if (null) null_sets += s.sets, null_alarm += s.wrong_first;
+           null ? std::to_string(s.wrong_first) : "-", null ? std::to_string(s.base_only) : "-"});
+    if (null) null_sets += s.sets, null_alarm += s.wrong_first, tally.null_base_terms += s.base_only;
     else eff_sets += s.sets, eff_det += s.detected;
     const std::string key = cls == "test-level" ? "test_level" : cls;
     c.value(st.class_value + key + "_sets", std::to_string(s.sets));
@@ -164,6 +176,7 @@ void summary_table(Chapter& c, const Study& st, const std::vector<std::string>& 
   c.value(st.value + "_detection_rate", fmt(100 * rate, 3), "%");
   c.value(st.value + "_null_sets", std::to_string(null_sets));
   c.value(st.value + "_null_alarm", std::to_string(null_alarm));
+  c.value(st.value + "_null_base_terms", std::to_string(tally.null_base_terms));
   c.value(st.value + "_false_alarm_rate", fmt(100 * fa, 3), "%");
   c.value(st.value + "_seed0", std::to_string(st.seed0));
   c.value(st.value + "_seed_last", std::to_string(static_cast<long long>(st.seed0) + st.sets - 1));
@@ -191,8 +204,11 @@ void study_checks(Chapter& c, const Study& st, const LoopOptions& o, const Tally
                    rate >= 0.9, st.protocol + " check 3: issue 50's goal on data the loop was not written for");
   c.checks().claim(study::Kind::simulated, st.check + ".null",
                    st.scope + " false alarms (" + st.generator + ") on at most 1/12 of the null sets (" +
-                       std::to_string(null_alarm) + " of " + std::to_string(null_sets) + ")",
-                   12 * null_alarm <= null_sets, st.protocol + " check 4: issue 50's goal (at most 1 in 12)");
+                       std::to_string(null_alarm) + " of " + std::to_string(null_sets) + "; an alarm is an effect of an "
+                       "undeclared variable, and " + std::to_string(tally.null_base_terms) + " null set(s) had only "
+                       "base-model terms, reported apart as base-model mismatch)",
+                   12 * null_alarm <= null_sets, st.protocol + " check 4: issue 50's goal (at most 1 in 12); issue 50 "
+                   "item 4: mismatch of the base model's own terms is not an undeclared effect");
 }
 
 // One held-out study: its sets run and scored, the summary, the checks.

@@ -10,6 +10,7 @@
 
 #include "core/quote.hpp"
 #include "core/csv.hpp"
+#include "loop/aliases.hpp"
 #include "loop/forms.hpp"
 
 namespace drawbend::loop {
@@ -61,6 +62,12 @@ void conclude(LoopResult& r, const LoopOptions& o, const std::vector<CandidateRe
     for (size_t k = 0; k < r.steps.size(); ++k)
       c << (k ? "; " : "") << r.steps[k].variable << " (" << r.steps[k].effect << ", " << r.steps[k].channel << ")";
     c << ". ";
+    for (const auto& s : r.steps)
+      if (s.cls != "undeclared variable") r.base_terms.push_back(s.variable + " -> " + s.effect);
+    r.undeclared = nu;
+    if (!r.base_terms.empty())
+      c << "The " << r.base_terms.size() << " term(s) on the model's own inputs are base-model mismatch (the base "
+        << "model misfits in its own terms), not undeclared effects. ";
   }
   const NoiseFloor& n = r.noise;
   if (!std::isfinite(n.sigma_N)) {
@@ -258,7 +265,40 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
       Step best_step;
       FormTrial best_form;
       bool found = false;
+      std::vector<std::pair<std::string, CvResult>> kept;  // column -> its kept form's held-out result
+      // Candidate c given every form; the best kept form over the candidates wins.
+      const auto consider = [&](const CandidateResult& c, const Candidate& cand, bool screened) {
+        const auto trials =
+            try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by, c.cell_group);
+        const int keep = choose_form(trials, res.folds);
+        Step s;
+        s.variable = c.name;
+        s.p_permutation = c.p_value;
+        s.threshold = thr;
+        s.probe = c.probe;
+        s.cls = cand.kind == "column" && cand.confounded_with.empty() ? "undeclared variable" : "base model";
+        if (!cand.confounded_with.empty()) s.meaning_note = "confounded with " + cand.confounded_with;
+        for (const auto& t : trials)
+          s.tried.push_back({t.name + " (F-test p " + fmt(t.p_value, 3) + ", " + std::to_string(t.q) + " parameters" +
+                                 (t.passed ? "" : ", failed a gate") + ")",
+                             t.cv.rms});
+        if (keep < 0) {
+          if (screened)
+            res.screened.push_back(c.name + " (round " + std::to_string(round + 1) + ", p_perm " + fmt(c.p_value, 3) +
+                                   ", probe " + c.probe + "; no form passed the F test, lowered the held-out error and "
+                                   "reached the minimum effect " + fmt(o.min_effect) + " sigma)");
+          return;
+        }
+        if (s.cls == "undeclared variable") kept.push_back({c.name, trials[keep].cv});
+        const bool better = !found || trials[keep].cv.rms < best_form.cv.rms;
+        if (better) {
+          best_form = trials[keep];
+          best_step = s;
+          found = true;
+        }
+      };
       int tried = 0;
+      std::vector<std::string> given;  // candidates given their forms this round
       for (const auto& c : rank) {
         if (!c.significant || tried >= o.contenders) break;
         if (is_identity(c.name)) continue;
@@ -270,32 +310,30 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
         // and the input needs no undeclared variable.
         if (!cand->confounded_with.empty() && input_significant(rank, cand->confounded_with)) continue;
         ++tried;
-        const auto trials =
-            try_forms(d, res.folds, spec, *cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by, c.cell_group);
-        const int keep = choose_form(trials, res.folds);
-        Step s;
-        s.variable = c.name;
-        s.p_permutation = c.p_value;
-        s.threshold = thr;
-        s.probe = c.probe;
-        s.cls = cand->kind == "column" && cand->confounded_with.empty() ? "undeclared variable" : "base model";
-        if (!cand->confounded_with.empty()) s.meaning_note = "confounded with " + cand->confounded_with;
-        for (const auto& t : trials)
-          s.tried.push_back({t.name + " (F-test p " + fmt(t.p_value, 3) + ", " + std::to_string(t.q) + " parameters" +
-                                 (t.passed ? "" : ", failed a gate") + ")",
-                             t.cv.rms});
-        if (keep < 0) {
-          res.screened.push_back(c.name + " (round " + std::to_string(round + 1) + ", p_perm " + fmt(c.p_value, 3) +
-                                 ", probe " + c.probe + "; no form passed the F test, lowered the held-out error and "
-                                 "reached the minimum effect " + fmt(o.min_effect) + " sigma)");
-          continue;
+        given.push_back(c.name);
+        consider(c, *cand, true);
+      }
+      // Collinear naming (aliases.hpp): the columns explaining the same
+      // structure as the chosen column's effect are given their forms too.
+      if (found && best_step.cls == "undeclared variable") {
+        std::vector<double> e(d.rows.size());
+        for (size_t i = 0; i < e.size(); ++i) e[i] = best_form.cv.pred[i] - cur.pred[i];
+        std::vector<std::string> skip = given;
+        for (const auto& m : spec.effects) skip.push_back(m.variable);
+        for (const auto& a : alias_columns(cands, e, res.folds.block, best_step.variable, skip)) {
+          progress(o, "alias of " + best_step.variable + ": " + a.name + " (explained share " + fmt(a.share, 3) + ")");
+          CandidateResult cr;
+          cr.name = a.name;
+          for (const auto& k : rank)
+            if (k.name == a.name) cr = k;
+          for (const auto& k : cands)
+            if (k.name == a.name) consider(cr, k, false);
         }
-        const bool better = !found || trials[keep].cv.rms < best_form.cv.rms;
-        if (better) {
-          best_form = trials[keep];
-          best_step = s;
-          found = true;
-        }
+        // Columns whose kept form the held-out data cannot tell from the winner's.
+        for (const auto& [name, cv] : kept)
+          if (name != best_step.variable &&
+              cv.rms * cv.rms - best_form.cv.rms * best_form.cv.rms <= mse_diff_se(cv, best_form.cv, res.folds))
+            best_step.aliased_with.push_back(name + " (held-out RMS " + fmt(cv.rms, 4) + " N)");
       }
       ++round;
       if (!found) {
@@ -419,6 +457,9 @@ std::string summary_json(const LoopResult& r) {
       << ", \"class\": " << jstr(s.cls) << ", \"channel\": " << jstr(s.channel)
       << ", \"contribution_N2\": " << jnum(s.contribution) << ", \"probe\": " << jstr(s.probe)
       << (s.meaning_note.empty() ? "" : ", \"note\": " + jstr(s.meaning_note))
+      << ", \"aliased_with\": [";
+    for (size_t k = 0; k < s.aliased_with.size(); ++k) o << (k ? ", " : "") << jstr(s.aliased_with[k]);
+    o << "]"
       << ", \"parameters\": {";
     for (size_t k = 0; k < s.params.size(); ++k)
       o << (k ? ", " : "") << jstr(s.params[k].name) << ": {\"value\": " << jnum(s.params[k].value)
@@ -431,6 +472,8 @@ std::string summary_json(const LoopResult& r) {
   for (size_t i = 0; i < r.screened.size(); ++i) o << (i ? ", " : "") << jstr(r.screened[i]);
   o << "],\n  \"removed_by_backfitting\": [";
   for (size_t i = 0; i < r.removed.size(); ++i) o << (i ? ", " : "") << jstr(r.removed[i]);
+  o << "],\n  \"undeclared_effects\": " << r.undeclared << ",\n  \"base_model_terms\": [";
+  for (size_t i = 0; i < r.base_terms.size(); ++i) o << (i ? ", " : "") << jstr(r.base_terms[i]);
   o << "],\n  \"base_model_mismatch\": [";
   for (size_t i = 0; i < r.base_mismatch.size(); ++i) o << (i ? ", " : "") << jstr(r.base_mismatch[i]);
   o << "],\n  \"stopped_because\": " << jstr(r.stopped_because) << "\n}\n";

@@ -19,6 +19,11 @@
 //              a lower held-out error and the minimum effect; the simplest
 //              form within one standard error of the best is kept (forms.hpp);
 //              the candidate whose form predicts held-out data best is added;
+//   aliases    the columns that explain the same structure as the chosen
+//              column's effect (aliases.hpp) are given their forms too, so a
+//              run-order alias (test_order, operator) does not name a step
+//              that a row-level column explains better on held-out data;
+//              columns the held-out data cannot tell apart are reported;
 //   channels   an effect acts on mu, on the bending force (F_B + c_pin z,
 //              fitted with the bending lines on the rotating-pin rows), or
 //              both; which, is decided by the held-out data through the forms;
@@ -30,9 +35,11 @@
 //              first, then base-model terms (effects on the model's own
 //              inputs: pin, pressure, speed, direction, back tension), each
 //              class by its contribution (held-out MSE lost without it), not
-//              by the order found.  Remaining structure only in the model's
-//              inputs is reported as base-model mismatch, apart from
-//              undeclared variables.
+//              by the order found.  Base-model terms added and remaining
+//              structure only in the model's inputs are reported as
+//              base-model mismatch, apart from undeclared variables (issue 50
+//              item 4: base_model_terms and undeclared_effects in
+//              loop_summary.json).
 // A significant variable that no form explains is listed as screened.  The
 // final held-out error is compared with the replicate noise (noise.hpp).
 #include <cstdint>
@@ -89,6 +96,10 @@ struct Step {
   std::string channel;  ///< friction, bending or both
   std::string probe;    ///< the screen's probe with the largest statistic
   std::string meaning_note;  ///< "confounded with <input>" for a column that is a function of a model input
+  /// Other columns whose kept form predicts held-out data as well as this
+  /// step's (within one standard error of the difference): the data cannot
+  /// tell them apart (aliases.hpp), "name (held-out RMS x N)".
+  std::vector<std::string> aliased_with;
   double contribution = 0;  ///< held-out MSE lost when this effect alone is removed [N^2]
   std::vector<Effect> added;  ///< the effects of the step (bending_tension: the flag)
 };
@@ -111,6 +122,12 @@ struct LoopResult {
   /// Remaining significant structure in the model's own inputs (base-model
   /// mismatch), reported apart from undeclared variables.
   std::vector<std::string> base_mismatch;
+  /// Base-model mismatch the loop corrected (issue 50 item 4): the steps of
+  /// class "base model" (effects on the model's own inputs: pin, pressure,
+  /// speed, direction, back tension, lubricant, or a column that is a function
+  /// of one), "variable -> effect"; not undeclared effects.
+  std::vector<std::string> base_terms;
+  int undeclared = 0;  ///< steps of class "undeclared variable"
   std::string conclusion;              ///< plain-language conclusion (loop.md opens with it)
   std::string bending;                 ///< bending-force label (every output)
 };

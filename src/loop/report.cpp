@@ -211,10 +211,22 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
     m << "| – | (no step) | | | | | | " << fmt(r.cv.front().rms, 4) << " | | " << fmt(r.cv.front().max_abs, 4) << " | |\n";
   for (size_t k = 0; k < r.steps.size(); ++k)
     if (!r.steps[k].sign.empty()) m << "\nStep " << k + 1 << ": " << r.steps[k].sign << ".\n";
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    if (!r.steps[k].aliased_with.empty()) {
+      m << "\nStep " << k + 1 << ": " << r.steps[k].variable << " (held-out RMS " << fmt(r.steps[k].rms_after, 4)
+        << " N) cannot be told apart on held-out data from ";
+      for (size_t j = 0; j < r.steps[k].aliased_with.size(); ++j) m << (j ? ", " : "") << r.steps[k].aliased_with[j];
+      m << " (each column's own best form, within one standard error): these columns explain the same structure.\n";
+    }
   m << "\nStopped because: " << r.stopped_because << ".\n";
   if (!r.remaining.empty()) {
     m << "\nNot at the noise level; strongest remaining candidates:\n\n";
     for (const auto& u : r.remaining) m << "- " << u << "\n";
+  }
+  if (!r.base_terms.empty()) {
+    m << "\nBase-model mismatch corrected (steps on the model's own inputs: the base model misfits there; reported "
+         "apart from undeclared variables, not an undeclared effect):\n\n";
+    for (const auto& u : r.base_terms) m << "- " << u << "\n";
   }
   if (!r.base_mismatch.empty()) {
     m << "\nBase-model mismatch (remaining structure in the model's own inputs, reported apart from undeclared "

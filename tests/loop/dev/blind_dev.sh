@@ -2,7 +2,9 @@
 # Development scorer of the loop on generator 1 (blind) sets, scored as in
 # chapters/ch7-closing-the-loop/heldout_protocol.md (set i: class i % 6, noise
 # 3 N when (i / 6) even, else 8 N; detected = first step names an alias AND
-# final held-out RMS <= 2 x the true noise sd; null: any step is a false alarm).
+# final held-out RMS <= 2 x the true noise sd; null: a step on an undeclared
+# variable (class "undeclared variable") is a false alarm, steps only on the
+# model's own inputs (class "base model") are base_mismatch, issue 50 item 4).
 # ONLY for development seeds (heldout_protocol_v3.md: 50500000..50500143,
 # 52000000..52999999, 53100000..53100143; wild 54200000..54200143 and
 # 55000000+); never on held-out seeds 57100000+ or 57200000+.
@@ -34,7 +36,9 @@ try: r=json.load(open(d+'/loop/loop_summary.json'))
 except Exception as e: print(i,cls,'ERROR',e); sys.exit()
 st=r['steps']; fin=r['heldout_rms_N']/noise
 tm=open(d+'/time').read().split()[-1]
-if cls=='null': out='quiet' if not st else 'FALSE_ALARM'
+if cls=='null':  # issue 50 item 4: a step on the model's own inputs is base-model mismatch, not an alarm
+  und=[s for s in st if s.get('class')=='undeclared variable']
+  out='FALSE_ALARM' if und else 'base_mismatch' if st else 'quiet'
 else:
   named = bool(st) and st[0]['variable'] in t['aliases']
   out = 'detected' if named and fin<=2 else 'named_high' if named else 'no_step' if not st else 'wrong_first'

@@ -1,0 +1,51 @@
+#pragma once
+// Collinear naming (issue 50): columns that explain the same structure as a
+// step's variable.
+//
+// A test-level alias (test_order, operator, date: all functions of the run
+// order) can win a step instead of the true column: the screen permutes a
+// row-level column (cycle_count) within tests only, so its between-test part,
+// the bulk of a drift, is never tested, and the column often fails the screen
+// or ranks below the aliases; only the strongest `contenders` are given forms.
+// So once the loop has chosen a step on a column x, the columns that explain
+// the same structure are given their forms as well, and the one whose kept
+// form predicts held-out data best names the step (the same rule as between
+// the contenders).  "Explain the same structure": the step's effect on the
+// held-out prediction, e = pred_after - pred_before, centred per block (the
+// screen's blocks), is grouped by the column's values (explained_share), and
+// the columns with the largest share are tried.  Trying them adds no step: it
+// only decides which column names a step already confirmed, so it cannot add
+// a false alarm on a null set.
+#include <string>
+#include <vector>
+
+#include "loop/candidates.hpp"
+
+namespace drawbend::loop {
+
+/// Share of the block-centred e explained by the groups of y: 1 - SS within
+/// groups / SS total.  Groups: y's levels (categorical with at most
+/// kAliasMaxLevels levels), its distinct values (numeric with at most 8), else
+/// 8 quantile bins of its rows (ties kept in one bin).  Rows with e or y
+/// missing are skipped; 0 when y has too many levels, fewer than 2 groups, or
+/// e is constant.
+double explained_share(const std::vector<double>& e, const std::vector<int>& block, const Candidate& y);
+
+struct AliasColumn {
+  std::string name;
+  double share = 0;
+};
+
+constexpr int kAliasMaxLevels = 12;  ///< a categorical column with more levels is an identity, not an alias
+constexpr double kAliasShare = 0.2;  ///< explained share to be tried as an alias (a test-level column unrelated to e explains about 7 / (tests - 1), ~0.1, by its 8 bins alone)
+constexpr int kAliasMax = 3;         ///< aliases tried per step, the largest shares
+
+/// The columns of the data (kind "column", not an identity, not a function of
+/// a model input, not `x`, not in `skip`) whose explained share of e is at
+/// least `min_share`, largest first (name breaks ties), at most `max`.
+std::vector<AliasColumn> alias_columns(const std::vector<Candidate>& cands, const std::vector<double>& e,
+                                       const std::vector<int>& block, const std::string& x,
+                                       const std::vector<std::string>& skip, double min_share = kAliasShare,
+                                       int max = kAliasMax);
+
+}  // namespace drawbend::loop
