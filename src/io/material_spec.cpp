@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <filesystem>
 #include <set>
 #include <cstdio>
@@ -433,12 +434,13 @@ material::Yld2004 load_yld2004_toml(const std::string& path) {
     throw InputError(path + ": expected yld2004 = { a, c1 = [9 numbers], c2 = [9 numbers] }, at the top or in [material]");
   const std::string at = path + ":" + std::to_string(y->source().begin.line) + (in_material ? ": material.yld2004" : ": yld2004");
   material::Yld2004 out;
-  out.a = (*y)["a"].value_or(NAN);
+  out.a = (*y)["a"].value_or(std::numeric_limits<double>::quiet_NaN());  // a double default: NAN is a float
   for (const char* key : {"c1", "c2"}) {
     const auto* arr = (*y)[key].as_array();
     if (!arr || arr->size() != 9)
       throw InputError(at + "." + key + ": expected 9 numbers c12, c13, c21, c23, c31, c32, c44, c55, c66");
-    for (std::size_t i = 0; i < 9; ++i) (key[1] == '1' ? out.c1 : out.c2)[i] = (*arr)[i].value_or(NAN);
+    for (std::size_t i = 0; i < 9; ++i) (key[1] == '1' ? out.c1 : out.c2)[i] =
+          (*arr)[i].value_or(std::numeric_limits<double>::quiet_NaN());
   }
   try {
     out.validate();

@@ -23,13 +23,10 @@
 //  - io::load_yld2004_toml (drawbend calibrate --compare, Chapter v1) reads
 //    the same a, c1, c2 as the deck reader from the published set at the top
 //    and from a [material] table (the same text through the same parser:
-//    equal doubles).  KNOWN DEFECT, marked as 22 expected failures: the
-//    loader reads each coefficient with value_or(NAN), a float, so the 11
-//    coefficients of POSTECH's set that are not exact in float come out
-//    rounded to float (1.3329000473 for 1.3329), in both files.  The fix
-//    (value<double>()) changes calibrate --compare's and Chapter v1's
-//    published-set numbers in their last digits, so it is left to its own
-//    change; this test then passes without the marker;
+//    equal doubles).  It failed 22 times while the loader read each
+//    coefficient with value_or(NAN), a float default, so the 11 coefficients
+//    of POSTECH's set that are not exact in float came out rounded to float
+//    (1.3329000473 for 1.3329), in both files;
 //  - a flow-curve file named in a material file is taken from that file's
 //    folder, and the builder's default curve (not the file's) stays as given.
 #define BOOST_TEST_MODULE material_spec
@@ -166,7 +163,7 @@ BOOST_AUTO_TEST_CASE(key_of_names_the_written_keys) {
   BOOST_TEST(std::string(io::key_of(io::YieldSurface(io::VonMises{}))).empty());
 }
 
-BOOST_AUTO_TEST_CASE(yld2004_file_reads_as_the_deck_does, *boost::unit_test::expected_failures(22)) {
+BOOST_AUTO_TEST_CASE(yld2004_file_reads_as_the_deck_does) {
   const std::string published = kRepo + "/data/materials/aa6016_t4_yld2004_postech2022.toml";
   const material::Yld2004 top = io::load_yld2004_toml(published);
   const toml::table root = parse_toml_file(published);
