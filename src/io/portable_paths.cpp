@@ -105,7 +105,12 @@ std::string friction_argument(const std::string& text, const std::string& base_d
   return inline_text(*t);
 }
 
-std::string portable_deck(const std::string& text, const std::string& copy_to) {
+namespace {
+/// Visits every input-file value of `text`: `fn(match, value)` where value is
+/// the file's bare name for an absolute path of an existing file that becomes
+/// portable, else the value as written.
+template <class Fn>
+std::string rewrite_inputs(const std::string& text, Fn fn) {
   static const std::regex key(R"re(\b(hardening|nodes|lines|table)(\s*=\s*)(["'])([^"'\n]*)\3)re");
   std::map<std::string, std::string> by_name;  // file name -> the absolute path it stands for
   std::string out;
@@ -120,11 +125,7 @@ std::string portable_deck(const std::string& text, const std::string& copy_to) {
       const auto [slot, fresh] = by_name.emplace(name, p.string());
       if (fresh || slot->second == p.string()) {
         value = name;
-        if (!copy_to.empty()) {
-          const fs::path dest = fs::path(copy_to) / name;
-          if (!fs::exists(dest, ec) || read_file(dest.string()) != read_file(p.string()))
-            write_file_atomic(dest.string(), read_file(p.string()));
-        }
+        fn(p, name);
       }
     }
     out.append(text, last, static_cast<std::size_t>(m.position(0)) - last);
@@ -133,6 +134,27 @@ std::string portable_deck(const std::string& text, const std::string& copy_to) {
   }
   out.append(text, last, std::string::npos);
   return out;
+}
+}  // namespace
+
+std::string portable_deck(const std::string& text, const std::string& copy_to) {
+  return rewrite_inputs(text, [&](const fs::path& p, const std::string& name) {
+    if (copy_to.empty()) return;
+    std::error_code ec;
+    const fs::path dest = fs::path(copy_to) / name;
+    if (!fs::exists(dest, ec) || read_file(dest.string()) != read_file(p.string()))
+      write_file_atomic(dest.string(), read_file(p.string()));
+  });
+}
+
+bool portable_inputs_current(const std::string& text, const std::string& dir) {
+  bool same = true;
+  rewrite_inputs(text, [&](const fs::path& p, const std::string& name) {
+    std::error_code ec;
+    const fs::path copy = fs::path(dir) / name;
+    same = same && fs::is_regular_file(copy, ec) && read_file(copy.string()) == read_file(p.string());
+  });
+  return same;
 }
 
 }  // namespace drawbend::io

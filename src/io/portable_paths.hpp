@@ -33,4 +33,10 @@ std::string friction_argument(const std::string& text, const std::string& base_d
 /// same name: the second keeps its absolute path.
 std::string portable_deck(const std::string& text, const std::string& copy_to = "");
 
+/// Whether `dir` holds a byte-identical copy of every input file that
+/// portable_deck(text) names by its bare name: a run folder whose deck text
+/// matches is reusable only if its tables are the ones the deck reads now
+/// (an edited flow curve or friction table of the same name is a new case).
+bool portable_inputs_current(const std::string& text, const std::string& dir);
+
 }  // namespace drawbend::io

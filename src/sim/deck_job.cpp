@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 bool finished_run_of(const std::string& deck_text, const std::string& dir) {
   const fs::path deck_path = fs::path(dir) / "deck.toml";
   return fs::exists(deck_path) && fs::exists(fs::path(dir) / "summary.csv") &&
-         read_file(deck_path.string()) == io::portable_deck(deck_text);
+         read_file(deck_path.string()) == io::portable_deck(deck_text) && io::portable_inputs_current(deck_text, dir);
 }
 
 bool run_deck_job(const std::string& name, const std::string& deck_text, const std::string& dir, bool reuse, bool quiet,

@@ -26,7 +26,8 @@ namespace drawbend::sim {
 bool run_deck_job(const std::string& name, const std::string& deck_text, const std::string& dir, bool reuse,
                   bool quiet = true, const io::ResultOptions& result = {}, const std::string& run_args = "");
 
-/// Whether `dir` holds `deck_text` (made portable) byte for byte and a summary.csv.
+/// Whether `dir` holds `deck_text` (made portable) byte for byte, the tables it
+/// reads (io::portable_inputs_current) and a summary.csv.
 bool finished_run_of(const std::string& deck_text, const std::string& dir);
 
 /// A chapter's cases as jobs: deck `texts[k]` in `runs`/<names[k]>, run

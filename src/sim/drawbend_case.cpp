@@ -316,7 +316,9 @@ std::string find_same_run(const DrawBendSpec& s, const std::vector<std::string>&
       const std::string other = read_file((d / "deck.toml").string());
       DrawBendSpec t = s;
       t.name = case_name(other);
-      if (!t.name.empty() && io::portable_deck(deck_text(t)) == other) return d.string();
+      if (t.name.empty()) continue;
+      const std::string text = deck_text(t);
+      if (io::portable_deck(text) == other && io::portable_inputs_current(text, d.string())) return d.string();
     }
   }
   return "";

@@ -18,7 +18,11 @@
 //    sim::quick_deck_spec), s under the name "fb" is
 //    found in "a" (the first by name); with the back tension 1 N higher,
 //    nowhere (""); with "a"'s summary gone, in "b"; with a byte then added to
-//    "b"'s deck, nowhere; a folder that does not exist is skipped.
+//    "b"'s deck, nowhere; a folder that does not exist is skipped.  The
+//    folders hold their tables as a run writes them (the flow curve copied
+//    beside the deck); with "b"'s deck restored but one byte added to its
+//    copy of the flow curve, nowhere (the table it ran with is not the one
+//    the deck reads now).
 #define BOOST_TEST_MODULE case_pool
 #include <boost/test/unit_test.hpp>
 
@@ -152,6 +156,10 @@ BOOST_AUTO_TEST_CASE(same_run_found_under_another_name) {
   b.name = "other";
   // As run_drawbend writes a run folder's deck: tables by file name (io/portable_paths.hpp).
   auto deck_text = [](const DrawBendSpec& d) { return drawbend::io::portable_deck(drawbend::sim::deck_text(d)); };
+  fs::create_directories(root / "a");
+  fs::create_directories(root / "b");
+  drawbend::io::portable_deck(drawbend::sim::deck_text(a), (root / "a").string());  // copies the tables
+  drawbend::io::portable_deck(drawbend::sim::deck_text(b), (root / "b").string());
   write(root / "a" / "deck.toml", deck_text(a));
   write(root / "a" / "summary.csv", "quantity,value,unit\n");
   write(root / "b" / "deck.toml", deck_text(b));
@@ -165,6 +173,16 @@ BOOST_AUTO_TEST_CASE(same_run_found_under_another_name) {
   fs::remove(root / "a" / "summary.csv");
   BOOST_TEST(find_same_run(s, roots) == (root / "b").string());
   write(root / "b" / "deck.toml", deck_text(b) + "#");
+  BOOST_TEST(find_same_run(s, roots) == "");
+  write(root / "b" / "deck.toml", deck_text(b));
+  BOOST_TEST(find_same_run(s, roots) == (root / "b").string());
+  std::size_t tables = 0;
+  for (const auto& f : fs::directory_iterator(root / "b"))
+    if (f.path().extension() == ".csv" && f.path().filename() != "summary.csv") {
+      std::ofstream(f.path(), std::ios::app) << " ";
+      ++tables;
+    }
+  BOOST_TEST(tables == 1u);  // the flow curve
   BOOST_TEST(find_same_run(s, roots) == "");
   BOOST_TEST(find_same_run(s, {}) == "");
   fs::remove_all(root);
