@@ -36,6 +36,7 @@
 
 #include "ch8_steps.hpp"
 #include "core/hash.hpp"
+#include "io/portable_paths.hpp"
 #include "core/toml_read.hpp"
 #include "sim/cup_case.hpp"
 #include "sim/deck_job.hpp"
@@ -136,7 +137,7 @@ void die_radius_calibration(Chapter& c, std::vector<double> r, std::vector<doubl
 }
 
 /// Runs cup specs, each a file-level job (sim/deck_job.hpp) through the case
-/// pool: its deck in runs/cup_<deck fingerprint> (as the draw-bend runs'
+/// pool: its deck in runs/cup_<io::portable_fingerprint> (as the draw-bend runs'
 /// fb_<...>), the run folder kept, the result read back from it
 /// (sim::read_cup_run); counts the runs and their wall time.
 struct CupRunner {
@@ -148,7 +149,7 @@ struct CupRunner {
     std::vector<std::string> names, texts;
     for (const auto& sp : specs) {
       texts.push_back(sim::cup_deck_text(sp));
-      names.push_back("cup_" + hex64(fnv1a64(texts.back())));
+      names.push_back("cup_" + hex64(io::portable_fingerprint(texts.back())));
     }
     const auto dirs = sim::run_jobs(names, texts, c.out("runs"), reuse, "Chapter 8's cup loop");
     std::vector<sim::CupResult> r;

@@ -1,5 +1,6 @@
 // Portable inputs.  See portable_paths.hpp.
 #include "io/portable_paths.hpp"
+#include "core/hash.hpp"
 
 #include <filesystem>
 #include <map>
@@ -145,6 +146,15 @@ std::string portable_deck(const std::string& text, const std::string& copy_to) {
     if (!fs::exists(dest, ec) || read_file(dest.string()) != read_file(p.string()))
       write_file_atomic(dest.string(), read_file(p.string()));
   });
+}
+
+std::uint64_t portable_fingerprint(const std::string& text) {
+  std::uint64_t h = fnv1a64(portable_deck(text));
+  rewrite_inputs(text, [&](const fs::path& p, const std::string& name) {
+    h = fnv1a64(name, h);
+    h = fnv1a64(read_file(p.string()), h);
+  });
+  return h;
 }
 
 bool portable_inputs_current(const std::string& text, const std::string& dir) {

@@ -19,6 +19,7 @@
 //    folder can be moved or zipped and rerun elsewhere (`drawbend run
 //    FOLDER/deck.toml`).  The rewrite depends on the text only (the same deck
 //    gives the same bytes on every machine and in every folder).
+#include <cstdint>
 #include <string>
 
 namespace drawbend::io {
@@ -38,5 +39,12 @@ std::string portable_deck(const std::string& text, const std::string& copy_to = 
 /// matches is reusable only if its tables are the ones the deck reads now
 /// (an edited flow curve or friction table of the same name is a new case).
 bool portable_inputs_current(const std::string& text, const std::string& dir);
+
+/// A case's fingerprint for naming its run folder: the portable deck text and
+/// the name and bytes of every table it copies (fnv1a64, in the deck's order).
+/// The same case gives the same fingerprint wherever its tables lie (another
+/// checkout, another output folder, a cluster's mount point), and an edited
+/// table gives another.
+std::uint64_t portable_fingerprint(const std::string& text);
 
 }  // namespace drawbend::io

@@ -11,6 +11,7 @@
 
 #include "core/csv.hpp"
 #include "core/hash.hpp"
+#include "io/portable_paths.hpp"
 #include "sim/case_pool.hpp"
 
 namespace drawbend::modelloop {
@@ -28,7 +29,7 @@ std::vector<DrawBendResult> run_cached(std::vector<DrawBendSpec> specs, const st
     auto it = index.find(text);
     if (it == index.end()) {
       it = index.emplace(text, jobs.size()).first;
-      jobs.push_back({s, run_root + "/fb_" + hex64(fnv1a64(text))});
+      jobs.push_back({s, run_root + "/fb_" + hex64(io::portable_fingerprint(text))});
     }
     job_of.push_back(it->second);
   }

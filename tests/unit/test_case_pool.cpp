@@ -23,6 +23,10 @@
 //    beside the deck); with "b"'s deck restored but one byte added to its
 //    copy of the flow curve, nowhere (the table it ran with is not the one
 //    the deck reads now).
+//  - io::portable_fingerprint: one deck text naming a table by absolute path
+//    in folder "x" and the same text with the same table (same name, same
+//    bytes) in folder "y" give the same fingerprint; one byte added to the
+//    table in "y" gives another; a deck text one byte longer gives another.
 #define BOOST_TEST_MODULE case_pool
 #include <boost/test/unit_test.hpp>
 
@@ -185,5 +189,22 @@ BOOST_AUTO_TEST_CASE(same_run_found_under_another_name) {
   BOOST_TEST(tables == 1u);  // the flow curve
   BOOST_TEST(find_same_run(s, roots) == "");
   BOOST_TEST(find_same_run(s, {}) == "");
+  fs::remove_all(root);
+}
+
+BOOST_AUTO_TEST_CASE(fingerprint_follows_the_tables_not_their_folder) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::temp_directory_path() / ("drawbend_fingerprint_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root / "x");
+  fs::create_directories(root / "y");
+  for (const char* d : {"x", "y"}) std::ofstream(root / d / "curve.csv") << "strain,stress\n0,100\n0.1,200\n";
+  auto deck = [&](const char* d) { return "[material]\nhardening = \"" + (root / d / "curve.csv").string() + "\"\n"; };
+  using drawbend::io::portable_fingerprint;
+  BOOST_TEST(deck("x") != deck("y"));
+  BOOST_TEST(portable_fingerprint(deck("x")) == portable_fingerprint(deck("y")));
+  BOOST_TEST(portable_fingerprint(deck("x") + "#") != portable_fingerprint(deck("x")));
+  std::ofstream(root / "y" / "curve.csv", std::ios::app) << " ";
+  BOOST_TEST(portable_fingerprint(deck("x")) != portable_fingerprint(deck("y")));
   fs::remove_all(root);
 }
