@@ -9,6 +9,7 @@
 //  - Shipped tables: every true_stress_MPa equals K (eps0 + eps_p)^n to half a unit in the 4th decimal.
 //  - Load errors name file:line (e.g. "...:4: plastic strain must increase strictly").
 #define BOOST_TEST_MODULE material_curve
+#include <unistd.h>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
@@ -27,7 +28,7 @@ namespace tt = boost::test_tools;
 namespace {
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "drawbend_test_material_curve";
+  const auto dir = std::filesystem::temp_directory_path() / ("drawbend_test_material_curve_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const auto path = (dir / name).string();
   std::ofstream(path) << text;

@@ -30,6 +30,7 @@
 //  - a flow-curve file named in a material file is taken from that file's
 //    folder, and the builder's default curve (not the file's) stays as given.
 #define BOOST_TEST_MODULE material_spec
+#include <unistd.h>
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -172,7 +173,7 @@ BOOST_AUTO_TEST_CASE(yld2004_file_reads_as_the_deck_does) {
     o << "yld2004 = " << *root["yld2004"].as_table() << "\n";
     return o.str();
   }();
-  const std::string dir = (fs::temp_directory_path() / "drawbend_test_material_spec").string();
+  const std::string dir = (fs::temp_directory_path() / ("drawbend_test_material_spec_" + std::to_string(::getpid()))).string();
   fs::create_directories(dir);
   const std::string file = dir + "/material.toml";
   const std::string text = "[material]\ntype = \"yld2004\"\nE = 70000.0\nnu = 0.33\ndensity = 2.7e-9\nhardening = \"x.csv\"\n" + line;
@@ -191,7 +192,7 @@ BOOST_AUTO_TEST_CASE(yld2004_file_reads_as_the_deck_does) {
 }
 
 BOOST_AUTO_TEST_CASE(material_file_curve_is_its_folders) {
-  const fs::path dir = fs::temp_directory_path() / "drawbend_test_material_curve";
+  const fs::path dir = fs::temp_directory_path() / ("drawbend_test_material_spec_curve_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::ofstream(dir / "with.toml") << "[material]\ntype = \"j2\"\nhardening = \"curve.csv\"\n";
   std::ofstream(dir / "without.toml") << "[material]\ntype = \"j2\"\nE = 69000.0\n";

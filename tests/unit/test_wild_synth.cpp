@@ -22,6 +22,7 @@
 //    family (mu_mult, mu_add, offset, bend, bt_gain, mu_pslope, mu_vslope) is
 //    drawn at least once (the family is really wide, not a few kinds).
 #define BOOST_TEST_MODULE wild_synth
+#include <unistd.h>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
@@ -37,7 +38,8 @@ using namespace drawbend::loop;
 static constexpr std::uint64_t kDev = 55000000;  // heldout_protocol_v2.md: wild development seeds
 
 static std::string write_text(const Dataset& d, const std::string& name) {
-  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  const std::string path =  // per process: another checkout's tests may run at the same time
+      (std::filesystem::temp_directory_path() / (std::to_string(::getpid()) + "_" + name)).string();
   write_measured(path, d);
   std::ifstream in(path, std::ios::binary);
   std::stringstream s;
