@@ -36,8 +36,8 @@
 
 #include "ch8_steps.hpp"
 #include "core/hash.hpp"
-#include "io/portable_paths.hpp"
 #include "core/toml_read.hpp"
+#include "io/portable_paths.hpp"
 #include "sim/cup_case.hpp"
 #include "sim/deck_job.hpp"
 #include "material/hardening_curve.hpp"

@@ -1,6 +1,5 @@
 // Portable inputs.  See portable_paths.hpp.
 #include "io/portable_paths.hpp"
-#include "core/hash.hpp"
 
 #include <filesystem>
 #include <map>
@@ -11,6 +10,7 @@
 
 #include "core/quote.hpp"
 #include "core/csv.hpp"
+#include "core/hash.hpp"
 #include "core/input_problems.hpp"
 #include "core/toml_read.hpp"
 #include "io/deck_context.hpp"
@@ -107,9 +107,9 @@ std::string friction_argument(const std::string& text, const std::string& base_d
 }
 
 namespace {
-/// Visits every input-file value of `text`: `fn(match, value)` where value is
-/// the file's bare name for an absolute path of an existing file that becomes
-/// portable, else the value as written.
+/// `text` with every input file that can be named by its bare name so named
+/// (see portable_deck); `fn(absolute path, bare name)` is called for each, in
+/// the deck's order.
 template <class Fn>
 std::string rewrite_inputs(const std::string& text, Fn fn) {
   static const std::regex key(R"re(\b(hardening|nodes|lines|table)(\s*=\s*)(["'])([^"'\n]*)\3)re");
@@ -149,12 +149,11 @@ std::string portable_deck(const std::string& text, const std::string& copy_to) {
 }
 
 std::uint64_t portable_fingerprint(const std::string& text) {
-  std::uint64_t h = fnv1a64(portable_deck(text));
-  rewrite_inputs(text, [&](const fs::path& p, const std::string& name) {
-    h = fnv1a64(name, h);
-    h = fnv1a64(read_file(p.string()), h);
+  std::uint64_t tables = fnv1a64({});
+  const std::string portable = rewrite_inputs(text, [&](const fs::path& p, const std::string& name) {
+    tables = fnv1a64(read_file(p.string()), fnv1a64(name, tables));
   });
-  return h;
+  return fnv1a64(portable, tables);
 }
 
 bool portable_inputs_current(const std::string& text, const std::string& dir) {
