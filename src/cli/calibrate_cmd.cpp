@@ -116,6 +116,9 @@ int calibrate_command(int argc, char** argv) {
   for (const auto& m : models)
     std::cout << "  " << m.name << ": " << fmt(m.rms(t, material::SheetDatum::uniaxial_stress), 3) << " and "
               << fmt(m.rms(t, material::SheetDatum::uniaxial_r), 3) << "\n";
+  if (t.data.size() < 14)
+    std::cout << "note: " << t.data.size() << " data for 14 free coefficients: the fit is not unique; between the "
+              << "tested directions the set follows its start (the best of " << fit.starts << " starts is kept).\n";
   std::cout << "c44 = c55 = 1 (and in C''): no test of the sheet loads the out-of-plane shears.\n"
             << "wrote " << out << "/material.toml and " << out << "/calibration.csv (" << fit.accepted << " of "
             << fit.starts << " starts gave a closed, convex set)\n";

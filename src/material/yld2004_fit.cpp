@@ -270,8 +270,28 @@ std::vector<std::vector<std::string>> calibration_table(const SheetTests& t, con
   return rows;
 }
 
+void require_fittable(const SheetTests& tests, const FitWeights& w) {
+  // The in-plane anisotropy of an orthotropic sheet needs the yield stress and
+  // the r-value at 0, 45 and 90 deg at least (Hill'48 from either set needs
+  // three of them); with fewer the fit puts the untested directions wherever
+  // its start lies and still reports a residual of zero.
+  std::string missing;
+  for (double ang : {0.0, 45.0, 90.0}) {
+    if (!std::isfinite(tests.uniaxial_stress(ang))) missing += " sigma(" + fmt_shortest(ang) + ")";
+    if (!std::isfinite(tests.r_value(ang))) missing += " r(" + fmt_shortest(ang) + ")";
+  }
+  if (!missing.empty())
+    throw InputError(tests.path + ": the fit needs uniaxial rows at 0, 45 and 90 deg with both stress_ratio and "
+                     "r_value; missing:" + missing);
+  if (!(w.stress > 0) || !(w.r > 0))
+    throw InputError(tests.path + ": the weights of the uniaxial stress ratios and r-values must be > 0 (found " +
+                     fmt_shortest(w.stress) + " and " + fmt_shortest(w.r) +
+                     "): with either at 0 nothing fixes that half of the anisotropy");
+}
+
 Yld2004Fit fit_yld2004(const SheetTests& tests, const FitWeights& w, double a) {
   if (!(a >= 2) || !std::isfinite(a)) throw std::invalid_argument("Yld2004-18p fit: the exponent a must be >= 2");
+  require_fittable(tests, w);
   Yld2004Fit best;
   best.cost = INFINITY;
   std::mt19937 rng(2004);

@@ -72,6 +72,9 @@ struct Yld2004Fit {
   };
   std::vector<Local> local;
 };
+/// InputError (naming the file) unless the tests hold sigma and r at 0, 45 and 90 deg and the weights of both
+/// kinds are > 0: the least data that fix an orthotropic sheet's in-plane anisotropy (fit_yld2004 calls it).
+void require_fittable(const SheetTests& tests, const FitWeights& w);
 Yld2004Fit fit_yld2004(const SheetTests& tests, const FitWeights& w, double a = 8.0);
 
 /// Root mean square of the residuals p - m (ratios, r-values) of one kind of datum (NaN when there is none).

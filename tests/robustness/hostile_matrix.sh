@@ -62,6 +62,7 @@ fm good 'p_min = 0.0\np_max = 80.0\nv_min = 6.35\nv_max = 101.6\n'
 sed 's/$/\r/' model/good.toml >model/crlf.toml
 printf 'test,angle_deg,stress_ratio,r_value\r\nuniaxial,0,1.0,0.7\r\nuniaxial,45,0.98,0.6\r\nuniaxial,90,1.01,0.8\r\nbalanced_biaxial,,1.0,\r\n' >cal_crlf.csv
 printf 'test,angle_deg,stress_ratio,r_value\nuniaxial,0,1.0,0.7\nuniaxial,45,1e300,0.6\nuniaxial,90,1.01,0.8\n' >cal_huge.csv
+printf 'test,angle_deg,stress_ratio,r_value\nuniaxial,0,1.0,0.7\n' >cal_rd_only.csv
 mkdir -p runs/a
 cp "$deck" runs/a/deck.toml
 printf 'quantity,value\nwall_time,1e-300\n' >runs/a/summary.csv
@@ -155,6 +156,9 @@ expect plan "CRLF deck" 0 "1 cases" "$drawbend" plan deck_crlf.toml
 # Absurd numbers in tables: exit 2 naming file:line (exit 0 before).
 expect drawbend-deck "flow stress 1e308 MPa" 2 "curve_huge.csv:2: true stress 1e\\+300 MPa is above 100000 MPa" "$drawbend" drawbend-deck --hardening curve_huge.csv
 expect calibrate "stress ratio 1e300" 2 "cal_huge.csv:3: column 'stress_ratio': expected a yield-stress ratio to RD in \\[0.1, 10\\]" "$drawbend" calibrate cal_huge.csv --out c3
+# Too few tests for the fit: a zero residual over arbitrary anisotropy, exit 0, before.
+expect calibrate "RD test only" 2 "missing: sigma\\(45\\) r\\(45\\)" "$drawbend" calibrate cal_rd_only.csv --out c7
+expect calibrate "r-values weighted 0" 2 "weights of the uniaxial stress ratios and r-values must be > 0" "$drawbend" calibrate cal_crlf.csv --out c8 --w-r 0
 printf 'pin_diameter_mm,back_tension_N,bending_force_N\n1e300,1000,200\n25.4,1000,150\n' >ml_pin.csv
 expect model-loop "pin diameter 1e300 mm" 2 "ml_pin.csv:2: column 'pin_diameter_mm': expected a pin diameter up to 1000 mm" "$drawbend" model-loop ml_pin.csv --out m3
 expect plan "wall time 1e-300 s" 0 "warning: .*summary.csv: wall_time 1e-300 s is not a run's wall time" "$drawbend" plan runs

@@ -111,6 +111,30 @@ BOOST_AUTO_TEST_CASE(bad_rows_name_file_line_column) {
   }
 }
 
+// Too few tests for the fit (exit 2, not a zero-residual set of arbitrary anisotropy): only RD, no r at 45,
+// and the r-values weighted 0 are each refused with the file named; the full set passes the same check.
+BOOST_AUTO_TEST_CASE(too_few_tests_refused) {
+  const std::string head = "test,angle_deg,stress_ratio,r_value\n";
+  const std::pair<std::string, std::string> cases[] = {
+      {"uniaxial,0,1.0,0.5\n", "missing: sigma(45) r(45) sigma(90) r(90)"},
+      {"uniaxial,0,1.0,0.5\nuniaxial,45,0.9,\nuniaxial,90,0.95,0.6\n", "missing: r(45)"},
+  };
+  for (const auto& [rows, want] : cases) {
+    std::string msg;
+    try {
+      require_fittable(load_sheet_tests(write("few.csv", head + rows)), FitWeights{});
+    } catch (const InputError& e) {
+      msg = e.what();
+    }
+    BOOST_TEST(msg.find(want) != std::string::npos, rows << " -> " << msg);
+  }
+  const SheetTests three = load_sheet_tests(write("three.csv", head + "uniaxial,0,1.0,0.5\nuniaxial,45,0.9,0.3\nuniaxial,90,0.95,0.6\n"));
+  BOOST_CHECK_NO_THROW(require_fittable(three, FitWeights{}));
+  FitWeights no_r;
+  no_r.r = 0;
+  BOOST_CHECK_THROW(require_fittable(three, no_r), InputError);
+}
+
 BOOST_AUTO_TEST_CASE(flange_shear_ratio_closed_form) {
   const Hill48 vm = Hill48::von_mises();
   const Yld2004 iso = Yld2004::isotropic(8.0);
