@@ -6,6 +6,7 @@
 // given with --compare), and the fit's residual.  The weights are printed.
 // Sample: drawbend calibrate data/materials/aa6016_t4_esaform2021.csv --out cal
 //           --compare data/materials/aa6016_t4_yld2004_postech2022.toml
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -116,8 +117,9 @@ int calibrate_command(int argc, char** argv) {
   for (const auto& m : models)
     std::cout << "  " << m.name << ": " << fmt(m.rms(t, material::SheetDatum::uniaxial_stress), 3) << " and "
               << fmt(m.rms(t, material::SheetDatum::uniaxial_r), 3) << "\n";
-  if (t.data.size() < 14)
-    std::cout << "note: " << t.data.size() << " data for 14 free coefficients: the fit is not unique; between the "
+  const auto weighted = std::count_if(t.data.begin(), t.data.end(), [&](const auto& d) { return w.of(d.kind) > 0; });
+  if (weighted < 14)
+    std::cout << "note: " << weighted << " weighted data for 14 free coefficients: the fit is not unique; between the "
               << "tested directions the set follows its start (the best of " << fit.starts << " starts is kept).\n";
   std::cout << "c44 = c55 = 1 (and in C''): no test of the sheet loads the out-of-plane shears.\n"
             << "wrote " << out << "/material.toml and " << out << "/calibration.csv (" << fit.accepted << " of "

@@ -112,7 +112,7 @@ BOOST_AUTO_TEST_CASE(bad_rows_name_file_line_column) {
 }
 
 // Too few tests for the fit (exit 2, not a zero-residual set of arbitrary anisotropy): only RD, no r at 45,
-// and the r-values weighted 0 are each refused with the file named; the full set passes the same check.
+// and the r-values weighted 0 are each refused with the file named; sigma and r at 0/45/90 pass.
 BOOST_AUTO_TEST_CASE(too_few_tests_refused) {
   const std::string head = "test,angle_deg,stress_ratio,r_value\n";
   const std::pair<std::string, std::string> cases[] = {
