@@ -318,22 +318,11 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec) {
   std::vector<int> rows;
   for (size_t i = 0; i < d.rows.size(); ++i)
     if (!std::isnan(f.b0[d.rows[i].pin])) rows.push_back(static_cast<int>(i));
-  auto resid = [&](const Eigen::VectorXd& t) {
-    Fit g = f;
-    for (size_t k = 0; k < pins.size(); ++k) {
-      g.b0[pins[k]] = t[k];
-      if (linear) g.b1[pins[k]] = t[pins.size() + k];
-    }
-    const Eigen::VectorXd tf = t.tail(L.n);
-    Eigen::VectorXd r(rows.size());
-    for (size_t k = 0; k < rows.size(); ++k) r[k] = d.rows[rows[k]].y - predict_row(d, g, L, tf, rows[k], nullptr);
-    return r;
-  };
-  // One row at t (the sparse Jacobian): the bending lines and friction
-  // parameters of the last t kept, not copied per row.
+  // The model at t: f with t's bending lines (g) and friction parameters (tf),
+  // kept for the last t (not a copy of f per residual or row).
   Fit g = f;
   Eigen::VectorXd last, tf;
-  auto row = [&](const Eigen::VectorXd& t, int k) {
+  auto at = [&](const Eigen::VectorXd& t) {
     if (last.size() != t.size() || !(last.array() == t.array()).all()) {
       last = t;
       for (size_t q = 0; q < pins.size(); ++q) {
@@ -342,6 +331,16 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec) {
       }
       tf = t.tail(L.n);
     }
+  };
+  auto resid = [&](const Eigen::VectorXd& t) {
+    at(t);
+    Eigen::VectorXd r(rows.size());
+    for (size_t k = 0; k < rows.size(); ++k) r[k] = d.rows[rows[k]].y - predict_row(d, g, L, tf, rows[k], nullptr);
+    return r;
+  };
+  // One row at t (the sparse Jacobian).
+  auto row = [&](const Eigen::VectorXd& t, int k) {
+    at(t);
     return d.rows[rows[k]].y - predict_row(d, g, L, tf, rows[k], nullptr);
   };
   // Each row reads its pin's bending line and its friction parameters.
