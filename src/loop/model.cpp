@@ -271,7 +271,10 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   auto row = [&](const Eigen::VectorXd& t, int k) { return d.rows[rows[k]].y - predict_row(d, f, L, t, rows[k], nullptr); };
   // Which parameters each row may read: the Jacobians are evaluated there only.
   RowReads reads(n);
-  for (int k = 0; k < n; ++k) detail::row_reads(d, f, L, rows[k], reads[k]);
+  for (int k = 0; k < n; ++k) {
+    reads[k].reserve(8);  // one allocation per row for the usual few columns, not one per growth
+    detail::row_reads(d, f, L, rows[k], reads[k]);
+  }
   Eigen::MatrixXd J;
   double sse = 0;
   if (n > 0) sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads);
@@ -349,6 +352,7 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec) {
   RowReads reads(rows.size());
   for (size_t k = 0; k < rows.size(); ++k) {
     const int q = pin_param[d.rows[rows[k]].pin];
+    reads[k].reserve(8);
     reads[k].push_back(q);
     if (linear) reads[k].push_back(static_cast<int>(pins.size()) + q);
     const size_t at = reads[k].size();
