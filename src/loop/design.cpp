@@ -114,24 +114,31 @@ std::vector<int> Design::groups(const std::string& by, int* n) const {
 
 std::vector<double> Design::values(const std::string& column) const {
   std::vector<double> x(rows.size(), 0.0);
+  // Which column, decided once (not per row).
+  enum class C { time, sliding, back, speed, direction, pin_d, inv_r, extra };
+  const C c = column == "time_s" ? C::time : column == "sliding_distance_mm" ? C::sliding
+            : column == "back_tension_N" ? C::back : column == "speed_mm_s" ? C::speed
+            : column == "direction_deg" ? C::direction : column == "pin_diameter_mm" ? C::pin_d
+            : column == "inv_R_per_mm" ? C::inv_r : C::extra;
+  const int k = c == C::extra ? data->extra_index(column) : -1;
+  if (c == C::extra && k < 0 && !rows.empty()) throw InputError("no numeric column '" + column + "' for a linear term");
   for (size_t i = 0; i < rows.size(); ++i) {
     const Sample& s = data->rows[i];
     double v;
-    if (column == "time_s") v = s.time_s;
-    else if (column == "sliding_distance_mm") v = s.sliding_mm;
-    else if (column == "back_tension_N") v = s.back_tension_N;
-    else if (column == "speed_mm_s") v = s.speed_mm_s;
-    else if (column == "direction_deg") v = s.direction_deg;
-    else if (column == "pin_diameter_mm") v = s.pin_d_mm;
-    else if (column == "inv_R_per_mm") v = 2 / s.pin_d_mm;
-    else {
-      const int k = data->extra_index(column);
-      if (k < 0) throw InputError("no numeric column '" + column + "' for a linear term");
-      try {
-        v = std::stod(s.extra[k]);
-      } catch (const std::exception&) {
-        throw InputError("column '" + column + "' is not numeric: no linear term");
-      }
+    switch (c) {
+      case C::time: v = s.time_s; break;
+      case C::sliding: v = s.sliding_mm; break;
+      case C::back: v = s.back_tension_N; break;
+      case C::speed: v = s.speed_mm_s; break;
+      case C::direction: v = s.direction_deg; break;
+      case C::pin_d: v = s.pin_d_mm; break;
+      case C::inv_r: v = 2 / s.pin_d_mm; break;
+      default:
+        try {
+          v = std::stod(s.extra[k]);
+        } catch (const std::exception&) {
+          throw InputError("column '" + column + "' is not numeric: no linear term");
+        }
     }
     x[i] = v;
   }

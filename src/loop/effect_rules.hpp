@@ -257,21 +257,20 @@ struct HasReads<R, std::void_t<decltype(R::reads(std::declval<const EffectArgs&>
 template <class R>
 void rule_reads(const EffectArgs& a, std::vector<int>& out) {
   const int n = R::count(a.d, a.e);
-  const size_t at = out.size();
-  out.resize(at + static_cast<size_t>(n));
-  int m = n;
   if constexpr (HasReads<R>::value) {
-    m = R::reads(a, out.data() + at);
+    // The claim in a scratch buffer of the rule's count (out grew to the count
+    // and back for every row: an allocation per row for a 42-level factor).
+    thread_local std::vector<int> claim;
+    claim.resize(static_cast<size_t>(std::max(n, 1)));
+    const int m = R::reads(a, claim.data());
     bool inside = m >= 0 && m <= n;  // a claim outside the rule's own block is not believed
-    for (int j = 0; inside && j < m; ++j) inside = out[at + j] >= 0 && out[at + j] < n;
-    if (!inside) {
-      m = n;
-      for (int j = 0; j < n; ++j) out[at + j] = j;
+    for (int j = 0; inside && j < m; ++j) inside = claim[j] >= 0 && claim[j] < n;
+    if (inside) {
+      out.insert(out.end(), claim.begin(), claim.begin() + m);
+      return;
     }
-  } else {
-    for (int j = 0; j < n; ++j) out[at + j] = j;
   }
-  out.resize(at + static_cast<size_t>(m));
+  for (int j = 0; j < n; ++j) out.push_back(j);
 }
 
 /// Calls f(Rule{}) with the rule of kind k: the one switch over EffectKind

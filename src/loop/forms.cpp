@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 
@@ -62,6 +63,25 @@ std::vector<std::string> by_inputs(const Design& d) {
     if (seen.size() >= 2) out.push_back(by);
   }
   return out;
+}
+
+// The fits' arithmetic of model s as a key (TrialCache): two models with the
+// same key give the same cross-validation and joint fit bit for bit.  A library
+// effect whose rule reads no column of its own (effect_rules.hpp: pressure_mu,
+// stribeck, depletion, the direction effects, pin_surface, bending_tension) is
+// the same model whichever candidate named it, and drift is generic_linear
+// (both the rule Linear on the column's z-score, model.cpp).
+std::string fits_key(const ModelSpec& s) {
+  std::string k = s.bending_linear ? "1" : "0";
+  for (const auto& e : s.effects) {
+    const bool own_column = generic_kind(e.kind);
+    const EffectKind kind = e.kind == EffectKind::drift ? EffectKind::generic_linear : e.kind;
+    char num[96];
+    std::snprintf(num, sizeof num, "|%d,%a,%d,%d,%d,%d,", static_cast<int>(kind), e.lambda_mm, e.n_levels, e.n_groups,
+                  e.cell, e.n_basis);
+    k += num + std::to_string(e.by.size()) + ":" + e.by + "," + (own_column ? e.variable : "");
+  }
+  return k;
 }
 
 }  // namespace
@@ -145,7 +165,7 @@ double mse_diff_se(const CvResult& a, const CvResult& b, const Folds& f) {
 std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
                                  const CvResult& cur, const JointFit& cur_joint, double thr, double min_gain_N,
                                  const std::function<void(const std::string&)>& progress, const std::string& cell_by,
-                                 int cell_group) {
+                                 int cell_group, TrialCache* cache) {
   struct Part {
     EffectKind k;
     std::string by;
@@ -243,8 +263,16 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
     }
     t.channel = bend && fric ? "both" : bend ? "bending" : "friction";
     if (progress) progress("  " + c.name + ": trying " + t.name);
-    t.cv = cross_validate(d, t.spec, folds);
-    t.joint = fit_joint(d, t.spec);
+    const std::string key = cache ? fits_key(t.spec) : std::string();
+    const auto done = cache ? cache->fits.find(key) : decltype(cache->fits.end()){};
+    if (cache && done != cache->fits.end()) {
+      t.cv = done->second.first;
+      t.joint = done->second.second;
+    } else {
+      t.cv = cross_validate(d, t.spec, folds);
+      t.joint = fit_joint(d, t.spec);
+      if (cache) cache->fits.emplace(key, std::make_pair(t.cv, t.joint));
+    }
     t.q = t.joint.p - cur_joint.p;
     t.p_value = f_test(cur_joint, t.joint);
     const double gain = std::sqrt(std::max(0.0, cur.rms * cur.rms - t.cv.rms * t.cv.rms));

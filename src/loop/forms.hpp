@@ -28,7 +28,9 @@
 // difference of the two, from the per-test sums of squared held-out residuals);
 // so the library's physical forms are members of the family, not a gate before it.
 #include <functional>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "loop/candidates.hpp"
@@ -46,6 +48,16 @@ struct FormTrial {
   bool passed = false;
 };
 
+/// Cross-validations and joint fits already made by try_forms in one run of
+/// the loop (the same data and folds), by the model's arithmetic: a form
+/// whose model computes the same as one tried before reuses its results
+/// instead of repeating them bit for bit (a library effect that reads no
+/// column of its own, e.g. pressure_mu named by avg_pressure_MPa and again by
+/// inv_R_per_mm; drift and generic_linear of one column).
+struct TrialCache {
+  std::map<std::string, std::pair<CvResult, JointFit>> fits;
+};
+
 /// Nested-model F test on the joint fits (bending and friction together).
 double f_test(const JointFit& a, const JointFit& b);
 
@@ -56,11 +68,12 @@ ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const s
 
 /// Every applicable form for candidate c, each cross-validated and tested.
 /// cell_by / cell_group (the screen's strongest one-group probe, -1: none)
-/// add the forms confined to that one group of a model input.
+/// add the forms confined to that one group of a model input.  cache (may be
+/// null): the results of earlier calls on the same data and folds.
 std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
                                  const CvResult& cur, const JointFit& cur_joint, double threshold, double min_gain_N,
                                  const std::function<void(const std::string&)>& progress,
-                                 const std::string& cell_by = "", int cell_group = -1);
+                                 const std::string& cell_by = "", int cell_group = -1, TrialCache* cache = nullptr);
 
 /// Index of the form kept (simplest within one standard error of the best
 /// among those passed), -1 when none passed.

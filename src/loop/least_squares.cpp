@@ -59,27 +59,32 @@ double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::
         else
           for (int j = 0; j < p; ++j) structure[j].push_back(k);
       for (auto& s : structure) {
-        std::sort(s.begin(), s.end());
+        if (!std::is_sorted(s.begin(), s.end())) std::sort(s.begin(), s.end());  // rows ascending: usually sorted
         s.erase(std::unique(s.begin(), s.end()), s.end());
       }
     }
   }
   bool use_structure = !structure.empty();
+  // The entries of J outside the rows evaluated are zero: set once, on the
+  // first Jacobian (the structure's, or the dense one), and never written
+  // since (the pattern is within the structure, and both are within what the
+  // first Jacobian wrote or zeroed), so each later Jacobian writes its rows only.
+  bool zeroed = false;
   auto jacobian = [&]() {
     long long evals = 0;
+    if (!zeroed && (use_structure || !support.empty())) J.setZero();
+    zeroed = true;
     for (int j = 0; j < p; ++j) {
       Eigen::VectorXd t2 = th;
       const double h = 1e-7 * std::max(1.0, std::abs(th[j]));
       t2[j] += h;
       if (support.empty() && use_structure) {  // the dense column, on the rows that may read theta_j
-        J.col(j).setZero();
         for (int k : structure[j]) J(k, j) = (r[k] - row(t2, k)) / h;
         evals += static_cast<long long>(structure[j].size());
       } else if (support.empty()) {
         J.col(j) = (r - resid(t2)) / h;  // d(prediction)/d(theta)
         evals += n;
       } else {
-        J.col(j).setZero();
         for (int k : support[j]) J(k, j) = (r[k] - row(t2, k)) / h;
         evals += static_cast<long long>(support[j].size());
       }

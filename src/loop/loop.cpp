@@ -235,6 +235,7 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
   spec.bending_linear = o.bending_linear;
   progress(o, "base model: cross-validation (" + std::to_string(d.rows.size()) + " rows)");
   FitMemo memo(d, res.folds);
+  TrialCache trials_done;  // the forms' fits, by their arithmetic (forms.hpp)
   const CvResult base_cv = memo.cv(spec);
   CvResult cur = base_cv;
   Fit cur_fit = memo.fit(spec);
@@ -269,7 +270,8 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
       // Candidate c given every form; the best kept form over the candidates wins.
       const auto consider = [&](const CandidateResult& c, const Candidate& cand, bool screened) {
         const auto trials =
-            try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by, c.cell_group);
+            try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by, c.cell_group,
+                      &trials_done);
         const int keep = choose_form(trials, res.folds);
         Step s;
         s.variable = c.name;

@@ -83,6 +83,7 @@ void nonfinite_extras(Dataset& d) {
   for (size_t e = 0; e < d.extra_columns.size(); ++e) {
     bool numeric = true, nonfinite = false;
     for (const auto& s : d.rows) {
+      if (!numeric) break;  // a text column: nothing to drop (and no throw per row)
       const std::string t = trim(s.extra[e]);
       if (t.empty()) continue;
       size_t used = 0;

@@ -271,7 +271,10 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   auto row = [&](const Eigen::VectorXd& t, int k) { return d.rows[rows[k]].y - predict_row(d, f, L, t, rows[k], nullptr); };
   // Which parameters each row may read: the Jacobians are evaluated there only.
   RowReads reads(n);
-  for (int k = 0; k < n; ++k) detail::row_reads(d, f, L, rows[k], reads[k]);
+  for (int k = 0; k < n; ++k) {
+    reads[k].reserve(8);  // one allocation per row for the usual few columns, not one per growth
+    detail::row_reads(d, f, L, rows[k], reads[k]);
+  }
   Eigen::MatrixXd J;
   double sse = 0;
   if (n > 0) sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads);
@@ -318,22 +321,11 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec) {
   std::vector<int> rows;
   for (size_t i = 0; i < d.rows.size(); ++i)
     if (!std::isnan(f.b0[d.rows[i].pin])) rows.push_back(static_cast<int>(i));
-  auto resid = [&](const Eigen::VectorXd& t) {
-    Fit g = f;
-    for (size_t k = 0; k < pins.size(); ++k) {
-      g.b0[pins[k]] = t[k];
-      if (linear) g.b1[pins[k]] = t[pins.size() + k];
-    }
-    const Eigen::VectorXd tf = t.tail(L.n);
-    Eigen::VectorXd r(rows.size());
-    for (size_t k = 0; k < rows.size(); ++k) r[k] = d.rows[rows[k]].y - predict_row(d, g, L, tf, rows[k], nullptr);
-    return r;
-  };
-  // One row at t (the sparse Jacobian): the bending lines and friction
-  // parameters of the last t kept, not copied per row.
+  // The model at t: f with t's bending lines (g) and friction parameters (tf),
+  // kept for the last t (not a copy of f per residual or row).
   Fit g = f;
   Eigen::VectorXd last, tf;
-  auto row = [&](const Eigen::VectorXd& t, int k) {
+  auto at = [&](const Eigen::VectorXd& t) {
     if (last.size() != t.size() || !(last.array() == t.array()).all()) {
       last = t;
       for (size_t q = 0; q < pins.size(); ++q) {
@@ -342,6 +334,16 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec) {
       }
       tf = t.tail(L.n);
     }
+  };
+  auto resid = [&](const Eigen::VectorXd& t) {
+    at(t);
+    Eigen::VectorXd r(rows.size());
+    for (size_t k = 0; k < rows.size(); ++k) r[k] = d.rows[rows[k]].y - predict_row(d, g, L, tf, rows[k], nullptr);
+    return r;
+  };
+  // One row at t (the sparse Jacobian).
+  auto row = [&](const Eigen::VectorXd& t, int k) {
+    at(t);
     return d.rows[rows[k]].y - predict_row(d, g, L, tf, rows[k], nullptr);
   };
   // Each row reads its pin's bending line and its friction parameters.
@@ -350,6 +352,7 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec) {
   RowReads reads(rows.size());
   for (size_t k = 0; k < rows.size(); ++k) {
     const int q = pin_param[d.rows[rows[k]].pin];
+    reads[k].reserve(8);
     reads[k].push_back(q);
     if (linear) reads[k].push_back(static_cast<int>(pins.size()) + q);
     const size_t at = reads[k].size();

@@ -328,6 +328,16 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     size_t kmax = 1;
     for (const auto& g : groups) kmax = std::max(kmax, g.size());
     const FastMod mod(kmax);  // mod(rng(), k) == rng() % k, without the division
+    // A group of consecutive units (rows of a test, in file order) is shuffled
+    // in place without reading its unit list: the same draws, the same swaps.
+    // Its first unit and size in flat arrays (read for every permutation; the
+    // groups' own lists are scattered over the heap and missed the cache).
+    std::vector<char> run(groups.size(), 1);
+    std::vector<int> gfirst(groups.size()), gsize(groups.size());
+    for (size_t gi = 0; gi < groups.size(); ++gi) {
+      gfirst[gi] = groups[gi][0], gsize[gi] = static_cast<int>(groups[gi].size());
+      for (size_t k = 1; k < groups[gi].size(); ++k) run[gi] = run[gi] && groups[gi][k] == groups[gi][0] + static_cast<int>(k);
+    }
     {
       Mt64 prng(seed + 7919 * ci + 104729);
       std::vector<int> pp(U);
@@ -339,8 +349,15 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
       for (int j0 = 0; j0 < P; j0 += kLanes) {
         const int used = std::min(kLanes, P - j0);
         for (int i = 0; i < used; ++i) {
-          for (const auto& g : groups)
+          for (size_t gi = 0; gi < groups.size(); ++gi) {
+            if (run[gi]) {
+              int* q = pp.data() + gfirst[gi];
+              for (size_t k = gsize[gi]; k > 1; --k) std::swap(q[k - 1], q[mod(prng(), k)]);
+              continue;
+            }
+            const auto& g = groups[gi];
             for (size_t k = g.size(); k > 1; --k) std::swap(pp[g[k - 1]], pp[g[mod(prng(), k)]]);
+          }
           for (size_t u = 0; u < U; ++u) qz[u * kLanes + i] = xz[pp[u]], ql[u * kLanes + i] = xl[pp[u]];
         }
         fill_lanes(qz, ql, used);
@@ -429,21 +446,16 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     std::vector<double> pz(U * kLanes);
     std::vector<int> pl(U * kLanes);
     const int cap = std::max(1, permutations);
-    // A group of consecutive units (rows of a test, in file order) is shuffled
-    // in place without reading its unit list: the same draws, the same swaps.
-    std::vector<char> run(groups.size(), 1);
-    for (size_t gi = 0; gi < groups.size(); ++gi)
-      for (size_t k = 1; k < groups[gi].size(); ++k) run[gi] = run[gi] && groups[gi][k] == groups[gi][0] + static_cast<int>(k);
     for (int batch = 100; b < cap; batch = std::min(cap - b, 2 * batch)) {
       for (int j = 0; j < batch; j += kLanes) {  // kLanes permutations per pass over the units
         const int used = std::min(kLanes, batch - j);
         for (int i = 0; i < used; ++i) {
           for (size_t gi = 0; gi < groups.size(); ++gi) {  // Fisher-Yates within the group
-            const auto& g = groups[gi];
             if (run[gi]) {
-              int* q = perm.data() + g[0];
-              for (size_t k = g.size(); k > 1; --k) std::swap(q[k - 1], q[mod(rng(), k)]);
+              int* q = perm.data() + gfirst[gi];
+              for (size_t k = gsize[gi]; k > 1; --k) std::swap(q[k - 1], q[mod(rng(), k)]);
             } else {
+              const auto& g = groups[gi];
               for (size_t k = g.size(); k > 1; --k) std::swap(perm[g[k - 1]], perm[g[mod(rng(), k)]]);
             }
           }
