@@ -114,6 +114,7 @@ std::vector<int> Design::groups(const std::string& by, int* n) const {
 
 std::vector<double> Design::values(const std::string& column) const {
   std::vector<double> x(rows.size(), 0.0);
+  std::vector<size_t> empty;  // rows with an empty cell in the column (missing values)
   for (size_t i = 0; i < rows.size(); ++i) {
     const Sample& s = data->rows[i];
     double v;
@@ -127,6 +128,10 @@ std::vector<double> Design::values(const std::string& column) const {
     else {
       const int k = data->extra_index(column);
       if (k < 0) throw InputError("no numeric column '" + column + "' for a linear term");
+      if (s.extra[k].empty()) {
+        empty.push_back(i);
+        continue;
+      }
       try {
         v = std::stod(s.extra[k]);
       } catch (const std::exception&) {
@@ -134,6 +139,19 @@ std::vector<double> Design::values(const std::string& column) const {
       }
     }
     x[i] = v;
+  }
+  // Missing values (as the screen reads them: make_candidates) take the mean of
+  // the column's values, so an effect's term there is its value at the centre
+  // and the rows with a value carry its fit; a column with no value has none.
+  if (!empty.empty()) {
+    if (empty.size() == rows.size()) throw InputError("column '" + column + "' has no value: no linear term");
+    double m = 0;
+    size_t j = 0;
+    for (size_t i = 0; i < rows.size(); ++i)
+      if (j < empty.size() && empty[j] == i) ++j;
+      else m += x[i];
+    m /= static_cast<double>(rows.size() - empty.size());
+    for (size_t i : empty) x[i] = m;
   }
   return x;
 }
