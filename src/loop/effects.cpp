@@ -69,8 +69,8 @@ std::string effect_meaning(EffectKind k) {
       return "generic saturating exponential: mu (1 + beta (1 - exp(-(x - x_min)/lambda))), lambda chosen on a "
              "grid; no physics claimed";
     case EffectKind::generic_step:
-      return "generic step: mu (1 + beta [x > c]), the threshold c chosen on a grid of the column's deciles; no "
-             "physics claimed";
+      return "generic step: mu (1 + beta [x > c]), the threshold c chosen on a grid of the column's quantiles "
+             "(deciles, then 80-quantiles near the best); no physics claimed";
     case EffectKind::generic_linear_by:
       return "generic effect acting differently per group of a model input: mu (1 + beta_g z), one slope per "
              "group (pin, speed, direction or lubricant); no physics claimed";

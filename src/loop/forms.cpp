@@ -125,21 +125,27 @@ ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const s
       if (r < best) best = r, e.lambda_mm = frac * (hi - lo);
     }
   }
-  if (k == EffectKind::generic_step) {  // threshold: midway between the column's values at its deciles
+  if (k == EffectKind::generic_step) {
+    // Threshold: midway between the column's value at a quantile and the next
+    // value; the deciles first, then the 80-quantiles between the best
+    // decile's neighbours (a step between two deciles is placed to 1/80).
     std::vector<double> x = d.values(variable);
     std::sort(x.begin(), x.end());
     double best = INFINITY;
-    double last = -INFINITY;
-    for (int q = 1; q <= 9; ++q) {
-      const size_t at = x.size() * q / 10;
+    std::set<double> tried;
+    auto at_quantile = [&](int q, int of) {
+      const size_t at = x.size() * q / of;
       const auto above = std::upper_bound(x.begin(), x.end(), x[at]);
-      if (above == x.end()) continue;
-      const double c = 0.5 * (x[at] + *above);
-      if (c == last) continue;
-      last = c;
-      const double r = rss(c);
+      if (above == x.end() || !tried.insert(0.5 * (x[at] + *above)).second) return false;
+      const double c = 0.5 * (x[at] + *above), r = rss(c);
       if (r < best) best = r, e.lambda_mm = c;
-    }
+      return r <= best;
+    };
+    int qb = 0;
+    for (int q = 1; q <= 9; ++q)
+      if (at_quantile(q, 10)) qb = q;
+    if (qb > 0)
+      for (int q = 8 * (qb - 1) + 1; q < 8 * (qb + 1) && q < 80; ++q) at_quantile(q, 80);
   }
   t.effects.push_back(e);
   return t;

@@ -8,7 +8,7 @@
 //              categorical: group factor, group factor per pin / speed /
 //              direction / lubricant group; numeric: linear, saturating tanh,
 //              logarithmic (positive columns), saturating exponential (lambda
-//              on a grid), a step (threshold on a grid of deciles), levels
+//              on a grid), a step (threshold on a grid of quantiles), levels
 //              (3-8 distinct values), linear per pin / speed / direction /
 //              lubricant group, a smooth of any shape (natural cubic spline,
 //              3, 5 or 8 dof, and 3 or 5 dof per group of those inputs;

@@ -26,8 +26,9 @@
 //  - The step form (EffectKind::generic_step, forms.cpp with_effect): noise-free
 //    rope-formula rows with mu = 0.1 (1 + 0.3 [gauge > 6.5]), gauge 1..10 one
 //    value per test: the threshold grid (midway between the deciles' values and
-//    the next value) holds 6.5, where the fit is exact, so the threshold chosen
-//    is 6.5, beta 0.3 and the residual sum of squares 0 (1e-12).
+//    the next value, then the 80-quantiles near the best) holds 6.5, where the
+//    fit is exact, so the threshold chosen is 6.5, beta 0.3 and the residual
+//    sum of squares 0 (1e-12).
 //  - Missing values (Design::values): a numeric column with empty cells gives
 //    the empty rows the mean of the others (values 2, 4, 9 and two empty:
 //    the empty ones read 5); a column of empty cells only is an InputError.
