@@ -58,7 +58,10 @@
 // probes whose ESS does not change under permutation are dropped.  The
 // permutation test permutes the variable (all probes at once) within blocks:
 // test-level variables (constant within each test) between the tests of a
-// block, row-level variables between the rows of a test.  The permutation
+// block, row-level variables between the rows of a test; a numeric row-level
+// column (with quantile bins) on both levels: its test means between the
+// tests of a block and its deviations from them within each test (a column
+// that accumulates over the tests has its bulk between them).  The permutation
 // distribution of the maximum accounts for the family, so the candidate's
 // p = (1 + #{T* >= T}) / (1 + B) is compared with alpha / (number of
 // candidates) as before.  Its held-out gain (cv_reduction) is the best of the
@@ -122,7 +125,7 @@ struct CandidateResult {
   int dof = 0;
   double stat = 0, p_value = 1, cv_reduction = 0;
   bool significant = false;
-  std::string permuted;  ///< "between tests", "within tests" or "random effect (F test)"
+  std::string permuted;  ///< "between tests", "within tests", "within and between tests" or "random effect (F test)"
   std::string decision;  ///< significant, not significant, undecided
   int n_perm = 0;        ///< permutations used (sequential)
   double sd_between = 0; ///< identity variables: between-test standard deviation [N]

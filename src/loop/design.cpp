@@ -122,6 +122,7 @@ std::vector<double> Design::values(const std::string& column) const {
             : column == "inv_R_per_mm" ? C::inv_r : C::extra;
   const int k = c == C::extra ? data->extra_index(column) : -1;
   if (c == C::extra && k < 0 && !rows.empty()) throw InputError("no numeric column '" + column + "' for a linear term");
+  std::vector<size_t> empty;  // rows with an empty cell in the column (missing values)
   for (size_t i = 0; i < rows.size(); ++i) {
     const Sample& s = data->rows[i];
     double v;
@@ -134,6 +135,10 @@ std::vector<double> Design::values(const std::string& column) const {
       case C::pin_d: v = s.pin_d_mm; break;
       case C::inv_r: v = 2 / s.pin_d_mm; break;
       default:
+        if (s.extra[k].empty()) {
+          empty.push_back(i);
+          continue;
+        }
         try {
           v = std::stod(s.extra[k]);
         } catch (const std::exception&) {
@@ -141,6 +146,19 @@ std::vector<double> Design::values(const std::string& column) const {
         }
     }
     x[i] = v;
+  }
+  // Missing values (as the screen reads them: make_candidates) take the mean of
+  // the column's values, so an effect's term there is its value at the centre
+  // and the rows with a value carry its fit; a column with no value has none.
+  if (!empty.empty()) {
+    if (empty.size() == rows.size()) throw InputError("column '" + column + "' has no value: no linear term");
+    double m = 0;
+    size_t j = 0;
+    for (size_t i = 0; i < rows.size(); ++i)
+      if (j < empty.size() && empty[j] == i) ++j;
+      else m += x[i];
+    m /= static_cast<double>(rows.size() - empty.size());
+    for (size_t i : empty) x[i] = m;
   }
   return x;
 }

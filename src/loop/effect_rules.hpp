@@ -63,13 +63,14 @@ struct DirectionHarmonic : OneParam {
   static void name(const Design&, const Effect&, const Names&, int s, Names& n) { n[s] = "beta sin^2(2 phi)"; }
 };
 
-/// drift, generic_linear, generic_log and generic_exp: mu (1 + beta u), u the
-/// effect's feature per row (fit_model: z-score, z-score of log, or 1 - exp(-(x - x_min)/lambda)).
+/// drift, generic_linear, generic_log, generic_exp and generic_step: mu (1 + beta u), u the effect's feature
+/// per row (fit_model: z-score, z-score of log, 1 - exp(-(x - x_min)/lambda), or [x > c]).
 struct Linear : OneParam {
   static void apply(const EffectArgs& a, Terms& t) { t.factor += a.th[0] * a.f.drift_z[a.k][a.i]; }
   static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
     n[s] = e.kind == EffectKind::generic_log ? "beta per SD of log " + e.variable
            : e.kind == EffectKind::generic_exp ? "beta (1 - exp(-(x - x_min)/" + fmt(e.lambda_mm, 3) + ")) of " + e.variable
+           : e.kind == EffectKind::generic_step ? "beta [x > " + fmt(e.lambda_mm, 4) + "] of " + e.variable
                                                 : "beta per SD of " + e.variable;
   }
 };
@@ -291,7 +292,8 @@ decltype(auto) visit_rule(EffectKind k, F&& f) {
     case EffectKind::direction_level: return f(DirectionLevel{});
     case EffectKind::direction_fourier: return f(DirectionFourier{});
     case EffectKind::generic_log:
-    case EffectKind::generic_exp: return f(Linear{});
+    case EffectKind::generic_exp:
+    case EffectKind::generic_step: return f(Linear{});
     case EffectKind::generic_linear_by: return f(LinearBy{});
     case EffectKind::categorical_by: return f(CategoricalBy{});
     case EffectKind::bending_linear: break;  // on the bending lines (model.cpp), no friction parameter

@@ -20,6 +20,7 @@ std::string effect_name(EffectKind k) {
     case EffectKind::direction_fourier: return "direction_fourier";
     case EffectKind::generic_log: return "generic_log";
     case EffectKind::generic_exp: return "generic_saturating_exp";
+    case EffectKind::generic_step: return "generic_step";
     case EffectKind::generic_linear_by: return "generic_linear_by_group";
     case EffectKind::categorical_by: return "group_factor_by_group";
     case EffectKind::bending_linear: return "bending_linear";
@@ -67,6 +68,9 @@ std::string effect_meaning(EffectKind k) {
     case EffectKind::generic_exp:
       return "generic saturating exponential: mu (1 + beta (1 - exp(-(x - x_min)/lambda))), lambda chosen on a "
              "grid; no physics claimed";
+    case EffectKind::generic_step:
+      return "generic step: mu (1 + beta [x > c]), the threshold c chosen on a grid of the column's quantiles "
+             "(deciles, then 80-quantiles near the best); no physics claimed";
     case EffectKind::generic_linear_by:
       return "generic effect acting differently per group of a model input: mu (1 + beta_g z), one slope per "
              "group (pin, speed, direction or lubricant); no physics claimed";

@@ -29,12 +29,13 @@ enum class EffectKind {
   generic_smooth,      ///< mu * (1 + sum_j beta_j B_j(x)): natural cubic spline of n_basis dof (per group with `by`)
   force_offset,        ///< outlet force + sum_j c_j B_j(x) on every row, rotating included (levels: one c per level
                        ///< but the first; numeric: spline basis of n_basis dof); per pin with by = "pin"
+  generic_step,        ///< mu * (1 + beta [x > c]): a step at the threshold c (Effect::lambda_mm) chosen on a grid
 };
 
 struct Effect {
   EffectKind kind = EffectKind::pressure_mu;
   std::string variable;  ///< the column a drift effect uses
-  double lambda_mm = 0;  ///< depletion length (chosen on a grid)
+  double lambda_mm = 0;  ///< depletion length, generic_exp length, generic_step threshold (chosen on a grid)
   int n_levels = 0;      ///< categorical: number of levels of the column
   /// generic_linear_by / categorical_by: the model input whose groups get their
   /// own parameters ("pin", "speed_mm_s", "direction_deg" or "lubricant").

@@ -19,7 +19,7 @@ bool generic_kind(EffectKind k) {
   return k == EffectKind::drift || k == EffectKind::generic_linear || k == EffectKind::generic_saturating ||
          k == EffectKind::categorical || k == EffectKind::generic_log || k == EffectKind::generic_exp ||
          k == EffectKind::generic_linear_by || k == EffectKind::categorical_by || k == EffectKind::bending_linear ||
-         k == EffectKind::generic_smooth || k == EffectKind::force_offset;
+         k == EffectKind::generic_smooth || k == EffectKind::force_offset || k == EffectKind::generic_step;
 }
 
 bool applicable(const Design& d, const ModelSpec& s, EffectKind k, const std::string& var) {
@@ -35,7 +35,7 @@ bool applicable(const Design& d, const ModelSpec& s, EffectKind k, const std::st
   if (k == EffectKind::direction_fourier && d.n_dir_params < 2) return false;
   if (k == EffectKind::generic_linear || k == EffectKind::generic_saturating || k == EffectKind::drift ||
       k == EffectKind::generic_log || k == EffectKind::generic_exp || k == EffectKind::generic_linear_by ||
-      k == EffectKind::bending_linear || k == EffectKind::generic_smooth) {
+      k == EffectKind::bending_linear || k == EffectKind::generic_smooth || k == EffectKind::generic_step) {
     try {
       const std::vector<double> x = d.values(var);
       double lo = INFINITY, hi = -INFINITY;
@@ -51,10 +51,11 @@ bool applicable(const Design& d, const ModelSpec& s, EffectKind k, const std::st
   return true;
 }
 
-// Groups of a model input with at least two groups among the fixed-pin rows.
+// Groups of a model input with at least two groups among the fixed-pin rows
+// (the inputs the screen's per-input probes use: screen_context in loop.cpp).
 std::vector<std::string> by_inputs(const Design& d) {
   std::vector<std::string> out;
-  for (const std::string by : {"pin", "speed_mm_s", "direction_deg"}) {
+  for (const std::string by : {"pin", "speed_mm_s", "direction_deg", "lubricant"}) {
     int n = 0;
     const std::vector<int> g = d.groups(by, &n);
     std::set<int> seen;
@@ -144,6 +145,28 @@ ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const s
       if (r < best) best = r, e.lambda_mm = frac * (hi - lo);
     }
   }
+  if (k == EffectKind::generic_step) {
+    // Threshold: midway between the column's value at a quantile and the next
+    // value; the deciles first, then the 80-quantiles between the best
+    // decile's neighbours (a step between two deciles is placed to 1/80).
+    std::vector<double> x = d.values(variable);
+    std::sort(x.begin(), x.end());
+    double best = INFINITY;
+    std::set<double> tried;
+    auto at_quantile = [&](int q, int of) {
+      const size_t at = x.size() * q / of;
+      const auto above = std::upper_bound(x.begin(), x.end(), x[at]);
+      if (above == x.end() || !tried.insert(0.5 * (x[at] + *above)).second) return false;
+      const double c = 0.5 * (x[at] + *above), r = rss(c);
+      if (r < best) best = r, e.lambda_mm = c;
+      return r <= best;
+    };
+    int qb = 0;
+    for (int q = 1; q <= 9; ++q)
+      if (at_quantile(q, 10)) qb = q;
+    if (qb > 0)
+      for (int q = 8 * (qb - 1) + 1; q < 8 * (qb + 1) && q < 80; ++q) at_quantile(q, 80);
+  }
   t.effects.push_back(e);
   return t;
 }
@@ -194,23 +217,25 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
       if (c.levels.size() <= 4) add(EffectKind::force_offset, "pin");
     } else {
       for (EffectKind k : {EffectKind::generic_linear, EffectKind::generic_saturating, EffectKind::generic_log,
-                           EffectKind::generic_exp})
+                           EffectKind::generic_exp, EffectKind::generic_step})
         add(k);
       std::set<double> distinct;
       for (double v : c.x)
         if (std::isfinite(v)) distinct.insert(v);
       if (distinct.size() >= 3 && distinct.size() <= 8) add(EffectKind::categorical);
       for (const auto& by : bys) add(EffectKind::generic_linear_by, by);
-      // A smooth of any shape (bump, U, periodic, sigmoid, step), 3 or 5 dof
-      // overall and 3 per group of a model input: held-out error and the
-      // one-standard-error rule choose among it and the simpler forms.
+      // A smooth of any shape (bump, U, periodic, sigmoid, step), 3, 5 or 8
+      // dof overall (8: a narrow bump, a step or two periods) and 3 or 5 per
+      // group of a model input: held-out error and the one-standard-error rule
+      // choose among it and the simpler forms.
       if (applicable(d, spec, EffectKind::generic_smooth, c.name)) {
-        for (int nb : {3, 5}) plans.push_back({{{EffectKind::generic_smooth, "", nb}}});
-        for (const auto& by : bys) plans.push_back({{{EffectKind::generic_smooth, by, 3}}});
+        for (int nb : {3, 5, 8}) plans.push_back({{{EffectKind::generic_smooth, "", nb}}});
+        for (const auto& by : bys)
+          for (int nb : {3, 5}) plans.push_back({{{EffectKind::generic_smooth, by, nb}}});
       }
       // The force channel (rotating rows too): linear per pin, a smooth, a smooth per pin.
-      // Each needs a number on every row: a column with empty cells (missing
-      // values) gets none of them, as it gets none of the generic forms above.
+      // Each needs a number on every row: empty cells (missing values) take
+      // the column's mean (Design::values), as in the generic forms above.
       bool every_row_numeric = true;
       try {
         d.values(c.name);

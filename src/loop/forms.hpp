@@ -6,11 +6,12 @@
 //              stribeck, depletion, direction, pin surface, drift, ...);
 //   generic    for a column of the data (not one of the model's inputs):
 //              categorical: group factor, group factor per pin / speed /
-//              direction group; numeric: linear, saturating tanh, logarithmic
-//              (positive columns), saturating exponential (lambda on a grid),
-//              levels (3-8 distinct values), linear per pin / speed /
-//              direction group, a smooth of any shape (natural cubic spline,
-//              3 or 5 dof, and 3 dof per pin / speed / direction group;
+//              direction / lubricant group; numeric: linear, saturating tanh,
+//              logarithmic (positive columns), saturating exponential (lambda
+//              on a grid), a step (threshold on a grid of quantiles), levels
+//              (3-8 distinct values), linear per pin / speed / direction /
+//              lubricant group, a smooth of any shape (natural cubic spline,
+//              3, 5 or 8 dof, and 3 or 5 dof per group of those inputs;
 //              and, where the screen's strongest probe is confined to one group
 //              of a model input, a slope, a 3-dof smooth or the levels in that
 //              one group only), the
@@ -20,6 +21,8 @@
 //              or with a linear friction term ("both").  A numeric model input
 //              the base model does not use (speed when continuous) gets the
 //              generic forms too.
+// A numeric column with empty cells gets these forms with the empty rows at
+// the column's mean (Design::values).
 // Each form is added to the current model and must pass three gates as before:
 // the nested-model F test at the Bonferroni threshold, a lower held-out RMS,
 // and the minimum effect.  Among the forms that pass, the one kept is the

@@ -377,6 +377,8 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
     // test given all the others above the threshold, or the held-out error no
     // worse without it) is removed, the weakest first, and the forward search
     // resumes; so an early nuisance term can give way to a later variable.
+    // A removal that raises the held-out error by more than one standard error
+    // is never made.
     if (steps.empty() || backfits >= 2) break;
     ++backfits;
     const double thr = o.alpha / std::max<size_t>(1, res.candidates.size());
@@ -386,7 +388,12 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
       const ModelSpec t = without(spec, steps[j], o.bending_linear);
       const double p = f_test(memo.joint(t), cur_joint);
       const CvResult cv = memo.cv(t);
-      if ((p > thr || cv.rms <= cur.rms) && p > worst) worst = p, drop = static_cast<int>(j);
+      // Never a removal that costs held-out error beyond one standard error of
+      // the difference: the F test is on the joint fit, the held-out error on
+      // the fits the model predicts with (a force channel's bending lines are
+      // refitted once, not jointly), and a redundant alias can carry the fit.
+      const bool costs = cv.rms * cv.rms - cur.rms * cur.rms > mse_diff_se(cv, cur, res.folds);
+      if ((p > thr || cv.rms <= cur.rms) && !costs && p > worst) worst = p, drop = static_cast<int>(j);
     }
     if (drop < 0) break;
     progress(o, "backfitting: " + steps[drop].variable + " removed (p " + fmt(worst, 3) + " given the others)");

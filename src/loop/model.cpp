@@ -217,6 +217,11 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
       }
       f.drift_z[k] = x;
     }
+    if (kk == EffectKind::generic_step) {
+      std::vector<double> x = d.values(e.variable);
+      for (double& v : x) v = v > e.lambda_mm ? 1.0 : 0.0;
+      f.drift_z[k] = x;
+    }
     if (kk == EffectKind::categorical || kk == EffectKind::categorical_by)
       f.level[k] = d.levels(e.variable, &f.level_names[k]);
     if ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && e.n_basis > 0)

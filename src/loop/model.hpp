@@ -77,7 +77,9 @@ struct Design {
   std::vector<int> levels(const std::string& column, std::vector<std::string>* names) const;
   /// z-scored numeric column (for drift effects); NaN-free or throws.
   std::vector<double> zscore(const std::string& column) const;
-  /// The numeric column's raw values (same columns as zscore); throws InputError.
+  /// The numeric column's raw values (same columns as zscore); an empty cell
+  /// (missing value) takes the mean of the column's values; throws InputError
+  /// for a column that is not numeric or has no value.
   std::vector<double> values(const std::string& column) const;
   /// Group index per row of a model input used as an effect's `by`: "pin"
   /// (pin index), "speed_mm_s", "direction_deg" (distinct values of the fixed

@@ -71,7 +71,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     CandidateResult res;
     res.name = c.name;
     res.kind = c.kind;
-    res.permuted = c.test_level ? "between tests" : "within tests";
+    res.permuted = c.test_level ? "between tests" : "within tests";  // two-level: set below
     res.decision = "not significant";
     if (distinct.size() < 2) {
       res.p_value = 1;
@@ -113,6 +113,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     std::vector<double> z(n, 0.0);
     std::vector<int> lv(n, 0);
     int nlev = 1;
+    std::vector<double> cutz;  // quantile-bin edges on the z scale (numeric with more than 8 values)
     if (c.categorical) {
       for (int i : rows) lv[i] = static_cast<int>(c.x[i]), nlev = std::max(nlev, lv[i] + 1);
     } else {
@@ -140,6 +141,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         cut.erase(std::unique(cut.begin(), cut.end()), cut.end());
         for (int i : rows) lv[i] = static_cast<int>(std::upper_bound(cut.begin(), cut.end(), c.x[i]) - cut.begin());
         nlev = static_cast<int>(cut.size()) + 1;
+        for (double v : cut) cutz.push_back(sd > 0 ? (v - m) / sd : 0);
       }
     }
     // Units and permutation groups.
@@ -163,6 +165,48 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
       }
     }
     const size_t U = xz.size();
+    // A row-level column whose values also differ between the tests of a block
+    // (a travel, a count or a temperature that accumulates over the tests) is
+    // permuted on both levels: its test means between the tests of a block, and
+    // its deviations from them within each test, x* = mean(test pi(t)) + (x -
+    // mean(test t)) of a row permuted within t.  Permuted within tests alone,
+    // the between-test part, often the bulk of such an effect, was never tested.
+    // Numeric columns with quantile bins only (the bins of x* are recomputed).
+    // ug: the unit's test (permutation group); gz: the test's mean z; bgroups:
+    // the tests of each block.
+    const bool two_level = !c.test_level && !c.categorical && c.kind == "column" && !cutz.empty();
+    std::vector<int> ug(U, 0), tp(groups.size(), 0);
+    std::vector<double> gz(groups.size(), 0.0);
+    std::vector<std::vector<int>> bgroups;
+    if (two_level) {
+      std::map<int, int> bix;
+      for (size_t g = 0; g < groups.size(); ++g) {
+        for (int u : groups[g]) ug[u] = static_cast<int>(g), gz[g] += xz[u];
+        gz[g] /= groups[g].size();
+        tp[g] = static_cast<int>(g);
+        auto [it, fresh] = bix.emplace(unit_block[groups[g][0]], static_cast<int>(bgroups.size()));
+        if (fresh) bgroups.push_back({});
+        bgroups[it->second].push_back(static_cast<int>(g));
+      }
+    }
+    if (two_level) res.permuted = "within and between tests";
+    // Lane j of a permuted pass: unit u takes unit p[u]'s value (p permutes
+    // within tests); two-level, the test means are permuted as well (tp, drawn
+    // from r after the within-test shuffle) and the bin recomputed.
+    auto fill_unit_values = [&](const std::vector<int>& p, std::vector<double>& qz, std::vector<int>& ql, int j,
+                                Mt64& r, const FastMod& mod) {
+      if (!two_level) {
+        for (size_t u = 0; u < U; ++u) qz[u * kLanes + j] = xz[p[u]], ql[u * kLanes + j] = xl[p[u]];
+        return;
+      }
+      for (const auto& bg : bgroups)
+        for (size_t k = bg.size(); k > 1; --k) std::swap(tp[bg[k - 1]], tp[bg[mod(r(), k)]]);
+      for (size_t u = 0; u < U; ++u) {
+        const double v = gz[tp[ug[u]]] + (xz[p[u]] - gz[ug[u]]);
+        qz[u * kLanes + j] = v;
+        ql[u * kLanes + j] = static_cast<int>(std::upper_bound(cutz.begin(), cutz.end(), v) - cutz.begin());
+      }
+    };
     // The probe family.
     std::vector<ProbeDef> probes;
     auto add = [&](Shape shape, const std::string& label, const std::vector<int>& row_group, int ngroups,
@@ -254,7 +298,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
               g, ng, input, true);
       }
     for (auto& p : probes) {  // levels: counts no permutation changes (see ProbeDef::fixed_counts)
-      if (p.shape != Shape::levels) continue;
+      if (p.shape != Shape::levels || two_level) continue;
       bool fixed = true;
       for (const auto& g : groups)
         for (int u : g) fixed = fixed && p.stratum[u] == p.stratum[g[0]] && p.un[u] == p.un[g[0]];
@@ -327,6 +371,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     // dropped (a sub-probe so: its dof set to 0).
     size_t kmax = 1;
     for (const auto& g : groups) kmax = std::max(kmax, g.size());
+    for (const auto& bg : bgroups) kmax = std::max(kmax, bg.size());
     const FastMod mod(kmax);  // mod(rng(), k) == rng() % k, without the division
     // A group of consecutive units (rows of a test, in file order) is shuffled
     // in place without reading its unit list: the same draws, the same swaps.
@@ -358,7 +403,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
             const auto& g = groups[gi];
             for (size_t k = g.size(); k > 1; --k) std::swap(pp[g[k - 1]], pp[g[mod(prng(), k)]]);
           }
-          for (size_t u = 0; u < U; ++u) qz[u * kLanes + i] = xz[pp[u]], ql[u * kLanes + i] = xl[pp[u]];
+          fill_unit_values(pp, qz, ql, i, prng, mod);
         }
         fill_lanes(qz, ql, used);
         eval_lanes(qz, ql);
@@ -459,7 +504,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
               for (size_t k = g.size(); k > 1; --k) std::swap(perm[g[k - 1]], perm[g[mod(rng(), k)]]);
             }
           }
-          for (size_t u = 0; u < U; ++u) pz[u * kLanes + i] = xz[perm[u]], pl[u * kLanes + i] = xl[perm[u]];
+          fill_unit_values(perm, pz, pl, i, rng, mod);
         }
         fill_lanes(pz, pl, used);
         eval_lanes(pz, pl);

@@ -4,7 +4,8 @@
 //    the between-test permutation p is small (<= 0.05).
 //  - Orthogonal case: each level carries residuals {+1, -1}: explained SS = 0,
 //    p = 1 (every permutation reaches 0).
-//  - Numeric probe: residual r = 3 x (x varies within tests): explained SS =
+//  - Numeric probe: residual r = 3 x (x varies within tests, and its test
+//    means by 0.1 between them: permuted on both levels): explained SS =
 //    sum r^2 exactly.
 //  - The fit recovers mu = 0.1 exactly from noise-free rope-formula data
 //    F_out = F + F_B + F (exp(0.1 pi/2) - 1), and b0, b1 of the bending line.
@@ -80,7 +81,8 @@ BOOST_AUTO_TEST_CASE(numeric_probe_known_answer) {
   for (double x : c.x) r.push_back(3 * (x - mean)), ss += 9 * (x - mean) * (x - mean);
   const auto res = rank_candidates({c}, r, f, 999, 7, 0.05);
   BOOST_TEST(res[0].stat == ss, tt::tolerance(1e-9));
-  BOOST_TEST(res[0].permuted == "within tests");
+  // its test means differ (0.1 t): permuted within and between tests (screen.cpp: two_level)
+  BOOST_TEST(res[0].permuted == "within and between tests");
   BOOST_TEST(res[0].p_value <= 0.01);
 }
 
