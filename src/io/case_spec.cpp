@@ -167,6 +167,21 @@ ToolSpec& CaseSpec::tool(const std::string& name, const std::string& where) {
   throw InputError(where + ": no tool named '" + name + "'");
 }
 
+void set_threads(CaseSpec& c, int64_t n) {
+  if (n <= 0) return;
+  if (!c.numerics) c.numerics.emplace();
+  c.numerics->threads = n;
+}
+
+FrictionSpec read_friction(toml::table t) {
+  FrictionSpec f;
+  f.law = take<std::string>(t, "law");
+  f.nodes = take<std::string>(t, "nodes");
+  f.mu = take<double>(t, "mu");
+  f.rest = std::move(t);
+  return f;
+}
+
 CaseSpec from_toml(const toml::table& deck, const std::string& where) {
   toml::table root = deck;
   CaseSpec c;
@@ -189,14 +204,7 @@ CaseSpec from_toml(const toml::table& deck, const std::string& where) {
   for (toml::table& t : take_tables(root, "tool", where)) c.tools.push_back(read_tool(std::move(t), where));
   for (toml::table& t : take_tables(root, "contact", where)) {
     ContactSpec s;
-    if (t.get("friction")) {
-      FrictionSpec f;
-      f.rest = take_table(t, "friction", where + ": contact");
-      f.law = take<std::string>(f.rest, "law");
-      f.nodes = take<std::string>(f.rest, "nodes");
-      f.mu = take<double>(f.rest, "mu");
-      s.friction = std::move(f);
-    }
+    if (t.get("friction")) s.friction = read_friction(take_table(t, "friction", where + ": contact"));
     s.rest = std::move(t);
     c.contacts.push_back(std::move(s));
   }
@@ -283,6 +291,7 @@ toml::table to_toml_table(const CaseSpec& c) {
 
 std::string to_toml(const CaseSpec& c) {
   std::ostringstream o;
+  for (const std::string& line : c.comment) o << (line.empty() ? "#" : "# " + line) << "\n";
   o << to_toml_table(c);
   return o.str();
 }

@@ -242,7 +242,7 @@ io::CaseSpec cup_case(const CupSpec& spec) {
   const double dt = spec.stroke / spec.speed / spec.cycles, tr = 0.02 * spec.cycles * dt;
   if (!c.numerics) c.numerics.emplace();
   c.numerics->target_dt = dt / m.dt_safety;
-  if (spec.threads > 0) c.numerics->threads = spec.threads;
+  io::set_threads(c, spec.threads);
   if (c.steps.size() != 2) throw InputError(spec.deck + ": expected two steps (clamp, draw)");
   c.steps[0].duration = 400 * dt;
   c.steps[0].damping = 1.0 / (50 * dt);  // velocities relax in ~50 cycles while clamping
