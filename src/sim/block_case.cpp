@@ -45,20 +45,25 @@ void check_spec(const BlockSpec& s) {
   if (s.friction.empty() && s.surface_nodes.empty()) throw InputError(w + "no friction law and no surface nodes");
 }
 
+/// The deck's header: what the case is, what it measures, units.
+std::vector<std::string> header(const BlockSpec& s, double FN) {
+  return {"Block-sliding case written by drawbend's builder (src/sim/block_case.cpp; Sec. 6.5, Fig. 6.7):",
+          "a " + fmt(s.size) + " mm cube pressed on a rigid floor at " + fmt(s.pressure) + " MPa (" + fmt(FN) +
+              " N) and slid at " + fmt(s.speed) + " mm/s, " + fmt(s.direction_deg) + " deg from RD (x).",
+          "Friction = F_t / F_N on the floor over the last third of the slide.",
+          "[sheet] rolling_direction: RD; the friction texture (and the material axes) start from it.",
+          "output.reduce: mu_x, mu_y over the last third of the slide, kept every cycle (io/case_reduction.hpp): "
+          "reduction.csv",
+          "Units: mm, N, MPa, s, t/mm^3.  Run with: drawbend run deck.toml --out DIR"};
+}
+
 }  // namespace
 
 io::CaseSpec block_case(const BlockSpec& s) {
   check_spec(s);
   const double FN = s.pressure * s.size * s.size, psi = s.direction_deg * M_PI / 180.0;
   io::CaseSpec c;
-  c.comment = {"Block-sliding case written by drawbend's builder (src/sim/block_case.cpp; Sec. 6.5, Fig. 6.7):",
-               "a " + fmt(s.size) + " mm cube pressed on a rigid floor at " + fmt(s.pressure) + " MPa (" + fmt(FN) +
-                   " N) and slid at " + fmt(s.speed) + " mm/s, " + fmt(s.direction_deg) + " deg from RD (x).",
-               "Friction = F_t / F_N on the floor over the last third of the slide.",
-               "[sheet] rolling_direction: RD; the friction texture (and the material axes) start from it.",
-               "output.reduce: mu_x, mu_y over the last third of the slide, kept every cycle (io/case_reduction.hpp): "
-               "reduction.csv",
-               "Units: mm, N, MPa, s, t/mm^3.  Run with: drawbend run deck.toml --out DIR"};
+  c.comment = header(s, FN);
   c.rest.insert("case", toml::table{{"name", s.name},
                                     {"description", "block " + fmt(s.size) + " mm, " + fmt(s.pressure) + " MPa, slid at " +
                                                         fmt(s.speed) + " mm/s, " + fmt(s.direction_deg) + " deg from RD"}});

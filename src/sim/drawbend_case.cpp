@@ -219,13 +219,9 @@ toml::table output_table(const DrawBendSpec& s, const Layout& l) {
   return toml::table{{"fields_per_step", std::max(1, s.snapshots)}, {"history", std::move(h)}};
 }
 
-}  // namespace
-
-io::CaseSpec drawbend_case(const DrawBendSpec& s) {
-  check_spec(s);
-  const Layout l = layout_of(s);
-  io::CaseSpec c;
-  c.comment = {
+/// The deck's header: the case, the half model, the steps, the history columns, units.
+std::vector<std::string> header(const DrawBendSpec& s, const Layout& l) {
+  std::vector<std::string> h = {
       "Draw-bend case written by drawbend's builder (src/sim/drawbend_case.cpp; Secs. 2.2, 3.4, 4.2).",
       "Pin " + num(s.pin_diameter) + " mm, 90 deg wrap, back tension " + num(s.back_tension) +
           " N on the half model, outlet speed " + num(s.speed) + " mm/s, slide " + num(l.d) + " mm.",
@@ -236,17 +232,26 @@ io::CaseSpec drawbend_case(const DrawBendSpec& s) {
       "History: half-model forces (*_N), the full strip's F_Y and F_X (F_*_full_strip_N, tension positive), the",
       "strain at a section that passes the whole wrap, and eps_mid_<k>: the outside strain at mid-wrap after k sections.",
       "Units: mm, N, MPa, s, t/mm^3.  Rerun with: drawbend run deck.toml --out DIR"};
+  if (s.strip_direction != "rd" || !s.material.empty())
+    h.insert(h.end() - 1, std::string("[sheet] rolling_direction: RD ") +
+                              (s.strip_direction == "rd" ? "along the strip (x)" : "across the strip (y): a TD strip"));
+  return h;
+}
+
+}  // namespace
+
+io::CaseSpec drawbend_case(const DrawBendSpec& s) {
+  check_spec(s);
+  const Layout l = layout_of(s);
+  io::CaseSpec c;
+  c.comment = header(s, l);
   c.rest.insert("case", toml::table{{"name", s.name},
                                     {"description", "draw-bend, pin " + num(s.pin_diameter) + " mm, " +
                                                         (s.friction.empty() ? std::string("frictionless")
                                                                             : "friction " + quoted_free(s.friction))}});
   c.mesh.emplace().rest = mesh_table(s, l);
   c.material = material_choice(s.material, s.hardening);
-  if (s.strip_direction != "rd" || !s.material.empty()) {
-    c.rest.insert("sheet", sheet_table(s.strip_direction));
-    c.comment.insert(c.comment.end() - 1, std::string("[sheet] rolling_direction: RD ") +
-                                              (s.strip_direction == "rd" ? "along the strip (x)" : "across the strip (y): a TD strip"));
-  }
+  if (s.strip_direction != "rd" || !s.material.empty()) c.rest.insert("sheet", sheet_table(s.strip_direction));
   io::NumericsSpec& n = c.numerics.emplace();
   n.dt_safety = 0.8;
   n.rest.insert("mass_scaling", r10(s.mass_scaling));

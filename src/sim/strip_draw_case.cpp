@@ -51,10 +51,9 @@ void check_spec(const StripDrawSpec& s) {
   if (s.friction.empty() && s.stribeck_table.empty()) throw InputError(w + "no friction law and no Stribeck table");
 }
 
-io::CaseSpec case_of(const StripDrawSpec& s, double dt, double die_mass) {
-  const double area = s.length * s.width, FN = s.pressure * area;
-  io::CaseSpec c;
-  c.comment = {
+/// The deck's header: what the case is, why its guards only warn, the die's mass rule, units.
+std::vector<std::string> header(const StripDrawSpec& s, double FN) {
+  return {
       "Strip-draw friction test written by drawbend's builder (src/sim/strip_draw_case.cpp; Sec. 3.3, Fig. 3.2):",
       "a " + fmt(s.thickness) + " mm strip section pressed by a force-driven flat die at " + fmt(s.pressure) + " MPa (" +
           fmt(FN) + " N) and drawn at " + fmt(s.speed) + " mm/s; mu = (F1 - F2) / F_N.",
@@ -67,6 +66,12 @@ io::CaseSpec case_of(const StripDrawSpec& s, double dt, double die_mass) {
       "nodes, fe/contact_springs.hpp): mass 4 k dt^2 puts it at omega dt = 0.5.",
       "output.reduce: mu and the probe's slip speed, kept every cycle (io/case_reduction.hpp): reduction.csv",
       "Units: mm, N, MPa, s, t/mm^3.  Run with: drawbend run deck.toml --out DIR"};
+}
+
+io::CaseSpec case_of(const StripDrawSpec& s, double dt, double die_mass) {
+  const double area = s.length * s.width, FN = s.pressure * area;
+  io::CaseSpec c;
+  c.comment = header(s, FN);
   c.rest.insert("case", toml::table{{"name", s.name},
                                     {"description", "strip draw, " + fmt(s.pressure) + " MPa, " + fmt(s.speed) + " mm/s"}});
   io::MeshSpec& mesh = c.mesh.emplace();
