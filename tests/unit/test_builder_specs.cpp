@@ -144,12 +144,13 @@ std::string replace_all(std::string t, const std::string& from, const std::strin
 
 io::CaseSpec spec_of(const std::string& text, const std::string& where) { return io::from_toml(parse_toml(text, where), where); }
 
-}  // namespace
-
+/// The kept deck of `c`, read as the typed spec.
 io::CaseSpec old_deck(const Case& c) {
   const std::string path = kDecks + "/" + c.name + ".toml";
   return spec_of(replace_all(read_file(path), "@DATA@", kData), path);
 }
+
+}  // namespace
 
 BOOST_AUTO_TEST_CASE(the_typed_builders_write_the_decks_the_text_builders_wrote) {
   for (const Case& c : cases()) {
