@@ -22,9 +22,10 @@
 // every written deck goes through before it runs, checks the values.
 //
 // The writer prints with toml++ (keys sorted; strings in single quotes unless
-// they need escapes; floats to 17 significant digits, so 0.8 prints as
-// 0.80000000000000004, the same double; integers as integers), so a deck written from a spec is the same bytes whatever path
-// built it: the reuse key of a run is the hash of this text (sim/deck_job.hpp).
+// they need escapes; integers as integers) and then writes each float in the
+// shortest form that reads back to the same double (0.8, not toml++'s
+// 0.80000000000000004), always with a '.' or an exponent, so a deck written
+// from a spec is the same bytes whatever path built it: the reuse key of a run is the hash of this text (sim/deck_job.hpp).
 // Numbers the spec types as floats are written as floats.  Layout that is not
 // meaning: a tool's speed and the reduction are written as [tool.speed] and
 // [output.reduce] sections unless they were read inline; a contact's friction
