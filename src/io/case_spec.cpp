@@ -352,7 +352,7 @@ std::string shortest_floats(const std::string& text) {
 std::string to_toml(const CaseSpec& c) {
   std::ostringstream o;
   for (const std::string& line : c.comment) o << (line.empty() ? "#" : "# " + line) << "\n";
-  o << to_toml_table(c);
+  o << to_toml_table(c) << "\n";  // a text file's last line ends with a line break
   return shortest_floats(o.str());
 }
 
