@@ -138,12 +138,13 @@ std::string deck_text(const std::string& deck, const Variant& var, const RunSpec
       c.tool(t.name, deck).mass = fe::tool_mass_half_omega_dt(fe::tool_contact_stiffness(m, t.name), dt);
   // What the chapter measures, kept by the run (io/case_reduction.hpp, kind earing_cup).
   c.reduce = io::ReduceSpec{"earing_cup", "punch", m.steps[1].name, {}, spec.stroke, {}, std::max(1L, spec.cycles / 300)};
-  std::ostringstream o;
-  o << "# ESAFORM 2021 cup, variant " << var.id << ", written by chapter v1-earing-benchmark (v1_cup.cpp) from " << deck
-    << ".\n# Stroke " << spec.stroke << " mm in " << spec.cycles << " cycles.  Units: mm, N, MPa, s, t/mm^3.  Rerun with: "
-    << "drawbend run deck.toml --out DIR\n"
-    << io::to_toml(c) << "\n";
-  return o.str();
+  std::ostringstream stroke;
+  stroke << "Stroke " << spec.stroke << " mm in " << spec.cycles << " cycles.  Units: mm, N, MPa, s, t/mm^3.  Rerun with: "
+         << "drawbend run deck.toml --out DIR";
+  c.comment = {"ESAFORM 2021 cup, variant " + var.id + ", written by chapter v1-earing-benchmark (v1_cup.cpp) from " +
+                   deck + ".",
+               stroke.str()};
+  return io::to_toml(c);
 }
 
 CupResult read_run(const std::string& dir, const RunSpec& spec) {

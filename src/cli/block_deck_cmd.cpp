@@ -13,6 +13,7 @@
 #include "cli/threads.hpp"
 #include "core/options.hpp"
 #include "friction/surface_law.hpp"
+#include "io/case_spec.hpp"
 #include "io/portable_paths.hpp"
 #include "sim/block_case.hpp"
 
@@ -70,8 +71,9 @@ int block_deck_command(int argc, char** argv) {
       throw InputError((what.rfind("--surface-nodes", 0) == 0 ? "" : "--surface-nodes: ") + what);
     }
   check_threads(threads);
-  s.threads = threads;  // written into the deck's [numerics] by the builder
-  return write_deck_out(sim::block_deck_text(s), out, "block-deck");
+  io::CaseSpec deck = sim::block_case(s);
+  io::set_threads(deck, threads);  // the deck's numerics.threads
+  return write_deck_out(io::to_toml(deck), out, "block-deck");
 }
 
 }  // namespace drawbend::cli

@@ -21,6 +21,7 @@
 #include "cli/threads.hpp"
 #include "core/csv.hpp"
 #include "core/options.hpp"
+#include "io/case_spec.hpp"
 #include "io/portable_paths.hpp"
 #include "io/run_result.hpp"
 #include "sim/drawbend_case.hpp"
@@ -111,10 +112,11 @@ int drawbend_deck_command(int argc, char** argv) {
   const std::string tag = full ? "full strip" : "half model";
   s.back_tension = back_tension * to_half;
   if (run_dir.empty()) {
-    s.threads = threads;  // written into the deck's [numerics] by the builder (a run's deck keeps none)
+    io::CaseSpec deck = sim::drawbend_case(s);
+    io::set_threads(deck, threads);  // the deck's numerics.threads (a run's deck keeps none)
     std::cout << "# back_tension in this deck is on the half model: " << fmt(s.back_tension, 6) << " N ("
               << fmt(back_tension, 6) << " N on the " << tag << ")\n"
-              << checked_deck(sim::deck_text(s), "drawbend-deck");
+              << checked_deck(io::to_toml(deck), "drawbend-deck");
     return 0;
   }
   ensure_writable_dir(run_dir, "--run");  // before any work: exit 2, not a file-system error

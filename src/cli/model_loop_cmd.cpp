@@ -83,33 +83,22 @@ void write_model_loop_md(const std::string& path, const std::string& data, const
   write_file_atomic(path, md.str());
 }
 
-}  // namespace
-
-int model_loop_command(int argc, char** argv, const char* name) {
-  const std::string me = name;
+/// The command's inputs: the base draw-bend spec and the loop's settings.
+struct Args {
   sim::DrawBendSpec s;
-  s.hardening = drawbend::data_dir() + "/materials/aa5754_o_rd.csv";
-  s.width = 12.7;
-  s.speed = 50;
-  sim::set_quick_mesh(s);  // the chapters' quick tier (sim/fe_options.hpp)
-  s.mass_scaling = 0;      // 0: the quick tier's rule at --speed (set after parsing)
-  std::string out, candidates = "split:0.3/0.6";
   modelloop::ModelLoopConfig cfg;
+  std::string data, out, candidates = "split:0.3/0.6", executor_spec;
   bool reuse = true;
-  Options opt(me, "Test modelling effects by re-running the draw-bend FE model (rotating = frictionless pin, "
-                       "explicit, half strip) against measured bending forces. DATA.csv: one row per point with the "
-                       "columns pin_diameter_mm, back_tension_N, bending_force_N (full strip, N; '#' comments). The "
-                       "points on --fit-pin train each candidate's members; the other pins are held out, and a "
-                       "candidate is accepted only if their RMS relative error falls by more than --min-gain. FE "
-                       "runs go through the case pool (DRAWBEND_JOBS at a time, progress with time left) and are "
-                       "cached in OUT/runs by deck hash. Writes OUT/model_loop.md (read it first: the chosen model and its blind "
-                       "errors, every candidate tried), OUT/chosen_model.toml (its [material] table), OUT/steps.csv (every candidate), "
-                       "OUT/baseline.csv, OUT/final.csv and OUT/inputs/ (the data and the options in effect).");
-  opt.add(out, "out", "output directory (runs cached in OUT/runs)");
-  opt.add(cfg.fit_pin, "fit-pin", "pin diameter whose points train [mm]; the others are held out");
-  opt.add(cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
-  opt.add(candidates, "candidates", "comma-separated: split:B1/B2..., chaboche:X1/X2...[@G1/G2...], voce, hill48, offset, ms:X, across:N");
-  opt.add(reuse, "reuse", "read back finished runs with the identical deck (true) or rerun them (false)");
+  int threads = 0;
+};
+
+void add_options(Options& opt, Args& a) {
+  sim::DrawBendSpec& s = a.s;
+  opt.add(a.out, "out", "output directory (runs cached in OUT/runs)");
+  opt.add(a.cfg.fit_pin, "fit-pin", "pin diameter whose points train [mm]; the others are held out");
+  opt.add(a.cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
+  opt.add(a.candidates, "candidates", "comma-separated: split:B1/B2..., chaboche:X1/X2...[@G1/G2...], voce, hill48, offset, ms:X, across:N");
+  opt.add(a.reuse, "reuse", "read back finished runs with the identical deck (true) or rerun them (false)");
   opt.add(s.thickness, "thickness", "strip thickness [mm]");
   opt.add(s.width, "width", "modelled half width [mm]");
   opt.add(s.speed, "speed", "outlet speed [mm/s]");
@@ -121,12 +110,10 @@ int model_loop_command(int argc, char** argv, const char* name) {
           "bend step with the inlet end sliding under the back tension (true, the default) or clamped as before "
           "issue 51 (false, for reproduction)");
   opt.add(s.hardening, "hardening", "hardening curve CSV of the base (isotropic) model");
-  int threads = 0;
-  opt.add(threads, "threads",
+  opt.add(a.threads, "threads",
           "threads of the FE runs in all: cases side by side times threads within a case (0: DRAWBEND_JOBS cases "
           "side by side on all hardware threads)");
-  std::string executor_spec;
-  opt.add(executor_spec, "executor",
+  opt.add(a.executor_spec, "executor",
           "where the FE runs go: local (this machine's pool), slurm (sbatch/srun jobs), command:TEMPLATE (a launcher "
           "with {drawbend} {deck} {dir} {cores}); default DRAWBEND_EXECUTOR, else local (docs/cluster.md)");
   opt.example("drawbend model-loop data/measured/model_loop_points.csv --out my-model-loop --candidates offset "
@@ -138,54 +125,67 @@ int model_loop_command(int argc, char** argv, const char* name) {
   opt.range("thickness", kMinThicknessMM, kThicknessMM, "mm", false).range("width", kMinLengthMM, kLengthMM, "mm", false);
   opt.range("speed", kMinSpeedMMs, kSpeedMMs, "mm/s", false).range("mass-scaling", 1, kMassScaling, "", false, false, true);
   opt.range("element-length", kMinLengthMM, kLengthMM, "mm", false).range("across", 1, kElements);
-  if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
-    if (!opt.parse(argc, argv)) return 0;
-    throw InputError(me + ": missing DATA.csv (columns pin_diameter_mm, back_tension_N, bending_force_N; --help lists "
-                     "the options)");
+}
+
+/// Problems found so far, one a line; thrown together as one InputError.
+struct Problems {
+  std::string text;
+  void need(bool ok, const std::string& msg) {
+    if (!ok) text += (text.empty() ? "" : "\n") + msg;
   }
-  const std::string data = argv[1];
-  if (!opt.parse(argc - 1, argv + 1)) return 0;
-  if (out.empty()) throw InputError(me + ": --out DIR is required");
-  // Every input is checked before the first FE run (runs take minutes).
-  const auto points = modelloop::read_fb_points(data);  // file:line: column for every bad cell
-  std::string bad;
-  auto need = [&](bool ok, const std::string& msg) { if (!ok) bad += (bad.empty() ? "" : "\n") + msg; };
-  need(s.thickness > 0, "--thickness: expected a number > 0 mm, found " + fmt(s.thickness));
-  need(s.width > 0, "--width: expected a number > 0 mm, found " + fmt(s.width));
-  need(s.speed > 0, "--speed: expected a number > 0 mm/s, found " + fmt(s.speed));
-  need(s.mass_scaling == 0 || s.mass_scaling >= 1,
-       "--mass-scaling: expected 0 (the quick tier's rule) or a number >= 1, found " + fmt(s.mass_scaling));
-  need(s.element_length > 0, "--element-length: expected a number > 0 mm, found " + fmt(s.element_length));
-  need(s.across >= 1, "--across: expected a whole number >= 1, found " + std::to_string(s.across));
+  void throw_if_any() const {
+    if (!text.empty()) throw InputError(text);
+  }
+};
+
+/// The options and the candidates checked, all problems at once; sets the
+/// executor, the case threads and the mass scaling of the quick tier's rule.
+std::vector<modelloop::ModelCandidate> checked_candidates(Args& a) {
+  sim::DrawBendSpec& s = a.s;
+  Problems p;
+  p.need(s.thickness > 0, "--thickness: expected a number > 0 mm, found " + fmt(s.thickness));
+  p.need(s.width > 0, "--width: expected a number > 0 mm, found " + fmt(s.width));
+  p.need(s.speed > 0, "--speed: expected a number > 0 mm/s, found " + fmt(s.speed));
+  p.need(s.mass_scaling == 0 || s.mass_scaling >= 1,
+         "--mass-scaling: expected 0 (the quick tier's rule) or a number >= 1, found " + fmt(s.mass_scaling));
+  p.need(s.element_length > 0, "--element-length: expected a number > 0 mm, found " + fmt(s.element_length));
+  p.need(s.across >= 1, "--across: expected a whole number >= 1, found " + std::to_string(s.across));
   name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
   try {
     (void)read_input(s.hardening);  // a regular file of a stated size, never a FIFO or device
   } catch (const InputError& e) {
-    need(false, e.what());
+    p.need(false, e.what());
   }
-  need(cfg.min_gain >= 0, "--min-gain: expected a number >= 0, found " + fmt(cfg.min_gain));
-  need(good_threads(threads), bad_threads(threads));
+  p.need(a.cfg.min_gain >= 0, "--min-gain: expected a number >= 0, found " + fmt(a.cfg.min_gain));
+  p.need(good_threads(a.threads), bad_threads(a.threads));
   std::vector<modelloop::ModelCandidate> cands;
-  std::stringstream ss(candidates);
+  std::stringstream ss(a.candidates);
   for (std::string tok; std::getline(ss, tok, ',');) {
     if (tok.empty()) continue;
     try {
       cands.push_back(modelloop::named_candidate(tok, drawbend::data_dir()));
     } catch (const InputError& e) {
-      need(false, std::string("--candidates: ") + e.what());
+      p.need(false, std::string("--candidates: ") + e.what());
     }
   }
   try {
-    sim::set_executor(sim::parse_executor(executor_spec));
+    sim::set_executor(sim::parse_executor(a.executor_spec));
   } catch (const std::invalid_argument& e) {
-    need(false, e.what());
+    p.need(false, e.what());
   }
-  if (!bad.empty()) throw InputError(bad);
-  sim::set_case_threads(threads);
+  p.throw_if_any();
+  sim::set_case_threads(a.threads);
   if (s.mass_scaling == 0) s.mass_scaling = sim::mass_scaling_for_speed(sim::kQuickMassScaling, s.speed);
-  // Every deck the loop will run passes `drawbend run`'s checks (limits and
-  // cost included) before the first FE run; a refusal names the user's
-  // options or candidate, then the generated deck's key.
+  return cands;
+}
+
+/// Every deck the loop will run passes `drawbend run`'s checks (limits and
+/// cost included) before the first FE run; a refusal names the user's
+/// options or candidate, then the generated deck's key.  Then the fit pin
+/// must hold a point.
+void check_decks(const Args& a, const std::vector<modelloop::FbPoint>& points,
+                 const std::vector<modelloop::ModelCandidate>& cands) {
+  const sim::DrawBendSpec& s = a.s;
   auto deck_problem = [](const sim::DrawBendSpec& spec) -> std::string {
     try {
       (void)io::parse_deck(sim::deck_text(spec), "model-loop.toml");
@@ -194,60 +194,68 @@ int model_loop_command(int argc, char** argv, const char* name) {
       return e.what();
     }
   };
+  Problems p;
   const std::string base_opts = "--thickness " + fmt(s.thickness) + ", --width " + fmt(s.width) + ", --speed " +
                                 fmt(s.speed) + ", --mass-scaling " + fmt(s.mass_scaling) + ", --element-length " +
                                 fmt(s.element_length) + ", --across " + std::to_string(s.across);
-  for (const auto& p : points)
-    if (const std::string m = deck_problem(modelloop::spec_for_point(s, p)); !m.empty()) {
-      need(false, base_opts + ": the FE deck of the point at " + p.where + " fails the checks of `drawbend run`:\n" + m);
+  for (const auto& pt : points)
+    if (const std::string m = deck_problem(modelloop::spec_for_point(s, pt)); !m.empty()) {
+      p.need(false, base_opts + ": the FE deck of the point at " + pt.where + " fails the checks of `drawbend run`:\n" + m);
       break;
     }
   for (const auto& c : cands)
     for (const auto& member : c.members) {
       sim::DrawBendSpec cs = modelloop::spec_for_point(s, points.front());
       member.apply(cs);
-      if (const std::string m = deck_problem(cs); !m.empty() && bad.empty())
-        need(false, "--candidates '" + clip_for_message(c.name) + "' (" + member.label +
-                        "): its FE deck fails the checks of `drawbend run`:\n" + m);
+      if (const std::string m = deck_problem(cs); !m.empty() && p.text.empty())
+        p.need(false, "--candidates '" + clip_for_message(c.name) + "' (" + member.label +
+                          "): its FE deck fails the checks of `drawbend run`:\n" + m);
     }
-  if (!bad.empty()) throw InputError(bad);
+  p.throw_if_any();
   bool on_fit = false;
-  for (const auto& p : points) on_fit = on_fit || std::abs(p.pin_mm - cfg.fit_pin) < 1e-6 * cfg.fit_pin;
+  for (const auto& pt : points) on_fit = on_fit || std::abs(pt.pin_mm - a.cfg.fit_pin) < 1e-6 * a.cfg.fit_pin;
   if (!on_fit)
-    throw InputError(data + ": no point on the fit pin " + fmt(cfg.fit_pin) + " mm (--fit-pin names one of the "
+    throw InputError(a.data + ": no point on the fit pin " + fmt(a.cfg.fit_pin) + " mm (--fit-pin names one of the "
                      "pin_diameter_mm values)");
-  ensure_writable_dir(out, "--out");
-  cfg.run_root = out + "/runs";
-  cfg.reuse = reuse;
-  // The inputs beside the answer (as `drawbend loop` keeps its data): the
-  // data as read and every option in effect, mass scaling resolved.
-  std::filesystem::create_directories(out + "/inputs");
-  write_file_atomic(out + "/inputs/data.csv", read_input(data));
-  {
-    std::ostringstream o;
-    o << "# drawbend model-loop: the options in effect (units mm, N, mm/s)\n[model_loop]\ndata = "
-      << string_literal(data) << "\nfit_pin = " << fmt(cfg.fit_pin) << "\nmin_gain = " << fmt(cfg.min_gain)
-      << "\ncandidates = " << string_literal(candidates) << "\nthickness = " << fmt(s.thickness) << "\nwidth = "
-      << fmt(s.width) << "\nspeed = " << fmt(s.speed) << "\nmass_scaling = " << fmt(s.mass_scaling)
-      << "\nelement_length = " << fmt(s.element_length) << "\nacross = " << s.across << "\nthrough = " << s.through
-      << "\nhardening = " << string_literal(s.hardening) << "\n";
-    write_file_atomic(out + "/inputs/options.toml", o.str());
-  }
-  const auto r = modelloop::run_model_loop(s, points, cands, cfg);
+}
+
+/// The inputs beside the answer (as `drawbend loop` keeps its data): the
+/// data as read and every option in effect, mass scaling resolved.
+void write_inputs(const Args& a) {
+  const sim::DrawBendSpec& s = a.s;
+  std::filesystem::create_directories(a.out + "/inputs");
+  write_file_atomic(a.out + "/inputs/data.csv", read_input(a.data));
+  std::ostringstream o;
+  o << "# drawbend model-loop: the options in effect (units mm, N, mm/s)\n[model_loop]\ndata = "
+    << string_literal(a.data) << "\nfit_pin = " << fmt(a.cfg.fit_pin) << "\nmin_gain = " << fmt(a.cfg.min_gain)
+    << "\ncandidates = " << string_literal(a.candidates) << "\nthickness = " << fmt(s.thickness) << "\nwidth = "
+    << fmt(s.width) << "\nspeed = " << fmt(s.speed) << "\nmass_scaling = " << fmt(s.mass_scaling)
+    << "\nelement_length = " << fmt(s.element_length) << "\nacross = " << s.across << "\nthrough = " << s.through
+    << "\nhardening = " << string_literal(s.hardening) << "\n";
+  write_file_atomic(a.out + "/inputs/options.toml", o.str());
+}
+
+/// OUT/chosen_model.toml, baseline.csv, final.csv, steps.csv and model_loop.md.
+void write_outputs(const Args& a, const std::vector<modelloop::FbPoint>& points, const modelloop::ModelLoopResult& r) {
+  const std::string& out = a.out;
   write_file_atomic(out + "/chosen_model.toml",
                     "# The model chosen by drawbend model-loop: " + r.final_model.model + "\n" +
                         sim::material_section(r.final_spec.material, r.final_spec.hardening));
   modelloop::save_eval_csv(r.baseline, out + "/baseline.csv");
   modelloop::save_eval_csv(r.final_model, out + "/final.csv");
   CsvWriter w({"candidate", "member", "fit_rms", "heldout_rms", "heldout_max", "decision"});
-  w.comment(" relative errors of F_B (fractions); fit pin " + fmt(cfg.fit_pin) + " mm");
+  w.comment(" relative errors of F_B (fractions); fit pin " + fmt(a.cfg.fit_pin) + " mm");
   w.row({"baseline", r.baseline.model, fmt(r.baseline.fit_rms, 4), fmt(r.baseline.held_rms, 4),
          fmt(r.baseline.held_max, 4), ""});
   for (const auto& st : r.steps)
     w.row({st.candidate, st.member, fmt(st.eval.fit_rms, 4), fmt(st.eval.held_rms, 4), fmt(st.eval.held_max, 4),
            st.decision});
   w.save(out + "/steps.csv");
-  write_model_loop_md(out + "/model_loop.md", data, points, s, cfg, r);
+  write_model_loop_md(out + "/model_loop.md", a.data, points, a.s, a.cfg, r);
+}
+
+/// The chosen model and every point, measured, baseline and now, on standard output.
+void print_answer(const modelloop::ModelLoopResult& r) {
   std::cout << "model: " << r.final_model.model << "\n";
   for (const auto& p : r.final_model.points)
     std::cout << "  pin " << fmt(p.measured.pin_mm) << " mm, F_X " << fmt(p.measured.back_tension_N) << " N: measured "
@@ -255,6 +263,47 @@ int model_loop_command(int argc, char** argv, const char* name) {
               << fmt_fixed(r.baseline.points[&p - &r.final_model.points[0]].predicted_N, 1) << " N, now "
               << fmt_fixed(p.predicted_N, 1) << " N" << (p.held_out ? " (held out)" : " (fit)") << "\n";
   std::cout << r.runs << " FE runs, " << fmt_fixed(r.run_wall_s, 0) << " s of run wall time\n";
+}
+
+}  // namespace
+
+int model_loop_command(int argc, char** argv, const char* name) {
+  const std::string me = name;
+  Args a;
+  a.s.hardening = drawbend::data_dir() + "/materials/aa5754_o_rd.csv";
+  a.s.width = 12.7;
+  a.s.speed = 50;
+  sim::set_quick_mesh(a.s);  // the chapters' quick tier (sim/fe_options.hpp)
+  a.s.mass_scaling = 0;      // 0: the quick tier's rule at --speed (set after parsing)
+  Options opt(me, "Test modelling effects by re-running the draw-bend FE model (rotating = frictionless pin, "
+                       "explicit, half strip) against measured bending forces. DATA.csv: one row per point with the "
+                       "columns pin_diameter_mm, back_tension_N, bending_force_N (full strip, N; '#' comments). The "
+                       "points on --fit-pin train each candidate's members; the other pins are held out, and a "
+                       "candidate is accepted only if their RMS relative error falls by more than --min-gain. FE "
+                       "runs go through the case pool (DRAWBEND_JOBS at a time, progress with time left) and are "
+                       "cached in OUT/runs by deck hash. Writes OUT/model_loop.md (read it first: the chosen model and its blind "
+                       "errors, every candidate tried), OUT/chosen_model.toml (its [material] table), OUT/steps.csv (every candidate), "
+                       "OUT/baseline.csv, OUT/final.csv and OUT/inputs/ (the data and the options in effect).");
+  add_options(opt, a);
+  if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
+    if (!opt.parse(argc, argv)) return 0;
+    throw InputError(me + ": missing DATA.csv (columns pin_diameter_mm, back_tension_N, bending_force_N; --help lists "
+                     "the options)");
+  }
+  a.data = argv[1];
+  if (!opt.parse(argc - 1, argv + 1)) return 0;
+  if (a.out.empty()) throw InputError(me + ": --out DIR is required");
+  // Every input is checked before the first FE run (runs take minutes).
+  const auto points = modelloop::read_fb_points(a.data);  // file:line: column for every bad cell
+  const auto cands = checked_candidates(a);
+  check_decks(a, points, cands);
+  ensure_writable_dir(a.out, "--out");
+  a.cfg.run_root = a.out + "/runs";
+  a.cfg.reuse = a.reuse;
+  write_inputs(a);
+  const auto r = modelloop::run_model_loop(a.s, points, cands, a.cfg);
+  write_outputs(a, points, r);
+  print_answer(r);
   return 0;
 }
 

@@ -12,6 +12,7 @@
 #include "cli/option_bounds.hpp"
 #include "cli/threads.hpp"
 #include "core/options.hpp"
+#include "io/case_spec.hpp"
 #include "io/portable_paths.hpp"
 #include "sim/strip_draw_case.hpp"
 
@@ -67,8 +68,9 @@ int strip_deck_command(int argc, char** argv) {
   // --friction checked on its own (io/portable_paths.hpp): a problem names the option, not the generated deck.
   s.friction = io::friction_argument(s.friction, std::filesystem::current_path().string());
   check_threads(threads);
-  s.threads = threads;  // written into the deck's [numerics] by the builder
-  return write_deck_out(sim::strip_draw_deck_text(s), out, "strip-deck");
+  io::CaseSpec deck = sim::strip_draw_case(s);
+  io::set_threads(deck, threads);  // the deck's numerics.threads
+  return write_deck_out(io::to_toml(deck), out, "strip-deck");
 }
 
 }  // namespace drawbend::cli

@@ -10,10 +10,9 @@
 //   - `model-loop` (and `loop --model fe`) gives its FE runs N threads in all
 //     (sim::set_case_threads: cases side by side, threads within a case);
 //   - commands that write a deck (block-deck, strip-deck, cup-deck, and
-//     drawbend-deck without --run) set the builder spec's `threads` field
-//     (sim::DrawBendSpec, BlockSpec, StripDrawSpec, CupSpec), which the
-//     builder writes into the deck's [numerics] threads, so that
-//     `drawbend run` of that deck uses it.
+//     drawbend-deck without --run) set the typed deck's numerics.threads
+//     (io::set_threads on the builder's io::CaseSpec; cup-deck through
+//     sim::CupSpec::threads), so that `drawbend run` of that deck uses it.
 #include <string>
 
 #ifdef _OPENMP

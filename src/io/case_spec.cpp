@@ -1,6 +1,11 @@
 // A case as a typed value: see case_spec.hpp.
 #include "io/case_spec.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <sstream>
 #include <type_traits>
 
@@ -167,6 +172,21 @@ ToolSpec& CaseSpec::tool(const std::string& name, const std::string& where) {
   throw InputError(where + ": no tool named '" + name + "'");
 }
 
+void set_threads(CaseSpec& c, int64_t n) {
+  if (n <= 0) return;
+  if (!c.numerics) c.numerics.emplace();
+  c.numerics->threads = n;
+}
+
+FrictionSpec read_friction(toml::table t) {
+  FrictionSpec f;
+  f.law = take<std::string>(t, "law");
+  f.nodes = take<std::string>(t, "nodes");
+  f.mu = take<double>(t, "mu");
+  f.rest = std::move(t);
+  return f;
+}
+
 CaseSpec from_toml(const toml::table& deck, const std::string& where) {
   toml::table root = deck;
   CaseSpec c;
@@ -189,14 +209,7 @@ CaseSpec from_toml(const toml::table& deck, const std::string& where) {
   for (toml::table& t : take_tables(root, "tool", where)) c.tools.push_back(read_tool(std::move(t), where));
   for (toml::table& t : take_tables(root, "contact", where)) {
     ContactSpec s;
-    if (t.get("friction")) {
-      FrictionSpec f;
-      f.rest = take_table(t, "friction", where + ": contact");
-      f.law = take<std::string>(f.rest, "law");
-      f.nodes = take<std::string>(f.rest, "nodes");
-      f.mu = take<double>(f.rest, "mu");
-      s.friction = std::move(f);
-    }
+    if (t.get("friction")) s.friction = read_friction(take_table(t, "friction", where + ": contact"));
     s.rest = std::move(t);
     c.contacts.push_back(std::move(s));
   }
@@ -281,10 +294,66 @@ toml::table to_toml_table(const CaseSpec& c) {
   return root;
 }
 
+namespace {
+
+/// `text` (toml++'s print) with every float outside strings and comments in the
+/// shortest form that reads back to the same double (toml++ prints 17 digits:
+/// 0.8 as 0.80000000000000004), a '.' or an exponent kept so it stays a float.
+/// Integers, keys (r45, hill48) and strings are left as they are.
+std::string shortest_floats(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  const std::size_t n = text.size();
+  char quote = 0;  // inside '...' or "..."
+  auto number_char = [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)) || std::strchr("eE+-.", ch); };
+  for (std::size_t i = 0; i < n;) {
+    const char ch = text[i];
+    if (quote) {
+      out += ch;
+      if (quote == '"' && ch == '\\' && i + 1 < n) out += text[++i];
+      else if (ch == quote) quote = 0;
+      ++i;
+      continue;
+    }
+    if (ch == '#') {  // a comment, to the end of its line
+      const std::size_t e = std::min(text.find('\n', i), n);
+      out.append(text, i, e - i);
+      i = e;
+      continue;
+    }
+    const char prev = i ? text[i - 1] : ' ';
+    const bool starts = (std::isdigit(static_cast<unsigned char>(ch)) ||
+                         ((ch == '-' || ch == '+') && i + 1 < n && std::isdigit(static_cast<unsigned char>(text[i + 1])))) &&
+                        !(std::isalnum(static_cast<unsigned char>(prev)) || prev == '_' || prev == '.' || prev == '-');
+    if (!starts) {
+      if (ch == '\'' || ch == '"') quote = ch;
+      out += ch;
+      ++i;
+      continue;
+    }
+    std::size_t e = i + 1;
+    while (e < n && number_char(text[e])) ++e;
+    std::string token = text.substr(i, e - i);
+    if (token.find_first_of(".eE") != std::string::npos) {
+      char* end = nullptr;
+      const double v = std::strtod(token.c_str(), &end);
+      std::string t = fmt_shortest(v);
+      if (t.find_first_of(".eE") == std::string::npos) t += ".0";
+      if (end == token.c_str() + token.size() && std::isfinite(v) && std::strtod(t.c_str(), nullptr) == v) token = t;
+    }
+    out += token;
+    i = e;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string to_toml(const CaseSpec& c) {
   std::ostringstream o;
-  o << to_toml_table(c);
-  return o.str();
+  for (const std::string& line : c.comment) o << (line.empty() ? "#" : "# " + line) << "\n";
+  o << to_toml_table(c) << "\n";  // a text file's last line ends with a line break
+  return shortest_floats(o.str());
 }
 
 }  // namespace drawbend::io

@@ -1,10 +1,13 @@
 #pragma once
-// A case (a deck) as a typed value for the builders that start from a base
-// deck and change it (sim/cup_case.cpp, chapter v1's v1_cup.cpp): one reader
-// (from_toml) and one writer (to_toml).  A builder reads the base deck into a
-// CaseSpec, sets fields (the mesh counts, the numerics, a tool's surfaces,
-// speed or mass, the steps' durations, the friction, the material, the
-// reduction), and writes the deck with to_toml; no builder names a key.
+// A case (a deck) as a typed value: one reader (from_toml) and one writer
+// (to_toml).  Every builder returns one: the draw-bend, block and strip-draw
+// builders (sim/drawbend_case, block_case, strip_draw_case) fill a spec from
+// their physical parameters; the cup builder (sim/cup_case.cpp) and chapter
+// v1 (v1_cup.cpp) read a base deck into a spec and set fields (the mesh
+// counts, the numerics, a tool's surfaces, speed or mass, the steps'
+// durations, the friction, the material, the reduction).  The deck commands'
+// --threads sets NumericsSpec::threads.  The deck is written with to_toml; no
+// builder concatenates deck text.
 //
 // Typed are the pieces the builders set or read: [mesh] (the quarter disk's
 // sizes and counts), [numerics], [material] (io::MaterialSpec), every [[tool]]
@@ -18,14 +21,23 @@
 // name, a surface that is not a table); the deck reader (io/deck.cpp), which
 // every written deck goes through before it runs, checks the values.
 //
-// The writer prints with toml++ (keys sorted; floats to 17 digits; integers as
-// integers), so a deck written from a spec is the same bytes whatever path
-// built it: the reuse key of a run is the hash of this text (sim/deck_job.hpp).
+// The writer prints with toml++ (keys sorted; strings in single quotes unless
+// they need escapes; integers as integers) and then writes each float in the
+// shortest form that reads back to the same double (0.8, not toml++'s
+// 0.80000000000000004), always with a '.' or an exponent, so a deck written
+// from a spec is the same bytes whatever path built it: the reuse key of a run is the hash of this text (sim/deck_job.hpp).
 // Numbers the spec types as floats are written as floats.  Layout that is not
 // meaning: a tool's speed and the reduction are written as [tool.speed] and
 // [output.reduce] sections unless they were read inline; a contact's friction
 // is written inline; the material's sub-tables are inline except those named
 // in CaseSpec::material_sections.
+//
+// Comments: toml++ keeps none, so a deck's explanation is its header.  A
+// builder puts a few lines in CaseSpec::comment (what the case is, its units,
+// how to rerun it, and what a reader of a section must know, such as why a
+// guard only warns); to_toml prints them first as "# " lines.  The longer
+// explanations of the options live in the deck commands' --help.  The reader
+// leaves the comment empty and the comparison ignores it (layout, not meaning).
 #include <array>
 #include <optional>
 #include <set>
@@ -136,6 +148,8 @@ struct CaseSpec {
   toml::table rest;    ///< every other top-level section ([case], [sheet], [guards], ...) as read
   /// Keys of [material] sub-tables written as [material.KEY] sections rather than inline (layout only).
   std::set<std::string> material_sections;
+  /// The deck's header comment, one entry a line, printed as "# line" (layout only; see above).
+  std::vector<std::string> comment;
   bool operator==(const CaseSpec& o) const {
     return mesh == o.mesh && material == o.material && numerics == o.numerics && tools == o.tools &&
            contacts == o.contacts && steps == o.steps && reduce == o.reduce && output == o.output && rest == o.rest;
@@ -143,6 +157,13 @@ struct CaseSpec {
   /// The tool named `name`; throws InputError naming `where` when there is none.
   ToolSpec& tool(const std::string& name, const std::string& where);
 };
+
+/// `n` OpenMP threads for `drawbend run` of the deck (the deck commands' --threads):
+/// numerics.threads = n (a [numerics] made if there is none); nothing for n = 0.
+void set_threads(CaseSpec& c, int64_t n);
+
+/// A contact's friction table { law, nodes, mu, ... } as a FrictionSpec (the shape only, as from_toml).
+FrictionSpec read_friction(toml::table t);
 
 /// Reads a deck's table; `where` (the file) names it in messages.  Throws
 /// InputError (where: key: ...) when a piece has the wrong shape.

@@ -1,10 +1,9 @@
-// The block-sliding builder: deck text, run, reduction.  See block_case.hpp.
+// The block-sliding builder: the typed deck, run, reduction.  See block_case.hpp.
 #include "sim/block_case.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <sstream>
 
 #include "fe/solver.hpp"
 #include "io/case_reduction.hpp"
@@ -46,51 +45,75 @@ void check_spec(const BlockSpec& s) {
   if (s.friction.empty() && s.surface_nodes.empty()) throw InputError(w + "no friction law and no surface nodes");
 }
 
+/// The deck's header: what the case is, what it measures, units.
+std::vector<std::string> header(const BlockSpec& s, double FN) {
+  return {"Block-sliding case written by drawbend's builder (src/sim/block_case.cpp; Sec. 6.5, Fig. 6.7):",
+          "a " + fmt(s.size) + " mm cube pressed on a rigid floor at " + fmt(s.pressure) + " MPa (" + fmt(FN) +
+              " N) and slid at " + fmt(s.speed) + " mm/s, " + fmt(s.direction_deg) + " deg from RD (x).",
+          "Friction = F_t / F_N on the floor over the last third of the slide.",
+          "[sheet] rolling_direction: RD; the friction texture (and the material axes) start from it.",
+          "output.reduce: mu_x, mu_y over the last third of the slide, kept every cycle (io/case_reduction.hpp): "
+          "reduction.csv",
+          "Units: mm, N, MPa, s, t/mm^3.  Run with: drawbend run deck.toml --out DIR"};
+}
+
 }  // namespace
 
-std::string block_deck_text(const BlockSpec& s) {
+io::CaseSpec block_case(const BlockSpec& s) {
   check_spec(s);
   const double FN = s.pressure * s.size * s.size, psi = s.direction_deg * M_PI / 180.0;
-  const std::string L = toml_float(s.size), n = std::to_string(s.elements);
-  const std::string friction = s.friction.empty() ? "{ law = \"surface\", nodes = \"" + s.surface_nodes +
-                                                        "\", interval = " + std::to_string(s.interval) + " }"
-                                                  : s.friction;
-  std::ostringstream o;
-  o << "# Block-sliding case written by drawbend's builder (src/sim/block_case.cpp; Sec. 6.5, Fig. 6.7):\n"
-    << "# a " << fmt(s.size) << " mm cube pressed on a rigid floor at " << fmt(s.pressure) << " MPa ("
-    << fmt(FN) << " N) and slid at " << fmt(s.speed) << " mm/s, " << fmt(s.direction_deg) << " deg from RD (x).\n"
-    << "# Friction = F_t / F_N on the floor over the last third of the slide.\n"
-    << "# Units: mm, N, MPa, s, t/mm^3.  Run with: drawbend run deck.toml --out DIR\n"
-    << "[case]\nname = \"" << s.name << "\"\ndescription = \"block " << fmt(s.size) << " mm, " << fmt(s.pressure)
-    << " MPa, slid at " << fmt(s.speed) << " mm/s, " << fmt(s.direction_deg) << " deg from RD\"\n\n"
-    << "[mesh]\n";
-  for (const char* axis : {"x", "y", "z"}) o << axis << " = { from = 0.0, to = " << L << ", n = " << n << " }\n";
-  o << "\n" << material_section("", s.hardening) << "\n"
-    << "[sheet]\nrolling_direction = [1.0, 0.0, 0.0]  # RD: friction texture (and material axes) start from it\n\n"
-    << "[numerics]\n" << numerics_threads_line(s.threads) << "dt_safety = 0.8\nmass_scaling = " << toml_float(s.mass_scaling)
-    << "\n\n"
-    << "[[tool]]\nname = \"floor\"\ndrive = \"fixed\"\n[[tool.surface]]\nkind = \"plane\"\n"
-    << "origin = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\n\n"
-    << "[[contact]]\nfaces = \"zmin\"\ntool = \"floor\"\npenalty = " << toml_float(s.penalty)
-    << "\ntexture = \"fixed\"\nfriction = " << friction << "\n\n"
-    << "[[step]]\nname = \"press\"\nduration = " << toml_float(s.press_time) << "\ndamping = "
-    << toml_float(s.press_damping) << "\n"
-    << "force = [ { set = \"zmax\", direction = [0.0, 0.0, -1.0], magnitude = " << toml_ramp(s.press_ramp, FN) << " } ]\n\n"
-    << "[[step]]\nname = \"slide\"\nduration = " << toml_float(s.slide_time) << "\n"
-    << "force = [ { set = \"zmax\", direction = [0.0, 0.0, -1.0], magnitude = " << toml_float(FN) << " } ]\n"
-    << "velocity = [\n"
-    << "  { set = \"all\", direction = [1.0, 0.0, 0.0], speed = " << toml_ramp(s.speed_ramp, s.speed * std::cos(psi))
-    << " },\n"
-    << "  { set = \"all\", direction = [0.0, 1.0, 0.0], speed = " << toml_ramp(s.speed_ramp, s.speed * std::sin(psi))
-    << " },\n]\n\n"
-    << "[output]\nfields_per_step = 1\nhistory = [\n"
-    << "  { name = \"friction_x_N\", kind = \"tool_force\", target = \"floor\", component = 0 },\n"
-    << "  { name = \"friction_y_N\", kind = \"tool_force\", target = \"floor\", component = 1 },\n"
-    << "  { name = \"normal_N\", kind = \"tool_force\", target = \"floor\", component = 2 },\n]\n"
-    << "# mu_x, mu_y over the last third of the slide, kept every cycle (io/case_reduction.hpp): reduction.csv\n"
-    << "reduce = { kind = \"block_slide\", tool = \"floor\", step = \"slide\" }\n";
-  return o.str();
+  io::CaseSpec c;
+  c.comment = header(s, FN);
+  c.rest.insert("case", toml::table{{"name", s.name},
+                                    {"description", "block " + fmt(s.size) + " mm, " + fmt(s.pressure) + " MPa, slid at " +
+                                                        fmt(s.speed) + " mm/s, " + fmt(s.direction_deg) + " deg from RD"}});
+  io::MeshSpec& mesh = c.mesh.emplace();
+  for (const char* axis : {"x", "y", "z"})
+    mesh.rest.insert(axis, inline_table(toml::table{{"from", 0.0}, {"to", s.size}, {"n", s.elements}}));
+  c.material = material_choice("", s.hardening);
+  c.rest.insert("sheet", sheet_table("rd"));
+  io::NumericsSpec& n = c.numerics.emplace();
+  n.dt_safety = 0.8;
+  n.rest.insert("mass_scaling", s.mass_scaling);
+  io::ToolSpec& floor = c.tools.emplace_back();
+  floor.name = "floor", floor.drive = "fixed";
+  io::SurfaceSpec& plane = floor.surfaces.emplace_back();
+  plane.kind = "plane", plane.origin = io::Vec3Spec{0.0, 0.0, 0.0}, plane.normal = io::Vec3Spec{0.0, 0.0, 1.0};
+  io::ContactSpec& contact = c.contacts.emplace_back();
+  contact.rest = toml::table{{"faces", "zmin"}, {"tool", "floor"}, {"penalty", s.penalty}, {"texture", "fixed"}};
+  if (s.friction.empty()) {
+    contact.friction.emplace();
+    contact.friction->law = "surface", contact.friction->nodes = s.surface_nodes;
+    contact.friction->rest.insert("interval", s.interval);
+  } else {
+    contact.friction = friction_spec(s.friction, "block spec: friction");
+  }
+  auto load = [&](auto magnitude) {  // the normal load on the top face
+    toml::table f = inline_table(toml::table{{"set", "zmax"}, {"direction", toml::array{0.0, 0.0, -1.0}}});
+    f.insert("magnitude", std::move(magnitude));
+    return toml::array{std::move(f)};
+  };
+  io::StepSpec& press = c.steps.emplace_back();
+  press.name = "press", press.duration = s.press_time, press.damping = s.press_damping;
+  press.rest.insert("force", load(ramp_history(s.press_ramp, FN)));
+  io::StepSpec& slide = c.steps.emplace_back();
+  slide.name = "slide", slide.duration = s.slide_time;
+  slide.rest.insert("force", load(FN));
+  toml::array velocity;
+  for (const auto& [dir, v] : {std::pair{toml::array{1.0, 0.0, 0.0}, s.speed * std::cos(psi)},
+                               std::pair{toml::array{0.0, 1.0, 0.0}, s.speed * std::sin(psi)}})
+    velocity.push_back(inline_table(toml::table{{"set", "all"}, {"direction", dir}, {"speed", ramp_history(s.speed_ramp, v)}}));
+  slide.rest.insert("velocity", std::move(velocity));
+  toml::array history;
+  for (const auto& [name, component] : {std::pair{"friction_x_N", 0}, std::pair{"friction_y_N", 1}, std::pair{"normal_N", 2}})
+    history.push_back(inline_table(
+        toml::table{{"name", name}, {"kind", "tool_force"}, {"target", "floor"}, {"component", component}}));
+  c.output = toml::table{{"fields_per_step", 1}, {"history", std::move(history)}};
+  c.reduce = io::ReduceSpec{"block_slide", "floor", "slide", {}, {}, {}, {}, true};
+  return c;
 }
+
+std::string block_deck_text(const BlockSpec& s) { return io::to_toml(block_case(s)); }
 
 io::Deck block_deck(const BlockSpec& s) { return io::parse_deck(block_deck_text(s), s.name + ".toml"); }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The block-sliding model of Chapter 6 (Sec. 6.5, Fig. 6.7): a builder that
-// writes the case deck from a few physical parameters, and a runner that
-// slides the block and reduces the run to the retrieved friction coefficients.
+// makes the case deck (a typed io::CaseSpec) from a few physical parameters,
+// and a runner that slides the block and reduces the run to the retrieved
+// friction coefficients.
 // `drawbend block-deck` writes the same deck for `drawbend run`.
 //
 // The model: a cube of edge `size` pressed on a rigid floor (the plane z = 0)
@@ -17,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "io/case_spec.hpp"
 #include "io/deck.hpp"
 
 namespace drawbend::sim {
@@ -41,16 +43,15 @@ struct BlockSpec {
   double press_damping = 2e4;   ///< mass-proportional damping of step 1 [1/s]
   double slide_time = 3e-3;     ///< duration of step 2 [s]
   double speed_ramp = 5e-4;     ///< speed ramp of step 2 [s]
-  /// OpenMP threads of `drawbend run` written into the deck's [numerics]
-  /// (0: none written, the default; the deck writers' --threads).
-  int threads = 0;
 };
 
 /// The spec with the data files of this tree (DRAWBEND_DATA_DIR): the RD
 /// hardening curve of AA5754-O and Table 6.1's nodes.
 BlockSpec default_block_spec(const std::string& data_dir);
 
-/// The case deck (TOML) for the spec; throws InputError naming a bad field.
+/// The case deck for the spec, typed (io/case_spec.hpp); throws InputError naming a bad field.
+io::CaseSpec block_case(const BlockSpec& s);
+/// The deck's text: io::to_toml(block_case(s)).
 std::string block_deck_text(const BlockSpec& s);
 /// The deck parsed (file names in it are absolute).
 io::Deck block_deck(const BlockSpec& s);

@@ -242,7 +242,7 @@ io::CaseSpec cup_case(const CupSpec& spec) {
   const double dt = spec.stroke / spec.speed / spec.cycles, tr = 0.02 * spec.cycles * dt;
   if (!c.numerics) c.numerics.emplace();
   c.numerics->target_dt = dt / m.dt_safety;
-  if (spec.threads > 0) c.numerics->threads = spec.threads;
+  io::set_threads(c, spec.threads);
   if (c.steps.size() != 2) throw InputError(spec.deck + ": expected two steps (clamp, draw)");
   c.steps[0].duration = 400 * dt;
   c.steps[0].damping = 1.0 / (50 * dt);  // velocities relax in ~50 cycles while clamping
@@ -257,13 +257,13 @@ io::CaseSpec cup_case(const CupSpec& spec) {
 }
 
 std::string cup_deck_text(const CupSpec& spec) {
-  const io::CaseSpec c = cup_case(spec);
-  std::ostringstream o;
-  o << "# Cup-drawing deck written by drawbend's builder (src/sim/cup_case.cpp) from " << spec.deck << ".\n"
-    << "# Punch speed " << spec.speed << " mm/s, stroke " << spec.stroke << " mm in " << spec.cycles
-    << " cycles, mesh refinement " << spec.refine << ".\n# Units: mm, N, MPa, s, t/mm^3.  Rerun with: drawbend run deck.toml --out DIR\n"
-    << io::to_toml(c) << "\n";
-  return o.str();
+  io::CaseSpec c = cup_case(spec);
+  std::ostringstream run;
+  run << "Punch speed " << spec.speed << " mm/s, stroke " << spec.stroke << " mm in " << spec.cycles
+      << " cycles, mesh refinement " << spec.refine << ".";
+  c.comment = {"Cup-drawing deck written by drawbend's builder (src/sim/cup_case.cpp) from " + spec.deck + ".", run.str(),
+               "Units: mm, N, MPa, s, t/mm^3.  Rerun with: drawbend run deck.toml --out DIR"};
+  return io::to_toml(c);
 }
 
 void write_isotropic_nodes(const std::string& table_6_1, const std::string& out_csv) {

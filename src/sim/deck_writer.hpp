@@ -1,9 +1,11 @@
 #pragma once
-// Small helpers of the case builders that write TOML decks (sim/*_case.cpp).
+// Small helpers of the case builders (sim/*_case.cpp), which return typed decks (io/case_spec.hpp).
 #include <cmath>
 #include <string>
 
 #include "core/csv.hpp"
+#include "core/toml_read.hpp"
+#include "io/case_spec.hpp"
 
 namespace drawbend::sim {
 
@@ -15,17 +17,25 @@ inline std::string toml_float(double v) {
   return t;
 }
 
-/// A TOML history that ramps linearly from 0 at t = 0 to `v` at `t` [s], then holds.
-inline std::string toml_ramp(double t, double v) {
-  return "{ t = [0.0, " + toml_float(t) + "], v = [0.0, " + toml_float(v) + "] }";
+/// `t` made an inline table (a row of a list such as a step's fixed or force, or a history).
+inline toml::table inline_table(toml::table t) {
+  t.is_inline(true);
+  return t;
 }
 
-/// The [numerics] line of a spec's `threads` field: "threads = N  # ..." for N > 0
-/// (the OpenMP threads `drawbend run` uses for the deck; the deck writers'
-/// --threads sets the field), nothing for 0 (the default: none written).
-inline std::string numerics_threads_line(int threads) {
-  if (threads <= 0) return {};
-  return "threads = " + std::to_string(threads) + "  # OpenMP threads of `drawbend run` (--threads)\n";
+/// The history that ramps linearly from 0 at t = 0 to `v` at `t` [s], then holds:
+/// { t = [0.0, t], v = [0.0, v] } (inline).
+inline toml::table ramp_history(double t, double v) {
+  return inline_table(toml::table{{"t", toml::array{0.0, t}}, {"v", toml::array{0.0, v}}});
+}
+
+/// The friction of a builder spec (a TOML inline table such as `{ law = "coulomb", mu = 0.1 }`)
+/// as a contact's friction; InputError naming `where` when the text is not an inline table.
+inline io::FrictionSpec friction_spec(const std::string& text, const std::string& where) {
+  const toml::table t = parse_toml("friction = " + text, where);
+  const toml::table* f = t["friction"].as_table();
+  if (!f) throw InputError(where + ": expected a TOML inline table such as { law = \"coulomb\", mu = 0.1 }, found " + text);
+  return io::read_friction(*f);
 }
 
 /// Throws InputError "<what> must be > 0" unless v is a finite number > 0.

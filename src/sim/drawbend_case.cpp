@@ -1,4 +1,4 @@
-// The draw-bend builder: deck text, run, reduction.  See drawbend_case.hpp.
+// The draw-bend builder: the typed deck, run, reduction.  See drawbend_case.hpp.
 #include "sim/drawbend_case.hpp"
 
 #include <algorithm>
@@ -48,6 +48,17 @@ void check_spec(const DrawBendSpec& s) {
   if (s.hardening.empty()) throw InputError("draw-bend spec: no hardening curve");
 }
 
+/// The deck's numbers keep the 10 significant digits the draw-bend decks were
+/// written with before they were typed (issue 49), so the same spec runs to the
+/// same bits as its older decks did (tests/unit/test_builder_specs.cpp).
+double r10(double v) {
+  std::ostringstream o;
+  o.precision(10);
+  o << v;
+  return std::stod(o.str());
+}
+
+/// v as the header comment and the description print it (10 digits, a float's '.0').
 std::string num(double v) {
   std::ostringstream o;
   o.precision(10);
@@ -64,26 +75,31 @@ std::string quoted_free(std::string t) {
   return t;
 }
 
-}  // namespace
+/// The geometry and times of a spec's deck (Sec. 2.3.2; issue 51 for the bend step).
+struct Layout {
+  double R, t, Lw, d, h;
+  int n_in, n_out, c_in = 4, c_out = 4;
+  double x_in, x_out, x0, x1;
+  double ts, ramp, t1, t2, ramp3, omega, t3, a;
+};
 
-std::string deck_text(const DrawBendSpec& s) {
-  check_spec(s);
-  const double R = s.pin_diameter / 2, t = s.thickness, Lw = wrap_length(s), d = draw_length(s);
-  const double h = s.element_length, coarse = std::max(2.0, 2 * h);
+Layout layout_of(const DrawBendSpec& s) {
+  Layout l;
+  l.R = s.pin_diameter / 2, l.t = s.thickness, l.Lw = wrap_length(s), l.d = draw_length(s), l.h = s.element_length;
+  const double coarse = std::max(2.0, 2 * l.h);
   // Refined zone: all the strip that is in the bend during the draw, plus a
   // margin.  After step 1 the bend holds the strip from x = 0 to Lw; at the
   // end of step 3 from x = -d to Lw - d.
-  const int n_in = static_cast<int>(std::ceil((d + 4.0) / h));
-  const int n_out = static_cast<int>(std::ceil((Lw + 4.0) / h));
-  const double x_in = -n_in * h, x_out = n_out * h;
-  const int c_in = 4, c_out = 4;
-  const double x0 = x_in - c_in * coarse, x1 = x_out + c_out * coarse;
+  l.n_in = static_cast<int>(std::ceil((l.d + 4.0) / l.h));
+  l.n_out = static_cast<int>(std::ceil((l.Lw + 4.0) / l.h));
+  l.x_in = -l.n_in * l.h, l.x_out = l.n_out * l.h;
+  l.x0 = l.x_in - l.c_in * coarse, l.x1 = l.x_out + l.c_out * coarse;
   // Steps 1-2 last 0.05 s and 0.04 s at mass scaling 1e4; a larger scaling
   // slows the strip's dynamics by ts = sqrt(scaling / 1e4), so their times
   // (and the relaxation's time constants) stretch by ts to stay as
   // quasi-static.  Without this, a 50 mm/s draw at 4e4 (the inertia of 100 mm/s
   // at 1e4) started from a less settled strip and gave a 3.5 % higher F_B.
-  const double ts = std::max(1.0, std::sqrt(s.mass_scaling / 1e4));
+  l.ts = std::max(1.0, std::sqrt(s.mass_scaling / 1e4));
   // With the inlet sliding in step 1 (spec.bend_inlet_slides) the strip is
   // held taut on the pin by the back tension and the bend takes 3 times as
   // long (issue 51, docs/issue51-large-pin.md): free of tension, or bent at
@@ -91,27 +107,9 @@ std::string deck_text(const DrawBendSpec& s) {
   // taut in step 2 or 3, and that snatch, not the draw's speed ramp, yields
   // the inlet leg (up to 4 % plastic strain) before it enters the bend.
   const double slow = s.bend_inlet_slides ? 3.0 : 1.0;
-  const double ramp = 0.005 * ts * slow, t1 = 0.05 * ts * slow, t2 = 0.04 * ts, ramp3 = 0.01 * ts;
-  const double omega = (M_PI / 2) / (t1 - ramp);
-  const double t3 = d / s.speed + ramp3 / 2;  // the speed ramp loses speed * ramp3 / 2
-  std::ostringstream o;
-  o << "# Draw-bend case written by drawbend's builder (src/sim/drawbend_case.cpp).\n"
-    << "# Pin " << num(s.pin_diameter) << " mm, 90 deg wrap, back tension " << num(s.back_tension)
-    << " N on the half model, outlet speed " << num(s.speed) << " mm/s, slide " << num(d) << " mm.\n"
-    << "# Units: mm, N, MPa, s, t/mm^3.  Rerun with: drawbend run deck.toml --out DIR\n"
-    << "[case]\nname = \"" << s.name << "\"\ndescription = \"draw-bend, pin " << num(s.pin_diameter) << " mm, "
-    << (s.friction.empty() ? std::string("frictionless") : "friction " + quoted_free(s.friction)) << "\"\n\n"
-    << "[mesh]\nx = { breaks = [" << num(x0) << ", " << num(x_in) << ", " << num(x_out) << ", " << num(x1)
-    << "], counts = [" << c_in << ", " << n_in + n_out << ", " << c_out << "] }\n"
-    << "y = { from = 0.0, to = " << num(s.width) << ", n = " << s.across << " }\n"
-    << "z = { from = " << num(R) << ", to = " << num(R + t) << ", n = " << s.through << " }\n\n"
-    << material_section(s.material, s.hardening) << "\n"
-    << (s.strip_direction == "rd" && s.material.empty() ? std::string() : sheet_section(s.strip_direction) + "\n")
-    << "[numerics]\n" << numerics_threads_line(s.threads) << "dt_safety = 0.8\nmass_scaling = " << num(s.mass_scaling) << "\n\n"
-    << "[[tool]]\nname = \"pin\"\ndrive = \"fixed\"\n[[tool.surface]]\nkind = \"cylinder\"\n"
-    << "origin = [0.0, 0.0, 0.0]\naxis = [0.0, 1.0, 0.0]\nradius = " << num(R) << "\n\n"
-    << "[[contact]]\nfaces = \"zmin\"\ntool = \"pin\"\npenalty = " << num(s.penalty) << "\n";
-  if (!s.friction.empty()) o << "friction = " << s.friction << "\n";
+  l.ramp = 0.005 * l.ts * slow, l.t1 = 0.05 * l.ts * slow, l.t2 = 0.04 * l.ts, l.ramp3 = 0.01 * l.ts;
+  l.omega = (M_PI / 2) / (l.t1 - l.ramp);
+  l.t3 = l.d / s.speed + l.ramp3 / 2;  // the speed ramp loses speed * ramp3 / 2
   // Step 1 (Sec. 4.2: "while fixing the inlet end, the outlet end was loosely
   // bent around the pin by applying a circular motion"): the outlet end turns
   // 90 deg about the centre (a, a) in the x-z plane, a = Rm pi/4 with Rm the
@@ -122,69 +120,156 @@ std::string deck_text(const DrawBendSpec& s) {
   // strip than the wrap holds (up to 1.1 mm at 30 deg on the 42 mm pin): with
   // the inlet end clamped the strip is stretched plastically by ~1.3 %
   // (issue 51); spec.bend_inlet_slides lets the inlet end slide instead.
-  const double a = (R + t / 2) * M_PI / 4;
-  // Each step's fixed list starts with the symmetry plane (and, for a
-  // plane-strain width, the free edge held across the width).
-  const std::string sym = std::string("fixed = [ { set = \"ymin\", dof = [false, true, false] }") +
-                          (s.plane_strain_width ? ", { set = \"ymax\", dof = [false, true, false] }" : "");
-  o << "\n[[step]]\nname = \"bend\"\nduration = " << num(t1) << "\ndamping = " << num(50.0 / ts)
-    << "\nfriction = false\n"
-    << sym << ", { set = \"xmin\", dof = ["
-    << (s.bend_inlet_slides ? "false" : "true") << ", true, true] } ]\n";
+  l.a = (l.R + l.t / 2) * M_PI / 4;
+  return l;
+}
+
+toml::array floats(std::initializer_list<double> v) {
+  toml::array a;
+  for (double x : v) a.push_back(r10(x));
+  return a;
+}
+
+toml::array dofs(bool x, bool y, bool z) { return toml::array{x, y, z}; }
+
+/// A history { t = [...], v = [...] } (inline).
+toml::table history(std::initializer_list<double> t, std::initializer_list<double> v) {
+  return inline_table(toml::table{{"t", floats(t)}, {"v", floats(v)}});
+}
+
+toml::table mesh_table(const DrawBendSpec& s, const Layout& l) {
+  return toml::table{
+      {"x", inline_table(toml::table{{"breaks", floats({l.x0, l.x_in, l.x_out, l.x1})},
+                 {"counts", toml::array{l.c_in, l.n_in + l.n_out, l.c_out}}})},
+      {"y", inline_table(toml::table{{"from", 0.0}, {"to", r10(s.width)}, {"n", s.across}})},
+      {"z", inline_table(toml::table{{"from", r10(l.R)}, {"to", r10(l.R + l.t)}, {"n", s.through}})}};
+}
+
+/// The three steps (see drawbend_case.hpp).  Each step's fixed list starts with
+/// the symmetry plane (and, for a plane-strain width, the free edge held across the width).
+std::vector<io::StepSpec> steps_of(const DrawBendSpec& s, const Layout& l) {
+  auto fixed = [&](std::initializer_list<toml::table> more) {
+    toml::array f{inline_table(toml::table{{"set", "ymin"}, {"dof", dofs(false, true, false)}})};
+    if (s.plane_strain_width) f.push_back(inline_table(toml::table{{"set", "ymax"}, {"dof", dofs(false, true, false)}}));
+    for (const toml::table& t : more) f.push_back(t);
+    return f;
+  };
+  auto back_tension = [&](auto magnitude) {  // on the inlet end, along -x
+    toml::table f = inline_table(toml::table{{"set", "xmin"}, {"direction", floats({-1.0, 0.0, 0.0})}});
+    f.insert("magnitude", std::move(magnitude));
+    return toml::array{std::move(f)};
+  };
+  const double ts = l.ts, F = s.back_tension;
+  io::StepSpec bend{"bend", r10(l.t1), r10(50.0 / ts), {}};
+  bend.rest.insert("friction", false);
+  bend.rest.insert("fixed", fixed({inline_table(toml::table{{"set", "xmin"}, {"dof", dofs(!s.bend_inlet_slides, true, true)}})}));
   if (s.bend_inlet_slides)  // the back tension, ramped over the first half of the bend
-    o << "force = [ { set = \"xmin\", direction = [-1.0, 0.0, 0.0], magnitude = { t = [0.0, " << num(t1 / 2)
-      << "], v = [0.0, " << num(s.back_tension) << "] } } ]\n";
-  o << "rotation = [ { set = \"xmax\", centre = [" << num(a) << ", 0.0, " << num(a)
-    << "], axis = [0.0, 1.0, 0.0], omega = { t = [0.0, "
-    << num(ramp) << ", " << num(t1 - ramp) << ", " << num(t1) << "], v = [0.0, " << num(omega) << ", " << num(omega)
-    << ", 0.0] } } ]\n\n"
-    << "[[step]]\nname = \"tension\"\nduration = " << num(t2) << "\ndamping = " << num(150.0 / ts)
-    << "\nfriction = false\n"
-    << sym << ", { set = \"xmax\", dof = [true, true, true] }, "
-       "{ set = \"xmin\", dof = [false, false, true] } ]\n"
-    << "force = [ { set = \"xmin\", direction = [-1.0, 0.0, 0.0], magnitude = "
-    << (s.bend_inlet_slides ? num(s.back_tension)  // already on from step 1: step 2 only settles
-                            : "{ t = [0.0, " + num(t2 / 2) + "], v = [0.0, " + num(s.back_tension) + "] }")
-    << " } ]\n\n"
-    << "[[step]]\nname = \"draw\"\nduration = " << num(t3) << "\n"
-    << sym << ", { set = \"xmax\", dof = [true, true, false] }, "
-       "{ set = \"xmin\", dof = [false, false, true] } ]\n"
-    << "force = [ { set = \"xmin\", direction = [-1.0, 0.0, 0.0], magnitude = " << num(s.back_tension) << " } ]\n"
-    << "velocity = [ { set = \"xmax\", direction = [0.0, 0.0, -1.0], speed = { t = [0.0, "
-    << num(ramp3) << "], v = [0.0, " << num(s.speed) << "] } } ]\n\n"
-    << "[output]\nfields_per_step = " << std::max(1, s.snapshots) << "\nhistory = [\n"
-    << "  { name = \"" << signal_name(Signal::outlet_force) << "\", kind = \"reaction\", target = \"xmax\", component = 2 },\n"
-    << "  { name = \"" << signal_name(Signal::back_tension) << "\", kind = \"applied\", target = \"xmin\", component = 0 },\n"
-    << "  { name = \"" << signal_name(Signal::inlet_x) << "\", kind = \"displacement\", target = \"xmin\", component = 0 },\n"
-    << "  { name = \"" << signal_name(Signal::pin_force_x) << "\", kind = \"tool_force\", target = \"pin\", component = 0 },\n"
-    << "  { name = \"" << signal_name(Signal::pin_force_z) << "\", kind = \"tool_force\", target = \"pin\", component = 2 },\n";
+    bend.rest.insert("force", back_tension(history({0.0, l.t1 / 2}, {0.0, F})));
+  bend.rest.insert("rotation", toml::array{inline_table(toml::table{{"set", "xmax"}, {"centre", floats({l.a, 0.0, l.a})},
+                                                {"axis", floats({0.0, 1.0, 0.0})},
+                                                {"omega", history({0.0, l.ramp, l.t1 - l.ramp, l.t1}, {0.0, l.omega, l.omega, 0.0})}})});
+  io::StepSpec tension{"tension", r10(l.t2), r10(150.0 / ts), {}};
+  tension.rest.insert("friction", false);
+  tension.rest.insert("fixed", fixed({inline_table(toml::table{{"set", "xmax"}, {"dof", dofs(true, true, true)}}),
+                                      inline_table(toml::table{{"set", "xmin"}, {"dof", dofs(false, false, true)}})}));
+  if (s.bend_inlet_slides) tension.rest.insert("force", back_tension(r10(F)));  // on from step 1: step 2 only settles
+  else tension.rest.insert("force", back_tension(history({0.0, l.t2 / 2}, {0.0, F})));
+  io::StepSpec draw{"draw", r10(l.t3), {}, {}};
+  draw.rest.insert("fixed", fixed({inline_table(toml::table{{"set", "xmax"}, {"dof", dofs(true, true, false)}}),
+                                   inline_table(toml::table{{"set", "xmin"}, {"dof", dofs(false, false, true)}})}));
+  draw.rest.insert("force", back_tension(r10(F)));
+  draw.rest.insert("velocity", toml::array{inline_table(toml::table{{"set", "xmax"}, {"direction", floats({0.0, 0.0, -1.0})},
+                                                {"speed", history({0.0, l.ramp3}, {0.0, s.speed})}})});
+  return {std::move(bend), std::move(tension), std::move(draw)};
+}
+
+/// [output]: the frames and the history signals (run_output::Signal).
+toml::table output_table(const DrawBendSpec& s, const Layout& l) {
+  toml::array h;
+  auto signal = [&](const std::string& name, const char* kind, const char* target, int component) {
+    h.push_back(inline_table(toml::table{{"name", name}, {"kind", kind}, {"target", target}, {"component", component}}));
+  };
+  auto strain = [&](const std::string& name, double x, double y, double z, int component) {
+    h.push_back(inline_table(toml::table{{"name", name}, {"kind", "strain"}, {"point", floats({x, y, z})}, {"component", component}}));
+  };
+  signal(signal_name(Signal::outlet_force), "reaction", "xmax", 2);
+  signal(signal_name(Signal::back_tension), "applied", "xmin", 0);
+  signal(signal_name(Signal::inlet_x), "displacement", "xmin", 0);
+  signal(signal_name(Signal::pin_force_x), "tool_force", "pin", 0);
+  signal(signal_name(Signal::pin_force_z), "tool_force", "pin", 2);
   // Strain spots (Sec. 2.3.2): the centre-row elements on the contact side
   // ("inside") and the free side ("outside") at a section that passes the
   // whole wrap during the draw: it enters at a slide of d - Lw - 2 mm.
-  const double xs = -(d - Lw - 2.0), ys = s.width / (2.0 * s.across), dz = t / (2.0 * s.through);
+  const double xs = -(l.d - l.Lw - 2.0), ys = s.width / (2.0 * s.across), dz = l.t / (2.0 * s.through);
   for (int k = 0; k < 2; ++k) {
-    const Signal strain = k == 0 ? Signal::strain_inside : Signal::strain_outside;
-    const Signal plastic = k == 0 ? Signal::plastic_strain_inside : Signal::plastic_strain_outside;
-    const double zs = k == 0 ? R + dz : R + t - dz;
-    o << "  { name = \"" << signal_name(strain) << "\", kind = \"strain\", point = [" << num(xs) << ", " << num(ys)
-      << ", " << num(zs) << "], component = 0 },\n"
-      << "  { name = \"" << signal_name(plastic) << "\", kind = \"strain\", point = [" << num(xs) << ", " << num(ys)
-      << ", " << num(zs) << "], component = 1 },\n";
+    const double zs = k == 0 ? l.R + dz : l.R + l.t - dz;
+    strain(signal_name(k == 0 ? Signal::strain_inside : Signal::strain_outside), xs, ys, zs, 0);
+    strain(signal_name(k == 0 ? Signal::plastic_strain_inside : Signal::plastic_strain_outside), xs, ys, zs, 1);
   }
   // F_Y and F_X on the full strip, tension positive (-2 x the half model's signals).
-  o << "  { name = \"" << signal_name(Signal::outlet_force_full) << "\", kind = \"reaction\", target = \"xmax\", component = 2, scale = -2.0 },\n"
-    << "  { name = \"" << signal_name(Signal::back_tension_full) << "\", kind = \"applied\", target = \"xmin\", component = 0, scale = -2.0 },\n";
+  for (auto [sig, kind, target, component] : {std::tuple{Signal::outlet_force_full, "reaction", "xmax", 2},
+                                              std::tuple{Signal::back_tension_full, "applied", "xmin", 0}})
+    h.push_back(inline_table(toml::table{{"name", signal_name(sig)}, {"kind", kind}, {"target", target}, {"component", component}, {"scale", -2.0}}));
   // Mid-wrap sections (Sec. 2.3.2, "steady strain condition"): the section
   // that starts at x = Lw/2 - s sits at mid-wrap after a slide s; its outside
   // strain there, against s, shows when the strip passing the pin stops
   // changing.  One section per element length along the refined zone.
-  const double step = std::max(h, 0.5);
-  for (int k = 0; k * step <= d - 1.0; ++k)
-    o << "  { name = \"" << mid_wrap_strain(k) << "\", kind = \"strain\", point = [" << num(Lw / 2 - k * step) << ", "
-      << num(ys) << ", " << num(R + t - dz) << "], component = 0 },\n";
-  o << "]\n";
-  return o.str();
+  const double step = std::max(l.h, 0.5);
+  for (int k = 0; k * step <= l.d - 1.0; ++k) strain(mid_wrap_strain(k), l.Lw / 2 - k * step, ys, l.R + l.t - dz, 0);
+  return toml::table{{"fields_per_step", std::max(1, s.snapshots)}, {"history", std::move(h)}};
 }
+
+/// The deck's header: the case, the half model, the steps, the history columns, units.
+std::vector<std::string> header(const DrawBendSpec& s, const Layout& l) {
+  std::vector<std::string> h = {
+      "Draw-bend case written by drawbend's builder (src/sim/drawbend_case.cpp; Secs. 2.2, 3.4, 4.2).",
+      "Pin " + num(s.pin_diameter) + " mm, 90 deg wrap, back tension " + num(s.back_tension) +
+          " N on the half model, outlet speed " + num(s.speed) + " mm/s, slide " + num(l.d) + " mm.",
+      "The model is the strip's top half (y = 0 is the symmetry plane): its forces are half the strip's.",
+      std::string("Steps: bend (the outlet end turns round the pin; the inlet end ") +
+          (s.bend_inlet_slides ? "slides under the back tension" : "clamped, as before issue 51") +
+          "), tension (back tension on, outlet held, damped), draw (the outlet end at the speed).",
+      "History: half-model forces (*_N), the full strip's F_Y and F_X (F_*_full_strip_N, tension positive), the",
+      "strain at a section that passes the whole wrap, and eps_mid_<k>: the outside strain at mid-wrap after k sections.",
+      "Units: mm, N, MPa, s, t/mm^3.  Rerun with: drawbend run deck.toml --out DIR"};
+  if (s.strip_direction != "rd" || !s.material.empty())
+    h.insert(h.end() - 1, std::string("[sheet] rolling_direction: RD ") +
+                              (s.strip_direction == "rd" ? "along the strip (x)" : "across the strip (y): a TD strip"));
+  return h;
+}
+
+}  // namespace
+
+io::CaseSpec drawbend_case(const DrawBendSpec& s) {
+  check_spec(s);
+  const Layout l = layout_of(s);
+  io::CaseSpec c;
+  c.comment = header(s, l);
+  c.rest.insert("case", toml::table{{"name", s.name},
+                                    {"description", "draw-bend, pin " + num(s.pin_diameter) + " mm, " +
+                                                        (s.friction.empty() ? std::string("frictionless")
+                                                                            : "friction " + quoted_free(s.friction))}});
+  c.mesh.emplace().rest = mesh_table(s, l);
+  c.material = material_choice(s.material, s.hardening);
+  if (s.strip_direction != "rd" || !s.material.empty()) c.rest.insert("sheet", sheet_table(s.strip_direction));
+  io::NumericsSpec& n = c.numerics.emplace();
+  n.dt_safety = 0.8;
+  n.rest.insert("mass_scaling", r10(s.mass_scaling));
+  io::ToolSpec pin;
+  pin.name = "pin", pin.drive = "fixed";
+  io::SurfaceSpec cyl;
+  cyl.kind = "cylinder", cyl.origin = io::Vec3Spec{0.0, 0.0, 0.0}, cyl.axis = io::Vec3Spec{0.0, 1.0, 0.0}, cyl.radius = r10(l.R);
+  pin.surfaces.push_back(std::move(cyl));
+  c.tools.push_back(std::move(pin));
+  io::ContactSpec& contact = c.contacts.emplace_back();
+  contact.rest = toml::table{{"faces", "zmin"}, {"tool", "pin"}, {"penalty", r10(s.penalty)}};
+  if (!s.friction.empty()) contact.friction = friction_spec(s.friction, "draw-bend spec: friction");
+  c.steps = steps_of(s, l);
+  c.output = output_table(s, l);
+  return c;
+}
+
+std::string deck_text(const DrawBendSpec& s) { return io::to_toml(drawbend_case(s)); }
 
 namespace {
 
@@ -292,14 +377,13 @@ double DrawBendResult::mean_pressure() const {
 
 namespace {
 
-/// The case name of a deck our builder wrote: the quoted value of the first
-/// `name = "..."` line after `[case]`; "" if there is none.
-std::string case_name(const std::string& text) {
-  const std::string head = "\n[case]\nname = \"";
-  const std::size_t a = text.find(head);
-  if (a == std::string::npos) return "";
-  const std::size_t b = a + head.size(), e = text.find('"', b);
-  return e == std::string::npos ? "" : text.substr(b, e - b);
+/// The case name ([case] name) of a deck; "" if it has none or is not TOML.
+std::string case_name(const std::string& text, const std::string& where) {
+  try {
+    return parse_toml(text, where)["case"]["name"].value_or(std::string());
+  } catch (const InputError&) {
+    return "";
+  }
 }
 
 }  // namespace
@@ -315,7 +399,7 @@ std::string find_same_run(const DrawBendSpec& s, const std::vector<std::string>&
       if (!fs::exists(d / "summary.csv", ec) || !fs::exists(d / "deck.toml", ec)) continue;
       const std::string other = read_file((d / "deck.toml").string());
       DrawBendSpec t = s;
-      t.name = case_name(other);
+      t.name = case_name(other, (d / "deck.toml").string());
       if (t.name.empty()) continue;
       const std::string text = deck_text(t);
       if (io::portable_deck(text) == other && io::portable_inputs_current(text, d.string())) return d.string();

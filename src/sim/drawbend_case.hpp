@@ -1,7 +1,8 @@
 #pragma once
-// The draw-bend model of Chapters 2-5: a builder that writes a case deck from a
-// few physical parameters, runs it with the solver, and reduces the run to the
-// thesis's quantities.  The deck is written next to the results, so a reader
+// The draw-bend model of Chapters 2-5: a builder that makes the case deck (a
+// typed io::CaseSpec, written with io::to_toml) from a few physical
+// parameters, runs it with the solver, and reduces the run to the thesis's
+// quantities.  The deck is written next to the results, so a reader
 // can rerun or edit it with `drawbend run` without recompiling.
 //
 // The model (Secs. 2.2, 3.4, 4.2): the top half of the strip by symmetry
@@ -25,6 +26,7 @@
 #include "analysis/new_method.hpp"
 #include "core/csv.hpp"
 #include "core/run_output.hpp"
+#include "io/case_spec.hpp"
 #include "io/run_result.hpp"
 
 namespace drawbend::sim {
@@ -79,9 +81,6 @@ struct DrawBendSpec {
   /// the 42 mm pin 3.9 % with 2 elements across, 5.9 % with 4 or 8;
   /// docs/issue51-large-pin.md).
   bool plane_strain_width = false;
-  /// OpenMP threads of `drawbend run` written into the deck's [numerics]
-  /// (0: none written, the default; the deck writers' --threads).
-  int threads = 0;
 };
 
 /// Mid-surface wrap length (D/2 + t/2) * pi/2 [mm].
@@ -89,7 +88,9 @@ double wrap_length(const DrawBendSpec& s);
 /// The slide of step 3 [mm].
 double draw_length(const DrawBendSpec& s);
 
-/// The case deck (TOML) for the spec.
+/// The case deck for the spec, typed (io/case_spec.hpp); throws InputError naming a bad field.
+io::CaseSpec drawbend_case(const DrawBendSpec& s);
+/// The deck's text: io::to_toml(drawbend_case(s)).
 std::string deck_text(const DrawBendSpec& s);
 
 /// One node of the pin contact map [MPa, mm, mm^2].

@@ -45,10 +45,11 @@ std::string material_section(const std::string& material, const std::string& def
   return io::to_toml(material_choice(material, default_hardening));
 }
 
-std::string sheet_section(const std::string& strip_direction) {
-  if (strip_direction == "rd") return "[sheet]\nrolling_direction = [1.0, 0.0, 0.0]  # RD along the strip\n";
-  if (strip_direction == "td") return "[sheet]\nrolling_direction = [0.0, 1.0, 0.0]  # RD across the strip (a TD strip)\n";
-  throw InputError("strip direction: expected \"rd\" or \"td\", found \"" + strip_direction + "\"");
+toml::table sheet_table(const std::string& strip_direction) {
+  if (strip_direction != "rd" && strip_direction != "td")
+    throw InputError("strip direction: expected \"rd\" or \"td\", found \"" + strip_direction + "\"");
+  const bool rd = strip_direction == "rd";
+  return toml::table{{"rolling_direction", toml::array{rd ? 1.0 : 0.0, rd ? 0.0 : 1.0, 0.0}}};
 }
 
 }  // namespace drawbend::sim

@@ -32,8 +32,8 @@ io::MaterialSpec material_choice(toml::table& m, const std::string& default_hard
 /// "[material]\n..." for the choice above: io::to_toml(material_choice(...)).
 std::string material_section(const std::string& material, const std::string& default_hardening);
 
-/// "[sheet]\nrolling_direction = [...]\n": the strip's axis (x) is RD ("rd") or
-/// TD ("td", RD across the strip: y).  Throws InputError for anything else.
-std::string sheet_section(const std::string& strip_direction);
+/// The [sheet] table { rolling_direction = [...] }: the strip's axis (x) is RD
+/// ("rd") or TD ("td", RD across the strip: y).  Throws InputError for anything else.
+toml::table sheet_table(const std::string& strip_direction);
 
 }  // namespace drawbend::sim

@@ -1,8 +1,8 @@
 #pragma once
 // The strip-draw friction test of Chapter 3 (Sec. 3.3, Fig. 3.2): a builder
-// that writes the case deck from a few physical parameters, and a runner that
-// draws the strip and reduces the run to mu = (F1 - F2) / F_N and the slip
-// speed of a probe node under the die.  `drawbend strip-deck` writes the same
+// that makes the case deck (a typed io::CaseSpec) from a few physical
+// parameters, and a runner that draws the strip and reduces the run to
+// mu = (F1 - F2) / F_N and the slip speed of a probe node under the die.  `drawbend strip-deck` writes the same
 // deck for `drawbend run`.
 //
 // The model: a strip section (length x width x thickness, from the origin) on
@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/case_spec.hpp"
 #include "io/deck.hpp"
 
 namespace drawbend::sim {
@@ -47,9 +48,6 @@ struct StripDrawSpec {
   /// Friction of the die as a TOML inline table, e.g. `{ law = "coulomb", mu = 0.1 }`;
   /// empty: the Stribeck law on `stribeck_table` with `interval`.
   std::string friction;
-  /// OpenMP threads of `drawbend run` written into the deck's [numerics]
-  /// (0: none written, the default; the deck writers' --threads).
-  int threads = 0;
 };
 
 /// The spec with the data files of this tree: the RD hardening curve of
@@ -66,7 +64,9 @@ double strip_draw_time_step(double v);
 /// Duration of the draw step [s].
 double strip_draw_duration(const StripDrawSpec& s);
 
-/// The case deck (TOML); throws InputError naming a bad field.
+/// The case deck, typed (io/case_spec.hpp); throws InputError naming a bad field.
+io::CaseSpec strip_draw_case(const StripDrawSpec& s);
+/// The deck's text: io::to_toml(strip_draw_case(s)).
 std::string strip_draw_deck_text(const StripDrawSpec& s);
 /// The deck parsed (file names in it are absolute).
 io::Deck strip_draw_deck(const StripDrawSpec& s);

@@ -123,3 +123,26 @@ BOOST_AUTO_TEST_CASE(layout_is_not_meaning) {
   BOOST_TEST(io::to_toml(a).find("speed = {") != std::string::npos, io::to_toml(a));
   BOOST_TEST(io::to_toml(b).find("[tool.speed]") != std::string::npos, io::to_toml(b));
 }
+
+// The writer prints every float in its shortest exact form (toml++ alone prints
+// 17 digits); strings, keys and integers keep their text, and the values read
+// back to the same doubles, integers still integers.
+BOOST_AUTO_TEST_CASE(floats_are_written_short_and_exact) {
+  io::CaseSpec c;
+  io::NumericsSpec& n = c.numerics.emplace();
+  n.dt_safety = 0.8;
+  n.threads = 5;
+  n.rest.insert("mass_scaling", 1e4);
+  n.rest.insert("small", 2.7e-9);
+  n.rest.insert("third", 1.0 / 3.0);
+  n.rest.insert("list", toml::array{-1.0, 0.0, 0.1 + 0.2});
+  c.rest.insert("case", toml::table{{"name", "x 0.80000000000000004"}, {"note", "a\"b 0.10000000000000001 'c'"},
+                                    {"r45", 0.73}});
+  const std::string text = io::to_toml(c);
+  for (const char* line : {"dt_safety = 0.8\n", "threads = 5\n", "mass_scaling = 10000.0\n", "small = 2.7e-09\n",
+                           "third = 0.3333333333333333\n", "list = [ -1.0, 0.0, 0.30000000000000004 ]\n",
+                           "name = 'x 0.80000000000000004'\n", "r45 = 0.73\n"})
+    BOOST_TEST(text.find(line) != std::string::npos, line << " not in:\n" << text);
+  BOOST_TEST(text.find("0.10000000000000001") != std::string::npos, "a string's digits were rewritten:\n" << text);
+  BOOST_TEST((io::from_toml(parse_toml(text, "short"), "short") == c), text);
+}

@@ -26,7 +26,7 @@ v=$(sed -n 's/^project(drawbend VERSION \([0-9.]*\).*/\1/p' "$src/CMakeLists.txt
 out=$(env -u DRAWBEND_DATA_DIR "$prefix/bin/drawbend" version) || fail "drawbend version: exit $?"
 echo "$out" | grep -q "$v" || fail "drawbend version printed '$out', expected version $v"
 deck=$(cd "$work" && env -u DRAWBEND_DATA_DIR "$prefix/bin/drawbend" strip-deck) || fail "strip-deck: exit $?"
-echo "$deck" | grep -q "hardening = \"$prefix/share/drawbend/data/materials/aa5754_o_rd.csv\"" ||
+echo "$deck" | grep -Eq "hardening = [\"']$prefix/share/drawbend/data/materials/aa5754_o_rd.csv[\"']" ||
   fail "the installed strip-deck does not name the installed hardening curve: $(echo "$deck" | grep hardening)"
 echo "$deck" | grep -q "$src/data" && fail "the installed binary names the source tree's data"
 env -u DRAWBEND_DATA_DIR OMP_NUM_THREADS=1 "$prefix/bin/drawbend" run "$prefix/share/drawbend/data/cases/block_slide.toml" \

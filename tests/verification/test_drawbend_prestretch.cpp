@@ -53,6 +53,7 @@
 
 #include "analysis/bending_work.hpp"
 #include "core/csv.hpp"
+#include "io/case_spec.hpp"
 #include "io/deck.hpp"
 #include "io/run_case.hpp"
 #include "material/hardening_curve.hpp"
@@ -93,16 +94,17 @@ Run make_run(bool plane_strain) {
     s.snapshots = 1;
     s.bend_inlet_slides = true;  // the fix (the default since issue 51; set here so the test keeps guarding it)
     s.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
-    std::string text = sim::deck_text(s);
+    io::CaseSpec c = sim::drawbend_case(s);
     // The plastic strain of the element at mid-thickness (outer half) along the inlet leg.
-    std::ostringstream probes;
-    for (double x : kProbes)
-      probes << "  { name = \"" << probe_name(x) << "\", kind = \"strain\", point = [" << x << ", 0.25, "
-             << s.pin_diameter / 2 + 0.625 * s.thickness << "], component = 1 },\n";
-    const std::string head = "history = [\n";
-    const std::size_t at = text.find(head);
-    BOOST_REQUIRE(at != std::string::npos);
-    text.insert(at + head.size(), probes.str());
+    toml::array* history = c.output["history"].as_array();
+    BOOST_REQUIRE(history);
+    for (double x : kProbes) {
+      toml::table probe{{"name", probe_name(x)}, {"kind", "strain"},
+                        {"point", toml::array{x, 0.25, s.pin_diameter / 2 + 0.625 * s.thickness}}, {"component", 1}};
+      probe.is_inline(true);
+      history->push_back(std::move(probe));
+    }
+    const std::string text = io::to_toml(c);
     const fs::path dir = fs::temp_directory_path() / ("drawbend_verify_" + s.name);
     fs::remove_all(dir);
     fs::create_directories(dir);
