@@ -8,7 +8,7 @@
 # ONLY for development seeds (heldout_protocol_v3.md: 50500000..50500143,
 # 52000000..52999999, 53100000..53100143; wild 54200000..54200143 and
 # 55000000+; heldout_protocol_v4.md adds 57100000..57100143 and
-# 57200000..57200143); never on held-out seeds 58000000..59999999 (heldout_protocol_v5.md).
+# 57200000..57200143); never on held-out seeds 58000000..60999999 (heldout_protocol_v5.md, v6).
 # usage: blind_dev.sh BIN SEED0 N OUTDIR [PERM] [FIRST] [GEN]
 #   LOOP_ARGS (environment): extra loop options, e.g. "--cell-probes true"
 #   PERM: permutation cap, default 20000 as the loop (with 2000 no candidate
@@ -16,11 +16,11 @@
 #   GEN blind (default) or wild (generator 2: class 'channel' in place of
 #   'bending'); one line per set: i class noise outcome final/noise time | truth | steps
 BIN=$1; S0=$2;
-if (( S0 >= 58000000 && S0 < 60000000 )); then
-  echo "held-out seeds: not for development (heldout_protocol_v4.md, v5)" >&2; exit 2; fi
+if (( S0 >= 58000000 && S0 < 61000000 )); then
+  echo "held-out seeds: not for development (heldout_protocol_v4.md, v5, v6)" >&2; exit 2; fi
 N=$3; OUT=$4; PERM=${5:-20000}; FIRST=${6:-0}; GEN=${7:-blind}
-if (( S0 + N > 58000000 && S0 < 60000000 )); then
-  echo "range reaches held-out seeds 58000000-59999999: not for development" >&2; exit 2; fi
+if (( S0 + N > 58000000 && S0 < 61000000 )); then
+  echo "range reaches held-out seeds 58000000-60999999: not for development" >&2; exit 2; fi
 classes=(level smooth interaction bending test-level null)
 if [ "$GEN" = wild ]; then classes=(level smooth interaction channel test-level null); fi
 mkdir -p $OUT
