@@ -7,6 +7,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/quote.hpp"
 #include "core/csv.hpp"
@@ -307,6 +308,7 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
         const Candidate* cand = nullptr;
         for (const auto& k : cands)
           if (k.name == c.name) cand = &k;
+        if (!cand) throw std::logic_error("loop: ranked column '" + c.name + "' is not a candidate");
         // A column that is a function of a model input is left to that input
         // when the input is significant itself: the data cannot tell them apart,
         // and the input needs no undeclared variable.
