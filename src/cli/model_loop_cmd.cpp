@@ -2,8 +2,9 @@
 // `drawbend loop DATA.csv --model fe ...` (loop_cmd.cpp): the model-level loop
 // (src/modelloop/model_loop.hpp) on a user's measured bending forces.  DATA.csv has
 // the columns pin_diameter_mm, back_tension_N, bending_force_N (full strip,
-// rotating = frictionless pin).  The points on --fit-pin train; the others are
-// held out.  Candidates (--candidates, comma separated, tried in order):
+// rotating = frictionless pin).  The points on --fit-pin train; the others
+// choose the model (in-sample); with 3 or more pins each pin's blind error
+// comes from the leave-one-pin-out split (--blind, model_loop_report.hpp).  Candidates (--candidates, comma separated, tried in order):
 // split:B1/B2/... (split combined hardening, beta chosen on the fit pin),
 // chaboche:X1/X2/...[@G1/G2/...] (one back stress, X and gamma chosen on the fit pin), voce,
 // hill48, offset, ms:X (mass scaling), across:N.  FE runs are cached in
@@ -12,6 +13,7 @@
 // drawbend-deck --material file), DIR/steps.csv (every candidate tried),
 // DIR/baseline.csv, DIR/final.csv, DIR/inputs/ (a copy of DATA.csv and the
 // options in effect).  Units: mm, N, mm/s.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -32,72 +34,31 @@
 #include "sim/fe_options.hpp"
 #include "sim/material_choice.hpp"
 #include "modelloop/model_loop.hpp"
+#include "cli/model_loop_report.hpp"
 
 namespace drawbend::cli {
 
 namespace {
-
-std::string pct(double v) { return fmt_fixed(100 * v, 1) + " %"; }
-
-/// OUT/model_loop.md: what the data are, the model chosen with its blind
-/// (held-out) errors against the baseline, every candidate tried, the files.
-void write_model_loop_md(const std::string& path, const std::string& data, const std::vector<modelloop::FbPoint>& points,
-                         const sim::DrawBendSpec& s, const modelloop::ModelLoopConfig& cfg, const modelloop::ModelLoopResult& r) {
-  std::ostringstream md;
-  md << "# Model loop on " << data << "\n\n"
-     << points.size() << " measured bending forces F_B (full strip); the points on the " << fmt(cfg.fit_pin)
-     << " mm pin train each candidate's members, the other pins are held out (blind). A candidate is accepted "
-        "only if their RMS relative error falls by more than "
-     << pct(cfg.min_gain) << ". FE: half strip, frictionless pin, element length " << fmt(s.element_length)
-     << " mm, " << s.across << " across, " << fmt(s.speed) << " mm/s, mass scaling " << fmt(s.mass_scaling) << ".\n\n"
-     << "## Summary\n\n"
-     << "- **Chosen model:** " << r.final_model.model << "\n"
-     << "- **Held-out (blind) RMS error of F_B:** " << pct(r.final_model.held_rms) << " (largest "
-     << pct(r.final_model.held_max) << "); the baseline " << r.baseline.model << ": " << pct(r.baseline.held_rms)
-     << " (largest " << pct(r.baseline.held_max) << ")\n"
-     << "- **Fit-pin RMS error:** " << pct(r.final_model.fit_rms) << " (baseline " << pct(r.baseline.fit_rms) << ")\n"
-     << "- " << r.runs << " FE runs, " << fmt_fixed(r.run_wall_s, 0) << " s of run wall time\n\n"
-     << "| pin [mm] | F_X [N] | measured F_B [N] | baseline [N] | chosen [N] | error | role |\n"
-     << "|---:|---:|---:|---:|---:|---:|---|\n";
-  for (std::size_t k = 0; k < r.final_model.points.size(); ++k) {
-    const auto& p = r.final_model.points[k];
-    const double err = (p.predicted_N - p.measured.bending_N) / p.measured.bending_N;
-    md << "| " << fmt(p.measured.pin_mm) << " | " << fmt(p.measured.back_tension_N) << " | "
-       << fmt(p.measured.bending_N, 4) << " | " << fmt_fixed(r.baseline.points[k].predicted_N, 1) << " | "
-       << fmt_fixed(p.predicted_N, 1) << " | " << pct(err) << " | " << (p.held_out ? "held out" : "fit") << " |\n";
-  }
-  md << "\n## What was tried\n\nRelative errors of F_B; each member trained on the fit pin, the decision on the "
-        "held-out pins.\n\n| candidate | member | fit RMS | held-out RMS | held-out max | decision |\n"
-        "|---|---|---:|---:|---:|---|\n"
-     << "| baseline | " << r.baseline.model << " | " << pct(r.baseline.fit_rms) << " | " << pct(r.baseline.held_rms)
-     << " | " << pct(r.baseline.held_max) << " | |\n";
-  for (const auto& st : r.steps)
-    md << "| " << st.candidate << " | " << st.member << " | " << pct(st.eval.fit_rms) << " | "
-       << pct(st.eval.held_rms) << " | " << pct(st.eval.held_max) << " | " << st.decision << " |\n";
-  md << "\n## Files\n\n- `chosen_model.toml`: the chosen model's `[material]` table (`drawbend drawbend-deck "
-        "--material chosen_model.toml` runs it)\n"
-        "- `baseline.csv`, `final.csv`: every point, measured and predicted\n"
-        "- `steps.csv`: the table above as numbers\n"
-        "- `inputs/`: a copy of the data (`data.csv`) and the options in effect (`options.toml`)\n"
-        "- `runs/fb_<hash>/`: one folder per FE case (deck, history, `result.toml` with F_X, F_Y and F_B)\n";
-  write_file_atomic(path, md.str());
-}
 
 /// The command's inputs: the base draw-bend spec and the loop's settings.
 struct Args {
   sim::DrawBendSpec s;
   modelloop::ModelLoopConfig cfg;
   std::string data, out, candidates = "split:0.3/0.6", executor_spec;
-  bool reuse = true;
+  bool reuse = true, blind = true;
   int threads = 0;
 };
 
 void add_options(Options& opt, Args& a) {
   sim::DrawBendSpec& s = a.s;
   opt.add(a.out, "out", "output directory (runs cached in OUT/runs)");
-  opt.add(a.cfg.fit_pin, "fit-pin", "pin diameter whose points train [mm]; the others are held out");
-  opt.add(a.cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
+  opt.add(a.cfg.fit_pin, "fit-pin", "pin diameter whose points train [mm]; the others choose the model");
+  opt.add(a.cfg.min_gain, "min-gain", "accept a candidate if the choice pins' RMS relative error falls by more than this");
   opt.add(a.candidates, "candidates", "comma-separated: split:B1/B2..., chaboche:X1/X2...[@G1/G2...], voce, hill48, offset, ms:X, across:N");
+  opt.add(a.blind, "blind",
+          "with points on 3 or more pins, also run the whole loop once per pin with that pin left out and report "
+          "each pin's blind error (true, the default); false: the in-sample loop only (its choice pins' error is not "
+          "blind)");
   opt.add(a.reuse, "reuse", "read back finished runs with the identical deck (true) or rerun them (false)");
   opt.add(s.thickness, "thickness", "strip thickness [mm]");
   opt.add(s.width, "width", "modelled half width [mm]");
@@ -236,8 +197,10 @@ void write_inputs(const Args& a) {
 }
 
 /// OUT/chosen_model.toml, baseline.csv, final.csv, steps.csv and model_loop.md.
-void write_outputs(const Args& a, const std::vector<modelloop::FbPoint>& points, const modelloop::ModelLoopResult& r) {
+void write_outputs(const Args& a, const std::vector<modelloop::FbPoint>& points, const modelloop::BlindLoopResult& b,
+                   const std::string& no_blind) {
   const std::string& out = a.out;
+  const modelloop::ModelLoopResult& r = b.in_sample;
   write_file_atomic(out + "/chosen_model.toml",
                     "# The model chosen by drawbend model-loop: " + r.final_model.model + "\n" +
                         sim::material_section(r.final_spec.material, r.final_spec.hardening));
@@ -251,18 +214,8 @@ void write_outputs(const Args& a, const std::vector<modelloop::FbPoint>& points,
     w.row({st.candidate, st.member, fmt(st.eval.fit_rms, 4), fmt(st.eval.held_rms, 4), fmt(st.eval.held_max, 4),
            st.decision});
   w.save(out + "/steps.csv");
-  write_model_loop_md(out + "/model_loop.md", a.data, points, a.s, a.cfg, r);
-}
-
-/// The chosen model and every point, measured, baseline and now, on standard output.
-void print_answer(const modelloop::ModelLoopResult& r) {
-  std::cout << "model: " << r.final_model.model << "\n";
-  for (const auto& p : r.final_model.points)
-    std::cout << "  pin " << fmt(p.measured.pin_mm) << " mm, F_X " << fmt(p.measured.back_tension_N) << " N: measured "
-              << fmt(p.measured.bending_N, 4) << " N, baseline "
-              << fmt_fixed(r.baseline.points[&p - &r.final_model.points[0]].predicted_N, 1) << " N, now "
-              << fmt_fixed(p.predicted_N, 1) << " N" << (p.held_out ? " (held out)" : " (fit)") << "\n";
-  std::cout << r.runs << " FE runs, " << fmt_fixed(r.run_wall_s, 0) << " s of run wall time\n";
+  if (!b.folds.empty()) save_blind_csv(b, out + "/blind.csv");
+  write_model_loop_md(out + "/model_loop.md", a.data, points, a.s, a.cfg, b, no_blind);
 }
 
 }  // namespace
@@ -278,12 +231,14 @@ int model_loop_command(int argc, char** argv, const char* name) {
   Options opt(me, "Test modelling effects by re-running the draw-bend FE model (rotating = frictionless pin, "
                        "explicit, half strip) against measured bending forces. DATA.csv: one row per point with the "
                        "columns pin_diameter_mm, back_tension_N, bending_force_N (full strip, N; '#' comments). The "
-                       "points on --fit-pin train each candidate's members; the other pins are held out, and a "
-                       "candidate is accepted only if their RMS relative error falls by more than --min-gain. FE "
+                       "points on --fit-pin train each candidate's members; the other pins choose: a "
+                       "candidate is accepted only if their RMS relative error falls by more than --min-gain, so that "
+                       "error is not blind. With points on 3 or more pins the whole loop also runs once per pin with "
+                       "that pin left out, and each pin's blind error comes from the fold that never saw it (--blind). FE "
                        "runs go through the case pool (DRAWBEND_JOBS at a time, progress with time left) and are "
                        "cached in OUT/runs by deck hash. Writes OUT/model_loop.md (read it first: the chosen model and its blind "
                        "errors, every candidate tried), OUT/chosen_model.toml (its [material] table), OUT/steps.csv (every candidate), "
-                       "OUT/baseline.csv, OUT/final.csv and OUT/inputs/ (the data and the options in effect).");
+                       "OUT/blind.csv (with 3 or more pins), OUT/baseline.csv, OUT/final.csv and OUT/inputs/ (the data and the options in effect).");
   add_options(opt, a);
   if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
     if (!opt.parse(argc, argv)) return 0;
@@ -301,9 +256,26 @@ int model_loop_command(int argc, char** argv, const char* name) {
   a.cfg.run_root = a.out + "/runs";
   a.cfg.reuse = a.reuse;
   write_inputs(a);
-  const auto r = modelloop::run_model_loop(a.s, points, cands, a.cfg);
-  write_outputs(a, points, r);
-  print_answer(r);
+  // The in-sample loop and, with 3 or more pins, the leave-one-pin-out folds
+  // (they share the runs: a deck run once is read by the others).
+  std::vector<double> pins;
+  for (const auto& pt : points)
+    if (std::none_of(pins.begin(), pins.end(), [&](double d) { return std::abs(d - pt.pin_mm) <= 1e-6 * d; }))
+      pins.push_back(pt.pin_mm);
+  const std::string no_blind = !a.blind ? "--blind false"
+                               : pins.size() < 3 ? "points on " + std::to_string(pins.size()) +
+                                                       " pin(s); the leave-one-pin-out split needs 3 or more (one to "
+                                                       "fit, one to choose, one left out)"
+                                                 : "";
+  modelloop::BlindLoopResult b;
+  if (no_blind.empty()) {
+    b = modelloop::run_model_loop_blind(a.s, points, [&](double) { return cands; }, a.cfg);
+  } else {
+    b.in_sample = modelloop::run_model_loop(a.s, points, cands, a.cfg);
+    b.runs = b.in_sample.runs, b.run_wall_s = b.in_sample.run_wall_s;
+  }
+  write_outputs(a, points, b, no_blind);
+  print_answer(b, no_blind);
   return 0;
 }
 
