@@ -153,16 +153,30 @@ std::vector<Candidate> make_candidates(const Design& d, const std::vector<double
       {"speed_mm_s", [&](size_t i) { return fmt(R[i].speed_mm_s); }},
       {"direction_deg", [&](size_t i) { return fmt(R[i].direction_deg); }},
       {"lubricant", [&](size_t i) { return R[i].lubricant; }}};
+  // Each input's key per row as a code (the keys' text made once per input, not
+  // once per row and column: a formatted number per row was ~1 % of a loop).
+  const bool any_column = std::any_of(c.begin(), c.end(), [](const Candidate& k) { return k.kind == "column"; });
+  std::vector<std::vector<int>> key_code(inputs.size(), std::vector<int>(any_column ? n : 0));
+  std::vector<int> nkeys(inputs.size(), 0);
+  for (size_t q = 0; q < inputs.size() && any_column; ++q) {
+    std::map<std::string, int> ix;
+    for (size_t i = 0; i < n; ++i) key_code[q][i] = ix.emplace(inputs[q].second(i), static_cast<int>(ix.size())).first->second;
+    nkeys[q] = static_cast<int>(ix.size());
+  }
   for (auto& k : c) {
     if (k.kind != "column") continue;
-    for (const auto& [name, key] : inputs) {
-      std::map<std::string, double> first;
+    for (size_t q = 0; q < inputs.size(); ++q) {
+      const std::string& name = inputs[q].first;
+      std::vector<double> first(nkeys[q]);  // the column's value at the key's first row
+      std::vector<char> has(nkeys[q], 0);
+      size_t seen = 0;
       bool fn = true;
       for (size_t i = 0; i < n && fn; ++i) {
-        auto [it, fresh] = first.emplace(key(i), k.x[i]);
-        fn = fresh || it->second == k.x[i] || (std::isnan(it->second) && std::isnan(k.x[i]));
+        const int key = key_code[q][i];
+        if (!has[key]) has[key] = 1, first[key] = k.x[i], ++seen;
+        else fn = first[key] == k.x[i] || (std::isnan(first[key]) && std::isnan(k.x[i]));
       }
-      if (fn && first.size() >= 2) {
+      if (fn && seen >= 2) {
         k.confounded_with = name;
         break;
       }

@@ -275,10 +275,13 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   };
   auto row = [&](const Eigen::VectorXd& t, int k) { return d.rows[rows[k]].y - predict_row(d, f, L, t, rows[k], nullptr); };
   // Which parameters each row may read: the Jacobians are evaluated there only.
-  RowReads reads(n);
+  RowReads reads;
+  reads.reserve(n, 4 * static_cast<size_t>(n));
+  std::vector<int> cols;
   for (int k = 0; k < n; ++k) {
-    reads[k].reserve(8);  // one allocation per row for the usual few columns, not one per growth
-    detail::row_reads(d, f, L, rows[k], reads[k]);
+    cols.clear();
+    detail::row_reads(d, f, L, rows[k], cols);
+    reads.push_row(cols);
   }
   Eigen::MatrixXd J;
   double sse = 0;
@@ -354,15 +357,18 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec) {
   // Each row reads its pin's bending line and its friction parameters.
   std::vector<int> pin_param(d.pins.size(), -1);
   for (size_t q = 0; q < pins.size(); ++q) pin_param[pins[q]] = static_cast<int>(q);
-  RowReads reads(rows.size());
+  RowReads reads;
+  reads.reserve(rows.size(), 6 * rows.size());
+  std::vector<int> cols;
   for (size_t k = 0; k < rows.size(); ++k) {
     const int q = pin_param[d.rows[rows[k]].pin];
-    reads[k].reserve(8);
-    reads[k].push_back(q);
-    if (linear) reads[k].push_back(static_cast<int>(pins.size()) + q);
-    const size_t at = reads[k].size();
-    detail::row_reads(d, f, L, rows[k], reads[k]);
-    for (size_t c = at; c < reads[k].size(); ++c) reads[k][c] += nb;
+    cols.clear();
+    cols.push_back(q);
+    if (linear) cols.push_back(static_cast<int>(pins.size()) + q);
+    const size_t at = cols.size();
+    detail::row_reads(d, f, L, rows[k], cols);
+    for (size_t c = at; c < cols.size(); ++c) cols[c] += nb;
+    reads.push_row(cols);
   }
   Eigen::MatrixXd J;
   bool conv = false;

@@ -2,9 +2,10 @@
 // branch-free twist: libstdc++ picks the twist's matrix term with a branch on
 // a random bit (mispredicted half the time) and so spent ~10 % of the loop's
 // screen in its refill of 312 numbers; here (y & 1) selects it by a mask, so
-// the refill also runs in vector lanes.  The permutation test draws its
-// shuffles from it; tests/unit/test_loop_residuals.cpp checks that it equals
-// std::mt19937_64 number for number.
+// the refill also runs in vector lanes, and the 312 outputs are tempered in
+// one loop after it (vector lanes too) instead of one per call.  The
+// permutation test draws its shuffles from it; tests/unit/test_loop_residuals.cpp
+// checks that it equals std::mt19937_64 number for number.
 #pragma once
 
 #include <cstddef>
@@ -22,12 +23,7 @@ class Mt64 {
   }
   std::uint64_t operator()() {
     if (p_ >= kN) refill();
-    std::uint64_t z = x_[p_++];
-    z ^= (z >> 29) & 0x5555555555555555ULL;
-    z ^= (z << 17) & 0x71D67FFFEDA60000ULL;
-    z ^= (z << 37) & 0xFFF7EEE000000000ULL;
-    z ^= z >> 43;
-    return z;
+    return y_[p_++];
   }
 
  private:
@@ -42,9 +38,20 @@ class Mt64 {
     for (std::size_t k = 0; k < kN - kM; ++k) x_[k] = twist(x_[k], x_[k + 1], x_[k + kM]);
     for (std::size_t k = kN - kM; k < kN - 1; ++k) x_[k] = twist(x_[k], x_[k + 1], x_[k + kM - kN]);
     x_[kN - 1] = twist(x_[kN - 1], x_[0], x_[kM - 1]);
+    // The tempering of the 312 outputs in one loop (vector lanes), not one
+    // number per call (the shuffle's draws wait on it otherwise).
+    for (std::size_t k = 0; k < kN; ++k) {
+      std::uint64_t z = x_[k];
+      z ^= (z >> 29) & 0x5555555555555555ULL;
+      z ^= (z << 17) & 0x71D67FFFEDA60000ULL;
+      z ^= (z << 37) & 0xFFF7EEE000000000ULL;
+      z ^= z >> 43;
+      y_[k] = z;
+    }
     p_ = 0;
   }
   std::uint64_t x_[kN];
+  std::uint64_t y_[kN];  // the tempered outputs of x_
   std::size_t p_;
 };
 

@@ -27,6 +27,45 @@ using detail::probe_z;
 // Pilot permutations per candidate for the probes' calibration scales.
 constexpr int kPilot = 200;
 
+// The distinct values of x over the rows, ascending.
+std::vector<double> distinct_values(const std::vector<double>& x, const std::vector<int>& rows) {
+  std::vector<double> v;
+  v.reserve(rows.size());
+  for (int i : rows) v.push_back(x[i]);
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
+
+// Integer keys (test, block, group or row indices) of the rows to a slot
+// each, -1 until set: a table over [min key, max key].  Without `keys` (null),
+// the keys are the row indices themselves.
+class DenseIndex {
+ public:
+  DenseIndex(const std::vector<int>* keys, const std::vector<int>& rows) {
+    lo_ = rows.empty() ? 0 : keys ? (*keys)[rows[0]] : rows[0];
+    int hi = lo_;
+    for (int i : rows) lo_ = std::min(lo_, keys ? (*keys)[i] : i), hi = std::max(hi, keys ? (*keys)[i] : i);
+    slot_.assign(static_cast<size_t>(static_cast<long long>(hi) - lo_ + 1), -1);
+  }
+  int& operator[](int key) { return slot_[static_cast<size_t>(static_cast<long long>(key) - lo_)]; }
+
+ private:
+  int lo_ = 0;
+  std::vector<int> slot_;
+};
+
+// How many distinct values the integer keys take over the rows.
+size_t count_distinct(const std::vector<int>& keys, const std::vector<int>& rows) {
+  DenseIndex seen(&keys, rows);
+  size_t k = 0;
+  for (int i : rows) {
+    int& s = seen[keys[i]];
+    if (s < 0) s = 0, ++k;
+  }
+  return k;
+}
+
 // The names by which a candidate is itself one of the model's inputs.
 bool same_input(const std::string& cand, const std::string& input) {
   if (input == "pin") return cand == "pin" || cand == "pin_diameter_mm" || cand == "inv_R_per_mm";
@@ -62,12 +101,11 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
   for (size_t ci = 0; ci < cands.size(); ++ci) {
     const Candidate& c = cands[ci];
     std::vector<int> rows;
-    std::set<double> distinct;
     for (size_t i = 0; i < n; ++i)
-      if (std::isfinite(c.x[i]) && std::isfinite(resid[i])) {
-        rows.push_back(static_cast<int>(i));
-        distinct.insert(c.x[i]);
-      }
+      if (std::isfinite(c.x[i]) && std::isfinite(resid[i])) rows.push_back(static_cast<int>(i));
+    // The distinct values, ascending (a sorted vector, not a std::set: one node
+    // per row was an allocation per row of every row-level column).
+    const std::vector<double> distinct = distinct_values(c.x, rows);
     CandidateResult res;
     res.name = c.name;
     res.kind = c.kind;
@@ -123,7 +161,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
       for (int i : rows) q += (c.x[i] - m) * (c.x[i] - m);
       const double sd = std::sqrt(q / rows.size());
       for (int i : rows) z[i] = sd > 0 ? (c.x[i] - m) / sd : 0;
-      std::vector<double> dv(distinct.begin(), distinct.end());
+      const std::vector<double>& dv = distinct;
       if (dv.size() <= 8) {
         for (int i : rows) lv[i] = static_cast<int>(std::lower_bound(dv.begin(), dv.end(), c.x[i]) - dv.begin());
         nlev = static_cast<int>(dv.size());
@@ -134,9 +172,8 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
         std::vector<double> cut;
         // Quantile bins: 8 when the variable has enough units (tests for a
         // test-level variable) for a periodic or bump shape, else 5.
-        std::set<int> units;
-        for (int i : rows) units.insert(c.test_level ? f.test[i] : i);
-        const int nb = units.size() >= 80 ? 8 : 5;
+        const size_t units = c.test_level ? count_distinct(f.test, rows) : rows.size();
+        const int nb = units >= 80 ? 8 : 5;
         for (int b = 1; b < nb; ++b) cut.push_back(xs[xs.size() * b / nb]);
         cut.erase(std::unique(cut.begin(), cut.end()), cut.end());
         for (int i : rows) lv[i] = static_cast<int>(std::upper_bound(cut.begin(), cut.end(), c.x[i]) - cut.begin());
@@ -150,18 +187,20 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
     std::vector<double> xz;
     std::vector<int> xl;
     {
-      std::map<int, int> unit_ix, group_ix;
+      // Units and groups numbered in order of first appearance (dense tables
+      // of the keys, not std::maps: a node per row of a row-level column).
+      DenseIndex unit_ix(c.test_level ? &f.test : nullptr, rows), group_ix(c.test_level ? &f.block : &f.test, rows);
       for (int i : rows) {
         const int key = c.test_level ? f.test[i] : i;
-        auto [it, fresh] = unit_ix.emplace(key, static_cast<int>(xz.size()));
-        if (fresh) {
+        int& ui = unit_ix[key];
+        if (ui < 0) {
+          ui = static_cast<int>(xz.size());
           xz.push_back(z[i]), xl.push_back(lv[i]), unit_block.push_back(f.block[i]);
-          const int g = c.test_level ? f.block[i] : f.test[i];
-          auto [gt, gfresh] = group_ix.emplace(g, static_cast<int>(groups.size()));
-          if (gfresh) groups.push_back({});
-          groups[gt->second].push_back(it->second);
+          int& gi = group_ix[c.test_level ? f.block[i] : f.test[i]];
+          if (gi < 0) gi = static_cast<int>(groups.size()), groups.push_back({});
+          groups[gi].push_back(ui);
         }
-        unit_of[i] = it->second;
+        unit_of[i] = ui;
       }
     }
     const size_t U = xz.size();
@@ -288,9 +327,8 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
       for (const auto& [input, g] : ctx->modifiers) {
         if (same_input(c.name, input)) continue;
         int ng = 0;
-        std::set<int> seen;
-        for (int i : rows) seen.insert(g[i]), ng = std::max(ng, g[i] + 1);
-        if (seen.size() < 2) continue;
+        for (int i : rows) ng = std::max(ng, g[i] + 1);
+        if (count_distinct(g, rows) < 2) continue;
         add(c.categorical || distinct.size() <= 8 ? Shape::levels : Shape::slopes, "per " + input, g, ng, input);
         if (!c.categorical && distinct.size() > 8) add(Shape::levels, "bins per " + input, g, ng, input);
         if (c.test_level && pooled_inputs)  // see centred_by
@@ -305,6 +343,26 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
       if (!fixed) continue;
       p.fixed_counts.assign(static_cast<size_t>(p.nstrata) * p.nlev, 0.0);
       for (size_t u = 0; u < U; ++u) p.fixed_counts[static_cast<size_t>(p.stratum[u]) * p.nlev + xl[u]] += p.un[u];
+    }
+    if (!two_level) {  // levels: the cells a permutation can reach (see ProbeDef::reach)
+      std::vector<int> glev;  // the levels of one permutation group
+      std::vector<char> has(static_cast<size_t>(nlev), 0);
+      for (auto& p : probes) {
+        if (p.shape != Shape::levels && p.shape != Shape::wlevels) continue;
+        std::vector<char> cell(static_cast<size_t>(p.nstrata) * nlev, 0);
+        for (const auto& g : groups) {
+          glev.clear();
+          for (int u : g)
+            if (!has[xl[u]]) has[xl[u]] = 1, glev.push_back(xl[u]);
+          for (int l : glev) has[l] = 0;
+          for (int u : g)
+            for (int l : glev) cell[static_cast<size_t>(p.stratum[u]) * nlev + l] = 1;
+        }
+        const size_t nreach = static_cast<size_t>(std::count(cell.begin(), cell.end(), 1));
+        if (2 * nreach > cell.size()) continue;  // most cells reachable: every cell, as before
+        for (size_t k = 0; k < cell.size(); ++k)
+          if (cell[k]) p.reach.push_back(static_cast<int>(k));
+      }
     }
     int dof_max = 0;
     for (const auto& p : probes) dof_max = std::max(dof_max, p.dof[0]);

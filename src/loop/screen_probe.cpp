@@ -90,8 +90,14 @@ void ProbeDef::eval(const double* xz, const int* xl, double* out) const {
     case Shape::wlevels: {
       const bool w = shape == Shape::wlevels;
       const size_t K = static_cast<size_t>(nstrata) * nlev;
-      s1.assign(K * L, 0.0);
-      s2.assign(K * L, 0.0);
+      const bool sparse = !reach.empty();
+      if (!sparse || s1.size() != K * L) {  // every cell; or (sparse) the reachable ones, the rest still empty
+        s1.assign(K * L, 0.0);
+        s2.assign(K * L, 0.0);
+      } else {
+        for (int k : reach)
+          for (int j = 0; j < L; ++j) s1[static_cast<size_t>(k) * L + j] = 0.0, s2[static_cast<size_t>(k) * L + j] = 0.0;
+      }
       const double* a = w ? urw.data() : ur.data();
       const double* b = w ? uw2.data() : un.data();
       if (!w && !fixed_counts.empty()) {  // the counts are those of every permutation
@@ -99,8 +105,12 @@ void ProbeDef::eval(const double* xz, const int* xl, double* out) const {
           const size_t k0 = static_cast<size_t>(stratum[u]) * nlev;
           for (int j = 0; j < L; ++j) s1[(k0 + static_cast<size_t>(xl[u * L + j])) * L + j] += a[u];
         }
-        for (size_t k = 0; k < K; ++k)
-          for (int j = 0; j < L; ++j) s2[k * L + j] = fixed_counts[k];
+        if (sparse)
+          for (int k : reach)
+            for (int j = 0; j < L; ++j) s2[static_cast<size_t>(k) * L + j] = fixed_counts[k];
+        else
+          for (size_t k = 0; k < K; ++k)
+            for (int j = 0; j < L; ++j) s2[k * L + j] = fixed_counts[k];
       } else {
         for (size_t u = 0; u < U; ++u) {
           const size_t k0 = static_cast<size_t>(stratum[u]) * nlev;
@@ -110,18 +120,27 @@ void ProbeDef::eval(const double* xz, const int* xl, double* out) const {
           }
         }
       }
+      // An empty cell adds no term (and +0 to the per-group sums below, which
+      // are never -0), so summing the reachable cells alone, in order, is exact.
+      auto each_cell = [&](auto&& fn) {
+        if (sparse)
+          for (int k : reach) fn(static_cast<size_t>(k));
+        else
+          for (size_t k = 0; k < K; ++k) fn(k);
+      };
       for (int j = 0; j < L; ++j) {
         double e = 0;
-        for (size_t k = 0; k < K; ++k)
+        each_cell([&](size_t k) {
           if (s2[k * L + j] > 0) e += s1[k * L + j] * s1[k * L + j] / s2[k * L + j];
+        });
         out[j] = e;
       }
       if (cells) {
         c1.assign(static_cast<size_t>(G) * nlev * L, 0.0), c2.assign(c1.size(), 0.0);
-        for (size_t k = 0; k < K; ++k) {
+        each_cell([&](size_t k) {
           const size_t q = static_cast<size_t>((k / nlev) % G) * nlev + k % nlev;
           for (int j = 0; j < L; ++j) c1[q * L + j] += s1[k * L + j], c2[q * L + j] += s2[k * L + j];
-        }
+        });
         for (int g = 0; g < G; ++g)
           for (int j = 0; j < L; ++j) {
             double eg = 0;

@@ -51,6 +51,13 @@ struct ProbeDef {
   // unit: a row-level variable permuted within tests); sums of whole numbers, so
   // the same bit for bit in any order; empty: summed on every eval.
   std::vector<double> fixed_counts;
+  // levels, wlevels: the (stratum, level) cells a permutation can reach, in
+  // ascending order (a unit's stratum with a level of its permutation group);
+  // the other cells stay empty under every permutation, so their zeroing and
+  // their terms (none: an empty cell adds nothing) are skipped, the sums over
+  // the reachable cells made in the same order.  A test-level variable with
+  // many levels has far more cells than units (issue 50 item 6).  Empty: all.
+  std::vector<int> reach;
   // row-level data for the held-out probe
   std::vector<int> row_stratum;
   mutable std::vector<double> s1, s2, s3, s4, c1, c2;

@@ -83,8 +83,8 @@ BOOST_AUTO_TEST_CASE(structural_reads_are_exact_and_checked) {
     for (int k = 0; k < n; ++k) r[k] = row(t, k);
     return r;
   };
-  RowReads right(n), wrong(n);
-  for (int k = 0; k < n; ++k) right[k] = {k % p}, wrong[k] = {(k + 1) % p};
+  RowReads right, wrong;
+  for (int k = 0; k < n; ++k) right.push_row({k % p}), wrong.push_row({(k + 1) % p});
   Eigen::VectorXd th_dense = Eigen::VectorXd::Constant(p, 0.5), th_right = th_dense, th_wrong = th_dense;
   Eigen::MatrixXd Jd, Jr, Jw;
   bool cd = false, cr = false, cw = false;
