@@ -84,7 +84,7 @@ Runs runs(study::Chapter& c, const FeOptions& o) {
   s.speed = 100.0;
   s.hardening = c.data("materials/aa5754_o_rd.csv");
   const auto wall0 = std::chrono::steady_clock::now();
-  const std::string coulomb = "{ law = \"coulomb\", mu = " + fmt(mu_in) + " }";
+  const io::FrictionSpec coulomb = io::coulomb_friction(mu_in);
   sim::DrawBendSpec& s_ms = R.s_ms;
   s_ms = s;
   s_ms.mass_scaling = o.low_mass_scaling;
@@ -92,15 +92,15 @@ Runs runs(study::Chapter& c, const FeOptions& o) {
   s_fine = s;
   s_fine.element_length = o.fine_element_length;
   std::vector<sim::CaseJob> jobs;
-  auto job = [&](sim::DrawBendSpec x, const std::string& name, const std::string& friction) {
+  auto job = [&](sim::DrawBendSpec x, const std::string& name, const std::optional<io::FrictionSpec>& friction) {
     x.name = name;
     x.friction = friction;
     jobs.push_back({x, c.out("runs/" + name)});
   };
   job(s, "ch2_coulomb", coulomb);
-  job(s, "ch2_frictionless", "");
-  job(s_ms, "ch2_frictionless_low_mass_scaling", "");
-  job(s_fine, "ch2_frictionless_fine", "");
+  job(s, "ch2_frictionless", std::nullopt);
+  job(s_ms, "ch2_frictionless_low_mass_scaling", std::nullopt);
+  job(s_fine, "ch2_frictionless_fine", std::nullopt);
   job(s_fine, "ch2_coulomb_fine", coulomb);
   // Contact-penalty variants of the mu = 0.1 run (chapter mesh): do the
   // penalty stiffness and the pressure threshold move the contact arc's exit

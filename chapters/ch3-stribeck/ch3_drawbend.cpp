@@ -89,8 +89,8 @@ Runs run_pins(study::Chapter& c, const Inputs& in, const sim::DrawBendSpec& base
       s.mass_scaling = sim::mass_scaling_for_speed(base.mass_scaling, v);  // same rho v^2 as the reference
       s.hardening = c.data("materials/aa5754_o_rd.csv");
       s.name = "ch3_d" + fmt(D) + "_" + laws[k];
-      if (k == 1) s.friction = "{ law = \"coulomb\", mu = " + fmt(mu_c) + " }";
-      if (k == 2) s.friction = "{ law = \"stribeck\", table = \"" + c.data("thesis/table_3_3.csv") + "\", interval = 100 }";
+      if (k == 1) s.friction = io::coulomb_friction(mu_c);
+      if (k == 2) s.friction = io::stribeck_friction(c.data("thesis/table_3_3.csv"), 100);
       jobs.push_back({s, c.out("runs/" + s.name)});
     }
   }

@@ -17,7 +17,6 @@
 
 #include "analysis/stribeck.hpp"
 #include "ch3_steps.hpp"
-#include "sim/deck_writer.hpp"
 #include "sim/strip_draw_case.hpp"
 #include "study/thesis_data.hpp"
 
@@ -33,9 +32,9 @@ void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const Cs
   sim::StripDrawSpec base;
   base.hardening = c.data("materials/aa5754_o_rd.csv");
   base.stribeck_table = c.data("thesis/table_3_1.csv");
-  auto spec = [&](double p, double v, int interval, const std::string& friction = "") {
+  auto spec = [&](double p, double v, int interval, const std::optional<io::FrictionSpec>& friction = std::nullopt) {
     sim::StripDrawSpec s = base;
-    s.name = "ch3_strip_p" + fmt(p) + "_v" + fmt(v) + "_i" + std::to_string(interval) + (friction.empty() ? "" : "_coulomb");
+    s.name = "ch3_strip_p" + fmt(p) + "_v" + fmt(v) + "_i" + std::to_string(interval) + (friction ? "_coulomb" : "");
     s.pressure = p;
     s.speed = v;
     s.interval = interval;
@@ -47,7 +46,7 @@ void strip_draw(study::Chapter& c, const analysis::StribeckParams& s31, const Cs
   std::vector<sim::StripDrawSpec> specs;
   for (const auto& row : t32.rows) specs.push_back(spec(t32.number(row, "pressure_MPa"), t32.number(row, "velocity_mm_s"), 100));
   for (int interval : intervals) specs.push_back(spec(p1, v1, interval));
-  specs.push_back(spec(p1, v1, 1, "{ law = \"coulomb\", mu = " + sim::toml_float(mu_coulomb) + " }"));
+  specs.push_back(spec(p1, v1, 1, io::coulomb_friction(mu_coulomb)));
   const std::vector<sim::StripDrawResult> runs = sim::run_strip_draws(specs, c.out("runs"), reuse);
   // Table 3.2 / Fig. 3.8.
   auto w = c.table({"case", "pressure_MPa", "velocity_mm_s", "L", "mu_input", "mu_simulated", "error_pct",

@@ -112,7 +112,7 @@ std::vector<sim::CaseJob> pin_jobs(const study::Chapter& c, const FeOptions& o, 
     s.name = "ch4_d" + fmt(s.pin_diameter) + "_frictionless";
     jobs.push_back({s, c.out("runs/" + s.name)});
     s.name = "ch4_d" + fmt(s.pin_diameter) + "_stribeck";
-    s.friction = "{ law = \"stribeck\", table = \"" + c.data("thesis/table_3_3.csv") + "\", interval = 100 }";
+    s.friction = io::stribeck_friction(c.data("thesis/table_3_3.csv"), 100);
     jobs.push_back({s, c.out("runs/" + s.name)});
   }
   return jobs;

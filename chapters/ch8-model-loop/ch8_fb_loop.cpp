@@ -31,7 +31,7 @@ Inputs load_inputs(Chapter& c, const Config& cfg) {
   in.base.speed = v;
   in.base.mass_scaling = sim::mass_scaling_for_speed(cfg.base.mass_scaling, v);  // Chapter 4's inertia
   in.base.hardening = c.data("materials/aa5754_o_rd.csv");
-  in.base.friction.clear();  // rotating pin: frictionless
+  in.base.friction.reset();  // rotating pin: frictionless
 
   auto tab = c.table({"pin_diameter_mm", "back_tension_N", "bending_force_N"},
                      "measured bending force (full strip, N): Table 5.3's fit at the Table 5.13 back tension; the "

@@ -35,7 +35,8 @@ int block_deck_command(int argc, char** argv) {
   opt.add(s.elements, "elements", "elements along each edge (>= 1)");
   opt.add(s.mass_scaling, "mass-scaling", "uniform mass scaling factor (>= 1)");
   opt.add(s.penalty, "penalty", "contact penalty scale (> 0)");
-  opt.add(s.friction, "friction",
+  std::string friction;  // --friction as given; io::friction_argument reads it below
+  opt.add(friction, "friction",
           "floor friction as a TOML inline table, e.g. '{ law = \"coulomb\", mu = 0.1 }' (empty: the surface law)");
   opt.add(s.surface_nodes, "surface-nodes", "the surface law's nine nodal values (CSV, Table 6.1 format)");
   opt.add(s.interval, "interval", "the surface law's speed-averaging interval [cycles] (>= 1)");
@@ -63,8 +64,8 @@ int block_deck_command(int argc, char** argv) {
   name_input(s.surface_nodes, "--surface-nodes");
   // --friction and --surface-nodes checked on their own, so that a problem names
   // the option or the user's file and line, not a line of the generated deck.
-  s.friction = io::friction_argument(s.friction, std::filesystem::current_path().string());
-  if (s.friction.empty() && !s.surface_nodes.empty()) try {
+  s.friction = io::friction_argument(friction, std::filesystem::current_path().string());
+  if (!s.friction && !s.surface_nodes.empty()) try {
       (void)friction::load_surface_nodes(s.surface_nodes, friction::SurfaceDomain{});
     } catch (const std::exception& e) {
       const std::string what = e.what();  // the file gate's messages name the option already

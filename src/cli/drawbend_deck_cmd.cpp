@@ -46,7 +46,8 @@ int drawbend_deck_command(int argc, char** argv) {
   opt.add(back_tension, "back-tension", "back tension F_X [N] on the --basis (default full strip)");
   opt.add(s.speed, "speed", "outlet speed in the draw step [mm/s]");
   opt.add(s.draw_length, "draw-length", "slide in the draw step [mm] (0: 1.5 wrap lengths + 6 mm)");
-  opt.add(s.friction, "friction",
+  std::string friction;  // --friction as given; io::friction_argument reads it below
+  opt.add(friction, "friction",
           "pin friction: a TOML inline table (empty: frictionless), e.g. '{ law = \"coulomb\", mu = 0.1 }', or a file "
           "with a [friction] table such as the loop's friction_model.toml; relative table paths are taken from the "
           "current folder (inline) or from that file's folder");
@@ -96,7 +97,7 @@ int drawbend_deck_command(int argc, char** argv) {
   name_input(s.material, "--material");
   check_threads(threads);
   // Relative files are the user's, from the current folder (io/portable_paths.hpp).
-  s.friction = io::friction_argument(s.friction, std::filesystem::current_path().string());
+  s.friction = io::friction_argument(friction, std::filesystem::current_path().string());
   if (!s.hardening.empty()) s.hardening = std::filesystem::absolute(s.hardening).lexically_normal().string();
   if (basis != "full" && basis != "half")
     throw std::invalid_argument("--basis: expected full or half, found '" + basis + "'");

@@ -36,7 +36,8 @@ int strip_deck_command(int argc, char** argv) {
   opt.add(s.nx, "nx", "elements along the strip (>= 1)");
   opt.add(s.ny, "ny", "elements across the strip (>= 1)");
   opt.add(s.nz, "nz", "elements through the thickness (>= 1)");
-  opt.add(s.friction, "friction",
+  std::string friction;  // --friction as given; io::friction_argument reads it below
+  opt.add(friction, "friction",
           "die friction as a TOML inline table, e.g. '{ law = \"coulomb\", mu = 0.1 }' (empty: the Stribeck law)");
   opt.add(s.stribeck_table, "stribeck-table", "the Stribeck law's parameters (CSV, Table 3.1 format)");
   opt.add(s.interval, "interval", "the Stribeck law's update interval [cycles] (>= 1)");
@@ -66,7 +67,7 @@ int strip_deck_command(int argc, char** argv) {
   if (!s.hardening.empty()) (void)read_input(s.hardening);
   if (!s.stribeck_table.empty()) (void)read_input(s.stribeck_table);
   // --friction checked on its own (io/portable_paths.hpp): a problem names the option, not the generated deck.
-  s.friction = io::friction_argument(s.friction, std::filesystem::current_path().string());
+  s.friction = io::friction_argument(friction, std::filesystem::current_path().string());
   check_threads(threads);
   io::CaseSpec deck = sim::strip_draw_case(s);
   io::set_threads(deck, threads);  // the deck's numerics.threads

@@ -232,16 +232,18 @@ __attribute__((always_inline)) inline void prefetch_next(const ElementView& ev, 
   }
 }
 
-/// Elements e0 .. e0+W-1.  Returns the lowest inverted one, or -1.
-template <int W>
-int element_block(const ElementView& ev, int e0) {
-  using T = typename Lanes<W>::type;
-  const double dtp = ev.dtp;
-  // Gather.  Where each corner's nodes run on with the lanes (element e0 + l
-  // has node n + l at every corner: a row of a structured block, numbered as
-  // mesh.cpp numbers them), each vector is one load of W consecutive values;
-  // otherwise one load per lane.  The same values either way.
-  T x[8], y[8], z[8], v[3][8];
+// The steps of element_block, in its order, each inlined into it (the block
+// is one function to the compiler: the same instructions as when it was
+// written out in one piece).
+#define DRAWBEND_STEP __attribute__((always_inline)) inline
+
+/// Gather the corners' coordinates and velocities.  Where each corner's nodes
+/// run on with the lanes (element e0 + l has node n + l at every corner: a row
+/// of a structured block, numbered as mesh.cpp numbers them), each vector is
+/// one load of W consecutive values; otherwise one load per lane.  The same
+/// values either way.
+template <int W, class T>
+DRAWBEND_STEP void gather_corners(const ElementView& ev, int e0, T x[8], T y[8], T z[8], T v[3][8]) {
   if (W > 1 && nodes_run_on<W>(ev.hex + e0)) {
     prefetch_next<W>(ev, e0);
     for (int a = 0; a < 8; ++a) {
@@ -265,37 +267,15 @@ int element_block(const ElementView& ev, int e0) {
       from_lanes(v[2][a], [&](int l) { return ev.nodes.vz[n[l]]; });
     }
   }
-  HexWalshT<T> g;
-  if (!hex_walsh_t(x, y, z, g)) {
-    if constexpr (W == 1) {
-      return e0;
-    } else {  // one by one: the inverted element is reported, the others proceed as usual
-      int inverted = -1;
-      for (int l = 0; l < W; ++l) {
-        const int r = element_block<1>(ev, e0 + l);
-        if (r >= 0 && inverted < 0) inverted = r;
-      }
-      return inverted;
-    }
-  }
-  const T V = g.volume;
-  const T(*R)[3] = g.R;
-  // Everything runs on Walsh sums (fe/hex8_geometry.hpp): with the
-  // velocities' sums Vw_k = sum_a h_k(a) v_a and B_a = inv sum_k h_k(a) G_k,
-  //   L_mean = sum_a v_a (x) B_a = inv sum_{k=1..6} Vw_k (x) G_k,
-  // and the hourglass vectors gamma_alpha,a = h_alpha,a - (h_alpha . x) . B_a
-  // are never formed (Flanagan & Belytschko 1981): a mode's velocity is
-  //   sum_a v_a gamma_alpha,a = Vw_alpha - L_mean hx_alpha,
-  // with the mode's coordinates hx_alpha = sum_b h_alpha,b x_b = X_alpha.
-  T hxa[4][3], Ln[3][3], gl[4][3];
-  velocity_gradient(g, v, hxa, Ln, gl);
-  // Thickness-linear gradient, local, at zeta = 1/sqrt3 (the points' zeta
-  // folded in): LCl_i0 = zeta sum_a vl_a,i gamma_zx,a / 8h_x, LCl_i1 likewise with gamma_yz / 8h_y.
-  const T i8h[2] = {0.125 / g.h[0], 0.125 / g.h[1]};
-  const T zi8h[2] = {kZg * i8h[0], kZg * i8h[1]};
-  T rbar;
-  load_records<1>(ev.hg_ratio + e0, &rbar);
-  const T c = rbar * ev.c_elastic + (1.0 - rbar);
+}
+
+/// The thickness-linear gradient LC (global) from the modes' local velocities
+/// gl, with the points' zeta folded in (zi8h = zeta / 8h): locally
+/// LCl_i0 = zeta sum_a vl_a,i gamma_zx,a / 8h_x, LCl_i1 likewise with
+/// gamma_yz / 8h_y, LCl_22 = -c (LCl_00 + LCl_11) (the assumed thickness
+/// strain), and LC = R LCl R^T.
+template <class T>
+DRAWBEND_STEP void thickness_gradient(const T (*R)[3], const T gl[4][3], const T zi8h[2], const T& c, T LC[3][3]) {
   T LCl[3][2];
   for (int i = 0; i < 3; ++i) {
     LCl[i][0] = gl[1][i] * zi8h[0];
@@ -303,7 +283,7 @@ int element_block(const ElementView& ev, int e0) {
   }
   const T LCl22 = -c * (LCl[0][0] + LCl[1][1]);
   // LC = R LCl R^T, with LCl's third column (0, 0, LCl22).
-  T RL[3][3], LC[3][3];
+  T RL[3][3];
   for (int i = 0; i < 3; ++i) {
     RL[i][0] = R[i][0] * LCl[0][0] + R[i][1] * LCl[1][0] + R[i][2] * LCl[2][0];
     RL[i][1] = R[i][0] * LCl[0][1] + R[i][1] * LCl[1][1] + R[i][2] * LCl[2][1];
@@ -311,13 +291,20 @@ int element_block(const ElementView& ev, int e0) {
   }
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) LC[i][j] = RL[i][0] * R[j][0] + RL[i][1] * R[j][1] + RL[i][2] * R[j][2];
-  // Mid-interval geometry: L_mid = L (I - dt/2 L_mean)^-1 (exact for rigid rotation).
+}
+
+/// The two integration points' stresses s (read from ev.sig) turned by the
+/// Jaumann rotation, their strain increments deps and spins, from the
+/// mid-interval gradient L_mid = L (I - dt/2 L_mean)^-1 (exact for rigid
+/// rotation) at zeta = +-1/sqrt3: (L_mean +- zeta L_C) M^-1.
+template <class T>
+DRAWBEND_STEP void point_rates(const ElementView& ev, int e0, const T Ln[3][3], const T LC[3][3], T s[2][6],
+                               T deps[2][6], T spin[2][3]) {
+  const double dtp = ev.dtp;
   T M[3][3], Mi[3][3];
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) M[i][j] = (i == j ? 1.0 : 0.0) - 0.5 * dtp * Ln[i][j];
   inverse3(M, Mi);
-  // The two integration points: Jaumann rotation and strain increment ...
-  T s[2][6], deps[2][6], spin[2][3];
   load_records<12>(ev.sig + 12 * static_cast<std::size_t>(e0), &s[0][0]);
   // L_mid at zeta = +-1/sqrt3: (L_mean +- zeta L_C) M^-1 = L_mean M^-1 +- zeta (L_C M^-1).
   T LnM[3][3], LCM[3][3];
@@ -332,15 +319,20 @@ int element_block(const ElementView& ev, int e0) {
       for (int j = 0; j < 3; ++j) Lmid[i][j] = gp == 0 ? LnM[i][j] + LCM[i][j] : LnM[i][j] - LCM[i][j];
     rotate_and_strain(Lmid, dtp, s[gp], deps[gp], spin[gp]);
   }
-  // ... the material update, with the stress power increment per unit volume
-  // by the midpoint rule; the tangent ratio.  J2, CombinedPlasticity and
-  // Yld2004Plasticity on the lanes, branch-free (material/lanes/j2_lanes.hpp,
-  // combined_lanes.hpp, yld2004_lanes.hpp);
-  // other materials one point at a time (each turns its own history with the
-  // point's spin).
+}
+
+/// The material update of the two points, with the stress power increment per
+/// unit volume by the midpoint rule (ev.ie_inc) and the tangent ratio; the new
+/// stresses in snew.  J2, CombinedPlasticity and Yld2004Plasticity on the
+/// lanes, branch-free (material/lanes/j2_lanes.hpp, combined_lanes.hpp,
+/// yld2004_lanes.hpp); other materials one point at a time (each turns its own
+/// history with the point's spin), their stresses then read back from ev.sig.
+template <int W, class T>
+DRAWBEND_STEP void material_points(const ElementView& ev, int e0, const T s[2][6], const T deps[2][6], const T spin[2][3], const T& V,
+                                   T& ratio, T snew[2][6]) {
+  const double dtp = ev.dtp;
   const material::Material& mat = *ev.mat;
   const std::uint64_t tick0 = ev.material_ticks ? ticks() : 0;
-  T ratio, snew[2][6];
   bool on_lanes = false;
   if constexpr (W > 1) {
     if (ev.j2_lanes) {
@@ -391,20 +383,23 @@ int element_block(const ElementView& ev, int e0) {
   if (ev.material_ticks) __atomic_fetch_add(ev.material_ticks, ticks() - tick0, __ATOMIC_RELAXED);
   // The new stresses: from the lanes, or from ev.sig where the points were updated one by one.
   if (!on_lanes) load_records<12>(ev.sig + 12 * static_cast<std::size_t>(e0), &snew[0][0]);
-  const T* sp = snew[0];
-  const T* sm = snew[1];
-  // The remaining hourglass modes (xi*eta, xi*eta*zeta): corotational, with
-  // the physical stiffness of the elastic moduli.  They keep the elastic
-  // modulus: bending is carried by the integration points, and a stiffness
-  // that followed yielding would pump energy into these modes as material
-  // streams through a bend (elastic -> plastic -> elastic), which a
-  // draw-bend strip does.
-  const T rnew = rbar + kRelax * (ratio - rbar);
-  store_records<1>(ev.hg_ratio + e0, &rnew);
+}
+
+/// The remaining hourglass modes (xi*eta, xi*eta*zeta): their generalised
+/// forces Q (ev.hgq) advanced corotationally from the modes' local velocities
+/// q, with the physical stiffness of the elastic moduli, and their energy
+/// increment ehg.  They keep the elastic modulus: bending is carried by the
+/// integration points, and a stiffness that followed yielding would pump
+/// energy into these modes as material streams through a bend (elastic ->
+/// plastic -> elastic), which a draw-bend strip does.
+template <class T>
+DRAWBEND_STEP void hourglass_modes(const ElementView& ev, int e0, const HexWalshT<T>& g, const T& V, const T gl[4][3],
+                                   T Q[6], T& ehg) {
+  const double dtp = ev.dtp;
   const double Er = ev.E0;
   const T ih2[3] = {1.0 / (g.h[0] * g.h[0]), 1.0 / (g.h[1] * g.h[1]), 1.0 / (g.h[2] * g.h[2])};
   const T* q[2] = {gl[2], gl[3]};  // the modes' local velocities
-  T Q[6], Qo[6];  // [mode xi*eta: 3][mode xi*eta*zeta: 3], now and before this step
+  T Qo[6];  // Q: [mode xi*eta: 3][mode xi*eta*zeta: 3], now; Qo: before this step
   load_records<6>(ev.hgq + 6 * static_cast<std::size_t>(e0), Q);
   for (int k = 0; k < 6; ++k) Qo[k] = Q[k];
   const T kq = (dtp * ev.hourglass / 64.0) * V;
@@ -415,21 +410,27 @@ int element_block(const ElementView& ev, int e0) {
     Q[3 + i] += kq * K3 * q[1][i];
   }
   store_records<6>(ev.hgq + 6 * static_cast<std::size_t>(e0), Q);
-  // Hourglass energy by the midpoint rule, as the stress power above:
+  // Hourglass energy by the midpoint rule, as the stress power:
   // sum_a (R fh_a) . v_a = sum_a fh_a . vl_a = Q . q, with the mean of the
   // generalised forces before and after this step.  With the new Q alone the
   // sum gains k (dq)^2 every cycle, a drift that grows with the number of
   // cycles and the modes' vibration and is in no work done on the sheet.
-  T ehg = {};
+  ehg = T{};
   for (int k = 0; k < 3; ++k)
     ehg += (0.5 * (Qo[k] + Q[k]) * q[0][k] + 0.5 * (Qo[3 + k] + Q[3 + k]) * q[1][k]) * dtp;
-  // Internal forces, f_a = -(V sigma_mean B_a + sum_alpha C_alpha gamma_alpha,a),
-  // with the modes' global force vectors C_alpha:
-  //  - thickness-linear part (V/2) Dl : LCl(v), Dl = R^T (sig+ - sig-)/sqrt3 R
-  //    (symmetric), on the modes zeta*xi (C_1) and eta*zeta (C_0);
-  //  - the hourglass forces R Q on the modes xi*eta (C_2) and xi*eta*zeta (C_3).
-  // With gamma_alpha,a = h_alpha,a - hx_alpha . B_a, f_a = -(Mf B_a + sum_alpha C_alpha h_alpha,a),
-  // Mf = V sigma_mean - sum_alpha C_alpha (x) hx_alpha.
+}
+
+/// The modes' global force vectors C and the mean-stress matrix Mf of the
+/// internal forces f_a = -(V sigma_mean B_a + sum_alpha C_alpha gamma_alpha,a)
+/// from the points' new stresses sp, sm (at zeta = +1/sqrt3, -1/sqrt3):
+///  - thickness-linear part (V/2) Dl : LCl(v), Dl = R^T (sig+ - sig-)/sqrt3 R
+///    (symmetric), on the modes zeta*xi (C_1) and eta*zeta (C_0);
+///  - the hourglass forces R Q on the modes xi*eta (C_2) and xi*eta*zeta (C_3).
+/// With gamma_alpha,a = h_alpha,a - hx_alpha . B_a, f_a = -(Mf B_a + sum_alpha C_alpha h_alpha,a),
+/// Mf = V sigma_mean - sum_alpha C_alpha (x) hx_alpha.
+template <class T>
+DRAWBEND_STEP void mode_forces(const T (*R)[3], const T& V, const T* sp, const T* sm, const T Q[6], const T hxa[4][3],
+                               const T zi8h[2], const T& c, T Mf[3][3], T C[4][3]) {
   T dg[6];
   for (int k = 0; k < 6; ++k) dg[k] = sp[k] - sm[k];  // the 1/sqrt3 goes into kx, ky below
   const T DG[3][3] = {{dg[0], dg[3], dg[5]}, {dg[3], dg[1], dg[4]}, {dg[5], dg[4], dg[2]}};
@@ -448,7 +449,6 @@ int element_block(const ElementView& ev, int e0) {
   // Local force vectors of the modes zeta*xi (on gamma_1 / 8h_x) and eta*zeta (gamma_0 / 8h_y).
   const T K1[3] = {kx * (Dl00 - c * Dl22), kx * Dl01, kx * Dl02};
   const T K0[3] = {ky * Dl01, ky * (Dl11 - c * Dl22), ky * Dl12};
-  T C[4][3];
   for (int i = 0; i < 3; ++i) {
     C[0][i] = R[i][0] * K0[0] + R[i][1] * K0[1] + R[i][2] * K0[2];
     C[1][i] = R[i][0] * K1[0] + R[i][1] * K1[1] + R[i][2] * K1[2];
@@ -458,20 +458,78 @@ int element_block(const ElementView& ev, int e0) {
   T smean[6];
   for (int k = 0; k < 6; ++k) smean[k] = 0.5 * (sp[k] + sm[k]);
   const T SM[3][3] = {{smean[0], smean[3], smean[5]}, {smean[3], smean[1], smean[4]}, {smean[5], smean[4], smean[2]}};
-  T Mf[3][3];
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       Mf[i][j] = V * SM[i][j] - (C[0][i] * hxa[0][j] + C[1][i] * hxa[1][j] + C[2][i] * hxa[2][j] + C[3][i] * hxa[3][j]);
-  scatter_forces<W>(ev, e0, g, Mf, C);
-  // The stable time step, len / c sqrt(mass factor), on the lanes.
+}
+
+/// The element's stable time step, len / c sqrt(mass factor), on the lanes.
+template <class T>
+DRAWBEND_STEP void stable_time_step(const ElementView& ev, int e0, const HexWalshT<T>& g, T& dte) {
   T smf, len;
   load_records<1>(ev.sqrt_mass_factor + e0, &smf);
   hex_stable_length_t(g.h, len);
-  const T dte = len / ev.wave_speed * smf;
+  dte = len / ev.wave_speed * smf;
+}
+
+/// Elements e0 .. e0+W-1: gather, geometry, the points' strain rates, the
+/// material, the hourglass modes, the forces into the corner slots and the
+/// stable time step (the steps above).  Returns the lowest inverted one, or -1.
+template <int W>
+int element_block(const ElementView& ev, int e0) {
+  using T = typename Lanes<W>::type;
+  T x[8], y[8], z[8], v[3][8];
+  gather_corners<W>(ev, e0, x, y, z, v);
+  HexWalshT<T> g;
+  if (!hex_walsh_t(x, y, z, g)) {
+    if constexpr (W == 1) {
+      return e0;
+    } else {  // one by one: the inverted element is reported, the others proceed as usual
+      int inverted = -1;
+      for (int l = 0; l < W; ++l) {
+        const int r = element_block<1>(ev, e0 + l);
+        if (r >= 0 && inverted < 0) inverted = r;
+      }
+      return inverted;
+    }
+  }
+  const T V = g.volume;
+  // Everything runs on Walsh sums (fe/hex8_geometry.hpp): with the
+  // velocities' sums Vw_k = sum_a h_k(a) v_a and B_a = inv sum_k h_k(a) G_k,
+  //   L_mean = sum_a v_a (x) B_a = inv sum_{k=1..6} Vw_k (x) G_k,
+  // and the hourglass vectors gamma_alpha,a = h_alpha,a - (h_alpha . x) . B_a
+  // are never formed (Flanagan & Belytschko 1981): a mode's velocity is
+  //   sum_a v_a gamma_alpha,a = Vw_alpha - L_mean hx_alpha,
+  // with the mode's coordinates hx_alpha = sum_b h_alpha,b x_b = X_alpha.
+  T hxa[4][3], Ln[3][3], gl[4][3];
+  velocity_gradient(g, v, hxa, Ln, gl);
+  // The thickness-linear gradient, its thickness strain blended between
+  // elastic (c_elastic) and isochoric (1) by the relaxed tangent ratio rbar.
+  const T i8h[2] = {0.125 / g.h[0], 0.125 / g.h[1]};
+  const T zi8h[2] = {kZg * i8h[0], kZg * i8h[1]};
+  T rbar;
+  load_records<1>(ev.hg_ratio + e0, &rbar);
+  const T c = rbar * ev.c_elastic + (1.0 - rbar);
+  T LC[3][3];
+  thickness_gradient(g.R, gl, zi8h, c, LC);
+  T s[2][6], deps[2][6], spin[2][3];
+  point_rates(ev, e0, Ln, LC, s, deps, spin);
+  T ratio, snew[2][6];
+  material_points<W>(ev, e0, s, deps, spin, V, ratio, snew);
+  const T rnew = rbar + kRelax * (ratio - rbar);
+  store_records<1>(ev.hg_ratio + e0, &rnew);
+  T Q[6], ehg;
+  hourglass_modes(ev, e0, g, V, gl, Q, ehg);
+  T Mf[3][3], C[4][3];
+  mode_forces(g.R, V, snew[0], snew[1], Q, hxa, zi8h, c, Mf, C);
+  scatter_forces<W>(ev, e0, g, Mf, C);
+  T dte;
+  stable_time_step(ev, e0, g, dte);
   store_records<1>(ev.hg_inc + e0, &ehg);
   store_records<1>(ev.dt_elem + e0, &dte);
   return -1;
 }
+#undef DRAWBEND_STEP
 }  // namespace kernel
 
 int element_range(const ElementView& v, int begin, int end, int width) {

@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "core/csv.hpp"
+#include "core/quote.hpp"
 #include "core/toml_read.hpp"
 
 namespace drawbend::io {
@@ -187,6 +188,81 @@ FrictionSpec read_friction(toml::table t) {
   return f;
 }
 
+FrictionSpec coulomb_friction(double mu) {
+  FrictionSpec f;
+  f.law = "coulomb", f.mu = mu;
+  return f;
+}
+
+FrictionSpec stribeck_friction(const std::string& table, int64_t interval) {
+  FrictionSpec f;
+  f.law = "stribeck", f.rest = toml::table{{"table", table}, {"interval", interval}};
+  return f;
+}
+
+FrictionSpec surface_friction(const std::string& nodes, int64_t interval) {
+  FrictionSpec f;
+  f.law = "surface", f.nodes = nodes, f.rest = toml::table{{"interval", interval}};
+  return f;
+}
+
+namespace {
+/// A TOML value as deck text: strings double-quoted, floats in their shortest exact form, tables inline.
+std::string value_text(const toml::node& v) {
+  if (const auto* s = v.as_string()) return string_literal(s->get());
+  if (const auto* i = v.as_integer()) return std::to_string(i->get());
+  if (const auto* f = v.as_floating_point()) {
+    std::string t = fmt_shortest(f->get());
+    if (t.find_first_of(".eEn") == std::string::npos) t += ".0";
+    return t;
+  }
+  if (const auto* b = v.as_boolean()) return b->get() ? "true" : "false";
+  if (const auto* a = v.as_array()) {
+    std::string o = "[";
+    for (std::size_t k = 0; k < a->size(); ++k) o += (k ? ", " : "") + value_text(*a->get(k));
+    return o + "]";
+  }
+  if (const auto* t = v.as_table()) {
+    std::string o = "{ ";
+    bool first = true;
+    for (auto&& [k, x] : *t) {
+      o += (first ? "" : ", ") + std::string(k.str()) + " = " + value_text(x);
+      first = false;
+    }
+    return o + " }";
+  }
+  std::ostringstream o;
+  v.visit([&o](const auto& x) { o << x; });
+  return o.str();
+}
+
+/// The friction as its deck table (the writer's structure; inline).
+toml::table friction_table(const FrictionSpec& s) {
+  toml::table f = s.rest;
+  put(f, "law", s.law);
+  put(f, "nodes", s.nodes);
+  put(f, "mu", s.mu);
+  f.is_inline(true);
+  return f;
+}
+}  // namespace
+
+std::string friction_text(const FrictionSpec& s) {
+  toml::table t = friction_table(s);
+  std::string o = "{ ";
+  bool first = true;
+  auto key = [&](const std::string& k) {
+    if (const toml::node* v = t.get(k)) {
+      o += (first ? "" : ", ") + k + " = " + value_text(*v);
+      first = false;
+      t.erase(k);
+    }
+  };
+  for (const char* k : {"law", "nodes", "lines", "table"}) key(k);
+  while (!t.empty()) key(std::string(t.begin()->first.str()));  // the rest by name (a table is sorted)
+  return o + " }";
+}
+
 CaseSpec from_toml(const toml::table& deck, const std::string& where) {
   toml::table root = deck;
   CaseSpec c;
@@ -262,14 +338,7 @@ toml::table to_toml_table(const CaseSpec& c) {
   for (const ToolSpec& s : c.tools) tools.push_back(tool_table(s));
   for (const ContactSpec& s : c.contacts) {
     toml::table t = s.rest;
-    if (s.friction) {
-      toml::table f = s.friction->rest;
-      put(f, "law", s.friction->law);
-      put(f, "nodes", s.friction->nodes);
-      put(f, "mu", s.friction->mu);
-      f.is_inline(true);
-      t.insert_or_assign("friction", std::move(f));
-    }
+    if (s.friction) t.insert_or_assign("friction", friction_table(*s.friction));
     contacts.push_back(std::move(t));
   }
   for (const StepSpec& s : c.steps) {

@@ -164,6 +164,16 @@ void set_threads(CaseSpec& c, int64_t n);
 
 /// A contact's friction table { law, nodes, mu, ... } as a FrictionSpec (the shape only, as from_toml).
 FrictionSpec read_friction(toml::table t);
+/// The laws a builder sets (io/deck_friction.hpp; the deck reader checks the values):
+/// { law = "coulomb", mu }, { law = "stribeck", table, interval }, { law = "surface", nodes, interval }.
+FrictionSpec coulomb_friction(double mu);
+FrictionSpec stribeck_friction(const std::string& table, int64_t interval);
+FrictionSpec surface_friction(const std::string& nodes, int64_t interval);
+/// The friction as one line of inline TOML in a fixed order: the law, then its input file
+/// (nodes, lines, table), then its other keys by name, e.g. { law = "coulomb", mu = 0.1 } or
+/// { law = "stribeck", table = "t.csv", interval = 100 } (a run's description; the deck's
+/// [[contact]] friction itself is written by to_toml).
+std::string friction_text(const FrictionSpec& f);
 
 /// Reads a deck's table; `where` (the file) names it in messages.  Throws
 /// InputError (where: key: ...) when a piece has the wrong shape.

@@ -4,11 +4,9 @@
 #include <filesystem>
 #include <map>
 #include <regex>
-#include <sstream>
 
 #include <toml++/toml.h>
 
-#include "core/quote.hpp"
 #include "core/csv.hpp"
 #include "core/hash.hpp"
 #include "core/input_problems.hpp"
@@ -24,50 +22,14 @@ namespace {
 
 constexpr const char* kFileKeys[] = {"nodes", "lines", "table"};  // friction tables (hardening: [material])
 
-/// Make the friction table's relative file keys absolute against `base`; true if one changed.
-bool absolutise(toml::table& t, const fs::path& base) {
-  bool changed = false;
+/// Make the friction table's relative file keys absolute against `base`.
+void absolutise(toml::table& t, const fs::path& base) {
   for (const char* k : kFileKeys)
     if (auto* v = t.get_as<std::string>(k)) {
       const fs::path p(v->get());
-      if (p.is_relative()) {
-        *v = fs::absolute(base / p).lexically_normal().string();
-        changed = true;
-      }
+      if (p.is_relative()) *v = fs::absolute(base / p).lexically_normal().string();
     }
-  return changed;
 }
-
-/// A TOML value as deck text: strings double-quoted, floats in their shortest exact form, tables inline.
-std::string value_text(const toml::node& v) {
-  if (const auto* s = v.as_string()) return string_literal(s->get());
-  if (const auto* i = v.as_integer()) return std::to_string(i->get());
-  if (const auto* f = v.as_floating_point()) {
-    std::string t = fmt_shortest(f->get());
-    if (t.find_first_of(".eEn") == std::string::npos) t += ".0";
-    return t;
-  }
-  if (const auto* b = v.as_boolean()) return b->get() ? "true" : "false";
-  if (const auto* a = v.as_array()) {
-    std::string o = "[";
-    for (std::size_t k = 0; k < a->size(); ++k) o += (k ? ", " : "") + value_text(*a->get(k));
-    return o + "]";
-  }
-  if (const auto* t = v.as_table()) {
-    std::string o = "{ ";
-    bool first = true;
-    for (auto&& [k, x] : *t) {
-      o += (first ? "" : ", ") + std::string(k.str()) + " = " + value_text(x);
-      first = false;
-    }
-    return o + " }";
-  }
-  std::ostringstream o;
-  v.visit([&o](const auto& x) { o << x; });
-  return o.str();
-}
-
-std::string inline_text(const toml::table& t) { return value_text(t); }
 
 }  // namespace
 
@@ -84,15 +46,16 @@ void check_friction(const toml::table& t, const std::string& where, const std::s
 }
 }  // namespace
 
-std::string friction_argument(const std::string& text, const std::string& base_dir) {
-  if (text.empty()) return text;
+std::optional<FrictionSpec> friction_argument(const std::string& text, const std::string& base_dir) {
+  if (text.empty()) return std::nullopt;
   const std::size_t first = text.find_first_not_of(" \t");
   if (first != std::string::npos && text[first] == '{') {
     toml::table root = parse_toml("friction = " + text, "--friction");
     auto* t = root["friction"].as_table();
     if (!t) throw InputError("--friction: expected a TOML inline table such as { law = \"coulomb\", mu = 0.1 }");
     check_friction(*t, "--friction", base_dir);
-    return absolutise(*t, fs::path(base_dir)) ? inline_text(*t) : text;
+    absolutise(*t, fs::path(base_dir));
+    return read_friction(*t);
   }
   const fs::path file = fs::path(base_dir) / text;
   if (!fs::is_regular_file(file))
@@ -103,7 +66,7 @@ std::string friction_argument(const std::string& text, const std::string& base_d
   if (!t) throw InputError(file.string() + ": expected a [friction] table (the loop's friction_model.toml has one)");
   check_friction(*t, file.string(), file.parent_path().string());
   absolutise(*t, file.parent_path());
-  return inline_text(*t);
+  return read_friction(*t);
 }
 
 namespace {

@@ -11,22 +11,25 @@
 //    typed on the command line (its relative files are taken from the current
 //    folder, where the user typed them) or the path of a TOML file with a
 //    [friction] table, such as the loop's friction_model.toml (its relative
-//    files are taken from that file's folder).  Either way the result is an
-//    inline table whose file paths are absolute, so the deck written from it
-//    reads the same files wherever the deck is put.
+//    files are taken from that file's folder).  Either way the result is a
+//    typed friction (io/case_spec.hpp) whose file paths are absolute, so the
+//    deck written from it reads the same files wherever the deck is put.
 //  - portable_deck: the deck a builder writes into a run folder names each
 //    input file by its bare name and the file is copied beside it, so the
 //    folder can be moved or zipped and rerun elsewhere (`drawbend run
 //    FOLDER/deck.toml`).  The rewrite depends on the text only (the same deck
 //    gives the same bytes on every machine and in every folder).
 #include <cstdint>
+#include <optional>
 #include <string>
+
+#include "io/case_spec.hpp"
 
 namespace drawbend::io {
 
-/// The --friction value as an inline table with absolute file paths (see above).
+/// The --friction value as a friction with absolute file paths (see above); none for an empty one.
 /// Throws InputError naming the file or the argument when it is neither.
-std::string friction_argument(const std::string& text, const std::string& base_dir);
+std::optional<FrictionSpec> friction_argument(const std::string& text, const std::string& base_dir);
 
 /// `text` with every absolute path of an existing input file replaced by its
 /// file name; when `copy_to` is not empty, each such file is copied there

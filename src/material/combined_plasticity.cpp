@@ -115,12 +115,14 @@ void CombinedPlasticity::solve_relative(double kappa, const double xs[6], double
   xi[5] = xs[5] / (1.0 + kappa * hill_.M);
 }
 
-void CombinedPlasticity::update(const double deps[6], const Spin& spin, double sigma[6], double* state) const {
-  const double ep = state[0];
-  double* back = state + 1;
-  // 1. Objectivity: the back stresses and the sheet axes turn with the spin
-  //    the element applied to sigma.
-  double Q[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+// The steps of update, each inlined into it (the same instructions as when it
+// was written out in one piece: the scalar path of the element kernel).
+#define DRAWBEND_STEP __attribute__((always_inline)) inline
+
+/// 1. Objectivity: the back stresses and the sheet axes (after them in the
+///    state) turn with the spin the element applied to sigma; Q: the sheet
+///    axes as rows (identity for von Mises).
+DRAWBEND_STEP void CombinedPlasticity::turn_history(const Spin& spin, double* back, double Q[3][3]) const {
   if (spin.dt != 0.0)
     for (int k = 0; k < nback_; ++k) rotate_symmetric(spin, back + 6 * k);
   if (aniso_) {
@@ -139,10 +141,11 @@ void CombinedPlasticity::update(const double deps[6], const Spin& spin, double s
       Q[2][i] = nd[i];
     }
   }
-  // 2. Elastic trial stress, in the sheet axes with the back stresses.
-  double tr[6] = {sigma[0], sigma[1], sigma[2], sigma[3], sigma[4], sigma[5]};
-  el_.add_elastic(deps, tr);
-  double ts[6], an[kMaxBack][6];
+}
+
+/// 2. The elastic trial stress tr and the back stresses in the sheet axes (ts, an).
+DRAWBEND_STEP void CombinedPlasticity::trial_in_sheet_axes(const double Q[3][3], const double tr[6],
+                                                           const double* back, double ts[6], double (*an)[6]) const {
   if (aniso_) {
     sheet_transform(Q, tr, ts, true);
     for (int k = 0; k < nback_; ++k) sheet_transform(Q, back + 6 * k, an[k], true);
@@ -151,19 +154,13 @@ void CombinedPlasticity::update(const double deps[6], const Spin& spin, double s
     for (int k = 0; k < nback_; ++k)
       for (int c = 0; c < 6; ++c) an[k][c] = back[6 * k + c];
   }
-  double xs[6];
-  for (int c = 0; c < 6; ++c) {
-    xs[c] = ts[c];
-    for (int k = 0; k < nback_; ++k) xs[c] -= an[k][c];
-  }
-  const double R0 = isotropic_stress(ep);
-  const double f0 = equivalent(xs) - R0;
-  if (!(f0 > 0.0)) {
-    for (int c = 0; c < 6; ++c) sigma[c] = tr[c];
-    return;
-  }
-  // 3. Plastic: the scalar consistency condition in dl, bracketed and solved.
-  const double s_ep = curve_.stress(ep);
+}
+
+/// 3. Plastic: the scalar consistency condition in dl, bracketed and solved;
+///    returns dl, with xi (the relative stress) and Rv (the isotropic stress)
+///    at it.  f0 > 0: the trial's yield function; s_ep: the curve's stress at ep.
+DRAWBEND_STEP double CombinedPlasticity::plastic_multiplier(double ep, double s_ep, double f0, const double ts[6],
+                                                            const double (*an)[6], double xi[6], double& Rv) const {
   // The residual is sigma_bar(xi) - R times 1 + kappa (F + G + H), positive
   // for kappa >= 0 (F + G + H is half the trace of T M, whose two non-zero
   // eigenvalues are positive for every Hill'48 that validate() accepts), so
@@ -177,7 +174,6 @@ void CombinedPlasticity::update(const double deps[6], const Spin& spin, double s
   // linear (5 evaluations instead of 6 and 8 there; the Rayleigh quotient of
   // T M at the trial direction in its place gave the same counts).
   const double c_lin = hill_.F + hill_.G + hill_.H;
-  double xi[6], Rv = R0;
   auto residual = [&](double dl, double out[6], double& R) {
     double kin = 0.0, xstar[6] = {ts[0], ts[1], ts[2], ts[3], ts[4], ts[5]};
     if (kin_.beta > 0) {
@@ -226,7 +222,14 @@ void CombinedPlasticity::update(const double deps[6], const Spin& spin, double s
   }
   // xi and Rv are at the accepted dl: every way out of the loops above leaves
   // dl at the residual's last evaluation.
-  // 4. Back stresses from the flow direction T M xi / R, and the stress.
+  return dl;
+}
+
+/// 4. The back stresses an from the flow direction T M xi / R, and the stress;
+///    both turned back to the global axes (sigma, back).
+DRAWBEND_STEP void CombinedPlasticity::harden_and_rotate_back(const double Q[3][3], double ep, double s_ep, double dl,
+                                                              const double xi[6], double Rv, double (*an)[6],
+                                                              double sigma[6], double* back) const {
   double n[6];
   {
     const double F = hill_.F, G = hill_.G, H = hill_.H;
@@ -260,6 +263,34 @@ void CombinedPlasticity::update(const double deps[6], const Spin& spin, double s
     for (int k = 0; k < nback_; ++k)
       for (int c = 0; c < 6; ++c) back[6 * k + c] = an[k][c];
   }
+}
+#undef DRAWBEND_STEP
+
+void CombinedPlasticity::update(const double deps[6], const Spin& spin, double sigma[6], double* state) const {
+  const double ep = state[0];
+  double* back = state + 1;
+  double Q[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  turn_history(spin, back, Q);
+  // The elastic trial stress, in the sheet axes with the back stresses.
+  double tr[6] = {sigma[0], sigma[1], sigma[2], sigma[3], sigma[4], sigma[5]};
+  el_.add_elastic(deps, tr);
+  double ts[6], an[kMaxBack][6];
+  trial_in_sheet_axes(Q, tr, back, ts, an);
+  double xs[6];
+  for (int c = 0; c < 6; ++c) {
+    xs[c] = ts[c];
+    for (int k = 0; k < nback_; ++k) xs[c] -= an[k][c];
+  }
+  const double R0 = isotropic_stress(ep);
+  const double f0 = equivalent(xs) - R0;
+  if (!(f0 > 0.0)) {
+    for (int c = 0; c < 6; ++c) sigma[c] = tr[c];
+    return;
+  }
+  const double s_ep = curve_.stress(ep);
+  double xi[6], Rv = R0;
+  const double dl = plastic_multiplier(ep, s_ep, f0, ts, an, xi, Rv);
+  harden_and_rotate_back(Q, ep, s_ep, dl, xi, Rv, an, sigma, back);
   state[0] = ep + dl;
 }
 

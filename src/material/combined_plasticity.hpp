@@ -119,6 +119,14 @@ class CombinedPlasticity final : public Material {
  private:
   double equivalent(const double xi[6]) const;  // sigma_bar in the sheet axes
   void solve_relative(double kappa, const double xs[6], double xi[6]) const;  // (I + kappa T M) xi = xs
+  // The steps of update(), in its order (combined_plasticity.cpp); an: the back stresses in the sheet axes.
+  void turn_history(const Spin& spin, double* back, double Q[3][3]) const;
+  void trial_in_sheet_axes(const double Q[3][3], const double tr[6], const double* back, double ts[6],
+                           double (*an)[6]) const;
+  double plastic_multiplier(double ep, double s_ep, double f0, const double ts[6], const double (*an)[6], double xi[6],
+                            double& Rv) const;
+  void harden_and_rotate_back(const double Q[3][3], double ep, double s_ep, double dl, const double xi[6], double Rv,
+                              double (*an)[6], double sigma[6], double* back) const;
 
   IsotropicElasticity el_;
   HardeningCurve curve_;

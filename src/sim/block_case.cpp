@@ -42,7 +42,7 @@ void check_spec(const BlockSpec& s) {
   if (s.press_ramp >= s.press_time) throw InputError(w + "press_ramp must be shorter than press_time");
   if (s.speed_ramp >= s.slide_time) throw InputError(w + "speed_ramp must be shorter than slide_time");
   if (s.hardening.empty()) throw InputError(w + "no hardening curve");
-  if (s.friction.empty() && s.surface_nodes.empty()) throw InputError(w + "no friction law and no surface nodes");
+  if (!s.friction && s.surface_nodes.empty()) throw InputError(w + "no friction law and no surface nodes");
 }
 
 /// The deck's header: what the case is, what it measures, units.
@@ -81,13 +81,7 @@ io::CaseSpec block_case(const BlockSpec& s) {
   plane.kind = "plane", plane.origin = io::Vec3Spec{0.0, 0.0, 0.0}, plane.normal = io::Vec3Spec{0.0, 0.0, 1.0};
   io::ContactSpec& contact = c.contacts.emplace_back();
   contact.rest = toml::table{{"faces", "zmin"}, {"tool", "floor"}, {"penalty", s.penalty}, {"texture", "fixed"}};
-  if (s.friction.empty()) {
-    contact.friction.emplace();
-    contact.friction->law = "surface", contact.friction->nodes = s.surface_nodes;
-    contact.friction->rest.insert("interval", s.interval);
-  } else {
-    contact.friction = friction_spec(s.friction, "block spec: friction");
-  }
+  contact.friction = s.friction ? *s.friction : io::surface_friction(s.surface_nodes, s.interval);
   auto load = [&](auto magnitude) {  // the normal load on the top face
     toml::table f = inline_table(toml::table{{"set", "zmax"}, {"direction", toml::array{0.0, 0.0, -1.0}}});
     f.insert("magnitude", std::move(magnitude));

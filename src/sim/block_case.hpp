@@ -35,9 +35,9 @@ struct BlockSpec {
   std::string hardening;        ///< hardening-curve CSV (plastic strain, true stress [MPa])
   std::string surface_nodes;    ///< the nine nodal values of Table 6.1 (CSV), for the default law
   int interval = 100;           ///< speed-averaging interval of the surface law [cycles]
-  /// Friction of the floor as a TOML inline table, e.g. `{ law = "coulomb", mu = 0.1 }`;
-  /// empty: the surface law on `surface_nodes` with `interval`.
-  std::string friction;
+  /// Friction of the floor, e.g. io::coulomb_friction(0.1) (io/case_spec.hpp);
+  /// none: the surface law on `surface_nodes` with `interval`.
+  std::optional<io::FrictionSpec> friction;
   double press_time = 2e-3;     ///< duration of step 1 [s]
   double press_ramp = 1e-3;     ///< load ramp of step 1 [s]
   double press_damping = 2e4;   ///< mass-proportional damping of step 1 [1/s]

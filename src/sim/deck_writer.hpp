@@ -29,15 +29,6 @@ inline toml::table ramp_history(double t, double v) {
   return inline_table(toml::table{{"t", toml::array{0.0, t}}, {"v", toml::array{0.0, v}}});
 }
 
-/// The friction of a builder spec (a TOML inline table such as `{ law = "coulomb", mu = 0.1 }`)
-/// as a contact's friction; InputError naming `where` when the text is not an inline table.
-inline io::FrictionSpec friction_spec(const std::string& text, const std::string& where) {
-  const toml::table t = parse_toml("friction = " + text, where);
-  const toml::table* f = t["friction"].as_table();
-  if (!f) throw InputError(where + ": expected a TOML inline table such as { law = \"coulomb\", mu = 0.1 }, found " + text);
-  return io::read_friction(*f);
-}
-
 /// Throws InputError "<what> must be > 0" unless v is a finite number > 0.
 inline void require_positive(double v, const std::string& what) {
   if (!(v > 0) || !std::isfinite(v)) throw InputError(what + " must be a number > 0, found " + fmt(v));

@@ -247,8 +247,8 @@ io::CaseSpec drawbend_case(const DrawBendSpec& s) {
   c.comment = header(s, l);
   c.rest.insert("case", toml::table{{"name", s.name},
                                     {"description", "draw-bend, pin " + num(s.pin_diameter) + " mm, " +
-                                                        (s.friction.empty() ? std::string("frictionless")
-                                                                            : "friction " + quoted_free(s.friction))}});
+                                                        (s.friction ? "friction " + quoted_free(io::friction_text(*s.friction))
+                                                                    : std::string("frictionless"))}});
   c.mesh.emplace().rest = mesh_table(s, l);
   c.material = material_choice(s.material, s.hardening);
   if (s.strip_direction != "rd" || !s.material.empty()) c.rest.insert("sheet", sheet_table(s.strip_direction));
@@ -263,7 +263,7 @@ io::CaseSpec drawbend_case(const DrawBendSpec& s) {
   c.tools.push_back(std::move(pin));
   io::ContactSpec& contact = c.contacts.emplace_back();
   contact.rest = toml::table{{"faces", "zmin"}, {"tool", "pin"}, {"penalty", r10(s.penalty)}};
-  if (!s.friction.empty()) contact.friction = friction_spec(s.friction, "draw-bend spec: friction");
+  contact.friction = s.friction;
   c.steps = steps_of(s, l);
   c.output = output_table(s, l);
   return c;

@@ -41,9 +41,9 @@ struct DrawBendSpec {
   double back_tension = 756.2;  ///< F_X on the half model [N]
   double speed = 100.0;         ///< outlet speed in step 3 [mm/s]
   double draw_length = 0;       ///< slide in step 3 [mm]; 0: 1.5 wrap lengths + 6 mm (Sec. 2.3.2)
-  /// Friction of the pin contact as a TOML inline table, e.g.
-  /// `{ law = "coulomb", mu = 0.1 }`; empty: frictionless (the rotating pin).
-  std::string friction;
+  /// Friction of the pin contact, e.g. io::coulomb_friction(0.1) (io/case_spec.hpp);
+  /// none: frictionless (the rotating pin).  The case's description names it with io::friction_text.
+  std::optional<io::FrictionSpec> friction;
   double element_length = 0.5;  ///< along the strip in the refined zone [mm]
   int across = 2;               ///< elements across the half width
   int through = 4;              ///< elements through the thickness

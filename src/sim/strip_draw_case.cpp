@@ -48,7 +48,7 @@ void check_spec(const StripDrawSpec& s) {
   if (s.interval < 1) throw InputError(w + "interval [cycles] must be >= 1, found " + std::to_string(s.interval));
   if (s.force_ramp > s.press_time) throw InputError(w + "force_ramp must not be longer than press_time");
   if (s.hardening.empty()) throw InputError(w + "no hardening curve");
-  if (s.friction.empty() && s.stribeck_table.empty()) throw InputError(w + "no friction law and no Stribeck table");
+  if (!s.friction && s.stribeck_table.empty()) throw InputError(w + "no friction law and no Stribeck table");
 }
 
 /// The deck's header: what the case is, why its guards only warn, the die's mass rule, units.
@@ -95,12 +95,7 @@ io::CaseSpec case_of(const StripDrawSpec& s, double dt, double die_mass) {
   floor.kind = "plane", floor.origin = io::Vec3Spec{0.0, 0.0, 0.0}, floor.normal = io::Vec3Spec{0.0, 0.0, 1.0};
   io::ContactSpec& on_die = c.contacts.emplace_back();
   on_die.rest = toml::table{{"faces", "zmax"}, {"tool", "die"}};
-  if (s.friction.empty()) {
-    on_die.friction.emplace().law = "stribeck";
-    on_die.friction->rest = toml::table{{"table", s.stribeck_table}, {"interval", s.interval}};
-  } else {
-    on_die.friction = friction_spec(s.friction, "strip-draw spec: friction");
-  }
+  on_die.friction = s.friction ? *s.friction : io::stribeck_friction(s.stribeck_table, s.interval);
   c.contacts.emplace_back().rest = toml::table{{"faces", "zmin"}, {"tool", "support"}};
   auto held = [](const char* set, bool x, bool y) {
     return inline_table(toml::table{{"set", set}, {"dof", toml::array{x, y, false}}});

@@ -45,9 +45,9 @@ struct StripDrawSpec {
   std::string hardening;             ///< hardening-curve CSV (plastic strain, true stress [MPa])
   std::string stribeck_table;        ///< Stribeck parameters (Table 3.1 format) for the default law
   int interval = 100;                ///< Stribeck update interval [cycles]
-  /// Friction of the die as a TOML inline table, e.g. `{ law = "coulomb", mu = 0.1 }`;
-  /// empty: the Stribeck law on `stribeck_table` with `interval`.
-  std::string friction;
+  /// Friction of the die, e.g. io::coulomb_friction(0.1) (io/case_spec.hpp);
+  /// none: the Stribeck law on `stribeck_table` with `interval`.
+  std::optional<io::FrictionSpec> friction;
 };
 
 /// The spec with the data files of this tree: the RD hardening curve of

@@ -241,22 +241,28 @@ std::string front_yaml(const std::vector<ChapterSource>& chapters, const FrontIn
   return os.str();
 }
 
-std::string front_page(const std::vector<ChapterSource>& chapters, const FrontInfo& info) {
-  (void)info;
-  const auto all = load_all(chapters);
-  std::ostringstream os;
-  os << "# About this report {#summary .unnumbered}\n\n";
+namespace {
 
-  // Counts by kind.
+/// The checks counted by status: by kind, and by chapter and kind.
+struct KindCounts {
   std::map<std::string, StatusCounts> by_kind;
   std::map<std::string, std::map<std::string, StatusCounts>> by_chapter_kind;
+};
+
+KindCounts count_kinds(const std::vector<ChapterChecks>& all) {
+  KindCounts n;
   for (const auto& c : all)
     if (c.present)
       for (const auto& r : c.table.rows) {
         const std::string k = kind_of(c.table, r), s = c.table.text(r, "status");
-        by_kind[k].add(s);
-        by_chapter_kind[c.ch->id][k].add(s);
+        n.by_kind[k].add(s);
+        n.by_chapter_kind[c.ch->id][k].add(s);
       }
+  return n;
+}
+
+/// "Checks by kind": the legend of the statuses and the table of counts by kind, with their total.
+void kinds_section(std::ostream& os, const KindCounts& n) {
   os << "## Checks by kind {.unnumbered}\n\n"
      << "*pass*: within the stated tolerance; *fail*: outside it; *erratum*: the thesis disagrees with its own "
         "inputs (explained below and in the chapter); *disagree*: our simulation does not reproduce the published "
@@ -266,24 +272,27 @@ std::string front_page(const std::vector<ChapterSource>& chapters, const FrontIn
      << status_head << "</tr></thead>\n<tbody>\n";
   StatusCounts total;
   for (const auto& k : kind_order()) {
-    if (!by_kind.count(k)) continue;
-    const auto& c = by_kind[k];
+    const auto it = n.by_kind.find(k);
+    if (it == n.by_kind.end()) continue;
+    const auto& c = it->second;
     total.pass += c.pass, total.fail += c.fail, total.erratum += c.erratum, total.disagree += c.disagree;
     os << "<tr><td>" << k << "</td><td>" << html_escape(kind_label(k)) << "</td>" << status_cells(c) << "</tr>\n";
   }
   os << "<tr class=\"total\"><td><strong>all</strong></td><td></td>" << status_cells(total)
      << "</tr>\n</tbody>\n</table>\n</div>\n\n";
-  if (const std::string m = measurement_sentence(chapters); !m.empty()) os << m << "\n\n";
+}
 
-  // Per chapter: status counts and the checks of each kind.
+/// Per chapter: status counts and the checks of each kind (not passing in brackets).
+void chapters_table(std::ostream& os, const std::vector<ChapterChecks>& all, const KindCounts& n) {
   std::vector<std::string> kinds_present;
   for (const auto& k : kind_order())
-    if (by_kind.count(k)) kinds_present.push_back(k);
+    if (n.by_kind.count(k)) kinds_present.push_back(k);
   os << "<div class=\"table-scroll\">\n<table class=\"summary-table\">\n<caption>Checks per chapter (number of "
         "checks of each kind; not passing in brackets).</caption>\n<thead><tr><th>chapter</th><th>tier</th>"
      << status_head;
   for (const auto& k : kinds_present) os << "<th class=\"num\">" << k << "</th>";
   os << "</tr></thead>\n<tbody>\n";
+  static const std::map<std::string, StatusCounts> kNone;
   for (const auto& c : all) {
     const std::string tier = chapter_tier(*c.ch);
     os << "<tr><td><a href=\"#checks-" << c.ch->id << "\">" << html_escape(chapter_title(*c.ch)) << "</a></td><td>"
@@ -295,8 +304,9 @@ std::string front_page(const std::vector<ChapterSource>& chapters, const FrontIn
     StatusCounts s;
     for (const auto& r : c.table.rows) s.add(c.table.text(r, "status"));
     os << status_cells(s);
+    const auto mc = n.by_chapter_kind.find(c.ch->id);
+    const auto& m = mc == n.by_chapter_kind.end() ? kNone : mc->second;
     for (const auto& k : kinds_present) {
-      const auto& m = by_chapter_kind[c.ch->id];
       const auto it = m.find(k);
       os << "<td class=\"num\">";
       if (it == m.end()) os << "\u2013";
@@ -310,53 +320,60 @@ std::string front_page(const std::vector<ChapterSource>& chapters, const FrontIn
     os << "</tr>\n";
   }
   os << "</tbody>\n</table>\n</div>\n\n";
+}
 
-  // Not reproduced: every disagreement, rounded, with its tolerance.  Checks
-  // that share one explanation (e.g. six lines of one table) are listed
-  // together, the explanation shown once beside them (rowspan).
-  struct Dis {
-    std::string chapter, row;
-  };
-  std::vector<std::pair<std::string, std::vector<Dis>>> by_note;
+/// One disagreeing check as the cells of its row (all but the note).
+std::string disagreement_cells(const ChapterChecks& c, const CsvRow& r) {
+  const auto& t = c.table;
+  const std::string &unit = t.text(r, "unit"), &tol = t.text(r, "tolerance");
+  std::ostringstream row;
+  row << "<td class=\"id\"><a href=\"#checks-" << c.ch->id << "\">" << html_breakable(t.text(r, "id"), "._")
+      << "</a></td><td class=\"quantity\">" << html_breakable(t.text(r, "quantity"), "/_") << "</td><td class=\"num\">"
+      << html_escape(display_value(t.text(r, "thesis"), unit, tol)) << "</td><td class=\"num\">"
+      << html_escape(display_value(t.text(r, "ours"), unit, tol)) << "</td><td class=\"num\">"
+      << html_escape(display_tolerance(tol, unit)) << "</td><td>" << html_escape(display_unit(unit)) << "</td>";
+  return row.str();
+}
+
+/// "Not reproduced": every disagreement, rounded, with its tolerance.  Checks
+/// that share one explanation (e.g. six lines of one table) are listed
+/// together, the explanation shown once beside them (rowspan).  Nothing when there is none.
+void not_reproduced_section(std::ostream& os, const std::vector<ChapterChecks>& all) {
+  std::vector<std::pair<std::string, std::vector<std::string>>> by_note;  // note -> its rows
   int ndis = 0;
   for (const auto& c : all) {
     if (!c.present) continue;
-    const auto& t = c.table;
-    for (const auto& r : t.rows) {
-      if (t.text(r, "status") != "disagree") continue;
+    for (const auto& r : c.table.rows) {
+      if (c.table.text(r, "status") != "disagree") continue;
       ++ndis;
-      const std::string &unit = t.text(r, "unit"), &tol = t.text(r, "tolerance"), &note = t.text(r, "note");
-      std::ostringstream row;
-      row << "<td class=\"id\"><a href=\"#checks-" << c.ch->id << "\">" << html_breakable(t.text(r, "id"), "._")
-          << "</a></td><td class=\"quantity\">" << html_breakable(t.text(r, "quantity"), "/_") << "</td><td class=\"num\">"
-          << html_escape(display_value(t.text(r, "thesis"), unit, tol)) << "</td><td class=\"num\">"
-          << html_escape(display_value(t.text(r, "ours"), unit, tol)) << "</td><td class=\"num\">"
-          << html_escape(display_tolerance(tol, unit)) << "</td><td>" << html_escape(display_unit(unit)) << "</td>";
+      const std::string& note = c.table.text(r, "note");
       auto it = std::find_if(by_note.begin(), by_note.end(), [&](const auto& x) { return x.first == note; });
       if (it == by_note.end()) it = by_note.insert(by_note.end(), {note, {}});
-      it->second.push_back({c.ch->id, row.str()});
+      it->second.push_back(disagreement_cells(c, r));
     }
   }
+  if (ndis == 0) return;
   std::ostringstream nr;
   for (const auto& [note, rows] : by_note)
     for (std::size_t k = 0; k < rows.size(); ++k) {
-      nr << "<tr>" << rows[k].row;
+      nr << "<tr>" << rows[k];
       if (k == 0)
         nr << "<td class=\"note\"" << (rows.size() > 1 ? " rowspan=\"" + std::to_string(rows.size()) + "\"" : "")
            << ">" << (rows.size() > 1 ? "<em>The " + std::to_string(rows.size()) + " checks beside this note:</em> " : "")
            << html_breakable(note, "/_") << "</td>";
       nr << "</tr>\n";
     }
-  if (ndis > 0)
-    os << "## Not reproduced {.unnumbered}\n\n<div class=\"table-scroll\">\n<table class=\"checks-table\">\n"
-       << "<caption>Published values our simulations do not reproduce within the stated tolerance ("
-       << ndis << "), with what the investigation found.</caption>\n"
-       << "<thead><tr><th>check</th><th>quantity</th><th class=\"num\">thesis</th><th class=\"num\">ours</th>"
-          "<th class=\"num\">tolerance</th><th>unit</th><th>what the investigation found</th></tr></thead>\n"
-          "<tbody>\n"
-       << nr.str() << "</tbody>\n</table>\n</div>\n\n";
+  os << "## Not reproduced {.unnumbered}\n\n<div class=\"table-scroll\">\n<table class=\"checks-table\">\n"
+     << "<caption>Published values our simulations do not reproduce within the stated tolerance ("
+     << ndis << "), with what the investigation found.</caption>\n"
+     << "<thead><tr><th>check</th><th>quantity</th><th class=\"num\">thesis</th><th class=\"num\">ours</th>"
+        "<th class=\"num\">tolerance</th><th>unit</th><th>what the investigation found</th></tr></thead>\n"
+        "<tbody>\n"
+     << nr.str() << "</tbody>\n</table>\n</div>\n\n";
+}
 
-  // Errata grouped by explanation: one row per cause, not per check.
+/// "Errata at a glance": grouped by explanation, one row per cause, not per check.  Nothing when there is none.
+void errata_section(std::ostream& os, const std::vector<ChapterChecks>& all) {
   std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>> causes;
   for (const auto& c : all) {
     if (!c.present) continue;
@@ -368,18 +385,32 @@ std::string front_page(const std::vector<ChapterSource>& chapters, const FrontIn
       it->second.push_back({c.table.text(r, "id"), c.ch->id});
     }
   }
-  if (!causes.empty()) {
-    os << "## Errata at a glance {.unnumbered}\n\n<div class=\"table-scroll\">\n<table class=\"checks-table\">\n"
-       << "<caption>Thesis statements and values that the thesis's own inputs do not reproduce, one row per "
-          "cause.</caption>\n<thead><tr><th>checks</th><th>most likely explanation</th></tr></thead>\n<tbody>\n";
-    for (const auto& [note, ids] : causes) {
-      os << "<tr><td class=\"id\"><a href=\"#checks-" << ids.front().second << "\">" << html_breakable(ids.front().first, "._")
-         << "</a>";
-      if (ids.size() > 1) os << " and " << ids.size() - 1 << " more";
-      os << "</td><td class=\"note\">" << html_breakable(note, "/_") << "</td></tr>\n";
-    }
-    os << "</tbody>\n</table>\n</div>\n\n";
+  if (causes.empty()) return;
+  os << "## Errata at a glance {.unnumbered}\n\n<div class=\"table-scroll\">\n<table class=\"checks-table\">\n"
+     << "<caption>Thesis statements and values that the thesis's own inputs do not reproduce, one row per "
+        "cause.</caption>\n<thead><tr><th>checks</th><th>most likely explanation</th></tr></thead>\n<tbody>\n";
+  for (const auto& [note, ids] : causes) {
+    os << "<tr><td class=\"id\"><a href=\"#checks-" << ids.front().second << "\">" << html_breakable(ids.front().first, "._")
+       << "</a>";
+    if (ids.size() > 1) os << " and " << ids.size() - 1 << " more";
+    os << "</td><td class=\"note\">" << html_breakable(note, "/_") << "</td></tr>\n";
   }
+  os << "</tbody>\n</table>\n</div>\n\n";
+}
+
+}  // namespace
+
+std::string front_page(const std::vector<ChapterSource>& chapters, const FrontInfo& info) {
+  (void)info;
+  const auto all = load_all(chapters);
+  const KindCounts n = count_kinds(all);
+  std::ostringstream os;
+  os << "# About this report {#summary .unnumbered}\n\n";
+  kinds_section(os, n);
+  if (const std::string m = measurement_sentence(chapters); !m.empty()) os << m << "\n\n";
+  chapters_table(os, all, n);
+  not_reproduced_section(os, all);
+  errata_section(os, all);
   return os.str();
 }
 

@@ -81,14 +81,14 @@ std::vector<Case> cases() {
                }});
   c.push_back({"drawbend_coulomb", [] {
                  sim::DrawBendSpec s = quick();
-                 s.friction = "{ law = \"coulomb\", mu = 0.1 }";
+                 s.friction = io::coulomb_friction(0.1);
                  s.speed = 50.0;
                  s.mass_scaling = sim::mass_scaling_for_speed(sim::kQuickMassScaling, s.speed);
                  return with_threads(sim::drawbend_case(s), 2);
                }});
   c.push_back({"drawbend_surface_hill48_td", [] {
                  sim::DrawBendSpec s = quick();
-                 s.friction = "{ law = \"surface\", nodes = \"" + kData + "/thesis/table_6_1.csv\", interval = 50 }";
+                 s.friction = io::surface_friction(kData + "/thesis/table_6_1.csv", 50);
                  s.material = kData + "/materials/aa5754_o_hill48_hou2020.toml";
                  s.strip_direction = "td";
                  s.plane_strain_width = true;
@@ -110,7 +110,7 @@ std::vector<Case> cases() {
   c.push_back({"block_coulomb_45", [] {
                  sim::BlockSpec s = sim::default_block_spec(kData);
                  s.name = "b45";
-                 s.friction = "{ law = \"coulomb\", mu = 0.1 }";
+                 s.friction = io::coulomb_friction(0.1);
                  s.direction_deg = 45.0;
                  s.pressure = 40.0;
                  s.speed = 70.0;
@@ -123,7 +123,7 @@ std::vector<Case> cases() {
                  s.name = "fast";
                  s.speed = 50.0;
                  s.pressure = 20.0;
-                 s.friction = "{ law = \"coulomb\", mu = 0.12 }";
+                 s.friction = io::coulomb_friction(0.12);
                  return with_threads(sim::strip_draw_case(s), 1);
                }});
   c.push_back({"strip_given_step", [] {

@@ -146,3 +146,18 @@ BOOST_AUTO_TEST_CASE(floats_are_written_short_and_exact) {
   BOOST_TEST(text.find("0.10000000000000001") != std::string::npos, "a string's digits were rewritten:\n" << text);
   BOOST_TEST((io::from_toml(parse_toml(text, "short"), "short") == c), text);
 }
+
+// A friction is one line of inline TOML in a fixed order whatever order its
+// keys were typed in (the law, its input file, then its numbers by name), so
+// the same law gives the same description and the same reuse key; it reads
+// back to the same spec.
+BOOST_AUTO_TEST_CASE(friction_text_has_one_order) {
+  BOOST_TEST(io::friction_text(io::coulomb_friction(0.1)) == "{ law = \"coulomb\", mu = 0.1 }");
+  BOOST_TEST(io::friction_text(io::stribeck_friction("t.csv", 100)) ==
+             "{ law = \"stribeck\", table = \"t.csv\", interval = 100 }");
+  const std::string typed = "{ v_max = 101.6, interval = 50, p_min = 0.0, nodes = \"n.csv\", law = \"surface\" }";
+  const io::FrictionSpec f = io::read_friction(*parse_toml("f = " + typed, "typed")["f"].as_table());
+  const std::string text = io::friction_text(f);
+  BOOST_TEST(text == "{ law = \"surface\", nodes = \"n.csv\", interval = 50, p_min = 0.0, v_max = 101.6 }");
+  BOOST_TEST((io::read_friction(*parse_toml("f = " + text, "text")["f"].as_table()) == f), text);
+}

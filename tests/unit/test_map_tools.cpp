@@ -74,7 +74,7 @@ BOOST_AUTO_TEST_CASE(rows_group_by_y) {
 BOOST_AUTO_TEST_CASE(builder_deck_parses) {
   sim::DrawBendSpec s;
   s.pin_diameter = 25.4;
-  s.friction = "{ law = \"coulomb\", mu = 0.1 }";
+  s.friction = io::coulomb_friction(0.1);
   s.hardening = std::string(DRAWBEND_DATA_DIR) + "/materials/aa5754_o_rd.csv";
   const io::Deck d = io::parse_deck(sim::deck_text(s), "builder.toml");
   BOOST_TEST(d.model.steps.size() == 3u);
