@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
       s.back_tension = back[k];
       s.draw_length = draw;
       s.snapshots = 2;
-      if (k == 2) s.friction = "{ law = \"coulomb\", mu = 0.1 }";
+      if (k == 2) s.friction = io::coulomb_friction(0.1);
       jobs.push_back({s, out + "/runs/" + s.name});
     }
     const auto res = sim::run_drawbend_all(jobs, true);

@@ -357,8 +357,12 @@ sim::BlockResult slide(const friction::SurfaceDomain& d, const std::function<dou
     }
   f.close();
   sim::BlockSpec s = sim::default_block_spec(DRAWBEND_DATA_DIR);
-  std::snprintf(b, sizeof b, "p_min = %.17g, p_max = %.17g, v_min = %.17g, v_max = %.17g", d.p_min, d.p_max, d.v_min, d.v_max);
-  s.friction = "{ law = \"surface\", nodes = \"" + nodes.string() + "\", " + b + ", interval = 100 }";
+  io::FrictionSpec fr = io::surface_friction(nodes.string(), 100);
+  fr.rest.insert_or_assign("p_min", d.p_min);
+  fr.rest.insert_or_assign("p_max", d.p_max);
+  fr.rest.insert_or_assign("v_min", d.v_min);
+  fr.rest.insert_or_assign("v_max", d.v_max);
+  s.friction = fr;
   s.pressure = p;
   s.speed = v;
   s.direction_deg = direction_deg;
