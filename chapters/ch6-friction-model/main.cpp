@@ -59,83 +59,100 @@ struct Lines {
   }
 };
 
-void body(study::Chapter& c, const Config& cfg) {
-  // 1. Inputs.
-  const CsvTable t516 = read_csv(c.data("thesis/table_5_16.csv"));
-  const CsvTable t61 = read_csv(c.data("thesis/table_6_1.csv"));
-  const std::string sc = c.data("thesis/scalars.csv");
-  const double p_min = study::scalar(sc, "ch6_p_min").value, p_max = study::scalar(sc, "ch6_p_max").value;
-  if (t61.rows.size() != 9) throw InputError(t61.path + ": expected 9 nodes");
+// 1. Inputs: Tables 5.16 and 6.1 and the domain (Sec. 6.3).
+struct Inputs {
+  CsvTable t516, t61;
+  std::string scalars;
+  double p_min = 0, p_max = 0;
+};
 
-  auto nodes = c.table({"node", "p_MPa", "v_mm_s", "mu_RD_thesis", "mu_RD_ours", "mu_TD_thesis", "mu_TD_ours"},
-                       "Table 6.1 re-derived from Table 5.16 (Sec. 6.2)");
-  std::vector<std::vector<std::string>> rows(9);
-  for (const std::string dir : {"RD", "TD"}) {
-    Lines L;
-    for (const auto& r : t516.rows)
-      if (t516.text(r, "direction") == dir) {
-        L.v.push_back(t516.number(r, "speed_mm_s"));
-        L.a0.push_back(study::printed(t516, r, "a0"));
-        L.a1.push_back(study::printed(t516, r, "a1_per_MPa"));
-      }
-    std::vector<double> x;
-    for (const auto& p : L.printed()) x.push_back(p.value);
-    // 2. Nodal values.
-    const FrictionSurface S = surface_from_lines(L.build(x), p_min, p_max);
-    // 3. Against Table 6.1.
-    for (int k = 0; k < 9; ++k) {
-      const auto& row = t61.rows[static_cast<std::size_t>(k)];
-      const Printed thesis = study::printed(t61, row, "mu_" + dir);
-      c.checks().rederive("ch6.T6.1." + dir + ".node" + std::to_string(k + 1),
-                          "T6.1 mu at node " + std::to_string(k + 1) + ", " + dir, thesis.value, S.mu[k],
-                          thesis.half_ulp, "-",
-                          "thesis computed from the printed Table 5.16: half a unit in the last printed place");
-      const double p = p_min + (p_max - p_min) * (k / 3) / 2.0;
-      const double v = S.v_min + (S.v_max - S.v_min) * (k % 3) / 2.0;
-      if (dir == "RD") rows[k] = {std::to_string(k + 1), fmt(p), fmt(v, 6), thesis.text, fmt_fixed(S.mu[k], 4)};
-      else {
-        rows[k].push_back(thesis.text);
-        rows[k].push_back(fmt_fixed(S.mu[k], 4));
-      }
+Inputs load_inputs(const study::Chapter& c) {
+  Inputs in{read_csv(c.data("thesis/table_5_16.csv")), read_csv(c.data("thesis/table_6_1.csv")),
+            c.data("thesis/scalars.csv")};
+  in.p_min = study::scalar(in.scalars, "ch6_p_min").value;
+  in.p_max = study::scalar(in.scalars, "ch6_p_max").value;
+  if (in.t61.rows.size() != 9) throw InputError(in.t61.path + ": expected 9 nodes");
+  return in;
+}
+
+/// Table 5.16's three speed lines of one direction, as printed.
+Lines lines_of(const CsvTable& t516, const std::string& dir) {
+  Lines L;
+  for (const auto& r : t516.rows)
+    if (t516.text(r, "direction") == dir) {
+      L.v.push_back(t516.number(r, "speed_mm_s"));
+      L.a0.push_back(study::printed(t516, r, "a0"));
+      L.a1.push_back(study::printed(t516, r, "a1_per_MPa"));
     }
-    // 4. The printed Eq. (6.3) maps the middle speed elsewhere; does it give Table 6.1?
-    const FrictionSurface P = surface_from_lines(L.build(x), p_min, p_max, /*use_printed_eta=*/true);
-    bool printed_reproduces = true;
-    for (int k = 0; k < 9; ++k)
-      printed_reproduces = printed_reproduces && std::abs(P.mu[k] - study::printed(t61, t61.rows[k], "mu_" + dir).value) <= 1e-4;
-    c.checks().claim(study::Kind::rederived, "ch6.eq6_3_as_printed_reproduces_T6.1." + dir,
-                     "Table 6.1 follows from Eq. (6.3) as printed, eta = 2v/(v_max - v_min) - 1, " + dir,
-                     printed_reproduces, "all nine nodes within 1e-4");
-    c.value("node2_printed_" + dir, fmt_fixed(P.mu[1], 4));
-    if (dir == "RD") c.value("eta_vmin_printed", fmt_fixed(P.eta_as_printed(P.v_min), 3));
-    // 5. Figure 6.2 (and its TD companion).
-    std::vector<double> ps, vs;
-    for (int i = 0; i <= 20; ++i) ps.push_back(p_min + (p_max - p_min) * i / 20.0);
-    for (int j = 0; j <= 20; ++j) vs.push_back(S.v_min + (S.v_max - S.v_min) * j / 20.0);
-    c.save_grid("surface_" + dir, "mu(p [MPa], v [mm/s]) nine-node surface from Table 6.1 nodes, " + dir, ps, vs,
-                [&S](double p, double v) { return S(p, v); });
-    auto lines = c.table({"p_MPa", "v6.35", "v25.4", "v101.6"}, "Table 5.16 lines, " + dir);
-    const auto sl = L.build(x);
-    for (double p = p_min; p <= p_max + 1e-9; p += 2.0)
-      lines.row({fmt(p), fmt(sl[0].mu(p), 5), fmt(sl[1].mu(p), 5), fmt(sl[2].mu(p), 5)});
-    c.save(lines, "lines_" + dir);
-    c.plot("mu_surface", dir == "RD" ? "fig_6_2" : "fig_6_2_TD",
-           {{"dir", dir}, {"gridfile", c.out("tables/surface_" + dir + ".dat")},
-            {"linesfile", c.out("tables/lines_" + dir + ".csv")}});
-  }
-  for (auto& r : rows) nodes.row(r);
-  c.save(nodes, "table_6_1");
+  return L;
+}
 
-  // 4. Eq. (6.1) as printed (N5 = N4) is not a partition of unity.  That the
-  // corrected set is one is an identity of our own code, tested in
-  // tests/unit/test_friction_surface.cpp, not a check of the thesis.
+/// 3. The nine nodal values of one direction against Table 6.1; fills that
+/// direction's columns of the Table 6.1 rows.
+void check_nodes(study::Chapter& c, const Inputs& in, const FrictionSurface& S, const std::string& dir,
+                 std::vector<std::vector<std::string>>& rows) {
+  for (int k = 0; k < 9; ++k) {
+    const auto& row = in.t61.rows[static_cast<std::size_t>(k)];
+    const Printed thesis = study::printed(in.t61, row, "mu_" + dir);
+    c.checks().rederive("ch6.T6.1." + dir + ".node" + std::to_string(k + 1),
+                        "T6.1 mu at node " + std::to_string(k + 1) + ", " + dir, thesis.value, S.mu[k],
+                        thesis.half_ulp, "-",
+                        "thesis computed from the printed Table 5.16: half a unit in the last printed place");
+    const double p = in.p_min + (in.p_max - in.p_min) * (k / 3) / 2.0;
+    const double v = S.v_min + (S.v_max - S.v_min) * (k % 3) / 2.0;
+    if (dir == "RD") rows[k] = {std::to_string(k + 1), fmt(p), fmt(v, 6), thesis.text, fmt_fixed(S.mu[k], 4)};
+    else {
+      rows[k].push_back(thesis.text);
+      rows[k].push_back(fmt_fixed(S.mu[k], 4));
+    }
+  }
+}
+
+/// 4. The printed Eq. (6.3) maps the middle speed elsewhere; does it give Table 6.1?
+void check_printed_eta(study::Chapter& c, const Inputs& in, const std::vector<SpeedLine>& lines,
+                       const std::string& dir) {
+  const FrictionSurface P = surface_from_lines(lines, in.p_min, in.p_max, /*use_printed_eta=*/true);
+  bool printed_reproduces = true;
+  for (int k = 0; k < 9; ++k)
+    printed_reproduces =
+        printed_reproduces && std::abs(P.mu[k] - study::printed(in.t61, in.t61.rows[k], "mu_" + dir).value) <= 1e-4;
+  c.checks().claim(study::Kind::rederived, "ch6.eq6_3_as_printed_reproduces_T6.1." + dir,
+                   "Table 6.1 follows from Eq. (6.3) as printed, eta = 2v/(v_max - v_min) - 1, " + dir,
+                   printed_reproduces, "all nine nodes within 1e-4");
+  c.value("node2_printed_" + dir, fmt_fixed(P.mu[1], 4));
+  if (dir == "RD") c.value("eta_vmin_printed", fmt_fixed(P.eta_as_printed(P.v_min), 3));
+}
+
+/// 5. Figure 6.2 (and its TD companion): the surface, its lines and its nodes.
+void figure_6_2(study::Chapter& c, const Inputs& in, const FrictionSurface& S, const std::vector<SpeedLine>& sl,
+                const std::string& dir) {
+  std::vector<double> ps, vs;
+  for (int i = 0; i <= 20; ++i) ps.push_back(in.p_min + (in.p_max - in.p_min) * i / 20.0);
+  for (int j = 0; j <= 20; ++j) vs.push_back(S.v_min + (S.v_max - S.v_min) * j / 20.0);
+  c.save_grid("surface_" + dir, "mu(p [MPa], v [mm/s]) nine-node surface from Table 6.1 nodes, " + dir, ps, vs,
+              [&S](double p, double v) { return S(p, v); });
+  auto lines = c.table({"p_MPa", "v6.35", "v25.4", "v101.6"}, "Table 5.16 lines, " + dir);
+  for (double p = in.p_min; p <= in.p_max + 1e-9; p += 2.0)
+    lines.row({fmt(p), fmt(sl[0].mu(p), 5), fmt(sl[1].mu(p), 5), fmt(sl[2].mu(p), 5)});
+  c.save(lines, "lines_" + dir);
+  c.plot("mu_surface", dir == "RD" ? "fig_6_2" : "fig_6_2_TD",
+         {{"dir", dir}, {"gridfile", c.out("tables/surface_" + dir + ".dat")},
+          {"linesfile", c.out("tables/lines_" + dir + ".csv")}});
+}
+
+/// 4. Eq. (6.1) as printed (N5 = N4) is not a partition of unity.  That the
+/// corrected set is one is an identity of our own code, tested in
+/// tests/unit/test_friction_surface.cpp, not a check of the thesis.
+void check_printed_shape_functions(study::Chapter& c) {
   double sum_p = 0;
   for (double n : nine_node_shape_as_printed(0.0, 0.0)) sum_p += n;
   c.checks().rederive("ch6.eq6_1_as_printed.partition_of_unity", "sum of Eq. (6.1) as printed at the centre", 1.0,
                       sum_p, 1e-12, "-", "exact arithmetic identity");
   c.value("sum_printed_centre", fmt(sum_p));
+}
 
-  // 6. Statements of Secs. 6.6.2-6.6.3 derived from other printed numbers.
+/// 6. Statements of Secs. 6.6.2-6.6.3 derived from other printed numbers.
+void rederive_cup_statements(study::Chapter& c, const Inputs& in) {
   using V = std::vector<double>;
   c.rederive_scalar("ch6.force_drop_sim", "simulated max punch force change, case 1 to 9 (Sec. 6.6.2)",
                     "ch6_force_drop_sim", {"ch6_punch_force_sim_case9", "ch6_punch_force_sim_case1"},
@@ -150,16 +167,34 @@ void body(study::Chapter& c, const Config& cfg) {
                     "ch6_force_excess_case9", {"ch6_punch_force_sim_case9", "ch6_punch_force_exp_case9"}, excess, "%");
   // The text's case-9 speed against Table 6.5.
   const CsvTable t65 = read_csv(c.data("thesis/table_6_5.csv"));
-  const auto text_speed = study::scalar(sc, "ch6_case9_speed_text");
+  const auto text_speed = study::scalar(in.scalars, "ch6_case9_speed_text");
   const auto table_speed = study::printed(t65, t65.rows.back(), "punch_speed_mm_s");
   c.checks().rederive("ch6.case9_speed", "case 9 punch speed: Sec. 6.6.2 text against Table 6.5", text_speed.value,
                       table_speed.value, 0.0, "mm/s",
                       "the same quantity printed twice to 0.1 mm/s must read the same");
+}
 
-  // 7. Block sliding (Sec. 6.5).
-  ch6::block_sliding(c, cfg.reuse_runs);
-  // 8. Cup drawing (Sec. 6.6): coarse cases 1 and 9; all nine on a finer mesh with --full.
-  ch6::cup_drawing(c, cfg.full, cfg.cup_cases, cfg.cup_material, cfg.reuse_runs);
+void body(study::Chapter& c, const Config& cfg) {
+  const Inputs in = load_inputs(c);  // 1.
+  auto nodes = c.table({"node", "p_MPa", "v_mm_s", "mu_RD_thesis", "mu_RD_ours", "mu_TD_thesis", "mu_TD_ours"},
+                       "Table 6.1 re-derived from Table 5.16 (Sec. 6.2)");
+  std::vector<std::vector<std::string>> rows(9);
+  for (const std::string dir : {"RD", "TD"}) {
+    const Lines L = lines_of(in.t516, dir);
+    std::vector<double> x;
+    for (const auto& p : L.printed()) x.push_back(p.value);
+    const auto lines = L.build(x);
+    const FrictionSurface S = surface_from_lines(lines, in.p_min, in.p_max);  // 2.
+    check_nodes(c, in, S, dir, rows);                                           // 3.
+    check_printed_eta(c, in, lines, dir);                                       // 4.
+    figure_6_2(c, in, S, lines, dir);                                           // 5.
+  }
+  for (auto& r : rows) nodes.row(r);
+  c.save(nodes, "table_6_1");
+  check_printed_shape_functions(c);  // 4.
+  rederive_cup_statements(c, in);    // 6.
+  ch6::block_sliding(c, cfg.reuse_runs);                                                 // 7. Sec. 6.5
+  ch6::cup_drawing(c, cfg.full, cfg.cup_cases, cfg.cup_material, cfg.reuse_runs);       // 8. Sec. 6.6
 }
 
 }  // namespace
