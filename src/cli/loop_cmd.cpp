@@ -242,108 +242,140 @@ int loop_main(int argc, char** argv) {
   });
 }
 
-int synth_main(int argc, char** argv) {
+namespace {
+/// The values of `drawbend synth`'s options, bound to its Options by
+/// add_synth_options (a SynthArgs does not move once bound).
+struct SynthArgs {
   SynthOptions so;
-  std::string out = "synth-out", maps_dir, data_dir = drawbend::data_dir(), pins_text = "12.7,25.4,42";
+  std::string out = "synth-out", maps_dir, data_dir = drawbend::data_dir();
   int seed = 1, points = 7, threads = 0;
   bool from_thesis = false;
   std::string generator = "library", blind_class = "random";
-  Options opt("drawbend synth", "Write synthetic draw-bend data with a hidden law, or the thesis data set.");
-  opt.add(out, "out", "output directory");
+};
+
+/// `drawbend synth`'s options, with their ranges and examples, in --help's order.
+void add_synth_options(Options& opt, SynthArgs& a) {
+  SynthOptions& so = a.so;
+  opt.add(a.out, "out", "output directory");
   opt.add(so.effect, "effect", "hidden law: none, depletion, pin_surface, speed, drift, direction, pressure, curvature, batch, temperature");
   opt.add(so.noise_N, "noise", "measurement noise sd on the outlet force [N]");
-  opt.add(seed, "seed", "random seed");
+  opt.add(a.seed, "seed", "random seed");
   opt.add(so.amplitude, "amplitude", "amplitude of the hidden law (negative: its default)");
   opt.add(so.tests_per_pin, "tests-per-pin", "fixed-pin tests per pin");
   opt.add(so.rows_per_test, "rows-per-test", "rows per test");
-  opt.add(maps_dir, "maps", "directory of FE maps pin_<d>mm.csv (empty: analytic stand-in, not FE)");
-  opt.add_flag(from_thesis, "from-thesis", "write the thesis fits as sample rows (thesis_drawbend.csv)");
-  opt.add(data_dir, "data", "data directory (with thesis/) for --from-thesis");
+  opt.add(a.maps_dir, "maps", "directory of FE maps pin_<d>mm.csv (empty: analytic stand-in, not FE)");
+  opt.add_flag(a.from_thesis, "from-thesis", "write the thesis fits as sample rows (thesis_drawbend.csv)");
+  opt.add(a.data_dir, "data", "data directory (with thesis/) for --from-thesis");
   opt.example("drawbend synth --effect depletion --noise 5 --seed 21 --out my-synth    # my-synth/truth.json: the hidden law");
   opt.example("drawbend synth --from-thesis --out my-thesis");
-  opt.add(points, "points", "rows per thesis fit for --from-thesis");
+  opt.add(a.points, "points", "rows per thesis fit for --from-thesis");
   opt.range("points", 2, 10000);
   // A hidden law's amplitude (N or a fraction, by law) above 1e6 gives forces
   // beyond a strip test (core/strip_limits.hpp) whatever the law.
   opt.range("amplitude", -kMaxStripForceN, kMaxStripForceN);
-  opt.add(threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all)");
-  opt.add(generator, "generator",
+  opt.add(a.threads, "threads", "OpenMP threads (0: OMP_NUM_THREADS or all)");
+  opt.add(a.generator, "generator",
           "library (the hidden laws of --effect) or blind (a random design, decoys and effect drawn from a wide "
           "family, src/loop/blind_synth.hpp; uses --class, --noise and --seed only) or wild (generator 2 of the "
           "held-out study, src/loop/wild_synth.hpp; the same options)");
-  opt.add(blind_class, "class", "--generator blind: level, smooth, interaction, bending, test-level, null or random; "
+  opt.add(a.blind_class, "class", "--generator blind: level, smooth, interaction, bending, test-level, null or random; "
           "wild: level, smooth, interaction, channel, test-level, null or random");
+}
+
+/// The parsed options checked before any work: the generator, the options it
+/// reads, the hidden law's name, and sizes and noise a data set can have.
+void check_synth_options(const Options& opt, const SynthArgs& a) {
+  const SynthOptions& so = a.so;
+  if (a.generator != "library" && a.generator != "blind" && a.generator != "wild")
+    throw InputError("--generator: expected library, blind or wild, found '" + a.generator + "'");
+  // An option the chosen generator does not read is refused, not ignored
+  // (before, --class with the library generator and --data without
+  // --from-thesis were accepted and did nothing).
+  const bool held_out = a.generator != "library";
+  opt.only_when(a.from_thesis, {"data", "points"}, "with --from-thesis");
+  opt.only_when(!a.from_thesis, {"effect", "noise", "seed", "amplitude", "tests-per-pin", "rows-per-test", "maps",
+                                 "generator", "class"}, "without --from-thesis (it writes the thesis fits as they are)");
+  opt.only_when(held_out, {"class"}, "with --generator blind or wild");
+  opt.only_when(!held_out, {"effect", "amplitude", "tests-per-pin", "rows-per-test", "maps"},
+                "with --generator library (blind and wild read --class, --noise and --seed only)");
+  // Sizes and noise a draw-bend data set can have (before 2026-11-29,
+  // --rows-per-test -5 ended in "cannot create std::vector larger than
+  // max_size()" with exit 3, 1e8 ran for minutes, and --noise -1 wrote data).
+  auto bad = [](const std::string& what) { throw InputError(what); };
+  {  // the hidden law's name, before any work, with the valid ones listed
+    const auto& names = synth_effects();
+    if (std::find(names.begin(), names.end(), so.effect) == names.end()) {
+      std::string list;
+      for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+      bad("--effect: expected one of " + list + ", found '" + clip_for_message(so.effect) + "'");
+    }
+  }
+  if (!(so.noise_N >= 0 && so.noise_N <= kMaxStripForceN))
+    bad("--noise: expected a noise sd in [0, " + fmt(kMaxStripForceN) + "] N (a strip test), found " + fmt(so.noise_N));
+  if (so.tests_per_pin < 1 || so.tests_per_pin > 10000)
+    bad("--tests-per-pin: expected 1 to 10000 tests, found " + std::to_string(so.tests_per_pin));
+  if (so.rows_per_test < 1 || so.rows_per_test > 10000)
+    bad("--rows-per-test: expected 1 to 10000 rows, found " + std::to_string(so.rows_per_test));
+  if (static_cast<double>(so.tests_per_pin) * so.rows_per_test > 1e6)
+    bad("--tests-per-pin x --rows-per-test: expected at most 1e6 rows per pin, found " +
+        fmt(static_cast<double>(so.tests_per_pin) * so.rows_per_test));
+}
+
+/// --generator blind or wild: the held-out generators (1 and 2).
+void write_held_out_set(const SynthArgs& a) {
+  const bool wild = a.generator == "wild";
+  const auto& cl = wild ? wild_classes() : blind_classes();
+  if (a.blind_class != "random" && std::find(cl.begin(), cl.end(), a.blind_class) == cl.end()) {
+    std::string list;
+    for (const auto& c : cl) list += c + ", ";
+    throw InputError("--class: expected " + list.substr(0, list.size() - 2) + " or random, found '" + a.blind_class + "'");
+  }
+  BlindTruth truth;
+  const auto seed = static_cast<std::uint64_t>(a.seed);
+  const Dataset d = wild ? synthesize_wild({a.blind_class, a.so.noise_N, seed}, truth)
+                         : synthesize_blind({a.blind_class, a.so.noise_N, seed}, truth);
+  write_measured(a.out + "/data.csv", d);
+  write_file_atomic(a.out + "/truth.json", wild ? wild_truth_json(truth) : blind_truth_json(truth));
+  std::cout << "wrote " << a.out << "/data.csv (" << d.rows.size() << " rows) and " << a.out << "/truth.json\n";
+}
+
+/// --generator library: a hidden law of --effect on the stand-in or FE maps.
+void write_library_set(SynthArgs& a) {
+  SynthOptions& so = a.so;
+  so.seed = static_cast<std::uint64_t>(a.seed);
+  const MapLibrary maps = maps_for(a.maps_dir, {12.7, 25.4, 42.0});
+  SynthTruth truth;
+  const Dataset d = synthesize(so, maps, truth);
+  // The hidden law's amplitude is the law's own unit: check what it made.
+  for (const auto& r : d.rows)
+    if (!(std::isfinite(r.outlet_force_N) && std::abs(r.outlet_force_N) <= kMaxStripForceN))
+      throw InputError("--amplitude " + fmt(so.amplitude) + " with --noise " + fmt(so.noise_N) + ": an outlet force of " +
+                       fmt(r.outlet_force_N) + " N, beyond a strip test (" + fmt(kMaxStripForceN) +
+                       " N); choose a smaller amplitude");
+  write_measured(a.out + "/data.csv", d);
+  write_file_atomic(a.out + "/truth.json", truth_json(truth));
+  std::cout << "wrote " << a.out << "/data.csv (" << d.rows.size() << " rows) and " << a.out << "/truth.json\n";
+}
+}  // namespace
+
+int synth_main(int argc, char** argv) {
+  SynthArgs a;
+  Options opt("drawbend synth", "Write synthetic draw-bend data with a hidden law, or the thesis data set.");
+  add_synth_options(opt, a);
   return with_exit_codes([&] {
     if (!opt.parse(argc, argv)) return 0;
-    apply_threads(threads);
-    if (generator != "library" && generator != "blind" && generator != "wild")
-      throw InputError("--generator: expected library, blind or wild, found '" + generator + "'");
-    // An option the chosen generator does not read is refused, not ignored
-    // (before, --class with the library generator and --data without
-    // --from-thesis were accepted and did nothing).
-    const bool held_out = generator != "library";
-    opt.only_when(from_thesis, {"data", "points"}, "with --from-thesis");
-    opt.only_when(!from_thesis, {"effect", "noise", "seed", "amplitude", "tests-per-pin", "rows-per-test", "maps",
-                                 "generator", "class"}, "without --from-thesis (it writes the thesis fits as they are)");
-    opt.only_when(held_out, {"class"}, "with --generator blind or wild");
-    opt.only_when(!held_out, {"effect", "amplitude", "tests-per-pin", "rows-per-test", "maps"},
-                  "with --generator library (blind and wild read --class, --noise and --seed only)");
-    // Sizes and noise a draw-bend data set can have (before 2026-11-29,
-    // --rows-per-test -5 ended in "cannot create std::vector larger than
-    // max_size()" with exit 3, 1e8 ran for minutes, and --noise -1 wrote data).
-    auto bad = [](const std::string& what) { throw InputError(what); };
-    {  // the hidden law's name, before any work, with the valid ones listed
-      const auto& names = synth_effects();
-      if (std::find(names.begin(), names.end(), so.effect) == names.end()) {
-        std::string list;
-        for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-        bad("--effect: expected one of " + list + ", found '" + clip_for_message(so.effect) + "'");
-      }
+    apply_threads(a.threads);
+    check_synth_options(opt, a);
+    ensure_writable_dir(a.out, "--out");
+    if (a.from_thesis) {
+      const Dataset d = thesis_dataset(a.data_dir + "/thesis", a.points);
+      write_measured(a.out + "/thesis_drawbend.csv", d);
+      std::cout << "wrote " << a.out << "/thesis_drawbend.csv (" << d.rows.size() << " rows)\n";
+    } else if (a.generator == "blind" || a.generator == "wild") {
+      write_held_out_set(a);
+    } else {
+      write_library_set(a);
     }
-    if (!(so.noise_N >= 0 && so.noise_N <= kMaxStripForceN))
-      bad("--noise: expected a noise sd in [0, " + fmt(kMaxStripForceN) + "] N (a strip test), found " + fmt(so.noise_N));
-    if (so.tests_per_pin < 1 || so.tests_per_pin > 10000)
-      bad("--tests-per-pin: expected 1 to 10000 tests, found " + std::to_string(so.tests_per_pin));
-    if (so.rows_per_test < 1 || so.rows_per_test > 10000)
-      bad("--rows-per-test: expected 1 to 10000 rows, found " + std::to_string(so.rows_per_test));
-    if (static_cast<double>(so.tests_per_pin) * so.rows_per_test > 1e6)
-      bad("--tests-per-pin x --rows-per-test: expected at most 1e6 rows per pin, found " +
-          fmt(static_cast<double>(so.tests_per_pin) * so.rows_per_test));
-    ensure_writable_dir(out, "--out");
-    if (from_thesis) {
-      const Dataset d = thesis_dataset(data_dir + "/thesis", points);
-      write_measured(out + "/thesis_drawbend.csv", d);
-      std::cout << "wrote " << out << "/thesis_drawbend.csv (" << d.rows.size() << " rows)\n";
-      return 0;
-    }
-    if (generator == "blind" || generator == "wild") {  // the held-out generators (1 and 2)
-      const bool wild = generator == "wild";
-      const auto& cl = wild ? wild_classes() : blind_classes();
-      if (blind_class != "random" && std::find(cl.begin(), cl.end(), blind_class) == cl.end()) {
-        std::string list;
-        for (const auto& c : cl) list += c + ", ";
-        throw InputError("--class: expected " + list.substr(0, list.size() - 2) + " or random, found '" + blind_class + "'");
-      }
-      BlindTruth truth;
-      const Dataset d = wild ? synthesize_wild({blind_class, so.noise_N, static_cast<std::uint64_t>(seed)}, truth)
-                             : synthesize_blind({blind_class, so.noise_N, static_cast<std::uint64_t>(seed)}, truth);
-      write_measured(out + "/data.csv", d);
-      write_file_atomic(out + "/truth.json", wild ? wild_truth_json(truth) : blind_truth_json(truth));
-      std::cout << "wrote " << out << "/data.csv (" << d.rows.size() << " rows) and " << out << "/truth.json\n";
-      return 0;
-    }
-    so.seed = static_cast<std::uint64_t>(seed);
-    const MapLibrary maps = maps_for(maps_dir, {12.7, 25.4, 42.0});
-    SynthTruth truth;
-    const Dataset d = synthesize(so, maps, truth);
-    // The hidden law's amplitude is the law's own unit: check what it made.
-    for (const auto& r : d.rows)
-      if (!(std::isfinite(r.outlet_force_N) && std::abs(r.outlet_force_N) <= kMaxStripForceN))
-        bad("--amplitude " + fmt(so.amplitude) + " with --noise " + fmt(so.noise_N) + ": an outlet force of " +
-            fmt(r.outlet_force_N) + " N, beyond a strip test (" + fmt(kMaxStripForceN) + " N); choose a smaller amplitude");
-    write_measured(out + "/data.csv", d);
-    write_file_atomic(out + "/truth.json", truth_json(truth));
-    std::cout << "wrote " << out << "/data.csv (" << d.rows.size() << " rows) and " << out << "/truth.json\n";
     return 0;
   });
 }
