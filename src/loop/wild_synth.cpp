@@ -35,8 +35,10 @@ const char* const kClean[3] = {"acetone", "IPA", "dry wipe"};
 std::string two(int v) { return (v < 10 ? "0" : "") + std::to_string(v); }
 }  // namespace
 
-Set draw_set(Rng& r) {
-  Set s;
+namespace {
+// The set's factors: directions, speeds, lubricants, friction, batches (their
+// Rp0.2 in s, their mean blank thickness [um] returned) and the pins' lines.
+std::vector<double> draw_factors(Rng& r, Set& s) {
   const std::vector<std::vector<double>> dir_sets = {{0, 90}, {0, 45, 90}, {0, 30, 60, 90}, {0, 15, 45, 75, 90}};
   s.dirs = r.pick(dir_sets);
   s.levels = r.u() < 0.5;
@@ -64,6 +66,12 @@ Set draw_set(Rng& r) {
     const double f = 1 + 0.05 * r.n();
     s.pins[p].lo *= f, s.pins[p].hi *= f;
   }
+  return batch_t;
+}
+
+// Per pin, T fixed-pin tests over the shuffled cells (at least 2 per cell)
+// and 3 rotating-pin tests; batch_t: each batch's mean blank thickness [um].
+void draw_tests(Rng& r, Set& s, const std::vector<double>& batch_t) {
   const int nsp = s.levels ? 3 : 1;
   const int ncells = s.nlub * nsp * (s.dirs.size() <= 2 ? 2 : 1);
   const int T = std::max(7 + r.i(16), 2 * ncells);
@@ -95,6 +103,11 @@ Set draw_set(Rng& r) {
       s.tests.push_back(x);
     }
   }
+}
+
+// The run order (order[k] = index of the k-th test run): run number,
+// operator shift, date, id, strip, pin temperature and oil age per test.
+std::vector<int> schedule(Rng& r, Set& s) {
   std::vector<int> order(s.tests.size());
   std::iota(order.begin(), order.end(), 0);
   r.shuffle(order);
@@ -110,7 +123,12 @@ Set draw_set(Rng& r) {
     x.temp_F = std::round(10 * (66 + 11 * slot / 13.0 + 1.2 * r.n())) / 10;
     x.oil_age = std::round(100 * ((day + day0) % change_every + slot / 14.0)) / 100;
   }
-  s.has_strip = r.u() < 0.7, s.has_date = r.u() < 0.7, s.has_clock = r.u() < 0.7, s.has_remark = r.u() < 0.7;
+  return order;
+}
+
+// The rows in run order: back tension stepped in a shuffled order along the
+// sliding distance, pin travel since the last polish, clock and load-cell temperature.
+void draw_rows(Rng& r, Set& s, const std::vector<int>& order) {
   s.clock0 = 7 * 3600 + r.i(3600);
   std::vector<double> travel(3, 0.0);
   int clock = s.clock0;
@@ -136,6 +154,16 @@ Set draw_set(Rng& r) {
     }
     clock += 300 + r.i(600);  // strip change
   }
+}
+}  // namespace
+
+Set draw_set(Rng& r) {
+  Set s;
+  const std::vector<double> batch_t = draw_factors(r, s);
+  draw_tests(r, s, batch_t);
+  const std::vector<int> order = schedule(r, s);
+  s.has_strip = r.u() < 0.7, s.has_date = r.u() < 0.7, s.has_clock = r.u() < 0.7, s.has_remark = r.u() < 0.7;
+  draw_rows(r, s, order);
   s.extra_columns = {"run_no", "operator", "sheet_batch", "batch_rp02_MPa", "blank_thickness_um", "surface_grade",
                      "ra_strip_um", "pre_strain_pct", "fixture", "clean_method", "pin_temp_F", "oil_age_days",
                      "pin_travel_m", "load_cell_temp_C"};
