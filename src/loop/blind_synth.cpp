@@ -94,115 +94,136 @@ std::vector<double> draw_levels(Rng& r, int n, bool numeric, std::string& name) 
 
 std::string two(int v) { return (v < 10 ? "0" : "") + std::to_string(v); }
 
-}  // namespace blindgen
+const std::vector<std::string> kLubNames = {"MP404", "Anticorit PL 3802-39S", "dry film DL-2"};
 
-Dataset synthesize_blind(const BlindOptions& o, BlindTruth& t) {
-  using namespace blindgen;
-  const auto& classes = blind_classes();
-  Rng r{std::mt19937_64(o.seed * 0x9E3779B97F4A7C15ULL + 0x50)};
-  std::string cls = o.cls;
-  if (cls == "random") cls = r.pick(classes);
-  if (std::find(classes.begin(), classes.end(), cls) == classes.end())
-    throw std::invalid_argument("unknown blind class '" + o.cls + "' (level, smooth, interaction, bending, test-level, null, random)");
-  t = {};
-  t.cls = cls;
-  t.noise_N = o.noise_N;
-  t.seed = o.seed;
-
-  // ---- design ----
-  const std::vector<std::vector<double>> dir_sets = {{0, 90}, {0, 45, 90}, {0, 30, 60, 90}, {0, 22.5, 45, 67.5, 90}};
-  const std::vector<double> dirs = r.pick(dir_sets);
-  const bool speed_levels = r.u() < 0.5;
-  std::vector<double> levels = {10, 25, 50, 100};
-  levels.erase(levels.begin() + r.i(4));
-  const std::vector<std::string> lub_names = {"MP404", "Anticorit PL 3802-39S", "dry film DL-2"};
-  const int nlub = r.u() < 0.6 ? 1 : 2;
-  std::vector<double> lub_f = {1.0, r.u(0.6, 0.9)}, lev_f = {r.u(0.9, 1.1), r.u(0.9, 1.1), r.u(0.9, 1.1)};
-  const double mu_rd = r.u(0.07, 0.12), mu_td = mu_rd * r.u(0.8, 1.05);
-  const int ncells = nlub * (speed_levels ? 3 : 1) * (dirs.size() <= 2 ? 2 : 1);
-  const int T = std::max(r.i(23) + 8, 2 * ncells), ncoil = 2 + r.i(3), nlot = 2 + r.i(2), nop = 2 + r.i(2);
-  const std::vector<std::string> operators = {"A. Jansen", "M. de Vries", "K. Bakker"};
-  const std::vector<std::string> dies = {"old", "new", "reground"};
-  std::vector<double> films = {0.8, 1.2, 1.6, 2.0};
-  if (r.u() < 0.5) films.pop_back();
-  std::vector<double> coil_yield(ncoil);
-  for (double& y : coil_yield) y = std::round(10 * (99.7 + 4 * r.n())) / 10;
+// The design of one set: its factors, the tests and their run order.
+struct SetDesign {
+  std::vector<double> dirs;
+  bool speed_levels = false;
+  std::vector<double> levels;  // the three speed levels [mm/s] when speed_levels
+  int nlub = 1;
+  std::vector<double> lub_f, lev_f;  // friction factor per lubricant and per speed level
+  double mu_rd = 0, mu_td = 0;
+  int T = 0, ncoil = 0, nlot = 0, nop = 0;  // fixed-pin tests per pin; coils, lots, operators
+  std::vector<double> films;
+  std::vector<double> coil_yield;
   Pin pins[3];
-  for (int p = 0; p < 3; ++p) {
-    pins[p] = kBlindPins[p];
-    pins[p].b0 *= 1 + 0.05 * r.n();
-    pins[p].b1 *= 1 + 0.05 * r.n();
-    const double s = 1 + 0.05 * r.n();
-    pins[p].lo *= s, pins[p].hi *= s;
-  }
   std::vector<Test> tests;
+  std::vector<int> order;  // order[k] = index of the k-th test run
+};
+
+// The design's factors (directions, speeds, lubricants, coils, the pins' lines).
+SetDesign draw_factors(Rng& r) {
+  SetDesign d;
+  const std::vector<std::vector<double>> dir_sets = {{0, 90}, {0, 45, 90}, {0, 30, 60, 90}, {0, 22.5, 45, 67.5, 90}};
+  d.dirs = r.pick(dir_sets);
+  d.speed_levels = r.u() < 0.5;
+  d.levels = {10, 25, 50, 100};
+  d.levels.erase(d.levels.begin() + r.i(4));
+  d.nlub = r.u() < 0.6 ? 1 : 2;
+  d.lub_f = {1.0, r.u(0.6, 0.9)}, d.lev_f = {r.u(0.9, 1.1), r.u(0.9, 1.1), r.u(0.9, 1.1)};
+  d.mu_rd = r.u(0.07, 0.12), d.mu_td = d.mu_rd * r.u(0.8, 1.05);
+  const int ncells = d.nlub * (d.speed_levels ? 3 : 1) * (d.dirs.size() <= 2 ? 2 : 1);
+  d.T = std::max(r.i(23) + 8, 2 * ncells), d.ncoil = 2 + r.i(3), d.nlot = 2 + r.i(2), d.nop = 2 + r.i(2);
+  d.films = {0.8, 1.2, 1.6, 2.0};
+  if (r.u() < 0.5) d.films.pop_back();
+  d.coil_yield.resize(d.ncoil);
+  for (double& y : d.coil_yield) y = std::round(10 * (99.7 + 4 * r.n())) / 10;
+  for (int p = 0; p < 3; ++p) {
+    d.pins[p] = kBlindPins[p];
+    d.pins[p].b0 *= 1 + 0.05 * r.n();
+    d.pins[p].b1 *= 1 + 0.05 * r.n();
+    const double s = 1 + 0.05 * r.n();
+    d.pins[p].lo *= s, d.pins[p].hi *= s;
+  }
+  return d;
+}
+
+// Per pin, T fixed-pin tests over the shuffled cells and 3 rotating-pin tests.
+void draw_tests(Rng& r, SetDesign& d) {
   for (int p = 0; p < 3; ++p) {
     std::vector<std::array<int, 3>> combos;  // direction, lubricant, speed level
-    for (size_t d = 0; d < dirs.size(); ++d)
-      for (int l = 0; l < nlub; ++l)
-        for (int s = 0; s < (speed_levels ? 3 : 1); ++s) combos.push_back({static_cast<int>(d), l, s});
+    for (size_t di = 0; di < d.dirs.size(); ++di)
+      for (int l = 0; l < d.nlub; ++l)
+        for (int s = 0; s < (d.speed_levels ? 3 : 1); ++s) combos.push_back({static_cast<int>(di), l, s});
     r.shuffle(combos);
-    for (int j = 0; j < T + 3; ++j) {
+    for (int j = 0; j < d.T + 3; ++j) {
       Test x;
       x.pin = p;
-      x.rotating = j >= T;
+      x.rotating = j >= d.T;
       const auto& c = combos[j % combos.size()];
       x.dir = x.rotating ? 0 : c[0];
       x.lub = x.rotating ? 0 : c[1];
-      if (speed_levels) x.speed_level = x.rotating ? 1 : c[2], x.speed = levels[x.speed_level];
+      if (d.speed_levels) x.speed_level = x.rotating ? 1 : c[2], x.speed = d.levels[x.speed_level];
       else x.speed = x.rotating ? 25.4 : std::round(10 * std::exp(r.u(std::log(5.0), std::log(120.0)))) / 10;
       x.rows = 6 + r.i(20);
       x.length = r.u(150, 250);
       x.temp = std::round(10 * r.u(19, 27)) / 10;
       x.thick = std::round(1000 * (1.04 + 0.015 * r.n())) / 1000;
       x.humid = r.u(35, 65);
-      x.film = r.pick(films);
-      x.coil = r.i(ncoil), x.lot = r.i(nlot), x.die = r.i(3);
-      tests.push_back(x);
+      x.film = r.pick(d.films);
+      x.coil = r.i(d.ncoil), x.lot = r.i(d.nlot), x.die = r.i(3);
+      d.tests.push_back(x);
     }
   }
-  std::vector<int> order(tests.size());
-  std::iota(order.begin(), order.end(), 0);
-  r.shuffle(order);  // order[k] = index of the k-th test run
+}
+
+// The run order: order number, operator shift, date, lab-style id and strip.
+void schedule(Rng& r, SetDesign& d) {
+  d.order.resize(d.tests.size());
+  std::iota(d.order.begin(), d.order.end(), 0);
+  r.shuffle(d.order);
   const int day0 = 3 + r.i(20);
-  for (size_t k = 0; k < order.size(); ++k) {
-    Test& x = tests[order[k]];
+  for (size_t k = 0; k < d.order.size(); ++k) {
+    Test& x = d.tests[d.order[k]];
     x.order = static_cast<int>(k) + 1;
-    x.op = static_cast<int>(k * nop / order.size());  // shifts
+    x.op = static_cast<int>(k * d.nop / d.order.size());  // shifts
     x.date = "2026-03-" + two(day0 + static_cast<int>(k / 12));
     x.id = "DB" + x.date.substr(5, 2) + x.date.substr(8, 2) + "-" + std::to_string(100 + k) +
            (x.rotating ? "R" : "") ;
     x.strip = "S" + std::to_string(20000 + 37 * k + r.i(37));
   }
+}
 
-  // ---- rows (run order) ----
-  struct RowT {
-    int test;
-    double F, slide, cycles, humid;
-  };
+struct RowT {
+  int test;
+  double F, slide, cycles, humid;
+};
+
+// The rows in run order: back tension stepped over the pin's range in a
+// shuffled order along the sliding distance.
+std::vector<RowT> draw_rows(Rng& r, const SetDesign& d) {
   std::vector<RowT> rows;
   std::vector<double> strokes(3, 0.0);
-  for (int ti : order) {
-    const Test& x = tests[ti];
+  for (int ti : d.order) {
+    const Test& x = d.tests[ti];
     std::vector<int> slot(x.rows);
     std::iota(slot.begin(), slot.end(), 0);
     r.shuffle(slot);
     for (int k = 0; k < x.rows; ++k) {
-      const Pin& p = pins[x.pin];
+      const Pin& p = d.pins[x.pin];
       // Rounded as written, so that the file holds the values the forces were made from.
       rows.push_back({ti, std::round(10 * (p.lo + (p.hi - p.lo) * slot[k] / (x.rows - 1))) / 10,
                       std::round(100 * (20 + x.length * k / (x.rows - 1))) / 100, strokes[x.pin]++,
                       std::round(10 * (x.humid + r.n())) / 10});
     }
   }
-  const size_t N = rows.size();
+  return rows;
+}
 
-  // ---- the planted effect: g per row and its channel ----
-  std::vector<double> g(N, 0.0);
+// The planted effect: g per row, the channel it acts through, and the truth's
+// variable, shape and cell.  Built by plant() below.
+struct Planter {
+  Rng& r;
+  const SetDesign& d;
+  const std::vector<RowT>& rows;
+  BlindTruth& t;
+  std::vector<double> g = std::vector<double>(rows.size(), 0.0);
   std::string channel = "none";
-  auto col = [&](const std::string& v, size_t i) -> double {  // numeric value of a variable at row i
+
+  double col(const std::string& v, size_t i) const {  // numeric value of a variable at row i
     const RowT& w = rows[i];
-    const Test& x = tests[w.test];
+    const Test& x = d.tests[w.test];
     if (v == "sliding_distance_mm") return w.slide;
     if (v == "speed_mm_s") return x.speed;
     if (v == "cycle_count") return w.cycles;
@@ -210,7 +231,7 @@ Dataset synthesize_blind(const BlindOptions& o, BlindTruth& t) {
     if (v == "humidity_pct") return w.humid;
     if (v == "tool_temp_C") return x.temp;
     if (v == "thickness_mm") return x.thick;
-    if (v == "yield_MPa") return coil_yield[x.coil];
+    if (v == "yield_MPa") return d.coil_yield[x.coil];
     if (v == "direction_deg") return x.dir;
     if (v == "lube_film_g_m2") return x.film;
     if (v == "die_set") return x.die;
@@ -218,61 +239,68 @@ Dataset synthesize_blind(const BlindOptions& o, BlindTruth& t) {
     if (v == "coil") return x.coil;
     if (v == "lot") return x.lot;
     throw std::logic_error("blind_synth: no variable " + v);
-  };
-  auto shaped = [&](const std::string& v, const Shape& s, const std::vector<char>& in) {
+  }
+  void shaped(const std::string& v, const Shape& s, const std::vector<char>& in) {
+    const size_t N = rows.size();
     double lo = 1e300, hi = -1e300;
     for (size_t i = 0; i < N; ++i) lo = std::min(lo, col(v, i)), hi = std::max(hi, col(v, i));
     for (size_t i = 0; i < N; ++i) g[i] = in[i] ? s.f(hi > lo ? (col(v, i) - lo) / (hi - lo) : 0.5) : 0.0;
     t.shape = s.name + " (x = the variable scaled to [0, 1] over the data)";
-  };
-  auto leveled = [&](const std::string& v, int n, bool numeric) {
+  }
+  void shaped(const std::string& v, const Shape& s) { shaped(v, s, std::vector<char>(rows.size(), 1)); }
+  void leveled(const std::string& v, int n, bool numeric) {
     const std::vector<double> lv = draw_levels(r, n, numeric, t.shape);
-    for (size_t i = 0; i < N; ++i) {
+    for (size_t i = 0; i < rows.size(); ++i) {
       int l = static_cast<int>(col(v, i));
-      if (v == "direction_deg") l = tests[rows[i].test].dir;
-      if (v == "lube_film_g_m2") l = static_cast<int>(std::find(films.begin(), films.end(), col(v, i)) - films.begin());
+      if (v == "direction_deg") l = d.tests[rows[i].test].dir;
+      if (v == "lube_film_g_m2")
+        l = static_cast<int>(std::find(d.films.begin(), d.films.end(), col(v, i)) - d.films.begin());
       g[i] = lv[l];
     }
-  };
-  const std::vector<char> all(N, 1);
-  auto friction_channel = [&]() { const double u = r.u(); return u < 0.5 ? "mu_mult" : u < 0.8 ? "mu_add" : "force"; };
-  if (cls == "level") {
+  }
+  std::string friction_channel() { const double u = r.u(); return u < 0.5 ? "mu_mult" : u < 0.8 ? "mu_add" : "force"; }
+
+  void level() {
     std::vector<std::string> v = {"lube_film_g_m2", "die_set", "operator"};
-    if (dirs.size() >= 3) v.push_back("direction_deg");
+    if (d.dirs.size() >= 3) v.push_back("direction_deg");
     t.variable = r.pick(v);
-    const int n = t.variable == "direction_deg" ? static_cast<int>(dirs.size())
-                  : t.variable == "lube_film_g_m2" ? static_cast<int>(films.size())
-                  : t.variable == "die_set" ? 3 : nop;
+    const int n = t.variable == "direction_deg" ? static_cast<int>(d.dirs.size())
+                  : t.variable == "lube_film_g_m2" ? static_cast<int>(d.films.size())
+                  : t.variable == "die_set" ? 3 : d.nop;
     leveled(t.variable, n, t.variable == "direction_deg" || t.variable == "lube_film_g_m2");
     channel = friction_channel();
-  } else if (cls == "smooth") {
+  }
+  void smooth() {
     std::vector<std::string> v = {"sliding_distance_mm", "cycle_count", "test_order", "humidity_pct"};
-    if (!speed_levels) v.push_back("speed_mm_s");
+    if (!d.speed_levels) v.push_back("speed_mm_s");
     t.variable = r.pick(v);
-    shaped(t.variable, draw_shape(r, false), all);
+    shaped(t.variable, draw_shape(r, false));
     channel = friction_channel();
-  } else if (cls == "interaction") {
+  }
+  void interaction() {
     std::vector<std::string> v = {"sliding_distance_mm", "tool_temp_C", "humidity_pct", "cycle_count"};
-    if (!speed_levels) v.push_back("speed_mm_s");
+    if (!d.speed_levels) v.push_back("speed_mm_s");
     t.variable = r.pick(v);
     std::vector<std::string> kinds = {"pin"};
-    if (dirs.size() >= 2) kinds.push_back("direction");
-    if (nlub == 2) kinds.push_back("lubricant");
-    if (speed_levels) kinds.push_back("speed");
+    if (d.dirs.size() >= 2) kinds.push_back("direction");
+    if (d.nlub == 2) kinds.push_back("lubricant");
+    if (d.speed_levels) kinds.push_back("speed");
     const std::string kind = r.pick(kinds);
-    const int which = kind == "pin" ? r.i(3) : kind == "direction" ? r.i(static_cast<int>(dirs.size()))
+    const int which = kind == "pin" ? r.i(3) : kind == "direction" ? r.i(static_cast<int>(d.dirs.size()))
                       : kind == "lubricant" ? r.i(2) : r.i(3);
-    std::vector<char> in(N, 0);
-    for (size_t i = 0; i < N; ++i) {
-      const Test& x = tests[rows[i].test];
+    std::vector<char> in(rows.size(), 0);
+    for (size_t i = 0; i < rows.size(); ++i) {
+      const Test& x = d.tests[rows[i].test];
       in[i] = !x.rotating && (kind == "pin" ? x.pin : kind == "direction" ? x.dir : kind == "lubricant" ? x.lub
                                                                                        : x.speed_level) == which;
     }
-    t.cell = kind + " = " + (kind == "pin" ? fmt(kBlindPins[which].d) + " mm" : kind == "direction" ? fmt(dirs[which]) + " deg"
-                             : kind == "lubricant" ? lub_names[which] : fmt(levels[which]) + " mm/s");
+    t.cell = kind + " = " + (kind == "pin" ? fmt(kBlindPins[which].d) + " mm" : kind == "direction" ? fmt(d.dirs[which]) + " deg"
+                             : kind == "lubricant" ? kLubNames[which] : fmt(d.levels[which]) + " mm/s");
     shaped(t.variable, draw_shape(r, true), in);
     channel = r.u() < 0.6 ? "mu_mult" : "mu_add";
-  } else if (cls == "bending") {
+  }
+  void bending() {
+    const size_t N = rows.size();
     t.variable = r.u() < 0.6 ? "thickness_mm" : "yield_MPa";
     double mean = 0;
     for (size_t i = 0; i < N; ++i) mean += col(t.variable, i) / N;
@@ -280,39 +308,56 @@ Dataset synthesize_blind(const BlindOptions& o, BlindTruth& t) {
                                                                          : col(t.variable, i) / mean - 1;
     t.shape = t.variable == "thickness_mm" ? "(t/t_mean)^2 - 1" : "sigma_y/mean - 1";
     channel = r.u() < 0.6 ? "bend" : "bend+mu";
-  } else if (cls == "test-level") {
+  }
+  void test_level() {
     t.variable = r.pick(std::vector<std::string>{"coil", "lot", "tool_temp_C", "thickness_mm"});
-    if (t.variable == "coil" || t.variable == "lot") leveled(t.variable, t.variable == "coil" ? ncoil : nlot, false);
-    else shaped(t.variable, draw_shape(r, false), all);
+    if (t.variable == "coil" || t.variable == "lot") leveled(t.variable, t.variable == "coil" ? d.ncoil : d.nlot, false);
+    else shaped(t.variable, draw_shape(r, false));
     channel = r.u() < 0.6 ? "mu_mult" : "mu_add";
   }
-  if (channel == "force") {  // an extra drag (a guide, a wiper): it only adds, so outlet >= back tension holds
-    const double lo = *std::min_element(g.begin(), g.end());
-    for (double& v : g) v -= lo;
+  // The class's effect, then the truth's channel and aliases.
+  void plant(const std::string& cls) {
+    if (cls == "level") level();
+    else if (cls == "smooth") smooth();
+    else if (cls == "interaction") interaction();
+    else if (cls == "bending") bending();
+    else if (cls == "test-level") test_level();
+    if (channel == "force") {  // an extra drag (a guide, a wiper): it only adds, so outlet >= back tension holds
+      const double lo = *std::min_element(g.begin(), g.end());
+      for (double& v : g) v -= lo;
+    }
+    t.channel = channel;
+    t.aliases = {t.variable};
+    if (t.variable == "sliding_distance_mm") t.aliases.push_back("time_s");
+    if (t.variable == "coil") t.aliases.push_back("yield_MPa");
+    if (t.variable == "yield_MPa") t.aliases.push_back("coil");
+    if (cls == "null") t.aliases.clear();
   }
-  t.channel = channel;
-  t.aliases = {t.variable};
-  if (t.variable == "sliding_distance_mm") t.aliases.push_back("time_s");
-  if (t.variable == "coil") t.aliases.push_back("yield_MPa");
-  if (t.variable == "yield_MPa") t.aliases.push_back("coil");
-  if (cls == "null") t.aliases.clear();
+};
 
-  // ---- outlet forces for an effect size a ----
+// The outlet forces for an effect of size a on the channel, and how often mu
+// hit its floor of 0.01 in the last evaluation.
+struct Forces {
+  const SetDesign& d;
+  const std::vector<RowT>& rows;
+  const std::vector<double>& g;
+  const std::string& channel;
   double mu_floor_hits = 0;
-  auto forces = [&](double a) {
-    std::vector<double> y(N);
+
+  std::vector<double> operator()(double a) {
+    std::vector<double> y(rows.size());
     mu_floor_hits = 0;
-    for (size_t i = 0; i < N; ++i) {
+    for (size_t i = 0; i < rows.size(); ++i) {
       const RowT& w = rows[i];
-      const Test& x = tests[w.test];
-      const Pin& p = pins[x.pin];
+      const Test& x = d.tests[w.test];
+      const Pin& p = d.pins[x.pin];
       double bend = p.b0 + p.b1 * w.F;
       if (channel == "bend" || channel == "bend+mu") bend *= 1 + a * g[i];
       double out = w.F + bend;
       if (!x.rotating) {
-        const double phi = dirs[x.dir] * M_PI / 180, c = std::cos(phi), s = std::sin(phi);
-        double mu = mu_rd * mu_td / std::sqrt(mu_td * mu_td * c * c + mu_rd * mu_rd * s * s);
-        mu *= lub_f[x.lub] * (x.speed_level >= 0 ? lev_f[x.speed_level] : 1.0);
+        const double phi = d.dirs[x.dir] * M_PI / 180, c = std::cos(phi), s = std::sin(phi);
+        double mu = d.mu_rd * d.mu_td / std::sqrt(d.mu_td * d.mu_td * c * c + d.mu_rd * d.mu_rd * s * s);
+        mu *= d.lub_f[x.lub] * (x.speed_level >= 0 ? d.lev_f[x.speed_level] : 1.0);
         if (channel == "mu_mult" || channel == "bend+mu") mu *= 1 + a * g[i];
         if (channel == "mu_add") mu += 0.1 * a * g[i];
         if (mu < 0.01) mu = 0.01, mu_floor_hits++;
@@ -322,8 +367,15 @@ Dataset synthesize_blind(const BlindOptions& o, BlindTruth& t) {
       y[i] = out;
     }
     return y;
-  };
+  }
+};
+
+// The effect size a whose RMS on the outlet force is k times the noise sd
+// (k drawn here; 0 for a null set), the other sign if mu hits its floor.
+double effect_size(Rng& r, const BlindOptions& o, const std::string& cls, const std::string& channel, Forces& forces,
+                   BlindTruth& t) {
   const std::vector<double> y0 = forces(0);
+  const size_t N = y0.size();
   auto rms_of = [&](double a) {
     const std::vector<double> y = forces(a);
     double q = 0;
@@ -339,33 +391,51 @@ Dataset synthesize_blind(const BlindOptions& o, BlindTruth& t) {
     for (int pass = 0; pass < 2; ++pass) {
       a = sgn;
       for (int it = 0; it < 30; ++it) a *= target / rms_of(a);
-      if (mu_floor_hits == 0) break;
+      if (forces.mu_floor_hits == 0) break;
       sgn = -sgn;  // mu driven to the floor: the effect the other way
     }
     t.effect_rms_N = rms_of(a);
   }
-  const std::vector<double> y = forces(a);
+  return a;
+}
+
+// The truth's law in words, for an effect of size a.
+std::string law_text(const std::string& cls, const std::string& channel, const BlindTruth& t, double a) {
   const std::string chan_text = channel == "mu_mult" ? "mu (1 + a g)" : channel == "mu_add" ? "mu + 0.1 a g"
                                 : channel == "force" ? "outlet force + 100 a g N" : channel == "bend" ? "F_B (1 + a g)"
                                 : channel == "bend+mu" ? "F_B (1 + a g) and mu (1 + a g)" : "";
-  t.law = cls == "null" ? "no planted effect"
-                        : chan_text + ", g = " + t.shape + " of " + t.variable + (t.cell.empty() ? "" : " in the cell " + t.cell) +
-                              ", a = " + fmt(a, 4);
+  return cls == "null" ? "no planted effect"
+                       : chan_text + ", g = " + t.shape + " of " + t.variable + (t.cell.empty() ? "" : " in the cell " + t.cell) +
+                             ", a = " + fmt(a, 4);
+}
 
-  // ---- the data set ----
+// The data set's header: comments and the extra columns, each optional one
+// (strip id, date, timestamp, comment) present with probability 0.7.
+struct OptionalColumns {
+  bool strip, date, stamp, comment;
+};
+Dataset dataset_header(Rng& r, const BlindOptions& o, OptionalColumns& opt) {
   Dataset d;
   d.path = "synthetic-blind";
   d.has_sliding = d.has_time = true;
-  const bool has_strip = r.u() < 0.7, has_date = r.u() < 0.7, has_stamp = r.u() < 0.7, has_comment = r.u() < 0.7;
+  opt.strip = r.u() < 0.7, opt.date = r.u() < 0.7, opt.stamp = r.u() < 0.7, opt.comment = r.u() < 0.7;
   d.extra_columns = {"test_order", "operator", "coil", "yield_MPa", "lot", "tool_temp_C", "thickness_mm",
                      "humidity_pct", "lube_film_g_m2", "die_set", "cycle_count"};
   const std::pair<bool, const char*> optional[] = {
-      {has_strip, "strip_id"}, {has_date, "date"}, {has_stamp, "timestamp"}, {has_comment, "comment"}};
+      {opt.strip, "strip_id"}, {opt.date, "date"}, {opt.stamp, "timestamp"}, {opt.comment, "comment"}};
   for (const auto& [on, name] : optional)
     if (on) d.extra_columns.push_back(name);
   d.comments = {" draw-bend tests, blind synthetic set (drawbend synth --generator blind), seed " +
                     std::to_string(o.seed) + ", noise sd " + fmt(o.noise_N) + " N; the truth is in truth.json",
                 " units: mm, N, mm/s, s, deg, C, MPa, g/m2"};
+  return d;
+}
+
+// The rows of the file: the outlet forces y plus noise, and the extra columns.
+void write_rows(Rng& r, const BlindOptions& o, const SetDesign& design, const std::vector<RowT>& rows,
+                const std::vector<double>& y, const OptionalColumns& opt, Dataset& d) {
+  const std::vector<std::string> operators = {"A. Jansen", "M. de Vries", "K. Bakker"};
+  const std::vector<std::string> dies = {"old", "new", "reground"};
   std::normal_distribution<double> noise(0, o.noise_N);
   const std::vector<std::string> remarks = {
       "strip edge slightly burred near the grip, re-clamped after the first stroke",
@@ -373,29 +443,29 @@ Dataset synthesize_blind(const BlindOptions& o, BlindTruth& t) {
       "load cell re-zeroed before the test, pin wiped with acetone",
       "small scratch on the strip surface at about 120 mm, test continued"};
   int clock = 8 * 3600 + r.i(1800);
-  for (size_t i = 0; i < N; ++i) {
+  for (size_t i = 0; i < rows.size(); ++i) {
     const RowT& w = rows[i];
-    const Test& x = tests[w.test];
+    const Test& x = design.tests[w.test];
     Sample s;
     s.test_id = x.id;
     s.pin_d_mm = kBlindPins[x.pin].d;
     s.rotating = x.rotating;
-    s.direction_deg = dirs[x.dir];
+    s.direction_deg = design.dirs[x.dir];
     s.speed_mm_s = x.speed;
-    s.lubricant = lub_names[x.lub];
+    s.lubricant = kLubNames[x.lub];
     s.back_tension_N = w.F;
     s.sliding_mm = w.slide;
     s.time_s = std::round(1000 * w.slide / x.speed) / 1000;
     s.outlet_force_N = y[i] + noise(r.g);
     s.extra = {std::to_string(x.order), operators[x.op], "C" + std::to_string(4711 + x.coil),
-               fmt(coil_yield[x.coil], 5), "L22" + two(7 + 4 * x.lot), fmt(x.temp, 3), fmt(x.thick, 4),
+               fmt(design.coil_yield[x.coil], 5), "L22" + two(7 + 4 * x.lot), fmt(x.temp, 3), fmt(x.thick, 4),
                fmt(w.humid, 4), fmt(x.film, 2), dies[x.die], std::to_string(static_cast<int>(w.cycles))};
     clock += 7 + r.i(20);
-    if (has_strip) s.extra.push_back(x.strip);
-    if (has_date) s.extra.push_back(x.date);
-    if (has_stamp)
+    if (opt.strip) s.extra.push_back(x.strip);
+    if (opt.date) s.extra.push_back(x.date);
+    if (opt.stamp)
       s.extra.push_back(x.date + "T" + two(clock / 3600 % 24) + ":" + two(clock / 60 % 60) + ":" + two(clock % 60));
-    if (has_comment) {
+    if (opt.comment) {
       const int h = (x.order * 7919) % 10;  // about one test in five has a remark
       s.extra.push_back(h < 2 ? remarks[(x.order + h) % remarks.size()] +
                                     (remarks[(x.order + h) % remarks.size()].back() == ' ' ? std::to_string(10 + x.order % 90) : "")
@@ -403,7 +473,38 @@ Dataset synthesize_blind(const BlindOptions& o, BlindTruth& t) {
     }
     d.rows.push_back(s);
   }
-  d.rows_read = static_cast<int>(N);
+  d.rows_read = static_cast<int>(rows.size());
+}
+
+}  // namespace blindgen
+
+Dataset synthesize_blind(const BlindOptions& o, BlindTruth& t) {
+  using namespace blindgen;
+  const auto& classes = blind_classes();
+  Rng r{std::mt19937_64(o.seed * 0x9E3779B97F4A7C15ULL + 0x50)};
+  std::string cls = o.cls;
+  if (cls == "random") cls = r.pick(classes);
+  if (std::find(classes.begin(), classes.end(), cls) == classes.end())
+    throw std::invalid_argument("unknown blind class '" + o.cls + "' (level, smooth, interaction, bending, test-level, null, random)");
+  t = {};
+  t.cls = cls;
+  t.noise_N = o.noise_N;
+  t.seed = o.seed;
+
+  SetDesign design = draw_factors(r);
+  draw_tests(r, design);
+  schedule(r, design);
+  const std::vector<RowT> rows = draw_rows(r, design);
+  Planter planted{r, design, rows, t};
+  planted.plant(cls);
+  Forces forces{design, rows, planted.g, planted.channel};
+  const double a = effect_size(r, o, cls, planted.channel, forces, t);
+  const std::vector<double> y = forces(a);
+  t.law = law_text(cls, planted.channel, t, a);
+
+  OptionalColumns opt{};
+  Dataset d = dataset_header(r, o, opt);
+  write_rows(r, o, design, rows, y, opt, d);
   return d;
 }
 

@@ -326,29 +326,31 @@ ExportModel read_friction_model(const std::string& path) {
   return m;
 }
 
-ExportResult export_lsdyna(const ExportModel& m, const ExportOptions& o) {
-  o.validate("lsdyna");
-  ExportResult r;
-  r.format = "lsdyna";
-  const bool ortho = o.direction == "ortho";
-  const int base = o.contact_id * 1000;  // table IDs base+1.., curve IDs base+101..
+namespace {
+
+// The LS-DYNA *DEFINE_TABLEs of an export, written one after the other: table
+// IDs base+1.., curve IDs base+101.., and the largest |mu - law| of their grids.
+struct LsdynaTables {
+  explicit LsdynaTables(int base_id) : base(base_id), curve(base_id + 101) {}
+  int base, curve;
+  std::vector<int> ids;
+  double max_error = 0;
+  std::ostringstream body;
+
   // Flat ends: the first and last rows/columns repeated at 0 and 10x the
   // domain's upper end, so that any interpolation or extrapolation rule gives
   // the clamped law up to there (stated in the header).
-  auto extend = [](std::vector<double> g, double hi) {
+  static std::vector<double> extend(std::vector<double> g, double hi) {
     if (g.front() > 0) g.insert(g.begin(), 0.0);
     g.push_back(hi);
     return g;
-  };
-  std::ostringstream body;
-  int curve = base + 101;
-  std::vector<int> tables;
-  auto write_table = [&](const analysis::FrictionSurface& s, bool values_are_pressure, const std::string& what) {
+  }
+  void write(const analysis::FrictionSurface& s, bool values_are_pressure, const std::string& what) {
     const Table t = make_table(s, 20, 2e-5);
-    r.max_error = std::max(r.max_error, t.max_error);
+    max_error = std::max(max_error, t.max_error);
     const auto ps = extend(t.ps, 10 * s.p_max), vs = extend(t.vs, 10 * s.v_max);
-    const int id = base + 1 + static_cast<int>(tables.size());
-    tables.push_back(id);
+    const int id = base + 1 + static_cast<int>(ids.size());
+    ids.push_back(id);
     const auto& outer = values_are_pressure ? ps : vs;
     const auto& inner = values_are_pressure ? vs : ps;
     body << "$ table " << id << ": " << what << "; values = "
@@ -364,14 +366,72 @@ ExportResult export_lsdyna(const ExportModel& m, const ExportOptions& o) {
         body << field(y, 20) << field(law_mu(s, p, v), 20, 8) << "\n";
       }
     }
-  };
-  if (ortho) {
-    write_table(m.rd, false, "LC1, mu along direction 1 (RD)");
-    write_table(m.td, false, std::string("LC2, mu along direction 2 (TD)") + (m.td_copied ? ", COPIED from RD (no TD data)" : ""));
-  } else {
-    write_table(direction_surface(m, o.direction), true,
-                "mu(p, v) for FS = 2, direction " + o.direction + (m.td_copied && o.direction != "rd" ? " (TD copied from RD)" : ""));
   }
+};
+
+// The isotropic contact: *CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID with FS = 2
+// and FD = the table; `ids` is card 1's SSID MSID SSTYP MSTYP.
+void lsdyna_isotropic_contact(std::ostream& h, const ExportOptions& o, int table, const std::string& ids) {
+  h << "$ isotropic, direction " << o.direction << " (--direction rd|td|mean; ortho for the orthotropic form).\n"
+    << "$ FS = 2, FD = table " << table << ": the manual's FS field, \"FD is a table ID (see *DEFINE_TABLE). That\n"
+    << "$ table specifies two or more values of contact pressure, with each pressure value in the table\n"
+    << "$ corresponding to a curve of friction coefficient as a function of relative velocity\", for\n"
+    << "$ *CONTACT_SURFACE_TO_SURFACE and *CONTACT_ONE_WAY_SURFACE_TO_SURFACE \"in combination with the\n"
+    << "$ thickness offset option\"; other contact types do not read the table.  Not run in LS-DYNA here.\n"
+    << "$ SSID/MSID = sheet/tool part IDs (--parts, SSTYP = MSTYP = 3).\n"
+    << "$ SET BY HAND: the shell thickness offset (SHLTHK = 1 or 2: THKOPT = 1 on the contact's optional card D,\n"
+    << "$   or *CONTROL_CONTACT SHLTHK); the deck's units N, mm, s.\n"
+    << "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID\n$      CID\n" << ifield(o.contact_id, 10) << "\n"
+    << "$     SSID      MSID     SSTYP     MSTYP    SBOXID    MBOXID       SPR       MPR\n" << ids << "\n"
+    << "$       FS        FD        DC        VC       VDC    PENCHK        BT        DT\n"
+    << field(2, 10) << ifield(table, 10) << field(0, 10) << field(0, 10) << field(0, 10) << "\n"
+    << "$      SFS       SFM       SST       MST      SFST      SFMT       FSF       VSF\n"
+    << field(1, 10) << field(1, 10) << "\n";
+}
+
+// The orthotropic contact: *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ORTHO_FRICTION_ID
+// with LC1 = table rd (RD) and LC2 = table td (TD) on both sides.
+void lsdyna_ortho_contact(std::ostream& h, const ExportOptions& o, int rd, int td, const std::string& ids) {
+  h << "$ orthotropic: *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ORTHO_FRICTION, LC1 = table " << rd
+    << " (RD), LC2 = table " << td << " (TD),\n"
+    << "$ on the slave (sheet, SURFA) side.  OACS_S = 1: the directions are those of the sliding node, i.e.\n"
+    << "$ the sheet's (0 would take the directions of the tool segment slid on): set the sheet elements'\n"
+    << "$ material axes with direction 1 along RD.  LCFS/LCPS blank (an LCFS curve would replace LC1/LC2).\n"
+    << "$ FS/FD of card 2 are not used for the sheet.  The SURFB cards (FS1_M ...) repeat the tables; a\n"
+    << "$ one-way contact checks only SURFA nodes.  Not run in LS-DYNA here: check on a block slide first.\n"
+    << "$ SET BY HAND: the sheet elements' material axes (direction 1 = RD); the deck's units N, mm, s.\n"
+    << "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ORTHO_FRICTION_ID\n$      CID\n" << ifield(o.contact_id, 10)
+    << "\n$     SSID      MSID     SSTYP     MSTYP    SBOXID    MBOXID       SPR       MPR\n" << ids << "\n"
+    << "$       FS        FD        DC        VC       VDC    PENCHK        BT        DT\n"
+    << field(0, 10) << field(0, 10) << "\n"
+    << "$      SFS       SFM       SST       MST      SFST      SFMT       FSF       VSF\n"
+    << field(1, 10) << field(1, 10) << "\n"
+    << "$    FS1_S     FD1_S     DC1_S     VC1_S     LC1_S    OACS_S      LCFS      LCPS\n"
+    << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(rd, 10) << ifield(1, 10) << "\n"
+    << "$    FS2_S     FD2_S     DC2_S     VC2_S     LC2_S\n"
+    << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(td, 10) << "\n"
+    << "$    FS1_M     FD1_M     DC1_M     VC1_M     LC1_M    OACS_M      LCFM      LCPM\n"
+    << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(rd, 10) << ifield(1, 10) << "\n"
+    << "$    FS2_M     FD2_M     DC2_M     VC2_M     LC2_M\n"
+    << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(td, 10) << "\n";
+}
+
+}  // namespace
+
+ExportResult export_lsdyna(const ExportModel& m, const ExportOptions& o) {
+  o.validate("lsdyna");
+  ExportResult r;
+  r.format = "lsdyna";
+  const bool ortho = o.direction == "ortho";
+  LsdynaTables tables(o.contact_id * 1000);
+  if (ortho) {
+    tables.write(m.rd, false, "LC1, mu along direction 1 (RD)");
+    tables.write(m.td, false, std::string("LC2, mu along direction 2 (TD)") + (m.td_copied ? ", COPIED from RD (no TD data)" : ""));
+  } else {
+    tables.write(direction_surface(m, o.direction), true,
+                 "mu(p, v) for FS = 2, direction " + o.direction + (m.td_copied && o.direction != "rd" ? " (TD copied from RD)" : ""));
+  }
+  r.max_error = std::max(r.max_error, tables.max_error);
   std::ostringstream h;
   h << "*KEYWORD\n$ drawbend export to LS-DYNA (keyword format, 10-character fields; tables 20-character)\n"
     << provenance(m, "$", o.direction)
@@ -380,52 +440,14 @@ ExportResult export_lsdyna(const ExportModel& m, const ExportOptions& o) {
     << "$ outside the domain the tables hold the edge values (flat end points at p = 0 and 10 p_max, v = 0 and\n"
     << "$ 10 v_max) = the law's clamp; beyond 10 p_max or 10 v_max LS-DYNA's own end rule applies.\n";
   const std::string ids = ifield(o.sheet_part, 10) + ifield(o.tool_part, 10) + ifield(3, 10) + ifield(3, 10);
-  if (!ortho) {
-    h << "$ isotropic, direction " << o.direction << " (--direction rd|td|mean; ortho for the orthotropic form).\n"
-      << "$ FS = 2, FD = table " << tables[0] << ": the manual's FS field, \"FD is a table ID (see *DEFINE_TABLE). That\n"
-      << "$ table specifies two or more values of contact pressure, with each pressure value in the table\n"
-      << "$ corresponding to a curve of friction coefficient as a function of relative velocity\", for\n"
-      << "$ *CONTACT_SURFACE_TO_SURFACE and *CONTACT_ONE_WAY_SURFACE_TO_SURFACE \"in combination with the\n"
-      << "$ thickness offset option\"; other contact types do not read the table.  Not run in LS-DYNA here.\n"
-      << "$ SSID/MSID = sheet/tool part IDs (--parts, SSTYP = MSTYP = 3).\n"
-      << "$ SET BY HAND: the shell thickness offset (SHLTHK = 1 or 2: THKOPT = 1 on the contact's optional card D,\n"
-      << "$   or *CONTROL_CONTACT SHLTHK); the deck's units N, mm, s.\n"
-      << "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID\n$      CID\n" << ifield(o.contact_id, 10) << "\n"
-      << "$     SSID      MSID     SSTYP     MSTYP    SBOXID    MBOXID       SPR       MPR\n" << ids << "\n"
-      << "$       FS        FD        DC        VC       VDC    PENCHK        BT        DT\n"
-      << field(2, 10) << ifield(tables[0], 10) << field(0, 10) << field(0, 10) << field(0, 10) << "\n"
-      << "$      SFS       SFM       SST       MST      SFST      SFMT       FSF       VSF\n"
-      << field(1, 10) << field(1, 10) << "\n";
-  } else {
-    h << "$ orthotropic: *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ORTHO_FRICTION, LC1 = table " << tables[0]
-      << " (RD), LC2 = table " << tables[1] << " (TD),\n"
-      << "$ on the slave (sheet, SURFA) side.  OACS_S = 1: the directions are those of the sliding node, i.e.\n"
-      << "$ the sheet's (0 would take the directions of the tool segment slid on): set the sheet elements'\n"
-      << "$ material axes with direction 1 along RD.  LCFS/LCPS blank (an LCFS curve would replace LC1/LC2).\n"
-      << "$ FS/FD of card 2 are not used for the sheet.  The SURFB cards (FS1_M ...) repeat the tables; a\n"
-      << "$ one-way contact checks only SURFA nodes.  Not run in LS-DYNA here: check on a block slide first.\n"
-      << "$ SET BY HAND: the sheet elements' material axes (direction 1 = RD); the deck's units N, mm, s.\n"
-      << "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ORTHO_FRICTION_ID\n$      CID\n" << ifield(o.contact_id, 10)
-      << "\n$     SSID      MSID     SSTYP     MSTYP    SBOXID    MBOXID       SPR       MPR\n" << ids << "\n"
-      << "$       FS        FD        DC        VC       VDC    PENCHK        BT        DT\n"
-      << field(0, 10) << field(0, 10) << "\n"
-      << "$      SFS       SFM       SST       MST      SFST      SFMT       FSF       VSF\n"
-      << field(1, 10) << field(1, 10) << "\n"
-      << "$    FS1_S     FD1_S     DC1_S     VC1_S     LC1_S    OACS_S      LCFS      LCPS\n"
-      << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(tables[0], 10) << ifield(1, 10) << "\n"
-      << "$    FS2_S     FD2_S     DC2_S     VC2_S     LC2_S\n"
-      << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(tables[1], 10) << "\n"
-      << "$    FS1_M     FD1_M     DC1_M     VC1_M     LC1_M    OACS_M      LCFM      LCPM\n"
-      << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(tables[0], 10) << ifield(1, 10) << "\n"
-      << "$    FS2_M     FD2_M     DC2_M     VC2_M     LC2_M\n"
-      << field(0, 10) << field(0, 10) << field(0, 10) << field(0, 10) << ifield(tables[1], 10) << "\n";
-  }
+  if (!ortho) lsdyna_isotropic_contact(h, o, tables.ids[0], ids);
+  else lsdyna_ortho_contact(h, o, tables.ids[0], tables.ids[1], ids);
   if (o.sheet_part == 0 || o.tool_part == 0)
     h << "$ SET BY HAND: SSID and MSID are 0 (no --parts given): put your sheet and tool part IDs.\n";
   else if (o.parts_placeholder)
     h << "$ SET BY HAND: SSID " << o.sheet_part << " and MSID " << o.tool_part
       << " are drawbend loop's PLACEHOLDERS: put your sheet and tool part IDs\n$   (or drawbend export --parts SHEET,TOOL).\n";
-  r.text = h.str() + body.str() + "*END\n";
+  r.text = h.str() + tables.body.str() + "*END\n";
   return r;
 }
 

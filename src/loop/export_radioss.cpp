@@ -21,6 +21,10 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -99,25 +103,29 @@ std::vector<double> radioss_fit(const analysis::FrictionSurface& s, double v0, d
           k[5] * c * c};
 }
 
-ExportResult export_openradioss(const ExportModel& m, const ExportOptions& o) {
-  o.validate("openradioss");
-  ExportResult r;
-  r.format = "openradioss";
-  const bool ortho = o.direction == "ortho";
-  std::vector<analysis::FrictionSurface> dirs;
-  if (ortho) dirs = {m.rd, m.td};
-  else dirs = {direction_surface(m, o.direction)};
-  const double v0 = o.band_v_min != 0 || o.band_v_max != 0 ? o.band_v_min : m.rd.v_min;
-  const double v1 = o.band_v_min != 0 || o.band_v_max != 0 ? o.band_v_max : m.rd.v_max;
-  // Speed bands: the data's edges are band edges when the fitted range crosses
-  // them (the law is flat in v beyond them, with a kink at the edge); then the
-  // worst band is halved until every band is within the bound (at most 8).
-  std::vector<double> edges{v0};
+namespace {
+
+// The speed bands of the export: edges[k] to edges[k + 1] with the printed
+// coefficients coef[k][direction] and their largest relative error err[k].
+struct Bands {
+  std::vector<double> edges;
+  std::vector<std::vector<std::vector<double>>> coef;  // [band][direction]
+  std::vector<double> err;                              // per band
+  double worst = 0;
+};
+
+// Speed bands: the data's edges are band edges when the fitted range crosses
+// them (the law is flat in v beyond them, with a kink at the edge); then the
+// worst band is halved until every band is within the bound (at most 8).
+// Throws when even 8 bands miss the bound.
+Bands fit_bands(const ExportModel& m, const ExportOptions& o, const std::vector<analysis::FrictionSurface>& dirs,
+                double v0, double v1) {
+  Bands b;
+  std::vector<double>& edges = b.edges;
+  edges.push_back(v0);
   for (double e : {m.rd.v_min, m.rd.v_max})
     if (e > v0 && e < v1) edges.push_back(e);
   edges.push_back(v1);
-  std::vector<std::vector<std::vector<double>>> coef;  // [band][direction]
-  std::vector<double> err;                              // per band
   auto fit_band = [&](size_t k) {
     std::vector<std::vector<double>> c;
     double e = 0;
@@ -129,38 +137,69 @@ ExportResult export_openradioss(const ExportModel& m, const ExportOptions& o) {
   };
   for (size_t k = 0; k + 1 < edges.size(); ++k) {
     auto [c, e] = fit_band(k);
-    coef.push_back(c);
-    err.push_back(e);
+    b.coef.push_back(c);
+    b.err.push_back(e);
   }
-  double worst = *std::max_element(err.begin(), err.end());
-  while (worst > o.max_rel_error && coef.size() < 8) {
-    const size_t k = std::max_element(err.begin(), err.end()) - err.begin();
+  b.worst = *std::max_element(b.err.begin(), b.err.end());
+  while (b.worst > o.max_rel_error && b.coef.size() < 8) {
+    const size_t k = std::max_element(b.err.begin(), b.err.end()) - b.err.begin();
     edges.insert(edges.begin() + k + 1, std::stod(num(0.5 * (edges[k] + edges[k + 1]), 6)));
-    coef.insert(coef.begin() + k + 1, std::vector<std::vector<double>>());
-    err.insert(err.begin() + k + 1, 0.0);
-    for (size_t j : {k, k + 1}) std::tie(coef[j], err[j]) = fit_band(j);
-    worst = *std::max_element(err.begin(), err.end());
+    b.coef.insert(b.coef.begin() + k + 1, std::vector<std::vector<double>>());
+    b.err.insert(b.err.begin() + k + 1, 0.0);
+    for (size_t j : {k, k + 1}) std::tie(b.coef[j], b.err[j]) = fit_band(j);
+    b.worst = *std::max_element(b.err.begin(), b.err.end());
   }
-  if (worst > o.max_rel_error)
+  if (b.worst > o.max_rel_error)
     throw std::runtime_error("OpenRadioss: the generalized viscous law misses the friction model by " +
-                             fmt(100 * worst, 3) + " % (relative) even in " + std::to_string(coef.size()) + " speed bands; the bound is " +
+                             fmt(100 * b.worst, 3) + " % (relative) even in " + std::to_string(b.coef.size()) + " speed bands; the bound is " +
                              fmt(100 * o.max_rel_error, 3) + " % (--max-rel-error), or narrow --speed-band");
-  r.bands = static_cast<int>(coef.size());
-  r.max_error = worst;
+  return b;
+}
+
+// Largest |mu - law| of the bands' polynomials, as a reader picks the band,
+// over p 0 to 2 p_max and v 0 to 5 v_max of each direction (extrapolated).
+double error_outside(const std::vector<analysis::FrictionSurface>& dirs, const Bands& b) {
+  const int bands = static_cast<int>(b.coef.size());
   auto poly_at = [&](int dir, double p, double v) {  // the band's polynomial as a reader picks it
     int k = 0;
-    while (k + 1 < r.bands && v > edges[k + 1]) ++k;
-    return std::max(radioss_mu(coef[k][dir], p, v), 0.0);
+    while (k + 1 < bands && v > b.edges[k + 1]) ++k;
+    return std::max(radioss_mu(b.coef[k][dir], p, v), 0.0);
   };
+  double e = 0;
   for (size_t dd = 0; dd < dirs.size(); ++dd)
     for (int a = 0; a <= 60; ++a)
-      for (int b = 0; b <= 60; ++b) {
-        const double p = 2 * dirs[dd].p_max * a / 60, v = 5 * dirs[dd].v_max * b / 60;
-        r.max_error_outside = std::max(r.max_error_outside, std::abs(poly_at(static_cast<int>(dd), p, v) - law_mu(dirs[dd], p, v)));
+      for (int bb = 0; bb <= 60; ++bb) {
+        const double p = 2 * dirs[dd].p_max * a / 60, v = 5 * dirs[dd].v_max * bb / 60;
+        e = std::max(e, std::abs(poly_at(static_cast<int>(dd), p, v) - law_mu(dirs[dd], p, v)));
       }
+  return e;
+}
 
+// What the orthotropic pair does in OpenRadioss bd4557b (docs/exports.md).
+const char* const kOrthoNote =
+    "# direction: orthotropic pair, Idir = 1 (direction 1 = RD, direction 2 = TD, /FRIC_ORIENT below).\n"
+    "#   DOES NOT GIVE THE LAW in OpenRadioss bd4557b (its engine, block slide on a TYPE7 interface,\n"
+    "#   Iform = 2, real density and mass-scaled, docs/exports.md of drawbend):\n"
+    "#   - direction 1 loses C1-C5: the engine reads them one pair block past where the starter puts\n"
+    "#     them (engine/source/interfaces/int07/frictionparts_model.F line 202, FRICTIONPARTS_MODEL_ORTHO:\n"
+    "#     TABCOEF_FRIC(LENC+2*LENC*ADRCOEF+J+2) for (ADRCOEF-1)); measured F_T/F_N along RD 0.404, 3.13,\n"
+    "#     0.0101 where the law is 0.053, 0.043, 0.030 (and TD -32 % in the 2nd band).  With that one\n"
+    "#     index corrected (a local build) RD gave the law within 1.2 % (the polynomial within 0.15 %).\n"
+    "#   - direction k's speed terms take the SIGNED speed v . dir_k floored at 1e-30 (int07/i7for3.F),\n"
+    "#     and dir_2 = n x dir_1 (n: the main segment's normal): sliding against dir_k drops C2, C3, C5\n"
+    "#     (along -dir_2: Fric + C1 p + C4 p^2 exactly, +6 to +45 % against the law; along -dir_1 with the\n"
+    "#     index corrected: +16 to +311 %).  So a sheet sliding both ways cannot get the speed terms in both.\n"
+    "#   - the starter puts the directions on the shells of the interface's MAIN surface\n"
+    "#     (interf1/inintr_orthdirfric.F): for the sheet's RD the sheet must be the main surface\n"
+    "#     (/FRIC_ORIENT on the solid secondary part instead: -38 %); with Iform = 1 the test blew up.\n"
+    "#   Use the isotropic form (--direction rd|td|mean): it gave the law in the same engine.\n";
+
+// The '#' header of the file: provenance, the law written, its error inside
+// and outside the fitted range, the bands, the direction and what to set by hand.
+std::string radioss_header(const ExportModel& m, const ExportOptions& o, const Bands& b, const ExportResult& r,
+                           double v0, double v1) {
   std::ostringstream h;
-  const std::string rel = fmt(std::ceil(1000 * 100 * worst) / 1000, 4);
+  const std::string rel = fmt(std::ceil(1000 * 100 * b.worst) / 1000, 4);
   h << "# drawbend export to OpenRadioss (format radioss2020: friction.cfg, fric_orient.cfg)\n"
     << provenance(m, "#", o.direction)
     << "# law written: /FRICTION Ifric = 1 (generalized viscous), Iform = 2 (stiffness, incremental),\n"
@@ -176,27 +215,10 @@ ExportResult export_openradioss(const ExportModel& m, const ExportOptions& o) {
       << " speed bands, one /FRICTION each; point your interface (fric_ID) at the band of your process speeds:\n";
   }
   for (int k = 0; k < r.bands; ++k)
-    h << "# band " << k + 1 << ": /FRICTION/" << o.friction_id + k << " for v " << fmt_shortest(edges[k]) << " to "
-      << fmt_shortest(edges[k + 1]) << " mm/s\n";
-  if (ortho)
-    h << "# direction: orthotropic pair, Idir = 1 (direction 1 = RD, direction 2 = TD, /FRIC_ORIENT below).\n"
-      << "#   DOES NOT GIVE THE LAW in OpenRadioss bd4557b (its engine, block slide on a TYPE7 interface,\n"
-      << "#   Iform = 2, real density and mass-scaled, docs/exports.md of drawbend):\n"
-      << "#   - direction 1 loses C1-C5: the engine reads them one pair block past where the starter puts\n"
-      << "#     them (engine/source/interfaces/int07/frictionparts_model.F line 202, FRICTIONPARTS_MODEL_ORTHO:\n"
-      << "#     TABCOEF_FRIC(LENC+2*LENC*ADRCOEF+J+2) for (ADRCOEF-1)); measured F_T/F_N along RD 0.404, 3.13,\n"
-      << "#     0.0101 where the law is 0.053, 0.043, 0.030 (and TD -32 % in the 2nd band).  With that one\n"
-      << "#     index corrected (a local build) RD gave the law within 1.2 % (the polynomial within 0.15 %).\n"
-      << "#   - direction k's speed terms take the SIGNED speed v . dir_k floored at 1e-30 (int07/i7for3.F),\n"
-      << "#     and dir_2 = n x dir_1 (n: the main segment's normal): sliding against dir_k drops C2, C3, C5\n"
-      << "#     (along -dir_2: Fric + C1 p + C4 p^2 exactly, +6 to +45 % against the law; along -dir_1 with the\n"
-      << "#     index corrected: +16 to +311 %).  So a sheet sliding both ways cannot get the speed terms in both.\n"
-      << "#   - the starter puts the directions on the shells of the interface's MAIN surface\n"
-      << "#     (interf1/inintr_orthdirfric.F): for the sheet's RD the sheet must be the main surface\n"
-      << "#     (/FRIC_ORIENT on the solid secondary part instead: -38 %); with Iform = 1 the test blew up.\n"
-      << "#   Use the isotropic form (--direction rd|td|mean): it gave the law in the same engine.\n";
-  else
-    h << "# direction: isotropic pair law for " << o.direction << " (--direction rd|td|mean|ortho).\n";
+    h << "# band " << k + 1 << ": /FRICTION/" << o.friction_id + k << " for v " << fmt_shortest(b.edges[k]) << " to "
+      << fmt_shortest(b.edges[k + 1]) << " mm/s\n";
+  if (o.direction == "ortho") h << kOrthoNote;
+  else h << "# direction: isotropic pair law for " << o.direction << " (--direction rd|td|mean|ortho).\n";
   h << "# interfaces that honour /FRICTION: /INTER/TYPE7, TYPE24, TYPE25 (also 11, 19): set fric_ID (columns\n"
     << "#   91-100 of the Ifric card of /INTER/TYPE7) to the /FRICTION ID.  Units of the deck: N, mm, s (/BEGIN).\n"
     << "# parts: sheet " << o.sheet_part << ", tool " << o.tool_part
@@ -212,6 +234,13 @@ ExportResult export_openradioss(const ExportModel& m, const ExportOptions& o) {
                                   " (tool) are drawbend loop's PLACEHOLDERS: put yours (drawbend export --parts);\n#   "
                             : std::string())
     << "/FRIC_ORIENT VX VY VZ = the rolling direction in your deck's axes (--rd-vector); /BEGIN units Mg, mm, s.\n";
+  return h.str();
+}
+
+// The cards: one /FRICTION per band (the default law, then the sheet-tool
+// pair, per direction), and /FRIC_ORIENT with the rolling direction.
+std::string radioss_cards(const ExportModel& m, const ExportOptions& o, const Bands& b) {
+  const bool ortho = o.direction == "ortho";
   std::ostringstream o_;
   auto block = [&](const std::vector<double>& c) {
     o_ << "#                 C1                  C2                  C3                  C4                  C5\n"
@@ -219,18 +248,18 @@ ExportResult export_openradioss(const ExportModel& m, const ExportOptions& o) {
        << "#                 C6                FRIC               VIS_F\n"
        << field(0, 20) << field(c[0], 20, 10) << field(1, 20) << "\n";
   };
-  for (int k = 0; k < r.bands; ++k) {
-    o_ << "/FRICTION/" << o.friction_id + k << "\n"
+  for (size_t k = 0; k < b.coef.size(); ++k) {
+    o_ << "/FRICTION/" << o.friction_id + static_cast<int>(k) << "\n"
        << "drawbend " << (m.lubricant.empty() ? std::string("friction model") : m.lubricant) << " " << o.direction
-       << " v " << fmt_shortest(edges[k]) << "-" << fmt_shortest(edges[k + 1]) << " mm/s\n"
+       << " v " << fmt_shortest(b.edges[k]) << "-" << fmt_shortest(b.edges[k + 1]) << " mm/s\n"
        << "#    Ifric    Ifiltr               Xfreq     Iform\n"
        << ifield(1, 10) << ifield(0, 10) << field(0, 20) << ifield(2, 10) << "\n";
-    block(coef[k][0]);  // default law of the pairs not listed
+    block(b.coef[k][0]);  // default law of the pairs not listed
     o_ << "#grpartID1 grpartID2   partID1   partID2                IDIR\n"
        << ifield(0, 10) << ifield(0, 10) << ifield(o.sheet_part, 10) << ifield(o.tool_part, 10) << std::string(10, ' ')
        << ifield(ortho ? 1 : 0, 10) << "\n";
-    block(coef[k][0]);
-    if (ortho) block(coef[k][1]);
+    block(b.coef[k][0]);
+    if (ortho) block(b.coef[k][1]);
   }
   const double vn = std::hypot(o.rd_vector[0], o.rd_vector[1], o.rd_vector[2]);
   o_ << "/FRIC_ORIENT/" << o.friction_id << "\nrolling direction of the sheet part " << o.sheet_part << "\n"
@@ -238,7 +267,25 @@ ExportResult export_openradioss(const ExportModel& m, const ExportOptions& o) {
      << "#                 VX                  VY                  VZ   SKEW_ID                 PHI     IORTH\n"
      << field(o.rd_vector[0] / vn, 20) << field(o.rd_vector[1] / vn, 20) << field(o.rd_vector[2] / vn, 20)
      << ifield(0, 10) << field(0, 20) << ifield(0, 10) << "\n";
-  r.text = h.str() + o_.str();
+  return o_.str();
+}
+
+}  // namespace
+
+ExportResult export_openradioss(const ExportModel& m, const ExportOptions& o) {
+  o.validate("openradioss");
+  ExportResult r;
+  r.format = "openradioss";
+  std::vector<analysis::FrictionSurface> dirs;
+  if (o.direction == "ortho") dirs = {m.rd, m.td};
+  else dirs = {direction_surface(m, o.direction)};
+  const double v0 = o.band_v_min != 0 || o.band_v_max != 0 ? o.band_v_min : m.rd.v_min;
+  const double v1 = o.band_v_min != 0 || o.band_v_max != 0 ? o.band_v_max : m.rd.v_max;
+  const Bands b = fit_bands(m, o, dirs, v0, v1);
+  r.bands = static_cast<int>(b.coef.size());
+  r.max_error = b.worst;
+  r.max_error_outside = error_outside(dirs, b);
+  r.text = radioss_header(m, o, b, r, v0, v1) + radioss_cards(m, o, b);
   return r;
 }
 

@@ -5,6 +5,9 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "core/csv.hpp"
 #include "core/csv_dialect.hpp"
@@ -114,20 +117,10 @@ void nonfinite_extras(Dataset& d) {
   }
 }
 
-}  // namespace
-
-Dataset read_measured(const std::string& path) { return parse_measured(read_file(path), path); }
-
-Dataset parse_measured(const std::string& text, const std::string& path) {
-  // UTF-8 (a byte-order mark dropped), UTF-16 named, Windows-1252 converted,
-  // quoted line breaks, trailing empty columns (core/csv_dialect.hpp).
-  std::string encoding_note;
-  std::istringstream in(csv_text_utf8(text, path, &encoding_note));
+// One pass over the records of a measured-data file: the header, then each
+// row checked and kept or dropped with its problems (parse_measured below).
+struct MeasuredReader {
   Dataset d;
-  d.path = path;
-  d.format_note = encoding_note;
-  std::string line;
-  int lineno = 0;
   std::vector<std::string> header;
   int header_line = 0;
   std::map<std::string, int> col;
@@ -135,67 +128,74 @@ Dataset parse_measured(const std::string& text, const std::string& path) {
   bool header_ok = false;
   char sep = ',';
   bool decimal_comma = false;
-  auto problem = [&](int l, const std::string& c, const std::string& m) { d.problems.push_back({path, l, c, m}); };
-  int physical_line = 0;
-  while (next_csv_record(in, line, physical_line, lineno)) {  // lineno: the record's first line
-    if (trim(line).empty()) continue;
-    if (line[0] == '#') {
-      if (header.empty()) d.comments.push_back(line.substr(1));
-      else problem(lineno, "", "comment line after the header ignored");
-      continue;
+
+  void problem(int l, const std::string& c, const std::string& m) { d.problems.push_back({d.path, l, c, m}); }
+
+  void comment(const std::string& line, int lineno) {
+    if (header.empty()) d.comments.push_back(line.substr(1));
+    else problem(lineno, "", "comment line after the header ignored");
+  }
+
+  // The cells of the header line, with ';' (and decimal commas) or a tab
+  // between them when the header reads that way.
+  void split_header(const std::string& line, int lineno) {
+    header = split_csv_line(line);
+    if (semicolon_header(header)) {  // a spreadsheet export: ';' between cells, decimal commas
+      sep = ';';
+      decimal_comma = true;
+      header = split_csv_line(line, sep);
+      d.format_note += std::string(d.format_note.empty() ? "" : "; ") +
+                       "read with ';' between cells and ',' as the decimal mark (line " + std::to_string(lineno) + ")";
+    } else if (tab_header(header)) {  // a tab-separated export
+      sep = '\t';
+      header = split_csv_line(line, sep);
+      d.format_note += std::string(d.format_note.empty() ? "" : "; ") + "read with a tab between cells (line " +
+                       std::to_string(lineno) + ")";
     }
-    if (header.empty()) {
-      header = split_csv_line(line);
-      if (semicolon_header(header)) {  // a spreadsheet export: ';' between cells, decimal commas
-        sep = ';';
-        decimal_comma = true;
-        header = split_csv_line(line, sep);
-        d.format_note += std::string(d.format_note.empty() ? "" : "; ") +
-                         "read with ';' between cells and ',' as the decimal mark (line " + std::to_string(lineno) + ")";
-      } else if (tab_header(header)) {  // a tab-separated export
-        sep = '\t';
-        header = split_csv_line(line, sep);
-        d.format_note += std::string(d.format_note.empty() ? "" : "; ") + "read with a tab between cells (line " +
-                         std::to_string(lineno) + ")";
-      }
-      trim_trailing_empty_header(header);  // an empty formatted column at the right (Excel)
-      header_line = lineno;
-      if (const std::string q = csv_quote_problem(line, sep); !q.empty()) {
-        problem(lineno, "", q);  // no row can be read by column names that may be cut wrongly
+    trim_trailing_empty_header(header);  // an empty formatted column at the right (Excel)
+  }
+
+  void read_header(const std::string& line, int lineno) {
+    split_header(line, lineno);
+    header_line = lineno;
+    if (const std::string q = csv_quote_problem(line, sep); !q.empty()) {
+      problem(lineno, "", q);  // no row can be read by column names that may be cut wrongly
+      header_ok = false;
+      return;
+    }
+    for (auto& h : header) h = trim(h);
+    header_ok = true;
+    for (size_t i = 0; i < header.size(); ++i) {
+      if (header[i].empty() || col.count(header[i])) {  // no row can be read by its column names
+        problem(lineno, header[i], header[i].empty() ? "empty column name (column " + std::to_string(i + 1) + ")"
+                                                     : "duplicate column name");
         header_ok = false;
-        continue;
       }
-      for (auto& h : header) h = trim(h);
-      header_ok = true;
-      for (size_t i = 0; i < header.size(); ++i) {
-        if (header[i].empty() || col.count(header[i])) {  // no row can be read by its column names
-          problem(lineno, header[i], header[i].empty() ? "empty column name (column " + std::to_string(i + 1) + ")"
-                                                       : "duplicate column name");
-          header_ok = false;
-        }
-        col[header[i]] = static_cast<int>(i);
-      }
-      for (const auto& r : kRequiredColumns)
-        if (!col.count(r)) {
-          problem(lineno, r, "required column missing");
-          header_ok = false;
-        }
-      d.has_sliding = col.count("sliding_distance_mm") > 0;
-      d.has_time = col.count("time_s") > 0;
-      for (const auto& h : header) {
-        bool known = h == "sliding_distance_mm" || h == "time_s";
-        for (const auto& r : kRequiredColumns) known = known || h == r;
-        if (!known) d.extra_columns.push_back(h);
-      }
-      continue;
+      col[header[i]] = static_cast<int>(i);
     }
-    ++d.rows_read;
+    for (const auto& r : kRequiredColumns)
+      if (!col.count(r)) {
+        problem(lineno, r, "required column missing");
+        header_ok = false;
+      }
+    d.has_sliding = col.count("sliding_distance_mm") > 0;
+    d.has_time = col.count("time_s") > 0;
+    for (const auto& h : header) {
+      bool known = h == "sliding_distance_mm" || h == "time_s";
+      for (const auto& r : kRequiredColumns) known = known || h == r;
+      if (!known) d.extra_columns.push_back(h);
+    }
+  }
+
+  // The row's cells, one per header column; false (the row dropped, with its
+  // problem) when the quoting or the cell count is wrong or the header unusable.
+  bool row_cells(const std::string& line, int lineno, std::vector<std::string>& cells) {
     if (const std::string q = csv_quote_problem(line, sep); !q.empty()) {
       problem(lineno, "", q);
       ++d.rows_dropped;
-      continue;
+      return false;
     }
-    auto cells = split_csv_line(line, sep);
+    cells = split_csv_line(line, sep);
     drop_trailing_empty(cells, header.size());
     if (decimal_comma)
       for (auto& c : cells) c = decimal_point(c);
@@ -203,13 +203,18 @@ Dataset parse_measured(const std::string& text, const std::string& path) {
       problem(lineno, "", "has " + std::to_string(cells.size()) + " cells, the header (line " +
                               std::to_string(header_line) + ") has " + std::to_string(header.size()));
       ++d.rows_dropped;
-      continue;
+      return false;
     }
     if (!header_ok) {  // required columns missing: no row is usable
       ++d.rows_dropped;
-      continue;
+      return false;
     }
-    const size_t before = d.problems.size();
+    return true;
+  }
+
+  // The sample of a row's cells, a problem per unreadable value; `pin` gets
+  // the pin column's text.
+  Sample parse_sample(const std::vector<std::string>& cells, int lineno, std::string& pin) {
     auto cell = [&](const std::string& c) { return trim(cells[col.at(c)]); };
     auto num = [&](const std::string& c, double& v) {
       std::string why;
@@ -225,38 +230,53 @@ Dataset parse_measured(const std::string& text, const std::string& path) {
     num("speed_mm_s", s.speed_mm_s);
     num("back_tension_N", s.back_tension_N);
     num("outlet_force_N", s.outlet_force_N);
-    const std::string pin = cell("pin");
+    pin = cell("pin");
     if (pin == "rotating") s.rotating = true;
     else if (pin != "fixed") problem(lineno, "pin", "'" + pin + "' is neither 'fixed' nor 'rotating'");
     s.sliding_mm = s.time_s = std::nan("");
     if (d.has_sliding) num("sliding_distance_mm", s.sliding_mm);
     if (d.has_time) num("time_s", s.time_s);
     for (const auto& e : d.extra_columns) s.extra.push_back(cell(e));
-    if (d.problems.size() == before) {  // physical plausibility of parsed values
-      if (s.pin_d_mm <= 0) problem(lineno, "pin_diameter_mm", "pin diameter must be positive");
-      if (s.pin_d_mm > kMaxPinDiameterMM)
-        problem(lineno, "pin_diameter_mm", "expected a pin diameter up to " + fmt(kMaxPinDiameterMM) +
-                                               " mm (a draw-bend pin; check the units), found " + fmt(s.pin_d_mm) + " mm");
-      if (s.speed_mm_s <= 0)
-        problem(lineno, "speed_mm_s", "expected a sliding speed > 0 mm/s, found " + fmt(s.speed_mm_s) +
-                                          " (a test without sliding measures no friction)");
-      for (const char* f : {"back_tension_N", "outlet_force_N"}) {
-        const double v = std::string(f) == "back_tension_N" ? s.back_tension_N : s.outlet_force_N;
-        if (v > kMaxStripForceN)
-          problem(lineno, f, "expected a force below " + fmt(kMaxStripForceN) + " N (a strip test; check the units), found " +
-                                 fmt(v) + " N");
-      }
-      if (s.direction_deg < 0 || s.direction_deg > 90)
-        problem(lineno, "direction_deg", "direction must lie in 0..90 deg (0 = RD, 90 = TD)");
-      if (s.back_tension_N < 0) problem(lineno, "back_tension_N", "negative force");
-      else if (s.back_tension_N == 0) problem(lineno, "back_tension_N", "zero back tension (Eq. 5.1 undefined)");
-      if (s.outlet_force_N < 0) problem(lineno, "outlet_force_N", "negative force");
-      else if (s.back_tension_N > 0 && s.outlet_force_N < s.back_tension_N)
-        problem(lineno, "outlet_force_N",
-                "outlet force " + fmt(s.outlet_force_N) + " N below back tension " + fmt(s.back_tension_N) +
-                    " N on a " + pin + " pin: friction and bending can only add to the back tension");
-      if (d.has_sliding && s.sliding_mm < 0) problem(lineno, "sliding_distance_mm", "negative sliding distance");
+    return s;
+  }
+
+  // Physical plausibility of a sample's parsed values, a problem for each
+  // value a draw-bend test cannot have.
+  void check_plausible(const Sample& s, const std::string& pin, int lineno) {
+    if (s.pin_d_mm <= 0) problem(lineno, "pin_diameter_mm", "pin diameter must be positive");
+    if (s.pin_d_mm > kMaxPinDiameterMM)
+      problem(lineno, "pin_diameter_mm", "expected a pin diameter up to " + fmt(kMaxPinDiameterMM) +
+                                             " mm (a draw-bend pin; check the units), found " + fmt(s.pin_d_mm) + " mm");
+    if (s.speed_mm_s <= 0)
+      problem(lineno, "speed_mm_s", "expected a sliding speed > 0 mm/s, found " + fmt(s.speed_mm_s) +
+                                        " (a test without sliding measures no friction)");
+    for (const char* f : {"back_tension_N", "outlet_force_N"}) {
+      const double v = std::string(f) == "back_tension_N" ? s.back_tension_N : s.outlet_force_N;
+      if (v > kMaxStripForceN)
+        problem(lineno, f, "expected a force below " + fmt(kMaxStripForceN) + " N (a strip test; check the units), found " +
+                               fmt(v) + " N");
     }
+    if (s.direction_deg < 0 || s.direction_deg > 90)
+      problem(lineno, "direction_deg", "direction must lie in 0..90 deg (0 = RD, 90 = TD)");
+    if (s.back_tension_N < 0) problem(lineno, "back_tension_N", "negative force");
+    else if (s.back_tension_N == 0) problem(lineno, "back_tension_N", "zero back tension (Eq. 5.1 undefined)");
+    if (s.outlet_force_N < 0) problem(lineno, "outlet_force_N", "negative force");
+    else if (s.back_tension_N > 0 && s.outlet_force_N < s.back_tension_N)
+      problem(lineno, "outlet_force_N",
+              "outlet force " + fmt(s.outlet_force_N) + " N below back tension " + fmt(s.back_tension_N) +
+                  " N on a " + pin + " pin: friction and bending can only add to the back tension");
+    if (d.has_sliding && s.sliding_mm < 0) problem(lineno, "sliding_distance_mm", "negative sliding distance");
+  }
+
+  // A data row: kept when it parses, is plausible and repeats no earlier row.
+  void read_row(const std::string& line, int lineno) {
+    ++d.rows_read;
+    std::vector<std::string> cells;
+    if (!row_cells(line, lineno, cells)) return;
+    const size_t before = d.problems.size();
+    std::string pin;
+    Sample s = parse_sample(cells, lineno, pin);
+    if (d.problems.size() == before) check_plausible(s, pin, lineno);
     if (d.problems.size() == before) {
       std::string key;
       for (const auto& c : cells) key += trim(c) + "\x1f";
@@ -266,9 +286,31 @@ Dataset parse_measured(const std::string& text, const std::string& path) {
     if (d.problems.size() != before) ++d.rows_dropped;
     else d.rows.push_back(std::move(s));
   }
-  if (header.empty()) problem(0, "", "no header row (file empty or only comments)");
-  nonfinite_extras(d);
-  return d;
+};
+
+}  // namespace
+
+Dataset read_measured(const std::string& path) { return parse_measured(read_file(path), path); }
+
+Dataset parse_measured(const std::string& text, const std::string& path) {
+  // UTF-8 (a byte-order mark dropped), UTF-16 named, Windows-1252 converted,
+  // quoted line breaks, trailing empty columns (core/csv_dialect.hpp).
+  std::string encoding_note;
+  std::istringstream in(csv_text_utf8(text, path, &encoding_note));
+  MeasuredReader r;
+  r.d.path = path;
+  r.d.format_note = encoding_note;
+  std::string line;
+  int lineno = 0, physical_line = 0;
+  while (next_csv_record(in, line, physical_line, lineno)) {  // lineno: the record's first line
+    if (trim(line).empty()) continue;
+    if (line[0] == '#') r.comment(line, lineno);
+    else if (r.header.empty()) r.read_header(line, lineno);
+    else r.read_row(line, lineno);
+  }
+  if (r.header.empty()) r.problem(0, "", "no header row (file empty or only comments)");
+  nonfinite_extras(r.d);
+  return std::move(r.d);
 }
 
 void write_measured(const std::string& path, const Dataset& d) {

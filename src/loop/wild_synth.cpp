@@ -35,8 +35,10 @@ const char* const kClean[3] = {"acetone", "IPA", "dry wipe"};
 std::string two(int v) { return (v < 10 ? "0" : "") + std::to_string(v); }
 }  // namespace
 
-Set draw_set(Rng& r) {
-  Set s;
+namespace {
+// The set's factors: directions, speeds, lubricants, friction, batches (their
+// Rp0.2 in s, their mean blank thickness [um] returned) and the pins' lines.
+std::vector<double> draw_factors(Rng& r, Set& s) {
   const std::vector<std::vector<double>> dir_sets = {{0, 90}, {0, 45, 90}, {0, 30, 60, 90}, {0, 15, 45, 75, 90}};
   s.dirs = r.pick(dir_sets);
   s.levels = r.u() < 0.5;
@@ -64,6 +66,12 @@ Set draw_set(Rng& r) {
     const double f = 1 + 0.05 * r.n();
     s.pins[p].lo *= f, s.pins[p].hi *= f;
   }
+  return batch_t;
+}
+
+// Per pin, T fixed-pin tests over the shuffled cells (at least 2 per cell)
+// and 3 rotating-pin tests; batch_t: each batch's mean blank thickness [um].
+void draw_tests(Rng& r, Set& s, const std::vector<double>& batch_t) {
   const int nsp = s.levels ? 3 : 1;
   const int ncells = s.nlub * nsp * (s.dirs.size() <= 2 ? 2 : 1);
   const int T = std::max(7 + r.i(16), 2 * ncells);
@@ -95,6 +103,11 @@ Set draw_set(Rng& r) {
       s.tests.push_back(x);
     }
   }
+}
+
+// The run order (order[k] = index of the k-th test run): run number,
+// operator shift, date, id, strip, pin temperature and oil age per test.
+std::vector<int> schedule(Rng& r, Set& s) {
   std::vector<int> order(s.tests.size());
   std::iota(order.begin(), order.end(), 0);
   r.shuffle(order);
@@ -110,7 +123,12 @@ Set draw_set(Rng& r) {
     x.temp_F = std::round(10 * (66 + 11 * slot / 13.0 + 1.2 * r.n())) / 10;
     x.oil_age = std::round(100 * ((day + day0) % change_every + slot / 14.0)) / 100;
   }
-  s.has_strip = r.u() < 0.7, s.has_date = r.u() < 0.7, s.has_clock = r.u() < 0.7, s.has_remark = r.u() < 0.7;
+  return order;
+}
+
+// The rows in run order: back tension stepped in a shuffled order along the
+// sliding distance, pin travel since the last polish, clock and load-cell temperature.
+void draw_rows(Rng& r, Set& s, const std::vector<int>& order) {
   s.clock0 = 7 * 3600 + r.i(3600);
   std::vector<double> travel(3, 0.0);
   int clock = s.clock0;
@@ -136,6 +154,16 @@ Set draw_set(Rng& r) {
     }
     clock += 300 + r.i(600);  // strip change
   }
+}
+}  // namespace
+
+Set draw_set(Rng& r) {
+  Set s;
+  const std::vector<double> batch_t = draw_factors(r, s);
+  draw_tests(r, s, batch_t);
+  const std::vector<int> order = schedule(r, s);
+  s.has_strip = r.u() < 0.7, s.has_date = r.u() < 0.7, s.has_clock = r.u() < 0.7, s.has_remark = r.u() < 0.7;
+  draw_rows(r, s, order);
   s.extra_columns = {"run_no", "operator", "sheet_batch", "batch_rp02_MPa", "blank_thickness_um", "surface_grade",
                      "ra_strip_um", "pre_strain_pct", "fixture", "clean_method", "pin_temp_F", "oil_age_days",
                      "pin_travel_m", "load_cell_temp_C"};
@@ -249,30 +277,27 @@ std::vector<std::string> aliases_of(const Set& s, const std::string& column, boo
   return out;
 }
 
-}  // namespace wild
+namespace {
 
-Dataset synthesize_wild(const WildOptions& o, BlindTruth& t) {
-  using namespace wild;
-  const auto& classes = wild_classes();
-  Rng r{std::mt19937_64(o.seed * 0xD1B54A32D192ED03ULL + 0x77)};
-  std::string cls = o.cls;
-  if (cls == "random") cls = r.pick(classes);
-  if (std::find(classes.begin(), classes.end(), cls) == classes.end())
-    throw std::invalid_argument("unknown wild class '" + o.cls + "' (level, smooth, interaction, channel, test-level, null, random)");
-  t = {};
-  t.cls = cls, t.noise_N = o.noise_N, t.seed = o.seed;
-  const Set s = draw_set(r);
-  const size_t N = s.rows.size();
-  wild::Effect e{"", std::vector<double>(N, 0.0)};  // null: nothing planted
-  const std::string& ch = e.channel;
+// The outlet forces of a set for an effect of size a on e's channel, and how
+// often mu hit its floor of 0.01 in the last evaluation.  The pressure and
+// log-speed means over the fixed-pin rows centre the slope channels.
+struct Forces {
+  const Set& s;
+  const Effect& e;
   double p_mean = 0, lv_mean = 0;
-  int nfixed = 0;
-  for (size_t i = 0; i < N; ++i)
-    if (!s.tests[s.rows[i].test].rotating)
-      p_mean += row_pressure(s, i), lv_mean += std::log(s.tests[s.rows[i].test].speed), nfixed++;
-  p_mean /= std::max(1, nfixed), lv_mean /= std::max(1, nfixed);
   int floor_hits = 0;
-  auto forces = [&](double a) {
+
+  Forces(const Set& set, const Effect& effect) : s(set), e(effect) {
+    int nfixed = 0;
+    for (size_t i = 0; i < s.rows.size(); ++i)
+      if (!s.tests[s.rows[i].test].rotating)
+        p_mean += row_pressure(s, i), lv_mean += std::log(s.tests[s.rows[i].test].speed), nfixed++;
+    p_mean /= std::max(1, nfixed), lv_mean /= std::max(1, nfixed);
+  }
+  std::vector<double> operator()(double a) {
+    const std::string& ch = e.channel;
+    const size_t N = s.rows.size();
     std::vector<double> y(N);
     floor_hits = 0;
     for (size_t i = 0; i < N; ++i) {
@@ -299,7 +324,15 @@ Dataset synthesize_wild(const WildOptions& o, BlindTruth& t) {
       y[i] = out;
     }
     return y;
-  };
+  }
+};
+
+// Draws the class's effect into e (and its truth into t) with its size a:
+// RMS k noise sd on the outlet force, k drawn; drawn again (at most 20 times)
+// when neither sign is feasible.  Returns a (0 for a null set).
+double plant(Rng& r, const Set& s, const std::string& cls, const WildOptions& o, Effect& e, Forces& forces,
+             BlindTruth& t) {
+  const size_t N = s.rows.size();
   const std::vector<double> y0 = forces(0);
   auto rms_of = [&](double a) {
     const std::vector<double> y = forces(a);
@@ -312,7 +345,7 @@ Dataset synthesize_wild(const WildOptions& o, BlindTruth& t) {
   // (the file reader rejects an outlet force below the back tension).
   auto infeasible = [&](double a) {
     const std::vector<double> y = forces(a);
-    int n = floor_hits;
+    int n = forces.floor_hits;
     for (size_t i = 0; i < N; ++i)
       n += y[i] - s.rows[i].F < std::min(y0[i] - s.rows[i].F, 6 * o.noise_N);
     return n;
@@ -337,16 +370,24 @@ Dataset synthesize_wild(const WildOptions& o, BlindTruth& t) {
     t.effect_rms_N = rms_of(a);
     break;
   }
-  const std::vector<double> y = forces(a);
+  return a;
+}
+
+// The truth's law in words for an effect of size a on channel ch (t.law holds
+// draw_effect's own addendum).
+std::string wild_law(const std::string& cls, const std::string& ch, const BlindTruth& t, double a) {
   const std::string chan_text = ch == "mu_mult" ? "mu (1 + a g)" : ch == "mu_add" ? "mu + 0.1 a g"
                                 : ch == "offset" ? "outlet force + 100 a g N" : ch == "bend" ? "F_B (1 + a g)"
                                 : ch == "bt_gain" ? "true back tension = recorded (1 + 0.1 a g)"
                                 : ch == "mu_pslope" ? "mu (1 + a g (p / p_mean - 1)), p = F / (R w)"
                                 : ch == "mu_vslope" ? "mu (1 + a g ln(v / v_geo))" : "";
-  t.law = cls == "null" ? "no planted effect"
-                        : chan_text + ", g = " + t.shape + " of " + t.variable +
-                              (t.cell.empty() ? "" : " in the cell " + t.cell) + " (centred), a = " + fmt(a, 4) + t.law;
+  return cls == "null" ? "no planted effect"
+                       : chan_text + ", g = " + t.shape + " of " + t.variable +
+                             (t.cell.empty() ? "" : " in the cell " + t.cell) + " (centred), a = " + fmt(a, 4) + t.law;
+}
 
+// The data set: the set's rows with the outlet forces y plus noise, and its extra columns.
+Dataset wild_dataset(Rng& r, const Set& s, const WildOptions& o, const std::vector<double>& y) {
   Dataset d;
   d.path = "synthetic-wild";
   d.has_sliding = d.has_time = true;
@@ -354,7 +395,7 @@ Dataset synthesize_wild(const WildOptions& o, BlindTruth& t) {
   d.comments = {" draw-bend tests, wild synthetic set (drawbend synth --generator wild), seed " + std::to_string(o.seed) +
                     ", noise sd " + fmt(o.noise_N) + " N; the truth is in truth.json",
                 " units: mm, N, mm/s, s, deg; blank_thickness_um in micrometres, pin_temp_F in Fahrenheit"};
-  for (size_t i = 0; i < N; ++i) {
+  for (size_t i = 0; i < s.rows.size(); ++i) {
     const RowT& w = s.rows[i];
     const Test& x = s.tests[w.test];
     Sample sm;
@@ -371,8 +412,30 @@ Dataset synthesize_wild(const WildOptions& o, BlindTruth& t) {
     for (const auto& c : s.extra_columns) sm.extra.push_back(cell_text(s, i, c));
     d.rows.push_back(sm);
   }
-  d.rows_read = static_cast<int>(N);
+  d.rows_read = static_cast<int>(s.rows.size());
   return d;
+}
+
+}  // namespace
+}  // namespace wild
+
+Dataset synthesize_wild(const WildOptions& o, BlindTruth& t) {
+  using namespace wild;
+  const auto& classes = wild_classes();
+  Rng r{std::mt19937_64(o.seed * 0xD1B54A32D192ED03ULL + 0x77)};
+  std::string cls = o.cls;
+  if (cls == "random") cls = r.pick(classes);
+  if (std::find(classes.begin(), classes.end(), cls) == classes.end())
+    throw std::invalid_argument("unknown wild class '" + o.cls + "' (level, smooth, interaction, channel, test-level, null, random)");
+  t = {};
+  t.cls = cls, t.noise_N = o.noise_N, t.seed = o.seed;
+  const Set s = draw_set(r);
+  wild::Effect e{"", std::vector<double>(s.rows.size(), 0.0)};  // null: nothing planted
+  Forces forces(s, e);
+  const double a = plant(r, s, cls, o, e, forces, t);
+  const std::vector<double> y = forces(a);
+  t.law = wild_law(cls, e.channel, t, a);
+  return wild_dataset(r, s, o, y);
 }
 
 std::string wild_truth_json(const BlindTruth& t) {
