@@ -221,6 +221,294 @@ class FitMemo {
   std::map<std::string, Fit> fit_;
 };
 
+// The strongest few significant candidates of a round, each given its best
+// form: the one whose form predicts held-out data best so far, and the kept
+// forms' held-out results of the undeclared columns.
+struct RoundChoice {
+  Step best_step;
+  FormTrial best_form;
+  bool found = false;
+  std::vector<std::pair<std::string, CvResult>> kept;  // column -> its kept form's held-out result
+};
+
+// The search's state: the current model, its fits and the steps found so far.
+struct LoopSearch {
+  LoopSearch(const Design& d, const LoopOptions& o, LoopResult& res, double sigma)
+      : d(d), o(o), res(res), sigma(sigma), memo(d, res.folds) {
+    spec.bending_linear = o.bending_linear;
+    base_cv = memo.cv(spec);
+    cur = base_cv;
+    cur_fit = memo.fit(spec);
+    cur_joint = memo.joint(spec);
+  }
+
+  const Design& d;
+  const LoopOptions& o;
+  LoopResult& res;
+  const double sigma;
+  FitMemo memo;
+  TrialCache trials_done;  // the forms' fits, by their arithmetic (forms.hpp)
+  ModelSpec spec;
+  CvResult base_cv, cur;
+  Fit cur_fit;
+  JointFit cur_joint;
+  std::vector<CandidateResult> last_rank;
+  std::vector<Step> steps;
+  int round = 0, backfits = 0;
+
+  void forward();
+  bool forward_round();
+  std::vector<CandidateResult> screen(const std::vector<Candidate>& cands);
+  std::vector<std::string> give_forms(const std::vector<CandidateResult>& rank, const std::vector<Candidate>& cands,
+                                      double thr, RoundChoice& ch);
+  void consider(const CandidateResult& c, const Candidate& cand, bool screened, double thr, RoundChoice& ch);
+  void give_aliases(const std::vector<CandidateResult>& rank, const std::vector<Candidate>& cands,
+                    const std::vector<std::string>& given, double thr, RoundChoice& ch);
+  std::string no_step_reason(const std::vector<CandidateResult>& rank, double thr) const;
+  void add_step(RoundChoice& ch);
+  bool backfit();
+  void order_steps();
+  void cv_by_step();
+};
+
+// Forward: re-screen the residual of the current model after every step.
+void LoopSearch::forward() {
+  bool stopped = false;
+  while (static_cast<int>(steps.size()) < o.max_steps) {
+    if (!forward_round()) {
+      stopped = true;
+      break;
+    }
+  }
+  if (!stopped) res.stopped_because = "maximum number of steps (" + std::to_string(o.max_steps) + ")";
+}
+
+// One round: screen, give the strongest candidates (and the chosen column's
+// aliases) their forms, add the best; false (and why) when none is added.
+bool LoopSearch::forward_round() {
+  progress(o, "round " + std::to_string(round + 1) + ": ranking candidates (held-out RMS " + fmt(cur.rms, 4) + " N)");
+  const auto cands = make_candidates(d, cur.pred);
+  if (round == 0) res.candidates = cands;
+  const auto rank = screen(cands);
+  const double thr = o.alpha / std::max<size_t>(1, rank.size());
+  // The strongest few significant candidates are each given their best form;
+  // the one whose form predicts held-out data best is added (the rank order
+  // of the screen does not decide between them).
+  RoundChoice ch;
+  const std::vector<std::string> given = give_forms(rank, cands, thr, ch);
+  if (ch.found && ch.best_step.cls == "undeclared variable") give_aliases(rank, cands, given, thr, ch);
+  ++round;
+  if (!ch.found) {
+    res.stopped_because = no_step_reason(rank, thr);
+    return false;
+  }
+  add_step(ch);
+  return true;
+}
+
+// The screen of the current residual (rank_candidates), kept in the result.
+std::vector<CandidateResult> LoopSearch::screen(const std::vector<Candidate>& cands) {
+  ScreenContext ctx = screen_context(d, cur_fit, cur.pred);
+  ctx.one_cell = o.cell_probes;
+  ctx.pooled_inputs = o.pooled_inputs;
+  ctx.threads = o.threads;
+  const auto rank =
+      rank_candidates(cands, cur.resid, res.folds, o.permutations, o.seed + 1000003ULL * round, o.alpha, &ctx);
+  res.rankings.push_back(rank);
+  last_rank = rank;
+  return rank;
+}
+
+// The significant candidates, strongest first, up to o.contenders, given their
+// forms; the names given.
+std::vector<std::string> LoopSearch::give_forms(const std::vector<CandidateResult>& rank,
+                                                const std::vector<Candidate>& cands, double thr, RoundChoice& ch) {
+  int tried = 0;
+  std::vector<std::string> given;  // candidates given their forms this round
+  for (const auto& c : rank) {
+    if (!c.significant || tried >= o.contenders) break;
+    if (is_identity(c.name)) continue;
+    const Candidate* cand = nullptr;
+    for (const auto& k : cands)
+      if (k.name == c.name) cand = &k;
+    if (!cand) throw std::logic_error("loop: ranked column '" + c.name + "' is not a candidate");
+    // A column that is a function of a model input is left to that input
+    // when the input is significant itself: the data cannot tell them apart,
+    // and the input needs no undeclared variable.
+    if (!cand->confounded_with.empty() && input_significant(rank, cand->confounded_with)) continue;
+    ++tried;
+    given.push_back(c.name);
+    consider(c, *cand, true, thr, ch);
+  }
+  return given;
+}
+
+// Candidate c given every form; the best kept form over the candidates wins.
+void LoopSearch::consider(const CandidateResult& c, const Candidate& cand, bool screened, double thr,
+                          RoundChoice& ch) {
+  const auto prog = [&](const std::string& m) { progress(o, m); };
+  const auto trials =
+      try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by, c.cell_group,
+                &trials_done);
+  const int keep = choose_form(trials, res.folds);
+  Step s;
+  s.variable = c.name;
+  s.p_permutation = c.p_value;
+  s.threshold = thr;
+  s.probe = c.probe;
+  s.cls = cand.kind == "column" && cand.confounded_with.empty() ? "undeclared variable" : "base model";
+  if (!cand.confounded_with.empty()) s.meaning_note = "confounded with " + cand.confounded_with;
+  for (const auto& t : trials)
+    s.tried.push_back({t.name + " (F-test p " + fmt(t.p_value, 3) + ", " + std::to_string(t.q) + " parameters" +
+                           (t.passed ? "" : ", failed a gate") + ")",
+                       t.cv.rms});
+  if (keep < 0) {
+    if (screened)
+      res.screened.push_back(c.name + " (round " + std::to_string(round + 1) + ", p_perm " + fmt(c.p_value, 3) +
+                             ", probe " + c.probe + "; no form passed the F test, lowered the held-out error and "
+                             "reached the minimum effect " + fmt(o.min_effect) + " sigma)");
+    return;
+  }
+  if (s.cls == "undeclared variable") ch.kept.push_back({c.name, trials[keep].cv});
+  const bool better = !ch.found || trials[keep].cv.rms < ch.best_form.cv.rms;
+  if (better) {
+    ch.best_form = trials[keep];
+    ch.best_step = s;
+    ch.found = true;
+  }
+}
+
+// Collinear naming (aliases.hpp): the columns explaining the same
+// structure as the chosen column's effect are given their forms too.
+void LoopSearch::give_aliases(const std::vector<CandidateResult>& rank, const std::vector<Candidate>& cands,
+                              const std::vector<std::string>& given, double thr, RoundChoice& ch) {
+  std::vector<double> e(d.rows.size());
+  for (size_t i = 0; i < e.size(); ++i) e[i] = ch.best_form.cv.pred[i] - cur.pred[i];
+  std::vector<std::string> skip = given;
+  for (const auto& m : spec.effects) skip.push_back(m.variable);
+  for (const auto& a : alias_columns(cands, e, res.folds.block, ch.best_step.variable, skip)) {
+    progress(o, "alias of " + ch.best_step.variable + ": " + a.name + " (explained share " + fmt(a.share, 3) + ")");
+    CandidateResult cr;
+    cr.name = a.name;
+    for (const auto& k : rank)
+      if (k.name == a.name) cr = k;
+    for (const auto& k : cands)
+      if (k.name == a.name) consider(cr, k, false, thr, ch);
+  }
+  // Columns whose kept form the held-out data cannot tell from the winner's.
+  for (const auto& [name, cv] : ch.kept)
+    if (name != ch.best_step.variable &&
+        cv.rms * cv.rms - ch.best_form.cv.rms * ch.best_form.cv.rms <= mse_diff_se(cv, ch.best_form.cv, res.folds))
+      ch.best_step.aliased_with.push_back(name + " (held-out RMS " + fmt(cv.rms, 4) + " N)");
+}
+
+// Why the round added no step.
+std::string LoopSearch::no_step_reason(const std::vector<CandidateResult>& rank, double thr) const {
+  bool any_sig = false;
+  for (const auto& c : rank) any_sig = any_sig || (c.significant && !is_identity(c.name));
+  std::ostringstream m;
+  if (!any_sig) {
+    m << "no candidate significant at the Bonferroni threshold p <= " << fmt(thr, 3) << " (alpha "
+      << fmt(o.alpha) << " / " << rank.size() << " candidates) with a positive cross-validated error reduction";
+    if (!rank.empty()) m << "; smallest p: " << rank.front().name << " p = " << fmt(rank.front().p_value, 3);
+  } else {
+    m << "significant candidates remain, but no effect for them passed the F test at p <= " << fmt(thr, 3)
+      << ", lowered the held-out error and reached the minimum effect (see screened)";
+  }
+  return m.str();
+}
+
+// The round's winner becomes the current model.
+void LoopSearch::add_step(RoundChoice& ch) {
+  const FormTrial& best_form = ch.best_form;
+  Step& s = ch.best_step;
+  s.effect = best_form.name;
+  s.meaning = best_form.meaning;
+  s.channel = best_form.channel;
+  s.p_value = best_form.p_value;
+  s.rms_before = cur.rms;
+  s.max_before = cur.max_abs;
+  for (size_t k = spec.effects.size(); k < best_form.spec.effects.size(); ++k) s.added.push_back(best_form.spec.effects[k]);
+  if (best_form.spec.bending_linear != spec.bending_linear) { Effect bt; bt.kind = EffectKind::bending_tension; s.added.push_back(bt); }
+  spec = best_form.spec;
+  cur = best_form.cv;
+  cur_joint = best_form.joint;
+  memo.remember(spec, cur, cur_joint);
+  cur_fit = memo.fit(spec);
+  s.rms_after = cur.rms;
+  s.max_after = cur.max_abs;
+  steps.push_back(s);
+}
+
+// Backfitting: an effect that is no longer needed given the others (its F
+// test given all the others above the threshold, or the held-out error no
+// worse without it) is removed, the weakest first, and the forward search
+// resumes; so an early nuisance term can give way to a later variable.
+// A removal that raises the held-out error by more than one standard error
+// is never made.  False: nothing removed.
+bool LoopSearch::backfit() {
+  const double thr = o.alpha / std::max<size_t>(1, res.candidates.size());
+  int drop = -1;
+  double worst = -1;
+  for (size_t j = 0; j < steps.size(); ++j) {
+    const ModelSpec t = without(spec, steps[j], o.bending_linear);
+    const double p = f_test(memo.joint(t), cur_joint);
+    const CvResult cv = memo.cv(t);
+    // Never a removal that costs held-out error beyond one standard error of
+    // the difference: the F test is on the joint fit, the held-out error on
+    // the fits the model predicts with (a force channel's bending lines are
+    // refitted once, not jointly), and a redundant alias can carry the fit.
+    const bool costs = cv.rms * cv.rms - cur.rms * cur.rms > mse_diff_se(cv, cur, res.folds);
+    if ((p > thr || cv.rms <= cur.rms) && !costs && p > worst) worst = p, drop = static_cast<int>(j);
+  }
+  if (drop < 0) return false;
+  progress(o, "backfitting: " + steps[drop].variable + " removed (p " + fmt(worst, 3) + " given the others)");
+  res.removed.push_back(steps[drop].variable + " (" + steps[drop].effect + "; F test p " + fmt(worst, 3) +
+                        " given the later effects)");
+  spec = without(spec, steps[drop], o.bending_linear);
+  steps.erase(steps.begin() + drop);
+  cur = memo.cv(spec);
+  cur_fit = memo.fit(spec);
+  cur_joint = memo.joint(spec);
+  return true;
+}
+
+// Report order: undeclared variables first, then base-model terms, each by its
+// contribution (held-out MSE lost when it alone is removed), not by the order found.
+void LoopSearch::order_steps() {
+  for (auto& s : steps) {
+    const ModelSpec t = without(spec, s, o.bending_linear);
+    const CvResult cv = memo.cv(t);
+    s.contribution = cv.rms * cv.rms - cur.rms * cur.rms;
+    s.p_value = f_test(memo.joint(t), cur_joint);
+    s.params = new_params(memo.fit(t), cur_fit);
+    if (s.effect.rfind("generic", 0) == 0)
+      s.sign = sign_text(s, s.variable);
+  }
+  std::stable_sort(steps.begin(), steps.end(), [](const Step& a, const Step& b) {
+    if (a.cls != b.cls) return a.cls == "undeclared variable";
+    return a.contribution > b.contribution;
+  });
+}
+
+// The held-out errors of the base model and after each step in report order.
+void LoopSearch::cv_by_step() {
+  ModelSpec t;
+  t.bending_linear = o.bending_linear;
+  CvResult prev = base_cv;
+  res.cv.push_back(base_cv);
+  for (auto& s : steps) {
+    for (const auto& e : s.added)
+      if (e.kind == EffectKind::bending_tension) t.bending_linear = true;
+      else t.effects.push_back(e);
+    const CvResult cv = &s == &steps.back() ? cur : memo.cv(t);
+    s.rms_before = prev.rms, s.max_before = prev.max_abs;
+    s.rms_after = cv.rms, s.max_after = cv.max_abs;
+    res.cv.push_back(cv);
+    prev = cv;
+  }
+}
+
 }  // namespace
 
 LoopResult run_loop(const Design& d, const LoopOptions& o) {
@@ -232,217 +520,23 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
   res.folds = make_folds(d, o.cv, o.folds);
   res.cv_mode = res.folds.mode;
   const double sigma = res.noise.exact || !std::isfinite(res.noise.sigma_N) ? 0.0 : res.noise.sigma_N;
-  ModelSpec spec;
-  spec.bending_linear = o.bending_linear;
   progress(o, "base model: cross-validation (" + std::to_string(d.rows.size()) + " rows)");
-  FitMemo memo(d, res.folds);
-  TrialCache trials_done;  // the forms' fits, by their arithmetic (forms.hpp)
-  const CvResult base_cv = memo.cv(spec);
-  CvResult cur = base_cv;
-  Fit cur_fit = memo.fit(spec);
-  JointFit cur_joint = memo.joint(spec);
-  std::vector<CandidateResult> last_rank;
-  std::vector<Step> steps;
-  const auto prog = [&](const std::string& m) { progress(o, m); };
-  int round = 0, backfits = 0;
-  for (;;) {
-    // Forward: re-screen the residual of the current model after every step.
-    bool stopped = false;
-    while (static_cast<int>(steps.size()) < o.max_steps) {
-      progress(o, "round " + std::to_string(round + 1) + ": ranking candidates (held-out RMS " + fmt(cur.rms, 4) + " N)");
-      const auto cands = make_candidates(d, cur.pred);
-      if (round == 0) res.candidates = cands;
-      ScreenContext ctx = screen_context(d, cur_fit, cur.pred);
-      ctx.one_cell = o.cell_probes;
-      ctx.pooled_inputs = o.pooled_inputs;
-      ctx.threads = o.threads;
-      const auto rank =
-          rank_candidates(cands, cur.resid, res.folds, o.permutations, o.seed + 1000003ULL * round, o.alpha, &ctx);
-      res.rankings.push_back(rank);
-      last_rank = rank;
-      const double thr = o.alpha / std::max<size_t>(1, rank.size());
-      // The strongest few significant candidates are each given their best form;
-      // the one whose form predicts held-out data best is added (the rank order
-      // of the screen does not decide between them).
-      Step best_step;
-      FormTrial best_form;
-      bool found = false;
-      std::vector<std::pair<std::string, CvResult>> kept;  // column -> its kept form's held-out result
-      // Candidate c given every form; the best kept form over the candidates wins.
-      const auto consider = [&](const CandidateResult& c, const Candidate& cand, bool screened) {
-        const auto trials =
-            try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by, c.cell_group,
-                      &trials_done);
-        const int keep = choose_form(trials, res.folds);
-        Step s;
-        s.variable = c.name;
-        s.p_permutation = c.p_value;
-        s.threshold = thr;
-        s.probe = c.probe;
-        s.cls = cand.kind == "column" && cand.confounded_with.empty() ? "undeclared variable" : "base model";
-        if (!cand.confounded_with.empty()) s.meaning_note = "confounded with " + cand.confounded_with;
-        for (const auto& t : trials)
-          s.tried.push_back({t.name + " (F-test p " + fmt(t.p_value, 3) + ", " + std::to_string(t.q) + " parameters" +
-                                 (t.passed ? "" : ", failed a gate") + ")",
-                             t.cv.rms});
-        if (keep < 0) {
-          if (screened)
-            res.screened.push_back(c.name + " (round " + std::to_string(round + 1) + ", p_perm " + fmt(c.p_value, 3) +
-                                   ", probe " + c.probe + "; no form passed the F test, lowered the held-out error and "
-                                   "reached the minimum effect " + fmt(o.min_effect) + " sigma)");
-          return;
-        }
-        if (s.cls == "undeclared variable") kept.push_back({c.name, trials[keep].cv});
-        const bool better = !found || trials[keep].cv.rms < best_form.cv.rms;
-        if (better) {
-          best_form = trials[keep];
-          best_step = s;
-          found = true;
-        }
-      };
-      int tried = 0;
-      std::vector<std::string> given;  // candidates given their forms this round
-      for (const auto& c : rank) {
-        if (!c.significant || tried >= o.contenders) break;
-        if (is_identity(c.name)) continue;
-        const Candidate* cand = nullptr;
-        for (const auto& k : cands)
-          if (k.name == c.name) cand = &k;
-        if (!cand) throw std::logic_error("loop: ranked column '" + c.name + "' is not a candidate");
-        // A column that is a function of a model input is left to that input
-        // when the input is significant itself: the data cannot tell them apart,
-        // and the input needs no undeclared variable.
-        if (!cand->confounded_with.empty() && input_significant(rank, cand->confounded_with)) continue;
-        ++tried;
-        given.push_back(c.name);
-        consider(c, *cand, true);
-      }
-      // Collinear naming (aliases.hpp): the columns explaining the same
-      // structure as the chosen column's effect are given their forms too.
-      if (found && best_step.cls == "undeclared variable") {
-        std::vector<double> e(d.rows.size());
-        for (size_t i = 0; i < e.size(); ++i) e[i] = best_form.cv.pred[i] - cur.pred[i];
-        std::vector<std::string> skip = given;
-        for (const auto& m : spec.effects) skip.push_back(m.variable);
-        for (const auto& a : alias_columns(cands, e, res.folds.block, best_step.variable, skip)) {
-          progress(o, "alias of " + best_step.variable + ": " + a.name + " (explained share " + fmt(a.share, 3) + ")");
-          CandidateResult cr;
-          cr.name = a.name;
-          for (const auto& k : rank)
-            if (k.name == a.name) cr = k;
-          for (const auto& k : cands)
-            if (k.name == a.name) consider(cr, k, false);
-        }
-        // Columns whose kept form the held-out data cannot tell from the winner's.
-        for (const auto& [name, cv] : kept)
-          if (name != best_step.variable &&
-              cv.rms * cv.rms - best_form.cv.rms * best_form.cv.rms <= mse_diff_se(cv, best_form.cv, res.folds))
-            best_step.aliased_with.push_back(name + " (held-out RMS " + fmt(cv.rms, 4) + " N)");
-      }
-      ++round;
-      if (!found) {
-        bool any_sig = false;
-        for (const auto& c : rank) any_sig = any_sig || (c.significant && !is_identity(c.name));
-        std::ostringstream m;
-        if (!any_sig) {
-          m << "no candidate significant at the Bonferroni threshold p <= " << fmt(thr, 3) << " (alpha "
-            << fmt(o.alpha) << " / " << rank.size() << " candidates) with a positive cross-validated error reduction";
-          if (!rank.empty()) m << "; smallest p: " << rank.front().name << " p = " << fmt(rank.front().p_value, 3);
-        } else {
-          m << "significant candidates remain, but no effect for them passed the F test at p <= " << fmt(thr, 3)
-            << ", lowered the held-out error and reached the minimum effect (see screened)";
-        }
-        res.stopped_because = m.str();
-        stopped = true;
-        break;
-      }
-      Step& s = best_step;
-      s.effect = best_form.name;
-      s.meaning = best_form.meaning;
-      s.channel = best_form.channel;
-      s.p_value = best_form.p_value;
-      s.rms_before = cur.rms;
-      s.max_before = cur.max_abs;
-      for (size_t k = spec.effects.size(); k < best_form.spec.effects.size(); ++k) s.added.push_back(best_form.spec.effects[k]);
-      if (best_form.spec.bending_linear != spec.bending_linear) { Effect bt; bt.kind = EffectKind::bending_tension; s.added.push_back(bt); }
-      spec = best_form.spec;
-      cur = best_form.cv;
-      cur_joint = best_form.joint;
-      memo.remember(spec, cur, cur_joint);
-      cur_fit = memo.fit(spec);
-      s.rms_after = cur.rms;
-      s.max_after = cur.max_abs;
-      steps.push_back(s);
-    }
-    if (!stopped) res.stopped_because = "maximum number of steps (" + std::to_string(o.max_steps) + ")";
-    // Backfitting: an effect that is no longer needed given the others (its F
-    // test given all the others above the threshold, or the held-out error no
-    // worse without it) is removed, the weakest first, and the forward search
-    // resumes; so an early nuisance term can give way to a later variable.
-    // A removal that raises the held-out error by more than one standard error
-    // is never made.
-    if (steps.empty() || backfits >= 2) break;
-    ++backfits;
-    const double thr = o.alpha / std::max<size_t>(1, res.candidates.size());
-    int drop = -1;
-    double worst = -1;
-    for (size_t j = 0; j < steps.size(); ++j) {
-      const ModelSpec t = without(spec, steps[j], o.bending_linear);
-      const double p = f_test(memo.joint(t), cur_joint);
-      const CvResult cv = memo.cv(t);
-      // Never a removal that costs held-out error beyond one standard error of
-      // the difference: the F test is on the joint fit, the held-out error on
-      // the fits the model predicts with (a force channel's bending lines are
-      // refitted once, not jointly), and a redundant alias can carry the fit.
-      const bool costs = cv.rms * cv.rms - cur.rms * cur.rms > mse_diff_se(cv, cur, res.folds);
-      if ((p > thr || cv.rms <= cur.rms) && !costs && p > worst) worst = p, drop = static_cast<int>(j);
-    }
-    if (drop < 0) break;
-    progress(o, "backfitting: " + steps[drop].variable + " removed (p " + fmt(worst, 3) + " given the others)");
-    res.removed.push_back(steps[drop].variable + " (" + steps[drop].effect + "; F test p " + fmt(worst, 3) +
-                          " given the later effects)");
-    spec = without(spec, steps[drop], o.bending_linear);
-    steps.erase(steps.begin() + drop);
-    cur = memo.cv(spec);
-    cur_fit = memo.fit(spec);
-    cur_joint = memo.joint(spec);
+  LoopSearch s(d, o, res, sigma);
+  for (;;) {  // forward, then backfitting (at most twice) and forward again
+    s.forward();
+    if (s.steps.empty() || s.backfits >= 2) break;
+    ++s.backfits;
+    if (!s.backfit()) break;
   }
-  // Report order: undeclared variables first, then base-model terms, each by its
-  // contribution (held-out MSE lost when it alone is removed), not by the order found.
-  if (!steps.empty()) {
-    for (auto& s : steps) {
-      const ModelSpec t = without(spec, s, o.bending_linear);
-      const CvResult cv = memo.cv(t);
-      s.contribution = cv.rms * cv.rms - cur.rms * cur.rms;
-      s.p_value = f_test(memo.joint(t), cur_joint);
-      s.params = new_params(memo.fit(t), cur_fit);
-      if (s.effect.rfind("generic", 0) == 0)
-        s.sign = sign_text(s, s.variable);
-    }
-    std::stable_sort(steps.begin(), steps.end(), [](const Step& a, const Step& b) {
-      if (a.cls != b.cls) return a.cls == "undeclared variable";
-      return a.contribution > b.contribution;
-    });
-    ModelSpec t;
-    t.bending_linear = o.bending_linear;
-    CvResult prev = base_cv;
-    res.cv.push_back(base_cv);
-    for (auto& s : steps) {
-      for (const auto& e : s.added)
-        if (e.kind == EffectKind::bending_tension) t.bending_linear = true;
-        else t.effects.push_back(e);
-      const CvResult cv = &s == &steps.back() ? cur : memo.cv(t);
-      s.rms_before = prev.rms, s.max_before = prev.max_abs;
-      s.rms_after = cv.rms, s.max_after = cv.max_abs;
-      res.cv.push_back(cv);
-      prev = cv;
-    }
+  if (!s.steps.empty()) {
+    s.order_steps();
+    s.cv_by_step();
   } else {
-    res.cv.push_back(cur);
+    res.cv.push_back(s.cur);
   }
-  res.steps = steps;
-  res.final_fit = cur_fit;
-  conclude(res, o, last_rank);
+  res.steps = s.steps;
+  res.final_fit = s.cur_fit;
+  conclude(res, o, s.last_rank);
   return res;
 }
 

@@ -181,15 +181,50 @@ std::vector<std::vector<double>> spline_basis(const std::vector<double>& x_in, i
   return B;
 }
 
-}  // namespace
+// The per-row values effect k of the fit reads (z-scores, transformed values,
+// levels, spline bases, groups); whether it has a force channel.
+void effect_values(const Design& d, const Effect& e, size_t k, Fit& f) {
+  const EffectKind kk = e.kind;
+  if (kk == EffectKind::drift || kk == EffectKind::generic_linear || kk == EffectKind::generic_saturating ||
+      kk == EffectKind::generic_linear_by || kk == EffectKind::bending_linear)
+    f.drift_z[k] = d.zscore(e.variable);
+  if (kk == EffectKind::generic_log || kk == EffectKind::generic_exp) {
+    std::vector<double> x = d.values(e.variable);
+    double lo = INFINITY;
+    for (double v : x) lo = std::min(lo, v);
+    for (double& v : x) v = kk == EffectKind::generic_log ? std::log(v) : 1 - std::exp(-(v - lo) / e.lambda_mm);
+    if (kk == EffectKind::generic_log) {  // z-score of log x
+      double mm = 0, q = 0;
+      for (double v : x) mm += v;
+      mm /= x.size();
+      for (double v : x) q += (v - mm) * (v - mm);
+      const double sd = std::sqrt(q / std::max<size_t>(1, x.size() - 1));
+      for (double& v : x) v = sd > 0 ? (v - mm) / sd : 0.0;
+    }
+    f.drift_z[k] = x;
+  }
+  if (kk == EffectKind::generic_step) {
+    std::vector<double> x = d.values(e.variable);
+    for (double& v : x) v = v > e.lambda_mm ? 1.0 : 0.0;
+    f.drift_z[k] = x;
+  }
+  if (kk == EffectKind::categorical || kk == EffectKind::categorical_by)
+    f.level[k] = d.levels(e.variable, &f.level_names[k]);
+  if ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && e.n_basis > 0)
+    f.basis[k] = spline_basis(d.values(e.variable), e.n_basis);
+  if (kk == EffectKind::force_offset) {
+    f.has_force = true;
+    if (e.n_basis == 0) f.level[k] = d.levels(e.variable, &f.level_names[k]);
+  }
+  if (kk == EffectKind::generic_linear_by || kk == EffectKind::categorical_by ||
+      ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && !e.by.empty())) {
+    int n = 0;
+    f.group[k] = d.groups(e.by, &n);
+  }
+}
 
-Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& train_in) {
-  std::vector<int> train = train_in;
-  if (train.empty())
-    for (size_t i = 0; i < d.rows.size(); ++i) train.push_back(static_cast<int>(i));
-  Fit f;
-  f.spec = spec;
-  const Layout L = layout(d, spec);
+// Every effect's values; the bending-channel effects' indices.
+std::vector<int> effects_values(const Design& d, const ModelSpec& spec, Fit& f) {
   f.drift_z.assign(spec.effects.size(), {});
   f.level.assign(spec.effects.size(), {});
   f.level_names.assign(spec.effects.size(), {});
@@ -197,59 +232,31 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   f.basis.assign(spec.effects.size(), {});
   std::vector<int> bending_effects;
   for (size_t k = 0; k < spec.effects.size(); ++k) {
-    const Effect& e = spec.effects[k];
-    const EffectKind kk = e.kind;
-    if (kk == EffectKind::drift || kk == EffectKind::generic_linear || kk == EffectKind::generic_saturating ||
-        kk == EffectKind::generic_linear_by || kk == EffectKind::bending_linear)
-      f.drift_z[k] = d.zscore(e.variable);
-    if (kk == EffectKind::generic_log || kk == EffectKind::generic_exp) {
-      std::vector<double> x = d.values(e.variable);
-      double lo = INFINITY;
-      for (double v : x) lo = std::min(lo, v);
-      for (double& v : x) v = kk == EffectKind::generic_log ? std::log(v) : 1 - std::exp(-(v - lo) / e.lambda_mm);
-      if (kk == EffectKind::generic_log) {  // z-score of log x
-        double mm = 0, q = 0;
-        for (double v : x) mm += v;
-        mm /= x.size();
-        for (double v : x) q += (v - mm) * (v - mm);
-        const double sd = std::sqrt(q / std::max<size_t>(1, x.size() - 1));
-        for (double& v : x) v = sd > 0 ? (v - mm) / sd : 0.0;
-      }
-      f.drift_z[k] = x;
-    }
-    if (kk == EffectKind::generic_step) {
-      std::vector<double> x = d.values(e.variable);
-      for (double& v : x) v = v > e.lambda_mm ? 1.0 : 0.0;
-      f.drift_z[k] = x;
-    }
-    if (kk == EffectKind::categorical || kk == EffectKind::categorical_by)
-      f.level[k] = d.levels(e.variable, &f.level_names[k]);
-    if ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && e.n_basis > 0)
-      f.basis[k] = spline_basis(d.values(e.variable), e.n_basis);
-    if (kk == EffectKind::force_offset) {
-      f.has_force = true;
-      if (e.n_basis == 0) f.level[k] = d.levels(e.variable, &f.level_names[k]);
-    }
-    if (kk == EffectKind::generic_linear_by || kk == EffectKind::categorical_by ||
-        ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && !e.by.empty())) {
-      int n = 0;
-      f.group[k] = d.groups(e.by, &n);
-    }
-    if (kk == EffectKind::bending_linear) bending_effects.push_back(static_cast<int>(k));
+    effect_values(d, spec.effects[k], k, f);
+    if (spec.effects[k].kind == EffectKind::bending_linear) bending_effects.push_back(static_cast<int>(k));
   }
-  const bool linear_bending = spec.bending_linear || spec.has(EffectKind::bending_tension);
-  if (bending_effects.empty()) fit_bending(d, train, linear_bending, f);
-  else fit_bending_channels(d, train, linear_bending, bending_effects, f);
+  return bending_effects;
+}
+
+// The rows of the friction fit: the training fixed-pin rows of a pin with a
+// bending line (mu_rows, for the initial mu), and with a force-channel effect
+// the rotating rows too (they carry no friction parameter, only the force
+// channel's).
+std::vector<int> friction_rows(const Design& d, const std::vector<int>& train, const Fit& f,
+                               std::vector<int>& mu_rows) {
   std::vector<int> rows;
   for (int i : train)
     if (!d.rows[i].rotating && !std::isnan(f.b0[d.rows[i].pin])) rows.push_back(i);
-  std::vector<int> mu_rows = rows;  // for the initial mu
-  // A force-channel effect acts on the rotating rows too: they join the fit
-  // (they carry no friction parameter, only the force channel's).
+  mu_rows = rows;
   if (f.has_force)
     for (int i : train)
       if (d.rows[i].rotating && !std::isnan(f.b0[d.rows[i].pin])) rows.push_back(i);
-  // Initial mu per cell and direction from Eq. (5.1) row by row.
+  return rows;
+}
+
+// Initial mu per cell and direction from Eq. (5.1) row by row; f.seen: the mu
+// parameters with a row.
+Eigen::VectorXd initial_mu(const Design& d, const Layout& L, const std::vector<int>& mu_rows, Fit& f) {
   Eigen::VectorXd th = Eigen::VectorXd::Zero(L.n);
   std::vector<double> sum(L.n, 0.0), cnt(L.n, 0.0);
   for (int i : mu_rows) {
@@ -267,15 +274,12 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   for (size_t c = 0; c < d.cells.size(); ++c)
     for (int k : {L.mu_rd[c], L.mu_td[c]})
       if (k >= 0 && cnt[k] == 0) f.seen[k] = 0;
-  const int n = static_cast<int>(rows.size()), p = L.n;
-  auto resid = [&](const Eigen::VectorXd& t) {
-    Eigen::VectorXd r(n);
-    for (int k = 0; k < n; ++k) r[k] = d.rows[rows[k]].y - predict_row(d, f, L, t, rows[k], nullptr);
-    return r;
-  };
-  auto row = [&](const Eigen::VectorXd& t, int k) { return d.rows[rows[k]].y - predict_row(d, f, L, t, rows[k], nullptr); };
-  // Which parameters each row may read: the Jacobians are evaluated there only.
-  RowReads reads;
+  return th;
+}
+
+// Which parameters each row may read: the Jacobians are evaluated there only.
+void add_row_reads(const Design& d, const Fit& f, const Layout& L, const std::vector<int>& rows, RowReads& reads) {
+  const int n = static_cast<int>(rows.size());
   reads.reserve(n, 4 * static_cast<size_t>(n));
   std::vector<int> cols;
   for (int k = 0; k < n; ++k) {
@@ -283,17 +287,62 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
     detail::row_reads(d, f, L, rows[k], cols);
     reads.push_row(cols);
   }
+}
+
+// The bending lines' offsets on the training rotating rows: the force
+// channel's prediction with the parameters th.
+std::vector<double> force_channel_offsets(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th,
+                                          const std::vector<int>& train) {
+  std::vector<double> off(d.rows.size(), 0.0);
+  for (int i : train)
+    if (d.rows[i].rotating && !std::isnan(f.b0[d.rows[i].pin]))
+      off[i] = predict_row(d, f, L, th, i, nullptr) - d.rows[i].fback - f.b0[d.rows[i].pin] -
+               f.b1[d.rows[i].pin] * d.rows[i].fback;
+  return off;
+}
+
+// Standard errors: s^2 (J^T J)^-1 at the solution.
+void standard_errors(const Design& d, const ModelSpec& spec, const Layout& L, const Eigen::MatrixXd& J, double sse,
+                     int n, int p, Fit& f) {
+  const Eigen::VectorXd& th = f.theta;
+  const double s2 = n > p ? sse / (n - p) : 0.0;
+  const Eigen::MatrixXd cov = (J.transpose() * J).completeOrthogonalDecomposition().pseudoInverse() * s2;
+  const auto names = detail::friction_names(d, spec, L, f.level_names);
+  for (int j = 0; j < p; ++j) f.params.push_back({names[j], th[j], std::sqrt(std::max(0.0, cov(j, j))), "-"});
+}
+
+}  // namespace
+
+Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& train_in) {
+  std::vector<int> train = train_in;
+  if (train.empty())
+    for (size_t i = 0; i < d.rows.size(); ++i) train.push_back(static_cast<int>(i));
+  Fit f;
+  f.spec = spec;
+  const Layout L = layout(d, spec);
+  const std::vector<int> bending_effects = effects_values(d, spec, f);
+  const bool linear_bending = spec.bending_linear || spec.has(EffectKind::bending_tension);
+  if (bending_effects.empty()) fit_bending(d, train, linear_bending, f);
+  else fit_bending_channels(d, train, linear_bending, bending_effects, f);
+  std::vector<int> mu_rows;
+  const std::vector<int> rows = friction_rows(d, train, f, mu_rows);
+  Eigen::VectorXd th = initial_mu(d, L, mu_rows, f);
+  const int n = static_cast<int>(rows.size()), p = L.n;
+  auto resid = [&](const Eigen::VectorXd& t) {
+    Eigen::VectorXd r(n);
+    for (int k = 0; k < n; ++k) r[k] = d.rows[rows[k]].y - predict_row(d, f, L, t, rows[k], nullptr);
+    return r;
+  };
+  auto row = [&](const Eigen::VectorXd& t, int k) { return d.rows[rows[k]].y - predict_row(d, f, L, t, rows[k], nullptr); };
+  RowReads reads;
+  add_row_reads(d, f, L, rows, reads);
   Eigen::MatrixXd J;
   double sse = 0;
   if (n > 0) sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads);
   if (n > 0 && f.has_force && bending_effects.empty()) {
     // The bending lines refitted to the rotating rows less the force channel,
     // then the friction and force parameters again (one alternation).
-    std::vector<double> off(d.rows.size(), 0.0);
-    for (int i : train)
-      if (d.rows[i].rotating && !std::isnan(f.b0[d.rows[i].pin]))
-        off[i] = predict_row(d, f, L, th, i, nullptr) - d.rows[i].fback - f.b0[d.rows[i].pin] -
-                 f.b1[d.rows[i].pin] * d.rows[i].fback;
+    const std::vector<double> off = force_channel_offsets(d, f, L, th, train);
     f.params.clear();
     fit_bending(d, train, linear_bending, f, &off);
     sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads);
@@ -302,13 +351,7 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   f.rss = sse;
   f.n_fixed = n;
   f.n_friction_params = p;
-  // Standard errors: s^2 (J^T J)^-1 at the solution.
-  if (n > 0 && p > 0) {
-    const double s2 = n > p ? sse / (n - p) : 0.0;
-    const Eigen::MatrixXd cov = (J.transpose() * J).completeOrthogonalDecomposition().pseudoInverse() * s2;
-    const auto names = detail::friction_names(d, spec, L, f.level_names);
-    for (int j = 0; j < p; ++j) f.params.push_back({names[j], th[j], std::sqrt(std::max(0.0, cov(j, j))), "-"});
-  }
+  if (n > 0 && p > 0) standard_errors(d, spec, L, J, sse, n, p, f);
   return f;
 }
 

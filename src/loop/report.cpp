@@ -139,11 +139,22 @@ std::string engineer_summary(const Design& d, const LoopResult& r, const Frictio
   return m.str();
 }
 
-}  // namespace
+// A column name goes into a file name and a shell command: only [A-Za-z0-9_.-], the rest as '_'.
+std::string safe(const std::string& name) {
+  std::string t = name;
+  for (char& ch : t)
+    if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.')) ch = '_';
+  return t;
+}
 
-std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::string& out,
-                               const std::string& figdir, const std::string& gnuplot, const std::string& exports,
-                               const ExportOptions& eo) {
+// The figures drawn, and those gnuplot could not draw (a warning, repeated in loop.md).
+struct Figures {
+  std::vector<std::string> drawn, failed;
+  void add(bool ok, const std::string& svg) { (ok ? drawn : failed).push_back(svg); }
+};
+
+// The tables and loop_summary.json.
+void write_tables(const Design& d, const LoopResult& r, const std::string& out) {
   fs::create_directories(out + "/tables");
   fs::create_directories(out + "/figures");
   candidates_table(r).save(out + "/tables/candidates.csv");
@@ -152,27 +163,23 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
   residuals_table(d, r).save(out + "/tables/residuals.csv");
   problems_table(*d.data).save(out + "/tables/problems.csv");
   write_file_atomic(out + "/loop_summary.json", summary_json(r));
-  std::vector<std::string> figs, failed;  // a figure gnuplot could not draw is a warning, repeated in loop.md
-  // A column name goes into a file name and a shell command: only [A-Za-z0-9_.-], the rest as '_'.
-  auto safe = [](const std::string& name) {
-    std::string t = name;
-    for (char& ch : t)
-      if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.')) ch = '_';
-    return t;
-  };
-  if (!figdir.empty()) {
-    for (size_t k = 0; k < r.candidates.size(); ++k) {
-      const auto& c = r.candidates[k];
-      const std::string svg = out + "/figures/resid_" + safe(c.name) + ".svg";
-      std::string e = "outfile='" + svg + "'; datafile='" + out + "/tables/residuals.csv'; figdir='" + figdir +
-                      "'; xcol='" + std::to_string(6 + k) + "'; xname='" + safe(c.name) + "'";
-      const std::string cmd = gnuplot + " -e \"" + e + "\" '" + figdir + "/loop_residual.gp'";
-      if (std::system(cmd.c_str()) == 0) figs.push_back("figures/resid_" + safe(c.name) + ".svg");
-      else failed.push_back("figures/resid_" + safe(c.name) + ".svg");
-    }
+}
+
+// The residuals against each candidate (gnuplot, figdir/loop_residual.gp).
+void residual_figures(const LoopResult& r, const std::string& out, const std::string& figdir,
+                      const std::string& gnuplot, Figures& figs) {
+  for (size_t k = 0; k < r.candidates.size(); ++k) {
+    const auto& c = r.candidates[k];
+    const std::string svg = out + "/figures/resid_" + safe(c.name) + ".svg";
+    std::string e = "outfile='" + svg + "'; datafile='" + out + "/tables/residuals.csv'; figdir='" + figdir +
+                    "'; xcol='" + std::to_string(6 + k) + "'; xname='" + safe(c.name) + "'";
+    const std::string cmd = gnuplot + " -e \"" + e + "\" '" + figdir + "/loop_residual.gp'";
+    figs.add(std::system(cmd.c_str()) == 0, "figures/resid_" + safe(c.name) + ".svg");
   }
-  std::ostringstream m;
-  const FrictionModel fm = identify_friction(d, r);
+}
+
+// The evidence's opening: the data read, the base model, the noise, the folds.
+void evidence_header(std::ostringstream& m, const Design& d, const LoopResult& r, const FrictionModel& fm) {
   m << "# Closing the loop: " << d.data->path << "\n\n";
   m << engineer_summary(d, r, fm) << "\n# Evidence\n\nHow the loop reached the summary above: the data read, "
        "the base model, each step with its permutation p-value against the Bonferroni threshold and its held-out "
@@ -196,6 +203,10 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
     if (low.rfind("bending force:", 0) == 0 || low.rfind("pressure maps:", 0) == 0) continue;
     m << "- " << n << ".\n";
   }
+}
+
+// The steps table, each step's sign and aliases, and why the search stopped.
+void steps_section(std::ostringstream& m, const LoopResult& r) {
   m << "\n## Steps\n\nUndeclared variables (columns of the data) first, then terms adjusting the base model's own "
        "inputs, each by its contribution; p is the F test of the effect given all the others.\n\n"
        "| step | variable | class | channel | effect | p | threshold | RMS before (N) | RMS after (N) | max before (N) | max "
@@ -219,29 +230,35 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
       m << " (each column's own best form, within one standard error): these columns explain the same structure.\n";
     }
   m << "\nStopped because: " << r.stopped_because << ".\n";
-  if (!r.remaining.empty()) {
-    m << "\nNot at the noise level; strongest remaining candidates:\n\n";
-    for (const auto& u : r.remaining) m << "- " << u << "\n";
-  }
-  if (!r.base_terms.empty()) {
-    m << "\nBase-model mismatch corrected (steps on the model's own inputs: the base model misfits there; reported "
-         "apart from undeclared variables, not an undeclared effect):\n\n";
-    for (const auto& u : r.base_terms) m << "- " << u << "\n";
-  }
-  if (!r.base_mismatch.empty()) {
-    m << "\nBase-model mismatch (remaining structure in the model's own inputs, reported apart from undeclared "
-         "variables):\n\n";
-    for (const auto& u : r.base_mismatch) m << "- " << u << "\n";
-  }
-  if (!r.removed.empty()) {
-    m << "\nRemoved by backfitting (not needed once the later effects were in):\n\n";
-    for (const auto& u : r.removed) m << "- " << u << "\n";
-  }
-  if (!r.screened.empty()) {
-    m << "\nPassed the permutation screen; every effect tried for it (library and generic) failed the F test, the "
-         "held-out error or the minimum effect:\n\n";
-    for (const auto& u : r.screened) m << "- " << u << "\n";
-  }
+}
+
+// A heading and its items, when there are any.
+void item_list(std::ostringstream& m, const std::string& heading, const std::vector<std::string>& items) {
+  if (items.empty()) return;
+  m << heading;
+  for (const auto& u : items) m << "- " << u << "\n";
+}
+
+// What the search left: remaining candidates, base-model mismatch, removals, screened columns.
+void leftovers_section(std::ostringstream& m, const LoopResult& r) {
+  item_list(m, "\nNot at the noise level; strongest remaining candidates:\n\n", r.remaining);
+  item_list(m,
+            "\nBase-model mismatch corrected (steps on the model's own inputs: the base model misfits there; reported "
+            "apart from undeclared variables, not an undeclared effect):\n\n",
+            r.base_terms);
+  item_list(m,
+            "\nBase-model mismatch (remaining structure in the model's own inputs, reported apart from undeclared "
+            "variables):\n\n",
+            r.base_mismatch);
+  item_list(m, "\nRemoved by backfitting (not needed once the later effects were in):\n\n", r.removed);
+  item_list(m,
+            "\nPassed the permutation screen; every effect tried for it (library and generic) failed the F test, the "
+            "held-out error or the minimum effect:\n\n",
+            r.screened);
+}
+
+// The effects tried per step, the added effects' parameters, and the first round's candidates.
+void effects_and_candidates(std::ostringstream& m, const LoopResult& r) {
   m << "\n## Effects tried per step\n\n| step | variable | effect tried | held-out RMS (N) |\n|---|---|---|---|\n";
   for (size_t k = 0; k < r.steps.size(); ++k)
     for (const auto& t : r.steps[k].tried)
@@ -261,64 +278,93 @@ std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::
       m << "| " << i + 1 << " | " << c.name << " | " << c.kind << " | " << c.dof << " | " << c.permuted << " | "
         << fmt(c.p_value, 3) << " | " << c.n_perm << " | " << c.decision << " | " << fmt(c.cv_reduction, 3) << " |\n";
     }
+}
+
+// The friction model's files and their exports.
+void model_files(std::ostringstream& m, const Design& d, const LoopResult& r, const FrictionModel& fm,
+                 const std::string& out, const std::string& exports, const ExportOptions& eo) {
   m << write_friction_outputs(d, r, fm, out);
-  {
-    std::vector<std::string> tomls;
-    for (size_t k = 0; k < fm.surfaces.size(); ++k)
-      tomls.push_back(out + "/friction_model" + (k == 0 ? std::string() : "_" + lubricant_tag(fm.surfaces[k].lubricant)) + ".toml");
-    m << write_exports(tomls, exports, eo);
+  std::vector<std::string> tomls;
+  for (size_t k = 0; k < fm.surfaces.size(); ++k)
+    tomls.push_back(out + "/friction_model" + (k == 0 ? std::string() : "_" + lubricant_tag(fm.surfaces[k].lubricant)) + ".toml");
+  m << write_exports(tomls, exports, eo);
+}
+
+// One surface plot of lubricant surface k in direction dir (our own script, in
+// the output), the fixed-pin rows on it.
+void surface_figure(const Design& d, const LoopResult& r, const FrictionModel& fm, size_t k, const char* dir,
+                    const std::string& out, const std::string& gnuplot, Figures& figs) {
+  const std::string tag = (k == 0 ? std::string() : "_" + std::to_string(k)) + "_" + dir;
+  const std::string dat = out + "/tables/surface" +
+                          (k == 0 ? std::string() : "_" + lubricant_tag(fm.surfaces[k].lubricant)) + "_" + dir + ".dat";
+  const std::string gp = out + "/figures/surface" + tag + ".gp", svg = "figures/surface" + tag + ".svg";
+  // The data behind the surface, the points identify_friction fits it to: each fixed-pin row of
+  // this lubricant whose cell has this direction, at the pressure predict_mu_at gives it.
+  const std::string pts = out + "/tables/surface_points" + tag + ".dat";
+  std::ostringstream pt;
+  int n_pts = 0;
+  pt << "# p_MPa v_mm_s: fixed-pin rows, " << dir << ", lubricant " << fm.surfaces[k].lubricant << "\n";
+  const bool rd = dir[0] == 'R';
+  for (std::size_t i = 0; i < d.rows.size(); ++i) {
+    const Row& row = d.rows[i];
+    if (row.rotating || d.data->rows[i].lubricant != fm.surfaces[k].lubricant ||
+        std::isnan(r.final_fit.b0[row.pin]) || !(rd ? d.cell_rd[row.cell] : d.cell_td[row.cell]))
+      continue;
+    double p = 0;
+    const double mu = predict_mu_at(d, r.final_fit, static_cast<int>(i), rd ? 0.0 : M_PI / 2, &p);
+    if (std::isfinite(mu) && std::isfinite(p))
+      pt << fmt(p, 6) << " " << fmt(d.data->rows[i].speed_mm_s, 6) << "\n", ++n_pts;
   }
-  if (!figdir.empty()) {  // one surface plot per lubricant and direction (our own script, in the output)
-    for (size_t k = 0; k < fm.surfaces.size(); ++k)
-      for (const char* dir : {"RD", "TD"}) {
-        const std::string tag = (k == 0 ? std::string() : "_" + std::to_string(k)) + "_" + dir;
-        const std::string dat = out + "/tables/surface" +
-                                (k == 0 ? std::string() : "_" + lubricant_tag(fm.surfaces[k].lubricant)) + "_" + dir + ".dat";
-        const std::string gp = out + "/figures/surface" + tag + ".gp", svg = "figures/surface" + tag + ".svg";
-        // The data behind the surface, the points identify_friction fits it to: each fixed-pin row of
-        // this lubricant whose cell has this direction, at the pressure predict_mu_at gives it.
-        const std::string pts = out + "/tables/surface_points" + tag + ".dat";
-        std::ostringstream pt;
-        int n_pts = 0;
-        pt << "# p_MPa v_mm_s: fixed-pin rows, " << dir << ", lubricant " << fm.surfaces[k].lubricant << "\n";
-        const bool rd = dir[0] == 'R';
-        for (std::size_t i = 0; i < d.rows.size(); ++i) {
-          const Row& row = d.rows[i];
-          if (row.rotating || d.data->rows[i].lubricant != fm.surfaces[k].lubricant ||
-              std::isnan(r.final_fit.b0[row.pin]) || !(rd ? d.cell_rd[row.cell] : d.cell_td[row.cell]))
-            continue;
-          double p = 0;
-          const double mu = predict_mu_at(d, r.final_fit, static_cast<int>(i), rd ? 0.0 : M_PI / 2, &p);
-          if (std::isfinite(mu) && std::isfinite(p))
-            pt << fmt(p, 6) << " " << fmt(d.data->rows[i].speed_mm_s, 6) << "\n", ++n_pts;
-        }
-        write_file_atomic(pts, pt.str());
-        // A coloured map with its colour bar, the rows on it.
-        write_file_atomic(gp, "set terminal svg size 720,520 noenhanced\nset output '" + out + "/" + svg +
-                                  "'\nset view map\nset xlabel 'p [MPa]'\nset ylabel 'v [mm/s]'\n"
-                                  "set cblabel 'mu'\nset colorbox\nset palette rgbformulae 33,13,10\n"
-                                  "set key outside below\nset title 'fitted mu(p, v), " + std::string(dir) + ", " +
-                                  safe(fm.surfaces[k].lubricant) + (n_pts ? "" : " (no fixed-pin rows in this direction)") +
-                                  "'\nsplot '" + dat + "' with pm3d notitle" +
-                                  (n_pts ? ", '" + pts + "' using 1:2:(0) with points pt 7 ps 0.5 lc rgb 'black' "
-                                                         "title 'fixed-pin rows'"
-                                         : std::string()) +
-                                  "\n");
-        if (std::system((gnuplot + " '" + gp + "' 2>/dev/null").c_str()) == 0) figs.push_back(svg);
-        else failed.push_back(svg);
-      }
-  }
+  write_file_atomic(pts, pt.str());
+  // A coloured map with its colour bar, the rows on it.
+  write_file_atomic(gp, "set terminal svg size 720,520 noenhanced\nset output '" + out + "/" + svg +
+                            "'\nset view map\nset xlabel 'p [MPa]'\nset ylabel 'v [mm/s]'\n"
+                            "set cblabel 'mu'\nset colorbox\nset palette rgbformulae 33,13,10\n"
+                            "set key outside below\nset title 'fitted mu(p, v), " + std::string(dir) + ", " +
+                            safe(fm.surfaces[k].lubricant) + (n_pts ? "" : " (no fixed-pin rows in this direction)") +
+                            "'\nsplot '" + dat + "' with pm3d notitle" +
+                            (n_pts ? ", '" + pts + "' using 1:2:(0) with points pt 7 ps 0.5 lc rgb 'black' "
+                                                   "title 'fixed-pin rows'"
+                                   : std::string()) +
+                            "\n");
+  figs.add(std::system((gnuplot + " '" + gp + "' 2>/dev/null").c_str()) == 0, svg);
+}
+
+// The figures that failed (a warning, also on stderr) and those drawn.
+void figures_section(std::ostringstream& m, const Figures& figs, const std::string& gnuplot) {
+  const auto& failed = figs.failed;
   if (!failed.empty()) {
-    const std::string w = std::to_string(failed.size()) + " of " + std::to_string(failed.size() + figs.size()) +
+    const std::string w = std::to_string(failed.size()) + " of " + std::to_string(failed.size() + figs.drawn.size()) +
                           " figures could not be drawn ('" + gnuplot + "' failed or is missing), first " +
                           failed.front() + "; their data are in tables/";
     std::cerr << "warning: " << w << "\n";
     m << "\n**Warning:** " << w << ".\n";
   }
-  if (!figs.empty()) {
+  if (!figs.drawn.empty()) {
     m << "\n## Figures: residuals against each candidate (before: base model; after: final model), fitted surfaces\n\n";
-    for (const auto& f : figs) m << "![" << f << "](" << f << ")\n\n";
+    for (const auto& f : figs.drawn) m << "![" << f << "](" << f << ")\n\n";
   }
+}
+
+}  // namespace
+
+std::string write_loop_outputs(const Design& d, const LoopResult& r, const std::string& out,
+                               const std::string& figdir, const std::string& gnuplot, const std::string& exports,
+                               const ExportOptions& eo) {
+  write_tables(d, r, out);
+  Figures figs;
+  if (!figdir.empty()) residual_figures(r, out, figdir, gnuplot, figs);
+  std::ostringstream m;
+  const FrictionModel fm = identify_friction(d, r);
+  evidence_header(m, d, r, fm);
+  steps_section(m, r);
+  leftovers_section(m, r);
+  effects_and_candidates(m, r);
+  model_files(m, d, r, fm, out, exports, eo);
+  if (!figdir.empty())  // one surface plot per lubricant and direction
+    for (size_t k = 0; k < fm.surfaces.size(); ++k)
+      for (const char* dir : {"RD", "TD"}) surface_figure(d, r, fm, k, dir, out, gnuplot, figs);
+  figures_section(m, figs, gnuplot);
   write_file_atomic(out + "/loop.md", m.str());
   return m.str();
 }

@@ -2,8 +2,10 @@
 // Internal to the screen (candidates.hpp is the public header): one probe of a
 // candidate and its two uses.
 //
-//   screen.cpp        the probe family per candidate, its calibration and the
-//                     permutation test
+//   screen.cpp        rank_candidates: each candidate's screen as a recipe of
+//                     steps (screen_candidate.hpp); the probe family in
+//                     screen_family.cpp, its calibration and the permutation
+//                     test in screen_permute.cpp
 //   screen_probe.cpp  ProbeDef::eval: explained sums of squares of several
 //                     permutations in one pass over the units; probe_cv: a
 //                     probe's held-out gain on the model's folds; centred_by

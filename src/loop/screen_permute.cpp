@@ -1,0 +1,232 @@
+// The permutations of one candidate's screen (see screen_candidate.hpp): the
+// pilot calibration of the probes' scales, the observed statistic and the
+// sequential permutation test of the family's maximum.  The inner loops are
+// the loop's hot spot: kLanes permutations per pass over the units, the same
+// draws and swaps, sums in the same order as one permutation alone.
+#include <algorithm>
+#include <cmath>
+
+#include "loop/screen_candidate.hpp"
+
+namespace drawbend::loop::detail {
+
+namespace {
+
+// Pilot permutations per candidate for the probes' calibration scales.
+constexpr int kPilot = 200;
+
+}  // namespace
+
+// Sub-probe values of every probe: vals[off[j] + k] is sub-probe k of probe j
+// (of L permutations side by side: lane i at lvals[(off[j] + k) L + i]).
+void CandidateScreen::set_offsets() {
+  off.assign(probes.size() + 1, 0);
+  for (size_t j = 0; j < probes.size(); ++j) off[j + 1] = off[j] + probes[j].nsub();
+  vals.assign(off.back(), 0.0);
+  lvals.assign(off.back() * kLanes, 0.0);
+}
+
+// A group of consecutive units (rows of a test, in file order) is shuffled
+// in place without reading its unit list: the same draws, the same swaps.
+// Its first unit and size in flat arrays (read for every permutation; the
+// groups' own lists are scattered over the heap and missed the cache).
+void CandidateScreen::flat_groups() {
+  size_t kmax = 1;
+  for (const auto& g : groups) kmax = std::max(kmax, g.size());
+  for (const auto& bg : bgroups) kmax = std::max(kmax, bg.size());
+  mod = FastMod(kmax);  // mod(rng(), k) == rng() % k, without the division
+  run.assign(groups.size(), 1);
+  gfirst.assign(groups.size(), 0), gsize.assign(groups.size(), 0);
+  for (size_t gi = 0; gi < groups.size(); ++gi) {
+    gfirst[gi] = groups[gi][0], gsize[gi] = static_cast<int>(groups[gi].size());
+    for (size_t k = 1; k < groups[gi].size(); ++k) run[gi] = run[gi] && groups[gi][k] == groups[gi][0] + static_cast<int>(k);
+  }
+}
+
+// Fisher-Yates within each permutation group.
+inline void CandidateScreen::shuffle(std::vector<int>& p, Mt64& r) const {
+  for (size_t gi = 0; gi < groups.size(); ++gi) {
+    if (run[gi]) {
+      int* q = p.data() + gfirst[gi];
+      for (size_t k = gsize[gi]; k > 1; --k) std::swap(q[k - 1], q[mod(r(), k)]);
+    } else {
+      const auto& g = groups[gi];
+      for (size_t k = g.size(); k > 1; --k) std::swap(p[g[k - 1]], p[g[mod(r(), k)]]);
+    }
+  }
+}
+
+// Lane j of a permuted pass: unit u takes unit p[u]'s value (p permutes
+// within tests); two-level, the test means are permuted as well (tp, drawn
+// from r after the within-test shuffle) and the bin recomputed.
+inline void CandidateScreen::fill_unit_values(const std::vector<int>& p, std::vector<double>& qz,
+                                              std::vector<int>& ql, int j, Mt64& r) {
+  if (!two_level) {
+    for (size_t u = 0; u < U; ++u) qz[u * kLanes + j] = xz[p[u]], ql[u * kLanes + j] = xl[p[u]];
+    return;
+  }
+  for (const auto& bg : bgroups)
+    for (size_t k = bg.size(); k > 1; --k) std::swap(tp[bg[k - 1]], tp[bg[mod(r(), k)]]);
+  for (size_t u = 0; u < U; ++u) {
+    const double v = gz[tp[ug[u]]] + (xz[p[u]] - gz[ug[u]]);
+    qz[u * kLanes + j] = v;
+    ql[u * kLanes + j] = static_cast<int>(std::upper_bound(cutz.begin(), cutz.end(), v) - cutz.begin());
+  }
+}
+
+// Lanes past the last permutation of a pass repeat lane 0 (their values unused).
+inline void CandidateScreen::fill_lanes(std::vector<double>& a, std::vector<int>& b, int used) const {
+  if (used == kLanes) return;
+  for (size_t u = 0; u < U; ++u)
+    for (int i = used; i < kLanes; ++i) a[u * kLanes + i] = a[u * kLanes], b[u * kLanes + i] = b[u * kLanes];
+}
+
+// Every probe's sub-probe values for kLanes permutations at once (unit values
+// interleaved by lane).
+inline void CandidateScreen::eval_lanes(const std::vector<double>& a, const std::vector<int>& b) {
+  for (size_t j = 0; j < probes.size(); ++j) probes[j].eval<kLanes>(a.data(), b.data(), &lvals[off[j] * kLanes]);
+}
+
+// The statistic of lane i: the same comparisons in the same order as stat.
+inline double CandidateScreen::lane_stat(int i) const {
+  double t = -INFINITY;
+  for (size_t j = 0; j < probes.size(); ++j)
+    for (int k = 0; k < probes[j].nsub(); ++k) {
+      if (probes[j].dof[k] <= 0) continue;
+      const double v = probe_z(probes[j], k, lvals[(off[j] + k) * kLanes + i]);
+      if (v > t) t = v;
+    }
+  return t;
+}
+
+// Statistic: the family's largest probe on a common scale.  Each probe's
+// explained sum of squares is X = ESS / scale (calibrated below), about
+// chi^2 with the probe's dof on null data; the Wilson-Hilferty cube root
+// maps it to a normal deviate, so a probe
+// of 1 dof and one of 8 compete by how surprising each is, not by the
+// explained fraction per dof (which buried every many-level probe).  The
+// permutation test calibrates the maximum, so the transform only decides
+// how the probes share the family's power.
+double CandidateScreen::stat(const std::vector<double>& a, const std::vector<int>& b, int* best, int* best_sub) {
+  double t = -INFINITY;
+  for (size_t j = 0; j < probes.size(); ++j) {
+    probes[j].eval<1>(a.data(), b.data(), &vals[off[j]]);
+    for (int k = 0; k < probes[j].nsub(); ++k) {
+      if (probes[j].dof[k] <= 0) continue;
+      const double v = probe_z(probes[j], k, vals[off[j] + k]);
+      if (v > t) t = v, *best = static_cast<int>(j), *best_sub = k;
+    }
+  }
+  return t;
+}
+
+// Calibration: ESS of each probe under a pilot sample of permutations (its
+// own random stream, so the test's permutations stay independent of it).
+// The permutation distribution is the same whichever permutation the data
+// are, so constants taken from it keep the test exact.  scale = mean ESS /
+// dof puts every probe on the chi^2(dof) scale even when whole tests are
+// the units (a test's rows share its scatter, so ESS / s^2 of the rows
+// would inflate with the dof); a probe whose ESS does not change under
+// permutation (a variable constant within every permutation group) is
+// dropped (a sub-probe so: its dof set to 0).
+void CandidateScreen::calibrate(std::uint64_t seed, size_t ci) {
+  Mt64 prng(seed + 7919 * ci + 104729);
+  std::vector<int> pp(U);
+  for (size_t u = 0; u < U; ++u) pp[u] = static_cast<int>(u);
+  std::vector<double> qz(U * kLanes);
+  std::vector<int> ql(U * kLanes);
+  const int P = kPilot;
+  std::vector<double> m1(off.back(), 0.0), m2(off.back(), 0.0);
+  for (int j0 = 0; j0 < P; j0 += kLanes) {
+    const int used = std::min(kLanes, P - j0);
+    for (int i = 0; i < used; ++i) {
+      shuffle(pp, prng);
+      fill_unit_values(pp, qz, ql, i, prng);
+    }
+    fill_lanes(qz, ql, used);
+    eval_lanes(qz, ql);
+    for (int i = 0; i < used; ++i)
+      for (size_t q = 0; q < off.back(); ++q) {
+        const double v = lvals[q * kLanes + i];
+        m1[q] += v / P, m2[q] += v * v / P;
+      }
+  }
+  std::vector<ProbeDef> kept;
+  for (size_t q = 0; q < probes.size(); ++q) {
+    for (int k = 0; k < probes[q].nsub(); ++k) {
+      const size_t h = off[q] + k;
+      const double var = m2[h] - m1[h] * m1[h];
+      if (!(m1[h] > 0) || !(var > 1e-12 * m1[h] * m1[h]) || probes[q].dof[k] <= 0) probes[q].dof[k] = 0;
+      else if (k == 0) probes[q].kdof[k] = probes[q].dof[k], probes[q].scale[k] = m1[h] / probes[q].dof[k];
+      else {
+        // A one-group sub-probe: scaled chi^2 matched to the pilot's mean
+        // AND variance (Satterthwaite).  Its ESS can be nearly constant
+        // under permutation (a row-level variable permuted within tests
+        // while the residual of its group varies between tests); on the
+        // chi^2(dof) scale such a probe would sit at a fixed deviate and
+        // could win every permutation's maximum, hiding the other probes.
+        probes[q].kdof[k] = 2 * m1[h] * m1[h] / var;
+        probes[q].scale[k] = m1[h] / probes[q].kdof[k];
+      }
+    }
+    if (probes[q].dof[0] > 0 || std::any_of(probes[q].dof.begin(), probes[q].dof.end(), [](int v) { return v > 0; }))
+      kept.push_back(std::move(probes[q]));
+  }
+  probes = std::move(kept);
+  set_offsets();
+}
+
+// The observed statistic T, its probe, and the strongest one-group sub-probe
+// of the best probe's input (the cell the forms try an effect confined to),
+// when the best probe is per input.
+double CandidateScreen::observed(CandidateResult& res) {
+  int best = 0, best_sub = 0;
+  const double T = stat(xz, xl, &best, &best_sub);
+  res.stat = vals[off[best] + best_sub];
+  res.probe = probes[best].sub_label(best_sub);
+  if (probes[best].cells) {
+    double zb = -INFINITY;
+    for (int k = 1; k < probes[best].nsub(); ++k)
+      if (probes[best].dof[k] > 0) {
+        const double v = probe_z(probes[best], k, vals[off[best] + k]);
+        if (v > zb) zb = v, res.cell_group = k - 1, res.cell_by = probes[best].input;
+      }
+  }
+  return T;
+}
+
+// Sequential permutation test of T: batches of 100, 200, ... permutations
+// until the Clopper-Pearson decision is made or the cap is reached.
+void CandidateScreen::permutation_test(CandidateResult& res, double T, std::uint64_t seed, size_t ci,
+                                       int permutations, double thr) {
+  Mt64 rng(seed + 7919 * ci);
+  int ge = 0, b = 0, dec = 0;
+  std::vector<int> perm(U);
+  for (size_t u = 0; u < U; ++u) perm[u] = static_cast<int>(u);
+  std::vector<double> pz(U * kLanes);
+  std::vector<int> pl(U * kLanes);
+  const int cap = std::max(1, permutations);
+  for (int batch = 100; b < cap; batch = std::min(cap - b, 2 * batch)) {
+    for (int j = 0; j < batch; j += kLanes) {  // kLanes permutations per pass over the units
+      const int used = std::min(kLanes, batch - j);
+      for (int i = 0; i < used; ++i) {
+        shuffle(perm, rng);
+        fill_unit_values(perm, pz, pl, i, rng);
+      }
+      fill_lanes(pz, pl, used);
+      eval_lanes(pz, pl);
+      for (int i = 0; i < used; ++i)
+        if (lane_stat(i) >= T - 1e-12 * std::max(1.0, std::abs(T))) ++ge;
+      b += used;
+    }
+    dec = sequential_decision(ge, b, thr);
+    if (dec != 0) break;
+  }
+  res.n_perm = b;
+  res.p_value = (1.0 + ge) / (1.0 + b);
+  res.significant = dec > 0 && res.cv_reduction > 0;
+  res.decision = dec > 0 ? (res.cv_reduction > 0 ? "significant" : "significant, no held-out gain")
+                         : dec < 0 ? "not significant" : "undecided";
+}
+
+}  // namespace drawbend::loop::detail
