@@ -1,4 +1,4 @@
-// Chapter 8 step 2b: trace the bending-force residual with beam theory
+// Chapter 8 step 2: trace the bending-force residual with beam theory
 // (analysis/bending_work.hpp), independently of the solver.
 //
 // The FE loop can afford a few members per candidate; beam theory costs

@@ -1,4 +1,4 @@
-// Chapter 8 step 5: the cup (thesis Sec. 6.6) by the same loop.
+// Chapter 8 step 6: the cup (thesis Sec. 6.6) by the same loop.
 //
 // (a) Why is the punch force at 15 mm high?  Baseline: the Chapter 6 model
 //     (src/sim/cup_case.hpp: isotropic J2 on the Table 5.1 RD curve, Table 6.1

@@ -108,13 +108,13 @@ void save_blind(Chapter& c, const Inputs& in, const std::vector<modelloop::FbPoi
   (void)in;
 }
 
-/// Step 2b: the tier's candidates and the leave-one-pin-out loop on the FE.
+/// Step 4: the tier's candidates and the leave-one-pin-out loop on the FE.
 modelloop::BlindLoopResult run_blind_loop(Chapter& c, const Inputs& in, const Config& cfg, const BeamTrace& trace,
                                           const std::vector<modelloop::FbPoint>& pts) {
   const std::string data_dir = c.data("");
   std::string list = cfg.candidates;
   // The tier's list.  First the Armstrong-Frederick back stress that beam
-  // theory chose on the fit pin (step 2a, a 25-member grid judged on the fit
+  // theory chose on the fit pin (step 2, a 25-member grid judged on the fit
   // pin only): its gamma, and X_sat with its two grid neighbours, chosen again
   // by the FE on the fit pin (the beam's level is not the FE's).  The full
   // tier and `make` (--next-candidates) go on with Voce and Hill'48.  Split combined hardening (beta) and a
@@ -160,7 +160,7 @@ void save_steps(Chapter& c, const modelloop::ModelLoopResult& r) {
   auto steps = c.table({"candidate", "what", "members_fit_rms_pct", "chosen", "fit_rms_pct", "heldout_rms_pct",
                         "heldout_max_pct", "decision"},
                        "the model-level loop: each candidate's members judged on the fit pin, the chosen member on the "
-                       "held-out pins; relative errors of F_B in % (RMS over points)");
+                       "pins that accept or reject it (heldout_*: those pins, in-sample, not blind); relative errors of F_B in % (RMS over points)");
   steps.row({"baseline", "isotropic J2, tabulated RD flow curve", "", r.baseline.model,
              fmt_fixed(100 * r.baseline.fit_rms, 1), fmt_fixed(100 * r.baseline.held_rms, 1),
              fmt_fixed(100 * r.baseline.held_max, 1), ""});
@@ -185,15 +185,15 @@ void save_per_pin(Chapter& c, const Inputs& in, const BeamTrace& trace, const st
   head.insert(head.end(), {"final_N", "final_err_pct"});
   auto tab = c.table(head, "bending force F_B = 2 (F_Y - F_X) per pin (full strip, N), measured (Table 5.3 at Table "
                            "5.13) against the isotropic model and each candidate (its member chosen on the fit pin); "
-                           "role: fit = trained on this pin, held-out = judged only; final model: " + r.final_model.model);
+                           "role: fit = trained on this pin, chose = accepted or rejected each candidate (in-sample, not blind); final model: " + r.final_model.model);
   auto fig = c.table({"R_over_t", "measured_N", "isotropic_N", "final_N", "pin_mm", "beam_isotropic_N", "beam_af_N"},
-                     "F_B against pin radius over thickness R/t (full strip, N), for the figure; beam: step 2a's "
+                     "F_B against pin radius over thickness R/t (full strip, N), for the figure; beam: step 2's "
                      "isotropic plane-strain model and its Armstrong-Frederick member chosen on the fit pin");
   for (std::size_t k = 0; k < pts.size(); ++k) {
     const auto& b = r.baseline.points[k];
     const auto& f = r.final_model.points[k];
     const double rt = pts[k].pin_mm / 2 / in.thickness;
-    std::vector<std::string> row = {fmt(pts[k].pin_mm), fmt(rt, 3), fmt(pts[k].back_tension_N), f.held_out ? "held-out" : "fit",
+    std::vector<std::string> row = {fmt(pts[k].pin_mm), fmt(rt, 3), fmt(pts[k].back_tension_N), f.held_out ? "chose" : "fit",
                                     fmt_fixed(pts[k].bending_N, 1), fmt_fixed(b.predicted_N, 1), pct(b.rel_error())};
     for (const auto& s : r.steps) {
       row.push_back(fmt_fixed(s.eval.points[k].predicted_N, 1));
@@ -210,7 +210,7 @@ void save_per_pin(Chapter& c, const Inputs& in, const BeamTrace& trace, const st
     c.value("fb_iso_err_d" + d, pct(b.rel_error()), "%");
     c.value("fb_final_d" + d, fmt_fixed(f.predicted_N, 1), "N");
     c.value("fb_final_err_d" + d, pct(f.rel_error()), "%");
-    c.value("role_d" + d, f.held_out ? "held out" : "fit");
+    c.value("role_d" + d, f.held_out ? "chose the model" : "fit");
     // The in-sample final model on every pin: not agreement, since the fit
     // pin's number was fitted to and the other pins' numbers chose the model
     // (the blind errors are the checks ch8.fb.d*, from save_blind).

@@ -1,4 +1,4 @@
-// Chapter 8 step 4 (full tier only): numerical effects before physics.
+// Chapter 8 step 3 (full tier only): numerical effects before physics.
 //  - mass scaling on every pin: 4 x the study's factor, the study's and 1/4 of
 //    it (isotropic model, Table 5.13 back tensions);
 //  - elements across the half width: 2, 4, 8 on the 25.4 and 42 mm pins, at

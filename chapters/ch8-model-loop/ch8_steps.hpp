@@ -33,11 +33,11 @@ struct Config {
   double fit_pin = 12.7;    ///< the training pin [mm]
   double min_gain = 0.03;   ///< required fall of the held-out RMS relative error
   std::string candidates;   ///< comma-separated candidate names; empty: the tier's list
-  bool cup = true;                ///< the cup loop and attribution (step 5)
+  bool cup = true;                ///< the cup loop and attribution (step 6)
   std::string numerics = "auto";  ///< the numerical studies: true, false, or auto (= full_study)
   std::string next = "auto";      ///< Voce and Hill'48 after the back stress: true, false, or auto (= full_study)
 
-  /// Whether step 4 (the numerical studies) runs; throws std::invalid_argument
+  /// Whether step 3 (the numerical studies) runs; throws std::invalid_argument
   /// naming --numerics on a value other than true/false/auto (or 1/0/-1).
   bool run_numerics() const { return tri_state(numerics, "--numerics"); }
   /// Whether the tier's list goes on after the back stress with Voce and

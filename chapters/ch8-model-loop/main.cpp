@@ -5,19 +5,20 @@
 // bending force of Table 5.3 (src/modelloop/model_loop.hpp, the same code as
 // `drawbend model-loop`).  Forces are full-strip forces in N; lengths mm.
 //
-// Recipe:
+// Recipe (in the order main runs it):
 //   1. Measured points: Table 5.3's fits at the Table 5.13 back tensions
 //      (tables/measured_fb.csv, the format of `drawbend model-loop`).
-//   2. The loop: isotropic baseline; candidates fitted on the 12.7 mm pin,
-//      judged on the 25.4 and 42 mm pins (held out); before/after table,
-//      figure, F_B checks per pin.
-//   2a. (before 2) The residual traced by beam theory (analysis/bending_work.hpp): the
+//   2. The residual traced by beam theory (analysis/bending_work.hpp): the
 //      FE against the same assumptions in a layered beam, then the transverse
 //      constraint and an Armstrong-Frederick back stress on a grid.
-//   3. F_B against back tension on the 12.7 mm pin (slope check).
-//   4. Full tier only: mass scaling on every pin; 2/4/8 elements across on
-//      the 25.4 and 42 mm pins.
-//   5. The cup (Sec. 6.6): why the punch force is high (tool radii, flow
+//   3. Full tier only, numerics before physics: mass scaling on every pin;
+//      2/4/8 elements across on the 25.4 and 42 mm pins.
+//   4. The loop: isotropic baseline; candidates fitted on the 12.7 mm pin,
+//      and leave one pin out (fit and choice inside the other two pins, each
+//      pin's error from the fold that never saw it); before/after table,
+//      figure, F_B checks per pin.
+//   5. F_B against back tension on the 12.7 mm pin (slope check).
+//   6. The cup (Sec. 6.6): why the punch force is high (tool radii, flow
 //      curve, combined hardening, Hill'48), and the 2 x 2 attribution of the
 //      RD failure to frictional or material anisotropy at 21 mm.
 //
@@ -52,7 +53,7 @@ int main(int argc, char** argv) {
   o.add(cfg.next, "next-candidates",
         "after the back stress the loop tries Voce, then Hill'48 (the full tier's list) on this run's mesh: true, "
         "false, or auto (as --full-study); 1, 0, -1 also accepted");
-  o.add(cfg.cup, "cup", "the cup loop and the 2 x 2 attribution (step 5)");
+  o.add(cfg.cup, "cup", "the cup loop and the 2 x 2 attribution (step 6)");
   o.add(cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
   return drawbend::study::run_chapter(ch, argc, argv, [&cfg](drawbend::study::Chapter& c) {
     using namespace ch8;
@@ -60,12 +61,12 @@ int main(int argc, char** argv) {
     cfg.run_next();
     const Inputs in = load_inputs(c, cfg);  // 1
     c.value("fe_ran", cfg.run_fe ? "yes" : "no");
-    const BeamTrace trace = beam_trace(c, in, cfg);  // 2a: the residual traced by beam theory
+    const BeamTrace trace = beam_trace(c, in, cfg);  // 2: the residual traced by beam theory
     if (!cfg.run_fe) return save_beam_trace(c, in, trace, nullptr);
-    if (numerics) numerical_convergence(c, in, cfg);  // 4, first: numerics before physics
-    const auto loop = bending_force_loop(c, in, cfg, trace);  // 2
-    save_beam_trace(c, in, trace, &loop);                      // 2a's table with the FE rows
-    tension_slope(c, in, cfg, loop);                       // 3
-    if (cfg.cup) cup_loop(c, cfg, loop);                   // 5
+    if (numerics) numerical_convergence(c, in, cfg);  // 3: numerics before physics
+    const auto loop = bending_force_loop(c, in, cfg, trace);  // 4
+    save_beam_trace(c, in, trace, &loop);                      // 2's table with the FE rows
+    tension_slope(c, in, cfg, loop);                       // 5
+    if (cfg.cup) cup_loop(c, cfg, loop);                   // 6
   });
 }
