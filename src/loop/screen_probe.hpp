@@ -78,6 +78,17 @@ struct ProbeDef {
   // (L = 1: the plain unit values).
   template <int L>
   void eval(const double* xz, const int* xl, double* out) const;
+  // eval's steps, one per shape (screen_probe.cpp; the levels shapes in two)
+  template <int L>
+  inline void level_sums(const int* xl) const;
+  template <int L>
+  inline void level_ess(double* out) const;
+  template <int L>
+  inline void slopes_ess(const double* xz, double* out) const;
+  template <int L>
+  inline void wslope_ess(const double* xz, double* out) const;
+  template <int L>
+  inline void quad_ess(const double* xz, double* out) const;
   std::string sub_label(int j) const {
     return j == 0 ? label : label + ": " + input + " group " + std::to_string(j) + " only";
   }
