@@ -85,6 +85,138 @@ std::string fits_key(const ModelSpec& s) {
   return k;
 }
 
+// A form to try: its effects (one, or two together).
+struct Part {
+  EffectKind k;
+  std::string by;
+  int nb = 0;     // generic_smooth: spline dof
+  int cell = -1;  // >= 0: confined to that group of `by`
+};
+struct Plan {
+  std::vector<Part> parts;
+};
+
+// The forms to try for candidate c: the library's, and the generic forms of a
+// column (plans, in the order they are tried).
+struct FormPlans {
+  const Design& d;
+  const ModelSpec& spec;
+  const Candidate& c;
+  std::vector<Plan> plans;
+  void add(EffectKind k, const std::string& by = "") {
+    if (applicable(d, spec, k, c.name)) plans.push_back({{{k, by}}});
+  }
+  void categorical(const std::vector<std::string>& bys);
+  void numeric(const std::vector<std::string>& bys);
+  void force_and_bending(const std::set<double>& distinct);
+  void in_cell(const std::string& cell_by, int cell_group);
+};
+
+// A categorical column: its levels, per group of a model input, on the force channel.
+void FormPlans::categorical(const std::vector<std::string>& bys) {
+  add(EffectKind::categorical);
+  if (c.levels.size() <= 4)
+    for (const auto& by : bys) add(EffectKind::categorical_by, by);
+  add(EffectKind::force_offset);  // levels on the force channel
+  if (c.levels.size() <= 4) add(EffectKind::force_offset, "pin");
+}
+
+// A numeric column: the generic shapes, its levels (3 to 8 values), a slope
+// per group of a model input, the smooths, then the force and bending forms.
+void FormPlans::numeric(const std::vector<std::string>& bys) {
+  for (EffectKind k : {EffectKind::generic_linear, EffectKind::generic_saturating, EffectKind::generic_log,
+                       EffectKind::generic_exp, EffectKind::generic_step})
+    add(k);
+  std::set<double> distinct;
+  for (double v : c.x)
+    if (std::isfinite(v)) distinct.insert(v);
+  if (distinct.size() >= 3 && distinct.size() <= 8) add(EffectKind::categorical);
+  for (const auto& by : bys) add(EffectKind::generic_linear_by, by);
+  // A smooth of any shape (bump, U, periodic, sigmoid, step), 3, 5 or 8
+  // dof overall (8: a narrow bump, a step or two periods) and 3 or 5 per
+  // group of a model input: held-out error and the one-standard-error rule
+  // choose among it and the simpler forms.
+  if (applicable(d, spec, EffectKind::generic_smooth, c.name)) {
+    for (int nb : {3, 5, 8}) plans.push_back({{{EffectKind::generic_smooth, "", nb}}});
+    for (const auto& by : bys)
+      for (int nb : {3, 5}) plans.push_back({{{EffectKind::generic_smooth, by, nb}}});
+  }
+  force_and_bending(distinct);
+}
+
+// The force channel (rotating rows too): linear per pin, a smooth, a smooth per pin.
+void FormPlans::force_and_bending(const std::set<double>& distinct) {
+  // Each needs a number on every row: empty cells (missing values) take
+  // the column's mean (Design::values), as in the generic forms above.
+  bool every_row_numeric = true;
+  try {
+    d.values(c.name);
+  } catch (const InputError&) {
+    every_row_numeric = false;
+  }
+  if (every_row_numeric && applicable(d, spec, EffectKind::force_offset, c.name)) {
+    plans.push_back({{{EffectKind::force_offset, "pin", 1}}});
+    if (distinct.size() >= 3 && distinct.size() <= 8 && d.data->extra_index(c.name) >= 0)
+      plans.push_back({{{EffectKind::force_offset, "", 0}}});  // levels
+    if (distinct.size() > 8)
+      for (const std::string by : {"", "pin"}) plans.push_back({{{EffectKind::force_offset, by, 3}}});
+  }
+  if (applicable(d, spec, EffectKind::bending_linear, c.name)) {
+    plans.push_back({{{EffectKind::bending_linear, ""}}});
+    if (applicable(d, spec, EffectKind::generic_linear, c.name))
+      plans.push_back({{{EffectKind::bending_linear, ""}, {EffectKind::generic_linear, ""}}});
+  }
+}
+
+// An effect confined to one cell (the group of a model input the screen's
+// strongest one-group probe points at): a slope, a 3-dof smooth or the
+// levels in that cell only, none elsewhere.  Held-out error and the
+// one-standard-error rule choose between it and the global forms.
+void FormPlans::in_cell(const std::string& cell_by, int cell_group) {
+  std::set<double> distinct;
+  for (double v : c.x)
+    if (std::isfinite(v)) distinct.insert(v);
+  const bool levels = c.categorical || (distinct.size() >= 3 && distinct.size() <= 8);
+  if (levels && d.data->extra_index(c.name) >= 0 && applicable(d, spec, EffectKind::categorical_by, c.name))
+    plans.push_back({{{EffectKind::categorical_by, cell_by, 0, cell_group}}});
+  if (!c.categorical && applicable(d, spec, EffectKind::generic_linear_by, c.name))
+    plans.push_back({{{EffectKind::generic_linear_by, cell_by, 0, cell_group}}});
+  if (!c.categorical && applicable(d, spec, EffectKind::generic_smooth, c.name))
+    plans.push_back({{{EffectKind::generic_smooth, cell_by, 3, cell_group}}});
+}
+
+// Trial t of plan p: the model with its effects, and its name, meaning and channel.
+FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c, const Plan& p) {
+  FormTrial t;
+  t.spec = spec;
+  bool bend = false, fric = false;
+  for (const auto& [k, by, nb, cell] : p.parts) {
+    t.spec = with_effect(d, t.spec, k, c.name, by);
+    if (nb > 0) t.spec.effects.back().n_basis = nb;
+    t.spec.effects.back().cell = cell;
+    t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (nb > 0 ? " " + std::to_string(nb) + " dof" : "") +
+              (by.empty() ? "" : " (" + by + (cell >= 0 ? " group " + std::to_string(cell + 1) + " only" : "") + ")");
+    t.meaning += (t.meaning.empty() ? "" : "; ") + effect_meaning(k);
+    (acts_on_bending(k) ? bend : fric) = true;
+  }
+  t.channel = bend && fric ? "both" : bend ? "bending" : "friction";
+  return t;
+}
+
+// The trial's cross-validation and joint fit, or those of the same arithmetic tried before (cache).
+void fit_trial(const Design& d, const Folds& folds, FormTrial& t, TrialCache* cache) {
+  const std::string key = cache ? fits_key(t.spec) : std::string();
+  const auto done = cache ? cache->fits.find(key) : decltype(cache->fits.end()){};
+  if (cache && done != cache->fits.end()) {
+    t.cv = done->second.first;
+    t.joint = done->second.second;
+  } else {
+    t.cv = cross_validate(d, t.spec, folds);
+    t.joint = fit_joint(d, t.spec);
+    if (cache) cache->fits.emplace(key, std::make_pair(t.cv, t.joint));
+  }
+}
+
 }  // namespace
 
 double f_test(const JointFit& a, const JointFit& b) {
@@ -189,16 +321,8 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
                                  const CvResult& cur, const JointFit& cur_joint, double thr, double min_gain_N,
                                  const std::function<void(const std::string&)>& progress, const std::string& cell_by,
                                  int cell_group, TrialCache* cache) {
-  struct Part {
-    EffectKind k;
-    std::string by;
-    int nb = 0;     // generic_smooth: spline dof
-    int cell = -1;  // >= 0: confined to that group of `by`
-  };
-  struct Plan {
-    std::vector<Part> parts;
-  };
-  std::vector<Plan> plans;
+  FormPlans fp{d, spec, c, {}};
+  std::vector<Plan>& plans = fp.plans;
   for (EffectKind k : effects_for(c.name))
     if (applicable(d, spec, k, c.name)) plans.push_back({{{k, ""}}});
   // Generic forms for a column of the data, and for a numeric model input the
@@ -206,98 +330,15 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
   if (c.kind == "column" || (c.name == "speed_mm_s" && !d.speed_is_level)) {
     auto bys = by_inputs(d);
     bys.erase(std::remove(bys.begin(), bys.end(), c.name), bys.end());
-    auto add = [&](EffectKind k, const std::string& by = "") {
-      if (applicable(d, spec, k, c.name)) plans.push_back({{{k, by}}});
-    };
-    if (c.categorical) {
-      add(EffectKind::categorical);
-      if (c.levels.size() <= 4)
-        for (const auto& by : bys) add(EffectKind::categorical_by, by);
-      add(EffectKind::force_offset);  // levels on the force channel
-      if (c.levels.size() <= 4) add(EffectKind::force_offset, "pin");
-    } else {
-      for (EffectKind k : {EffectKind::generic_linear, EffectKind::generic_saturating, EffectKind::generic_log,
-                           EffectKind::generic_exp, EffectKind::generic_step})
-        add(k);
-      std::set<double> distinct;
-      for (double v : c.x)
-        if (std::isfinite(v)) distinct.insert(v);
-      if (distinct.size() >= 3 && distinct.size() <= 8) add(EffectKind::categorical);
-      for (const auto& by : bys) add(EffectKind::generic_linear_by, by);
-      // A smooth of any shape (bump, U, periodic, sigmoid, step), 3, 5 or 8
-      // dof overall (8: a narrow bump, a step or two periods) and 3 or 5 per
-      // group of a model input: held-out error and the one-standard-error rule
-      // choose among it and the simpler forms.
-      if (applicable(d, spec, EffectKind::generic_smooth, c.name)) {
-        for (int nb : {3, 5, 8}) plans.push_back({{{EffectKind::generic_smooth, "", nb}}});
-        for (const auto& by : bys)
-          for (int nb : {3, 5}) plans.push_back({{{EffectKind::generic_smooth, by, nb}}});
-      }
-      // The force channel (rotating rows too): linear per pin, a smooth, a smooth per pin.
-      // Each needs a number on every row: empty cells (missing values) take
-      // the column's mean (Design::values), as in the generic forms above.
-      bool every_row_numeric = true;
-      try {
-        d.values(c.name);
-      } catch (const InputError&) {
-        every_row_numeric = false;
-      }
-      if (every_row_numeric && applicable(d, spec, EffectKind::force_offset, c.name)) {
-        plans.push_back({{{EffectKind::force_offset, "pin", 1}}});
-        if (distinct.size() >= 3 && distinct.size() <= 8 && d.data->extra_index(c.name) >= 0)
-          plans.push_back({{{EffectKind::force_offset, "", 0}}});  // levels
-        if (distinct.size() > 8)
-          for (const std::string by : {"", "pin"}) plans.push_back({{{EffectKind::force_offset, by, 3}}});
-      }
-      if (applicable(d, spec, EffectKind::bending_linear, c.name)) {
-        plans.push_back({{{EffectKind::bending_linear, ""}}});
-        if (applicable(d, spec, EffectKind::generic_linear, c.name))
-          plans.push_back({{{EffectKind::bending_linear, ""}, {EffectKind::generic_linear, ""}}});
-      }
-    }
-    // An effect confined to one cell (the group of a model input the screen's
-    // strongest one-group probe points at): a slope, a 3-dof smooth or the
-    // levels in that cell only, none elsewhere.  Held-out error and the
-    // one-standard-error rule choose between it and the global forms.
-    if (cell_group >= 0 && !cell_by.empty() && cell_by != c.name) {
-      std::set<double> distinct;
-      for (double v : c.x)
-        if (std::isfinite(v)) distinct.insert(v);
-      const bool levels = c.categorical || (distinct.size() >= 3 && distinct.size() <= 8);
-      if (levels && d.data->extra_index(c.name) >= 0 && applicable(d, spec, EffectKind::categorical_by, c.name))
-        plans.push_back({{{EffectKind::categorical_by, cell_by, 0, cell_group}}});
-      if (!c.categorical && applicable(d, spec, EffectKind::generic_linear_by, c.name))
-        plans.push_back({{{EffectKind::generic_linear_by, cell_by, 0, cell_group}}});
-      if (!c.categorical && applicable(d, spec, EffectKind::generic_smooth, c.name))
-        plans.push_back({{{EffectKind::generic_smooth, cell_by, 3, cell_group}}});
-    }
+    if (c.categorical) fp.categorical(bys);
+    else fp.numeric(bys);
+    if (cell_group >= 0 && !cell_by.empty() && cell_by != c.name) fp.in_cell(cell_by, cell_group);
   }
   std::vector<FormTrial> out;
   for (const Plan& p : plans) {
-    FormTrial t;
-    t.spec = spec;
-    bool bend = false, fric = false;
-    for (const auto& [k, by, nb, cell] : p.parts) {
-      t.spec = with_effect(d, t.spec, k, c.name, by);
-      if (nb > 0) t.spec.effects.back().n_basis = nb;
-      t.spec.effects.back().cell = cell;
-      t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (nb > 0 ? " " + std::to_string(nb) + " dof" : "") +
-                (by.empty() ? "" : " (" + by + (cell >= 0 ? " group " + std::to_string(cell + 1) + " only" : "") + ")");
-      t.meaning += (t.meaning.empty() ? "" : "; ") + effect_meaning(k);
-      (acts_on_bending(k) ? bend : fric) = true;
-    }
-    t.channel = bend && fric ? "both" : bend ? "bending" : "friction";
+    FormTrial t = named_trial(d, spec, c, p);
     if (progress) progress("  " + c.name + ": trying " + t.name);
-    const std::string key = cache ? fits_key(t.spec) : std::string();
-    const auto done = cache ? cache->fits.find(key) : decltype(cache->fits.end()){};
-    if (cache && done != cache->fits.end()) {
-      t.cv = done->second.first;
-      t.joint = done->second.second;
-    } else {
-      t.cv = cross_validate(d, t.spec, folds);
-      t.joint = fit_joint(d, t.spec);
-      if (cache) cache->fits.emplace(key, std::make_pair(t.cv, t.joint));
-    }
+    fit_trial(d, folds, t, cache);
     t.q = t.joint.p - cur_joint.p;
     t.p_value = f_test(cur_joint, t.joint);
     const double gain = std::sqrt(std::max(0.0, cur.rms * cur.rms - t.cv.rms * t.cv.rms));
