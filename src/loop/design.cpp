@@ -163,10 +163,11 @@ std::vector<double> Design::values(const std::string& column) const {
   return x;
 }
 
-Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_um, BendingSource bending) {
-  Design d;
-  d.data = &data;
-  d.maps = &maps;
+namespace {
+
+// The pins, the fixed-pin directions and speeds, and whether direction and
+// speed are cell levels.
+void design_levels(Design& d, const Dataset& data) {
   std::set<double> pins, speeds, dirs;
   for (const auto& s : data.rows) {
     pins.insert(s.pin_d_mm);
@@ -184,57 +185,64 @@ Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_
   d.notes.push_back(d.speed_is_level ? "speed is a cell level (" + std::to_string(speeds.size()) + " distinct speeds)"
                                      : "speed varies continuously (" + std::to_string(speeds.size()) +
                                            " distinct speeds): not a cell level, a candidate");
-  const int ra = data.extra_index("pin_Ra_um");
-  std::map<std::string, int> cell_index;
-  double lg_sum = 0;
-  int n_fixed = 0;
-  for (const auto& s : data.rows) {
-    Row r;
-    r.pin = static_cast<int>(std::find_if(d.pins.begin(), d.pins.end(), [&](double p) { return close(p, s.pin_d_mm); }) -
-                             d.pins.begin());
-    r.rotating = s.rotating;
-    r.fback = s.back_tension_N;
-    r.y = s.outlet_force_N;
-    set_direction(r, s.direction_deg * M_PI / 180.0);
-    r.sliding = std::isnan(s.sliding_mm) ? 0.0 : s.sliding_mm;
-    if (!s.rotating) {
-      std::string cell = s.lubricant + (d.speed_is_level ? " | " + fmt(s.speed_mm_s) + " mm/s" : "");
-      if (d.direction_is_level) cell += s.direction_deg < 45 ? " | RD" : " | TD";
-      auto [it, fresh] = cell_index.emplace(cell, static_cast<int>(d.cells.size()));
-      if (fresh) {
-        d.cells.push_back(cell);
-        d.cell_rd.push_back(0);
-        d.cell_td.push_back(0);
-      }
-      r.cell = it->second;
-      (s.direction_deg < 45 ? d.cell_rd : d.cell_td)[r.cell] = 1;
-      const PinMap& m = maps.at(s.pin_d_mm);
-      r.pw_ref = m.S2 / m.S1;
-      r.fref = m.fref_N;
-      r.dir = static_cast<int>(std::find_if(d.fixed_directions.begin(), d.fixed_directions.end(),
-                                            [&](double a) { return close(a, s.direction_deg); }) -
-                               d.fixed_directions.begin());
-      // Lubricant number (Eq. 3.1) at the frictionless average pressure (Eq. 2.2), SI units.
-      const double p_avg = analysis::average_pressure(s.back_tension_N, s.back_tension_N, s.pin_d_mm / 2, kStripWidthMm,
-                                                      analysis::ForceBasis::full_strip);  // MPa, F_x = F_y
-      double ra_pin = 0.1;  // Table 5.2
-      if (ra >= 0) {
-        try {
-          ra_pin = std::stod(s.extra[ra]);
-        } catch (...) {
-        }
-      }
-      analysis::StribeckParams lub;  // Eq. 3.1's inputs: the combined roughness and the viscosity
-      lub.Ra_um = std::hypot(Ra_sheet_um, ra_pin);
-      lub.eta_Pa_s = kEtaPaS;
-      r.lgL = std::log10(analysis::lubricant_number(std::max(s.speed_mm_s, 1e-6), p_avg, lub));
-      lg_sum += r.lgL;
-      ++n_fixed;
-    }
-    d.rows.push_back(r);
+}
+
+// A fixed-pin row: its cell, map, direction and lubricant number (Eq. 3.1; not yet centred).
+void fixed_pin_row(Design& d, const MapLibrary& maps, double Ra_sheet_um, int ra,
+                   std::map<std::string, int>& cell_index, const Sample& s, Row& r) {
+  std::string cell = s.lubricant + (d.speed_is_level ? " | " + fmt(s.speed_mm_s) + " mm/s" : "");
+  if (d.direction_is_level) cell += s.direction_deg < 45 ? " | RD" : " | TD";
+  auto [it, fresh] = cell_index.emplace(cell, static_cast<int>(d.cells.size()));
+  if (fresh) {
+    d.cells.push_back(cell);
+    d.cell_rd.push_back(0);
+    d.cell_td.push_back(0);
   }
-  for (auto& r : d.rows)
-    if (!r.rotating) r.lgL -= lg_sum / std::max(1, n_fixed);
+  r.cell = it->second;
+  (s.direction_deg < 45 ? d.cell_rd : d.cell_td)[r.cell] = 1;
+  const PinMap& m = maps.at(s.pin_d_mm);
+  r.pw_ref = m.S2 / m.S1;
+  r.fref = m.fref_N;
+  r.dir = static_cast<int>(std::find_if(d.fixed_directions.begin(), d.fixed_directions.end(),
+                                        [&](double a) { return close(a, s.direction_deg); }) -
+                           d.fixed_directions.begin());
+  // Lubricant number (Eq. 3.1) at the frictionless average pressure (Eq. 2.2), SI units.
+  const double p_avg = analysis::average_pressure(s.back_tension_N, s.back_tension_N, s.pin_d_mm / 2, kStripWidthMm,
+                                                  analysis::ForceBasis::full_strip);  // MPa, F_x = F_y
+  double ra_pin = 0.1;  // Table 5.2
+  if (ra >= 0) {
+    try {
+      ra_pin = std::stod(s.extra[ra]);
+    } catch (...) {
+    }
+  }
+  analysis::StribeckParams lub;  // Eq. 3.1's inputs: the combined roughness and the viscosity
+  lub.Ra_um = std::hypot(Ra_sheet_um, ra_pin);
+  lub.eta_Pa_s = kEtaPaS;
+  r.lgL = std::log10(analysis::lubricant_number(std::max(s.speed_mm_s, 1e-6), p_avg, lub));
+}
+
+// The bending force of pin p without rotating-pin rows, from the chosen source.
+double fallback_bending_force(const Design& d, const MapLibrary& maps, BendingSource bending, size_t p) {
+  double fb = std::nan("");
+  if (bending == BendingSource::swift)
+    fb = analysis::swift_bending_force(99.71, 1.04, kStripWidthMm, d.pins[p] / 2, kWrapRad,
+                                       analysis::ForceBasis::full_strip);
+  else if (bending == BendingSource::none)
+    fb = 0;
+  else if (bending == BendingSource::fe) {
+    const PinMap& m = maps.at(d.pins[p]);
+    if (!(m.fbend_N >= 0))
+      throw InputError(m.provenance + ": --bending fe needs a '# bending_force_N: <N>' line in the map file "
+                       "(the frictionless FE run's F_Y - F_X, full strip)");
+    fb = m.fbend_N;
+  }
+  return fb;
+}
+
+// Each pin's bending force: a line fitted to its rotating-pin rows, or (none)
+// the fallback, said in the notes; no fallback for --bending rotating is an error.
+void bending_fallback(Design& d, const Dataset& data, const MapLibrary& maps, BendingSource bending) {
   d.bend_fallback.assign(d.pins.size(), std::nan(""));
   std::string missing, label;
   for (size_t p = 0; p < d.pins.size(); ++p) {
@@ -249,19 +257,7 @@ Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_
     if (!fixed) continue;
     d.missing_rotating = true;
     missing += (missing.empty() ? "" : ", ") + pin;
-    double fb = std::nan("");
-    if (bending == BendingSource::swift)
-      fb = analysis::swift_bending_force(99.71, 1.04, kStripWidthMm, d.pins[p] / 2, kWrapRad,
-                                         analysis::ForceBasis::full_strip);
-    else if (bending == BendingSource::none)
-      fb = 0;
-    else if (bending == BendingSource::fe) {
-      const PinMap& m = maps.at(d.pins[p]);
-      if (!(m.fbend_N >= 0))
-        throw InputError(m.provenance + ": --bending fe needs a '# bending_force_N: <N>' line in the map file "
-                         "(the frictionless FE run's F_Y - F_X, full strip)");
-      fb = m.fbend_N;
-    }
+    const double fb = fallback_bending_force(d, maps, bending, p);
     d.bend_fallback[p] = fb;
     if (bending != BendingSource::rotating)
       label += (label.empty() ? "" : "; ") + pin + ": NO rotating-pin rows, F_B = " + fmt(fb, 4) + " N from " +
@@ -275,6 +271,38 @@ Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_
   if (d.missing_rotating) d.notes.insert(d.notes.begin(), "NO ROTATING-PIN ROWS for the " + missing + " pin(s): bending force from " +
                                                                bending_source_name(bending) + " (every output says so)");
   d.notes.push_back("bending force: " + label);
+}
+
+}  // namespace
+
+Design make_design(const Dataset& data, const MapLibrary& maps, double Ra_sheet_um, BendingSource bending) {
+  Design d;
+  d.data = &data;
+  d.maps = &maps;
+  design_levels(d, data);
+  const int ra = data.extra_index("pin_Ra_um");
+  std::map<std::string, int> cell_index;
+  double lg_sum = 0;
+  int n_fixed = 0;
+  for (const auto& s : data.rows) {
+    Row r;
+    r.pin = static_cast<int>(std::find_if(d.pins.begin(), d.pins.end(), [&](double p) { return close(p, s.pin_d_mm); }) -
+                             d.pins.begin());
+    r.rotating = s.rotating;
+    r.fback = s.back_tension_N;
+    r.y = s.outlet_force_N;
+    set_direction(r, s.direction_deg * M_PI / 180.0);
+    r.sliding = std::isnan(s.sliding_mm) ? 0.0 : s.sliding_mm;
+    if (!s.rotating) {
+      fixed_pin_row(d, maps, Ra_sheet_um, ra, cell_index, s, r);
+      lg_sum += r.lgL;
+      ++n_fixed;
+    }
+    d.rows.push_back(r);
+  }
+  for (auto& r : d.rows)
+    if (!r.rotating) r.lgL -= lg_sum / std::max(1, n_fixed);
+  bending_fallback(d, data, maps, bending);
   d.notes.push_back("pressure maps: " + maps.label());
   return d;
 }
