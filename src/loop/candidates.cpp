@@ -91,16 +91,20 @@ CvResult cross_validate(const Design& d, const ModelSpec& spec, const Folds& f) 
   return r;
 }
 
-std::vector<Candidate> make_candidates(const Design& d, const std::vector<double>& pred) {
-  const auto& data = *d.data;
-  const size_t n = data.rows.size();
-  std::vector<Candidate> c;
-  auto numeric = [&](const std::string& name, const std::string& kind, auto get) {
+namespace {
+
+// The candidates as they are made, each with one value per row.
+struct CandidateList {
+  size_t n;
+  std::vector<Candidate>& c;
+  template <class Get>
+  void numeric(const std::string& name, const std::string& kind, Get get) {
     Candidate k{name, kind, false, false, std::vector<double>(n), {}, ""};
     for (size_t i = 0; i < n; ++i) k.x[i] = get(i);
     c.push_back(std::move(k));
-  };
-  auto categorical = [&](const std::string& name, const std::string& kind, auto get) {
+  }
+  template <class Get>
+  void categorical(const std::string& name, const std::string& kind, Get get) {
     Candidate k{name, kind, true, false, std::vector<double>(n), {}, ""};
     std::map<std::string, int> ix;
     for (size_t i = 0; i < n; ++i) {
@@ -109,11 +113,12 @@ std::vector<Candidate> make_candidates(const Design& d, const std::vector<double
       k.x[i] = it->second;
     }
     c.push_back(std::move(k));
-  };
+  }
+};
+
+// The data's extra columns: numeric when every value is a number (or empty), else categorical.
+void extra_columns(const Dataset& data, CandidateList& list) {
   const auto& R = data.rows;
-  // Columns beyond the model's inputs.
-  if (data.has_sliding) numeric("sliding_distance_mm", "column", [&](size_t i) { return R[i].sliding_mm; });
-  if (data.has_time) numeric("time_s", "column", [&](size_t i) { return R[i].time_s; });
   for (size_t e = 0; e < data.extra_columns.size(); ++e) {
     bool num = true;
     for (const auto& s : R) {
@@ -127,26 +132,18 @@ std::vector<Candidate> make_candidates(const Design& d, const std::vector<double
       }
     }
     if (num)
-      numeric(data.extra_columns[e], "column", [&](size_t i) {
+      list.numeric(data.extra_columns[e], "column", [&](size_t i) {
         return R[i].extra[e].empty() ? std::nan("") : std::stod(R[i].extra[e]);
       });
     else
-      categorical(data.extra_columns[e], "column", [&](size_t i) { return R[i].extra[e]; });
+      list.categorical(data.extra_columns[e], "column", [&](size_t i) { return R[i].extra[e]; });
   }
-  // Derived quantities.
-  numeric("avg_pressure_MPa", "derived", [&](size_t i) {  // Eq. (2.2) at the predicted outlet force
-    return (R[i].back_tension_N + pred[i]) / (R[i].pin_d_mm * kStripWidthMm);
-  });
-  numeric("inv_R_per_mm", "derived", [&](size_t i) { return 2.0 / R[i].pin_d_mm; });
-  // The model's inputs.
-  numeric("pin_diameter_mm", "input", [&](size_t i) { return R[i].pin_d_mm; });
-  numeric("back_tension_N", "input", [&](size_t i) { return R[i].back_tension_N; });
-  numeric("speed_mm_s", "input", [&](size_t i) { return R[i].speed_mm_s; });
-  numeric("direction_deg", "input", [&](size_t i) { return R[i].direction_deg; });
-  categorical("lubricant", "input", [&](size_t i) { return R[i].lubricant; });
-  // Group identities.
-  categorical("pin", "group", [&](size_t i) { return fmt(R[i].pin_d_mm) + " mm"; });
-  categorical("test_id", "group", [&](size_t i) { return R[i].test_id; });
+}
+
+// Each column's model input that it is a function of (confounded_with).
+void confounding(const Dataset& data, std::vector<Candidate>& c) {
+  const size_t n = data.rows.size();
+  const auto& R = data.rows;
   // Columns that are a function of one of the model's inputs.
   const std::vector<std::pair<std::string, std::function<std::string(size_t)>>> inputs = {
       {"pin", [&](size_t i) { return fmt(R[i].pin_d_mm); }},
@@ -182,6 +179,12 @@ std::vector<Candidate> make_candidates(const Design& d, const std::vector<double
       }
     }
   }
+}
+
+// Each candidate's level: test_level when constant within every test.
+void test_levels(const Dataset& data, std::vector<Candidate>& c) {
+  const size_t n = data.rows.size();
+  const auto& R = data.rows;
   // Level of each candidate: constant within every test?
   std::map<std::string, std::vector<size_t>> by_test;
   for (size_t i = 0; i < n; ++i) by_test[R[i].test_id].push_back(i);
@@ -191,6 +194,36 @@ std::vector<Candidate> make_candidates(const Design& d, const std::vector<double
       for (size_t j : ix)
         if (!(k.x[j] == k.x[ix[0]] || (std::isnan(k.x[j]) && std::isnan(k.x[ix[0]])))) k.test_level = false;
   }
+}
+
+}  // namespace
+
+std::vector<Candidate> make_candidates(const Design& d, const std::vector<double>& pred) {
+  const auto& data = *d.data;
+  const size_t n = data.rows.size();
+  std::vector<Candidate> c;
+  CandidateList list{n, c};
+  const auto& R = data.rows;
+  // Columns beyond the model's inputs.
+  if (data.has_sliding) list.numeric("sliding_distance_mm", "column", [&](size_t i) { return R[i].sliding_mm; });
+  if (data.has_time) list.numeric("time_s", "column", [&](size_t i) { return R[i].time_s; });
+  extra_columns(data, list);
+  // Derived quantities.
+  list.numeric("avg_pressure_MPa", "derived", [&](size_t i) {  // Eq. (2.2) at the predicted outlet force
+    return (R[i].back_tension_N + pred[i]) / (R[i].pin_d_mm * kStripWidthMm);
+  });
+  list.numeric("inv_R_per_mm", "derived", [&](size_t i) { return 2.0 / R[i].pin_d_mm; });
+  // The model's inputs.
+  list.numeric("pin_diameter_mm", "input", [&](size_t i) { return R[i].pin_d_mm; });
+  list.numeric("back_tension_N", "input", [&](size_t i) { return R[i].back_tension_N; });
+  list.numeric("speed_mm_s", "input", [&](size_t i) { return R[i].speed_mm_s; });
+  list.numeric("direction_deg", "input", [&](size_t i) { return R[i].direction_deg; });
+  list.categorical("lubricant", "input", [&](size_t i) { return R[i].lubricant; });
+  // Group identities.
+  list.categorical("pin", "group", [&](size_t i) { return fmt(R[i].pin_d_mm) + " mm"; });
+  list.categorical("test_id", "group", [&](size_t i) { return R[i].test_id; });
+  confounding(data, c);
+  test_levels(data, c);
   return c;
 }
 
