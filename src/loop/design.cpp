@@ -64,14 +64,18 @@ std::vector<int> Design::levels(const std::string& column, std::vector<std::stri
   return out;
 }
 
-std::vector<double> Design::zscore(const std::string& column) const {
-  std::vector<double> x = values(column);
+void zscore_in_place(std::vector<double>& x) {
   double m = 0, q = 0;
   for (double v : x) m += v;
   m /= x.size();
   for (double v : x) q += (v - m) * (v - m);
   const double sd = std::sqrt(q / std::max<size_t>(1, x.size() - 1));
   for (double& v : x) v = sd > 0 ? (v - m) / sd : 0.0;
+}
+
+std::vector<double> Design::zscore(const std::string& column) const {
+  std::vector<double> x = values(column);
+  zscore_in_place(x);
   return x;
 }
 

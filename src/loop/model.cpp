@@ -193,14 +193,7 @@ void effect_values(const Design& d, const Effect& e, size_t k, Fit& f) {
     double lo = INFINITY;
     for (double v : x) lo = std::min(lo, v);
     for (double& v : x) v = kk == EffectKind::generic_log ? std::log(v) : 1 - std::exp(-(v - lo) / e.lambda_mm);
-    if (kk == EffectKind::generic_log) {  // z-score of log x
-      double mm = 0, q = 0;
-      for (double v : x) mm += v;
-      mm /= x.size();
-      for (double v : x) q += (v - mm) * (v - mm);
-      const double sd = std::sqrt(q / std::max<size_t>(1, x.size() - 1));
-      for (double& v : x) v = sd > 0 ? (v - mm) / sd : 0.0;
-    }
+    if (kk == EffectKind::generic_log) zscore_in_place(x);  // z-score of log x
     f.drift_z[k] = x;
   }
   if (kk == EffectKind::generic_step) {

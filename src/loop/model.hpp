@@ -55,6 +55,9 @@ struct Row {
 /// Sets a row's direction phi [rad] and the functions of it that predictions use.
 void set_direction(Row& r, double phi);
 
+/// x -> (x - mean) / sd in place (sd with n - 1; all zeros when sd is 0), in row order.
+void zscore_in_place(std::vector<double>& x);
+
 struct Design {
   const Dataset* data = nullptr;
   const MapLibrary* maps = nullptr;
