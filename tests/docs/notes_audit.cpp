@@ -43,6 +43,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -156,19 +157,21 @@ std::string holders(const Values& v, const std::string& num) {
   return out;
 }
 
-/// Audit one text (a note or a line of prose); findings get `where`.
-void audit_text(const std::string& s, const std::string& where, const Values& values, std::vector<Finding>& out) {
+/// Audit one text (a note or a paragraph of prose); a finding at offset i
+/// gets `where(i)`.
+void audit_text(const std::string& s, const std::function<std::string(std::size_t)>& where_at, const Values& values,
+                std::vector<Finding>& out) {
   static const std::set<std::string> kinds = {"thesis", "input", "run", "pub"};
   std::size_t i = 0;
   while (i < s.size()) {
     if (starts(s, i, "{{")) {
       const std::size_t e = s.find("}}", i);
-      if (e == std::string::npos) throw InputError(where + ": unclosed '{{'");
+      if (e == std::string::npos) throw InputError(where_at(i) + ": unclosed '{{'");
       std::string key = s.substr(i + 2, e - i - 2);
       key.erase(0, key.find_first_not_of(' '));
       key.erase(key.find_last_not_of(' ') + 1);
       if (!values.count(key))
-        out.push_back({where, "quotes {{" + key + "}}, which this run's values.csv does not hold", true});
+        out.push_back({where_at(i), "quotes {{" + key + "}}, which this run's values.csv does not hold", true});
       i = e + 2;
     } else if (s[i] == '$') {
       // TeX math: a formula's numbers are its constants and definitions.
@@ -191,7 +194,7 @@ void audit_text(const std::string& s, const std::string& where, const Values& va
         const std::size_t e = s.find('}', close);
         const std::string kind = s.substr(close + 7, e == std::string::npos ? std::string::npos : e - close - 7);
         if (e == std::string::npos || !kinds.count(kind))
-          out.push_back({where, "provenance marker '{.src-" + kind + "}': expected thesis, input, run or pub", true});
+          out.push_back({where_at(i), "provenance marker '{.src-" + kind + "}': expected thesis, input, run or pub", true});
         i = e == std::string::npos ? s.size() : e + 1;
       } else {
         ++i;
@@ -241,7 +244,7 @@ void audit_text(const std::string& s, const std::string& where, const Values& va
         std::string what = "number '" + num + "' is neither {{key}} from values.csv nor marked [..]{.src-KIND} (\u2026" +
                            ctx + "\u2026)";
         if (const std::string h = holders(values, num); !h.empty()) what += "; values.csv holds it as " + h;
-        out.push_back({where, what});
+        out.push_back({where_at(i), what});
       }
       i = e;
     } else {
@@ -271,26 +274,46 @@ bool matches(const std::string& entry, const std::string& id) {
   return entry == id;
 }
 
-/// Prose of the chapter: intro.md and results.md, line by line, outside code
-/// blocks; of a directive line only its caption.
+/// Prose of the chapter: intro.md and results.md, paragraph by paragraph
+/// (a number or a case name may wrap onto the next line), outside code
+/// blocks; of a directive line only its caption, on its own.
 void audit_prose(const std::string& src_dir, const Values& values, std::vector<Finding>& out) {
   for (const char* part : {"intro.md", "results.md"}) {
     const std::string p = src_dir + "/" + part;
     std::ifstream in(p);
     if (!in) throw InputError(p + ": cannot be read");
+    std::string para;
+    std::vector<std::pair<std::size_t, int>> starts;  // offset in para -> line
+    auto flush = [&] {
+      if (!para.empty())
+        audit_text(para, [&](std::size_t i) {
+          int n = starts.front().second;
+          for (const auto& [off, line] : starts)
+            if (off <= i) n = line;
+          return p + ":" + std::to_string(n);
+        }, values, out);
+      para.clear();
+      starts.clear();
+    };
     std::string line;
     int n = 0;
     bool code = false;
     while (std::getline(in, line)) {
       ++n;
-      if (line.rfind("```", 0) == 0) code = !code;
-      if (code || line.rfind("```", 0) == 0 || line.rfind("@checks", 0) == 0) continue;
+      const bool fence = line.rfind("```", 0) == 0;
+      if (fence) code = !code;
+      const bool directive = line.rfind("@", 0) == 0 || line.rfind("#", 0) == 0;
+      if (code || fence || directive || line.find_first_not_of(" \t") == std::string::npos) flush();
+      if (code || fence || line.rfind("@checks", 0) == 0) continue;
       if (line.rfind("@table ", 0) == 0 || line.rfind("@figure ", 0) == 0) {
         const auto bar = line.find('|');
         line = bar == std::string::npos ? "" : line.substr(bar + 1);
       }
-      audit_text(line, p + ":" + std::to_string(n), values, out);
+      starts.push_back({para.size(), n});
+      para += line + " ";
+      if (directive) flush();
     }
+    flush();
   }
 }
 
@@ -306,8 +329,8 @@ void audit_notes(const CsvTable& notes, const std::string& out_dir, const Values
     for (const auto& entry : split_ids(notes.text(r, "id")))
       for (const auto& c : checks.rows) applied = applied || matches(entry, checks.text(c, "id"));
     if (!applied) continue;
-    audit_text(notes.text(r, "explanation"), notes.where(r, "explanation") + " (" + notes.text(r, "id") + ")", values,
-               out);
+    const std::string where = notes.where(r, "explanation") + " (" + notes.text(r, "id") + ")";
+    audit_text(notes.text(r, "explanation"), [&](std::size_t) { return where; }, values, out);
   }
 }
 
