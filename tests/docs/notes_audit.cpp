@@ -64,7 +64,22 @@ struct Finding {
   bool hard = false;  ///< a missing key or an unknown provenance kind: never covered by the prose debt
 };
 
-bool alpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_' || (c & 0x80); }
+bool ascii_alpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+/// A UTF-8 lead byte of a letter (Latin-1 and Greek: 0xC3-0xCF; not the
+/// punctuation, dashes, minus or superscripts of 0xE2, nor the no-break space).
+bool letter_lead(unsigned char c) { return c >= 0xC3 && c <= 0xCF; }
+/// Whether the character that starts at byte e is a letter.
+bool letter_at(const std::string& s, std::size_t e) {
+  return e < s.size() && (ascii_alpha(s[e]) || letter_lead(static_cast<unsigned char>(s[e])));
+}
+/// Whether the character that ends just before byte i is a letter.
+bool letter_before(const std::string& s, std::size_t i) {
+  if (i == 0) return false;
+  std::size_t b = i - 1;
+  while (b > 0 && (static_cast<unsigned char>(s[b]) & 0xC0) == 0x80) --b;
+  return letter_at(s, b);
+}
+bool alpha(char c) { return ascii_alpha(c) || (c & 0x80); }
 bool digit(char c) { return std::isdigit(static_cast<unsigned char>(c)); }
 
 bool starts(const std::string& s, std::size_t i, const std::string& w) { return s.compare(i, w.size(), w) == 0; }
@@ -203,8 +218,8 @@ void audit_text(const std::string& s, const std::function<std::string(std::size_
       bool decimal;
       const std::size_t e = number_end(s, i, decimal);
       const std::string num = s.substr(i, e - i);
-      const bool ident = (i > 0 && (alpha(s[i - 1]) || (s[i - 1] == '.' && i > 1 && alpha(s[i - 2])))) ||
-                         (e < s.size() && alpha(s[e])) || (e + 1 < s.size() && s[e] == '.' && alpha(s[e + 1]));
+      const bool ident = letter_before(s, i) || (i > 1 && s[i - 1] == '.' && ascii_alpha(s[i - 2])) ||
+                         letter_at(s, e) || (e + 1 < s.size() && s[e] == '.' && ascii_alpha(s[e + 1]));
       const bool date = num.size() == 4 && e + 5 < s.size() && s[e] == '-' && digit(s[e + 1]) && digit(s[e + 2]) &&
                         s[e + 3] == '-' && digit(s[e + 4]);
       if (ident || date) {
