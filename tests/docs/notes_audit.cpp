@@ -23,7 +23,8 @@
 //    year ("2 elements", "step 3", "Hill'48"), and is not audited.
 //  - Not numbers: references (Table/Fig./Sec./Eq./Chapter/issue/item/step/
 //    case/run ... and the list that follows them), dates (2026-12-02),
-//    identifiers (a digit next to a letter or '_': d12.7, T5.16, Yld2004-18p,
+//    section and version numbers (6.6.2), identifiers (a digit next to a
+//    letter or '_': d12.7, T5.16, Yld2004-18p,
 //    2a), code spans `...`, TeX math $...$ (a formula's constants), HTML
 //    comments, link targets.
 //  - Case names: the thesis's pins 12.7, 25.4, 38.1 and 42 mm and draw
@@ -93,15 +94,19 @@ std::size_t skip_space(const std::string& s, std::size_t i) {
   }
 }
 
-/// End of the number starting at i (digits, one decimal point followed by a digit).
-std::size_t number_end(const std::string& s, std::size_t i, bool& decimal) {
+/// End of the number starting at i (digits, a decimal point followed by a
+/// digit; "6.6.2", a section or version number, is read whole).
+std::size_t number_end(const std::string& s, std::size_t i, bool& decimal, int* dots = nullptr) {
   decimal = false;
+  int n = 0;
   while (i < s.size() && digit(s[i])) ++i;
-  if (i + 1 < s.size() && s[i] == '.' && digit(s[i + 1])) {
+  while (i + 1 < s.size() && s[i] == '.' && digit(s[i + 1])) {
     decimal = true;
+    ++n;
     ++i;
     while (i < s.size() && digit(s[i])) ++i;
   }
+  if (dots) *dots = n;
   return i;
 }
 
@@ -216,8 +221,13 @@ void audit_text(const std::string& s, const std::function<std::string(std::size_
       }
     } else if (digit(s[i])) {
       bool decimal;
-      const std::size_t e = number_end(s, i, decimal);
+      int dots = 0;
+      const std::size_t e = number_end(s, i, decimal, &dots);
       const std::string num = s.substr(i, e - i);
+      if (dots > 1) {  // a section or version number, not a quantity
+        i = e;
+        continue;
+      }
       const bool ident = letter_before(s, i) || (i > 1 && s[i - 1] == '.' && ascii_alpha(s[i - 2])) ||
                          letter_at(s, e) || (e + 1 < s.size() && s[e] == '.' && ascii_alpha(s[e + 1]));
       const bool date = num.size() == 4 && e + 5 < s.size() && s[e] == '-' && digit(s[e + 1]) && digit(s[e + 2]) &&
