@@ -23,7 +23,7 @@
 //    year ("2 elements", "step 3", "Hill'48"), and is not audited.
 //  - Not numbers: references (Table/Fig./Sec./Eq./Chapter/issue/item/step/
 //    case/run ... and the list that follows them), dates (2026-12-02),
-//    section and version numbers (6.6.2), identifiers (a digit next to a
+//    indented code blocks, section and version numbers (6.6.2), identifiers (a digit next to a
 //    letter or '_': d12.7, T5.16, Yld2004-18p,
 //    2a), code spans `...`, TeX math $...$ (a formula's constants), HTML
 //    comments, link targets.
@@ -322,14 +322,17 @@ void audit_prose(const std::string& src_dir, const Values& values, std::vector<F
     };
     std::string line;
     int n = 0;
-    bool code = false;
+    bool code = false, indented = false;
     while (std::getline(in, line)) {
       ++n;
       const bool fence = line.rfind("```", 0) == 0;
       if (fence) code = !code;
       const bool directive = line.rfind("@", 0) == 0 || line.rfind("#", 0) == 0;
-      if (code || fence || directive || line.find_first_not_of(" \t") == std::string::npos) flush();
-      if (code || fence || line.rfind("@checks", 0) == 0) continue;
+      const bool blank = line.find_first_not_of(" \t") == std::string::npos;
+      if (code || fence || directive || blank) flush();
+      // An indented code block: a paragraph whose first line is indented by 4.
+      if (para.empty() && !blank) indented = line.rfind("    ", 0) == 0 || line.rfind("\t", 0) == 0;
+      if (code || fence || blank || indented || line.rfind("@checks", 0) == 0) continue;
       if (line.rfind("@table ", 0) == 0 || line.rfind("@figure ", 0) == 0) {
         const auto bar = line.find('|');
         line = bar == std::string::npos ? "" : line.substr(bar + 1);
