@@ -16,6 +16,9 @@
 //              (dated, documented in docs/ or in the note), or of an earlier
 //              version of the code: not reproduced by this run;
 //      pub     a published source other than the thesis, cited beside it.
+//  - ::: {.src-KIND} ... ::: (a pandoc fenced div, e.g. around a table of
+//    published inputs): every number inside has that provenance, unless it
+//    carries its own marker; the report labels the block.
 //  - A number with a decimal point anywhere else is a finding.
 //  - An integer without a decimal point is a finding only when a unit
 //    follows it (N, kN, MPa, mm, %, deg, s, ...; also through a range or list:
@@ -169,6 +172,8 @@ bool case_name(const std::string& num) {
   return names.count(num) > 0;
 }
 
+const std::set<std::string> kinds = {"thesis", "input", "run", "pub"};
+
 /// The value keys whose printed value is `num` (a hint for the fix).
 std::string holders(const Values& v, const std::string& num) {
   std::string out;
@@ -180,8 +185,7 @@ std::string holders(const Values& v, const std::string& num) {
 /// Audit one text (a note or a paragraph of prose); a finding at offset i
 /// gets `where(i)`.
 void audit_text(const std::string& s, const std::function<std::string(std::size_t)>& where_at, const Values& values,
-                std::vector<Finding>& out) {
-  static const std::set<std::string> kinds = {"thesis", "input", "run", "pub"};
+                std::vector<Finding>& out, bool covered = false) {
   std::size_t i = 0;
   while (i < s.size()) {
     if (starts(s, i, "{{")) {
@@ -263,7 +267,7 @@ void audit_text(const std::string& s, const std::function<std::string(std::size_
         i = e;
         continue;
       }
-      if (decimal || unit_at(s, chain)) {
+      if (!covered && (decimal || unit_at(s, chain))) {
         const std::size_t b = i < 30 ? 0 : i - 30;
         std::string ctx = s.substr(b, std::min<std::size_t>(s.size(), e + 30) - b);
         std::string what = "number '" + num + "' is neither {{key}} from values.csv nor marked [..]{.src-KIND} (\u2026" +
@@ -299,6 +303,11 @@ bool matches(const std::string& entry, const std::string& id) {
   return entry == id;
 }
 
+bool trim_eq(const std::string& line, const std::string& want) {
+  const auto b = line.find_first_not_of(" \t"), e = line.find_last_not_of(" \t");
+  return b != std::string::npos && line.substr(b, e - b + 1) == want;
+}
+
 /// Prose of the chapter: intro.md and results.md, paragraph by paragraph
 /// (a number or a case name may wrap onto the next line), outside code
 /// blocks; of a directive line only its caption, on its own.
@@ -308,6 +317,7 @@ void audit_prose(const std::string& src_dir, const Values& values, std::vector<F
     std::ifstream in(p);
     if (!in) throw InputError(p + ": cannot be read");
     std::string para;
+    std::string block;  // the KIND of the ::: {.src-KIND} block the text is in
     std::vector<std::pair<std::size_t, int>> starts;  // offset in para -> line
     auto flush = [&] {
       if (!para.empty())
@@ -316,7 +326,7 @@ void audit_prose(const std::string& src_dir, const Values& values, std::vector<F
           for (const auto& [off, line] : starts)
             if (off <= i) n = line;
           return p + ":" + std::to_string(n);
-        }, values, out);
+        }, values, out, !block.empty());
       para.clear();
       starts.clear();
     };
@@ -327,6 +337,18 @@ void audit_prose(const std::string& src_dir, const Values& values, std::vector<F
       ++n;
       const bool fence = line.rfind("```", 0) == 0;
       if (fence) code = !code;
+      if (!code && line.rfind(":::", 0) == 0) {  // a fenced div: ::: {.src-KIND} opens a block, ::: closes it
+        flush();
+        const auto k = line.find("{.src-");
+        if (k != std::string::npos) {
+          block = line.substr(k + 6, line.find('}', k) - k - 6);
+          if (!kinds.count(block))
+            out.push_back({p + ":" + std::to_string(n), "provenance block '{.src-" + block + "}': expected thesis, input, run or pub", true});
+        } else if (trim_eq(line, ":::")) {
+          block.clear();
+        }
+        continue;
+      }
       const bool directive = line.rfind("@", 0) == 0 || line.rfind("#", 0) == 0;
       const bool blank = line.find_first_not_of(" \t") == std::string::npos;
       if (code || fence || directive || blank) flush();
