@@ -2,7 +2,9 @@
 // (intro.md, results.md) or in a disagreement note (data/thesis/
 // disagreements.csv, the rows this run applied) comes from the run, as
 // {{key}} from the run's values.csv, or says where it comes from with a
-// provenance marker.  The rules, fixed before the first run:
+// provenance marker.  The rules (written before the first audit of a
+// chapter; each later refinement, where the audit misread text, is a commit
+// of its own with the case that needed it):
 //
 //  - {{key}}: substituted from the run; the key must be in the run's
 //    values.csv (a note that quotes a value the run does not hold fails).
@@ -12,9 +14,10 @@
 //              its text and figures, named beside it: "Table 5.3", "Fig. 2.7");
 //      input   a definition or an input, not a result: a mesh size, a pin
 //              radius, a tolerance, a limit, a deck setting;
-//      run     a result of a named diagnostic run outside this chapter's run
-//              (dated, documented in docs/ or in the note), or of an earlier
-//              version of the code: not reproduced by this run;
+//      run     a result of a named diagnostic run or re-analysis outside
+//              this chapter's run (dated, documented in docs/ or in the
+//              note), or of an earlier version of the code: not reproduced
+//              by this run;
 //      pub     a published source other than the thesis, cited beside it.
 //  - ::: {.src-KIND} ... ::: (a pandoc fenced div, e.g. around a table of
 //    published inputs): every number inside has that provenance, unless it
@@ -26,9 +29,9 @@
 //    year ("2 elements", "step 3", "Hill'48"), and is not audited.
 //  - Not numbers: references (Table/Fig./Sec./Eq./Chapter/issue/item/step/
 //    case/run ... and the list that follows them), dates (2026-12-02),
-//    indented code blocks, section and version numbers (6.6.2), identifiers (a digit next to a
-//    letter or '_': d12.7, T5.16, Yld2004-18p,
-//    2a), code spans `...`, TeX math $...$ (a formula's constants), HTML
+//    section and version numbers (6.6.2), identifiers (a digit next to a
+//    letter or '_': d12.7, T5.16, Yld2004-18p, 2a), code spans `...`,
+//    indented code blocks, TeX math $...$ (a formula's constants), HTML
 //    comments, link targets.
 //  - Case names: the thesis's pins 12.7, 25.4, 38.1 and 42 mm and draw
 //    speeds 6.35, 25.4 and 101.6 mm/s name a case when "mm" or "mm/s" follows
