@@ -133,6 +133,10 @@ void reduce_pin(study::Chapter& c, const Inputs& in, const Runs& r, std::size_t 
   c.value("db_muc_d" + d, fmt_fixed(mu_cc, 4));
   c.value("db_mus_d" + d, fmt_fixed(mu_ss, 4));
   c.value("db_retrieved_d" + d, fmt_fixed(100 * mu_cc / mu_c, 1), "%");
+  c.value("db_curve_d" + d, fmt_fixed(mu_curve, 4));               // the input curve at P_avg
+  c.value("db_over_curve_d" + d, fmt_fixed(mu_ss / mu_curve, 2));  // retrieved over that (the disagreement note)
+  c.value("db_peak_ratio_d" + d, fmt_fixed(ratio, 2));            // largest centre-row pressure over the mean
+  c.value("db_arc_d" + d, fmt_fixed(a.angle(), 0), "deg");
   // Sec. 3.5.2: "the input friction coefficient of 0.1 was well retrieved (95
   // to 97%)".  Tolerance from the thesis's own numbers (stated before the
   // run): the printed range over its three pins, 95-97 %, widened by half a

@@ -117,6 +117,27 @@ std::string html_breakable(const std::string& s, const std::string& after) {
   return o;
 }
 
+std::string html_provenance(const std::string& html) {
+  std::string o;
+  std::size_t pos = 0;
+  for (;;) {
+    const std::size_t mark = html.find("]{.src-", pos);
+    if (mark == std::string::npos) break;
+    const std::size_t open = html.rfind('[', mark);
+    const std::size_t end = html.find('}', mark);
+    if (open == std::string::npos || open < pos || end == std::string::npos) {
+      o += html.substr(pos, mark + 1 - pos);
+      pos = mark + 1;
+      continue;
+    }
+    const std::string kind = html.substr(mark + 7, end - mark - 7);
+    o += html.substr(pos, open - pos) + "<span class=\"src src-" + kind + "\" title=\"source: " + kind + "\">" +
+         html.substr(open + 1, mark - open - 1) + "</span>";
+    pos = end + 1;
+  }
+  return o + html.substr(pos);
+}
+
 std::string checks_html_table(const CsvTable& t, const std::string& caption) {
   std::ostringstream os;
   const bool kinds = t.has_column("kind");
@@ -136,7 +157,7 @@ std::string checks_html_table(const CsvTable& t, const std::string& caption) {
        << html_escape(display_value(t.text(r, "ours"), unit, tol)) << "</td><td class=\"num\">"
        << html_escape(display_tolerance(tol, unit)) << "</td><td>" << html_escape(display_unit(unit))
        << "</td><td><span class=\"status-" << html_escape(status) << "\">" << html_escape(status)
-       << "</span></td><td class=\"note\">" << html_breakable(t.text(r, "note"), "/_") << "</td></tr>\n";
+       << "</span></td><td class=\"note\">" << html_provenance(html_breakable(t.text(r, "note"), "/_")) << "</td></tr>\n";
   }
   os << "</tbody>\n</table>\n</div>\n";
   return os.str();

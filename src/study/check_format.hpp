@@ -48,6 +48,10 @@ std::string html_escape(const std::string& s);
 /// long name does not set the width of a checks table and push its note
 /// column out of view (report/check_html.py measures the narrowest layout).
 std::string html_breakable(const std::string& s, const std::string& after);
+/// HTML text (already escaped) with each provenance marker of a note,
+/// "[161.6 N]{.src-thesis}" (tests/docs/notes_audit.cpp), as a span that the
+/// style sheet tags with its source: <span class="src src-thesis">161.6 N</span>.
+std::string html_provenance(const std::string& html);
 
 /// A chapter's checks as an HTML table (raw HTML inside the Markdown, so the
 /// report controls its classes): check, kind, quantity, thesis, ours,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/csv.hpp"
@@ -47,11 +48,17 @@ Errata Errata::load(const std::string& path, const std::string& tier) {
     }
     const std::string ex = t.text(r, "explanation");
     if (ex.empty()) throw InputError(t.where(r, "explanation") + ": empty explanation");
-    if (id.empty() || id == "*") throw InputError(t.where(r, "id") + ": an erratum must name a check id or an id prefix");
-    if (!id.empty() && id.back() == '*')
-      e.prefix_[id.substr(0, id.size() - 1)] = ex;
-    else
-      e.exact_[id] = ex;
+    // One explanation may serve several checks: their ids separated by spaces.
+    std::istringstream ids(id);
+    int n = 0;
+    for (std::string one; ids >> one; ++n) {
+      if (one == "*") throw InputError(t.where(r, "id") + ": an erratum must name a check id or an id prefix");
+      if (one.back() == '*')
+        e.prefix_[one.substr(0, one.size() - 1)] = ex;
+      else
+        e.exact_[one] = ex;
+    }
+    if (n == 0) throw InputError(t.where(r, "id") + ": an erratum must name a check id or an id prefix");
   }
   return e;
 }

@@ -54,7 +54,8 @@ struct Check {
   Status status = Status::pass;
 };
 
-/// Documented thesis errata: id or id prefix (ending in '*') -> explanation.
+/// Documented thesis errata: id or id prefix (ending in '*') -> explanation;
+/// one row may name several ids, separated by spaces, that share its explanation.
 class Errata {
  public:
   /// With a `tier` column (disagreements.csv), rows whose tier is neither

@@ -360,7 +360,7 @@ void not_reproduced_section(std::ostream& os, const std::vector<ChapterChecks>& 
       if (k == 0)
         nr << "<td class=\"note\"" << (rows.size() > 1 ? " rowspan=\"" + std::to_string(rows.size()) + "\"" : "")
            << ">" << (rows.size() > 1 ? "<em>The " + std::to_string(rows.size()) + " checks beside this note:</em> " : "")
-           << html_breakable(note, "/_") << "</td>";
+           << html_provenance(html_breakable(note, "/_")) << "</td>";
       nr << "</tr>\n";
     }
   os << "## Not reproduced {.unnumbered}\n\n<div class=\"table-scroll\">\n<table class=\"checks-table\">\n"

@@ -113,6 +113,19 @@ BOOST_AUTO_TEST_CASE(disagreement_tiers) {
   BOOST_TEST(study::Errata::load(list).explain("q.only") == "coarse mesh artefact");  // no tier: every row
   write_file_atomic(list, "id,explanation,tier\nx,y,fine\n");
   BOOST_CHECK_THROW(study::Errata::load(list, "quick"), InputError);
+  // One row for several checks (ids separated by spaces): each is excused by
+  // the one explanation; an unused id of the row is still reported.
+  write_file_atomic(list, "id,explanation,tier\nm.a m.b m.c.*,one shared note,\n");
+  const auto shared = study::Errata::load(list, "quick");
+  BOOST_TEST(shared.explain("m.a") == "one shared note");
+  BOOST_TEST(shared.explain("m.b") == "one shared note");
+  BOOST_TEST(shared.explain("m.c.x") == "one shared note");
+  BOOST_TEST(shared.explain("m.d").empty());
+  const auto unused = shared.unused({"m.a", "m.c.x"});
+  BOOST_TEST(unused.size() == 1u);
+  BOOST_TEST(unused.front() == "m.b");
+  write_file_atomic(list, "id,explanation,tier\nm.a *,bad,\n");
+  BOOST_CHECK_THROW(study::Errata::load(list, "quick"), InputError);
 }
 
 // Notes quote the run's values: a documented disagreement "ours is {{fb}} N"

@@ -18,6 +18,7 @@
 //  - Two disagreements sharing one note show the note once (rowspan="2"),
 //    a third with its own note stands alone: the note text appears once each.
 //  - html_breakable("a_b.c", "._") is "a_<wbr>b.<wbr>c".
+//  - html_provenance turns "[161.6 N]{.src-thesis}" into a tagged span, nothing else.
 //  - link_pages on a front page and two chapter pages (x.html, y.html): the
 //    front page's href="#checks-y" becomes "y.html#checks-y"; x's link to
 //    "#y-sec" becomes "y.html#y-sec", its own "#x-sec" stays; every page
@@ -197,6 +198,11 @@ BOOST_AUTO_TEST_CASE(list_audit_checks_each_entry_on_its_chapters_tiers) {
 BOOST_AUTO_TEST_CASE(breakable_text_breaks_after_the_given_characters) {
   BOOST_TEST(study::html_breakable("a_b.c", "._") == "a_<wbr>b.<wbr>c");
   BOOST_TEST(study::html_breakable("a<b", "") == "a&lt;b");
+  // A provenance marker of a note becomes a span the style sheet tags; other brackets stay.
+  BOOST_TEST(study::html_provenance("ours 1 N against [161.6 N]{.src-thesis} [sic]") ==
+             "ours 1 N against <span class=\"src src-thesis\" title=\"source: thesis\">161.6 N</span> [sic]");
+  BOOST_TEST(study::html_provenance("[a] and [2 mm]{.src-input}") ==
+             "[a] and <span class=\"src src-input\" title=\"source: input\">2 mm</span>");
 }
 
 BOOST_AUTO_TEST_CASE(pages_share_contents_and_link_across) {
