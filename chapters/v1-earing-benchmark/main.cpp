@@ -7,6 +7,7 @@
 //       Swift); --variants keeps a diagnostic subset.
 //   1b. calibrate_yld2004: Yld2004-18p fitted to the published sheet tests;
 //       the calibration table beside Hill'48 and POSTECH's Yld2004-18p.
+//       The numbers the prose quotes from it are values (v1_yield_values.cpp).
 //   2.  state_bounds: the checks' bounds before any run: the mesh's own
 //       departure from polar symmetry bounds the von Mises earing; the
 //       r-values give the ear positions (r0, r90 > r45: ears at 0 and 90 deg).
