@@ -7,6 +7,7 @@
 //       Swift); --variants keeps a diagnostic subset.
 //   1b. calibrate_yld2004: Yld2004-18p fitted to the published sheet tests;
 //       the calibration table beside Hill'48 and POSTECH's Yld2004-18p.
+//       The numbers the prose quotes from it are values (v1_yield_values.cpp).
 //   2.  state_bounds: the checks' bounds before any run: the mesh's own
 //       departure from polar symmetry bounds the von Mises earing; the
 //       r-values give the ear positions (r0, r90 > r45: ears at 0 and 90 deg).
@@ -42,6 +43,7 @@
 #include "study/run_health.hpp"
 #include "study/chapter.hpp"
 #include "v1_cup.hpp"
+#include "v1_yield_values.hpp"
 
 using namespace drawbend;
 
@@ -182,7 +184,9 @@ void yield_between_angles(study::Chapter& c, const material::SheetTests& tests,
                       "sigma_ps(0), and the flange strain ratio at 37.5, 52.5 and 90 deg");
   std::vector<material::Yld2004Fit::Local> loc = fit.local;
   std::stable_sort(loc.begin(), loc.end(), [](const auto& a, const auto& b) { return a.cost < b.cost; });
+  std::vector<std::size_t> groups;  // the first start of each set
   for (std::size_t i = 0; i < loc.size();) {
+    groups.push_back(i);
     const material::NamedYield m{"m", &loc[i].yield, nullptr};
     std::string starts;
     std::size_t j = i;
@@ -199,6 +203,7 @@ void yield_between_angles(study::Chapter& c, const material::SheetTests& tests,
     i = j;
   }
   c.save(mins, "yld2004_minima");
+  v1::yield_values(c, models, tests, loc, groups);  // the numbers the prose quotes from both tables
 }
 
 /// Step 1b: Yld2004-18p fitted to every published material test (drawbend calibrate's fit, equal weights on the
@@ -298,6 +303,7 @@ Bounds state_bounds(study::Chapter& c, const std::string& deck, const v1::RunSpe
                                    fmt_fixed(h.r_value(2 * q), 2) + ", σ45/σ0 = " + fmt_fixed(h.uniaxial_ratio(q), 3) +
                                    ", σ90/σ0 = " + fmt_fixed(h.uniaxial_ratio(2 * q), 3) +
                                    ", σb/σ0 = " + fmt_fixed(h.biaxial_ratio(), 3));
+    c.value(v.id + "_sb", fmt_fixed(h.biaxial_ratio(), 3));
   }
   c.save(ct, "hill48_calibrations");
   return b;
