@@ -106,6 +106,10 @@ struct FormPlans {
   void add(EffectKind k, const std::string& by = "") {
     if (applicable(d, spec, k, c.name)) plans.push_back({{{k, by}}});
   }
+  // A column of the data with 3 or 4 distinct numeric values (levels per group, as a categorical one).
+  bool few_levels(const std::set<double>& distinct) const {
+    return distinct.size() >= 3 && distinct.size() <= 4 && d.data->extra_index(c.name) >= 0;
+  }
   void categorical(const std::vector<std::string>& bys);
   void numeric(const std::vector<std::string>& bys);
   void force_and_bending(const std::set<double>& distinct);
@@ -131,6 +135,11 @@ void FormPlans::numeric(const std::vector<std::string>& bys) {
   for (double v : c.x)
     if (std::isfinite(v)) distinct.insert(v);
   if (distinct.size() >= 3 && distinct.size() <= 8) add(EffectKind::categorical);
+  // A column of the data with 3 or 4 distinct values is also taken as levels
+  // per group of a model input, as a categorical one is (a level pattern
+  // confined to one pin, speed, direction or lubricant is not linear in x).
+  if (few_levels(distinct))
+    for (const auto& by : bys) add(EffectKind::categorical_by, by);
   for (const auto& by : bys) add(EffectKind::generic_linear_by, by);
   // A smooth of any shape (bump, U, periodic, sigmoid, step), 3, 5 or 8
   // dof overall (8: a narrow bump, a step or two periods) and 3 or 5 per
@@ -158,6 +167,7 @@ void FormPlans::force_and_bending(const std::set<double>& distinct) {
     plans.push_back({{{EffectKind::force_offset, "pin", 1}}});
     if (distinct.size() >= 3 && distinct.size() <= 8 && d.data->extra_index(c.name) >= 0)
       plans.push_back({{{EffectKind::force_offset, "", 0}}});  // levels
+    if (few_levels(distinct)) plans.push_back({{{EffectKind::force_offset, "pin", 0}}});  // levels per pin
     if (distinct.size() > 8)
       for (const std::string by : {"", "pin"}) plans.push_back({{{EffectKind::force_offset, by, 3}}});
   }

@@ -9,15 +9,18 @@
 //              direction / lubricant group; numeric: linear, saturating tanh,
 //              logarithmic (positive columns), saturating exponential (lambda
 //              on a grid), a step (threshold on a grid of quantiles), levels
-//              (3-8 distinct values), linear per pin / speed / direction /
-//              lubricant group, a smooth of any shape (natural cubic spline,
+//              (3-8 distinct values; 3 or 4: also levels per pin / speed /
+//              direction / lubricant group, as a categorical column), linear
+//              per pin / speed / direction / lubricant group, a smooth of any
+//              shape (natural cubic spline,
 //              3, 5 or 8 dof, and 3 or 5 dof per group of those inputs;
 //              and, where the screen's strongest probe is confined to one group
 //              of a model input, a slope, a 3-dof smooth or the levels in that
 //              one group only), the
 //              force channel (an extra force on every row, rotating included,
-//              fitted jointly: linear per pin, levels, a 3-dof smooth overall
-//              and per pin), and the bending channel (F_B + c_pin z) alone
+//              fitted jointly: linear per pin, levels (3 or 4 values: also
+//              per pin), a 3-dof smooth overall and per pin), and the bending
+//              channel (F_B + c_pin z) alone
 //              or with a linear friction term ("both").  A numeric model input
 //              the base model does not use (speed when continuous) gets the
 //              generic forms too.
@@ -30,6 +33,8 @@
 // within one standard error of the best form's (the standard error of the
 // difference of the two, from the per-test sums of squared held-out residuals);
 // so the library's physical forms are members of the family, not a gate before it.
+// Between variables (loop.cpp), the step goes to the variable whose best passed
+// form predicts held-out data best; it keeps that variable's kept form.
 #include <functional>
 #include <map>
 #include <string>

@@ -227,6 +227,7 @@ class FitMemo {
 struct RoundChoice {
   Step best_step;
   FormTrial best_form;
+  double best_form_rms = INFINITY;  // the best passed form's held-out RMS of best_step's variable
   bool found = false;
   std::vector<std::pair<std::string, CvResult>> kept;  // column -> its kept form's held-out result
 };
@@ -370,9 +371,17 @@ void LoopSearch::consider(const CandidateResult& c, const Candidate& cand, bool 
     return;
   }
   if (s.cls == "undeclared variable") ch.kept.push_back({c.name, trials[keep].cv});
-  const bool better = !ch.found || trials[keep].cv.rms < ch.best_form.cv.rms;
+  // Candidates compete by their best form's held-out error, not by the kept
+  // (simplest within one standard error) form's: the one-SE rule chooses a
+  // form within a variable, and must not hand the step to another variable
+  // whose few-parameter form is only nearly as good.
+  double best_rms = INFINITY;
+  for (const auto& t : trials)
+    if (t.passed) best_rms = std::min(best_rms, t.cv.rms);
+  const bool better = !ch.found || best_rms < ch.best_form_rms;
   if (better) {
     ch.best_form = trials[keep];
+    ch.best_form_rms = best_rms;
     ch.best_step = s;
     ch.found = true;
   }
