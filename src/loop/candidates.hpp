@@ -138,6 +138,8 @@ struct CandidateResult {
   /// to; -1: none).
   std::string cell_by;
   int cell_group = -1;
+  /// The model input of the strongest probe when it is a per-input one ("": an overall probe).
+  std::string probe_input;
 };
 
 /// What the screen knows of the model: the model's inputs as groups per row

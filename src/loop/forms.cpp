@@ -114,6 +114,7 @@ struct FormPlans {
   void numeric(const std::vector<std::string>& bys);
   void force_and_bending(const std::set<double>& distinct);
   void in_cell(const std::string& cell_by, int cell_group);
+  void split_cells(const std::string& input);
 };
 
 // A categorical column: its levels, per group of a model input, on the force channel.
@@ -193,6 +194,29 @@ void FormPlans::in_cell(const std::string& cell_by, int cell_group) {
     plans.push_back({{{EffectKind::generic_linear_by, cell_by, 0, cell_group}}});
   if (!c.categorical && applicable(d, spec, EffectKind::generic_smooth, c.name))
     plans.push_back({{{EffectKind::generic_smooth, cell_by, 3, cell_group}}});
+}
+
+// An effect on one side of a threshold of a continuous model input (speed or
+// direction with more than 6 distinct values, which groups() cuts at its
+// tertiles), when the screen's strongest probe is per that input: the one-cell
+// forms (in_cell) in the group below or at and above a threshold midway
+// between two of the input's distinct values at its quartiles.  Held-out
+// error and the one-standard-error rule choose among them and the other forms.
+void FormPlans::split_cells(const std::string& input) {
+  if (input != "speed_mm_s" && input != "direction_deg") return;
+  std::vector<double> v;  // the input's distinct values on the fixed-pin rows, ascending
+  for (size_t i = 0; i < d.rows.size(); ++i)
+    if (!d.rows[i].rotating)
+      v.push_back(input == "speed_mm_s" ? d.data->rows[i].speed_mm_s : d.data->rows[i].direction_deg);
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  if (v.size() <= 6) return;  // groups() has every value as its own group: in_cell covers it
+  for (int q = 1; q <= 3; ++q) {
+    const size_t at = v.size() * q / 4;
+    char by[64];
+    std::snprintf(by, sizeof by, "%s>=%.6g", input.c_str(), 0.5 * (v[at - 1] + v[at]));
+    for (int side = 0; side < 2; ++side) in_cell(by, side);
+  }
 }
 
 // Trial t of plan p: the model with its effects, and its name, meaning and channel.
@@ -330,7 +354,7 @@ double mse_diff_se(const CvResult& a, const CvResult& b, const Folds& f) {
 std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
                                  const CvResult& cur, const JointFit& cur_joint, double thr, double min_gain_N,
                                  const std::function<void(const std::string&)>& progress, const std::string& cell_by,
-                                 int cell_group, TrialCache* cache) {
+                                 int cell_group, TrialCache* cache, const std::string& probe_input) {
   FormPlans fp{d, spec, c, {}};
   std::vector<Plan>& plans = fp.plans;
   for (EffectKind k : effects_for(c.name))
@@ -343,6 +367,7 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
     if (c.categorical) fp.categorical(bys);
     else fp.numeric(bys);
     if (cell_group >= 0 && !cell_by.empty() && cell_by != c.name) fp.in_cell(cell_by, cell_group);
+    if (!probe_input.empty() && probe_input != c.name) fp.split_cells(probe_input);
   }
   std::vector<FormTrial> out;
   for (const Plan& p : plans) {

@@ -81,7 +81,8 @@ ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const s
 std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
                                  const CvResult& cur, const JointFit& cur_joint, double threshold, double min_gain_N,
                                  const std::function<void(const std::string&)>& progress,
-                                 const std::string& cell_by = "", int cell_group = -1, TrialCache* cache = nullptr);
+                                 const std::string& cell_by = "", int cell_group = -1, TrialCache* cache = nullptr,
+                                 const std::string& probe_input = "");
 
 /// Index of the form kept (simplest within one standard error of the best
 /// among those passed), -1 when none passed.

@@ -350,7 +350,7 @@ void LoopSearch::consider(const CandidateResult& c, const Candidate& cand, bool 
   const auto prog = [&](const std::string& m) { progress(o, m); };
   const auto trials =
       try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by, c.cell_group,
-                &trials_done);
+                &trials_done, c.probe_input);
   const int keep = choose_form(trials, res.folds);
   Step s;
   s.variable = c.name;

@@ -86,7 +86,8 @@ struct Design {
   std::vector<double> values(const std::string& column) const;
   /// Group index per row of a model input used as an effect's `by`: "pin"
   /// (pin index), "speed_mm_s", "direction_deg" (distinct values of the fixed
-  /// rows, or 3 tertiles when more than 6), "lubricant"; *n receives the count.
+  /// rows, or 3 tertiles when more than 6), "lubricant", or "speed_mm_s>=t" /
+  /// "direction_deg>=t" (two groups: below t, at or above t); *n receives the count.
   std::vector<int> groups(const std::string& by, int* n) const;
 };
 
