@@ -78,8 +78,8 @@ std::string fits_key(const ModelSpec& s) {
     const bool own_column = generic_kind(e.kind);
     const EffectKind kind = e.kind == EffectKind::drift ? EffectKind::generic_linear : e.kind;
     char num[96];
-    std::snprintf(num, sizeof num, "|%d,%a,%d,%d,%d,%d,", static_cast<int>(kind), e.lambda_mm, e.n_levels, e.n_groups,
-                  e.cell, e.n_basis);
+    std::snprintf(num, sizeof num, "|%d,%a,%d,%d,%d,%d,%d,", static_cast<int>(kind), e.lambda_mm, e.n_levels,
+                  e.n_groups, e.cell, e.n_basis, e.bend_scaled ? 1 : 0);
     k += num + std::to_string(e.by.size()) + ":" + e.by + "," + (own_column ? e.variable : "");
   }
   return k;
@@ -91,6 +91,7 @@ struct Part {
   std::string by;
   int nb = 0;     // generic_smooth: spline dof
   int cell = -1;  // >= 0: confined to that group of `by`
+  bool scaled = false;  // force_offset: times the pin's relative bending force
 };
 struct Plan {
   std::vector<Part> parts;
@@ -123,6 +124,8 @@ void FormPlans::categorical(const std::vector<std::string>& bys) {
   if (c.levels.size() <= 4)
     for (const auto& by : bys) add(EffectKind::categorical_by, by);
   add(EffectKind::force_offset);  // levels on the force channel
+  if (applicable(d, spec, EffectKind::force_offset, c.name))  // as many per cent of each pin's bending force
+    plans.push_back({{{EffectKind::force_offset, "", 0, -1, true}}});
   if (c.levels.size() <= 4) add(EffectKind::force_offset, "pin");
 }
 
@@ -166,11 +169,14 @@ void FormPlans::force_and_bending(const std::set<double>& distinct) {
   }
   if (every_row_numeric && applicable(d, spec, EffectKind::force_offset, c.name)) {
     plans.push_back({{{EffectKind::force_offset, "pin", 1}}});
-    if (distinct.size() >= 3 && distinct.size() <= 8 && d.data->extra_index(c.name) >= 0)
-      plans.push_back({{{EffectKind::force_offset, "", 0}}});  // levels
+    if (distinct.size() >= 3 && distinct.size() <= 8 && d.data->extra_index(c.name) >= 0) {
+      plans.push_back({{{EffectKind::force_offset, "", 0}}});            // levels
+      plans.push_back({{{EffectKind::force_offset, "", 0, -1, true}}});  // levels, scaled with the bending force
+    }
     if (few_levels(distinct)) plans.push_back({{{EffectKind::force_offset, "pin", 0}}});  // levels per pin
     if (distinct.size() > 8)
       for (const std::string by : {"", "pin"}) plans.push_back({{{EffectKind::force_offset, by, 3}}});
+    if (distinct.size() > 8) plans.push_back({{{EffectKind::force_offset, "", 3, -1, true}}});
   }
   if (applicable(d, spec, EffectKind::bending_linear, c.name)) {
     plans.push_back({{{EffectKind::bending_linear, ""}}});
@@ -224,12 +230,14 @@ FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c
   FormTrial t;
   t.spec = spec;
   bool bend = false, fric = false;
-  for (const auto& [k, by, nb, cell] : p.parts) {
+  for (const auto& [k, by, nb, cell, scaled] : p.parts) {
     t.spec = with_effect(d, t.spec, k, c.name, by);
     if (nb > 0) t.spec.effects.back().n_basis = nb;
     t.spec.effects.back().cell = cell;
+    t.spec.effects.back().bend_scaled = scaled;
     t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (nb > 0 ? " " + std::to_string(nb) + " dof" : "") +
-              (by.empty() ? "" : " (" + by + (cell >= 0 ? " group " + std::to_string(cell + 1) + " only" : "") + ")");
+              (by.empty() ? "" : " (" + by + (cell >= 0 ? " group " + std::to_string(cell + 1) + " only" : "") + ")") +
+              (scaled ? " (scaled with the pin's bending force)" : "");
     t.meaning += (t.meaning.empty() ? "" : "; ") + effect_meaning(k);
     (acts_on_bending(k) ? bend : fric) = true;
   }

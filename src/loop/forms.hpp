@@ -19,8 +19,9 @@
 //              one group only), the
 //              force channel (an extra force on every row, rotating included,
 //              fitted jointly: linear per pin, levels (3 or 4 values: also
-//              per pin), a 3-dof smooth overall and per pin), and the bending
-//              channel (F_B + c_pin z) alone
+//              per pin), a 3-dof smooth overall and per pin; levels and the
+//              smooth also times the pin's relative bending force, a change of
+//              the bending force itself), and the bending channel (F_B + c_pin z) alone
 //              or with a linear friction term ("both").  A numeric model input
 //              the base model does not use (speed when continuous) gets the
 //              generic forms too.

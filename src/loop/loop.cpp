@@ -159,7 +159,8 @@ ModelSpec without(const ModelSpec& spec, const Step& s, bool bending_linear) {
   t.effects.clear();
   for (const auto& e : spec.effects) {
     bool mine = false;
-    for (const auto& m : s.added) mine = mine || (m.kind == e.kind && m.variable == e.variable && m.by == e.by && m.cell == e.cell);
+    for (const auto& m : s.added) mine = mine || (m.kind == e.kind && m.variable == e.variable && m.by == e.by && m.cell == e.cell &&
+                            m.bend_scaled == e.bend_scaled);
     if (!mine) t.effects.push_back(e);
   }
   for (const auto& m : s.added)
@@ -181,7 +182,7 @@ std::string spec_key(const ModelSpec& s) {
     char lam[40];
     std::snprintf(lam, sizeof lam, "%a", e.lambda_mm);
     k << '|' << static_cast<int>(e.kind) << ',' << e.variable.size() << ':' << e.variable << ',' << lam << ','
-      << e.n_levels << ',' << e.by.size() << ':' << e.by << ',' << e.n_groups << ',' << e.n_basis << ',' << e.cell;
+      << e.n_levels << ',' << e.by.size() << ':' << e.by << ',' << e.n_groups << ',' << e.n_basis << ',' << e.cell << ',' << e.bend_scaled;
   }
   return k.str();
 }

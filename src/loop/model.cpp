@@ -301,6 +301,24 @@ std::vector<double> force_channel_offsets(const Design& d, const Fit& f, const L
   return off;
 }
 
+// Per pin: its bending line at the mean back tension of its training rows,
+// over the mean of these over the pins (1 for a pin without a line).
+std::vector<double> bending_scale(const Design& d, const std::vector<int>& train, const Fit& f) {
+  const size_t np = d.pins.size();
+  std::vector<double> sum(np, 0.0), cnt(np, 0.0), s(np, 1.0);
+  for (int i : train) sum[d.rows[i].pin] += d.rows[i].fback, cnt[d.rows[i].pin] += 1;
+  double mean = 0;
+  int n = 0;
+  for (size_t p = 0; p < np; ++p) {
+    const double b = f.b0[p] + f.b1[p] * (cnt[p] > 0 ? sum[p] / cnt[p] : 0.0);
+    if (std::isfinite(b) && b > 0) s[p] = b, mean += b, ++n;
+    else s[p] = NAN;
+  }
+  mean = n > 0 ? mean / n : 1.0;
+  for (double& v : s) v = std::isfinite(v) ? v / mean : 1.0;
+  return s;
+}
+
 // Standard errors: s^2 (J^T J)^-1 at the solution.
 void standard_errors(const Design& d, const ModelSpec& spec, const Layout& L, const Eigen::MatrixXd& J, double sse,
                      int n, int p, Fit& f) {
@@ -324,6 +342,8 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   const bool linear_bending = spec.bending_linear || spec.has(EffectKind::bending_tension);
   if (bending_effects.empty()) fit_bending(d, train, linear_bending, f);
   else fit_bending_channels(d, train, linear_bending, bending_effects, f);
+  if (std::any_of(spec.effects.begin(), spec.effects.end(), [](const Effect& e) { return e.bend_scaled; }))
+    f.bend_scale = bending_scale(d, train, f);
   std::vector<int> mu_rows;
   const std::vector<int> rows = friction_rows(d, train, f, mu_rows);
   Eigen::VectorXd th = initial_mu(d, L, mu_rows, f);
