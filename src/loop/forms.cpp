@@ -199,7 +199,7 @@ void FormPlans::in_cell(const std::string& cell_by, int cell_group) {
   if (!c.categorical && applicable(d, spec, EffectKind::generic_linear_by, c.name))
     plans.push_back({{{EffectKind::generic_linear_by, cell_by, 0, cell_group}}});
   if (!c.categorical && applicable(d, spec, EffectKind::generic_smooth, c.name))
-    plans.push_back({{{EffectKind::generic_smooth, cell_by, 3, cell_group}}});
+    for (int nb : {3, 5}) plans.push_back({{{EffectKind::generic_smooth, cell_by, nb, cell_group}}});
 }
 
 // An effect on one side of a threshold of a continuous model input (speed or
@@ -223,6 +223,21 @@ void FormPlans::split_cells(const std::string& input) {
     std::snprintf(by, sizeof by, "%s>=%.6g", input.c_str(), 0.5 * (v[at - 1] + v[at]));
     for (int side = 0; side < 2; ++side) in_cell(by, side);
   }
+}
+
+// The group of model input `by` whose fixed-pin rows have the largest mean
+// squared held-out residual under the current model (ties: the first).
+int worst_group(const Design& d, const CvResult& cur, const std::string& by) {
+  int n = 0;
+  const std::vector<int> g = d.groups(by, &n);
+  std::vector<double> ss(n, 0.0), cnt(n, 0.0);
+  for (size_t i = 0; i < g.size(); ++i)
+    if (!d.rows[i].rotating && i < cur.resid.size() && std::isfinite(cur.resid[i]))
+      ss[g[i]] += cur.resid[i] * cur.resid[i], cnt[g[i]] += 1;
+  int best = 0;
+  for (int k = 0; k < n; ++k)
+    if (cnt[k] > 0 && (cnt[best] == 0 || ss[k] / cnt[k] > ss[best] / cnt[best])) best = k;
+  return best;
 }
 
 // Trial t of plan p: the model with its effects, and its name, meaning and channel.
@@ -375,7 +390,13 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
     if (c.categorical) fp.categorical(bys);
     else fp.numeric(bys);
     if (cell_group >= 0 && !cell_by.empty() && cell_by != c.name) fp.in_cell(cell_by, cell_group);
-    if (!probe_input.empty() && probe_input != c.name) fp.split_cells(probe_input);
+    if (!probe_input.empty() && probe_input != c.name) {
+      // The screen's strongest probe is per a model input but named no one
+      // group (the one-cell sub-probes are off): the group with the largest
+      // mean squared held-out residual of the current model.
+      if (cell_group < 0) fp.in_cell(probe_input, worst_group(d, cur, probe_input));
+      fp.split_cells(probe_input);
+    }
   }
   std::vector<FormTrial> out;
   for (const Plan& p : plans) {
