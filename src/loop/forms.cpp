@@ -114,7 +114,7 @@ struct FormPlans {
   void categorical(const std::vector<std::string>& bys);
   void numeric(const std::vector<std::string>& bys);
   void force_and_bending(const std::set<double>& distinct);
-  void in_cell(const std::string& cell_by, int cell_group);
+  void in_cell(const std::string& cell_by, int cell_group, int max_nb = 5);
   void split_cells(const std::string& input);
 };
 
@@ -186,10 +186,11 @@ void FormPlans::force_and_bending(const std::set<double>& distinct) {
 }
 
 // An effect confined to one cell (the group of a model input the screen's
-// strongest one-group probe points at): a slope, a 3-dof smooth or the
-// levels in that cell only, none elsewhere.  Held-out error and the
+// strongest one-group probe points at, or the worst-fitted group of the
+// strongest probe's input): a slope, a smooth of 3 (up to max_nb: 5) dof or
+// the levels in that cell only, none elsewhere.  Held-out error and the
 // one-standard-error rule choose between it and the global forms.
-void FormPlans::in_cell(const std::string& cell_by, int cell_group) {
+void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb) {
   std::set<double> distinct;
   for (double v : c.x)
     if (std::isfinite(v)) distinct.insert(v);
@@ -199,7 +200,8 @@ void FormPlans::in_cell(const std::string& cell_by, int cell_group) {
   if (!c.categorical && applicable(d, spec, EffectKind::generic_linear_by, c.name))
     plans.push_back({{{EffectKind::generic_linear_by, cell_by, 0, cell_group}}});
   if (!c.categorical && applicable(d, spec, EffectKind::generic_smooth, c.name))
-    for (int nb : {3, 5}) plans.push_back({{{EffectKind::generic_smooth, cell_by, nb, cell_group}}});
+    for (int nb : {3, 5})
+      if (nb <= max_nb) plans.push_back({{{EffectKind::generic_smooth, cell_by, nb, cell_group}}});
 }
 
 // An effect on one side of a threshold of a continuous model input (speed or
@@ -221,7 +223,7 @@ void FormPlans::split_cells(const std::string& input) {
     const size_t at = v.size() * q / 4;
     char by[64];
     std::snprintf(by, sizeof by, "%s>=%.6g", input.c_str(), 0.5 * (v[at - 1] + v[at]));
-    for (int side = 0; side < 2; ++side) in_cell(by, side);
+    for (int side = 0; side < 2; ++side) in_cell(by, side, 3);  // 3 dof: six cells already
   }
 }
 

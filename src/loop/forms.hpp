@@ -14,9 +14,12 @@
 //              per pin / speed / direction / lubricant group, a smooth of any
 //              shape (natural cubic spline,
 //              3, 5 or 8 dof, and 3 or 5 dof per group of those inputs;
-//              and, where the screen's strongest probe is confined to one group
-//              of a model input, a slope, a 3-dof smooth or the levels in that
-//              one group only), the
+//              and, where the screen's strongest probe is per a model input,
+//              a slope, a 3- or 5-dof smooth or the levels in one group only:
+//              the group its one-group sub-probe points at, else the group
+//              with the largest mean squared held-out residual; for a
+//              continuous speed or direction also below / at and above a
+//              threshold at its quartiles, 3 dof), the
 //              force channel (an extra force on every row, rotating included,
 //              fitted jointly: linear per pin, levels (3 or 4 values: also
 //              per pin), a 3-dof smooth overall and per pin; levels and the
