@@ -71,8 +71,10 @@
 // each batch the Clopper-Pearson interval of p at confidence 1 - 1e-3 is
 // compared with the threshold alpha / (number of candidates): wholly below ->
 // significant, wholly above -> not significant; at `permutations` (the cap)
-// still straddling -> "undecided".  So a decision differs between two seeds
-// with probability below 2e-3 per candidate.
+// still straddling -> decided by the Monte Carlo p-value (1 + k) / (1 + b),
+// valid at any b: p <= thr significant, else "undecided".  So a decision
+// differs between two seeds with probability below 2e-3 per candidate, except
+// for a candidate whose p is within the cap's Monte Carlo error of thr.
 //
 // Identity variables (test_id) are not permuted (permuting test labels
 // between tests leaves the partition unchanged, so p = 1 by construction):
@@ -136,6 +138,8 @@ struct CandidateResult {
   /// to; -1: none).
   std::string cell_by;
   int cell_group = -1;
+  /// The model input of the strongest probe when it is a per-input one ("": an overall probe).
+  std::string probe_input;
 };
 
 /// What the screen knows of the model: the model's inputs as groups per row

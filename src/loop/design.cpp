@@ -93,6 +93,16 @@ std::vector<int> Design::groups(const std::string& by, int* n) const {
     *n = static_cast<int>(ix.size());
     return g;
   }
+  const size_t split = by.find(">=");
+  if (split != std::string::npos) {  // "input>=t": two groups, below t and at or above it
+    const std::string input = by.substr(0, split);
+    if (input != "speed_mm_s" && input != "direction_deg") throw InputError("no model input '" + input + "' to split");
+    const double t = std::stod(by.substr(split + 2));
+    for (size_t i = 0; i < rows.size(); ++i)
+      g[i] = (input == "speed_mm_s" ? data->rows[i].speed_mm_s : data->rows[i].direction_deg) >= t ? 1 : 0;
+    *n = 2;
+    return g;
+  }
   if (by != "speed_mm_s" && by != "direction_deg") throw InputError("no model input '" + by + "' to group by");
   std::vector<double> v(rows.size());
   std::set<double> distinct;

@@ -153,12 +153,13 @@ struct ForceOffset {
   static void apply(const EffectArgs& a, Terms& t) {
     const int g = a.e.by.empty() ? 0 : a.f.group[a.k][a.i];
     const double* th = a.th + static_cast<size_t>(g) * per_group(a.e);
+    const double s = a.e.bend_scaled ? a.f.bend_scale[a.r.pin] : 1.0;
     if (a.e.n_basis > 0) {
       const auto& B = a.f.basis[a.k];
-      for (int j = 0; j < a.e.n_basis; ++j) t.add_N += th[j] * B[static_cast<size_t>(j)][a.i];
+      for (int j = 0; j < a.e.n_basis; ++j) t.add_N += s * th[j] * B[static_cast<size_t>(j)][a.i];
     } else {
       const int l = a.f.level[a.k][a.i];
-      if (l > 0) t.add_N += th[l - 1];
+      if (l > 0) t.add_N += s * th[l - 1];
     }
   }
   static int reads(const EffectArgs& a, int* o) {
@@ -176,7 +177,8 @@ struct ForceOffset {
       for (int j = 0; j < P; ++j)
         n[s + g * P + j] = "force c " + (e.n_basis > 0 ? "spline " + std::to_string(j + 1) + " of " + e.variable + " (N per SD)"
                                                        : "[" + e.variable + " = " + level_names[j + 1] + "] (N)") +
-                           (e.by.empty() ? "" : " [" + e.by + " group " + std::to_string(g + 1) + "]");
+                           (e.by.empty() ? "" : " [" + e.by + " group " + std::to_string(g + 1) + "]") +
+                           (e.bend_scaled ? " x the pin's relative bending force" : "");
   }
 };
 

@@ -46,6 +46,10 @@ struct Effect {
   /// lubricant), with one group's parameters; -1: every group its own.
   int cell = -1;
   int n_basis = 0;       ///< generic_smooth: spline basis functions (dof of the shape, constant excluded)
+  /// force_offset: the term times the row's pin's bending force relative to
+  /// the pins' mean (Fit::bend_scale): a change of the bending force itself
+  /// (thickness, yield stress) is as many per cent on every pin, not as many newtons.
+  bool bend_scaled = false;
 };
 
 std::string effect_name(EffectKind k);

@@ -78,8 +78,8 @@ std::string fits_key(const ModelSpec& s) {
     const bool own_column = generic_kind(e.kind);
     const EffectKind kind = e.kind == EffectKind::drift ? EffectKind::generic_linear : e.kind;
     char num[96];
-    std::snprintf(num, sizeof num, "|%d,%a,%d,%d,%d,%d,", static_cast<int>(kind), e.lambda_mm, e.n_levels, e.n_groups,
-                  e.cell, e.n_basis);
+    std::snprintf(num, sizeof num, "|%d,%a,%d,%d,%d,%d,%d,", static_cast<int>(kind), e.lambda_mm, e.n_levels,
+                  e.n_groups, e.cell, e.n_basis, e.bend_scaled ? 1 : 0);
     k += num + std::to_string(e.by.size()) + ":" + e.by + "," + (own_column ? e.variable : "");
   }
   return k;
@@ -91,6 +91,7 @@ struct Part {
   std::string by;
   int nb = 0;     // generic_smooth: spline dof
   int cell = -1;  // >= 0: confined to that group of `by`
+  bool scaled = false;  // force_offset: times the pin's relative bending force
 };
 struct Plan {
   std::vector<Part> parts;
@@ -106,10 +107,15 @@ struct FormPlans {
   void add(EffectKind k, const std::string& by = "") {
     if (applicable(d, spec, k, c.name)) plans.push_back({{{k, by}}});
   }
+  // A column of the data with 3 or 4 distinct numeric values (levels per group, as a categorical one).
+  bool few_levels(const std::set<double>& distinct) const {
+    return distinct.size() >= 3 && distinct.size() <= 4 && d.data->extra_index(c.name) >= 0;
+  }
   void categorical(const std::vector<std::string>& bys);
   void numeric(const std::vector<std::string>& bys);
   void force_and_bending(const std::set<double>& distinct);
-  void in_cell(const std::string& cell_by, int cell_group);
+  void in_cell(const std::string& cell_by, int cell_group, int max_nb = 5);
+  void split_cells(const std::string& input);
 };
 
 // A categorical column: its levels, per group of a model input, on the force channel.
@@ -118,6 +124,8 @@ void FormPlans::categorical(const std::vector<std::string>& bys) {
   if (c.levels.size() <= 4)
     for (const auto& by : bys) add(EffectKind::categorical_by, by);
   add(EffectKind::force_offset);  // levels on the force channel
+  if (applicable(d, spec, EffectKind::force_offset, c.name))  // as many per cent of each pin's bending force
+    plans.push_back({{{EffectKind::force_offset, "", 0, -1, true}}});
   if (c.levels.size() <= 4) add(EffectKind::force_offset, "pin");
 }
 
@@ -131,6 +139,11 @@ void FormPlans::numeric(const std::vector<std::string>& bys) {
   for (double v : c.x)
     if (std::isfinite(v)) distinct.insert(v);
   if (distinct.size() >= 3 && distinct.size() <= 8) add(EffectKind::categorical);
+  // A column of the data with 3 or 4 distinct values is also taken as levels
+  // per group of a model input, as a categorical one is (a level pattern
+  // confined to one pin, speed, direction or lubricant is not linear in x).
+  if (few_levels(distinct))
+    for (const auto& by : bys) add(EffectKind::categorical_by, by);
   for (const auto& by : bys) add(EffectKind::generic_linear_by, by);
   // A smooth of any shape (bump, U, periodic, sigmoid, step), 3, 5 or 8
   // dof overall (8: a narrow bump, a step or two periods) and 3 or 5 per
@@ -156,10 +169,14 @@ void FormPlans::force_and_bending(const std::set<double>& distinct) {
   }
   if (every_row_numeric && applicable(d, spec, EffectKind::force_offset, c.name)) {
     plans.push_back({{{EffectKind::force_offset, "pin", 1}}});
-    if (distinct.size() >= 3 && distinct.size() <= 8 && d.data->extra_index(c.name) >= 0)
-      plans.push_back({{{EffectKind::force_offset, "", 0}}});  // levels
+    if (distinct.size() >= 3 && distinct.size() <= 8 && d.data->extra_index(c.name) >= 0) {
+      plans.push_back({{{EffectKind::force_offset, "", 0}}});            // levels
+      plans.push_back({{{EffectKind::force_offset, "", 0, -1, true}}});  // levels, scaled with the bending force
+    }
+    if (few_levels(distinct)) plans.push_back({{{EffectKind::force_offset, "pin", 0}}});  // levels per pin
     if (distinct.size() > 8)
       for (const std::string by : {"", "pin"}) plans.push_back({{{EffectKind::force_offset, by, 3}}});
+    if (distinct.size() > 8) plans.push_back({{{EffectKind::force_offset, "", 3, -1, true}}});
   }
   if (applicable(d, spec, EffectKind::bending_linear, c.name)) {
     plans.push_back({{{EffectKind::bending_linear, ""}}});
@@ -169,10 +186,11 @@ void FormPlans::force_and_bending(const std::set<double>& distinct) {
 }
 
 // An effect confined to one cell (the group of a model input the screen's
-// strongest one-group probe points at): a slope, a 3-dof smooth or the
-// levels in that cell only, none elsewhere.  Held-out error and the
+// strongest one-group probe points at, or the worst-fitted group of the
+// strongest probe's input): a slope, a smooth of 3 (up to max_nb: 5) dof or
+// the levels in that cell only, none elsewhere.  Held-out error and the
 // one-standard-error rule choose between it and the global forms.
-void FormPlans::in_cell(const std::string& cell_by, int cell_group) {
+void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb) {
   std::set<double> distinct;
   for (double v : c.x)
     if (std::isfinite(v)) distinct.insert(v);
@@ -182,7 +200,46 @@ void FormPlans::in_cell(const std::string& cell_by, int cell_group) {
   if (!c.categorical && applicable(d, spec, EffectKind::generic_linear_by, c.name))
     plans.push_back({{{EffectKind::generic_linear_by, cell_by, 0, cell_group}}});
   if (!c.categorical && applicable(d, spec, EffectKind::generic_smooth, c.name))
-    plans.push_back({{{EffectKind::generic_smooth, cell_by, 3, cell_group}}});
+    for (int nb : {3, 5})
+      if (nb <= max_nb) plans.push_back({{{EffectKind::generic_smooth, cell_by, nb, cell_group}}});
+}
+
+// An effect on one side of a threshold of a continuous model input (speed or
+// direction with more than 6 distinct values, which groups() cuts at its
+// tertiles), when the screen's strongest probe is per that input: the one-cell
+// forms (in_cell) in the group below or at and above a threshold midway
+// between two of the input's distinct values at its quartiles.  Held-out
+// error and the one-standard-error rule choose among them and the other forms.
+void FormPlans::split_cells(const std::string& input) {
+  if (input != "speed_mm_s" && input != "direction_deg") return;
+  std::vector<double> v;  // the input's distinct values on the fixed-pin rows, ascending
+  for (size_t i = 0; i < d.rows.size(); ++i)
+    if (!d.rows[i].rotating)
+      v.push_back(input == "speed_mm_s" ? d.data->rows[i].speed_mm_s : d.data->rows[i].direction_deg);
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  if (v.size() <= 6) return;  // groups() has every value as its own group: in_cell covers it
+  for (int q = 1; q <= 3; ++q) {
+    const size_t at = v.size() * q / 4;
+    char by[64];
+    std::snprintf(by, sizeof by, "%s>=%.6g", input.c_str(), 0.5 * (v[at - 1] + v[at]));
+    for (int side = 0; side < 2; ++side) in_cell(by, side, 3);  // 3 dof: six cells already
+  }
+}
+
+// The group of model input `by` whose fixed-pin rows have the largest mean
+// squared held-out residual under the current model (ties: the first).
+int worst_group(const Design& d, const CvResult& cur, const std::string& by) {
+  int n = 0;
+  const std::vector<int> g = d.groups(by, &n);
+  std::vector<double> ss(n, 0.0), cnt(n, 0.0);
+  for (size_t i = 0; i < g.size(); ++i)
+    if (!d.rows[i].rotating && i < cur.resid.size() && std::isfinite(cur.resid[i]))
+      ss[g[i]] += cur.resid[i] * cur.resid[i], cnt[g[i]] += 1;
+  int best = 0;
+  for (int k = 0; k < n; ++k)
+    if (cnt[k] > 0 && (cnt[best] == 0 || ss[k] / cnt[k] > ss[best] / cnt[best])) best = k;
+  return best;
 }
 
 // Trial t of plan p: the model with its effects, and its name, meaning and channel.
@@ -190,12 +247,14 @@ FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c
   FormTrial t;
   t.spec = spec;
   bool bend = false, fric = false;
-  for (const auto& [k, by, nb, cell] : p.parts) {
+  for (const auto& [k, by, nb, cell, scaled] : p.parts) {
     t.spec = with_effect(d, t.spec, k, c.name, by);
     if (nb > 0) t.spec.effects.back().n_basis = nb;
     t.spec.effects.back().cell = cell;
+    t.spec.effects.back().bend_scaled = scaled;
     t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (nb > 0 ? " " + std::to_string(nb) + " dof" : "") +
-              (by.empty() ? "" : " (" + by + (cell >= 0 ? " group " + std::to_string(cell + 1) + " only" : "") + ")");
+              (by.empty() ? "" : " (" + by + (cell >= 0 ? " group " + std::to_string(cell + 1) + " only" : "") + ")") +
+              (scaled ? " (scaled with the pin's bending force)" : "");
     t.meaning += (t.meaning.empty() ? "" : "; ") + effect_meaning(k);
     (acts_on_bending(k) ? bend : fric) = true;
   }
@@ -320,7 +379,7 @@ double mse_diff_se(const CvResult& a, const CvResult& b, const Folds& f) {
 std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
                                  const CvResult& cur, const JointFit& cur_joint, double thr, double min_gain_N,
                                  const std::function<void(const std::string&)>& progress, const std::string& cell_by,
-                                 int cell_group, TrialCache* cache) {
+                                 int cell_group, TrialCache* cache, const std::string& probe_input) {
   FormPlans fp{d, spec, c, {}};
   std::vector<Plan>& plans = fp.plans;
   for (EffectKind k : effects_for(c.name))
@@ -333,6 +392,13 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
     if (c.categorical) fp.categorical(bys);
     else fp.numeric(bys);
     if (cell_group >= 0 && !cell_by.empty() && cell_by != c.name) fp.in_cell(cell_by, cell_group);
+    if (!probe_input.empty() && probe_input != c.name) {
+      // The screen's strongest probe is per a model input but named no one
+      // group (the one-cell sub-probes are off): the group with the largest
+      // mean squared held-out residual of the current model.
+      if (cell_group < 0) fp.in_cell(probe_input, worst_group(d, cur, probe_input));
+      fp.split_cells(probe_input);
+    }
   }
   std::vector<FormTrial> out;
   for (const Plan& p : plans) {

@@ -9,15 +9,22 @@
 //              direction / lubricant group; numeric: linear, saturating tanh,
 //              logarithmic (positive columns), saturating exponential (lambda
 //              on a grid), a step (threshold on a grid of quantiles), levels
-//              (3-8 distinct values), linear per pin / speed / direction /
-//              lubricant group, a smooth of any shape (natural cubic spline,
+//              (3-8 distinct values; 3 or 4: also levels per pin / speed /
+//              direction / lubricant group, as a categorical column), linear
+//              per pin / speed / direction / lubricant group, a smooth of any
+//              shape (natural cubic spline,
 //              3, 5 or 8 dof, and 3 or 5 dof per group of those inputs;
-//              and, where the screen's strongest probe is confined to one group
-//              of a model input, a slope, a 3-dof smooth or the levels in that
-//              one group only), the
+//              and, where the screen's strongest probe is per a model input,
+//              a slope, a 3- or 5-dof smooth or the levels in one group only:
+//              the group its one-group sub-probe points at, else the group
+//              with the largest mean squared held-out residual; for a
+//              continuous speed or direction also below / at and above a
+//              threshold at its quartiles, 3 dof), the
 //              force channel (an extra force on every row, rotating included,
-//              fitted jointly: linear per pin, levels, a 3-dof smooth overall
-//              and per pin), and the bending channel (F_B + c_pin z) alone
+//              fitted jointly: linear per pin, levels (3 or 4 values: also
+//              per pin), a 3-dof smooth overall and per pin; levels and the
+//              smooth also times the pin's relative bending force, a change of
+//              the bending force itself), and the bending channel (F_B + c_pin z) alone
 //              or with a linear friction term ("both").  A numeric model input
 //              the base model does not use (speed when continuous) gets the
 //              generic forms too.
@@ -30,6 +37,8 @@
 // within one standard error of the best form's (the standard error of the
 // difference of the two, from the per-test sums of squared held-out residuals);
 // so the library's physical forms are members of the family, not a gate before it.
+// Between variables (loop.cpp), the step goes to the variable whose best passed
+// form predicts held-out data best; it keeps that variable's kept form.
 #include <functional>
 #include <map>
 #include <string>
@@ -76,7 +85,8 @@ ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const s
 std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
                                  const CvResult& cur, const JointFit& cur_joint, double threshold, double min_gain_N,
                                  const std::function<void(const std::string&)>& progress,
-                                 const std::string& cell_by = "", int cell_group = -1, TrialCache* cache = nullptr);
+                                 const std::string& cell_by = "", int cell_group = -1, TrialCache* cache = nullptr,
+                                 const std::string& probe_input = "");
 
 /// Index of the form kept (simplest within one standard error of the best
 /// among those passed), -1 when none passed.

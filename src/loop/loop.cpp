@@ -159,7 +159,8 @@ ModelSpec without(const ModelSpec& spec, const Step& s, bool bending_linear) {
   t.effects.clear();
   for (const auto& e : spec.effects) {
     bool mine = false;
-    for (const auto& m : s.added) mine = mine || (m.kind == e.kind && m.variable == e.variable && m.by == e.by && m.cell == e.cell);
+    for (const auto& m : s.added) mine = mine || (m.kind == e.kind && m.variable == e.variable && m.by == e.by && m.cell == e.cell &&
+                            m.bend_scaled == e.bend_scaled);
     if (!mine) t.effects.push_back(e);
   }
   for (const auto& m : s.added)
@@ -181,7 +182,7 @@ std::string spec_key(const ModelSpec& s) {
     char lam[40];
     std::snprintf(lam, sizeof lam, "%a", e.lambda_mm);
     k << '|' << static_cast<int>(e.kind) << ',' << e.variable.size() << ':' << e.variable << ',' << lam << ','
-      << e.n_levels << ',' << e.by.size() << ':' << e.by << ',' << e.n_groups << ',' << e.n_basis << ',' << e.cell;
+      << e.n_levels << ',' << e.by.size() << ':' << e.by << ',' << e.n_groups << ',' << e.n_basis << ',' << e.cell << ',' << e.bend_scaled;
   }
   return k.str();
 }
@@ -227,6 +228,7 @@ class FitMemo {
 struct RoundChoice {
   Step best_step;
   FormTrial best_form;
+  double best_form_rms = INFINITY;  // the best passed form's held-out RMS of best_step's variable
   bool found = false;
   std::vector<std::pair<std::string, CvResult>> kept;  // column -> its kept form's held-out result
 };
@@ -349,7 +351,7 @@ void LoopSearch::consider(const CandidateResult& c, const Candidate& cand, bool 
   const auto prog = [&](const std::string& m) { progress(o, m); };
   const auto trials =
       try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by, c.cell_group,
-                &trials_done);
+                &trials_done, c.probe_input);
   const int keep = choose_form(trials, res.folds);
   Step s;
   s.variable = c.name;
@@ -370,9 +372,17 @@ void LoopSearch::consider(const CandidateResult& c, const Candidate& cand, bool 
     return;
   }
   if (s.cls == "undeclared variable") ch.kept.push_back({c.name, trials[keep].cv});
-  const bool better = !ch.found || trials[keep].cv.rms < ch.best_form.cv.rms;
+  // Candidates compete by their best form's held-out error, not by the kept
+  // (simplest within one standard error) form's: the one-SE rule chooses a
+  // form within a variable, and must not hand the step to another variable
+  // whose few-parameter form is only nearly as good.
+  double best_rms = INFINITY;
+  for (const auto& t : trials)
+    if (t.passed) best_rms = std::min(best_rms, t.cv.rms);
+  const bool better = !ch.found || best_rms < ch.best_form_rms;
   if (better) {
     ch.best_form = trials[keep];
+    ch.best_form_rms = best_rms;
     ch.best_step = s;
     ch.found = true;
   }

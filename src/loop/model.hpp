@@ -86,7 +86,8 @@ struct Design {
   std::vector<double> values(const std::string& column) const;
   /// Group index per row of a model input used as an effect's `by`: "pin"
   /// (pin index), "speed_mm_s", "direction_deg" (distinct values of the fixed
-  /// rows, or 3 tertiles when more than 6), "lubricant"; *n receives the count.
+  /// rows, or 3 tertiles when more than 6), "lubricant", or "speed_mm_s>=t" /
+  /// "direction_deg>=t" (two groups: below t, at or above t); *n receives the count.
   std::vector<int> groups(const std::string& by, int* n) const;
 };
 
@@ -138,6 +139,9 @@ struct Fit {
   std::vector<std::vector<std::vector<double>>> basis;
   bool has_force = false;  ///< the spec has a force_offset effect (rotating rows get its term too)
   std::vector<double> bend_extra;   ///< per row: bending-channel effects' c_pin z (empty: none)
+  /// per pin: its base bending line at its mean back tension over the pins'
+  /// mean (force_offset with bend_scaled; fixed by the first bending fit of fit_model)
+  std::vector<double> bend_scale;
   std::vector<std::vector<int>> level;       ///< level index per row of each categorical effect
   std::vector<std::vector<std::string>> level_names;
   double rss = 0;                   ///< fixed-pin rows

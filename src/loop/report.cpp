@@ -269,7 +269,7 @@ void effects_and_candidates(std::ostringstream& m, const LoopResult& r) {
       m << "| " << k + 1 << " | " << r.steps[k].effect << " | " << r.steps[k].meaning << " | " << p.name << " | "
         << fmt(p.value, 4) << " ± " << fmt(p.se, 2) << " |\n";
   m << "\n## Candidates, first round\n\nSequential permutation p-values (stopped when the decision against the "
-       "threshold was clear at 99.9 % confidence, else undecided); test_id as a random effect (F test).\n\n"
+       "threshold was clear at 99.9 % confidence; at the cap, significant when p <= the threshold, else undecided); test_id as a random effect (F test).\n\n"
        "| rank | candidate | kind | dof | permuted | p | permutations | decision | CV reduction |\n"
        "|---|---|---|---|---|---|---|---|---|\n";
   if (!r.rankings.empty())

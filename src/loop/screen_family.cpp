@@ -118,6 +118,12 @@ void CandidateScreen::build_family() {
       if (c.test_level && pooled_inputs)  // see centred_by
         add(c.categorical || distinct.size() <= 8 ? Shape::levels : Shape::slopes, "per " + input + ", pooled over cells",
             g, ng, input, true);
+      // A shape of any kind in one group of the input, pooled over the cells: with
+      // a few tests per block, bins per block x group explain every test's mean
+      // whatever the permutation (each test its own bin), so a curved effect
+      // confined to one group is seen only with bins shared over the blocks.
+      if (pooled_inputs && !c.categorical && distinct.size() > 8)
+        add(Shape::levels, "bins per " + input + ", pooled over cells", g, ng, input, true);
     }
 }
 
