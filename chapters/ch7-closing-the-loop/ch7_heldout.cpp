@@ -3,11 +3,11 @@
 // heldout_protocol.md, 50500000 + i (Config::heldout_seed0); since
 // heldout_protocol_v2.md these are development data.
 // Step 10 (demonstration 5, heldout_protocol_v2.md and
-// heldout_protocol_v2_wild.md; runs 9 and 10 on the seeds of
-// heldout_protocol_v5.md, fixed before any run on them): generator 1 on
-// 59100000 + i and generator 2 ("wild", src/loop/wild_synth.hpp) on
-// 59200000 + i (runs 3-8 used 53100000, 54200000, 57100000, 57200000,
-// 58100000 and 58200000 + i).
+// heldout_protocol_v2_wild.md; runs 11 and 12 on the seeds of
+// heldout_protocol_v6.md, fixed before any run on them): generator 1 on
+// 60100000 + i and generator 2 ("wild", src/loop/wild_synth.hpp) on
+// 60200000 + i (runs 3-10 used 53100000, 54200000, 57100000, 57200000,
+// 58100000, 58200000, 59100000 and 59200000 + i).
 // Set i of a study has class classes[i % 6] and noise 3 N when (i / 6) is
 // even, 8 N when odd.  Every set is written as a lab file (write_measured),
 // read back (parse_measured) and given to the loop with the chapter's
@@ -239,10 +239,10 @@ void heldout2_study(Chapter& c, const Config& cfg) {
                                      : "NOT the protocols' held-out seeds (development seeds chosen by option): not a "
                                        "held-out result");
   run_study(c, cfg, {"blind", "demonstration 5 (held out, generator 1, fresh seeds)", "heldout_runs_blind",
-                     "heldout_summary_blind", "h2b", "h2bc_", "ch7.heldout2.blind", "heldout_protocol_v5.md",
+                     "heldout_summary_blind", "h2b", "h2bc_", "ch7.heldout2.blind", "heldout_protocol_v6.md",
                      cfg.heldout2_sets, cfg.heldout2_blind_seed0});
   run_study(c, cfg, {"wild", "demonstration 5 (held out, generator 2)", "heldout_runs_wild", "heldout_summary_wild",
-                     "h2w", "h2wc_", "ch7.heldout2.wild", "heldout_protocol_v5.md", cfg.heldout2_sets,
+                     "h2w", "h2wc_", "ch7.heldout2.wild", "heldout_protocol_v6.md", cfg.heldout2_sets,
                      cfg.heldout2_wild_seed0});
 }
 
