@@ -8,19 +8,32 @@
 # ONLY for development seeds (heldout_protocol_v3.md: 50500000..50500143,
 # 52000000..52999999, 53100000..53100143; wild 54200000..54200143 and
 # 55000000+; heldout_protocol_v4.md adds 57100000..57100143 and
-# 57200000..57200143); never on held-out seeds 58000000..60999999 (heldout_protocol_v5.md, v6).
+# 57200000..57200143); never on held-out seeds in 58000000..60999999 that no recorded run has
+# spent (the guard below; heldout_protocol_v7.md).
 # usage: blind_dev.sh BIN SEED0 N OUTDIR [PERM] [FIRST] [GEN]
 #   LOOP_ARGS (environment): extra loop options, e.g. "--cell-probes true"
 #   PERM: permutation cap, default 20000 as the loop (with 2000 no candidate
 #   can be decided significant at alpha/25 candidates: every step undecided)
 #   GEN blind (default) or wild (generator 2: class 'channel' in place of
 #   'bending'); one line per set: i class noise outcome final/noise time | truth | steps
-BIN=$1; S0=$2;
-if (( S0 >= 58000000 && S0 < 61000000 )); then
-  echo "held-out seeds: not for development (heldout_protocol_v4.md, v5, v6)" >&2; exit 2; fi
-N=$3; OUT=$4; PERM=${5:-20000}; FIRST=${6:-0}; GEN=${7:-blind}
-if (( S0 + N > 58000000 && S0 < 61000000 )); then
-  echo "range reaches held-out seeds 58000000-60999999: not for development" >&2; exit 2; fi
+BIN=$1; S0=$2; N=$3; OUT=$4; PERM=${5:-20000}; FIRST=${6:-0}; GEN=${7:-blind}
+# Seeds in 58000000-60999999 are held out unless a held-out run has spent
+# them (heldout_record.md): runs 7-8 (58100000, 58200000 + 0..143), 9-10
+# (59100000, 59200000 + 0..47) and 11-12 (60100000, 60200000 + 0..47) are
+# development data now; protocol v7's 60300000 and 60400000 are not.
+released() {  # is seed $1 spent by a recorded held-out run?
+  local s=$1
+  for r in 58100000:144 58200000:144 59100000:48 59200000:48 60100000:48 60200000:48; do
+    local b=${r%%:*} n=${r##*:}
+    if (( s >= b && s < b + n )); then return 0; fi
+  done
+  return 1
+}
+for ((i=FIRST;i<N;i++)); do
+  s=$((S0+i))
+  if (( s >= 58000000 && s < 61000000 )) && ! released $s; then
+    echo "seed $s is held out (heldout_protocol_v7.md and the ranges no run has spent): not for development" >&2; exit 2; fi
+done
 classes=(level smooth interaction bending test-level null)
 if [ "$GEN" = wild ]; then classes=(level smooth interaction channel test-level null); fi
 mkdir -p $OUT
