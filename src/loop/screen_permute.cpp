@@ -82,16 +82,21 @@ inline void CandidateScreen::fill_lanes(std::vector<double>& a, std::vector<int>
 }
 
 // Every probe's sub-probe values for kLanes permutations at once (unit values
-// interleaved by lane).
-inline void CandidateScreen::eval_lanes(const std::vector<double>& a, const std::vector<int>& b) {
-  for (size_t j = 0; j < probes.size(); ++j) probes[j].eval<kLanes>(a.data(), b.data(), &lvals[off[j] * kLanes]);
+// interleaved by lane); which = 0: the probes outside the bounded pass only,
+// 1: those in it only (bfast, screen_bound.cpp), -1: all.
+inline void CandidateScreen::eval_lanes(const std::vector<double>& a, const std::vector<int>& b, int which) {
+  for (size_t j = 0; j < probes.size(); ++j)
+    if (which < 0 || (bfast.size() == probes.size() && bfast[j] == which))
+      probes[j].eval<kLanes>(a.data(), b.data(), &lvals[off[j] * kLanes]);
 }
 
-// The statistic of lane i: the same comparisons in the same order as stat.
-inline double CandidateScreen::lane_stat(int i) const {
+// The statistic of lane i: the same comparisons in the same order as stat
+// (bounded_too false: of the probes outside the bounded pass only).
+inline double CandidateScreen::lane_stat(int i, bool bounded_too) const {
   double t = -INFINITY;
   for (size_t j = 0; j < probes.size(); ++j)
     for (int k = 0; k < probes[j].nsub(); ++k) {
+      if (!bounded_too && bfast[j]) continue;
       if (probes[j].dof[k] <= 0) continue;
       const double v = probe_z(probes[j], k, lvals[(off[j] + k) * kLanes + i]);
       if (v > t) t = v;
@@ -206,6 +211,10 @@ void CandidateScreen::permutation_test(CandidateResult& res, double T, std::uint
   std::vector<double> pz(U * kLanes);
   std::vector<int> pl(U * kLanes);
   const int cap = std::max(1, permutations);
+  const double Tp = T - 1e-12 * std::max(1.0, std::abs(T));
+  // The bounded pass (screen_bound.cpp): a lane whose bound lies below Tcut cannot count.
+  setup_bounds();
+  const double Tcut = Tp - 1e-8 * std::max(1.0, std::abs(Tp));
   for (int batch = 100; b < cap; batch = std::min(cap - b, 2 * batch)) {
     for (int j = 0; j < batch; j += kLanes) {  // kLanes permutations per pass over the units
       const int used = std::min(kLanes, batch - j);
@@ -214,9 +223,20 @@ void CandidateScreen::permutation_test(CandidateResult& res, double T, std::uint
         fill_unit_values(perm, pz, pl, i, rng);
       }
       fill_lanes(pz, pl, used);
-      eval_lanes(pz, pl);
-      for (int i = 0; i < used; ++i)
-        if (lane_stat(i) >= T - 1e-12 * std::max(1.0, std::abs(T))) ++ge;
+      if (!bounded) {
+        eval_lanes(pz, pl);
+        for (int i = 0; i < used; ++i)
+          if (lane_stat(i) >= Tp) ++ge;
+      } else {
+        eval_lanes(pz, pl, 0);
+        double zb[kLanes];
+        bounded_max(pz, pl, zb);
+        bool near[kLanes] = {}, any = false;
+        for (int i = 0; i < used; ++i) near[i] = !(zb[i] < Tcut), any = any || near[i];
+        if (any) eval_lanes(pz, pl, 1);
+        for (int i = 0; i < used; ++i)
+          if (lane_stat(i, near[i]) >= Tp) ++ge;
+      }
       b += used;
     }
     dec = sequential_decision(ge, b, thr);
