@@ -213,7 +213,7 @@ void CandidateScreen::permutation_test(CandidateResult& res, double T, std::uint
   const int cap = std::max(1, permutations);
   const double Tp = T - 1e-12 * std::max(1.0, std::abs(T));
   // The bounded pass (screen_bound.cpp): a lane whose bound lies below Tcut cannot count.
-  setup_bounds();
+  if (!ctx || ctx->bounded_pass) setup_bounds();
   const double Tcut = Tp - 1e-8 * std::max(1.0, std::abs(Tp));
   for (int batch = 100; b < cap; batch = std::min(cap - b, 2 * batch)) {
     for (int j = 0; j < batch; j += kLanes) {  // kLanes permutations per pass over the units
