@@ -10,6 +10,9 @@
 //                       the counts no permutation changes; the reachable cells
 //   screen_permute.cpp  the permutations: the pilot calibration of the probes'
 //                       scales, the observed statistic and the permutation test
+//   screen_bound.cpp    the permutation test's bounded pass: an upper bound on a
+//                       permutation's statistic from per-test sums (row-level
+//                       candidates permuted within tests)
 #include <cstdint>
 #include <string>
 #include <vector>
