@@ -67,10 +67,16 @@ inline void CandidateScreen::fill_unit_values(const std::vector<int>& p, std::ve
   }
   for (const auto& bg : bgroups)
     for (size_t k = bg.size(); k > 1; --k) std::swap(tp[bg[k - 1]], tp[bg[mod(r(), k)]]);
+  // The bin: the cuts c with !(v < c), a prefix of the ascending cuts, so
+  // their count is upper_bound's index (without its branches).
+  const double* cut = cutz.data();
+  const int ncut = static_cast<int>(cutz.size());
   for (size_t u = 0; u < U; ++u) {
     const double v = gz[tp[ug[u]]] + (xz[p[u]] - gz[ug[u]]);
     qz[u * kLanes + j] = v;
-    ql[u * kLanes + j] = static_cast<int>(std::upper_bound(cutz.begin(), cutz.end(), v) - cutz.begin());
+    int l = 0;
+    for (int k = 0; k < ncut; ++k) l += !(v < cut[k]);
+    ql[u * kLanes + j] = l;
   }
 }
 
