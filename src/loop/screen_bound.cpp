@@ -149,21 +149,17 @@ void CandidateScreen::setup_bounds() {
       b.acc.assign(static_cast<size_t>(S) * 2 * kLanes, 0.0);
       quad = true;
     } else if (p.shape == Shape::wlevels && weighted) {
-      // s1 = sum w (r0 - M) + eta, |eta| <= 2.01 u |w| (|r0| + |M|); s2 = sum of
-      // the same uw2 (>= 0: zero here exactly when zero in the exact pass).
+      // One probe: its own urw and uw2 summed per cell, the exact pass's
+      // inputs in another order: s1 within 2 gamma of the sum of |urw|, s2
+      // (>= 0 terms) within 2 gamma relative, and zero exactly when zero there.
       if (bwl >= 0) continue;
       std::vector<double> Rw(S, 0.0);
-      for (size_t u = 0; u < U; ++u) {
-        const int s = p.stratum[u];
-        Rw[s] += std::abs(ctx->mu_weight[rows[u]]) * (std::abs(r0[u]) + std::abs(p.mean[s]));
-      }
+      for (size_t u = 0; u < U; ++u) Rw[p.stratum[u]] += std::abs(p.urw[u]);
       b.e.resize(S), b.alo.resize(S);
       for (int s = 0; s < S; ++s) b.e[s] = 16 * (n[s] + 8) * kU * Rw[s], b.alo[s] = 1 - 16 * (n[s] + 8) * kU;
-      b.acc.assign(static_cast<size_t>(S) * nlev * 3 * kLanes, 0.0);
+      b.acc.assign(static_cast<size_t>(S) * nlev * 2 * kLanes, 0.0);
       b.factor = 1 + 16 * (static_cast<double>(S) * nlev + 16) * kU;
       bwl = static_cast<int>(bprobes.size());
-      w0.resize(U);
-      for (size_t u = 0; u < U; ++u) w0[u] = ctx->mu_weight[rows[u]];
     } else if (p.shape == Shape::wslope) {
       if (bws >= 0) continue;
       b.eb = 16 * (static_cast<double>(U) + 8) * kU * xall * sum_urw;
@@ -213,12 +209,13 @@ void CandidateScreen::bounded_max(const std::vector<double>& qz, const std::vect
   for (auto& b : bprobes) std::fill(b.acc.begin(), b.acc.end(), 0.0);
   const double* urw = bws >= 0 ? probes[bprobes[bws].j].urw.data() : nullptr;
   const double* uw2 = bws >= 0 ? probes[bprobes[bws].j].uw2.data() : nullptr;
+  const double* wl1 = bwl >= 0 ? probes[bprobes[bwl].j].urw.data() : nullptr;
   const double* wl2 = bwl >= 0 ? probes[bprobes[bwl].j].uw2.data() : nullptr;
-  double wb[L] = {}, wa[L] = {}, A[kMaxLevels * L], AW[3 * kMaxLevels * L];
+  double wb[L] = {}, wa[L] = {}, A[kMaxLevels * L], AW[2 * kMaxLevels * L];
   for (size_t gi = 0; gi < groups.size(); ++gi) {
     const size_t u0 = static_cast<size_t>(gfirst[gi]), u1 = u0 + static_cast<size_t>(gsize[gi]);
     std::fill(A, A + nlev * L, 0.0);
-    if (wl2) std::fill(AW, AW + 3 * nlev * L, 0.0);
+    if (wl2) std::fill(AW, AW + 2 * nlev * L, 0.0);
     double x1[L] = {}, x2[L] = {};
     for (size_t u = u0; u < u1; ++u) {
       const double r = r0[u];
@@ -228,11 +225,11 @@ void CandidateScreen::bounded_max(const std::vector<double>& qz, const std::vect
       }
       if (quad)
         for (int j = 0; j < L; ++j) x2[j] += qz[u * L + j] * qz[u * L + j] * r;
-      if (wl2) {  // per level: sum w r0, sum w, sum w^2
-        const double w = w0[u], wr = w * r, w2 = wl2[u];
+      if (wl2) {  // per level: the wlevels probe's sums of urw and uw2
+        const double w1 = wl1[u], w2 = wl2[u];
         for (int j = 0; j < L; ++j) {
-          double* a = AW + static_cast<size_t>(ql[u * L + j]) * 3 * L + j;
-          a[0] += wr, a[L] += w, a[2 * L] += w2;
+          double* a = AW + static_cast<size_t>(ql[u * L + j]) * 2 * L + j;
+          a[0] += w1, a[L] += w2;
         }
       }
       if (urw)
@@ -252,8 +249,8 @@ void CandidateScreen::bounded_max(const std::vector<double>& qz, const std::vect
       } else if (p.shape == Shape::quad) {
         for (int j = 0; j < L; ++j) b.acc[s * 2 * L + j] += x1[j], b.acc[(s * 2 + 1) * L + j] += x2[j];
       } else if (p.shape == Shape::wlevels) {
-        double* d = b.acc.data() + s * nlev * 3 * L;
-        for (int k = 0; k < nlev * 3 * L; ++k) d[k] += AW[k];
+        double* d = b.acc.data() + s * nlev * 2 * L;
+        for (int k = 0; k < nlev * 2 * L; ++k) d[k] += AW[k];
       }
     }
   }
@@ -284,11 +281,11 @@ void CandidateScreen::bounded_max(const std::vector<double>& qz, const std::vect
     } else if (p.shape == Shape::wlevels) {
       for (int s = 0; s < p.nstrata; ++s)
         for (int l = 0; l < nlev; ++l) {
-          const double* a = b.acc.data() + (static_cast<size_t>(s) * nlev + l) * 3 * L;
+          const double* a = b.acc.data() + (static_cast<size_t>(s) * nlev + l) * 2 * L;
           for (int j = 0; j < L; ++j)
-            if (a[2 * L + j] > 0) {
-              const double t = std::abs(a[j] - p.mean[s] * a[L + j]) + b.e[s];
-              ess[j] += t * t / (a[2 * L + j] * b.alo[s]);
+            if (a[L + j] > 0) {
+              const double t = std::abs(a[j]) + b.e[s];
+              ess[j] += t * t / (a[L + j] * b.alo[s]);
             }
         }
     } else {  // wslope: b^2 / a when a > 1e-12

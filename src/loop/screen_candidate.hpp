@@ -95,7 +95,6 @@ struct CandidateScreen {
   int bws = -1;             // bprobes' wslope, or -1
   bool quad = false;        // a quad probe in bprobes
   int bwl = -1;             // bprobes' wlevels, or -1
-  std::vector<double> w0;   // per unit: its weight (wlevels)
 
   // screen.cpp
   void select_rows();
