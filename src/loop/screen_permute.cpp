@@ -221,6 +221,7 @@ void CandidateScreen::permutation_test(CandidateResult& res, double T, std::uint
   // The bounded pass (screen_bound.cpp): a lane whose bound lies below Tcut cannot count.
   if (!ctx || ctx->bounded_pass) setup_bounds();
   const double Tcut = Tp - 1e-8 * std::max(1.0, std::abs(Tp));
+  int nbound = 0, nnear = 0;  // permutations through the bounded pass, and those near T
   for (int batch = 100; b < cap; batch = std::min(cap - b, 2 * batch)) {
     for (int j = 0; j < batch; j += kLanes) {  // kLanes permutations per pass over the units
       const int used = std::min(kLanes, batch - j);
@@ -238,7 +239,11 @@ void CandidateScreen::permutation_test(CandidateResult& res, double T, std::uint
         double zb[kLanes];
         bounded_max(pz, pl, zb);
         bool near[kLanes] = {}, any = false;
-        for (int i = 0; i < used; ++i) near[i] = !(zb[i] < Tcut), any = any || near[i];
+        for (int i = 0; i < used; ++i) near[i] = !(zb[i] < Tcut), any = any || near[i], nnear += near[i];
+        // Most permutations near T (a candidate far from significance): the
+        // bounded pass only adds work, the exact passes alone from here on.
+        nbound += used;
+        if (nbound >= 40 && 2 * nnear > nbound) bounded = false;
         if (any) eval_lanes(pz, pl, 1);
         for (int i = 0; i < used; ++i)
           if (lane_stat(i, near[i]) >= Tp) ++ge;
