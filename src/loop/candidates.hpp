@@ -155,6 +155,9 @@ struct ScreenContext {
   bool pooled_inputs = false;
   /// Threads screening candidates at once (results identical for any count).
   int threads = 1;
+  /// The permutation test's bounded pass (screen_bound.cpp); false: the exact
+  /// passes for every permutation (the same results: for tests).
+  bool bounded_pass = true;
 };
 
 /// Clopper-Pearson decision of a permutation p-value with k exceedances in b

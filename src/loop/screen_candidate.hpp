@@ -10,6 +10,9 @@
 //                       the counts no permutation changes; the reachable cells
 //   screen_permute.cpp  the permutations: the pilot calibration of the probes'
 //                       scales, the observed statistic and the permutation test
+//   screen_bound.cpp    the permutation test's bounded pass: an upper bound on a
+//                       permutation's statistic from per-test sums (row-level
+//                       candidates permuted within tests)
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -23,6 +26,23 @@ namespace drawbend::loop::detail {
 
 // How many distinct values the integer keys take over the rows.
 size_t count_distinct(const std::vector<int>& keys, const std::vector<int>& rows);
+
+// One probe of the permutation test's bounded pass (screen_bound.cpp).
+struct BoundProbe {
+  int j = 0;                // the probe's index in the family
+  std::vector<double> e;    // per stratum: bound on |exact - bounded| of a cell's sum (levels) or of s3 (slopes)
+  std::vector<double> alo;  // slopes, per stratum: lower bound on the exact a (0: the stratum adds no term);
+                            // wlevels: (1 - the relative bound) of a cell's sum of squared weights
+  std::vector<double> sx;   // slopes, per stratum: the sum of x (the same under every permutation)
+  std::vector<int> gstratum;  // per test (permutation group): its stratum
+  std::vector<double> acc;  // the lanes' sums: per (stratum, level) cell, or per stratum, and lane
+  std::vector<double> sxx;  // quad, per stratum: the sum of x^2
+  double eb = 0, arel = 0;  // wslope: bound on |exact - bounded| of b, and a's relative one; quad: of b1
+  double eb2 = 0;           // quad: of b2
+  double q11 = 0, q12 = 0, q22 = 0, eq = 0, lam = 0, cond = 0;  // quad: Q, its entries' bound, eigenvalue
+  int mode = 0;             // quad: the exact pass's branch (0: no term, 1: line, 2: both)
+  double factor = 1;        // (1 + slack) on the computed sum of the terms' upper bounds
+};
 
 struct CandidateScreen {
   CandidateScreen(const Candidate& c, const std::vector<double>& resid, const Folds& f, const ScreenContext* ctx,
@@ -67,6 +87,14 @@ struct CandidateScreen {
   std::vector<char> run;
   std::vector<int> gfirst, gsize;
   FastMod mod{1};
+  // setup_bounds: the permutation test's bounded pass (screen_bound.cpp).
+  bool bounded = false;
+  std::vector<BoundProbe> bprobes;
+  std::vector<char> bfast;  // per probe: in bprobes
+  std::vector<double> r0;   // per unit (a row): the residual the probes centre
+  int bws = -1;             // bprobes' wslope, or -1
+  bool quad = false;        // a quad probe in bprobes
+  int bwl = -1;             // bprobes' wlevels, or -1
 
   // screen.cpp
   void select_rows();
@@ -84,6 +112,10 @@ struct CandidateScreen {
   void fixed_counts();
   void reachable_cells();
   int dof_max() const;
+  // screen_bound.cpp
+  void setup_bounds();
+  double quad_bound(const ProbeDef& p, const BoundProbe& b, int j) const;
+  void bounded_max(const std::vector<double>& qz, const std::vector<int>& ql, double* zmax);
   // screen_permute.cpp
   void flat_groups();
   void calibrate(std::uint64_t seed, size_t ci);
@@ -94,8 +126,8 @@ struct CandidateScreen {
   inline void fill_unit_values(const std::vector<int>& p, std::vector<double>& qz, std::vector<int>& ql, int j,
                                Mt64& r);
   inline void fill_lanes(std::vector<double>& a, std::vector<int>& b, int used) const;
-  inline void eval_lanes(const std::vector<double>& a, const std::vector<int>& b);
-  inline double lane_stat(int i) const;
+  inline void eval_lanes(const std::vector<double>& a, const std::vector<int>& b, int which = -1);
+  inline double lane_stat(int i, bool bounded_too = true) const;
   double stat(const std::vector<double>& a, const std::vector<int>& b, int* best, int* best_sub);
   void set_offsets();
 };

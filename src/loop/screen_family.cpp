@@ -44,11 +44,14 @@ void CandidateScreen::centre_per_unit(ProbeDef& p, bool pooled) const {
   const std::vector<double>& r0 = pooled ? (p.rpre = centred_by(f.block, nblocks, rows, resid)) : resid;
   std::vector<double> sm(p.nstrata, 0.0), sn(p.nstrata, 0.0);
   for (int i : rows) sm[p.row_stratum[i]] += r0[i], sn[p.row_stratum[i]] += 1;
+  p.mean.assign(p.nstrata, 0.0);
+  for (int s = 0; s < p.nstrata; ++s)
+    if (sn[s] > 0) p.mean[s] = sm[s] / sn[s];
   p.stratum.assign(U, 0);
   p.ur.assign(U, 0.0), p.urw.assign(U, 0.0), p.un.assign(U, 0.0), p.uw2.assign(U, 0.0);
   for (int i : rows) {
     const int s = p.row_stratum[i], u = unit_of[i];
-    const double rc = r0[i] - sm[s] / sn[s], w = weighted ? ctx->mu_weight[i] : 1.0;
+    const double rc = r0[i] - p.mean[s], w = weighted ? ctx->mu_weight[i] : 1.0;
     p.stratum[u] = s;  // a test lies in one stratum (blocks and model inputs are constant within a test)
     p.ur[u] += rc, p.urw[u] += w * rc, p.un[u] += 1, p.uw2[u] += w * w;
     p.sst += rc * rc;

@@ -67,10 +67,16 @@ inline void CandidateScreen::fill_unit_values(const std::vector<int>& p, std::ve
   }
   for (const auto& bg : bgroups)
     for (size_t k = bg.size(); k > 1; --k) std::swap(tp[bg[k - 1]], tp[bg[mod(r(), k)]]);
+  // The bin: the cuts c with !(v < c), a prefix of the ascending cuts, so
+  // their count is upper_bound's index (without its branches).
+  const double* cut = cutz.data();
+  const int ncut = static_cast<int>(cutz.size());
   for (size_t u = 0; u < U; ++u) {
     const double v = gz[tp[ug[u]]] + (xz[p[u]] - gz[ug[u]]);
     qz[u * kLanes + j] = v;
-    ql[u * kLanes + j] = static_cast<int>(std::upper_bound(cutz.begin(), cutz.end(), v) - cutz.begin());
+    int l = 0;
+    for (int k = 0; k < ncut; ++k) l += !(v < cut[k]);
+    ql[u * kLanes + j] = l;
   }
 }
 
@@ -82,16 +88,21 @@ inline void CandidateScreen::fill_lanes(std::vector<double>& a, std::vector<int>
 }
 
 // Every probe's sub-probe values for kLanes permutations at once (unit values
-// interleaved by lane).
-inline void CandidateScreen::eval_lanes(const std::vector<double>& a, const std::vector<int>& b) {
-  for (size_t j = 0; j < probes.size(); ++j) probes[j].eval<kLanes>(a.data(), b.data(), &lvals[off[j] * kLanes]);
+// interleaved by lane); which = 0: the probes outside the bounded pass only,
+// 1: those in it only (bfast, screen_bound.cpp), -1: all.
+inline void CandidateScreen::eval_lanes(const std::vector<double>& a, const std::vector<int>& b, int which) {
+  for (size_t j = 0; j < probes.size(); ++j)
+    if (which < 0 || (bfast.size() == probes.size() && bfast[j] == which))
+      probes[j].eval<kLanes>(a.data(), b.data(), &lvals[off[j] * kLanes]);
 }
 
-// The statistic of lane i: the same comparisons in the same order as stat.
-inline double CandidateScreen::lane_stat(int i) const {
+// The statistic of lane i: the same comparisons in the same order as stat
+// (bounded_too false: of the probes outside the bounded pass only).
+inline double CandidateScreen::lane_stat(int i, bool bounded_too) const {
   double t = -INFINITY;
   for (size_t j = 0; j < probes.size(); ++j)
     for (int k = 0; k < probes[j].nsub(); ++k) {
+      if (!bounded_too && bfast[j]) continue;
       if (probes[j].dof[k] <= 0) continue;
       const double v = probe_z(probes[j], k, lvals[(off[j] + k) * kLanes + i]);
       if (v > t) t = v;
@@ -207,6 +218,11 @@ void CandidateScreen::permutation_test(CandidateResult& res, double T, std::uint
   std::vector<double> pz(U * kLanes);
   std::vector<int> pl(U * kLanes);
   const int cap = std::max(1, permutations);
+  const double Tp = T - 1e-12 * std::max(1.0, std::abs(T));
+  // The bounded pass (screen_bound.cpp): a lane whose bound lies below Tcut cannot count.
+  if (!ctx || ctx->bounded_pass) setup_bounds();
+  const double Tcut = Tp - 1e-8 * std::max(1.0, std::abs(Tp));
+  int nbound = 0, nnear = 0;  // permutations through the bounded pass, and those near T
   for (int batch = 100; b < cap; batch = std::min(cap - b, 2 * batch)) {
     for (int j = 0; j < batch; j += kLanes) {  // kLanes permutations per pass over the units
       const int used = std::min(kLanes, batch - j);
@@ -215,9 +231,24 @@ void CandidateScreen::permutation_test(CandidateResult& res, double T, std::uint
         fill_unit_values(perm, pz, pl, i, rng);
       }
       fill_lanes(pz, pl, used);
-      eval_lanes(pz, pl);
-      for (int i = 0; i < used; ++i)
-        if (lane_stat(i) >= T - 1e-12 * std::max(1.0, std::abs(T))) ++ge;
+      if (!bounded) {
+        eval_lanes(pz, pl);
+        for (int i = 0; i < used; ++i)
+          if (lane_stat(i) >= Tp) ++ge;
+      } else {
+        eval_lanes(pz, pl, 0);
+        double zb[kLanes];
+        bounded_max(pz, pl, zb);
+        bool near[kLanes] = {}, any = false;
+        for (int i = 0; i < used; ++i) near[i] = !(zb[i] < Tcut), any = any || near[i], nnear += near[i];
+        // Most permutations near T (a candidate far from significance): the
+        // bounded pass only adds work, the exact passes alone from here on.
+        nbound += used;
+        if (nbound >= 40 && 2 * nnear > nbound) bounded = false;
+        if (any) eval_lanes(pz, pl, 1);
+        for (int i = 0; i < used; ++i)
+          if (lane_stat(i, near[i]) >= Tp) ++ge;
+      }
       b += used;
     }
     dec = sequential_decision(ge, b, thr);

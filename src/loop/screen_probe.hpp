@@ -47,6 +47,7 @@ struct ProbeDef {
   std::vector<double> scale;     // per sub-probe: ESS / scale ~ chi^2(kdof) under permutation (pilot)
   std::vector<double> kdof;      // per sub-probe: the chi^2's dof (0: dof; one-group: moment-matched)
   std::vector<double> ur, urw, un, uw2;
+  std::vector<double> mean;  // per stratum: the mean the residual is centred by (0: no rows)
   double sst = 0;  // sum of squares of the centred residual (constant under permutation)
   // levels (unweighted): the rows per (stratum, level) cell when no permutation
   // changes them (every permutation group in one stratum, with one row count per

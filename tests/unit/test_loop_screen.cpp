@@ -148,6 +148,56 @@ BOOST_AUTO_TEST_CASE(same_results_for_any_thread_count) {
   BOOST_TEST(one[0].significant);
 }
 
+// The permutation test's bounded pass (screen_bound.cpp) decides only which
+// permutations get the exact passes: every count, p-value and decision equals
+// the exact passes' alone.  Slopes from strong (every permutation far below T)
+// to none (many near T: the exact passes decide them), with two blocks, per-input
+// probes and weights so that every bounded shape takes part.
+BOOST_AUTO_TEST_CASE(bounded_pass_changes_no_result) {
+  const int tests = 40, rows = 8;
+  Folds f = one_block(tests, rows);
+  for (size_t i = 0; i < f.block.size(); ++i) f.block[i] = f.test[i] < tests / 2 ? 0 : 1;
+  // row-level, permuted within tests (a "column" with quantile bins would be permuted on two levels)
+  std::vector<Candidate> cands = {{"temperature_C", "derived", false, false, {}, {}, ""},
+                                  {"lot", "column", true, false, {}, {}, ""},
+                                  {"load_N", "column", false, false, {}, {}, ""}};
+  std::vector<int> pin;
+  for (int t = 0; t < tests; ++t)
+    for (int k = 0; k < rows; ++k) {
+      cands[0].x.push_back(std::sin(1.3 * t + 0.7 * k));
+      cands[1].x.push_back((t * rows + k) % 3);
+      cands[2].x.push_back(k % 3 == 0 ? 1.0 : k % 3 == 1 ? 2.0 : 4.5);
+      pin.push_back(t % 3);
+    }
+  ScreenContext ctx;
+  ctx.modifiers = {{"pin", pin}};
+  ctx.mu_weight.assign(pin.size(), 1.0);
+  for (size_t i = 0; i < pin.size(); ++i) ctx.mu_weight[i] = i % 5 == 0 ? 0.0 : 1 + 0.1 * pin[i];
+  int significant = 0, not_significant = 0;
+  for (double slope : {0.2, 0.05, 0.03, 0.02, 0.0}) {
+    std::vector<double> r;
+    for (size_t i = 0; i < pin.size(); ++i) {
+      const double h = std::sin(12.9898 * i) * 43758.5453;
+      r.push_back(slope * (cands[0].x[i] + 0.5 * cands[1].x[i]) + (h - std::floor(h) - 0.5));  // + hash noise
+    }
+    ctx.bounded_pass = true;
+    const auto bounded = rank_candidates(cands, r, f, 2000, 5, 0.05, &ctx);
+    ctx.bounded_pass = false;
+    const auto exact = rank_candidates(cands, r, f, 2000, 5, 0.05, &ctx);
+    BOOST_TEST_REQUIRE(bounded.size() == exact.size());
+    for (size_t i = 0; i < exact.size(); ++i) {
+      BOOST_TEST(bounded[i].name == exact[i].name);
+      BOOST_TEST(bounded[i].p_value == exact[i].p_value);
+      BOOST_TEST(bounded[i].n_perm == exact[i].n_perm);
+      BOOST_TEST(bounded[i].decision == exact[i].decision);
+      BOOST_TEST(bounded[i].stat == exact[i].stat);
+      (exact[i].significant ? significant : not_significant) += 1;
+    }
+  }
+  BOOST_TEST(significant >= 2);  // both kinds of candidates compared
+  BOOST_TEST(not_significant >= 2);
+}
+
 BOOST_AUTO_TEST_CASE(simplest_within_one_se) {
   Folds f;
   f.k = 2;
