@@ -67,10 +67,11 @@ struct BeamModel {
   std::string label;
   drawbend::analysis::BendMaterial mat;
   std::vector<double> fb;
+  bool thinning = false;  ///< the section thins as the strip stretches (BendCase::thinning)
 };
 /// Beam theory's trace of the residual (ch8_beam_trace.cpp).
 struct BeamTrace {
-  std::vector<BeamModel> models;  ///< isotropic plane strain, plane stress, Hosford 8, AF chosen, AF in-sample
+  std::vector<BeamModel> models;  ///< isotropic plane strain, plane stress, Hosford 8, isotropic plane strain thinning, AF chosen, AF in-sample
   BeamModel best_fit, best_all;   ///< the Armstrong-Frederick member chosen on the fit pin; best on all pins
   BeamModel best_slow;            ///< the member chosen on the fit pin among gamma <= 30 (slow back stresses)
   double chosen_x = 0, chosen_gamma = 0;  ///< best_fit's X_sat [MPa] and gamma

@@ -20,9 +20,14 @@ class Section {
     const double c = m.constraint;
     modulus_ = c > 1 ? m.E_MPa / (1 - m.nu * m.nu) : m.E_MPa;
     ec_ = modulus_ / (c * c);  // d s / d(c eps) for the equivalent quantities
+    width_ = bc.width_mm;
+    set_thickness(bc.thickness_mm);
+  }
+  /// The layers' heights and areas for the section's current thickness.
+  void set_thickness(double t) {
     z_.resize(n_);
-    for (int i = 0; i < n_; ++i) z_[i] = ((i + 0.5) / n_ - 0.5) * bc.thickness_mm;
-    dA_ = bc.width_mm * bc.thickness_mm / n_;
+    for (int i = 0; i < n_; ++i) z_[i] = ((i + 0.5) / n_ - 0.5) * t;
+    dA_ = width_ * t / n_;
   }
   double R(double p) const { return m_.flow(p) - m_.x_sat_MPa * (1 - std::exp(-m_.gamma * p)); }
   double dR(double p) const { return m_.dflow(p) - m_.x_sat_MPa * m_.gamma * std::exp(-m_.gamma * p); }
@@ -85,7 +90,7 @@ class Section {
  private:
   const BendMaterial& m_;
   int n_;
-  double modulus_ = 0, ec_ = 0, dA_ = 0;
+  double modulus_ = 0, ec_ = 0, dA_ = 0, width_ = 0;
   std::vector<double> z_;
 };
 
@@ -99,7 +104,12 @@ BendResult bend_unbend(const BendCase& bc, const BendMaterial& m) {
   if (!(m.E_MPa > 0 && m.constraint >= 1 && m.x_sat_MPa >= 0 && m.gamma >= 0))
     throw std::invalid_argument("bend_unbend: E > 0, constraint >= 1, X_sat >= 0 and gamma >= 0 required");
   if (!(m.flow(0) > 0)) throw std::invalid_argument("bend_unbend: the flow curve must start above 0 MPa");
-  const Section sec(bc, m);
+  Section sec(bc, m);
+  // Plane strain across the width with plastic incompressibility: the
+  // section thins as the strip stretches, t = t0 exp(-eps_m).
+  auto thin = [&](double em) {
+    if (bc.thinning) sec.set_thickness(bc.thickness_mm * std::exp(-em));
+  };
   Layers a{std::vector<double>(bc.layers, 0.0), std::vector<double>(bc.layers, 0.0),
            std::vector<double>(bc.layers, 0.0)};
   Layers b = a;
@@ -107,7 +117,8 @@ BendResult bend_unbend(const BendCase& bc, const BendMaterial& m) {
   sec.carry(a, 0.0, bc.tension_N, b, dm);  // the straight strip under tension
   em += dm;
   std::swap(a, b);
-  const double kappa = 1.0 / (bc.pin_diameter_mm / 2 + bc.thickness_mm / 2);
+  thin(em);
+  const double kappa = 1.0 / (bc.pin_diameter_mm / 2 + (bc.thinning ? bc.thickness_mm * std::exp(-em) : bc.thickness_mm) / 2);
   double work = 0;
   for (const double dk : {kappa / bc.steps, -kappa / bc.steps})
     for (int k = 0; k < bc.steps; ++k) {
@@ -116,6 +127,7 @@ BendResult bend_unbend(const BendCase& bc, const BendMaterial& m) {
       work += 0.5 * (m0 + m1) * dk;  // trapezoidal M dkappa
       em += dm;
       std::swap(a, b);
+      thin(em);
     }
   BendResult r;
   r.bending_force_N = work;

@@ -53,6 +53,14 @@ struct BendCase {
   double tension_N = 0;    ///< constant tension during bending and unbending
   int layers = 200;
   int steps = 200;  ///< curvature increments in each of bending and unbending
+  /// false: the small-strain beam, thickness fixed (as before issue 51's
+  /// trace of the FE's shortfall).  true: the section thins as the strip
+  /// stretches, t = t0 exp(-eps_m) (incompressible plastic flow, width held:
+  /// the plane-strain state; the layers' heights and areas follow, and the
+  /// bend's curvature is 1 / (D/2 + t/2) at the thickness the section has
+  /// when it reaches the pin).  The finite-element strip thins; on the 12.7 mm
+  /// pin at 1500 N this takes 4.9 % off F_B (docs/issue51-large-pin.md).
+  bool thinning = false;
 };
 
 struct BendResult {
