@@ -97,9 +97,22 @@ void CandidateScreen::setup_bounds() {
   bwl = -1;
   r0.resize(U);
   for (size_t u = 0; u < U; ++u) r0[u] = resid[rows[u]];
+  // A pooled probe's residual is centred per block first (centred_by): the
+  // block means per unit, computed as there (the same sums in the same order).
+  std::vector<double> bmu;
+  auto block_means = [&]() {
+    if (!bmu.empty()) return;
+    std::vector<double> s(static_cast<size_t>(nblocks), 0.0), m(s.size(), 0.0);
+    for (int i : rows) s[f.block[i]] += resid[i], m[f.block[i]] += 1;
+    bmu.resize(U);
+    for (size_t u = 0; u < U; ++u) bmu[u] = s[f.block[rows[u]]] / m[f.block[rows[u]]];
+  };
   for (size_t j = 0; j < probes.size(); ++j) {
     const ProbeDef& p = probes[j];
-    if (!p.rpre.empty() || p.cells || p.nsub() != 1 || p.dof[0] <= 0) continue;
+    const bool pooled = !p.rpre.empty();
+    if ((pooled && (p.shape != Shape::levels || p.fixed_counts.empty())) || p.cells || p.nsub() != 1 || p.dof[0] <= 0)
+      continue;
+    if (pooled) block_means();
     bool constant = true;  // the probe's stratum constant within every test
     for (size_t gi = 0; gi < groups.size() && constant; ++gi)
       for (int k = 1; k < gsize[gi]; ++k) constant = constant && p.stratum[gfirst[gi] + k] == p.stratum[gfirst[gi]];
@@ -109,7 +122,7 @@ void CandidateScreen::setup_bounds() {
     double sum_urw = 0, xall = 0;
     for (size_t u = 0; u < U; ++u) {
       const int s = p.stratum[u];
-      n[s] += 1, R[s] += std::abs(r0[u]) + std::abs(p.mean[s]);
+      n[s] += 1, R[s] += std::abs(r0[u]) + std::abs(p.mean[s]) + (pooled ? std::abs(bmu[u]) : 0.0);
       xmax[s] = std::max(xmax[s], std::abs(xz[u])), sx[s] += xz[u], sxx[s] += xz[u] * xz[u];
       sum_urw += std::abs(p.urw[u]), xall = std::max(xall, std::abs(xz[u]));
     }
@@ -119,7 +132,11 @@ void CandidateScreen::setup_bounds() {
     for (size_t gi = 0; gi < groups.size(); ++gi) b.gstratum[gi] = p.stratum[gfirst[gi]];
     if (p.shape == Shape::levels && !p.fixed_counts.empty()) {
       b.e.resize(S);
-      for (int s = 0; s < S; ++s) b.e[s] = 16 * (n[s] + 8) * kU * R[s];
+      for (int s = 0; s < S; ++s) b.e[s] = 16 * ((pooled ? 2 : 1) * n[s] + 8) * kU * R[s];
+      if (pooled) {  // per cell: the sum of the block means over its rows (the same under every permutation)
+        b.bsum.assign(static_cast<size_t>(S) * nlev, 0.0);
+        for (size_t u = 0; u < U; ++u) b.bsum[static_cast<size_t>(p.stratum[u]) * nlev + xl[u]] += bmu[u];
+      }
       b.acc.assign(static_cast<size_t>(S) * nlev * kLanes, 0.0);
       b.factor = 1 + 16 * (static_cast<double>(S) * nlev + 16) * kU;
     } else if (p.shape == Shape::slopes) {
@@ -262,10 +279,10 @@ void CandidateScreen::bounded_max(const std::vector<double>& qz, const std::vect
       for (int s = 0; s < p.nstrata; ++s)
         for (int l = 0; l < nlev; ++l) {
           const size_t k = static_cast<size_t>(s) * nlev + l;
-          const double N = p.fixed_counts[k];
+          const double N = p.fixed_counts[k], B = b.bsum.empty() ? 0.0 : b.bsum[k];
           if (N > 0)
             for (int j = 0; j < L; ++j) {
-              const double t = std::abs(b.acc[k * L + j] - p.mean[s] * N) + b.e[s];
+              const double t = std::abs(b.acc[k * L + j] - B - p.mean[s] * N) + b.e[s];
               ess[j] += t * t / N;
             }
         }
