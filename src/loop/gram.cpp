@@ -22,19 +22,22 @@ constexpr bool kKnownKernel = false;
 
 }  // namespace
 
-bool gram_sparse(const Eigen::MatrixXd& J, Eigen::MatrixXd& A, bool force) {
+bool gram_sparse(const Eigen::MatrixXd& J, Eigen::MatrixXd& A, bool force, const std::vector<std::vector<int>>* nz) {
   const Eigen::Index n = J.rows(), p = J.cols();
   // Eigen's GEMM path only (p = 1 is a matrix-vector product, tiny sizes a
   // coefficient-wise one).
   if (!kKnownKernel || p < 2 || n < 32) return false;
   const double* d = J.data();
   std::vector<Eigen::Index> start(static_cast<size_t>(n) + 1, 0);
-  for (Eigen::Index j = 0; j < p; ++j) {
-    const double* c = d + j * n;
-    for (Eigen::Index k = 0; k < n; ++k) {
-      const double v = c[k];
-      if (!(std::abs(v) <= std::numeric_limits<double>::max())) return false;  // NaN or infinity: 0 x it is not 0
-      start[k + 1] += v != 0;
+  if (nz) {  // the rows of each column that may be nonzero: the others are not read
+    if (static_cast<Eigen::Index>(nz->size()) != p) return false;
+    for (const auto& rows : *nz)
+      for (int k : rows) ++start[k + 1];
+  } else {
+    if (!J.allFinite()) return false;  // NaN or infinity: 0 x it is not 0
+    for (Eigen::Index j = 0; j < p; ++j) {
+      const double* c = d + j * n;
+      for (Eigen::Index k = 0; k < n; ++k) start[k + 1] += c[k] != 0;
     }
   }
   double pairs = 0;
@@ -48,10 +51,16 @@ bool gram_sparse(const Eigen::MatrixXd& J, Eigen::MatrixXd& A, bool force) {
     std::vector<Eigen::Index> pos(start.begin(), start.end() - 1);
     for (Eigen::Index j = 0; j < p; ++j) {
       const double* c = d + j * n;
-      for (Eigen::Index k = 0; k < n; ++k)
-        if (c[k] != 0) col[pos[k]] = static_cast<int>(j), val[pos[k]++] = c[k];
+      if (nz)
+        for (int k : (*nz)[j]) col[pos[k]] = static_cast<int>(j), val[pos[k]++] = c[k];
+      else
+        for (Eigen::Index k = 0; k < n; ++k)
+          if (c[k] != 0) col[pos[k]] = static_cast<int>(j), val[pos[k]++] = c[k];
     }
   }
+  if (nz)
+    for (double v : val)
+      if (!(std::abs(v) <= std::numeric_limits<double>::max())) return false;
   // Eigen's blocking (general_matrix_matrix_product::run).
   Eigen::Index kc = n, mc = p, nc = p;
   Eigen::internal::computeProductBlockingSizes<double, double, 1, Eigen::Index>(kc, mc, nc, Eigen::Index(1));
@@ -107,9 +116,9 @@ bool gram_sparse(const Eigen::MatrixXd& J, Eigen::MatrixXd& A, bool force) {
   return true;
 }
 
-Eigen::MatrixXd gram(const Eigen::MatrixXd& J) {
+Eigen::MatrixXd gram(const Eigen::MatrixXd& J, const std::vector<std::vector<int>>* nz) {
   Eigen::MatrixXd A;
-  if (gram_sparse(J, A)) return A;
+  if (gram_sparse(J, A, false, nz)) return A;
   return J.transpose() * J;
 }
 

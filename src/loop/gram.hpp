@@ -24,14 +24,19 @@
 // compares the two bit for bit.
 #pragma once
 
+#include <vector>
+
 #include <Eigen/Dense>
 
 namespace drawbend::loop {
 
-/// J^T J, bit for bit as Eigen's `J.transpose() * J`.
-Eigen::MatrixXd gram(const Eigen::MatrixXd& J);
+/// J^T J, bit for bit as Eigen's `J.transpose() * J`.  nz (optional): per
+/// column of J, the rows (ascending) outside which the column is zero (+-0),
+/// as levenberg_marquardt's sparse pattern; without it J is scanned.
+Eigen::MatrixXd gram(const Eigen::MatrixXd& J, const std::vector<std::vector<int>>* nz = nullptr);
 
 /// The sparse path only (tests): false when it does not apply (then A is unset).
-bool gram_sparse(const Eigen::MatrixXd& J, Eigen::MatrixXd& A, bool force = false);
+bool gram_sparse(const Eigen::MatrixXd& J, Eigen::MatrixXd& A, bool force = false,
+                 const std::vector<std::vector<int>>* nz = nullptr);
 
 }  // namespace drawbend::loop

@@ -104,7 +104,7 @@ double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::
   for (int it = 0; it < 100; ++it) {
     jacobian();
     if (it == 0 && row && n > 0) support = pattern();
-    const Eigen::MatrixXd A = gram(J);  // J^T J, Eigen's bits (gram.hpp)
+    const Eigen::MatrixXd A = gram(J, support.empty() ? nullptr : &support);  // J^T J, Eigen's bits (gram.hpp)
     const Eigen::VectorXd g = J.transpose() * r;
     bool improved = false;
     for (int tries = 0; tries < 20; ++tries) {

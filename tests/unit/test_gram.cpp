@@ -54,6 +54,14 @@ BOOST_AUTO_TEST_CASE(same_bits_as_eigen) {
         }
         const Eigen::MatrixXd G = gram(J);
         BOOST_CHECK(std::memcmp(G.data(), ref.data(), sizeof(double) * p * p) == 0);
+        // with the rows of each column given (a superset: every third zero row too)
+        std::vector<std::vector<int>> nz(p);
+        for (int j = 0; j < p; ++j)
+          for (int k = 0; k < n; ++k)
+            if (J(k, j) != 0 || k % 3 == 0) nz[j].push_back(k);
+        Eigen::MatrixXd B;
+        BOOST_REQUIRE(gram_sparse(J, B, true, &nz));
+        BOOST_CHECK(std::memcmp(B.data(), ref.data(), sizeof(double) * p * p) == 0);
       }
   BOOST_TEST_MESSAGE(checked << " matrices compared");
   BOOST_CHECK_EQUAL(differing, 0);
@@ -63,4 +71,7 @@ BOOST_AUTO_TEST_CASE(not_finite_falls_back) {
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(100, 5), A;
   J(3, 2) = std::numeric_limits<double>::quiet_NaN();
   BOOST_CHECK(!gram_sparse(J, A, true));
+  std::vector<std::vector<int>> nz(5);
+  nz[2] = {3};
+  BOOST_CHECK(!gram_sparse(J, A, true, &nz));
 }
