@@ -219,10 +219,15 @@ double CandidateScreen::quad_bound(const ProbeDef& p, const BoundProbe& b, int j
 
 // The largest upper bound of the bounded probes' statistics in each lane
 // (+infinity when a bound cannot be given: the exact passes decide), zmax[j]
-// for the kLanes lanes side by side (lanes past the last permutation repeat
-// lane 0).  Its sums may be made in any order: only their bounds matter.
-void CandidateScreen::bounded_max(const std::vector<double>& qz, const std::vector<int>& ql, double* zmax) {
+// for the kLanes lanes side by side, lane j's permutation lp[j] (unit u takes
+// unit lp[j][u]'s value; lanes past the last permutation repeat lane 0).  Its sums may be made in any order: only their bounds matter.
+void CandidateScreen::bounded_max(const std::vector<int>* lp, double* zmax) {
   constexpr int L = kLanes;
+  const int* p0 = lp[0].data();
+  const int* p1 = lp[1].data();
+  const int* p2 = lp[2].data();
+  const int* p3 = lp[3].data();
+  static_assert(L == 4, "bounded_max reads four lanes' permutations");
   for (auto& b : bprobes) std::fill(b.acc.begin(), b.acc.end(), 0.0);
   const double* urw = bws >= 0 ? probes[bprobes[bws].j].urw.data() : nullptr;
   const double* uw2 = bws >= 0 ? probes[bprobes[bws].j].uw2.data() : nullptr;
@@ -236,24 +241,23 @@ void CandidateScreen::bounded_max(const std::vector<double>& qz, const std::vect
     double x1[L] = {}, x2[L] = {};
     for (size_t u = u0; u < u1; ++u) {
       const double r = r0[u];
-      for (int j = 0; j < L; ++j) {
-        const double x = qz[u * L + j];
-        A[ql[u * L + j] * L + j] += r, x1[j] += x * r;
-      }
+      // lane j's value of unit u: the unit its permutation puts there
+      const int v[L] = {p0[u], p1[u], p2[u], p3[u]};
+      double x[L];
+      int lv[L];
+      for (int j = 0; j < L; ++j) x[j] = xz[v[j]], lv[j] = xl[v[j]];
+      for (int j = 0; j < L; ++j) A[lv[j] * L + j] += r, x1[j] += x[j] * r;
       if (quad)
-        for (int j = 0; j < L; ++j) x2[j] += qz[u * L + j] * qz[u * L + j] * r;
+        for (int j = 0; j < L; ++j) x2[j] += x[j] * x[j] * r;
       if (wl2) {  // per level: the wlevels probe's sums of urw and uw2
         const double w1 = wl1[u], w2 = wl2[u];
         for (int j = 0; j < L; ++j) {
-          double* a = AW + static_cast<size_t>(ql[u * L + j]) * 2 * L + j;
+          double* a = AW + static_cast<size_t>(lv[j]) * 2 * L + j;
           a[0] += w1, a[L] += w2;
         }
       }
       if (urw)
-        for (int j = 0; j < L; ++j) {
-          const double x = qz[u * L + j];
-          wb[j] += x * urw[u], wa[j] += x * x * uw2[u];
-        }
+        for (int j = 0; j < L; ++j) wb[j] += x[j] * urw[u], wa[j] += x[j] * x[j] * uw2[u];
     }
     for (auto& b : bprobes) {
       const ProbeDef& p = probes[b.j];

@@ -116,7 +116,7 @@ struct CandidateScreen {
   // screen_bound.cpp
   void setup_bounds();
   double quad_bound(const ProbeDef& p, const BoundProbe& b, int j) const;
-  void bounded_max(const std::vector<double>& qz, const std::vector<int>& ql, double* zmax);
+  void bounded_max(const std::vector<int>* lp, double* zmax);
   // screen_permute.cpp
   void flat_groups();
   void calibrate(std::uint64_t seed, size_t ci);
