@@ -10,7 +10,9 @@
 // probe's stratum constant within a test), one pass per permutation sums per
 // test and level the raw residual r0 (and x r0, and the scaled probe's sums),
 // from which every levels probe (fixed counts), slopes probe and the scaled
-// slope follow with O(tests x levels) work.  These sums differ from the exact
+// slope follow with O(tests x levels) work (a pooled levels probe, its residual
+// centred per block first, with the block means' sum per cell taken out: the
+// same under every permutation).  These sums differ from the exact
 // ones only by rounding, and each is given a bound on that difference:
 //   - a probe's centred residual is ur = fl(r0 - M) (M: its stratum's mean,
 //     ProbeDef::mean), so ur = r0 - M + eta with |eta| <= u |r0 - M|;
