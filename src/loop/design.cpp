@@ -52,13 +52,22 @@ std::vector<int> Design::levels(const std::string& column, std::vector<std::stri
   const int k = data->extra_index(column);
   if (k < 0 && column != "pin" && column != "direction_deg")
     throw InputError("no categorical column '" + column + "' for a group factor");
+  const bool text = column != "pin" && column != "direction_deg";
+  // A text column's values by reference, a run of equal values (a test's rows)
+  // without a look-up: the same numbering by first appearance.
+  const std::string* last = nullptr;
+  int last_ix = 0;
   for (size_t i = 0; i < rows.size(); ++i) {
     const Sample& s = data->rows[i];
-    const std::string v = column == "pin" ? fmt(s.pin_d_mm) : column == "direction_deg" ? fmt(s.direction_deg)
-                                                                                         : s.extra[k];
+    if (text && last && s.extra[k] == *last) {
+      out[i] = last_ix;
+      continue;
+    }
+    const std::string v = !text ? (column == "pin" ? fmt(s.pin_d_mm) : fmt(s.direction_deg)) : s.extra[k];
     auto [it, fresh] = ix.emplace(v, static_cast<int>(nm.size()));
     if (fresh) nm.push_back(v);
     out[i] = it->second;
+    if (text) last = &s.extra[k], last_ix = it->second;
   }
   if (names) *names = nm;
   return out;

@@ -1,6 +1,8 @@
 // Levenberg-Marquardt with a forward-difference Jacobian (least_squares.hpp).
 #include "loop/least_squares.hpp"
 
+#include "loop/gram.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -102,7 +104,7 @@ double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::
   for (int it = 0; it < 100; ++it) {
     jacobian();
     if (it == 0 && row && n > 0) support = pattern();
-    const Eigen::MatrixXd A = J.transpose() * J;
+    const Eigen::MatrixXd A = gram(J, support.empty() ? nullptr : &support);  // J^T J, Eigen's bits (gram.hpp)
     const Eigen::VectorXd g = J.transpose() * r;
     bool improved = false;
     for (int tries = 0; tries < 20; ++tries) {

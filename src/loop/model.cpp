@@ -7,6 +7,7 @@
 
 #include "analysis/rope.hpp"
 #include "core/csv.hpp"
+#include "loop/gram.hpp"
 #include "loop/least_squares.hpp"
 #include "loop/predict_row.hpp"
 
@@ -75,7 +76,7 @@ void fit_bending_channels(const Design& d, const std::vector<int>& train, bool l
       for (size_t c = 0; c < cols.size(); ++c) X(r, c) = value(cols[c], rows[r]);
       y[r] = d.rows[rows[r]].y - d.rows[rows[r]].fback;
     }
-    const Eigen::MatrixXd XtX = X.transpose() * X;
+    const Eigen::MatrixXd XtX = gram(X);
     const Eigen::VectorXd beta = XtX.ldlt().solve(X.transpose() * y);
     const double dof = static_cast<double>(rows.size()) - static_cast<double>(cols.size());
     const double s2 = dof > 0 ? (y - X * beta).squaredNorm() / dof : 0;
@@ -324,7 +325,7 @@ void standard_errors(const Design& d, const ModelSpec& spec, const Layout& L, co
                      int n, int p, Fit& f) {
   const Eigen::VectorXd& th = f.theta;
   const double s2 = n > p ? sse / (n - p) : 0.0;
-  const Eigen::MatrixXd cov = (J.transpose() * J).completeOrthogonalDecomposition().pseudoInverse() * s2;
+  const Eigen::MatrixXd cov = gram(J).completeOrthogonalDecomposition().pseudoInverse() * s2;
   const auto names = detail::friction_names(d, spec, L, f.level_names);
   for (int j = 0; j < p; ++j) f.params.push_back({names[j], th[j], std::sqrt(std::max(0.0, cov(j, j))), "-"});
 }

@@ -10,7 +10,9 @@
 // probe's stratum constant within a test), one pass per permutation sums per
 // test and level the raw residual r0 (and x r0, and the scaled probe's sums),
 // from which every levels probe (fixed counts), slopes probe and the scaled
-// slope follow with O(tests x levels) work.  These sums differ from the exact
+// slope follow with O(tests x levels) work (a pooled levels probe, its residual
+// centred per block first, with the block means' sum per cell taken out: the
+// same under every permutation).  These sums differ from the exact
 // ones only by rounding, and each is given a bound on that difference:
 //   - a probe's centred residual is ur = fl(r0 - M) (M: its stratum's mean,
 //     ProbeDef::mean), so ur = r0 - M + eta with |eta| <= u |r0 - M|;
@@ -97,9 +99,22 @@ void CandidateScreen::setup_bounds() {
   bwl = -1;
   r0.resize(U);
   for (size_t u = 0; u < U; ++u) r0[u] = resid[rows[u]];
+  // A pooled probe's residual is centred per block first (centred_by): the
+  // block means per unit, computed as there (the same sums in the same order).
+  std::vector<double> bmu;
+  auto block_means = [&]() {
+    if (!bmu.empty()) return;
+    std::vector<double> s(static_cast<size_t>(nblocks), 0.0), m(s.size(), 0.0);
+    for (int i : rows) s[f.block[i]] += resid[i], m[f.block[i]] += 1;
+    bmu.resize(U);
+    for (size_t u = 0; u < U; ++u) bmu[u] = s[f.block[rows[u]]] / m[f.block[rows[u]]];
+  };
   for (size_t j = 0; j < probes.size(); ++j) {
     const ProbeDef& p = probes[j];
-    if (!p.rpre.empty() || p.cells || p.nsub() != 1 || p.dof[0] <= 0) continue;
+    const bool pooled = !p.rpre.empty();
+    if ((pooled && (p.shape != Shape::levels || p.fixed_counts.empty())) || p.cells || p.nsub() != 1 || p.dof[0] <= 0)
+      continue;
+    if (pooled) block_means();
     bool constant = true;  // the probe's stratum constant within every test
     for (size_t gi = 0; gi < groups.size() && constant; ++gi)
       for (int k = 1; k < gsize[gi]; ++k) constant = constant && p.stratum[gfirst[gi] + k] == p.stratum[gfirst[gi]];
@@ -109,7 +124,7 @@ void CandidateScreen::setup_bounds() {
     double sum_urw = 0, xall = 0;
     for (size_t u = 0; u < U; ++u) {
       const int s = p.stratum[u];
-      n[s] += 1, R[s] += std::abs(r0[u]) + std::abs(p.mean[s]);
+      n[s] += 1, R[s] += std::abs(r0[u]) + std::abs(p.mean[s]) + (pooled ? std::abs(bmu[u]) : 0.0);
       xmax[s] = std::max(xmax[s], std::abs(xz[u])), sx[s] += xz[u], sxx[s] += xz[u] * xz[u];
       sum_urw += std::abs(p.urw[u]), xall = std::max(xall, std::abs(xz[u]));
     }
@@ -119,7 +134,11 @@ void CandidateScreen::setup_bounds() {
     for (size_t gi = 0; gi < groups.size(); ++gi) b.gstratum[gi] = p.stratum[gfirst[gi]];
     if (p.shape == Shape::levels && !p.fixed_counts.empty()) {
       b.e.resize(S);
-      for (int s = 0; s < S; ++s) b.e[s] = 16 * (n[s] + 8) * kU * R[s];
+      for (int s = 0; s < S; ++s) b.e[s] = 16 * ((pooled ? 2 : 1) * n[s] + 8) * kU * R[s];
+      if (pooled) {  // per cell: the sum of the block means over its rows (the same under every permutation)
+        b.bsum.assign(static_cast<size_t>(S) * nlev, 0.0);
+        for (size_t u = 0; u < U; ++u) b.bsum[static_cast<size_t>(p.stratum[u]) * nlev + xl[u]] += bmu[u];
+      }
       b.acc.assign(static_cast<size_t>(S) * nlev * kLanes, 0.0);
       b.factor = 1 + 16 * (static_cast<double>(S) * nlev + 16) * kU;
     } else if (p.shape == Shape::slopes) {
@@ -202,10 +221,15 @@ double CandidateScreen::quad_bound(const ProbeDef& p, const BoundProbe& b, int j
 
 // The largest upper bound of the bounded probes' statistics in each lane
 // (+infinity when a bound cannot be given: the exact passes decide), zmax[j]
-// for the kLanes lanes side by side (lanes past the last permutation repeat
-// lane 0).  Its sums may be made in any order: only their bounds matter.
-void CandidateScreen::bounded_max(const std::vector<double>& qz, const std::vector<int>& ql, double* zmax) {
+// for the kLanes lanes side by side, lane j's permutation lp[j] (unit u takes
+// unit lp[j][u]'s value; lanes past the last permutation repeat lane 0).  Its sums may be made in any order: only their bounds matter.
+void CandidateScreen::bounded_max(const std::vector<int>* lp, double* zmax) {
   constexpr int L = kLanes;
+  const int* p0 = lp[0].data();
+  const int* p1 = lp[1].data();
+  const int* p2 = lp[2].data();
+  const int* p3 = lp[3].data();
+  static_assert(L == 4, "bounded_max reads four lanes' permutations");
   for (auto& b : bprobes) std::fill(b.acc.begin(), b.acc.end(), 0.0);
   const double* urw = bws >= 0 ? probes[bprobes[bws].j].urw.data() : nullptr;
   const double* uw2 = bws >= 0 ? probes[bprobes[bws].j].uw2.data() : nullptr;
@@ -219,24 +243,23 @@ void CandidateScreen::bounded_max(const std::vector<double>& qz, const std::vect
     double x1[L] = {}, x2[L] = {};
     for (size_t u = u0; u < u1; ++u) {
       const double r = r0[u];
-      for (int j = 0; j < L; ++j) {
-        const double x = qz[u * L + j];
-        A[ql[u * L + j] * L + j] += r, x1[j] += x * r;
-      }
+      // lane j's value of unit u: the unit its permutation puts there
+      const int v[L] = {p0[u], p1[u], p2[u], p3[u]};
+      double x[L];
+      int lv[L];
+      for (int j = 0; j < L; ++j) x[j] = xz[v[j]], lv[j] = xl[v[j]];
+      for (int j = 0; j < L; ++j) A[lv[j] * L + j] += r, x1[j] += x[j] * r;
       if (quad)
-        for (int j = 0; j < L; ++j) x2[j] += qz[u * L + j] * qz[u * L + j] * r;
+        for (int j = 0; j < L; ++j) x2[j] += x[j] * x[j] * r;
       if (wl2) {  // per level: the wlevels probe's sums of urw and uw2
         const double w1 = wl1[u], w2 = wl2[u];
         for (int j = 0; j < L; ++j) {
-          double* a = AW + static_cast<size_t>(ql[u * L + j]) * 2 * L + j;
+          double* a = AW + static_cast<size_t>(lv[j]) * 2 * L + j;
           a[0] += w1, a[L] += w2;
         }
       }
       if (urw)
-        for (int j = 0; j < L; ++j) {
-          const double x = qz[u * L + j];
-          wb[j] += x * urw[u], wa[j] += x * x * uw2[u];
-        }
+        for (int j = 0; j < L; ++j) wb[j] += x[j] * urw[u], wa[j] += x[j] * x[j] * uw2[u];
     }
     for (auto& b : bprobes) {
       const ProbeDef& p = probes[b.j];
@@ -262,10 +285,10 @@ void CandidateScreen::bounded_max(const std::vector<double>& qz, const std::vect
       for (int s = 0; s < p.nstrata; ++s)
         for (int l = 0; l < nlev; ++l) {
           const size_t k = static_cast<size_t>(s) * nlev + l;
-          const double N = p.fixed_counts[k];
+          const double N = p.fixed_counts[k], B = b.bsum.empty() ? 0.0 : b.bsum[k];
           if (N > 0)
             for (int j = 0; j < L; ++j) {
-              const double t = std::abs(b.acc[k * L + j] - p.mean[s] * N) + b.e[s];
+              const double t = std::abs(b.acc[k * L + j] - B - p.mean[s] * N) + b.e[s];
               ess[j] += t * t / N;
             }
         }

@@ -37,6 +37,7 @@ struct BoundProbe {
   std::vector<int> gstratum;  // per test (permutation group): its stratum
   std::vector<double> acc;  // the lanes' sums: per (stratum, level) cell, or per stratum, and lane
   std::vector<double> sxx;  // quad, per stratum: the sum of x^2
+  std::vector<double> bsum;  // pooled levels, per (stratum, level) cell: the sum of its rows' block means
   double eb = 0, arel = 0;  // wslope: bound on |exact - bounded| of b, and a's relative one; quad: of b1
   double eb2 = 0;           // quad: of b2
   double q11 = 0, q12 = 0, q22 = 0, eq = 0, lam = 0, cond = 0;  // quad: Q, its entries' bound, eigenvalue
@@ -115,7 +116,7 @@ struct CandidateScreen {
   // screen_bound.cpp
   void setup_bounds();
   double quad_bound(const ProbeDef& p, const BoundProbe& b, int j) const;
-  void bounded_max(const std::vector<double>& qz, const std::vector<int>& ql, double* zmax);
+  void bounded_max(const std::vector<int>* lp, double* zmax);
   // screen_permute.cpp
   void flat_groups();
   void calibrate(std::uint64_t seed, size_t ci);

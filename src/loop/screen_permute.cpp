@@ -221,31 +221,45 @@ void CandidateScreen::permutation_test(CandidateResult& res, double T, std::uint
   const double Tp = T - 1e-12 * std::max(1.0, std::abs(T));
   // The bounded pass (screen_bound.cpp): a lane whose bound lies below Tcut cannot count.
   if (!ctx || ctx->bounded_pass) setup_bounds();
+  std::vector<int> lperm[kLanes];  // the bounded pass: each lane's permutation
+  const bool exact_probes = std::count(bfast.begin(), bfast.end(), 0) > 0;  // probes outside the bounded pass
   const double Tcut = Tp - 1e-8 * std::max(1.0, std::abs(Tp));
   int nbound = 0, nnear = 0;  // permutations through the bounded pass, and those near T
   for (int batch = 100; b < cap; batch = std::min(cap - b, 2 * batch)) {
     for (int j = 0; j < batch; j += kLanes) {  // kLanes permutations per pass over the units
       const int used = std::min(kLanes, batch - j);
+      // The bounded pass reads each lane's permutation itself; the lanes' unit
+      // values (pz, pl) are gathered only for the exact passes that need them.
+      const bool lanes_only = bounded;
       for (int i = 0; i < used; ++i) {
         shuffle(perm, rng);
-        fill_unit_values(perm, pz, pl, i, rng);
+        if (lanes_only) lperm[i] = perm;
+        else fill_unit_values(perm, pz, pl, i, rng);
       }
-      fill_lanes(pz, pl, used);
-      if (!bounded) {
+      if (!lanes_only) {
+        fill_lanes(pz, pl, used);
         eval_lanes(pz, pl);
         for (int i = 0; i < used; ++i)
           if (lane_stat(i) >= Tp) ++ge;
       } else {
-        eval_lanes(pz, pl, 0);
+        for (int i = used; i < kLanes; ++i) lperm[i] = lperm[0];
+        bool filled = false;
+        auto fill = [&]() {  // (bounded: never two-level, so no draws here)
+          if (filled) return;
+          for (int i = 0; i < used; ++i) fill_unit_values(lperm[i], pz, pl, i, rng);
+          fill_lanes(pz, pl, used);
+          filled = true;
+        };
+        if (exact_probes) fill(), eval_lanes(pz, pl, 0);
         double zb[kLanes];
-        bounded_max(pz, pl, zb);
+        bounded_max(lperm, zb);
         bool near[kLanes] = {}, any = false;
         for (int i = 0; i < used; ++i) near[i] = !(zb[i] < Tcut), any = any || near[i], nnear += near[i];
         // Most permutations near T (a candidate far from significance): the
         // bounded pass only adds work, the exact passes alone from here on.
         nbound += used;
         if (nbound >= 40 && 2 * nnear > nbound) bounded = false;
-        if (any) eval_lanes(pz, pl, 1);
+        if (any) fill(), eval_lanes(pz, pl, 1);
         for (int i = 0; i < used; ++i)
           if (lane_stat(i, near[i]) >= Tp) ++ge;
       }

@@ -174,7 +174,10 @@ BOOST_AUTO_TEST_CASE(bounded_pass_changes_no_result) {
   ctx.mu_weight.assign(pin.size(), 1.0);
   for (size_t i = 0; i < pin.size(); ++i) ctx.mu_weight[i] = i % 5 == 0 ? 0.0 : 1 + 0.1 * pin[i];
   int significant = 0, not_significant = 0;
+  // pooled: the "bins per pin, pooled over cells" probe (residual centred per block, then per pin) as well
+  for (bool pooled : {false, true})
   for (double slope : {0.2, 0.05, 0.03, 0.02, 0.0}) {
+    ctx.pooled_inputs = pooled;
     std::vector<double> r;
     for (size_t i = 0; i < pin.size(); ++i) {
       const double h = std::sin(12.9898 * i) * 43758.5453;
@@ -194,8 +197,8 @@ BOOST_AUTO_TEST_CASE(bounded_pass_changes_no_result) {
       (exact[i].significant ? significant : not_significant) += 1;
     }
   }
-  BOOST_TEST(significant >= 2);  // both kinds of candidates compared
-  BOOST_TEST(not_significant >= 2);
+  BOOST_TEST(significant >= 4);  // both kinds of candidates compared, with and without the pooled probes
+  BOOST_TEST(not_significant >= 4);
 }
 
 BOOST_AUTO_TEST_CASE(simplest_within_one_se) {
