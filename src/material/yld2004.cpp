@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/csv.hpp"
+#include "material/principal_values.hpp"
 #include "material/yield_points.hpp"
 
 namespace drawbend::material {
@@ -123,28 +124,7 @@ bool evaluate(const Yld2004& Y, const double sig[6], Eval& e) {
 }
 }  // namespace
 
-void sym_eigenvalues(const double v[6], double lam[3]) {
-  const double m = (v[0] + v[1] + v[2]) / 3.0;
-  const double b0 = v[0] - m, b1 = v[1] - m, b2 = v[2] - m;
-  const double p2 = b0 * b0 + b1 * b1 + b2 * b2 + 2.0 * (v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
-  if (!(p2 > 0.0)) {
-    lam[0] = lam[1] = lam[2] = m;
-    return;
-  }
-  const double p = std::sqrt(p2 / 6.0);
-  const double c0 = b0 / p, c1 = b1 / p, c2 = b2 / p, e3 = v[3] / p, e4 = v[4] / p, e5 = v[5] / p;
-  // det(B / p) / 2 = cos(3 phi), in [-1, 1] up to round-off.
-  const double det = c0 * (c1 * c2 - e4 * e4) - e3 * (e3 * c2 - e4 * e5) + e5 * (e3 * e4 - c1 * e5);
-  const double r = std::clamp(0.5 * det, -1.0, 1.0);
-  const double phi = std::acos(r) / 3.0;  // in [0, pi/3]
-  // cos(phi -+ 2 pi / 3) = -cos(phi) / 2 +- (sqrt(3) / 2) sin(phi): one cosine and one sine.
-  const double cp = std::cos(phi), sp = 0.86602540378443864676 * std::sin(phi);
-  double l[3] = {m + 2.0 * p * cp, m + 2.0 * p * (-0.5 * cp + sp), m + 2.0 * p * (-0.5 * cp - sp)};
-  if (l[1] > l[0]) std::swap(l[0], l[1]);
-  if (l[2] > l[1]) std::swap(l[1], l[2]);
-  if (l[1] > l[0]) std::swap(l[0], l[1]);
-  lam[0] = l[0], lam[1] = l[1], lam[2] = l[2];
-}
+void sym_eigenvalues(const double v[6], double lam[3]) { lanes::DRAWBEND_ISA::principal_values(v, lam); }
 
 Yld2004 Yld2004::isotropic(double a) {
   Yld2004 y;

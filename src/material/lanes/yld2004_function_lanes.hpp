@@ -1,7 +1,8 @@
 #pragma once
 // The Yld2004-18p yield function (material/yld2004.cpp) on W elements side by
 // side, for its plasticity model's lane twin (material/lanes/yld2004_lanes.hpp):
-// the transformed deviators, their principal values (sym_eigenvalues), Phi,
+// the transformed deviators, their principal values (sym_eigenvalues: the one
+// template both use, material/principal_values.hpp), Phi,
 // sigma_bar and its gradient by divided differences (Yld2004::gradient,
 // equivalent).  Each function is the scalar one named above it with the same
 // arithmetic in the same order, so every lane has its bits:
@@ -10,8 +11,9 @@
 //    taken never leaks), coincident eigenvalues included (the derivative at
 //    the midpoint, lane by lane where the scalar code takes it);
 //  - std::max and std::clamp are their comparisons, in their order;
-//  - acos, cos, sin (and pow, for an exponent that is not an integer) are the
-//    same libm calls, lane by lane (as lane_exp, core/lanes.hpp).
+//  - pow, for an exponent that is not an integer, is the same libm call,
+//    lane by lane (as lane_exp, core/lanes.hpp); the principal values need
+//    none (no trigonometry).
 // Why copies and not one template for both: hill48_lanes.hpp says why.  A
 // change to either side must be made to both: tests/unit/test_yld2004_lanes.cpp
 // fails on any difference in the bits.
@@ -26,6 +28,7 @@
 #include <cstdint>
 
 #include "core/lanes.hpp"
+#include "material/principal_values.hpp"
 #include "material/yld2004_plasticity.hpp"
 
 #ifndef DRAWBEND_ISA
@@ -43,7 +46,7 @@ inline void lane_abs(const T& v, T& r) {
   r = (T)((I)v & ~(I{} + INT64_MIN));
 }
 
-/// r = f(v) lane by lane, f a libm function of one double (acos, cos, sin).
+/// r = f(v) lane by lane, f a libm function of one double (pow).
 template <class T, class F>
 inline void lane_call(const T& v, T& r, F&& f) {
   for (int l = 0; l < static_cast<int>(sizeof(T) / sizeof(double)); ++l) r[l] = f(v[l]);
@@ -95,35 +98,10 @@ inline void yld_transform_back(const double c[9], const T G[6], T m[6]) {
   m[5] += c[7] * G[5];
 }
 
-/// sym_eigenvalues(v, lam): the closed-form eigenvalues, descending.
+/// sym_eigenvalues(v, lam): the eigenvalues, descending (the one template of both).
 template <class T>
 inline void yld_eigenvalues(const T v[6], T lam[3]) {
-  const T m = (v[0] + v[1] + v[2]) / 3.0;
-  const T b0 = v[0] - m, b1 = v[1] - m, b2 = v[2] - m;
-  const T p2 = b0 * b0 + b1 * b1 + b2 * b2 + 2.0 * (v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
-  T p;
-  lane_sqrt(p2 / 6.0, p);
-  const T c0 = b0 / p, c1 = b1 / p, c2 = b2 / p, e3 = v[3] / p, e4 = v[4] / p, e5 = v[5] / p;
-  const T det = c0 * (c1 * c2 - e4 * e4) - e3 * (e3 * c2 - e4 * e5) + e5 * (e3 * e4 - c1 * e5);
-  const T h = 0.5 * det;
-  const T r = h < -1.0 ? T{} - 1.0 : (1.0 < h ? T{} + 1.0 : h);  // std::clamp(h, -1.0, 1.0)
-  T ac, cp, sn;
-  lane_call(r, ac, [](double x) { return std::acos(x); });
-  const T phi = ac / 3.0;
-  lane_call(phi, cp, [](double x) { return std::cos(x); });
-  lane_call(phi, sn, [](double x) { return std::sin(x); });
-  const T sp = 0.86602540378443864676 * sn;
-  T l0 = m + 2.0 * p * cp, l1 = m + 2.0 * p * (-0.5 * cp + sp), l2 = m + 2.0 * p * (-0.5 * cp - sp);
-  auto order = [](T& hi, T& lo) {  // if (lo > hi) std::swap(hi, lo)
-    const auto s = lo > hi;
-    const T a = s ? lo : hi, b = s ? hi : lo;
-    hi = a, lo = b;
-  };
-  order(l0, l1);
-  order(l1, l2);
-  order(l0, l1);
-  const auto flat = ~(p2 > 0.0);  // !(p2 > 0): the triple root m
-  lam[0] = flat ? m : l0, lam[1] = flat ? m : l1, lam[2] = flat ? m : l2;
+  principal_values(v, lam);
 }
 
 /// g = Exponent::g, g1, g2 of x against y[3].
