@@ -10,10 +10,10 @@
 // r = det(Y) / 2 in [-1, 1]:
 //  1. the isolated root x0 (the largest for r >= 0, the smallest for r < 0;
 //     |x0| in [sqrt 3, 2], at least sqrt 3 from both others): the largest root
-//     of y^3 - 3 y - 2 |r| by a degree-4 polynomial in |r| (error < 1.1e-5,
-//     Chebyshev interpolation of 2 cos(acos(|r|) / 3) on [0, 1]) and two Newton
-//     steps (error 9e-11, then below round-off: the cubic's root there is
-//     simple and well separated), signed as r;
+//     of y^3 - 3 y - 2 |r| by a degree-8 polynomial in |r| (error < 3.7e-9,
+//     Chebyshev interpolation of 2 cos(acos(|r|) / 3) on [0, 1]) and one Newton
+//     step (error 0.87 x 3.7e-9 squared, below round-off: the cubic's root
+//     there is simple and well separated), signed as r;
 //  2. the other two, x0's complement: with v the null vector of Y - x0 I (the
 //     largest of the cross products of its rows, at least sqrt 3 long), the
 //     tensor D = Y + (x0 / 2) I - (3 x0 / 2) v v^T / |v|^2 has eigenvalues 0
@@ -42,7 +42,7 @@ namespace drawbend::material::lanes::DRAWBEND_ISA {
 
 /// The eigenvalues of the symmetric tensor v (Voigt: xx, yy, zz, xy, yz, zx; tensor shears), descending.
 template <class T>
-inline void principal_values(const T v[6], T lam[3]) {
+__attribute__((always_inline)) inline void principal_values(const T v[6], T lam[3]) {
   const T m = (v[0] + v[1] + v[2]) / 3.0;
   const T b0 = v[0] - m, b1 = v[1] - m, b2 = v[2] - m;
   const T p2 = b0 * b0 + b1 * b1 + b2 * b2 + 2.0 * (v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
@@ -54,10 +54,12 @@ inline void principal_values(const T v[6], T lam[3]) {
   const T h = 0.5 * det;
   const T r = h < -1.0 ? T{} - 1.0 : (1.0 < h ? T{} + 1.0 : h);
   const T s = r < 0.0 ? -r : r;
-  // 1. The largest root of y^3 - 3 y - 2 s, s in [0, 1].
-  T x = 1.7320608640453818 +
-        s * (0.332823443575205 + s * (-0.09184386626158272 + s * (0.035024377150497804 + s * -0.008070797433344979)));
-  for (int k = 0; k < 2; ++k) x = x - (x * (x * x - 3.0) - 2.0 * s) / (3.0 * (x * x - 1.0));
+  // 1. The largest root of y^3 - 3 y - 2 s, s in [0, 1]: the start (Estrin's scheme), one Newton step.
+  const T s2 = s * s, s4 = s2 * s2;
+  const T e01 = 1.7320508111991297 + 0.33333274228889065 * s, e23 = -0.0962088829033415 + 0.049208593562890236 * s;
+  const T e45 = -0.030214550230533002 + 0.018766660931406574 * s, e67 = -0.009859382080473248 + 0.00352971357400141 * s;
+  T x = (e01 + e23 * s2) + (e45 + e67 * s2) * s4 + -0.0006057083575999261 * (s4 * s4);
+  x = x - (x * (x * x - 3.0) - 2.0 * s) / (3.0 * (x * x - 1.0));
   const T x0 = r < 0.0 ? -x : x;
   // 2. The null vector of M = Y - x0 I: the longest cross product of two of its rows.
   const T m00 = y0 - x0, m11 = y1 - x0, m22 = y2 - x0;

@@ -60,14 +60,18 @@ inline void lane_max_abs(T& a, const T& b) {
   a = a < m ? m : a;
 }
 
-/// r = pw(|d|, e, integral): |d|^e; integer exponents by multiplication.
+/// r = pw(|d|, e, integral): |d|^e; integer exponents by squaring.
 template <class T>
 inline void yld_pw(const T& d, double e, bool integral, T& r) {
   T t;
   lane_abs(d, t);
   if (integral && e >= 0) {
     r = T{} + 1.0;
-    for (int k = static_cast<int>(e); k > 0; --k) r *= t;
+    T b = t;
+    for (int k = static_cast<int>(e); k > 0; k >>= 1) {
+      if (k & 1) r *= b;
+      if (k > 1) b *= b;
+    }
     return;
   }
   T p;
@@ -100,22 +104,11 @@ inline void yld_transform_back(const double c[9], const T G[6], T m[6]) {
 
 /// sym_eigenvalues(v, lam): the eigenvalues, descending (the one template of both).
 template <class T>
-inline void yld_eigenvalues(const T v[6], T lam[3]) {
+__attribute__((always_inline)) inline void yld_eigenvalues(const T v[6], T lam[3]) {
   principal_values(v, lam);
 }
 
-/// g = Exponent::g, g1, g2 of x against y[3].
-template <class T>
-inline void yld_g(const YldParams& P, const T& x, const T y[3], T& g) {
-  T r = {};
-  for (int k = 0; k < 3; ++k) {
-    const T d = x - y[k];
-    T p;
-    yld_pw(d, P.a - 1, P.integral, p);
-    r += d < 0.0 ? -p : p;
-  }
-  g = P.a * r;
-}
+/// g = Exponent::g1, g2 of x against y[3].
 template <class T>
 inline void yld_g1(const YldParams& P, const T& x, const T y[3], T& g) {
   T r = {};
@@ -145,12 +138,10 @@ inline void yld_g2(const YldParams& P, const T& x, const T y[3], T& g) {
 /// spectral_gradient: G = sum_i g(x_i) P_i by divided differences.  The
 /// midpoint derivatives are evaluated only when some lane takes them.
 template <class T>
-inline void yld_spectral_gradient(const YldParams& P, const T X[6], const T x[3], const T y[3], const T& tol,
-                                  T G[6]) {
-  T f1, f2, f3, mid;
-  yld_g(P, x[0], y, f1);
-  yld_g(P, x[1], y, f2);
-  yld_g(P, x[2], y, f3);
+inline void yld_spectral_gradient(const YldParams& P, const T X[6], const T x[3], const T y[3], const T f[3],
+                                  const T& tol, T G[6]) {
+  const T f1 = f[0], f2 = f[1], f3 = f[2];
+  T mid;
   const auto s12 = x[0] - x[1] > tol, s23 = x[1] - x[2] > tol, s13 = x[0] - x[2] > tol;
   T d12 = (f1 - f2) / (x[0] - x[1]), d23 = (f2 - f3) / (x[1] - x[2]);
   if (any_set(~s12)) {
@@ -197,7 +188,7 @@ inline void yld_root(const T& x, double a, T& r) {
 /// Phi; `some`: the lanes where the scalar evaluate() returns true (scale > 0).
 template <class T>
 struct YldEval {
-  T scale, X1[6], X2[6], x[3], y[3], phi;
+  T scale, X1[6], X2[6], x[3], y[3], d[3][3], q[3][3], phi;
   decltype(T{} < T{}) some;
 };
 template <class T>
@@ -207,7 +198,8 @@ inline void yld_evaluate(const YldParams& P, const T sig[6], YldEval<T>& e) {
   e.scale = T{};
   for (const T& v : s) lane_max_abs(e.scale, v);
   e.some = e.scale > 0.0;
-  for (T& v : s) v /= e.scale;
+  const T inv = 1.0 / e.scale;
+  for (T& v : s) v *= inv;
   yld_transform(P.c1, s, e.X1);
   yld_transform(P.c2, s, e.X2);
   yld_eigenvalues(e.X1, e.x);
@@ -215,9 +207,12 @@ inline void yld_evaluate(const YldParams& P, const T sig[6], YldEval<T>& e) {
   e.phi = T{};
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
-      T p;
-      yld_pw(e.x[i] - e.y[j], P.a, P.integral, p);
-      e.phi += p;
+      const T d = e.x[i] - e.y[j];
+      T t;
+      lane_abs(d, t);
+      e.d[i][j] = d;
+      yld_pw(d, P.a - 1, P.integral, e.q[i][j]);
+      e.phi += e.q[i][j] * t;
     }
 }
 
@@ -250,9 +245,18 @@ inline void yld_gradient(const YldParams& P, const T sig[6], T n[6], T& q) {
   lane_max_abs(big, e.y[2]);
   lane_max_abs(big, T{} + 1e-300);
   const T tol = 1e-5 * big;  // kCoincide (yld2004.cpp)
+  T fx[3], fy[3];  // g(x_i) against y, g(y_j) against x (y_j - x_i = -d_ij)
+  for (int i = 0; i < 3; ++i) {
+    T rx = {}, ry = {};
+    for (int k = 0; k < 3; ++k) {
+      rx += e.d[i][k] < 0.0 ? -e.q[i][k] : e.q[i][k];
+      ry += e.d[k][i] > 0.0 ? -e.q[k][i] : e.q[k][i];
+    }
+    fx[i] = P.a * rx, fy[i] = P.a * ry;
+  }
   T G1[6], G2[6], m[6] = {};
-  yld_spectral_gradient(P, e.X1, e.x, e.y, tol, G1);
-  yld_spectral_gradient(P, e.X2, e.y, e.x, tol, G2);
+  yld_spectral_gradient(P, e.X1, e.x, e.y, fx, tol, G1);
+  yld_spectral_gradient(P, e.X2, e.y, e.x, fy, tol, G2);
   yld_transform_back(P.c1, G1, m);
   yld_transform_back(P.c2, G2, m);
   const T mm = (m[0] + m[1] + m[2]) / 3.0;
