@@ -40,16 +40,25 @@
 
 namespace drawbend::material::lanes::DRAWBEND_ISA {
 
-/// The eigenvalues of the symmetric tensor v (Voigt: xx, yy, zz, xy, yz, zx; tensor shears), descending.
+/// The work of principal_values in four stages, each ending at a square root or a division: the pair form
+/// runs each stage for both tensors before the next, so that their latency chains overlap (the same
+/// operations on each tensor in the same order: the same bits as one at a time).
 template <class T>
-__attribute__((always_inline)) inline void principal_values(const T v[6], T lam[3]) {
-  const T m = (v[0] + v[1] + v[2]) / 3.0;
-  const T b0 = v[0] - m, b1 = v[1] - m, b2 = v[2] - m;
-  const T p2 = b0 * b0 + b1 * b1 + b2 * b2 + 2.0 * (v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
-  T p;
-  lane_sqrt(p2 / 6.0, p);
-  const T q = 1.0 / p;  // infinite for B = 0: that lane's NaNs are not selected below
-  const T y0 = b0 * q, y1 = b1 * q, y2 = b2 * q, y3 = v[3] * q, y4 = v[4] * q, y5 = v[5] * q;
+struct PrincipalWork {
+  T m, p2, p, y[6], r, x0, u[3], nu;
+};
+template <class T>
+__attribute__((always_inline)) inline void principal_stage1(const T v[6], PrincipalWork<T>& k) {
+  k.m = (v[0] + v[1] + v[2]) * (1.0 / 3.0);  // products, not divisions: the chain is latency-bound
+  const T b0 = v[0] - k.m, b1 = v[1] - k.m, b2 = v[2] - k.m;
+  k.p2 = b0 * b0 + b1 * b1 + b2 * b2 + 2.0 * (v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
+  lane_sqrt(k.p2 * (1.0 / 6.0), k.p);
+  const T q = 1.0 / k.p;  // infinite for B = 0: that lane's NaNs are not selected below
+  k.y[0] = b0 * q, k.y[1] = b1 * q, k.y[2] = b2 * q, k.y[3] = v[3] * q, k.y[4] = v[4] * q, k.y[5] = v[5] * q;
+}
+template <class T>
+__attribute__((always_inline)) inline void principal_stage2(PrincipalWork<T>& k) {
+  const T y0 = k.y[0], y1 = k.y[1], y2 = k.y[2], y3 = k.y[3], y4 = k.y[4], y5 = k.y[5];
   const T det = y0 * (y1 * y2 - y4 * y4) - y3 * (y3 * y2 - y4 * y5) + y5 * (y3 * y4 - y1 * y5);
   const T h = 0.5 * det;
   const T r = h < -1.0 ? T{} - 1.0 : (1.0 < h ? T{} + 1.0 : h);
@@ -60,31 +69,65 @@ __attribute__((always_inline)) inline void principal_values(const T v[6], T lam[
   const T e45 = -0.030214550230533002 + 0.018766660931406574 * s, e67 = -0.009859382080473248 + 0.00352971357400141 * s;
   T x = (e01 + e23 * s2) + (e45 + e67 * s2) * s4 + -0.0006057083575999261 * (s4 * s4);
   x = x - (x * (x * x - 3.0) - 2.0 * s) / (3.0 * (x * x - 1.0));
-  const T x0 = r < 0.0 ? -x : x;
+  k.r = r;
+  k.x0 = r < 0.0 ? -x : x;
+}
+template <class T>
+__attribute__((always_inline)) inline void principal_stage3(PrincipalWork<T>& k) {
   // 2. The null vector of M = Y - x0 I: the longest cross product of two of its rows.
-  const T m00 = y0 - x0, m11 = y1 - x0, m22 = y2 - x0;
+  const T y3 = k.y[3], y4 = k.y[4], y5 = k.y[5];
+  const T m00 = k.y[0] - k.x0, m11 = k.y[1] - k.x0, m22 = k.y[2] - k.x0;
   const T ca[3] = {y3 * y4 - y5 * m11, y5 * y3 - m00 * y4, m00 * m11 - y3 * y3};  // row 0 x row 1
   const T cb[3] = {m11 * m22 - y4 * y4, y4 * y5 - y3 * m22, y3 * y4 - m11 * y5};  // row 1 x row 2
   const T cc[3] = {y4 * y5 - m22 * y3, m22 * m00 - y5 * y5, y5 * y3 - y4 * m00};  // row 2 x row 0
   const T na = ca[0] * ca[0] + ca[1] * ca[1] + ca[2] * ca[2];
   const T nb = cb[0] * cb[0] + cb[1] * cb[1] + cb[2] * cb[2];
   const T nc = cc[0] * cc[0] + cc[1] * cc[1] + cc[2] * cc[2];
-  T u[3], nu = nb > na ? nb : na;
-  for (int i = 0; i < 3; ++i) u[i] = nb > na ? cb[i] : ca[i];
-  for (int i = 0; i < 3; ++i) u[i] = nc > nu ? cc[i] : u[i];
-  nu = nc > nu ? nc : nu;
-  const T w = 1.5 * x0 / nu, hx = 0.5 * x0;
-  const T d0 = y0 + hx - w * u[0] * u[0], d1 = y1 + hx - w * u[1] * u[1], d2 = y2 + hx - w * u[2] * u[2];
-  const T d3 = y3 - w * u[0] * u[1], d4 = y4 - w * u[1] * u[2], d5 = y5 - w * u[2] * u[0];
+  T nu = nb > na ? nb : na;
+  for (int i = 0; i < 3; ++i) k.u[i] = nb > na ? cb[i] : ca[i];
+  for (int i = 0; i < 3; ++i) k.u[i] = nc > nu ? cc[i] : k.u[i];
+  k.nu = nc > nu ? nc : nu;
+}
+template <class T>
+__attribute__((always_inline)) inline void principal_stage4(const PrincipalWork<T>& k, T lam[3]) {
+  const T* y = k.y;
+  const T* u = k.u;
+  const T x0 = k.x0, w = 1.5 * x0 / k.nu, hx = 0.5 * x0;
+  const T d0 = y[0] + hx - w * u[0] * u[0], d1 = y[1] + hx - w * u[1] * u[1], d2 = y[2] + hx - w * u[2] * u[2];
+  const T d3 = y[3] - w * u[0] * u[1], d4 = y[4] - w * u[1] * u[2], d5 = y[5] - w * u[2] * u[0];
   const T dd = d0 * d0 + d1 * d1 + d2 * d2 + 2.0 * (d3 * d3 + d4 * d4 + d5 * d5);
   T half;
   lane_sqrt(0.5 * dd, half);
   const T hi = -hx + half, lo = -hx - half;
   // 3. Descending: x0 first for r >= 0, last for r < 0.
+  const T m = k.m, p = k.p, r = k.r;
   const T l0 = m + p * (r < 0.0 ? hi : x0), l1 = m + p * (r < 0.0 ? lo : hi), l2 = m + p * (r < 0.0 ? x0 : lo);
-  lam[0] = p2 > 0.0 ? l0 : m;
-  lam[1] = p2 > 0.0 ? l1 : m;
-  lam[2] = p2 > 0.0 ? l2 : m;
+  lam[0] = k.p2 > 0.0 ? l0 : m;
+  lam[1] = k.p2 > 0.0 ? l1 : m;
+  lam[2] = k.p2 > 0.0 ? l2 : m;
+}
+
+/// The eigenvalues of the symmetric tensor v (Voigt: xx, yy, zz, xy, yz, zx; tensor shears), descending.
+template <class T>
+__attribute__((always_inline)) inline void principal_values(const T v[6], T lam[3]) {
+  PrincipalWork<T> k;
+  principal_stage1(v, k);
+  principal_stage2(k);
+  principal_stage3(k);
+  principal_stage4(k, lam);
+}
+/// The same for two tensors (a, b), interleaved stage by stage: the bits of two calls of principal_values.
+template <class T>
+__attribute__((always_inline)) inline void principal_values_pair(const T va[6], T la[3], const T vb[6], T lb[3]) {
+  PrincipalWork<T> a, b;
+  principal_stage1(va, a);
+  principal_stage1(vb, b);
+  principal_stage2(a);
+  principal_stage2(b);
+  principal_stage3(a);
+  principal_stage3(b);
+  principal_stage4(a, la);
+  principal_stage4(b, lb);
 }
 
 }  // namespace drawbend::material::lanes::DRAWBEND_ISA
