@@ -14,8 +14,11 @@
 //  - pow, for an exponent that is not an integer, is the same libm call,
 //    lane by lane (as lane_exp, core/lanes.hpp); the principal values need
 //    none (no trigonometry).
-// Why copies and not one template for both: hill48_lanes.hpp says why.  A
-// change to either side must be made to both: tests/unit/test_yld2004_lanes.cpp
+// Why copies and not one template for both: hill48_lanes.hpp says why (the
+// principal values are the exception: principal_values.hpp is instantiated in
+// each instruction set's namespace and, for the scalar code, in the baseline's;
+// the two problems of an evaluation run interleaved, principal_values_pair).
+// A change to either side must be made to both: tests/unit/test_yld2004_lanes.cpp
 // fails on any difference in the bits.
 //
 // Vectors are returned through references, as lane_sqrt's (core/lanes.hpp: a
