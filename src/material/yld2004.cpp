@@ -15,7 +15,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kCoincide = 1e-5;  // eigenvalues closer than this (relative) use the derivative
 
-// t^e for t >= 0; integer exponents by squaring (a = 8: t^2, t^4, t^8, not pow).
+// t^e for t >= 0; integer exponents by squaring, not pow (a = 8 takes t^7 = (t t^2)(t^2 t^2): four products).
 inline double pw(double t, double e, bool integral) {
   if (integral && e >= 0) {
     double r = 1.0, b = t;
