@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/csv.hpp"
+#include "material/principal_values.hpp"
 #include "material/yield_points.hpp"
 
 namespace drawbend::material {
@@ -14,11 +15,14 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kCoincide = 1e-5;  // eigenvalues closer than this (relative) use the derivative
 
-// t^e for t >= 0; integer exponents by multiplication (a = 8: 7 products, not pow).
+// t^e for t >= 0; integer exponents by squaring, not pow (a = 8 takes t^7 = (t t^2)(t^2 t^2): four products).
 inline double pw(double t, double e, bool integral) {
   if (integral && e >= 0) {
-    double r = 1.0;
-    for (int k = static_cast<int>(e); k > 0; --k) r *= t;
+    double r = 1.0, b = t;
+    for (int k = static_cast<int>(e); k > 0; k >>= 1) {
+      if (k & 1) r *= b;
+      if (k > 1) b *= b;
+    }
     return r;
   }
   if (t == 0.0) return e > 0 ? 0.0 : (e == 0 ? 1.0 : 0.0);
@@ -47,16 +51,8 @@ void transform_back(const std::array<double, 9>& c, const double G[6], double m[
 struct Exponent {
   double a;
   bool integral;
-  // g(x) = a sum_k sgn(x - y_k) |x - y_k|^(a-1) (d/dx of sum_k |x - y_k|^a), and its first two derivatives.
-  double g(double x, const double y[3]) const {
-    double r = 0;
-    for (int k = 0; k < 3; ++k) {
-      const double d = x - y[k];
-      const double p = pw(std::abs(d), a - 1, integral);
-      r += d < 0 ? -p : p;
-    }
-    return a * r;
-  }
+  // g(x) = a sum_k sgn(x - y_k) |x - y_k|^(a-1) (d/dx of sum_k |x - y_k|^a) is formed from evaluate()'s
+  // powers (gradient() below); its first two derivatives, at the midpoints of coincident roots:
   double g1(double x, const double y[3]) const {
     double r = 0;
     for (int k = 0; k < 3; ++k) r += pw(std::abs(x - y[k]), a - 2, integral);
@@ -75,10 +71,10 @@ struct Exponent {
   }
 };
 
-// G = sum_i g(x_i) P_i of the symmetric X (eigenvalues x, descending) by divided differences.
-void spectral_gradient(const Exponent& E, const double X[6], const double x[3], const double y[3], double tol,
-                       double G[6]) {
-  const double f1 = E.g(x[0], y), f2 = E.g(x[1], y), f3 = E.g(x[2], y);
+// G = sum_i g(x_i) P_i of the symmetric X (eigenvalues x, descending) by divided differences; f = g(x_i).
+void spectral_gradient(const Exponent& E, const double X[6], const double x[3], const double y[3], const double f[3],
+                       double tol, double G[6]) {
+  const double f1 = f[0], f2 = f[1], f3 = f[2];
   const double d12 = x[0] - x[1] > tol ? (f1 - f2) / (x[0] - x[1]) : E.g1(0.5 * (x[0] + x[1]), y);
   const double d23 = x[1] - x[2] > tol ? (f2 - f3) / (x[1] - x[2]) : E.g1(0.5 * (x[1] + x[2]), y);
   const double d123 = x[0] - x[2] > tol ? (d12 - d23) / (x[0] - x[2]) : 0.5 * E.g2(x[1], y);
@@ -101,9 +97,10 @@ inline double root_a(double x, double a) {
   return std::pow(x, 1.0 / a);
 }
 
-// The scaled deviator's transforms, their principal values and Phi (of s / scale).
+// The scaled deviator's transforms, their principal values and Phi (of s / scale); d_ij = x_i - y_j and
+// q_ij = |d_ij|^(a-1), shared by Phi (sum q_ij |d_ij|) and the gradient (g's terms +-q_ij).
 struct Eval {
-  double scale = 0, X1[6], X2[6], x[3], y[3], phi = 0;
+  double scale = 0, X1[6], X2[6], x[3], y[3], d[3][3], q[3][3], phi = 0;
   bool integral = false;
 };
 bool evaluate(const Yld2004& Y, const double sig[6], Eval& e) {
@@ -111,40 +108,25 @@ bool evaluate(const Yld2004& Y, const double sig[6], Eval& e) {
   double s[6] = {sig[0] - mean, sig[1] - mean, sig[2] - mean, sig[3], sig[4], sig[5]};
   for (double v : s) e.scale = std::max(e.scale, std::abs(v));
   if (!(e.scale > 0)) return false;
-  for (double& v : s) v /= e.scale;
+  const double inv = 1.0 / e.scale;
+  for (double& v : s) v *= inv;
   transform_dev(Y.c1, s, e.X1);
   transform_dev(Y.c2, s, e.X2);
   sym_eigenvalues(e.X1, e.x);
   sym_eigenvalues(e.X2, e.y);
   e.integral = Y.a == std::floor(Y.a) && Y.a <= 64;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) e.phi += pw(std::abs(e.x[i] - e.y[j]), Y.a, e.integral);
+    for (int j = 0; j < 3; ++j) {
+      const double d = e.x[i] - e.y[j], t = std::abs(d);
+      e.d[i][j] = d;
+      e.q[i][j] = pw(t, Y.a - 1, e.integral);
+      e.phi += e.q[i][j] * t;
+    }
   return true;
 }
 }  // namespace
 
-void sym_eigenvalues(const double v[6], double lam[3]) {
-  const double m = (v[0] + v[1] + v[2]) / 3.0;
-  const double b0 = v[0] - m, b1 = v[1] - m, b2 = v[2] - m;
-  const double p2 = b0 * b0 + b1 * b1 + b2 * b2 + 2.0 * (v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
-  if (!(p2 > 0.0)) {
-    lam[0] = lam[1] = lam[2] = m;
-    return;
-  }
-  const double p = std::sqrt(p2 / 6.0);
-  const double c0 = b0 / p, c1 = b1 / p, c2 = b2 / p, e3 = v[3] / p, e4 = v[4] / p, e5 = v[5] / p;
-  // det(B / p) / 2 = cos(3 phi), in [-1, 1] up to round-off.
-  const double det = c0 * (c1 * c2 - e4 * e4) - e3 * (e3 * c2 - e4 * e5) + e5 * (e3 * e4 - c1 * e5);
-  const double r = std::clamp(0.5 * det, -1.0, 1.0);
-  const double phi = std::acos(r) / 3.0;  // in [0, pi/3]
-  // cos(phi -+ 2 pi / 3) = -cos(phi) / 2 +- (sqrt(3) / 2) sin(phi): one cosine and one sine.
-  const double cp = std::cos(phi), sp = 0.86602540378443864676 * std::sin(phi);
-  double l[3] = {m + 2.0 * p * cp, m + 2.0 * p * (-0.5 * cp + sp), m + 2.0 * p * (-0.5 * cp - sp)};
-  if (l[1] > l[0]) std::swap(l[0], l[1]);
-  if (l[2] > l[1]) std::swap(l[1], l[2]);
-  if (l[1] > l[0]) std::swap(l[0], l[1]);
-  lam[0] = l[0], lam[1] = l[1], lam[2] = l[2];
-}
+void sym_eigenvalues(const double v[6], double lam[3]) { lanes::DRAWBEND_ISA::principal_values(v, lam); }
 
 Yld2004 Yld2004::isotropic(double a) {
   Yld2004 y;
@@ -171,9 +153,19 @@ double Yld2004::gradient(const double sig[6], double n[6]) const {
   const Exponent E{a, e.integral};
   const double tol =
       kCoincide * std::max({std::abs(e.x[0]), std::abs(e.x[2]), std::abs(e.y[0]), std::abs(e.y[2]), 1e-300});
+  // g(x_i) against y and g(y_j) against x (y_j - x_i = -d_ij), in the order of the sums over k.
+  double fx[3], fy[3];
+  for (int i = 0; i < 3; ++i) {
+    double rx = 0, ry = 0;
+    for (int k = 0; k < 3; ++k) {
+      rx += e.d[i][k] < 0 ? -e.q[i][k] : e.q[i][k];
+      ry += e.d[k][i] > 0 ? -e.q[k][i] : e.q[k][i];
+    }
+    fx[i] = a * rx, fy[i] = a * ry;
+  }
   double G1[6], G2[6], m[6] = {0, 0, 0, 0, 0, 0};
-  spectral_gradient(E, e.X1, e.x, e.y, tol, G1);  // d Phi / d X'
-  spectral_gradient(E, e.X2, e.y, e.x, tol, G2);  // d Phi / d X'' (the same form with the roles swapped)
+  spectral_gradient(E, e.X1, e.x, e.y, fx, tol, G1);  // d Phi / d X'
+  spectral_gradient(E, e.X2, e.y, e.x, fy, tol, G2);  // d Phi / d X'' (the same form with the roles swapped)
   transform_back(c1, G1, m);
   transform_back(c2, G2, m);
   const double mm = (m[0] + m[1] + m[2]) / 3.0;

@@ -15,8 +15,10 @@
 // Hill'48 quadratic: sigma_bar^2 = (3/2) |dev S'|^2.  a = 8 for FCC metals (Barlat
 // et al. 2005); any a >= 2 is accepted.
 //
-// Principal values: closed-form (trigonometric) roots of the characteristic
-// cubic, after removing the mean and scaling; a triple root returns the mean.
+// Principal values: material/principal_values.hpp (no trigonometry: the
+// isolated root of the scaled characteristic cubic by two Newton steps, the
+// other two from the tensor itself, exact to round-off also where two
+// coincide); a triple root returns the mean.
 // Gradient d sigma_bar / d sigma without eigenvectors: for a symmetric X with
 // eigenvalues x1 >= x2 >= x3 and a scalar g applied to them, sum_i g(x_i) P_i
 // (P_i the eigenprojectors) equals the interpolating polynomial

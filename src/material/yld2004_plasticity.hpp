@@ -37,8 +37,8 @@
 //
 // Lanes: material/lanes/yld2004_lanes.hpp (bind_lanes below) repeats update()
 // and tangent_ratio() on the element kernel's vector lanes with the same
-// arithmetic in the same order (the principal values' acos, cos and sin are
-// the same libm calls, lane by lane), so that each lane gives this file's bits
+// arithmetic in the same order (the principal values are one template for
+// both, material/principal_values.hpp), so that each lane gives this file's bits
 // for any thread count and instruction set (tests/unit/test_yld2004_lanes.cpp).
 // A lane whose first return (the whole increment) does not converge is handed
 // to update() here, which repeats it and goes on to the sub-increments.  The

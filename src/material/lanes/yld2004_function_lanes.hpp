@@ -1,7 +1,8 @@
 #pragma once
 // The Yld2004-18p yield function (material/yld2004.cpp) on W elements side by
 // side, for its plasticity model's lane twin (material/lanes/yld2004_lanes.hpp):
-// the transformed deviators, their principal values (sym_eigenvalues), Phi,
+// the transformed deviators, their principal values (sym_eigenvalues: the one
+// template both use, material/principal_values.hpp), Phi,
 // sigma_bar and its gradient by divided differences (Yld2004::gradient,
 // equivalent).  Each function is the scalar one named above it with the same
 // arithmetic in the same order, so every lane has its bits:
@@ -10,10 +11,14 @@
 //    taken never leaks), coincident eigenvalues included (the derivative at
 //    the midpoint, lane by lane where the scalar code takes it);
 //  - std::max and std::clamp are their comparisons, in their order;
-//  - acos, cos, sin (and pow, for an exponent that is not an integer) are the
-//    same libm calls, lane by lane (as lane_exp, core/lanes.hpp).
-// Why copies and not one template for both: hill48_lanes.hpp says why.  A
-// change to either side must be made to both: tests/unit/test_yld2004_lanes.cpp
+//  - pow, for an exponent that is not an integer, is the same libm call,
+//    lane by lane (as lane_exp, core/lanes.hpp); the principal values need
+//    none (no trigonometry).
+// Why copies and not one template for both: hill48_lanes.hpp says why (the
+// principal values are the exception: principal_values.hpp is instantiated in
+// each instruction set's namespace and, for the scalar code, in the baseline's;
+// the two problems of an evaluation run interleaved, principal_values_pair).
+// A change to either side must be made to both: tests/unit/test_yld2004_lanes.cpp
 // fails on any difference in the bits.
 //
 // Vectors are returned through references, as lane_sqrt's (core/lanes.hpp: a
@@ -26,6 +31,7 @@
 #include <cstdint>
 
 #include "core/lanes.hpp"
+#include "material/principal_values.hpp"
 #include "material/yld2004_plasticity.hpp"
 
 #ifndef DRAWBEND_ISA
@@ -43,7 +49,7 @@ inline void lane_abs(const T& v, T& r) {
   r = (T)((I)v & ~(I{} + INT64_MIN));
 }
 
-/// r = f(v) lane by lane, f a libm function of one double (acos, cos, sin).
+/// r = f(v) lane by lane, f a libm function of one double (pow).
 template <class T, class F>
 inline void lane_call(const T& v, T& r, F&& f) {
   for (int l = 0; l < static_cast<int>(sizeof(T) / sizeof(double)); ++l) r[l] = f(v[l]);
@@ -57,14 +63,23 @@ inline void lane_max_abs(T& a, const T& b) {
   a = a < m ? m : a;
 }
 
-/// r = pw(|d|, e, integral): |d|^e; integer exponents by multiplication.
+/// r = pw(|d|, e, integral): |d|^e; integer exponents by squaring.
 template <class T>
 inline void yld_pw(const T& d, double e, bool integral, T& r) {
   T t;
   lane_abs(d, t);
+  if (integral && e == 7.0) {  // a = 8's |d|^7: the loop below's products, unrolled (the same bits)
+    const T t2 = t * t;
+    r = (t * t2) * (t2 * t2);
+    return;
+  }
   if (integral && e >= 0) {
     r = T{} + 1.0;
-    for (int k = static_cast<int>(e); k > 0; --k) r *= t;
+    T b = t;
+    for (int k = static_cast<int>(e); k > 0; k >>= 1) {
+      if (k & 1) r *= b;
+      if (k > 1) b *= b;
+    }
     return;
   }
   T p;
@@ -95,49 +110,7 @@ inline void yld_transform_back(const double c[9], const T G[6], T m[6]) {
   m[5] += c[7] * G[5];
 }
 
-/// sym_eigenvalues(v, lam): the closed-form eigenvalues, descending.
-template <class T>
-inline void yld_eigenvalues(const T v[6], T lam[3]) {
-  const T m = (v[0] + v[1] + v[2]) / 3.0;
-  const T b0 = v[0] - m, b1 = v[1] - m, b2 = v[2] - m;
-  const T p2 = b0 * b0 + b1 * b1 + b2 * b2 + 2.0 * (v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
-  T p;
-  lane_sqrt(p2 / 6.0, p);
-  const T c0 = b0 / p, c1 = b1 / p, c2 = b2 / p, e3 = v[3] / p, e4 = v[4] / p, e5 = v[5] / p;
-  const T det = c0 * (c1 * c2 - e4 * e4) - e3 * (e3 * c2 - e4 * e5) + e5 * (e3 * e4 - c1 * e5);
-  const T h = 0.5 * det;
-  const T r = h < -1.0 ? T{} - 1.0 : (1.0 < h ? T{} + 1.0 : h);  // std::clamp(h, -1.0, 1.0)
-  T ac, cp, sn;
-  lane_call(r, ac, [](double x) { return std::acos(x); });
-  const T phi = ac / 3.0;
-  lane_call(phi, cp, [](double x) { return std::cos(x); });
-  lane_call(phi, sn, [](double x) { return std::sin(x); });
-  const T sp = 0.86602540378443864676 * sn;
-  T l0 = m + 2.0 * p * cp, l1 = m + 2.0 * p * (-0.5 * cp + sp), l2 = m + 2.0 * p * (-0.5 * cp - sp);
-  auto order = [](T& hi, T& lo) {  // if (lo > hi) std::swap(hi, lo)
-    const auto s = lo > hi;
-    const T a = s ? lo : hi, b = s ? hi : lo;
-    hi = a, lo = b;
-  };
-  order(l0, l1);
-  order(l1, l2);
-  order(l0, l1);
-  const auto flat = ~(p2 > 0.0);  // !(p2 > 0): the triple root m
-  lam[0] = flat ? m : l0, lam[1] = flat ? m : l1, lam[2] = flat ? m : l2;
-}
-
-/// g = Exponent::g, g1, g2 of x against y[3].
-template <class T>
-inline void yld_g(const YldParams& P, const T& x, const T y[3], T& g) {
-  T r = {};
-  for (int k = 0; k < 3; ++k) {
-    const T d = x - y[k];
-    T p;
-    yld_pw(d, P.a - 1, P.integral, p);
-    r += d < 0.0 ? -p : p;
-  }
-  g = P.a * r;
-}
+/// g = Exponent::g1, g2 of x against y[3].
 template <class T>
 inline void yld_g1(const YldParams& P, const T& x, const T y[3], T& g) {
   T r = {};
@@ -167,12 +140,10 @@ inline void yld_g2(const YldParams& P, const T& x, const T y[3], T& g) {
 /// spectral_gradient: G = sum_i g(x_i) P_i by divided differences.  The
 /// midpoint derivatives are evaluated only when some lane takes them.
 template <class T>
-inline void yld_spectral_gradient(const YldParams& P, const T X[6], const T x[3], const T y[3], const T& tol,
-                                  T G[6]) {
-  T f1, f2, f3, mid;
-  yld_g(P, x[0], y, f1);
-  yld_g(P, x[1], y, f2);
-  yld_g(P, x[2], y, f3);
+inline void yld_spectral_gradient(const YldParams& P, const T X[6], const T x[3], const T y[3], const T f[3],
+                                  const T& tol, T G[6]) {
+  const T f1 = f[0], f2 = f[1], f3 = f[2];
+  T mid;
   const auto s12 = x[0] - x[1] > tol, s23 = x[1] - x[2] > tol, s13 = x[0] - x[2] > tol;
   T d12 = (f1 - f2) / (x[0] - x[1]), d23 = (f2 - f3) / (x[1] - x[2]);
   if (any_set(~s12)) {
@@ -219,7 +190,7 @@ inline void yld_root(const T& x, double a, T& r) {
 /// Phi; `some`: the lanes where the scalar evaluate() returns true (scale > 0).
 template <class T>
 struct YldEval {
-  T scale, X1[6], X2[6], x[3], y[3], phi;
+  T scale, X1[6], X2[6], x[3], y[3], d[3][3], q[3][3], phi;
   decltype(T{} < T{}) some;
 };
 template <class T>
@@ -229,17 +200,20 @@ inline void yld_evaluate(const YldParams& P, const T sig[6], YldEval<T>& e) {
   e.scale = T{};
   for (const T& v : s) lane_max_abs(e.scale, v);
   e.some = e.scale > 0.0;
-  for (T& v : s) v /= e.scale;
+  const T inv = 1.0 / e.scale;
+  for (T& v : s) v *= inv;
   yld_transform(P.c1, s, e.X1);
   yld_transform(P.c2, s, e.X2);
-  yld_eigenvalues(e.X1, e.x);
-  yld_eigenvalues(e.X2, e.y);
+  principal_values_pair(e.X1, e.x, e.X2, e.y);  // sym_eigenvalues of each (material/principal_values.hpp)
   e.phi = T{};
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
-      T p;
-      yld_pw(e.x[i] - e.y[j], P.a, P.integral, p);
-      e.phi += p;
+      const T d = e.x[i] - e.y[j];
+      T t;
+      lane_abs(d, t);
+      e.d[i][j] = d;
+      yld_pw(d, P.a - 1, P.integral, e.q[i][j]);
+      e.phi += e.q[i][j] * t;
     }
 }
 
@@ -272,9 +246,18 @@ inline void yld_gradient(const YldParams& P, const T sig[6], T n[6], T& q) {
   lane_max_abs(big, e.y[2]);
   lane_max_abs(big, T{} + 1e-300);
   const T tol = 1e-5 * big;  // kCoincide (yld2004.cpp)
+  T fx[3], fy[3];  // g(x_i) against y, g(y_j) against x (y_j - x_i = -d_ij)
+  for (int i = 0; i < 3; ++i) {
+    T rx = {}, ry = {};
+    for (int k = 0; k < 3; ++k) {
+      rx += e.d[i][k] < 0.0 ? -e.q[i][k] : e.q[i][k];
+      ry += e.d[k][i] > 0.0 ? -e.q[k][i] : e.q[k][i];
+    }
+    fx[i] = P.a * rx, fy[i] = P.a * ry;
+  }
   T G1[6], G2[6], m[6] = {};
-  yld_spectral_gradient(P, e.X1, e.x, e.y, tol, G1);
-  yld_spectral_gradient(P, e.X2, e.y, e.x, tol, G2);
+  yld_spectral_gradient(P, e.X1, e.x, e.y, fx, tol, G1);
+  yld_spectral_gradient(P, e.X2, e.y, e.x, fy, tol, G2);
   yld_transform_back(P.c1, G1, m);
   yld_transform_back(P.c2, G2, m);
   const T mm = (m[0] + m[1] + m[2]) / 3.0;
