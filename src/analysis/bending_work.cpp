@@ -25,10 +25,12 @@ class Section {
   }
   /// The layers' heights and areas for the section's current thickness.
   void set_thickness(double t) {
+    t_ = t;
     z_.resize(n_);
     for (int i = 0; i < n_; ++i) z_[i] = ((i + 0.5) / n_ - 0.5) * t;
     dA_ = width_ * t / n_;
   }
+  double thickness() const { return t_; }  ///< the section's current thickness [mm]
   double R(double p) const { return m_.flow(p) - m_.x_sat_MPa * (1 - std::exp(-m_.gamma * p)); }
   double dR(double p) const { return m_.dflow(p) - m_.x_sat_MPa * m_.gamma * std::exp(-m_.gamma * p); }
 
@@ -90,7 +92,7 @@ class Section {
  private:
   const BendMaterial& m_;
   int n_;
-  double modulus_ = 0, ec_ = 0, dA_ = 0, width_ = 0;
+  double modulus_ = 0, ec_ = 0, dA_ = 0, width_ = 0, t_ = 0;
   std::vector<double> z_;
 };
 
@@ -118,7 +120,7 @@ BendResult bend_unbend(const BendCase& bc, const BendMaterial& m) {
   em += dm;
   std::swap(a, b);
   thin(em);
-  const double kappa = 1.0 / (bc.pin_diameter_mm / 2 + (bc.thinning ? bc.thickness_mm * std::exp(-em) : bc.thickness_mm) / 2);
+  const double kappa = 1.0 / (bc.pin_diameter_mm / 2 + sec.thickness() / 2);
   double work = 0;
   for (const double dk : {kappa / bc.steps, -kappa / bc.steps})
     for (int k = 0; k < bc.steps; ++k) {
