@@ -235,42 +235,32 @@ void CandidateScreen::bounded_max(const std::vector<int>* lp, double* zmax) {
   const double* uw2 = bws >= 0 ? probes[bprobes[bws].j].uw2.data() : nullptr;
   const double* wl1 = bwl >= 0 ? probes[bprobes[bwl].j].urw.data() : nullptr;
   const double* wl2 = bwl >= 0 ? probes[bprobes[bwl].j].uw2.data() : nullptr;
-  // The per-level sums of a test in two copies, even and odd rows (summed at
-  // the test's end): a run of rows of one level (a variable that moves little
-  // within a test) added into one memory cell waited on each store in turn.
-  double wb[L] = {}, wa[L] = {}, A2[2][kMaxLevels * L], AW2[2][2 * kMaxLevels * L];
-  double* A = A2[0];
-  double* AW = AW2[0];
+  double wb[L] = {}, wa[L] = {}, A[kMaxLevels * L], AW[2 * kMaxLevels * L];
   for (size_t gi = 0; gi < groups.size(); ++gi) {
     const size_t u0 = static_cast<size_t>(gfirst[gi]), u1 = u0 + static_cast<size_t>(gsize[gi]);
-    std::fill(A2[0], A2[0] + nlev * L, 0.0), std::fill(A2[1], A2[1] + nlev * L, 0.0);
-    if (wl2) std::fill(AW2[0], AW2[0] + 2 * nlev * L, 0.0), std::fill(AW2[1], AW2[1] + 2 * nlev * L, 0.0);
+    std::fill(A, A + nlev * L, 0.0);
+    if (wl2) std::fill(AW, AW + 2 * nlev * L, 0.0);
     double x1[L] = {}, x2[L] = {};
     for (size_t u = u0; u < u1; ++u) {
       const double r = r0[u];
-      double* Ac = A2[(u - u0) & 1];
-      double* AWc = AW2[(u - u0) & 1];
       // lane j's value of unit u: the unit its permutation puts there
       const int v[L] = {p0[u], p1[u], p2[u], p3[u]};
       double x[L];
       int lv[L];
       for (int j = 0; j < L; ++j) x[j] = xz[v[j]], lv[j] = xl[v[j]];
-      for (int j = 0; j < L; ++j) Ac[lv[j] * L + j] += r, x1[j] += x[j] * r;
+      for (int j = 0; j < L; ++j) A[lv[j] * L + j] += r, x1[j] += x[j] * r;
       if (quad)
         for (int j = 0; j < L; ++j) x2[j] += x[j] * x[j] * r;
       if (wl2) {  // per level: the wlevels probe's sums of urw and uw2
         const double w1 = wl1[u], w2 = wl2[u];
         for (int j = 0; j < L; ++j) {
-          double* a = AWc + static_cast<size_t>(lv[j]) * 2 * L + j;
+          double* a = AW + static_cast<size_t>(lv[j]) * 2 * L + j;
           a[0] += w1, a[L] += w2;
         }
       }
       if (urw)
         for (int j = 0; j < L; ++j) wb[j] += x[j] * urw[u], wa[j] += x[j] * x[j] * uw2[u];
     }
-    for (int k = 0; k < nlev * L; ++k) A[k] += A2[1][k];
-    if (wl2)
-      for (int k = 0; k < 2 * nlev * L; ++k) AW[k] += AW2[1][k];
     for (auto& b : bprobes) {
       const ProbeDef& p = probes[b.j];
       const size_t s = static_cast<size_t>(b.gstratum[gi]);
