@@ -39,7 +39,7 @@ bool reads_hold(const Eigen::VectorXd& th, const Eigen::VectorXd& r, const RowRe
 }  // namespace
 
 double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::MatrixXd& J, bool& converged,
-                           const RowResidualFn& row, const RowReads* reads, const RowPairResidualFn& row2) {
+                           const RowResidualFn& row, const RowReads* reads) {
   const int p = static_cast<int>(th.size());
   const Eigen::VectorXd th_start = th;
   Eigen::VectorXd r = resid(th);
@@ -72,17 +72,6 @@ double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::
   // since (the pattern is within the structure, and both are within what the
   // first Jacobian wrote or zeroed), so each later Jacobian writes its rows only.
   bool zeroed = false;
-  // Column j of J on the rows ks, in pairs when row2 is given (the same values).
-  auto column = [&](const Eigen::VectorXd& t2, const std::vector<int>& ks, int j, double h) {
-    size_t q = 0;
-    if (row2)
-      for (; q + 1 < ks.size(); q += 2) {
-        double v1, v2;
-        row2(t2, ks[q], ks[q + 1], v1, v2);
-        J(ks[q], j) = (r[ks[q]] - v1) / h, J(ks[q + 1], j) = (r[ks[q + 1]] - v2) / h;
-      }
-    for (; q < ks.size(); ++q) J(ks[q], j) = (r[ks[q]] - row(t2, ks[q])) / h;
-  };
   auto jacobian = [&]() {
     long long evals = 0;
     if (!zeroed && (use_structure || !support.empty())) J.setZero();
@@ -92,13 +81,13 @@ double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::
       const double h = 1e-7 * std::max(1.0, std::abs(th[j]));
       t2[j] += h;
       if (support.empty() && use_structure) {  // the dense column, on the rows that may read theta_j
-        column(t2, structure[j], j, h);
+        for (int k : structure[j]) J(k, j) = (r[k] - row(t2, k)) / h;
         evals += static_cast<long long>(structure[j].size());
       } else if (support.empty()) {
         J.col(j) = (r - resid(t2)) / h;  // d(prediction)/d(theta)
         evals += n;
       } else {
-        column(t2, support[j], j, h);
+        for (int k : support[j]) J(k, j) = (r[k] - row(t2, k)) / h;
         evals += static_cast<long long>(support[j].size());
       }
     }

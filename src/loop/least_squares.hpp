@@ -39,11 +39,6 @@ using ResidualFn = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
 
 using RowResidualFn = std::function<double(const Eigen::VectorXd&, int)>;
 
-/// Two rows' residuals at once (v1 of row k1, v2 of row k2), each bit for bit
-/// the RowResidualFn's: the Jacobian's columns are evaluated in pairs of rows
-/// when it is given, so that the model can interleave two rows' work.
-using RowPairResidualFn = std::function<void(const Eigen::VectorXd&, int, int, double&, double&)>;
-
 /// Per row of the residual, the columns of theta it may read (ascending or not;
 /// a superset), rows appended in order.  One flat list for all rows: a vector
 /// per row was an allocation per row of every fit (and the frees' consolidation
@@ -73,8 +68,7 @@ class RowReads {
 };
 
 double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::MatrixXd& J, bool& converged,
-                           const RowResidualFn& row = nullptr, const RowReads* reads = nullptr,
-                           const RowPairResidualFn& row2 = nullptr);
+                           const RowResidualFn& row = nullptr, const RowReads* reads = nullptr);
 
 /// Row evaluations made by levenberg_marquardt's Jacobians since the program
 /// started (a counter for the complexity test of issue 50, not a timing).

@@ -16,7 +16,6 @@ namespace drawbend::loop {
 using detail::Layout;
 using detail::layout;
 using detail::predict_row;
-using detail::predict_rows2;
 
 bool ModelSpec::has(EffectKind k) const {
   for (const auto& e : effects)
@@ -350,17 +349,9 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   const std::vector<int> rows = friction_rows(d, train, f, mu_rows);
   Eigen::VectorXd th = initial_mu(d, L, mu_rows, f);
   const int n = static_cast<int>(rows.size()), p = L.n;
-  // Rows in pairs (predict_rows2: their map iterations interleaved, the same bits).
-  auto row2 = [&](const Eigen::VectorXd& t, int k1, int k2, double& v1, double& v2) {
-    double a, b;
-    predict_rows2(d, f, L, t, rows[k1], rows[k2], a, b);
-    v1 = d.rows[rows[k1]].y - a, v2 = d.rows[rows[k2]].y - b;
-  };
   auto resid = [&](const Eigen::VectorXd& t) {
     Eigen::VectorXd r(n);
-    int k = 0;
-    for (; k + 1 < n; k += 2) row2(t, k, k + 1, r[k], r[k + 1]);
-    for (; k < n; ++k) r[k] = d.rows[rows[k]].y - predict_row(d, f, L, t, rows[k], nullptr);
+    for (int k = 0; k < n; ++k) r[k] = d.rows[rows[k]].y - predict_row(d, f, L, t, rows[k], nullptr);
     return r;
   };
   auto row = [&](const Eigen::VectorXd& t, int k) { return d.rows[rows[k]].y - predict_row(d, f, L, t, rows[k], nullptr); };
@@ -368,7 +359,7 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   add_row_reads(d, f, L, rows, reads);
   Eigen::MatrixXd J;
   double sse = 0;
-  if (n > 0) sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads, row2);
+  if (n > 0) sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads);
   if (n > 0 && f.has_force && bending_effects.empty()) {
     // The bending lines refitted to the rotating rows less the force channel,
     // then the friction and force parameters again, alternated until the sum
@@ -378,7 +369,7 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
       f.params.clear();
       fit_bending(d, train, linear_bending, f, &off);
       const double prev = sse;
-      sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads, row2);
+      sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads);
       if (!(sse < prev * (1 - 1e-6))) break;
     }
   }
@@ -421,19 +412,10 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec) {
       tf = t.tail(L.n);
     }
   };
-  // Two rows at t (predict_rows2: the same bits as one at a time).
-  auto row2 = [&](const Eigen::VectorXd& t, int k1, int k2, double& v1, double& v2) {
-    at(t);
-    double a, b;
-    predict_rows2(d, g, L, tf, rows[k1], rows[k2], a, b);
-    v1 = d.rows[rows[k1]].y - a, v2 = d.rows[rows[k2]].y - b;
-  };
   auto resid = [&](const Eigen::VectorXd& t) {
     at(t);
     Eigen::VectorXd r(rows.size());
-    size_t k = 0;
-    for (; k + 1 < rows.size(); k += 2) row2(t, static_cast<int>(k), static_cast<int>(k + 1), r[k], r[k + 1]);
-    for (; k < rows.size(); ++k) r[k] = d.rows[rows[k]].y - predict_row(d, g, L, tf, rows[k], nullptr);
+    for (size_t k = 0; k < rows.size(); ++k) r[k] = d.rows[rows[k]].y - predict_row(d, g, L, tf, rows[k], nullptr);
     return r;
   };
   // One row at t (the sparse Jacobian).
@@ -460,7 +442,7 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec) {
   Eigen::MatrixXd J;
   bool conv = false;
   JointFit j;
-  j.rss = levenberg_marquardt(th, resid, J, conv, row, &reads, row2);
+  j.rss = levenberg_marquardt(th, resid, J, conv, row, &reads);
   j.n = static_cast<int>(rows.size());
   j.p = static_cast<int>(th.size());
   for (const auto& q : f.params)  // bending-channel coefficients: held at the bending fit, but parameters
