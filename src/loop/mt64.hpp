@@ -13,6 +13,11 @@
 
 namespace drawbend::loop {
 
+/// The twist of the 312 numbers x and their tempered outputs y (mt64.cpp:
+/// integer operations only, built for AVX-512, AVX2 and the baseline and
+/// chosen at run time, the same numbers on each).
+void mt64_refill(std::uint64_t* x, std::uint64_t* y);
+
 class Mt64 {
  public:
   using result_type = std::uint64_t;
@@ -27,27 +32,10 @@ class Mt64 {
   }
 
  private:
-  static constexpr std::size_t kN = 312, kM = 156;
-  static constexpr std::uint64_t kF = 6364136223846793005ULL, kA = 0xB5026F5AA96619E9ULL;
-  static constexpr std::uint64_t kUpper = ~std::uint64_t{0} << 31, kLower = ~kUpper;
-  static std::uint64_t twist(std::uint64_t hi, std::uint64_t lo, std::uint64_t far) {
-    const std::uint64_t y = (hi & kUpper) | (lo & kLower);
-    return far ^ (y >> 1) ^ (kA & (std::uint64_t{0} - (y & 1)));
-  }
+  static constexpr std::size_t kN = 312;
+  static constexpr std::uint64_t kF = 6364136223846793005ULL;
   void refill() {
-    for (std::size_t k = 0; k < kN - kM; ++k) x_[k] = twist(x_[k], x_[k + 1], x_[k + kM]);
-    for (std::size_t k = kN - kM; k < kN - 1; ++k) x_[k] = twist(x_[k], x_[k + 1], x_[k + kM - kN]);
-    x_[kN - 1] = twist(x_[kN - 1], x_[0], x_[kM - 1]);
-    // The tempering of the 312 outputs in one loop (vector lanes), not one
-    // number per call (the shuffle's draws wait on it otherwise).
-    for (std::size_t k = 0; k < kN; ++k) {
-      std::uint64_t z = x_[k];
-      z ^= (z >> 29) & 0x5555555555555555ULL;
-      z ^= (z << 17) & 0x71D67FFFEDA60000ULL;
-      z ^= (z << 37) & 0xFFF7EEE000000000ULL;
-      z ^= z >> 43;
-      y_[k] = z;
-    }
+    mt64_refill(x_, y_);
     p_ = 0;
   }
   std::uint64_t x_[kN];

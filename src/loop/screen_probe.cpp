@@ -22,9 +22,16 @@ double probe_cv(const ProbeDef& p, const std::vector<int>& rows, const std::vect
     for (int i : rows)
       if (f.fold[i] != k) sm[p.row_stratum[i]] += r[i], sn[p.row_stratum[i]] += 1;
     for (int s = 0; s < S; ++s) sm[s] = sn[s] > 0 ? sm[s] / sn[s] : 0;
+    // The stratum means of z (slopes, quad) and z^2 (quad): read by those
+    // shapes only, so the other shapes skip their pass (two divisions a row).
     std::vector<double> mz(S, 0), mz2(S, 0);
-    for (int i : rows)
-      if (f.fold[i] != k) mz[p.row_stratum[i]] += z[i] / sn[p.row_stratum[i]], mz2[p.row_stratum[i]] += z[i] * z[i] / sn[p.row_stratum[i]];
+    if (p.shape == Shape::quad) {
+      for (int i : rows)
+        if (f.fold[i] != k) mz[p.row_stratum[i]] += z[i] / sn[p.row_stratum[i]], mz2[p.row_stratum[i]] += z[i] * z[i] / sn[p.row_stratum[i]];
+    } else if (p.shape == Shape::slopes) {
+      for (int i : rows)
+        if (f.fold[i] != k) mz[p.row_stratum[i]] += z[i] / sn[p.row_stratum[i]];
+    }
     for (int i : rows) {
       if (f.fold[i] == k) continue;
       const int s = p.row_stratum[i], ps = pool(s);
@@ -50,6 +57,14 @@ double probe_cv(const ProbeDef& p, const std::vector<int>& rows, const std::vect
       else if (q11 > 1e-12) c1 = b1 / q11;
     }
     if (p.shape == Shape::wslope && q11 > 1e-12) c1 = b1 / q11;
+    // Per cell, the quotient each held-out row of the cell adds (the same
+    // operands as per row, so the same bits), when there are fewer cells than
+    // rows: a division per cell instead of per row.
+    const bool per_cell = p.shape == Shape::levels && lm.size() <= rows.size();
+    if (per_cell)
+      for (size_t q = 0; q < lm.size(); ++q) lm[q] = ln[q] > 0 ? lm[q] / ln[q] : 0;
+    if (p.shape == Shape::slopes)
+      for (int q = 0; q < S; ++q) sxr[q] = sxr[q] / sx[q];
     for (int i : rows) {
       if (f.fold[i] != k) continue;
       const int s = p.row_stratum[i], ps = pool(s);
@@ -57,9 +72,9 @@ double probe_cv(const ProbeDef& p, const std::vector<int>& rows, const std::vect
       double pr = sm[s];
       const size_t li = static_cast<size_t>(std::max(ps, 0)) * L + l[i];
       if (ps >= 0) switch (p.shape) {
-        case Shape::levels: pr += ln[li] > 0 ? lm[li] / ln[li] : 0; break;
+        case Shape::levels: pr += per_cell ? lm[li] : ln[li] > 0 ? lm[li] / ln[li] : 0; break;
         case Shape::wlevels: pr += ln[li] > 0 ? w[i] * lm[li] / ln[li] : 0; break;
-        case Shape::slopes: pr += sx[ps] > 1e-12 ? sxr[ps] / sx[ps] * (z[i] - mz[s]) : 0; break;
+        case Shape::slopes: pr += sx[ps] > 1e-12 ? sxr[ps] * (z[i] - mz[s]) : 0; break;  // sxr: the slope
         case Shape::wslope: pr += c1 * z[i] * w[i]; break;
         case Shape::quad: pr += c1 * (z[i] - mz[s]) + c2 * (z[i] * z[i] - mz2[s]); break;
       }
