@@ -29,7 +29,7 @@ inline constexpr double kMaxPinDiameterMM = 1000;
 inline constexpr double kMinLargestStripForceN = 10;
 
 /// Below this, a data set whose every pin is smaller is in metres [mm]: the
-/// thesis's pins are 3.2 to 25.4 mm and a pin below 1 mm would bend a 1 mm
+/// thesis's measured data have 12.7 to 42 mm pins and a pin below 1 mm would bend a 1 mm
 /// sheet round a radius of half its thickness (it cracks); 0.0127 is
 /// 12.7 mm written in metres.
 inline constexpr double kMinLargestPinDiameterMM = 1;
