@@ -73,7 +73,9 @@ md = ["# Robustness: entry point x bad input, before and after", "",
       "`robustness.numeric_options` and `robustness.hostile_inputs` (the CSV dialects: "
       "`robustness.csv_dialects_and_encoding`). Values a command accepts on purpose "
       "(`tests/robustness/option_valid.txt`, e.g. `--threads 0`) are marked *valid*; they start real "
-      "work, so 124 there is the table's 20 s limit, not a hang. Rows in bold changed their exit code.", "",
+      "work, so 124 there is the table's 20 s limit, not a hang. Rows in bold changed their exit code. "
+      "Inputs that parse but are physically nonsense (loop, model-loop, calibrate, export, plan): "
+      "`docs/robustness-nonsense.md` (hand-written; `robustness.nonsense_physics`).", "",
       f"- before: `{before}`", f"- after: `{after}`", "",
       "## Summary", "",
       "| matrix | cases | before: exit 2 or 3 | before: exit 0 | before: other | after: exit 2 or 3 | after: exit 0 | after: other |",

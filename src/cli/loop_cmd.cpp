@@ -31,6 +31,7 @@
 #include "loop/report.hpp"
 #include "loop/synth.hpp"
 #include "loop/thesis_rows.hpp"
+#include "loop/data_physics.hpp"
 
 namespace drawbend::cli {
 
@@ -169,6 +170,13 @@ Dataset read_loop_data(const std::string& data_path) {
   std::cout << data_path << ": " << data.rows_read << " rows read, " << data.rows.size() << " used, "
             << data.rows_dropped << " dropped, " << data.problems.size() << " problems\n";
   if (data.rows.empty()) throw InputError(data_path + ": no usable rows");
+  // The rows together (every force in kN, no fixed pin, ...): exit 2 or a
+  // warning that loop.md's problem list keeps too (loop/data_physics.hpp).
+  for (auto& w : check_data_physics(data)) {
+    std::cerr << "warning: " << w.str() << "\n";
+    w.message = "warning: " + w.message;
+    data.problems.push_back(std::move(w));
+  }
   return data;
 }
 

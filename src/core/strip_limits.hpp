@@ -20,4 +20,18 @@ inline constexpr double kMaxStripForceN = 1e6;
 /// 1e300 mm ran past every time limit before issue 53).
 inline constexpr double kMaxPinDiameterMM = 1000;
 
+/// Below this, a data set whose every force is smaller is in the wrong unit
+/// [N]: a strip draw-bend test pulls a sheet near its yield stress (a
+/// 25.4 mm x 1.04 mm AA5754-O strip yields near 2.6 kN; even a 10 mm x
+/// 0.1 mm foil at 100 MPa carries 100 N), so a file whose largest force is
+/// below 10 N holds kN (1.7 "N" for 1.7 kN), not a strip test.  Only a whole
+/// data set is judged (one small row may be a typo the other checks catch).
+inline constexpr double kMinLargestStripForceN = 10;
+
+/// Below this, a data set whose every pin is smaller is in metres [mm]: the
+/// thesis's measured data have 12.7 to 42 mm pins and a pin below 1 mm would bend a 1 mm
+/// sheet round a radius of half its thickness (it cracks); 0.0127 is
+/// 12.7 mm written in metres.
+inline constexpr double kMinLargestPinDiameterMM = 1;
+
 }  // namespace drawbend

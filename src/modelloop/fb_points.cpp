@@ -1,6 +1,7 @@
 // Measured bending forces in, a points table out (modelloop/model_loop.hpp).
 #include "modelloop/model_loop.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "core/csv.hpp"
@@ -41,6 +42,22 @@ std::vector<FbPoint> read_fb_points(const std::string& csv_path) {
     out.push_back(p);
   }
   if (out.empty() && problems.empty()) problems.push_back(t.path + ": no data rows");
+  // The rows together, as `drawbend loop` judges them (core/strip_limits.hpp):
+  // every force in kN or every pin in metres would start FE runs on a strip
+  // loaded at a thousandth of its yield, or meshed round a 0.01 mm pin.
+  if (problems.empty()) {
+    double max_force = 0, max_pin = 0;
+    for (const auto& p : out) max_force = std::max({max_force, p.back_tension_N, p.bending_N}), max_pin = std::max(max_pin, p.pin_mm);
+    if (max_force < kMinLargestStripForceN)
+      problems.push_back(t.path + ": columns 'back_tension_N', 'bending_force_N': every force is below " +
+                         fmt(kMinLargestStripForceN) + " N (largest " + fmt(max_force) +
+                         " N); a strip draw-bend test carries hundreds to thousands of N: expected full-strip forces "
+                         "in N (kN times 1000?)");
+    if (max_pin < kMinLargestPinDiameterMM)
+      problems.push_back(t.path + ": column 'pin_diameter_mm': every pin diameter is below " +
+                         fmt(kMinLargestPinDiameterMM) + " mm (largest " + fmt(max_pin) +
+                         " mm); expected diameters in mm (metres times 1000?)");
+  }
   if (!problems.empty()) {
     std::string all;
     for (const auto& s : problems) all += (all.empty() ? "" : "\n") + s;

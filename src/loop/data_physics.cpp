@@ -1,0 +1,52 @@
+// Whole-data-set plausibility of measured draw-bend data; see data_physics.hpp.
+#include "loop/data_physics.hpp"
+
+#include <algorithm>
+
+#include "core/csv.hpp"
+#include "core/strip_limits.hpp"
+
+namespace drawbend::loop {
+
+std::vector<Problem> check_data_physics(const Dataset& d) {
+  std::vector<Problem> warnings;
+  if (d.rows.empty()) return warnings;  // read_loop_data refuses that already
+  double max_force = 0, max_pin = 0, max_speed = 0;
+  double bt_lo = d.rows.front().back_tension_N, bt_hi = bt_lo;
+  double out_lo = d.rows.front().outlet_force_N, out_hi = out_lo;
+  int fixed = 0;
+  for (const auto& s : d.rows) {
+    max_force = std::max({max_force, s.back_tension_N, s.outlet_force_N});
+    max_pin = std::max(max_pin, s.pin_d_mm);
+    max_speed = std::max(max_speed, s.speed_mm_s);
+    bt_lo = std::min(bt_lo, s.back_tension_N), bt_hi = std::max(bt_hi, s.back_tension_N);
+    out_lo = std::min(out_lo, s.outlet_force_N), out_hi = std::max(out_hi, s.outlet_force_N);
+    fixed += s.rotating ? 0 : 1;
+  }
+  const std::string rows = " (" + std::to_string(d.rows.size()) + " usable rows)";
+  if (max_force < kMinLargestStripForceN)
+    throw InputError(d.path + ": columns 'back_tension_N', 'outlet_force_N': every force is below " +
+                     fmt(kMinLargestStripForceN) + " N (largest " + fmt(max_force) + " N)" + rows +
+                     "; a strip draw-bend test carries hundreds to thousands of N: expected full-strip forces in N "
+                     "(kN times 1000?)");
+  if (max_pin < kMinLargestPinDiameterMM)
+    throw InputError(d.path + ": column 'pin_diameter_mm': every pin diameter is below " +
+                     fmt(kMinLargestPinDiameterMM) + " mm (largest " + fmt(max_pin) + " mm)" + rows +
+                     "; expected diameters in mm (a draw-bend pin is a few mm to a few hundred mm; metres times 1000?)");
+  if (fixed == 0)
+    throw InputError(d.path + ": column 'pin': every usable row is 'rotating'" + rows +
+                     "; a rotating pin measures the bending force only, so friction needs rows with pin = fixed");
+  if (d.rows.size() >= 3 && out_lo == out_hi && bt_lo < bt_hi)
+    throw InputError(d.path + ": column 'outlet_force_N': every usable row has the same outlet force " + fmt(out_lo) +
+                     " N while the back tension goes from " + fmt(bt_lo) + " to " + fmt(bt_hi) + " N" + rows +
+                     "; the outlet force is the back tension plus friction and bending, so it rises with the back "
+                     "tension (a value filled down the column?)");
+  if (max_speed < 1)
+    warnings.push_back({d.path, 0, "speed_mm_s",
+                        "every speed is below 1 mm/s (largest " + fmt(max_speed) +
+                            " mm/s); draw-bend tests slide at a few to a few hundred mm/s: check the unit (m/s "
+                            "times 1000?)"});
+  return warnings;
+}
+
+}  // namespace drawbend::loop
