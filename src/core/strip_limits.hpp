@@ -2,6 +2,9 @@
 // Plausibility limits of measured draw-bend data, shared by every reader of
 // it (`drawbend loop`'s loop/measured.cpp and `model-loop`'s
 // modelloop/fb_points.cpp), so that a value one refuses the other refuses too.
+#include <string>
+
+#include "core/csv.hpp"
 
 namespace drawbend {
 
@@ -33,5 +36,27 @@ inline constexpr double kMinLargestStripForceN = 10;
 /// sheet round a radius of half its thickness (it cracks); 0.0127 is
 /// 12.7 mm written in metres.
 inline constexpr double kMinLargestPinDiameterMM = 1;
+
+/// The message for a data set whose largest force is below
+/// kMinLargestStripForceN (forces in kN), else "".  `columns` names the force
+/// columns as the message shows them; `rows` is appended after the largest
+/// value (e.g. " (40 usable rows)").
+inline std::string force_unit_problem(const std::string& path, const std::string& columns, double largest_N,
+                                      const std::string& rows = "") {
+  if (largest_N >= kMinLargestStripForceN) return "";
+  return path + ": " + columns + ": every force is below " + fmt(kMinLargestStripForceN) + " N (largest " +
+         fmt(largest_N) + " N)" + rows +
+         "; a strip draw-bend test carries hundreds to thousands of N: expected full-strip forces in N (kN times "
+         "1000?)";
+}
+
+/// The message for a data set whose largest pin diameter is below
+/// kMinLargestPinDiameterMM (pins in metres), else "".
+inline std::string pin_unit_problem(const std::string& path, double largest_mm, const std::string& rows = "") {
+  if (largest_mm >= kMinLargestPinDiameterMM) return "";
+  return path + ": column 'pin_diameter_mm': every pin diameter is below " + fmt(kMinLargestPinDiameterMM) +
+         " mm (largest " + fmt(largest_mm) + " mm)" + rows +
+         "; expected diameters in mm (a draw-bend pin is a few mm to a few hundred mm; metres times 1000?)";
+}
 
 }  // namespace drawbend

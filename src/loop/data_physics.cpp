@@ -24,15 +24,9 @@ std::vector<Problem> check_data_physics(const Dataset& d) {
     fixed += s.rotating ? 0 : 1;
   }
   const std::string rows = " (" + std::to_string(d.rows.size()) + " usable rows)";
-  if (max_force < kMinLargestStripForceN)
-    throw InputError(d.path + ": columns 'back_tension_N', 'outlet_force_N': every force is below " +
-                     fmt(kMinLargestStripForceN) + " N (largest " + fmt(max_force) + " N)" + rows +
-                     "; a strip draw-bend test carries hundreds to thousands of N: expected full-strip forces in N "
-                     "(kN times 1000?)");
-  if (max_pin < kMinLargestPinDiameterMM)
-    throw InputError(d.path + ": column 'pin_diameter_mm': every pin diameter is below " +
-                     fmt(kMinLargestPinDiameterMM) + " mm (largest " + fmt(max_pin) + " mm)" + rows +
-                     "; expected diameters in mm (a draw-bend pin is a few mm to a few hundred mm; metres times 1000?)");
+  for (const std::string& m : {force_unit_problem(d.path, "columns 'back_tension_N', 'outlet_force_N'", max_force, rows),
+                                pin_unit_problem(d.path, max_pin, rows)})
+    if (!m.empty()) throw InputError(m);
   if (fixed == 0)
     throw InputError(d.path + ": column 'pin': every usable row is 'rotating'" + rows +
                      "; a rotating pin measures the bending force only, so friction needs rows with pin = fixed");

@@ -325,7 +325,7 @@ ExportModel read_friction_model(const std::string& path) {
   // metal on metal rarely above 1; a coefficient above 1 is a typing error
   // more often than a measurement, so the export says so (once per direction).
   for (const auto& [dir, s] : {std::pair{"mu_RD", &m.rd}, std::pair{"mu_TD", &m.td}})
-    for (std::size_t k = 0; k < 9; ++k)
+    for (std::size_t k = 0; k < s->mu.size(); ++k)
       if (s->mu[k] > 1) {
         std::cerr << "warning: " << file.string() << ": column '" << dir << "': node " << k + 1 << " has mu = "
                   << fmt_shortest(s->mu[k]) << ", above 1 (lubricated sheet metal: 0.02 to 0.3); exported as given\n";

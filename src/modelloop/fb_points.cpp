@@ -48,15 +48,9 @@ std::vector<FbPoint> read_fb_points(const std::string& csv_path) {
   if (problems.empty()) {
     double max_force = 0, max_pin = 0;
     for (const auto& p : out) max_force = std::max({max_force, p.back_tension_N, p.bending_N}), max_pin = std::max(max_pin, p.pin_mm);
-    if (max_force < kMinLargestStripForceN)
-      problems.push_back(t.path + ": columns 'back_tension_N', 'bending_force_N': every force is below " +
-                         fmt(kMinLargestStripForceN) + " N (largest " + fmt(max_force) +
-                         " N); a strip draw-bend test carries hundreds to thousands of N: expected full-strip forces "
-                         "in N (kN times 1000?)");
-    if (max_pin < kMinLargestPinDiameterMM)
-      problems.push_back(t.path + ": column 'pin_diameter_mm': every pin diameter is below " +
-                         fmt(kMinLargestPinDiameterMM) + " mm (largest " + fmt(max_pin) +
-                         " mm); expected diameters in mm (metres times 1000?)");
+    for (std::string m : {force_unit_problem(t.path, "columns 'back_tension_N', 'bending_force_N'", max_force),
+                          pin_unit_problem(t.path, max_pin)})
+      if (!m.empty()) problems.push_back(std::move(m));
   }
   if (!problems.empty()) {
     std::string all;
