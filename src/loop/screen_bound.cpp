@@ -191,16 +191,6 @@ void CandidateScreen::setup_bounds() {
     bfast[j] = 1;
     bprobes.push_back(std::move(b));
   }
-  // Probes of the same sums (levels, pooled or not, or slopes) with the same
-  // stratum per test and the same strata: one copy of the sums, the first's.
-  for (size_t a = 0; a < bprobes.size(); ++a) {
-    const Shape sa = probes[bprobes[a].j].shape;
-    if (sa != Shape::levels && sa != Shape::slopes) continue;
-    for (size_t e = 0; e < a && bprobes[a].share < 0; ++e)
-      if (bprobes[e].share < 0 && probes[bprobes[e].j].shape == sa && bprobes[e].acc.size() == bprobes[a].acc.size() &&
-          bprobes[e].gstratum == bprobes[a].gstratum)
-        bprobes[a].share = static_cast<int>(e);
-  }
   bounded = !bprobes.empty();
 }
 
@@ -229,88 +219,67 @@ double CandidateScreen::quad_bound(const ProbeDef& p, const BoundProbe& b, int j
   return t * t / (1 - eps / b.lam) + slack;
 }
 
-// The bounded probes' sums, lane by lane and test by test (the sums of a lane
-// may be made in any order: only their bounds matter).  bound_reset zeroes
-// them; bound_test adds test gi of lane j, whose permutation is p (unit u
-// takes unit p[u]'s value); bound_max gives each lane's largest bound.
-void CandidateScreen::bound_reset() {
-  for (auto& b : bprobes)
-    if (b.share < 0) std::fill(b.acc.begin(), b.acc.end(), 0.0);
-  std::fill(bwb, bwb + kLanes, 0.0), std::fill(bwa, bwa + kLanes, 0.0);
-}
-
-inline void CandidateScreen::bound_test(int j, size_t gi, const int* p) {
+// The largest upper bound of the bounded probes' statistics in each lane
+// (+infinity when a bound cannot be given: the exact passes decide), zmax[j]
+// for the kLanes lanes side by side, lane j's permutation lp[j] (unit u takes
+// unit lp[j][u]'s value; lanes past the last permutation repeat lane 0).  Its sums may be made in any order: only their bounds matter.
+void CandidateScreen::bounded_max(const std::vector<int>* lp, double* zmax) {
   constexpr int L = kLanes;
+  const int* p0 = lp[0].data();
+  const int* p1 = lp[1].data();
+  const int* p2 = lp[2].data();
+  const int* p3 = lp[3].data();
+  static_assert(L == 4, "bounded_max reads four lanes' permutations");
+  for (auto& b : bprobes) std::fill(b.acc.begin(), b.acc.end(), 0.0);
   const double* urw = bws >= 0 ? probes[bprobes[bws].j].urw.data() : nullptr;
   const double* uw2 = bws >= 0 ? probes[bprobes[bws].j].uw2.data() : nullptr;
   const double* wl1 = bwl >= 0 ? probes[bprobes[bwl].j].urw.data() : nullptr;
   const double* wl2 = bwl >= 0 ? probes[bprobes[bwl].j].uw2.data() : nullptr;
-  // Two rows at a time, each with its own sums (h: the row's parity), so that
-  // consecutive rows do not wait on one another's additions.
-  double A[2][kMaxLevels], AW[2][2 * kMaxLevels];
-  const size_t u0 = static_cast<size_t>(gfirst[gi]), u1 = u0 + static_cast<size_t>(gsize[gi]);
-  std::fill(A[0], A[0] + nlev, 0.0), std::fill(A[1], A[1] + nlev, 0.0);
-  if (wl2) std::fill(AW[0], AW[0] + 2 * nlev, 0.0), std::fill(AW[1], AW[1] + 2 * nlev, 0.0);
-  double x1[2] = {}, x2[2] = {}, wb[2] = {}, wa[2] = {};
-  auto row = [&](size_t u, int h) {
-    const double r = r0[u];
-    const int v = p[u];  // the unit the permutation puts at u
-    const double x = xz[v];
-    const int lv = xl[v];
-    A[h][lv] += r, x1[h] += x * r;
-    if (quad) x2[h] += x * x * r;
-    if (wl2) AW[h][2 * lv] += wl1[u], AW[h][2 * lv + 1] += wl2[u];  // per level: the wlevels probe's urw and uw2
-    if (urw) wb[h] += x * urw[u], wa[h] += x * x * uw2[u];
-  };
-  size_t u = u0;
-  for (; u + 1 < u1; u += 2) row(u, 0), row(u + 1, 1);
-  if (u < u1) row(u, 0);
-  bwb[j] += wb[0] + wb[1], bwa[j] += wa[0] + wa[1];
-  for (auto& b : bprobes) {
-    if (b.share >= 0) continue;
-    const ProbeDef& pr = probes[b.j];
-    const size_t s = static_cast<size_t>(b.gstratum[gi]);
-    if (pr.shape == Shape::levels) {
-      double* d = b.acc.data() + s * nlev * L + j;
-      for (int l = 0; l < nlev; ++l) d[l * L] += A[0][l] + A[1][l];
-    } else if (pr.shape == Shape::slopes) {
-      b.acc[s * L + j] += x1[0] + x1[1];
-    } else if (pr.shape == Shape::quad) {
-      b.acc[s * 2 * L + j] += x1[0] + x1[1], b.acc[(s * 2 + 1) * L + j] += x2[0] + x2[1];
-    } else if (pr.shape == Shape::wlevels) {
-      double* d = b.acc.data() + s * nlev * 2 * L + j;
-      for (int l = 0; l < nlev; ++l)
-        d[l * 2 * L] += AW[0][2 * l] + AW[1][2 * l], d[l * 2 * L + L] += AW[0][2 * l + 1] + AW[1][2 * l + 1];
+  double wb[L] = {}, wa[L] = {}, A[kMaxLevels * L], AW[2 * kMaxLevels * L];
+  for (size_t gi = 0; gi < groups.size(); ++gi) {
+    const size_t u0 = static_cast<size_t>(gfirst[gi]), u1 = u0 + static_cast<size_t>(gsize[gi]);
+    std::fill(A, A + nlev * L, 0.0);
+    if (wl2) std::fill(AW, AW + 2 * nlev * L, 0.0);
+    double x1[L] = {}, x2[L] = {};
+    for (size_t u = u0; u < u1; ++u) {
+      const double r = r0[u];
+      // lane j's value of unit u: the unit its permutation puts there
+      const int v[L] = {p0[u], p1[u], p2[u], p3[u]};
+      double x[L];
+      int lv[L];
+      for (int j = 0; j < L; ++j) x[j] = xz[v[j]], lv[j] = xl[v[j]];
+      for (int j = 0; j < L; ++j) A[lv[j] * L + j] += r, x1[j] += x[j] * r;
+      if (quad)
+        for (int j = 0; j < L; ++j) x2[j] += x[j] * x[j] * r;
+      if (wl2) {  // per level: the wlevels probe's sums of urw and uw2
+        const double w1 = wl1[u], w2 = wl2[u];
+        for (int j = 0; j < L; ++j) {
+          double* a = AW + static_cast<size_t>(lv[j]) * 2 * L + j;
+          a[0] += w1, a[L] += w2;
+        }
+      }
+      if (urw)
+        for (int j = 0; j < L; ++j) wb[j] += x[j] * urw[u], wa[j] += x[j] * x[j] * uw2[u];
+    }
+    for (auto& b : bprobes) {
+      const ProbeDef& p = probes[b.j];
+      const size_t s = static_cast<size_t>(b.gstratum[gi]);
+      if (p.shape == Shape::levels) {
+        double* d = b.acc.data() + s * nlev * L;
+        for (int k = 0; k < nlev * L; ++k) d[k] += A[k];
+      } else if (p.shape == Shape::slopes) {
+        for (int j = 0; j < L; ++j) b.acc[s * L + j] += x1[j];
+      } else if (p.shape == Shape::quad) {
+        for (int j = 0; j < L; ++j) b.acc[s * 2 * L + j] += x1[j], b.acc[(s * 2 + 1) * L + j] += x2[j];
+      } else if (p.shape == Shape::wlevels) {
+        double* d = b.acc.data() + s * nlev * 2 * L;
+        for (int k = 0; k < nlev * 2 * L; ++k) d[k] += AW[k];
+      }
     }
   }
-}
-
-// Lane j's permutation: p shuffled (shuffle's draws and swaps, test by test:
-// every group a run, in order) with each test's sums made right after its shuffle.
-void CandidateScreen::bounded_shuffle(std::vector<int>& p, Mt64& r, int j) {
-  for (size_t gi = 0; gi < groups.size(); ++gi) shuffle_run(gi, p, r), bound_test(j, gi, p.data());
-}
-
-// The same from the lanes' permutations lp[j] (lanes past the last permutation
-// repeat lane 0).
-void CandidateScreen::bounded_max(const std::vector<int>* lp, double* zmax) {
-  bound_reset();
-  for (int j = 0; j < kLanes; ++j)
-    for (size_t gi = 0; gi < groups.size(); ++gi) bound_test(j, gi, lp[j].data());
-  bound_max(zmax);
-}
-
-// The largest upper bound of the bounded probes' statistics in each lane
-// (+infinity when a bound cannot be given: the exact passes decide), zmax[j]
-// for the kLanes lanes side by side.
-void CandidateScreen::bound_max(double* zmax) {
-  constexpr int L = kLanes;
-  const double* wb = bwb;
-  const double* wa = bwa;
   for (int j = 0; j < L; ++j) zmax[j] = -INFINITY;
   for (const auto& b : bprobes) {
     const ProbeDef& p = probes[b.j];
-    const std::vector<double>& acc = b.share >= 0 ? bprobes[b.share].acc : b.acc;
     double ess[L] = {};
     if (p.shape == Shape::levels) {
       for (int s = 0; s < p.nstrata; ++s)
@@ -319,7 +288,7 @@ void CandidateScreen::bound_max(double* zmax) {
           const double N = p.fixed_counts[k], B = b.bsum.empty() ? 0.0 : b.bsum[k];
           if (N > 0)
             for (int j = 0; j < L; ++j) {
-              const double t = std::abs(acc[k * L + j] - B - p.mean[s] * N) + b.e[s];
+              const double t = std::abs(b.acc[k * L + j] - B - p.mean[s] * N) + b.e[s];
               ess[j] += t * t / N;
             }
         }
@@ -327,7 +296,7 @@ void CandidateScreen::bound_max(double* zmax) {
       for (int s = 0; s < p.nstrata; ++s)
         if (b.alo[s] > 0)
           for (int j = 0; j < L; ++j) {
-            const double t = std::abs(acc[static_cast<size_t>(s) * L + j] - p.mean[s] * b.sx[s]) + b.e[s];
+            const double t = std::abs(b.acc[static_cast<size_t>(s) * L + j] - p.mean[s] * b.sx[s]) + b.e[s];
             ess[j] += t * t / b.alo[s];
           }
     } else if (p.shape == Shape::quad) {
@@ -335,7 +304,7 @@ void CandidateScreen::bound_max(double* zmax) {
     } else if (p.shape == Shape::wlevels) {
       for (int s = 0; s < p.nstrata; ++s)
         for (int l = 0; l < nlev; ++l) {
-          const double* a = acc.data() + (static_cast<size_t>(s) * nlev + l) * 2 * L;
+          const double* a = b.acc.data() + (static_cast<size_t>(s) * nlev + l) * 2 * L;
           for (int j = 0; j < L; ++j)
             if (a[L + j] > 0) {
               const double t = std::abs(a[j]) + b.e[s];

@@ -15,7 +15,6 @@
 //                       candidates permuted within tests)
 #include <cstdint>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "loop/candidates.hpp"
@@ -37,7 +36,6 @@ struct BoundProbe {
   std::vector<double> sx;   // slopes, per stratum: the sum of x (the same under every permutation)
   std::vector<int> gstratum;  // per test (permutation group): its stratum
   std::vector<double> acc;  // the lanes' sums: per (stratum, level) cell, or per stratum, and lane
-  int share = -1;           // an earlier probe with the same sums (same kind, strata per test): its acc
   std::vector<double> sxx;  // quad, per stratum: the sum of x^2
   std::vector<double> bsum;  // pooled levels, per (stratum, level) cell: the sum of its rows' block means
   double eb = 0, arel = 0;  // wslope: bound on |exact - bounded| of b, and a's relative one; quad: of b1
@@ -98,7 +96,6 @@ struct CandidateScreen {
   int bws = -1;             // bprobes' wslope, or -1
   bool quad = false;        // a quad probe in bprobes
   int bwl = -1;             // bprobes' wlevels, or -1
-  double bwb[kLanes] = {}, bwa[kLanes] = {};  // the wslope probe's b and a per lane
 
   // screen.cpp
   void select_rows();
@@ -120,21 +117,11 @@ struct CandidateScreen {
   void setup_bounds();
   double quad_bound(const ProbeDef& p, const BoundProbe& b, int j) const;
   void bounded_max(const std::vector<int>* lp, double* zmax);
-  void bounded_shuffle(std::vector<int>& p, Mt64& r, int j);
-  void bound_reset();
-  inline void bound_test(int j, size_t gi, const int* p);
-  void bound_max(double* zmax);
   // screen_permute.cpp
   void flat_groups();
   void calibrate(std::uint64_t seed, size_t ci);
   double observed(CandidateResult& res);
   void permutation_test(CandidateResult& res, double T, std::uint64_t seed, size_t ci, int permutations, double thr);
-  // Fisher-Yates within permutation group gi, a run of units (run[gi]): its
-  // draws and swaps (shuffle, and the bounded pass's bounded_shuffle).
-  void shuffle_run(size_t gi, std::vector<int>& p, Mt64& r) const {
-    int* q = p.data() + gfirst[gi];
-    for (size_t k = static_cast<size_t>(gsize[gi]); k > 1; --k) std::swap(q[k - 1], q[mod(r(), k)]);
-  }
   // the inner loops of the permutations (inline, defined and used in screen_permute.cpp only)
   inline void shuffle(std::vector<int>& p, Mt64& r) const;
   inline void fill_unit_values(const std::vector<int>& p, std::vector<double>& qz, std::vector<int>& ql, int j,

@@ -47,7 +47,8 @@ void CandidateScreen::flat_groups() {
 inline void CandidateScreen::shuffle(std::vector<int>& p, Mt64& r) const {
   for (size_t gi = 0; gi < groups.size(); ++gi) {
     if (run[gi]) {
-      shuffle_run(gi, p, r);
+      int* q = p.data() + gfirst[gi];
+      for (size_t k = gsize[gi]; k > 1; --k) std::swap(q[k - 1], q[mod(r(), k)]);
     } else {
       const auto& g = groups[gi];
       for (size_t k = g.size(); k > 1; --k) std::swap(p[g[k - 1]], p[g[mod(r(), k)]]);
@@ -221,8 +222,6 @@ void CandidateScreen::permutation_test(CandidateResult& res, double T, std::uint
   // The bounded pass (screen_bound.cpp): a lane whose bound lies below Tcut cannot count.
   if (!ctx || ctx->bounded_pass) setup_bounds();
   std::vector<int> lperm[kLanes];  // the bounded pass: each lane's permutation
-  std::vector<int> perm0;          // (fused) the permutation at the pass's start,
-  Mt64 rng0 = rng;                 // and the stream's position
   const bool exact_probes = std::count(bfast.begin(), bfast.end(), 0) > 0;  // probes outside the bounded pass
   const double Tcut = Tp - 1e-8 * std::max(1.0, std::abs(Tp));
   int nbound = 0, nnear = 0;  // permutations through the bounded pass, and those near T
@@ -232,21 +231,10 @@ void CandidateScreen::permutation_test(CandidateResult& res, double T, std::uint
       // The bounded pass reads each lane's permutation itself; the lanes' unit
       // values (pz, pl) are gathered only for the exact passes that need them.
       const bool lanes_only = bounded;
-      // Every probe in the bounded pass: each lane's shuffle test by test, its
-      // bounded sums made while the test is in the cache (bounded_shuffle); the
-      // lanes' permutations are made again from the pass's start (the same
-      // draws) only when an exact pass needs them.
-      const bool fused = lanes_only && !exact_probes;
-      if (fused) {
-        perm0 = perm, rng0 = rng;
-        bound_reset();
-        for (int i = 0; i < used; ++i) bounded_shuffle(perm, rng, i);
-      } else {
-        for (int i = 0; i < used; ++i) {
-          shuffle(perm, rng);
-          if (lanes_only) lperm[i] = perm;
-          else fill_unit_values(perm, pz, pl, i, rng);
-        }
+      for (int i = 0; i < used; ++i) {
+        shuffle(perm, rng);
+        if (lanes_only) lperm[i] = perm;
+        else fill_unit_values(perm, pz, pl, i, rng);
       }
       if (!lanes_only) {
         fill_lanes(pz, pl, used);
@@ -254,24 +242,17 @@ void CandidateScreen::permutation_test(CandidateResult& res, double T, std::uint
         for (int i = 0; i < used; ++i)
           if (lane_stat(i) >= Tp) ++ge;
       } else {
-        if (!fused)
-          for (int i = used; i < kLanes; ++i) lperm[i] = lperm[0];
+        for (int i = used; i < kLanes; ++i) lperm[i] = lperm[0];
         bool filled = false;
         auto fill = [&]() {  // (bounded: never two-level, so no draws here)
           if (filled) return;
-          if (fused) {  // the lanes' permutations again, from the pass's start
-            perm = perm0, rng = rng0;
-            for (int i = 0; i < used; ++i) shuffle(perm, rng), lperm[i] = perm;
-            for (int i = used; i < kLanes; ++i) lperm[i] = lperm[0];
-          }
           for (int i = 0; i < used; ++i) fill_unit_values(lperm[i], pz, pl, i, rng);
           fill_lanes(pz, pl, used);
           filled = true;
         };
         if (exact_probes) fill(), eval_lanes(pz, pl, 0);
         double zb[kLanes];
-        if (fused) bound_max(zb);
-        else bounded_max(lperm, zb);
+        bounded_max(lperm, zb);
         bool near[kLanes] = {}, any = false;
         for (int i = 0; i < used; ++i) near[i] = !(zb[i] < Tcut), any = any || near[i], nnear += near[i];
         // Most permutations near T (a candidate far from significance): the
