@@ -32,6 +32,7 @@
 // and the observed statistic keep the exact passes (their values are written).
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "loop/screen_candidate.hpp"
 
@@ -192,6 +193,20 @@ void CandidateScreen::setup_bounds() {
     bprobes.push_back(std::move(b));
   }
   bounded = !bprobes.empty();
+  // The keys: tests alike in every bounded probe's stratum, in order of first appearance.
+  const size_t nb = bprobes.size();
+  gkey.assign(groups.size(), 0), kstratum.clear(), nkeys = 0;
+  std::map<std::vector<int>, int> keys;
+  std::vector<int> key(nb);
+  for (size_t gi = 0; gi < groups.size() && bounded; ++gi) {
+    for (size_t i = 0; i < nb; ++i) key[i] = bprobes[i].gstratum[gi];
+    const auto [it, added] = keys.emplace(key, nkeys);
+    if (added) kstratum.insert(kstratum.end(), key.begin(), key.end()), ++nkeys;
+    gkey[gi] = it->second;
+  }
+  ka.assign(static_cast<size_t>(nkeys) * nlev * kLanes, 0.0);
+  kaw.assign(bwl >= 0 ? static_cast<size_t>(nkeys) * nlev * 2 * kLanes : 0, 0.0);
+  kx.assign(static_cast<size_t>(nkeys) * 2 * kLanes, 0.0);
 }
 
 // The quad probe's ESS bound in lane j: b1 = sum x ur, b2 = sum x^2 ur (the
@@ -230,16 +245,19 @@ void CandidateScreen::bounded_max(const std::vector<int>* lp, double* zmax) {
   const int* p2 = lp[2].data();
   const int* p3 = lp[3].data();
   static_assert(L == 4, "bounded_max reads four lanes' permutations");
-  for (auto& b : bprobes) std::fill(b.acc.begin(), b.acc.end(), 0.0);
+  std::fill(ka.begin(), ka.end(), 0.0), std::fill(kaw.begin(), kaw.end(), 0.0), std::fill(kx.begin(), kx.end(), 0.0);
   const double* urw = bws >= 0 ? probes[bprobes[bws].j].urw.data() : nullptr;
   const double* uw2 = bws >= 0 ? probes[bprobes[bws].j].uw2.data() : nullptr;
   const double* wl1 = bwl >= 0 ? probes[bprobes[bwl].j].urw.data() : nullptr;
   const double* wl2 = bwl >= 0 ? probes[bprobes[bwl].j].uw2.data() : nullptr;
-  double wb[L] = {}, wa[L] = {}, A[kMaxLevels * L], AW[2 * kMaxLevels * L];
+  double wb[L] = {}, wa[L] = {};
+  // The rows' terms summed per key (tests alike in every probe's stratum),
+  // then the keys' sums per probe and stratum.
   for (size_t gi = 0; gi < groups.size(); ++gi) {
     const size_t u0 = static_cast<size_t>(gfirst[gi]), u1 = u0 + static_cast<size_t>(gsize[gi]);
-    std::fill(A, A + nlev * L, 0.0);
-    if (wl2) std::fill(AW, AW + 2 * nlev * L, 0.0);
+    const size_t k = static_cast<size_t>(gkey[gi]);
+    double* A = ka.data() + k * nlev * L;
+    double* AW = wl2 ? kaw.data() + k * nlev * 2 * L : nullptr;
     double x1[L] = {}, x2[L] = {};
     for (size_t u = u0; u < u1; ++u) {
       const double r = r0[u];
@@ -261,19 +279,28 @@ void CandidateScreen::bounded_max(const std::vector<int>* lp, double* zmax) {
       if (urw)
         for (int j = 0; j < L; ++j) wb[j] += x[j] * urw[u], wa[j] += x[j] * x[j] * uw2[u];
     }
-    for (auto& b : bprobes) {
-      const ProbeDef& p = probes[b.j];
-      const size_t s = static_cast<size_t>(b.gstratum[gi]);
+    for (int j = 0; j < L; ++j) kx[k * 2 * L + j] += x1[j], kx[(k * 2 + 1) * L + j] += x2[j];
+  }
+  const size_t nb = bprobes.size();
+  for (size_t i = 0; i < nb; ++i) {
+    BoundProbe& b = bprobes[i];
+    const ProbeDef& p = probes[b.j];
+    std::fill(b.acc.begin(), b.acc.end(), 0.0);
+    for (size_t k = 0; k < static_cast<size_t>(nkeys); ++k) {
+      const size_t s = static_cast<size_t>(kstratum[k * nb + i]);
       if (p.shape == Shape::levels) {
         double* d = b.acc.data() + s * nlev * L;
-        for (int k = 0; k < nlev * L; ++k) d[k] += A[k];
+        const double* A = ka.data() + k * nlev * L;
+        for (int q = 0; q < nlev * L; ++q) d[q] += A[q];
       } else if (p.shape == Shape::slopes) {
-        for (int j = 0; j < L; ++j) b.acc[s * L + j] += x1[j];
+        for (int j = 0; j < L; ++j) b.acc[s * L + j] += kx[k * 2 * L + j];
       } else if (p.shape == Shape::quad) {
-        for (int j = 0; j < L; ++j) b.acc[s * 2 * L + j] += x1[j], b.acc[(s * 2 + 1) * L + j] += x2[j];
+        for (int j = 0; j < L; ++j)
+          b.acc[s * 2 * L + j] += kx[k * 2 * L + j], b.acc[(s * 2 + 1) * L + j] += kx[(k * 2 + 1) * L + j];
       } else if (p.shape == Shape::wlevels) {
         double* d = b.acc.data() + s * nlev * 2 * L;
-        for (int k = 0; k < nlev * 2 * L; ++k) d[k] += AW[k];
+        const double* AW = kaw.data() + k * nlev * 2 * L;
+        for (int q = 0; q < nlev * 2 * L; ++q) d[q] += AW[q];
       }
     }
   }
