@@ -250,36 +250,44 @@ void CandidateScreen::bounded_max(const std::vector<int>* lp, double* zmax) {
   const double* uw2 = bws >= 0 ? probes[bprobes[bws].j].uw2.data() : nullptr;
   const double* wl1 = bwl >= 0 ? probes[bprobes[bwl].j].urw.data() : nullptr;
   const double* wl2 = bwl >= 0 ? probes[bprobes[bwl].j].uw2.data() : nullptr;
-  double wb[L] = {}, wa[L] = {};
+  // Two lanes to a vector (GCC's vector extension: the same operations on
+  // each lane as in scalar code; SSE2 keeps these sums in registers).
+  typedef double v2 __attribute__((vector_size(16)));
+  typedef double v2u __attribute__((vector_size(16), aligned(8)));  // (at any double's address)
+  v2 wb[2] = {}, wa[2] = {};
   // The rows' terms summed per key (tests alike in every probe's stratum),
   // then the keys' sums per probe and stratum.
   for (size_t gi = 0; gi < groups.size(); ++gi) {
     const size_t u0 = static_cast<size_t>(gfirst[gi]), u1 = u0 + static_cast<size_t>(gsize[gi]);
     const size_t k = static_cast<size_t>(gkey[gi]);
     double* A = ka.data() + k * nlev * L;
+    // the wlevels probe's per-level sums of urw and uw2, side by side: (level, lane) pairs
     double* AW = wl2 ? kaw.data() + k * nlev * 2 * L : nullptr;
-    double x1[L] = {}, x2[L] = {};
+    v2 x1[2] = {}, x2[2] = {};
     for (size_t u = u0; u < u1; ++u) {
       const double r = r0[u];
       // lane j's value of unit u: the unit its permutation puts there
       const int v[L] = {p0[u], p1[u], p2[u], p3[u]};
-      double x[L];
-      int lv[L];
-      for (int j = 0; j < L; ++j) x[j] = xz[v[j]], lv[j] = xl[v[j]];
-      for (int j = 0; j < L; ++j) A[lv[j] * L + j] += r, x1[j] += x[j] * r;
+      const v2 x[2] = {{xz[v[0]], xz[v[1]]}, {xz[v[2]], xz[v[3]]}};
+      const int lv[L] = {xl[v[0]], xl[v[1]], xl[v[2]], xl[v[3]]};
+      for (int j = 0; j < L; ++j) A[lv[j] * L + j] += r;
+      const v2 rr = {r, r};
+      for (int h = 0; h < 2; ++h) x1[h] += x[h] * rr;
       if (quad)
-        for (int j = 0; j < L; ++j) x2[j] += x[j] * x[j] * r;
-      if (wl2) {  // per level: the wlevels probe's sums of urw and uw2
-        const double w1 = wl1[u], w2 = wl2[u];
+        for (int h = 0; h < 2; ++h) x2[h] += x[h] * x[h] * rr;
+      if (wl2) {
+        const v2 w = {wl1[u], wl2[u]};
         for (int j = 0; j < L; ++j) {
-          double* a = AW + static_cast<size_t>(lv[j]) * 2 * L + j;
-          a[0] += w1, a[L] += w2;
+          v2u* a = reinterpret_cast<v2u*>(AW + (static_cast<size_t>(lv[j]) * L + j) * 2);
+          *a += w;
         }
       }
-      if (urw)
-        for (int j = 0; j < L; ++j) wb[j] += x[j] * urw[u], wa[j] += x[j] * x[j] * uw2[u];
+      if (urw) {
+        const v2 w1 = {urw[u], urw[u]}, w2 = {uw2[u], uw2[u]};
+        for (int h = 0; h < 2; ++h) wb[h] += x[h] * w1, wa[h] += x[h] * x[h] * w2;
+      }
     }
-    for (int j = 0; j < L; ++j) kx[k * 2 * L + j] += x1[j], kx[(k * 2 + 1) * L + j] += x2[j];
+    for (int j = 0; j < L; ++j) kx[k * 2 * L + j] += x1[j / 2][j % 2], kx[(k * 2 + 1) * L + j] += x2[j / 2][j % 2];
   }
   const size_t nb = bprobes.size();
   for (size_t i = 0; i < nb; ++i) {
@@ -300,7 +308,9 @@ void CandidateScreen::bounded_max(const std::vector<int>* lp, double* zmax) {
       } else if (p.shape == Shape::wlevels) {
         double* d = b.acc.data() + s * nlev * 2 * L;
         const double* AW = kaw.data() + k * nlev * 2 * L;
-        for (int q = 0; q < nlev * 2 * L; ++q) d[q] += AW[q];
+        for (int l = 0; l < nlev; ++l)
+          for (int j = 0; j < L; ++j)
+            d[l * 2 * L + j] += AW[(l * L + j) * 2], d[l * 2 * L + L + j] += AW[(l * L + j) * 2 + 1];
       }
     }
   }
@@ -340,7 +350,8 @@ void CandidateScreen::bounded_max(const std::vector<int>* lp, double* zmax) {
         }
     } else {  // wslope: b^2 / a when a > 1e-12
       for (int j = 0; j < L; ++j) {
-        const double alo = wa[j] * (1 - b.arel), ahi = wa[j] * (1 + b.arel), t = std::abs(wb[j]) + b.eb;
+        const double wa_j = wa[j / 2][j % 2], alo = wa_j * (1 - b.arel), ahi = wa_j * (1 + b.arel),
+                     t = std::abs(wb[j / 2][j % 2]) + b.eb;
         ess[j] = ahi <= 1e-12 ? 0.0 : alo <= 1e-12 ? INFINITY : t * t / alo;
       }
     }
