@@ -8,9 +8,10 @@
 // far below T, and each cost a pass per probe over every row.  Here, for a
 // row-level candidate permuted within tests (every test a run of rows, every
 // probe's stratum constant within a test), one pass per permutation sums per
-// test and level the raw residual r0 (and x r0, and the scaled probe's sums),
-// from which every levels probe (fixed counts), slopes probe and the scaled
-// slope follow with O(tests x levels) work (a pooled levels probe, its residual
+// key (the tests alike in every probe's stratum) and level the raw residual r0
+// (and x r0, and the scaled probe's sums), from which every levels probe (fixed
+// counts), slopes probe and the scaled slope follow with O(keys x levels) work
+// per probe (a pooled levels probe, its residual
 // centred per block first, with the block means' sum per cell taken out: the
 // same under every permutation).  These sums differ from the exact
 // ones only by rounding, and each is given a bound on that difference:
