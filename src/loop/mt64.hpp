@@ -30,6 +30,18 @@ class Mt64 {
     if (p_ >= kN) refill();
     return y_[p_++];
   }
+  /// How many outputs can be taken at once (at least 1: refills when none is
+  /// left, as operator() would before its draw), and the next n <= that many,
+  /// in order: take(n)[t] is what the t-th of n calls of operator() returns.
+  std::size_t available() {
+    if (p_ >= kN) refill();
+    return kN - p_;
+  }
+  const std::uint64_t* take(std::size_t n) {
+    const std::uint64_t* y = y_ + p_;
+    p_ += n;
+    return y;
+  }
 
  private:
   static constexpr std::size_t kN = 312;

@@ -49,7 +49,11 @@ inline double predict_row(const Design& d, const Fit& f, const Layout& L, const 
   const double bend_ref = f.b0[r.pin] + f.b1[r.pin] * r.fref + bend_x;
   for (int k = 0; k < iters; ++k) {  // the map follows the mean tension (Eq. 2.2), friction included
     const double p = analysis::pressure_at_tension(r.pw_ref, r.fback, bend, ff, r.fref, bend_ref);  // map_pressure
-    mu = (mu0 + t.a1 * p) * t.factor * t.pinf;
+    // Without a pressure term (a1 = +-0) and with p finite, a1 p is +-0 and
+    // mu0 + a1 p is mu0 itself unless mu0 is zero: the same mu without waiting
+    // on p's division (p still decides the other cases, as written).
+    if (iters == 1 && std::isfinite(p) && mu0 != 0) mu = mu0 * t.factor * t.pinf;
+    else mu = (mu0 + t.a1 * p) * t.factor * t.pinf;
     ff = analysis::friction_from_mu(mu, r.fback, kWrapRad);
   }
   if (mu_out) *mu_out = mu;

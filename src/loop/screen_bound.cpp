@@ -8,9 +8,10 @@
 // far below T, and each cost a pass per probe over every row.  Here, for a
 // row-level candidate permuted within tests (every test a run of rows, every
 // probe's stratum constant within a test), one pass per permutation sums per
-// test and level the raw residual r0 (and x r0, and the scaled probe's sums),
-// from which every levels probe (fixed counts), slopes probe and the scaled
-// slope follow with O(tests x levels) work (a pooled levels probe, its residual
+// key (the tests alike in every probe's stratum) and level the raw residual r0
+// (and x r0, and the scaled probe's sums), from which every levels probe (fixed
+// counts), slopes probe and the scaled slope follow with O(keys x levels) work
+// per probe (a pooled levels probe, its residual
 // centred per block first, with the block means' sum per cell taken out: the
 // same under every permutation).  These sums differ from the exact
 // ones only by rounding, and each is given a bound on that difference:
@@ -32,6 +33,7 @@
 // and the observed statistic keep the exact passes (their values are written).
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "loop/screen_candidate.hpp"
 
@@ -192,6 +194,20 @@ void CandidateScreen::setup_bounds() {
     bprobes.push_back(std::move(b));
   }
   bounded = !bprobes.empty();
+  // The keys: tests alike in every bounded probe's stratum, in order of first appearance.
+  const size_t nb = bprobes.size();
+  gkey.assign(groups.size(), 0), kstratum.clear(), nkeys = 0;
+  std::map<std::vector<int>, int> keys;
+  std::vector<int> key(nb);
+  for (size_t gi = 0; gi < groups.size() && bounded; ++gi) {
+    for (size_t i = 0; i < nb; ++i) key[i] = bprobes[i].gstratum[gi];
+    const auto [it, added] = keys.emplace(key, nkeys);
+    if (added) kstratum.insert(kstratum.end(), key.begin(), key.end()), ++nkeys;
+    gkey[gi] = it->second;
+  }
+  ka.assign(static_cast<size_t>(nkeys) * nlev * kLanes, 0.0);
+  kaw.assign(bwl >= 0 ? static_cast<size_t>(nkeys) * nlev * 2 * kLanes : 0, 0.0);
+  kx.assign(static_cast<size_t>(nkeys) * 2 * kLanes, 0.0);
 }
 
 // The quad probe's ESS bound in lane j: b1 = sum x ur, b2 = sum x^2 ur (the
@@ -230,50 +246,72 @@ void CandidateScreen::bounded_max(const std::vector<int>* lp, double* zmax) {
   const int* p2 = lp[2].data();
   const int* p3 = lp[3].data();
   static_assert(L == 4, "bounded_max reads four lanes' permutations");
-  for (auto& b : bprobes) std::fill(b.acc.begin(), b.acc.end(), 0.0);
+  std::fill(ka.begin(), ka.end(), 0.0), std::fill(kaw.begin(), kaw.end(), 0.0), std::fill(kx.begin(), kx.end(), 0.0);
   const double* urw = bws >= 0 ? probes[bprobes[bws].j].urw.data() : nullptr;
   const double* uw2 = bws >= 0 ? probes[bprobes[bws].j].uw2.data() : nullptr;
   const double* wl1 = bwl >= 0 ? probes[bprobes[bwl].j].urw.data() : nullptr;
   const double* wl2 = bwl >= 0 ? probes[bprobes[bwl].j].uw2.data() : nullptr;
-  double wb[L] = {}, wa[L] = {}, A[kMaxLevels * L], AW[2 * kMaxLevels * L];
+  // Two lanes to a vector (GCC's vector extension: the same operations on
+  // each lane as in scalar code; SSE2 keeps these sums in registers).
+  typedef double v2 __attribute__((vector_size(16)));
+  typedef double v2u __attribute__((vector_size(16), aligned(8)));  // (at any double's address)
+  v2 wb[2] = {}, wa[2] = {};
+  // The rows' terms summed per key (tests alike in every probe's stratum),
+  // then the keys' sums per probe and stratum.
   for (size_t gi = 0; gi < groups.size(); ++gi) {
     const size_t u0 = static_cast<size_t>(gfirst[gi]), u1 = u0 + static_cast<size_t>(gsize[gi]);
-    std::fill(A, A + nlev * L, 0.0);
-    if (wl2) std::fill(AW, AW + 2 * nlev * L, 0.0);
-    double x1[L] = {}, x2[L] = {};
+    const size_t k = static_cast<size_t>(gkey[gi]);
+    double* A = ka.data() + k * nlev * L;
+    // the wlevels probe's per-level sums of urw and uw2, side by side: (level, lane) pairs
+    double* AW = wl2 ? kaw.data() + k * nlev * 2 * L : nullptr;
+    v2 x1[2] = {}, x2[2] = {};
     for (size_t u = u0; u < u1; ++u) {
       const double r = r0[u];
       // lane j's value of unit u: the unit its permutation puts there
       const int v[L] = {p0[u], p1[u], p2[u], p3[u]};
-      double x[L];
-      int lv[L];
-      for (int j = 0; j < L; ++j) x[j] = xz[v[j]], lv[j] = xl[v[j]];
-      for (int j = 0; j < L; ++j) A[lv[j] * L + j] += r, x1[j] += x[j] * r;
+      const v2 x[2] = {{xz[v[0]], xz[v[1]]}, {xz[v[2]], xz[v[3]]}};
+      const int lv[L] = {xl[v[0]], xl[v[1]], xl[v[2]], xl[v[3]]};
+      for (int j = 0; j < L; ++j) A[lv[j] * L + j] += r;
+      const v2 rr = {r, r};
+      for (int h = 0; h < 2; ++h) x1[h] += x[h] * rr;
       if (quad)
-        for (int j = 0; j < L; ++j) x2[j] += x[j] * x[j] * r;
-      if (wl2) {  // per level: the wlevels probe's sums of urw and uw2
-        const double w1 = wl1[u], w2 = wl2[u];
+        for (int h = 0; h < 2; ++h) x2[h] += x[h] * x[h] * rr;
+      if (wl2) {
+        const v2 w = {wl1[u], wl2[u]};
         for (int j = 0; j < L; ++j) {
-          double* a = AW + static_cast<size_t>(lv[j]) * 2 * L + j;
-          a[0] += w1, a[L] += w2;
+          v2u* a = reinterpret_cast<v2u*>(AW + (static_cast<size_t>(lv[j]) * L + j) * 2);
+          *a += w;
         }
       }
-      if (urw)
-        for (int j = 0; j < L; ++j) wb[j] += x[j] * urw[u], wa[j] += x[j] * x[j] * uw2[u];
+      if (urw) {
+        const v2 w1 = {urw[u], urw[u]}, w2 = {uw2[u], uw2[u]};
+        for (int h = 0; h < 2; ++h) wb[h] += x[h] * w1, wa[h] += x[h] * x[h] * w2;
+      }
     }
-    for (auto& b : bprobes) {
-      const ProbeDef& p = probes[b.j];
-      const size_t s = static_cast<size_t>(b.gstratum[gi]);
+    for (int j = 0; j < L; ++j) kx[k * 2 * L + j] += x1[j / 2][j % 2], kx[(k * 2 + 1) * L + j] += x2[j / 2][j % 2];
+  }
+  const size_t nb = bprobes.size();
+  for (size_t i = 0; i < nb; ++i) {
+    BoundProbe& b = bprobes[i];
+    const ProbeDef& p = probes[b.j];
+    std::fill(b.acc.begin(), b.acc.end(), 0.0);
+    for (size_t k = 0; k < static_cast<size_t>(nkeys); ++k) {
+      const size_t s = static_cast<size_t>(kstratum[k * nb + i]);
       if (p.shape == Shape::levels) {
         double* d = b.acc.data() + s * nlev * L;
-        for (int k = 0; k < nlev * L; ++k) d[k] += A[k];
+        const double* A = ka.data() + k * nlev * L;
+        for (int q = 0; q < nlev * L; ++q) d[q] += A[q];
       } else if (p.shape == Shape::slopes) {
-        for (int j = 0; j < L; ++j) b.acc[s * L + j] += x1[j];
+        for (int j = 0; j < L; ++j) b.acc[s * L + j] += kx[k * 2 * L + j];
       } else if (p.shape == Shape::quad) {
-        for (int j = 0; j < L; ++j) b.acc[s * 2 * L + j] += x1[j], b.acc[(s * 2 + 1) * L + j] += x2[j];
+        for (int j = 0; j < L; ++j)
+          b.acc[s * 2 * L + j] += kx[k * 2 * L + j], b.acc[(s * 2 + 1) * L + j] += kx[(k * 2 + 1) * L + j];
       } else if (p.shape == Shape::wlevels) {
         double* d = b.acc.data() + s * nlev * 2 * L;
-        for (int k = 0; k < nlev * 2 * L; ++k) d[k] += AW[k];
+        const double* AW = kaw.data() + k * nlev * 2 * L;
+        for (int l = 0; l < nlev; ++l)
+          for (int j = 0; j < L; ++j)
+            d[l * 2 * L + j] += AW[(l * L + j) * 2], d[l * 2 * L + L + j] += AW[(l * L + j) * 2 + 1];
       }
     }
   }
@@ -313,7 +351,8 @@ void CandidateScreen::bounded_max(const std::vector<int>* lp, double* zmax) {
         }
     } else {  // wslope: b^2 / a when a > 1e-12
       for (int j = 0; j < L; ++j) {
-        const double alo = wa[j] * (1 - b.arel), ahi = wa[j] * (1 + b.arel), t = std::abs(wb[j]) + b.eb;
+        const double wa_j = wa[j / 2][j % 2], alo = wa_j * (1 - b.arel), ahi = wa_j * (1 + b.arel),
+                     t = std::abs(wb[j / 2][j % 2]) + b.eb;
         ess[j] = ahi <= 1e-12 ? 0.0 : alo <= 1e-12 ? INFINITY : t * t / alo;
       }
     }

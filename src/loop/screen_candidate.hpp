@@ -96,6 +96,12 @@ struct CandidateScreen {
   int bws = -1;             // bprobes' wslope, or -1
   bool quad = false;        // a quad probe in bprobes
   int bwl = -1;             // bprobes' wlevels, or -1
+  // The tests by their strata: tests with the same stratum in every bounded
+  // probe share a key (gkey, per test; kstratum[k * bprobes.size() + i]: key
+  // k's stratum in bprobes[i]), and the bounded pass sums per key, not per test.
+  std::vector<int> gkey, kstratum;
+  int nkeys = 0;
+  std::vector<double> ka, kaw, kx;  // per key: level sums (and wlevels'), and x r, x^2 r; by lane
 
   // screen.cpp
   void select_rows();

@@ -46,9 +46,13 @@ void CandidateScreen::flat_groups() {
 // Fisher-Yates within each permutation group.
 inline void CandidateScreen::shuffle(std::vector<int>& p, Mt64& r) const {
   for (size_t gi = 0; gi < groups.size(); ++gi) {
-    if (run[gi]) {
+    if (run[gi]) {  // the draws in blocks of the stream's buffer (the same numbers)
       int* q = p.data() + gfirst[gi];
-      for (size_t k = gsize[gi]; k > 1; --k) std::swap(q[k - 1], q[mod(r(), k)]);
+      for (size_t k = gsize[gi]; k > 1;) {
+        const size_t n = std::min(r.available(), k - 1);
+        const std::uint64_t* y = r.take(n);
+        for (size_t t = 0; t < n; ++t, --k) std::swap(q[k - 1], q[mod(y[t], k)]);
+      }
     } else {
       const auto& g = groups[gi];
       for (size_t k = g.size(); k > 1; --k) std::swap(p[g[k - 1]], p[g[mod(r(), k)]]);

@@ -21,9 +21,11 @@
 //    k = 2..1000 on 0, 1, k-1, k, 2^64-1, 2^63, the multiples of k next to
 //    2^64 and 200 mt19937_64 draws per k.
 //  - Mt64 (the shuffle's random numbers) equals std::mt19937_64 number for
-//    number: 100,000 draws (320 refills) from each of 5 seeds.
+//    number: 100,000 draws (320 refills) from each of 5 seeds; its blocks
+//    (available, take: the shuffle's) too, across refills.
 #define BOOST_TEST_MODULE loop_residuals
 #include <boost/test/unit_test.hpp>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -175,4 +177,27 @@ BOOST_AUTO_TEST_CASE(mt64_is_mt19937_64) {
     for (int j = 0; j < 100000; ++j) bad += mine() != ref();
   }
   BOOST_TEST(bad == 0u);
+}
+
+// The shuffle's blocks (Mt64::available, take) are the same numbers as one
+// call at a time: blocks of 1 to 97 numbers, calls between them, across refills.
+BOOST_AUTO_TEST_CASE(mt64_blocks_are_its_calls) {
+  std::size_t bad = 0, taken = 0;
+  for (std::uint64_t seed : {1ULL, 5489ULL, 52100000ULL + 7919ULL * 5}) {
+    std::mt19937_64 ref(seed);
+    Mt64 mine(seed);
+    for (int b = 0; b < 5000; ++b) {
+      std::size_t want = 1 + static_cast<std::size_t>(b * 37 % 97);
+      while (want > 0) {
+        const std::size_t n = std::min(mine.available(), want);
+        bad += n == 0;
+        const std::uint64_t* y = mine.take(n);
+        for (std::size_t t = 0; t < n; ++t) bad += y[t] != ref();
+        want -= n, taken += n;
+      }
+      if (b % 3 == 0) bad += mine() != ref();
+    }
+  }
+  BOOST_TEST(bad == 0u);
+  BOOST_TEST(taken > 3u * 312u * 100u);  // hundreds of refills crossed
 }
