@@ -165,6 +165,21 @@ v1::RunSpec run_spec(const Config& cfg) {
     throw InputError("--clearance: the punch-die clearance must lie between the blank's 1.0 mm thickness and 10 mm "
                      "(0: the published 1.2 mm)");
   if (spec.through < 3) throw InputError("--through: at least 3 elements through the thickness (issue 19)");
+  // The remaining options, checked here so that a bad value names its option instead of surfacing as an
+  // infinite step duration in the written deck, or as a run that finishes with a meaningless cup.
+  if (!(cfg.stroke > 0.0 && cfg.stroke <= 100.0))  // NaN too
+    throw InputError("--stroke: the punch travel must lie in (0, 100] mm (the full draw is 50 mm)");
+  if (!(cfg.cycles >= 1000.0 && cfg.cycles <= 1e9))
+    throw InputError("--cycles: at least 1000 and at most 1e9 explicit cycles over the stroke");
+  if (!(cfg.ramp >= 0.0 && cfg.ramp <= cfg.stroke))
+    throw InputError("--ramp: the punch's speed ramp must lie between 0 and the stroke [mm]");
+  if (cfg.gap != 0 && !(cfg.gap >= 1.0 && cfg.gap <= 10.0))
+    throw InputError("--gap: the holder-die gap must lie between the blank's 1.0 mm thickness and 10 mm "
+                     "(0: the published 1.04 mm)");
+  if (!(cfg.mu < 0 || cfg.mu <= 1.0))  // < 0: the published value; NaN fails
+    throw InputError("--mu: the Coulomb coefficient must lie in [0, 1] (< 0: the published 0.07)");
+  if (!std::isfinite(cfg.holder_force))
+    throw InputError("--holder-force: expected a finite force [N] (0: the deck's; < 0: the holder fixed at the gap)");
   return spec;
 }
 
