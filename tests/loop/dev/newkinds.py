@@ -27,6 +27,9 @@ any of them):
                   reads the outlet force (1 + g), |g| 1-3 %
     product       delta ~ z1 z2 (two standardized numeric decoys, centred) x
                   (F_out - F_back) / mean: an effect of the product of two columns
+                  (a pure crossover: no main effect of either column alone)
+    product_pos   the same with u1 u2, u = (x - min) / (max - min) in [0, 1]
+                  (a product of two positive quantities: main effects too)
     running_in    a new column sample_no (1..n within the test, file order);
                   delta ~ exp(-(j - 1) / tau), tau 1-3 samples, centred, on
                   (F_out - F_back) / mean
@@ -48,7 +51,7 @@ EFFECT_CLASSES = {"blind": ["level", "smooth", "interaction", "bending", "test-l
 DECOYS = {"blind": ["humidity_pct", "tool_temp_C", "thickness_mm", "lube_film_g_m2"],
           "wild": ["load_cell_temp_C", "pin_temp_F", "ra_strip_um", "blank_thickness_um"]}
 NUISANCE = ["outliers", "spikes", "slipped_grip", "heavy_tail", "hetero", "duplicates", "row_ids", "lab_mu"]
-EFFECTS = ["loadcell_gain", "product", "running_in"]
+EFFECTS = ["loadcell_gain", "product", "product_pos", "running_in"]
 
 
 def read_set(path):
@@ -179,14 +182,17 @@ def perturb(kind, gen, cols, rows, sd, rng):
                 if per[tid] == bad:
                     set_f(i, F[i] * (1 + g))
         truth, k = ["load_cell"], g
-    elif kind == "product":
+    elif kind in ("product", "product_pos"):
         z1, z2 = rng.sample(DECOYS[gen], 2)
         zs = []
         for c in (z1, z2):
             x = [float(r[cols.index(c)]) for r in rows]
             m = sum(x) / n
             s = math.sqrt(sum((v - m) ** 2 for v in x) / n)
-            zs.append([(v - m) / s for v in x])
+            if kind == "product_pos":
+                zs.append([(v - min(x)) / (max(x) - min(x)) for v in x])
+            else:
+                zs.append([(v - m) / s for v in x])
         k = plant([a * b for a, b in zip(*zs)])
         truth = [z1, z2]
     elif kind == "running_in":
