@@ -13,6 +13,7 @@
 #include "core/csv.hpp"
 #include "loop/aliases.hpp"
 #include "loop/forms.hpp"
+#include "loop/response_columns.hpp"
 
 namespace drawbend::loop {
 
@@ -256,6 +257,7 @@ struct LoopSearch {
   JointFit cur_joint;
   std::vector<CandidateResult> last_rank;
   std::vector<Step> steps;
+  std::vector<ResponseColumn> excluded;  // columns computed from the measured forces: not screened
   int round = 0, backfits = 0;
 
   void forward();
@@ -289,7 +291,11 @@ void LoopSearch::forward() {
 // aliases) their forms, add the best; false (and why) when none is added.
 bool LoopSearch::forward_round() {
   progress(o, "round " + std::to_string(round + 1) + ": ranking candidates (held-out RMS " + fmt(cur.rms, 4) + " N)");
-  const auto cands = make_candidates(d, cur.pred);
+  auto cands = make_candidates(d, cur.pred);
+  // Columns computed from the measured forces are not screened (response_columns.hpp).
+  for (const auto& rc : excluded)
+    cands.erase(std::remove_if(cands.begin(), cands.end(), [&](const Candidate& c) { return c.name == rc.name; }),
+                cands.end());
   if (round == 0) res.candidates = cands;
   const auto rank = screen(cands);
   const double thr = o.alpha / std::max<size_t>(1, rank.size());
@@ -532,6 +538,9 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
   const double sigma = res.noise.exact || !std::isfinite(res.noise.sigma_N) ? 0.0 : res.noise.sigma_N;
   progress(o, "base model: cross-validation (" + std::to_string(d.rows.size()) + " rows)");
   LoopSearch s(d, o, res, sigma);
+  s.excluded = response_columns(*d.data);
+  for (const auto& rc : s.excluded)
+    res.response_columns.push_back(rc.name + " (variance left by the forces " + fmt(rc.fraction, 2) + ")");
   for (;;) {  // forward, then backfitting (at most twice) and forward again
     s.forward();
     if (s.steps.empty() || s.backfits >= 2) break;
@@ -591,7 +600,13 @@ std::string summary_json(const LoopResult& r) {
   for (size_t i = 0; i < r.base_terms.size(); ++i) o << (i ? ", " : "") << jstr(r.base_terms[i]);
   o << "],\n  \"base_model_mismatch\": [";
   for (size_t i = 0; i < r.base_mismatch.size(); ++i) o << (i ? ", " : "") << jstr(r.base_mismatch[i]);
-  o << "],\n  \"stopped_because\": " << jstr(r.stopped_because) << "\n}\n";
+  o << "]";
+  if (!r.response_columns.empty()) {  // only when there are any: files without them keep their bytes
+    o << ",\n  \"computed_from_forces\": [";
+    for (size_t i = 0; i < r.response_columns.size(); ++i) o << (i ? ", " : "") << jstr(r.response_columns[i]);
+    o << "]";
+  }
+  o << ",\n  \"stopped_because\": " << jstr(r.stopped_because) << "\n}\n";
   return o.str();
 }
 

@@ -127,6 +127,9 @@ struct LoopResult {
   /// speed, direction, back tension, lubricant, or a column that is a function
   /// of one), "variable -> effect"; not undeclared effects.
   std::vector<std::string> base_terms;
+  /// Extra columns the measured forces determine (response_columns.hpp), not
+  /// screened: "name (variance left by the forces f)".
+  std::vector<std::string> response_columns;
   int undeclared = 0;  ///< steps of class "undeclared variable"
   std::string conclusion;              ///< plain-language conclusion (loop.md opens with it)
   std::string bending;                 ///< bending-force label (every output)

@@ -196,6 +196,12 @@ void evidence_header(std::ostringstream& m, const Design& d, const LoopResult& r
     m << "- Replicate noise: not estimable (no test with 4 or more rows).\n";
   m << "- Rows: " << d.data->rows_read << " read, " << d.data->rows.size() << " used, " << d.data->rows_dropped
     << " dropped (" << d.data->problems.size() << " problems, `tables/problems.csv`).\n";
+  if (!r.response_columns.empty()) {
+    m << "- NOT SCREENED, computed from the measured forces (the forces determine them; they carry the outlet "
+         "force's own noise and would explain any residual; response_columns.hpp):";
+    for (size_t i = 0; i < r.response_columns.size(); ++i) m << (i ? ", " : " ") << r.response_columns[i];
+    m << ".\n";
+  }
   m << "- Base model: " << r.base_model << ".\n- Pressure maps: " << r.maps << ".\n";
   m << "- Held-out errors by grouped cross-validation (" << r.cv_mode << ", " << r.folds.k << " folds).\n";
   for (const auto& n : d.notes) {  // a note that repeats a bullet above (bending force, pressure maps) once only
