@@ -130,5 +130,7 @@ int main(int argc, char** argv) {
   sim::add_fe_options(o, cfg.fe.base, cfg.run_fe, cfg.fe.reuse);
   o.add(cfg.fe.low_mass_scaling, "fe-low-mass-scaling", "mass scaling of the comparison run");
   o.add(cfg.fe.fine_element_length, "fe-fine-element-length", "element length of the convergence runs [mm]");
+  o.range("swift-pin-diameter", 0, 1000, "mm", true).range("fe-low-mass-scaling", 1, 1e9);
+  o.range("fe-fine-element-length", 0, 20, "mm", true);
   return study::run_chapter(ch, argc, argv, [&cfg](study::Chapter& c) { body(c, cfg); });
 }

@@ -44,6 +44,8 @@ int main(int argc, char** argv) {
   o.add(fe.map_variants, "fe-map-variants",
         "run the map variants of the sensitivity study (stiffer penalty, TD curve, finer along; 6 runs)");
   o.add(fe.across_variant, "fe-across-variant", "with --fe-map-variants true: the finer-across-the-width variant too");
+  o.range("fe-fine-element-length", 0, 20, "mm", true, false, true).range("fe-fine-across", 1, 128, "", false, false, true);
+  o.range("fe-stiff-penalty", 0, 1000, "", true);
   return drawbend::study::run_chapter(ch, argc, argv, [&fe](drawbend::study::Chapter& c) {
     using namespace ch5;
     const Inputs in = load_inputs(c);  // 1

@@ -48,6 +48,9 @@ int main(int argc, char** argv) {
                    "seed of generator 1's set 0 in demonstration 5 (heldout_protocol_v6.md's 60100000; 52000000+ to develop)");
   ch.options().add(cfg.heldout2_wild_seed0, "heldout2-wild-seed0",
                    "seed of generator 2's set 0 in demonstration 5 (heldout_protocol_v6.md's 60200000; 55000000+ to develop)");
+  ch.options().range("null-seeds", 1, 10000).range("effect-seeds", 1, 10000).range("permutations", 19, 1e6);
+  ch.options().range("heldout-sets", 1, 10000).range("heldout2-sets", 1, 10000);
+  ch.options().range("heldout-seed0", 1, 2e9).range("heldout2-blind-seed0", 1, 2e9).range("heldout2-wild-seed0", 1, 2e9);
   return drawbend::study::run_chapter(ch, argc, argv, [&cfg](drawbend::study::Chapter& c) {
     using namespace ch7;
     const Thesis t = load_thesis_data(c, cfg);  // 1

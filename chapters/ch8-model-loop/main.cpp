@@ -55,6 +55,7 @@ int main(int argc, char** argv) {
         "false, or auto (as --full-study); 1, 0, -1 also accepted");
   o.add(cfg.cup, "cup", "the cup loop and the 2 x 2 attribution (step 6)");
   o.add(cfg.min_gain, "min-gain", "accept a candidate if the held-out RMS relative error falls by more than this");
+  o.range("fit-pin", 0, 1000, "mm", true).range("min-gain", 0, 1);
   return drawbend::study::run_chapter(ch, argc, argv, [&cfg](drawbend::study::Chapter& c) {
     using namespace ch8;
     const bool numerics = cfg.run_numerics();  // a bad --numerics or --next-candidates fails before any work

@@ -521,5 +521,7 @@ int main(int argc, char** argv) {
   o.add(cfg.clearance, "clearance", "diagnostic run: punch-die clearance [mm] (0: the published 1.2 mm; the die opening, shoulder and face move out)");
   o.add(cfg.yld_set, "yld2004-set", "diagnostic run: the Yld2004-18p variant's parameter set from this TOML (yld2004 = {a, c1, c2}) instead of the fit (empty: the fit)");
   o.add(cfg.voce, "voce", "diagnostic run: the published Voce curve instead of Swift");
+  o.range("core", 1, 64).range("ring", 1, 500).range("through", 3, 32);
+  o.range("holder-force", -1e6, 1e6, "N");  // < 0: the holder fixed at the gap
   return study::run_chapter(ch, argc, argv, [&cfg](study::Chapter& c) { body(c, cfg); });
 }

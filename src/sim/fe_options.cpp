@@ -33,6 +33,9 @@ void add_fe_options(Options& o, DrawBendSpec& base, bool& run_fe, bool& reuse_ru
   o.add(base.bend_inlet_slides, "fe-bend-inlet-slides",
         "bend step with the inlet end sliding under the back tension (true) or clamped as before issue 51 (false, "
         "for reproduction: it pre-stretches the strip ~1.3 %)");
+  // Checked as parsed: a bad value ends the chapter with exit 2 naming the option, before any run.
+  o.range("fe-element-length", 0, 20, "mm", true).range("fe-across", 1, 64).range("fe-through", 1, 32);
+  o.range("fe-mass-scaling", 1, 1e9);
 }
 
 }  // namespace drawbend::sim
