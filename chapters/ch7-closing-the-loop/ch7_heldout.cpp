@@ -3,11 +3,11 @@
 // heldout_protocol.md, 50500000 + i (Config::heldout_seed0); since
 // heldout_protocol_v2.md these are development data.
 // Step 10 (demonstration 5, heldout_protocol_v2.md and
-// heldout_protocol_v2_wild.md; runs 11 and 12 on the seeds of
-// heldout_protocol_v6.md, fixed before any run on them): generator 1 on
-// 60100000 + i and generator 2 ("wild", src/loop/wild_synth.hpp) on
-// 60200000 + i (runs 3-10 used 53100000, 54200000, 57100000, 57200000,
-// 58100000, 58200000, 59100000 and 59200000 + i).
+// heldout_protocol_v2_wild.md; runs 13 and 14 on the seeds of
+// heldout_protocol_v7.md, fixed before any run on them): generator 1 on
+// 60300000 + i and generator 2 ("wild", src/loop/wild_synth.hpp) on
+// 60400000 + i (runs 3-12 used 53100000, 54200000, 57100000, 57200000,
+// 58100000, 58200000, 59100000, 59200000, 60100000 and 60200000 + i).
 // Set i of a study has class classes[i % 6] and noise 3 N when (i / 6) is
 // even, 8 N when odd.  Every set is written as a lab file (write_measured),
 // read back (parse_measured) and given to the loop with the chapter's

@@ -16,7 +16,7 @@ using drawbend::study::Chapter;
 /// heldout_protocol_v2.md and heldout_protocol_v2_wild.md; the null rule of
 /// v4).  Runs 3-10 used 53100000, 54200000, 57100000, 57200000, 58100000,
 /// 58200000, 59100000 and 59200000, development data since.
-constexpr int kHeldout2BlindSeed0 = 60100000, kHeldout2WildSeed0 = 60200000;
+constexpr int kHeldout2BlindSeed0 = 60300000, kHeldout2WildSeed0 = 60400000;
 
 struct Config {
   std::string maps_dir;   ///< FE maps (empty: analytic stand-in, not FE)
