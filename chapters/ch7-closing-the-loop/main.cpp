@@ -45,9 +45,9 @@ int main(int argc, char** argv) {
                    "seed of held-out set 0 (the protocol's 50500000; 1..999 only to debug the generator)");
   ch.options().add(cfg.heldout2_sets, "heldout2-sets", "held-out sets per generator of demonstration 5 (24 quick, 144 full)");
   ch.options().add(cfg.heldout2_blind_seed0, "heldout2-blind-seed0",
-                   "seed of generator 1's set 0 in demonstration 5 (heldout_protocol_v6.md's 60100000; 52000000+ to develop)");
+                   "seed of generator 1's set 0 in demonstration 5 (heldout_protocol_v7.md's 60300000; 52000000+ to develop)");
   ch.options().add(cfg.heldout2_wild_seed0, "heldout2-wild-seed0",
-                   "seed of generator 2's set 0 in demonstration 5 (heldout_protocol_v6.md's 60200000; 55000000+ to develop)");
+                   "seed of generator 2's set 0 in demonstration 5 (heldout_protocol_v7.md's 60400000; 55000000+ to develop)");
   ch.options().range("null-seeds", 1, 10000).range("effect-seeds", 1, 10000).range("permutations", 19, 1e6);
   ch.options().range("heldout-sets", 1, 10000).range("heldout2-sets", 1, 10000);
   ch.options().range("heldout-seed0", 1, 2e9).range("heldout2-blind-seed0", 1, 2e9).range("heldout2-wild-seed0", 1, 2e9);
