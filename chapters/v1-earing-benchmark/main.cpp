@@ -164,7 +164,6 @@ v1::RunSpec run_spec(const Config& cfg) {
   if (cfg.clearance != 0 && !(cfg.clearance >= 1.0 && cfg.clearance <= 10.0))  // NaN too
     throw InputError("--clearance: the punch-die clearance must lie between the blank's 1.0 mm thickness and 10 mm "
                      "(0: the published 1.2 mm)");
-  if (spec.through < 3) throw InputError("--through: at least 3 elements through the thickness (issue 19)");
   // The remaining options, checked here so that a bad value names its option instead of surfacing as an
   // infinite step duration in the written deck, or as a run that finishes with a meaningless cup.
   if (!(cfg.stroke > 0.0 && cfg.stroke <= 100.0))  // NaN too
@@ -521,7 +520,7 @@ int main(int argc, char** argv) {
   o.add(cfg.clearance, "clearance", "diagnostic run: punch-die clearance [mm] (0: the published 1.2 mm; the die opening, shoulder and face move out)");
   o.add(cfg.yld_set, "yld2004-set", "diagnostic run: the Yld2004-18p variant's parameter set from this TOML (yld2004 = {a, c1, c2}) instead of the fit (empty: the fit)");
   o.add(cfg.voce, "voce", "diagnostic run: the published Voce curve instead of Swift");
-  o.range("core", 1, 64).range("ring", 1, 500).range("through", 3, 32);
+  o.range("core", 1, 64).range("ring", 1, 500).range("through", 3, 32);  // through >= 3: issue 19
   o.range("holder-force", -1e6, 1e6, "N");  // < 0: the holder fixed at the gap
   return study::run_chapter(ch, argc, argv, [&cfg](study::Chapter& c) { body(c, cfg); });
 }

@@ -120,21 +120,8 @@ struct CandidateList {
 void extra_columns(const Dataset& data, CandidateList& list) {
   const auto& R = data.rows;
   for (size_t e = 0; e < data.extra_columns.size(); ++e) {
-    bool num = true;
-    for (const auto& s : R) {
-      if (!num) break;  // one text value decides (a throw per row cost ~50,000 instructions)
-      try {
-        size_t used = 0;
-        const double v = std::stod(s.extra[e], &used);
-        if (used != s.extra[e].size() || !std::isfinite(v)) num = false;
-      } catch (...) {
-        if (!s.extra[e].empty()) num = false;
-      }
-    }
-    if (num)
-      list.numeric(data.extra_columns[e], "column", [&](size_t i) {
-        return R[i].extra[e].empty() ? std::nan("") : std::stod(R[i].extra[e]);
-      });
+    if (const auto x = numeric_extra(data, e))
+      list.numeric(data.extra_columns[e], "column", [&x](size_t i) { return (*x)[i]; });
     else
       list.categorical(data.extra_columns[e], "column", [&](size_t i) { return R[i].extra[e]; });
   }

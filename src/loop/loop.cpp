@@ -9,7 +9,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/quote.hpp"
 #include "core/csv.hpp"
 #include "loop/aliases.hpp"
 #include "loop/forms.hpp"
@@ -557,57 +556,6 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
   res.final_fit = s.cur_fit;
   conclude(res, o, s.last_rank);
   return res;
-}
-
-namespace {
-std::string jstr(const std::string& s) { return string_literal(s); }  // a JSON string (core/quote.hpp)
-std::string jnum(double v) { return std::isfinite(v) ? fmt(v, 8) : "null"; }
-}  // namespace
-
-std::string summary_json(const LoopResult& r) {
-  std::ostringstream o;
-  o << "{\n  \"conclusion\": " << jstr(r.conclusion) << ",\n  \"bending\": " << jstr(r.bending)
-    << ",\n  \"noise_N\": " << jnum(r.noise.sigma_N) << ",\n  \"heldout_rms_N\": " << jnum(r.cv.back().rms)
-    << ",\n  \"ratio_to_noise\": " << jnum(r.ratio) << ",\n  \"at_noise_level\": " << (r.at_noise ? "true" : "false")
-    << ",\n  \"base_model\": " << jstr(r.base_model) << ",\n  \"maps\": " << jstr(r.maps)
-    << ",\n  \"cv\": " << jstr(r.cv_mode) << ",\n  \"steps\": [";
-  for (size_t i = 0; i < r.steps.size(); ++i) {
-    const Step& s = r.steps[i];
-    o << (i ? "," : "") << "\n    {\"variable\": " << jstr(s.variable) << ", \"effect\": " << jstr(s.effect)
-      << ", \"p_value\": " << jnum(s.p_value) << ", \"p_permutation\": " << jnum(s.p_permutation)
-      << ", \"threshold\": " << jnum(s.threshold)
-      << ", \"rms_before\": " << jnum(s.rms_before) << ", \"rms_after\": " << jnum(s.rms_after)
-      << ", \"max_before\": " << jnum(s.max_before) << ", \"max_after\": " << jnum(s.max_after)
-      << ", \"class\": " << jstr(s.cls) << ", \"channel\": " << jstr(s.channel)
-      << ", \"contribution_N2\": " << jnum(s.contribution) << ", \"probe\": " << jstr(s.probe)
-      << (s.meaning_note.empty() ? "" : ", \"note\": " + jstr(s.meaning_note))
-      << ", \"aliased_with\": [";
-    for (size_t k = 0; k < s.aliased_with.size(); ++k) o << (k ? ", " : "") << jstr(s.aliased_with[k]);
-    o << "]"
-      << ", \"parameters\": {";
-    for (size_t k = 0; k < s.params.size(); ++k)
-      o << (k ? ", " : "") << jstr(s.params[k].name) << ": {\"value\": " << jnum(s.params[k].value)
-        << ", \"se\": " << jnum(s.params[k].se) << "}";
-    o << "}" << (s.sign.empty() ? "" : ", \"sign\": " + jstr(s.sign)) << "}";
-  }
-  o << (r.steps.empty() ? "" : "\n  ") << "],\n  \"remaining\": [";
-  for (size_t i = 0; i < r.remaining.size(); ++i) o << (i ? ", " : "") << jstr(r.remaining[i]);
-  o << "],\n  \"screened_not_confirmed\": [";
-  for (size_t i = 0; i < r.screened.size(); ++i) o << (i ? ", " : "") << jstr(r.screened[i]);
-  o << "],\n  \"removed_by_backfitting\": [";
-  for (size_t i = 0; i < r.removed.size(); ++i) o << (i ? ", " : "") << jstr(r.removed[i]);
-  o << "],\n  \"undeclared_effects\": " << r.undeclared << ",\n  \"base_model_terms\": [";
-  for (size_t i = 0; i < r.base_terms.size(); ++i) o << (i ? ", " : "") << jstr(r.base_terms[i]);
-  o << "],\n  \"base_model_mismatch\": [";
-  for (size_t i = 0; i < r.base_mismatch.size(); ++i) o << (i ? ", " : "") << jstr(r.base_mismatch[i]);
-  o << "]";
-  if (!r.response_columns.empty()) {  // only when there are any: files without them keep their bytes
-    o << ",\n  \"computed_from_forces\": [";
-    for (size_t i = 0; i < r.response_columns.size(); ++i) o << (i ? ", " : "") << jstr(r.response_columns[i]);
-    o << "]";
-  }
-  o << ",\n  \"stopped_because\": " << jstr(r.stopped_because) << "\n}\n";
-  return o.str();
 }
 
 }  // namespace drawbend::loop

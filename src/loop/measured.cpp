@@ -2,6 +2,7 @@
 #include "loop/measured.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -31,6 +32,18 @@ int Dataset::extra_index(const std::string& name) const {
   for (size_t i = 0; i < extra_columns.size(); ++i)
     if (extra_columns[i] == name) return static_cast<int>(i);
   return -1;
+}
+
+std::optional<std::vector<double>> numeric_extra(const Dataset& d, size_t e) {
+  std::vector<double> x(d.rows.size(), std::nan(""));
+  for (size_t i = 0; i < d.rows.size(); ++i) {
+    const std::string& v = d.rows[i].extra[e];
+    if (v.empty()) continue;
+    char* end = nullptr;
+    x[i] = std::strtod(v.c_str(), &end);  // as std::stod, without a throw per text cell
+    if (end != v.c_str() + v.size() || !std::isfinite(x[i])) return std::nullopt;
+  }
+  return x;
 }
 
 namespace {

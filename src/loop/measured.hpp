@@ -10,6 +10,7 @@
 // column, unparseable number, NaN, ragged row, duplicate row, impossible value)
 // is collected in one pass with file, line and column; rows with a problem are
 // dropped and counted, the others kept.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,11 @@ struct Dataset {
 };
 
 extern const std::vector<std::string> kRequiredColumns;
+
+/// Extra column `e` as numbers, NaN where a cell is empty; nullopt when a
+/// cell holds anything but one finite number (the column is categorical).
+/// The one rule for "numeric column" (the candidates, response_columns).
+std::optional<std::vector<double>> numeric_extra(const Dataset& d, size_t e);
 
 /// Read a data file.  Only an unreadable file throws (InputError); everything
 /// else becomes a Problem.

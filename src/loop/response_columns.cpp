@@ -32,19 +32,13 @@ std::vector<ResponseColumn> response_columns(const Dataset& data) {
   std::vector<ResponseColumn> out;
   const auto& R = data.rows;
   for (size_t e = 0; e < data.extra_columns.size(); ++e) {
-    // Numeric values (empty: missing), per pin; a text value: not numeric.
+    // Numeric values (NaN: missing), the rows with a value per pin.
+    const auto xs = numeric_extra(data, e);
+    if (!xs) continue;
+    const std::vector<double>& x = *xs;
     std::map<double, std::vector<size_t>> by_pin;
-    std::vector<double> x(R.size(), std::nan(""));
-    bool numeric = true;
-    for (size_t i = 0; i < R.size() && numeric; ++i) {
-      const std::string& v = R[i].extra[e];
-      if (v.empty()) continue;
-      char* end = nullptr;
-      x[i] = std::strtod(v.c_str(), &end);
-      if (end != v.c_str() + v.size() || !std::isfinite(x[i])) numeric = false;
-      else if (R[i].outlet_force_N > 0 && R[i].back_tension_N > 0) by_pin[R[i].pin_d_mm].push_back(i);
-    }
-    if (!numeric) continue;
+    for (size_t i = 0; i < R.size(); ++i)
+      if (std::isfinite(x[i]) && R[i].outlet_force_N > 0 && R[i].back_tension_N > 0) by_pin[R[i].pin_d_mm].push_back(i);
     // Varies within some test?
     std::map<std::string, double> first;
     bool varies = false;
