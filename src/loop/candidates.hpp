@@ -80,6 +80,7 @@
 // between tests leaves the partition unchanged, so p = 1 by construction):
 // they are tested as a random effect, a one-way ANOVA F test of the residuals'
 // between-test scatter against the within-test scatter, block-centred.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -105,6 +106,22 @@ struct CvResult {
 };
 
 CvResult cross_validate(const Design& d, const ModelSpec& spec, const Folds& f);
+
+/// Whether a column's levels may each carry a parameter (the screen's per-level
+/// probes, the loop's per-level forms): only when they average at least two
+/// rows each, 2 L <= n (L levels on the n rows with a value).  A per-level probe
+/// or form spends one parameter per level; a level seen in one row only is
+/// fitted exactly by its own parameter (one parameter per row: the row's noise
+/// absorbed, nothing to estimate it against, and a held-out fold never has that
+/// level among its training rows).  With 2 L > n at least 2 L - n levels are
+/// such single rows, and the rows left over the levels' first (n - L, the
+/// within-level degrees of freedom) fall short of the form's L - 1 parameters
+/// as L nears n: a clock time or a per-row id as text, 616 levels in 621 rows,
+/// is not identifiable per level.  With 2 L <= n no level need be a single row
+/// and the replication n - L is at least the L - 1 parameters.  The bound is
+/// the least replication (two rows a level) that identifies every level's
+/// parameter apart from its own row's noise, not a value fitted to a data set.
+inline bool levels_replicated(size_t levels, size_t rows) { return 2 * levels <= rows; }
 
 struct Candidate {
   std::string name, kind;  ///< kind: column, derived, group

@@ -109,7 +109,20 @@ struct FormPlans {
   }
   // A column of the data with 3 or 4 distinct numeric values (levels per group, as a categorical one).
   bool few_levels(const std::set<double>& distinct) const {
-    return distinct.size() >= 3 && distinct.size() <= 4 && d.data->extra_index(c.name) >= 0;
+    return distinct.size() >= 3 && distinct.size() <= 4 && d.data->extra_index(c.name) >= 0 &&
+           replicated(distinct.size());
+  }
+  // 3 to 8 distinct numeric values, replicated: the column's levels as a form.
+  bool some_levels(const std::set<double>& distinct) const {
+    return distinct.size() >= 3 && distinct.size() <= 8 && replicated(distinct.size());
+  }
+  // Per-level forms only for levels of at least two rows on average
+  // (levels_replicated, candidates.hpp: a level of one row is fitted exactly
+  // by its own parameter, not identifiable apart from that row's noise).
+  bool replicated(size_t levels) const {
+    size_t rows = 0;
+    for (double v : c.x) rows += std::isfinite(v) ? 1 : 0;
+    return levels_replicated(levels, rows);
   }
   void categorical(const std::vector<std::string>& bys);
   void numeric(const std::vector<std::string>& bys);
@@ -120,6 +133,7 @@ struct FormPlans {
 
 // A categorical column: its levels, per group of a model input, on the force channel.
 void FormPlans::categorical(const std::vector<std::string>& bys) {
+  if (!replicated(c.levels.size())) return;  // every form below is per level
   add(EffectKind::categorical);
   if (c.levels.size() <= 4)
     for (const auto& by : bys) add(EffectKind::categorical_by, by);
@@ -138,7 +152,7 @@ void FormPlans::numeric(const std::vector<std::string>& bys) {
   std::set<double> distinct;
   for (double v : c.x)
     if (std::isfinite(v)) distinct.insert(v);
-  if (distinct.size() >= 3 && distinct.size() <= 8) add(EffectKind::categorical);
+  if (some_levels(distinct)) add(EffectKind::categorical);
   // A column of the data with 3 or 4 distinct values is also taken as levels
   // per group of a model input, as a categorical one is (a level pattern
   // confined to one pin, speed, direction or lubricant is not linear in x).
@@ -169,7 +183,7 @@ void FormPlans::force_and_bending(const std::set<double>& distinct) {
   }
   if (every_row_numeric && applicable(d, spec, EffectKind::force_offset, c.name)) {
     plans.push_back({{{EffectKind::force_offset, "pin", 1}}});
-    if (distinct.size() >= 3 && distinct.size() <= 8 && d.data->extra_index(c.name) >= 0) {
+    if (some_levels(distinct) && d.data->extra_index(c.name) >= 0) {
       plans.push_back({{{EffectKind::force_offset, "", 0}}});            // levels
       plans.push_back({{{EffectKind::force_offset, "", 0, -1, true}}});  // levels, scaled with the bending force
     }
@@ -194,7 +208,7 @@ void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb) 
   std::set<double> distinct;
   for (double v : c.x)
     if (std::isfinite(v)) distinct.insert(v);
-  const bool levels = c.categorical || (distinct.size() >= 3 && distinct.size() <= 8);
+  const bool levels = c.categorical ? replicated(c.levels.size()) : some_levels(distinct);
   if (levels && d.data->extra_index(c.name) >= 0 && applicable(d, spec, EffectKind::categorical_by, c.name))
     plans.push_back({{{EffectKind::categorical_by, cell_by, 0, cell_group}}});
   if (!c.categorical && applicable(d, spec, EffectKind::generic_linear_by, c.name))

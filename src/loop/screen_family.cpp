@@ -101,6 +101,19 @@ void CandidateScreen::count_dof(ProbeDef& p, Shape shape, int ngroups) const {
 // The family: the shapes on all the rows, scaled with dF/dmu, and per model input.
 void CandidateScreen::build_family() {
   const std::vector<int> none;
+  // A column whose own values are the levels (categorical, or numeric with at
+  // most 8 values) gets no per-level probe when its levels are not replicated
+  // (levels_replicated, candidates.hpp: fewer than two rows a level on
+  // average): such a probe's dof nears the rows', it explains nearly the whole
+  // residual under every permutation and no form of it is identifiable.  A
+  // categorical column is then not probed at all (every probe of it is per level).
+  const bool own_levels = c.categorical || distinct.size() <= 8;
+  if (own_levels && !levels_replicated(distinct.size(), rows.size())) {
+    if (c.categorical) return;
+    add(Shape::quad, distinct.size() >= 4 ? "linear + quadratic" : "linear", none, 1);
+    if (weighted) add(Shape::wslope, "scaled with dF/dmu", none, 1);
+    return;
+  }
   if (c.categorical) add(Shape::levels, "levels", none, 1);
   else {
     add(Shape::quad, distinct.size() >= 4 ? "linear + quadratic" : "linear", none, 1);
