@@ -93,11 +93,21 @@ double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::
     }
     g_row_evals += evals;
   };
-  auto pattern = [&]() {  // nonzero (or NaN) entries of the dense Jacobian, per column
+  // Nonzero (or NaN) entries of the dense Jacobian, per column.  After a
+  // Jacobian made on the structure (use_structure), every entry outside a
+  // column's structural rows is the +0 of the first Jacobian's zeroing, never
+  // written since (see `zeroed`): only those rows are looked at (ascending, as
+  // the full scan finds them), not all n rows of every column.
+  auto pattern = [&]() {
     std::vector<std::vector<int>> s(p);
     for (int j = 0; j < p; ++j)
-      for (int k = 0; k < n; ++k)
-        if (!(J(k, j) == 0)) s[j].push_back(k);
+      if (use_structure) {
+        for (int k : structure[j])
+          if (!(J(k, j) == 0)) s[j].push_back(k);
+      } else {
+        for (int k = 0; k < n; ++k)
+          if (!(J(k, j) == 0)) s[j].push_back(k);
+      }
     return s;
   };
   converged = false;

@@ -4,6 +4,7 @@
 // predict_row.hpp; the effects: effect_rules.hpp.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "analysis/rope.hpp"
 #include "core/csv.hpp"
@@ -403,6 +404,12 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec) {
   Fit g = f;
   Eigen::VectorXd last, tf;
   auto at = [&](const Eigen::VectorXd& t) {
+    // The same bits as the last t (one memcmp, not p compares per row call):
+    // nothing to set, as the update below would write the bits already there
+    // (and a t that differs in bits takes the compare as before).
+    if (last.size() == t.size() && t.size() > 0 &&
+        std::memcmp(last.data(), t.data(), sizeof(double) * static_cast<size_t>(t.size())) == 0)
+      return;
     if (last.size() != t.size() || !(last.array() == t.array()).all()) {
       last = t;
       for (size_t q = 0; q < pins.size(); ++q) {
