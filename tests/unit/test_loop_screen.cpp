@@ -19,6 +19,11 @@
 //    modifiers, screened on 1, 2 and 3 threads: every result field is
 //    bit-for-bit the same (each candidate has its own random streams and its
 //    own slot in the result; issue 50 item 6).
+//  - Levels of about one row each (issue 50 item 6, levels_replicated): a
+//    row-level categorical column with 110 levels in 120 rows (a clock time
+//    as text, ten levels shared by two rows) gets no per-level probe (dof 0,
+//    p 1, not significant); the same rows with 60 levels of two rows each
+//    (2 L = n, the bound) are probed.
 //  - Bending channel: noise-free rows with F_B = b0 + b1 F + c z on every row
 //    (rotating and fixed) and constant mu: the fit with a bending_linear effect
 //    on z recovers mu exactly and leaves rss ~ 0; without it rss > 0.
@@ -199,6 +204,33 @@ BOOST_AUTO_TEST_CASE(bounded_pass_changes_no_result) {
   }
   BOOST_TEST(significant >= 4);  // both kinds of candidates compared, with and without the pooled probes
   BOOST_TEST(not_significant >= 4);
+}
+
+BOOST_AUTO_TEST_CASE(levels_of_one_row_each_not_probed) {
+  BOOST_TEST(levels_replicated(60, 120));
+  BOOST_TEST(!levels_replicated(61, 120));
+  BOOST_TEST(!levels_replicated(616, 621));
+  const int tests = 30, rows = 4;
+  const Folds f = one_block(tests, rows);
+  Candidate clock{"clock", "column", true, false, {}, {}, ""}, pairs{"pair", "column", true, false, {}, {}, ""};
+  std::vector<int> pin;
+  std::vector<double> r;
+  for (int i = 0; i < tests * rows; ++i) {
+    clock.x.push_back(i % 12 == 1 ? i - 1 : i);  // 110 levels, ten shared with the row before (same test)
+    pairs.x.push_back(i / 2);                    // 60 levels, two rows each (same test)
+    pin.push_back(i / rows % 3);
+    r.push_back(std::sin(2.1 * i) + (i % 12 < 2 ? 1.5 : 0.0));
+  }
+  ScreenContext ctx;
+  ctx.modifiers = {{"pin", pin}};
+  ctx.mu_weight.assign(pin.size(), 1.0);
+  for (size_t i = 0; i < pin.size(); ++i) ctx.mu_weight[i] = 1 + 0.1 * pin[i];
+  const auto a = rank_candidates({clock}, r, f, 400, 5, 0.05, &ctx);
+  BOOST_TEST(a[0].dof == 0);
+  BOOST_TEST(a[0].p_value == 1.0);
+  BOOST_TEST(!a[0].significant);
+  const auto b = rank_candidates({pairs}, r, f, 400, 5, 0.05, &ctx);
+  BOOST_TEST(b[0].dof > 0);
 }
 
 BOOST_AUTO_TEST_CASE(simplest_within_one_se) {
