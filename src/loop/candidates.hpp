@@ -19,6 +19,9 @@
 // variable:
 //   main      categorical: one mean per level; numeric: z, plus z^2 with 4+
 //             distinct values;
+//             (no probe per level of a column whose levels average fewer than
+//             two rows, levels_replicated below: a categorical such column,
+//             a clock time or an id as text, is then not probed at all)
 //   levels    numeric with 3-8 distinct values: one mean per value (a peak at
 //             a middle level has no linear part); more values: quantile bins,
 //             8 when the variable has 80 or more units (rows, or tests for a

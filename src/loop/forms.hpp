@@ -29,7 +29,9 @@
 //              the base model does not use (speed when continuous) gets the
 //              generic forms too.
 // A numeric column with empty cells gets these forms with the empty rows at
-// the column's mean (Design::values).
+// the column's mean (Design::values).  No per-level form (group factor, per
+// group, force-channel levels, one-cell levels) for a column whose levels
+// average fewer than two rows (levels_replicated, candidates.hpp).
 // Each form is added to the current model and must pass three gates as before:
 // the nested-model F test at the Bonferroni threshold, a lower held-out RMS,
 // and the minimum effect.  Among the forms that pass, the one kept is the
