@@ -178,8 +178,10 @@ struct ScreenContext {
 std::vector<Candidate> pair_candidates(const std::vector<Candidate>& cands);
 int pair_families(const std::vector<Candidate>& pairs);
 /// The pair families' screen: one result per family (its strongest pair), a
-/// permutation test of the family's maximum against thr.
-std::vector<CandidateResult> rank_pairs(const std::vector<Candidate>& pairs, const std::vector<double>& resid,
+/// permutation test of the family's maximum against thr; cands holds the
+/// pairs' columns (each product is made orthogonal to its two columns).
+std::vector<CandidateResult> rank_pairs(const std::vector<Candidate>& pairs, const std::vector<Candidate>& cands,
+                                        const std::vector<double>& resid,
                                         const Folds& f, int permutations, std::uint64_t seed, double thr,
                                         const ScreenContext* ctx);
 

@@ -309,7 +309,7 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
   for (size_t ci = 0; ci < cands.size(); ++ci)
     out[ci] = screen_candidate(cands[ci], ci, resid, f, ctx, nblocks, permutations, seed, thr);
   if (nfam > 0)  // their own streams, after every candidate's (screen_pairs.cpp)
-    for (auto& r : rank_pairs(*pairs, resid, f, permutations, seed + 7919ULL * cands.size(), thr, ctx))
+    for (auto& r : rank_pairs(*pairs, cands, resid, f, permutations, seed + 7919ULL * cands.size(), thr, ctx))
       out.push_back(std::move(r));
   std::stable_sort(out.begin(), out.end(), [](const CandidateResult& a, const CandidateResult& b) {
     if (a.significant != b.significant) return a.significant;

@@ -16,7 +16,11 @@
 //           times a row-level one's test mean: the between-test part of a
 //           mixed pair, which the rows family cannot see), centred per block.
 // Each pair's statistic is Z = (sum_u a_u p_u)^2 / E, a the (dF/dmu weighted)
-// residual per unit, p the pair's product per unit, both centred per group;
+// residual per unit, p the pair's product per unit, both centred per group,
+// p made orthogonal to the two columns themselves (weighted by the unit's sum
+// of squared dF/dmu), so a main effect of either column does not pass for a
+// pair (without it, Chapter 7's synthetic study took a pair of the true column
+// and a decoy, or a decoy pair, as steps on 3 of 150 effect sets);
 // E is its exact mean under the permutation, sum_g (sum p^2)(sum a^2) / (m_g - 1),
 // so every pair is on the chi^2(1) scale whatever its spread.  The family's
 // statistic is the largest Z; its permutation p-value (the sequential
@@ -86,32 +90,67 @@ void units(PairFamily& F, bool tests, const std::vector<double>& resid, const Fo
   F.U = F.rows.size();
 }
 
-// Residual and products per unit; the exact permutation means.
-void fill(PairFamily& F, const std::vector<Candidate>& pc, const std::vector<double>& resid,
-          const std::vector<double>& w) {
+// A column per unit (tests: its mean over the test's rows), centred per group;
+// a missing value adds nothing (the value at the centre of its group).
+std::vector<double> unit_values(const PairFamily& F, const std::vector<double>& x) {
+  const size_t U = F.U;
+  std::vector<double> v(U, 0.0), has(U, 0.0);
+  for (size_t u = 0; u < U; ++u) {
+    double sx = 0, k = 0;
+    for (int i : F.rows[u])
+      if (std::isfinite(x[i])) sx += x[i], k += 1;
+    if (k > 0) v[u] = sx / k, has[u] = 1;
+  }
+  for (const auto& g : F.members) {
+    double m = 0, k = 0;
+    for (int u : g) m += v[u] * has[u], k += has[u];
+    if (k > 0) m /= k;
+    for (int u : g) v[u] = has[u] ? v[u] - m : 0.0;
+  }
+  return v;
+}
+
+// v made orthogonal to the columns m (in turn, Gram-Schmidt) in the metric q:
+// sum_u q_u v_u m_u = 0 for each.  A main effect of either column in the
+// residual (a_u ~ q_u m_u: the effect on mu is scaled by dF/dmu, and a is the
+// dF/dmu-weighted residual) then adds nothing to the pair's observed statistic.
+void orthogonal_to(std::vector<double>& v, std::vector<std::vector<double>> m, const std::vector<double>& q) {
+  for (size_t k = 0; k < m.size(); ++k) {
+    for (size_t l = 0; l < k; ++l) {  // m_k orthogonal to the earlier (already orthogonal) ones
+      double num = 0, den = 0;
+      for (size_t u = 0; u < v.size(); ++u) num += q[u] * m[k][u] * m[l][u], den += q[u] * m[l][u] * m[l][u];
+      if (den > 0)
+        for (size_t u = 0; u < v.size(); ++u) m[k][u] -= num / den * m[l][u];
+    }
+  }
+  for (const auto& mk : m) {
+    double num = 0, den = 0, vv = 0;
+    for (size_t u = 0; u < v.size(); ++u) num += q[u] * v[u] * mk[u], den += q[u] * mk[u] * mk[u], vv += q[u] * v[u] * v[u];
+    if (den > 1e-12 * vv)  // a column with no spread in this family (a test-level one centred per test)
+      for (size_t u = 0; u < v.size(); ++u) v[u] -= num / den * mk[u];
+  }
+}
+
+// Residual and products per unit (the products orthogonal to their two
+// columns); the exact permutation means.
+void fill(PairFamily& F, const std::vector<Candidate>& pc, const std::vector<Candidate>& cands,
+          const std::vector<double>& resid, const std::vector<double>& w) {
   const size_t U = F.U, J = F.pairs.size();
   F.a.assign(U, 0.0);
+  std::vector<double> q(U, 0.0);  // per unit: the sum of squared weights
   for (size_t u = 0; u < U; ++u)
-    for (int i : F.rows[u]) F.a[u] += (w.empty() ? 1.0 : w[i]) * resid[i];
+    for (int i : F.rows[u]) F.a[u] += (w.empty() ? 1.0 : w[i]) * resid[i], q[u] += w.empty() ? 1.0 : w[i] * w[i];
   centre(F.a, F.members);
   F.p.assign(J * U, 0.0);
   F.e.assign(J, 0.0);
   for (size_t j = 0; j < J; ++j) {
-    const std::vector<double>& x = pc[F.pairs[j]].x;
-    // A missing value adds nothing (the product at the centre of its group).
-    std::vector<double> v(U, 0.0), has(U, 0.0);
-    for (size_t u = 0; u < U; ++u) {  // tests: the product's mean over the test's rows
-      double sx = 0, k = 0;
-      for (int i : F.rows[u])
-        if (std::isfinite(x[i])) sx += x[i], k += 1;
-      if (k > 0) v[u] = sx / k, has[u] = 1;
-    }
-    for (const auto& g : F.members) {
-      double m = 0, k = 0;
-      for (int u : g) m += v[u] * has[u], k += has[u];
-      if (k > 0) m /= k;
-      for (int u : g) v[u] = has[u] ? v[u] - m : 0.0;
-    }
+    const Candidate& pj = pc[F.pairs[j]];
+    std::vector<double> v = unit_values(F, pj.x);
+    std::vector<std::vector<double>> mains;
+    for (const auto& name : pj.pair)
+      for (const auto& c : cands)
+        if (c.name == name) mains.push_back(unit_values(F, c.x));
+    orthogonal_to(v, mains, q);
     std::copy(v.begin(), v.end(), F.p.begin() + j * U);
     double e = 0;
     for (const auto& g : F.members) {
@@ -245,7 +284,8 @@ int pair_families(const std::vector<Candidate>& pairs) {
   return static_cast<int>(rows) + (pairs.empty() ? 0 : 1);
 }
 
-std::vector<CandidateResult> rank_pairs(const std::vector<Candidate>& pairs, const std::vector<double>& resid,
+std::vector<CandidateResult> rank_pairs(const std::vector<Candidate>& pairs, const std::vector<Candidate>& cands,
+                                        const std::vector<double>& resid,
                                         const Folds& f, int permutations, std::uint64_t seed, double thr,
                                         const ScreenContext* ctx) {
   std::vector<CandidateResult> out;
@@ -257,7 +297,7 @@ std::vector<CandidateResult> rank_pairs(const std::vector<Candidate>& pairs, con
       if (tests || !pairs[j].test_level) F.pairs.push_back(j);
     if (F.pairs.empty()) continue;
     units(F, tests, resid, f);
-    fill(F, pairs, resid, w);
+    fill(F, pairs, cands, resid, w);
     out.push_back(screen_family(F, pairs, tests, resid, w, f, permutations, seed + 7919ULL * (1 + tests), thr));
   }
   return out;
