@@ -70,6 +70,15 @@
 // candidates) as before.  Its held-out gain (cv_reduction) is the best of the
 // family's probes, fitted on the same folds as the model.
 
+// Pairs (screen_pairs.cpp, LoopOptions::pair_probes): every pair of numeric
+// columns of the data (at most the first 16 columns) as the product of the
+// centred columns, for an effect of two columns together (a crossover has no
+// main effect, so no single-column probe sees it).  The pairs are screened as
+// two families, each one permutation test of its maximum (all columns
+// permuted jointly): the rows of each test (pairs with a row-level column) and
+// the tests of each block (every pair, the product's test mean).  Each family
+// counts as one candidate in the threshold alpha / (candidates + families).
+
 // Sequential decisions (seed-independent): permutations run in batches; after
 // each batch the Clopper-Pearson interval of p at confidence 1 - 1e-3 is
 // compared with the threshold alpha / (number of candidates): wholly below ->
@@ -135,6 +144,8 @@ struct Candidate {
   /// each pin, speed, direction or lubricant): that input's name.  Its effect
   /// cannot be told apart from the input's, so it counts as a base-model term.
   std::string confounded_with;
+  /// kind "pair" (screen_pairs.cpp): the two columns whose centred product x is.
+  std::vector<std::string> pair;
 };
 
 /// Every candidate: extra columns, optional columns, derived quantities
@@ -180,14 +191,35 @@ struct ScreenContext {
   bool bounded_pass = true;
 };
 
+/// The pairs of numeric undeclared columns (kind "pair", name "a*b", x the
+/// product of the centred columns; at most the first 16 columns are paired),
+/// and the number of pair families they form (rows: when a pair has a row-level
+/// column; tests: every pair; screen_pairs.cpp).
+std::vector<Candidate> pair_candidates(const std::vector<Candidate>& cands);
+int pair_families(const std::vector<Candidate>& pairs);
+/// The pair families' screen: one result per family (its strongest pair), a
+/// permutation test of the family's maximum against thr; cands holds the
+/// pairs' columns (each product is made orthogonal to its two columns).
+std::vector<CandidateResult> rank_pairs(const std::vector<Candidate>& pairs, const std::vector<Candidate>& cands,
+                                        const std::vector<double>& resid,
+                                        const Folds& f, int permutations, std::uint64_t seed, double thr,
+                                        const ScreenContext* ctx);
+
 /// Clopper-Pearson decision of a permutation p-value with k exceedances in b
 /// permutations against thr: -1 not significant, +1 significant, 0 undecided.
 int sequential_decision(int k, int b, double thr, double confidence = 1e-3);
+/// The result of a sequential permutation test (ge exceedances in b
+/// permutations, sequential_decision dec): n_perm, p = (1 + ge) / (1 + b), the
+/// decision (at the cap, p <= thr is significant) and significant (with a
+/// positive held-out gain).
+void permutation_decision(CandidateResult& res, int ge, int b, int dec, double thr);
 
 /// Rank candidates; results sorted: significant first by CV reduction, then the
-/// rest by p-value.  Significance: p <= alpha / (number of candidates).
+/// rest by p-value.  Significance: p <= alpha / (number of candidates + pair
+/// families); with pairs (pair_candidates), one result per pair family too.
 std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands, const std::vector<double>& resid,
                                              const Folds& f, int permutations, std::uint64_t seed, double alpha,
-                                             const ScreenContext* ctx = nullptr);
+                                             const ScreenContext* ctx = nullptr,
+                                             const std::vector<Candidate>* pairs = nullptr);
 
 }  // namespace drawbend::loop

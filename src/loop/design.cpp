@@ -136,6 +136,16 @@ std::vector<int> Design::groups(const std::string& by, int* n) const {
 }
 
 std::vector<double> Design::values(const std::string& column) const {
+  // A pair of columns "a*b" (screen_pairs.cpp): the product of the centred
+  // columns (an empty cell at its column's mean, so the product 0 there).
+  if (const size_t star = column.find('*'); star != std::string::npos && data->extra_index(column) < 0) {
+    std::vector<double> a = values(column.substr(0, star)), b = values(column.substr(star + 1));
+    double ma = 0, mb = 0;
+    for (size_t i = 0; i < a.size(); ++i) ma += a[i], mb += b[i];
+    ma /= std::max<size_t>(1, a.size()), mb /= std::max<size_t>(1, b.size());
+    for (size_t i = 0; i < a.size(); ++i) a[i] = (a[i] - ma) * (b[i] - mb);
+    return a;
+  }
   std::vector<double> x(rows.size(), 0.0);
   // Which column, decided once (not per row).
   enum class C { time, sliding, back, speed, direction, pin_d, inv_r, extra };

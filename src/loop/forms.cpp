@@ -85,13 +85,14 @@ std::string fits_key(const ModelSpec& s) {
   return k;
 }
 
-// A form to try: its effects (one, or two together).
+// A form to try: its effects (one, or several together).
 struct Part {
   EffectKind k;
   std::string by;
   int nb = 0;     // generic_smooth: spline dof
   int cell = -1;  // >= 0: confined to that group of `by`
   bool scaled = false;  // force_offset: times the pin's relative bending force
+  std::string var;      // the column of the effect ("": the candidate's own)
 };
 struct Plan {
   std::vector<Part> parts;
@@ -149,6 +150,12 @@ void FormPlans::numeric(const std::vector<std::string>& bys) {
   for (EffectKind k : {EffectKind::generic_linear, EffectKind::generic_saturating, EffectKind::generic_log,
                        EffectKind::generic_exp, EffectKind::generic_step})
     add(k);
+  // A pair (screen_pairs.cpp): the product with the two columns' own linear
+  // effects (a product of two positive quantities has main effects too).
+  if (c.kind == "pair" && c.pair.size() == 2 && applicable(d, spec, EffectKind::generic_linear, c.name))
+    plans.push_back({{{EffectKind::generic_linear, "", 0, -1, false, c.pair[0]},
+                      {EffectKind::generic_linear, "", 0, -1, false, c.pair[1]},
+                      {EffectKind::generic_linear, ""}}});
   std::set<double> distinct;
   for (double v : c.x)
     if (std::isfinite(v)) distinct.insert(v);
@@ -261,15 +268,18 @@ FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c
   FormTrial t;
   t.spec = spec;
   bool bend = false, fric = false;
-  for (const auto& [k, by, nb, cell, scaled] : p.parts) {
-    t.spec = with_effect(d, t.spec, k, c.name, by);
+  for (const auto& [k, by, nb, cell, scaled, var] : p.parts) {
+    // A pair's main effect (a column of its own) only when the model has none yet.
+    if (!var.empty() && !applicable(d, t.spec, k, var)) continue;
+    t.spec = with_effect(d, t.spec, k, var.empty() ? c.name : var, by);
     if (nb > 0) t.spec.effects.back().n_basis = nb;
     t.spec.effects.back().cell = cell;
     t.spec.effects.back().bend_scaled = scaled;
-    t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (nb > 0 ? " " + std::to_string(nb) + " dof" : "") +
+    t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (var.empty() ? "" : " of " + var) + (nb > 0 ? " " + std::to_string(nb) + " dof" : "") +
               (by.empty() ? "" : " (" + by + (cell >= 0 ? " group " + std::to_string(cell + 1) + " only" : "") + ")") +
               (scaled ? " (scaled with the pin's bending force)" : "");
-    t.meaning += (t.meaning.empty() ? "" : "; ") + effect_meaning(k);
+    if (t.meaning.find(effect_meaning(k)) == std::string::npos)  // a pair's mains: the same meaning once
+      t.meaning += (t.meaning.empty() ? "" : "; ") + effect_meaning(k);
     (acts_on_bending(k) ? bend : fric) = true;
   }
   t.channel = bend && fric ? "both" : bend ? "bending" : "friction";
@@ -400,7 +410,7 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
     if (applicable(d, spec, k, c.name)) plans.push_back({{{k, ""}}});
   // Generic forms for a column of the data, and for a numeric model input the
   // base model does not use (speed when it is continuous, not a cell level).
-  if (c.kind == "column" || (c.name == "speed_mm_s" && !d.speed_is_level)) {
+  if (c.kind == "column" || c.kind == "pair" || (c.name == "speed_mm_s" && !d.speed_is_level)) {
     auto bys = by_inputs(d);
     bys.erase(std::remove(bys.begin(), bys.end(), c.name), bys.end());
     if (c.categorical) fp.categorical(bys);

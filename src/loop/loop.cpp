@@ -91,7 +91,7 @@ void conclude(LoopResult& r, const LoopOptions& o, const std::vector<CandidateRe
   bool column_left = false;
   for (const auto& k : rank)
     if (k.significant || k.decision == "undecided" || k.decision.rfind("significant", 0) == 0) {
-      if (k.kind == "column") column_left = true;
+      if (k.kind == "column" || k.kind == "pair") column_left = true;
       else r.base_mismatch.push_back(k.name + " (" + k.decision + ", p " + fmt(k.p_value, 3) + ")");
     }
   if (std::isfinite(r.ratio) && !r.at_noise) {
@@ -261,7 +261,7 @@ struct LoopSearch {
 
   void forward();
   bool forward_round();
-  std::vector<CandidateResult> screen(const std::vector<Candidate>& cands);
+  std::vector<CandidateResult> screen(const std::vector<Candidate>& cands, const std::vector<Candidate>& pairs);
   std::vector<std::string> give_forms(const std::vector<CandidateResult>& rank, const std::vector<Candidate>& cands,
                                       double thr, RoundChoice& ch);
   void consider(const CandidateResult& c, const Candidate& cand, bool screened, double thr, RoundChoice& ch);
@@ -296,7 +296,11 @@ bool LoopSearch::forward_round() {
     cands.erase(std::remove_if(cands.begin(), cands.end(), [&](const Candidate& c) { return c.name == rc.name; }),
                 cands.end());
   if (round == 0) res.candidates = cands;
-  const auto rank = screen(cands);
+  // Pairs of numeric columns, screened as families (screen_pairs.cpp); the
+  // forms find a pair among the candidates.
+  const std::vector<Candidate> pairs = o.pair_probes ? pair_candidates(cands) : std::vector<Candidate>{};
+  const auto rank = screen(cands, pairs);
+  cands.insert(cands.end(), pairs.begin(), pairs.end());
   const double thr = o.alpha / std::max<size_t>(1, rank.size());
   // The strongest few significant candidates are each given their best form;
   // the one whose form predicts held-out data best is added (the rank order
@@ -314,13 +318,14 @@ bool LoopSearch::forward_round() {
 }
 
 // The screen of the current residual (rank_candidates), kept in the result.
-std::vector<CandidateResult> LoopSearch::screen(const std::vector<Candidate>& cands) {
+std::vector<CandidateResult> LoopSearch::screen(const std::vector<Candidate>& cands,
+                                                const std::vector<Candidate>& pairs) {
   ScreenContext ctx = screen_context(d, cur_fit, cur.pred);
   ctx.one_cell = o.cell_probes;
   ctx.pooled_inputs = o.pooled_inputs;
   ctx.threads = o.threads;
   const auto rank =
-      rank_candidates(cands, cur.resid, res.folds, o.permutations, o.seed + 1000003ULL * round, o.alpha, &ctx);
+      rank_candidates(cands, cur.resid, res.folds, o.permutations, o.seed + 1000003ULL * round, o.alpha, &ctx, &pairs);
   res.rankings.push_back(rank);
   last_rank = rank;
   return rank;
@@ -363,8 +368,13 @@ void LoopSearch::consider(const CandidateResult& c, const Candidate& cand, bool 
   s.p_permutation = c.p_value;
   s.threshold = thr;
   s.probe = c.probe;
-  s.cls = cand.kind == "column" && cand.confounded_with.empty() ? "undeclared variable" : "base model";
+  s.cls = (cand.kind == "column" || cand.kind == "pair") && cand.confounded_with.empty() ? "undeclared variable"
+                                                                                          : "base model";
   if (!cand.confounded_with.empty()) s.meaning_note = "confounded with " + cand.confounded_with;
+  if (cand.kind == "pair") {
+    s.columns = cand.pair;
+    s.meaning_note = "two columns together: the product of the centred " + cand.pair[0] + " and " + cand.pair[1];
+  }
   for (const auto& t : trials)
     s.tried.push_back({t.name + " (F-test p " + fmt(t.p_value, 3) + ", " + std::to_string(t.q) + " parameters" +
                            (t.passed ? "" : ", failed a gate") + ")",

@@ -79,6 +79,10 @@ struct LoopOptions {
   /// development seeds 52100000/55100000 (tuning) 30/40 -> 30/40 and 29 -> 30,
   /// 52300000/55300000 (check) 34 -> 34 and 27 -> 28, nulls 0/32 before and after.
   bool pooled_inputs = true;
+  /// Pairwise probes between numeric columns of the data (screen_pairs.cpp):
+  /// an effect of two columns together (a product, or a crossover with no main
+  /// effect), one permutation family per scheme (issue 50, h50-pairs).
+  bool pair_probes = true;
   /// Threads of the screen (candidates screened at once; the same results for any count).
   int threads = 1;
 };
@@ -100,6 +104,8 @@ struct Step {
   /// step's (within one standard error of the difference): the data cannot
   /// tell them apart (aliases.hpp), "name (held-out RMS x N)".
   std::vector<std::string> aliased_with;
+  /// A pair step (screen_pairs.cpp): its two columns (empty: one variable).
+  std::vector<std::string> columns;
   double contribution = 0;  ///< held-out MSE lost when this effect alone is removed [N^2]
   std::vector<Effect> added;  ///< the effects of the step (bending_tension: the flag)
 };

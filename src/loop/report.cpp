@@ -229,6 +229,11 @@ void steps_section(std::ostringstream& m, const LoopResult& r) {
   for (size_t k = 0; k < r.steps.size(); ++k)
     if (!r.steps[k].sign.empty()) m << "\nStep " << k + 1 << ": " << r.steps[k].sign << ".\n";
   for (size_t k = 0; k < r.steps.size(); ++k)
+    if (r.steps[k].columns.size() == 2)
+      m << "\nStep " << k + 1 << ": an effect of two columns together, " << r.steps[k].columns[0] << " and "
+        << r.steps[k].columns[1] << " (" << r.steps[k].effect << " of the product of the two centred columns; "
+        << "found by the pairwise probes).\n";
+  for (size_t k = 0; k < r.steps.size(); ++k)
     if (!r.steps[k].aliased_with.empty()) {
       m << "\nStep " << k + 1 << ": " << r.steps[k].variable << " (held-out RMS " << fmt(r.steps[k].rms_after, 4)
         << " N) cannot be told apart on held-out data from ";

@@ -272,19 +272,7 @@ void CandidateScreen::permutation_test(CandidateResult& res, double T, std::uint
     dec = sequential_decision(ge, b, thr);
     if (dec != 0) break;
   }
-  res.n_perm = b;
-  res.p_value = (1.0 + ge) / (1.0 + b);
-  // At the cap with the interval still straddling the threshold, the Monte
-  // Carlo p-value (1 + ge) / (1 + b), valid at any number of permutations,
-  // decides: p <= thr is significant (a candidate at p 0.00125 against a
-  // threshold of 0.00179 after 20000 permutations was left "undecided" and
-  // never given a form, with a bending effect of 4.8 sd in the residual).
-  const bool at_cap = dec == 0 && res.p_value <= thr;
-  res.significant = (dec > 0 || at_cap) && res.cv_reduction > 0;
-  res.decision = dec > 0 || at_cap
-                     ? (res.cv_reduction > 0 ? (at_cap ? "significant (p at the permutation cap)" : "significant")
-                                             : "significant, no held-out gain")
-                     : dec < 0 ? "not significant" : "undecided";
+  permutation_decision(res, ge, b, dec, thr);
 }
 
 }  // namespace drawbend::loop::detail

@@ -258,7 +258,8 @@ def main():
             und = [s for s in st if s.get("class") == "undeclared variable"]
             res = "FALSE_ALARM" if und else "base_mismatch" if st else "quiet"
         else:
-            named = bool(st) and st[0]["variable"] in aliases
+            # a pair step (h50-pairs) names a truth column when either of its two columns is one
+            named = bool(st) and (st[0]["variable"] in aliases or any(c in aliases for c in st[0].get("columns", [])))
             res = "detected" if named and fin <= 2 else "named_high" if named else "no_step" if not st else "wrong_first"
         steps = "; ".join(s["variable"] + "->" + s["effect"] for s in st)
         tr = ",".join(new_truth) if new_truth else "%s %s %s" % (truth.get("variable"), truth.get("shape"), truth.get("channel"))
