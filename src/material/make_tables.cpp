@@ -24,7 +24,7 @@ void write_table(const CsvTable& t5_1, const CsvRow& row, const std::string& out
   const std::string dir = t5_1.text(row, "direction");
   const double ys = t5_1.number(row, "YS02_MPa"), uts = t5_1.number(row, "UTS_MPa");
   const double n = t5_1.number(row, "n"), elong = t5_1.number(row, "elongation_pct");
-  const SwiftLaw law = fit_swift(ys, uts, n);
+  const SwiftLaw law = fit_swift(ys, uts, n, table_5_1_yield_plastic_strain);
   const double eu = law.necking_strain();
   const auto strains = swift_table_strains();
   std::string lower = dir;
@@ -40,10 +40,16 @@ void write_table(const CsvTable& t5_1, const CsvRow& row, const std::string& out
             " do not edit by hand");
   w.comment("law: Swift, sigma = K (eps0 + eps_p)^n, with n = " + fmt(n) + " fixed to the table's n-value");
   w.comment("fitted: K = " + fmt(law.K, 10) + " MPa, eps0 = " + fmt(law.eps0, 10));
-  w.comment("fit condition 1: sigma(eps_p = 0) = 0.2% YS, so the initial yield stress of this curve is the offset "
-            "yield stress (strictly that is the flow stress at eps_p = 0.002; taking it there instead, "
-            "fit_swift(..., 0.002), lowers the initial yield stress by about 8% and changes the flow stress at "
-            "eps_p >= 0.05 by under 1%)");
+  const SwiftLaw at_zero = fit_swift(ys, uts, n);  // the reading of these tables until issue 51
+  w.comment("fit condition 1: sigma(eps_p = " + fmt(table_5_1_yield_plastic_strain) + ") = 0.2% YS: the 0.2% offset "
+            "yield stress is the proof stress, the flow stress at plastic strain 0.002, so the curve passes through it "
+            "there and its initial yield stress is sigma(0) = " + fmt_fixed(law.stress(0.0), 2) + " MPa");
+  w.comment("changed in issue 51: until then the fit put the YS at eps_p = 0 (fit_swift(YS, UTS, n), K = " +
+            fmt(at_zero.K, 10) + " MPa, eps0 = " + fmt(at_zero.eps0, 10) + "), which reads " +
+            fmt_fixed(at_zero.stress(table_5_1_yield_plastic_strain), 2) + " MPa at eps_p = 0.002; this fit's flow "
+            "stress is " + pct(law.stress(0.0) / at_zero.stress(0.0) - 1.0, 1) + " against it at eps_p = 0, " +
+            pct(law.stress(0.01) / at_zero.stress(0.01) - 1.0, 1) + " at 0.01 and " +
+            pct(law.stress(0.05) / at_zero.stress(0.05) - 1.0, 1) + " at 0.05");
   w.comment("fit condition 2: Considere necking at eps0 + eps_p = n, i.e. at true strain eps_u = n - eps0 = " +
             fmt(eu, 4) + "; the engineering stress there, sigma(eps_u) exp(-eps_u), equals the UTS");
   w.comment("why Swift: Table 5-1 gives the n-value, which is the Swift exponent, directly; a Voce law would need "

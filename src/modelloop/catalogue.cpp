@@ -90,8 +90,11 @@ void make_voce(ModelCandidate& c, const std::string&, const std::string& d) { ma
 void make_hill48(ModelCandidate& c, const std::string&, const std::string& d) { make_published(c, "hill48", d); }
 
 /// The low-strain flow curve: Table 5.1's 0.2 % offset yield stress is the
-/// flow stress at eps_p = 0.002, not at 0 as the shipped RD table takes it
-/// (data/materials/aa5754_o_rd.csv, fit condition 1).  Same UTS and n.
+/// flow stress at eps_p = 0.002.  Since issue 51 the shipped RD table takes
+/// it there too (data/materials/aa5754_o_rd.csv, fit condition 1), so on the
+/// isotropic model this candidate repeats the table's law as an analytic
+/// curve (it differed from the table, which put the YS at eps_p = 0, before
+/// then); with a back stress it carves the same law.  Same UTS and n.
 void make_offset(ModelCandidate& c, const std::string&, const std::string& data_dir) {
   const std::string f = data_dir + "/thesis/table_5_1.csv";
   const CsvTable t51 = read_csv(f);
@@ -100,7 +103,8 @@ void make_offset(ModelCandidate& c, const std::string&, const std::string& data_
     if (t51.text(r, "direction") == "RD") rd = &r;
   if (!rd) throw InputError(f + ": no RD row");
   const material::SwiftLaw law =
-      material::fit_swift(t51.number(*rd, "YS02_MPa"), t51.number(*rd, "UTS_MPa"), t51.number(*rd, "n"), 0.002);
+      material::fit_swift(t51.number(*rd, "YS02_MPa"), t51.number(*rd, "UTS_MPa"), t51.number(*rd, "n"),
+                          material::table_5_1_yield_plastic_strain);
   c.what = "Swift refitted with Table 5.1's 0.2 % offset yield stress at eps_p = 0.002 (K " + fmt(law.K, 5) +
            " MPa, e0 " + fmt(law.eps0, 4) + ", n " + fmt(law.n) + "; initial yield " + fmt(law.stress(0), 4) +
            " MPa): the flow curve below 1 % strain";

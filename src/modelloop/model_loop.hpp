@@ -161,7 +161,8 @@ BlindLoopResult run_model_loop_blind(const DrawBendSpec& base, const std::vector
 ///   voce              the published Voce flow curve (data/materials/aa5754_o_voce_hou2020.toml)
 ///   hill48            the published Hill'48 r-values (data/materials/aa5754_o_hill48_hou2020.toml)
 ///   offset            Swift refitted with Table 5.1's 0.2 % offset yield stress at eps_p = 0.002
-///                     (data/thesis/table_5_1.csv RD row): the flow curve below 1 % strain
+///                     (data/thesis/table_5_1.csv RD row): the flow curve below 1 % strain; the
+///                     shipped RD table's own reading since issue 51, so now an analytic copy of it
 ///   ms:X              mass scaling X (numerical check)
 ///   across:N          N elements across the half width (numerical check)
 /// Throws InputError for anything else.

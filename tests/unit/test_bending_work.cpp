@@ -44,7 +44,7 @@ BendMaterial perfectly_plastic(double sigma0, double E) {
   m.dflow = [](double) { return 0.0; };
   return m;
 }
-BendMaterial swift() {  // the RD curve of data/materials/aa5754_o_rd.csv
+BendMaterial swift() {  // a Swift curve: the RD table's until issue 51 (YS at eps_p = 0); orderings only
   BendMaterial m;
   m.flow = [](double p) { return 447.9752871 * std::pow(0.009138808179 + p, 0.32); };
   m.dflow = [](double p) { return 0.32 * 447.9752871 * std::pow(0.009138808179 + p, 0.32 - 1); };
