@@ -20,11 +20,11 @@ BIN=$1; S0=$2; N=$3; OUT=$4; PERM=${5:-20000}; FIRST=${6:-0}; GEN=${7:-blind}
 # Seeds in 58000000-60999999 are held out unless a held-out run has spent
 # them (heldout_record.md): runs 7-8 (58100000, 58200000 + 0..143), 9-10
 # (59100000, 59200000 + 0..47), 11-12 (60100000, 60200000 + 0..47) and 13-14
-# (60300000, 60400000 + 0..47) are
-# development data now; protocol v8's 60500000 and 60600000 are not.
+# (60300000, 60400000 + 0..47) and 15-16 (60500000, 60600000 + 0..47) are
+# development data now; protocol v9's 60700000 and 60800000 are not.
 released() {  # is seed $1 spent by a recorded held-out run?
   local s=$1
-  for r in 58100000:144 58200000:144 59100000:48 59200000:48 60100000:48 60200000:48 60300000:48 60400000:48; do
+  for r in 58100000:144 58200000:144 59100000:48 59200000:48 60100000:48 60200000:48 60300000:48 60400000:48 60500000:48 60600000:48; do
     local b=${r%%:*} n=${r##*:}
     if (( s >= b && s < b + n )); then return 0; fi
   done
