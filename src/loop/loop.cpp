@@ -12,6 +12,7 @@
 #include "core/csv.hpp"
 #include "loop/aliases.hpp"
 #include "loop/forms.hpp"
+#include "loop/pair_first.hpp"
 #include "loop/response_columns.hpp"
 
 namespace drawbend::loop {
@@ -229,8 +230,17 @@ struct RoundChoice {
   Step best_step;
   FormTrial best_form;
   double best_form_rms = INFINITY;  // the best passed form's held-out RMS of best_step's variable
+  CvResult best_cv;                 // that best passed form's held-out result
   bool found = false;
   std::vector<std::pair<std::string, CvResult>> kept;  // column -> its kept form's held-out result
+};
+
+// A candidate given every form: its step, the trials, the kept form (-1: none
+// passed) and the best passed form (-1: none).
+struct Considered {
+  Step s;
+  std::vector<FormTrial> trials;
+  int keep = -1, best = -1;
 };
 
 // The search's state: the current model, its fits and the steps found so far.
@@ -264,7 +274,10 @@ struct LoopSearch {
   std::vector<CandidateResult> screen(const std::vector<Candidate>& cands, const std::vector<Candidate>& pairs);
   std::vector<std::string> give_forms(const std::vector<CandidateResult>& rank, const std::vector<Candidate>& cands,
                                       double thr, RoundChoice& ch);
+  Considered evaluate(const CandidateResult& c, const Candidate& cand, double thr);
   void consider(const CandidateResult& c, const Candidate& cand, bool screened, double thr, RoundChoice& ch);
+  void pair_first(const std::vector<CandidateResult>& rank, const std::vector<Candidate>& cands, double thr,
+                  RoundChoice& ch);
   void give_aliases(const std::vector<CandidateResult>& rank, const std::vector<Candidate>& cands,
                     const std::vector<std::string>& given, double thr, RoundChoice& ch);
   std::string no_step_reason(const std::vector<CandidateResult>& rank, double thr) const;
@@ -307,6 +320,7 @@ bool LoopSearch::forward_round() {
   // of the screen does not decide between them).
   RoundChoice ch;
   const std::vector<std::string> given = give_forms(rank, cands, thr, ch);
+  pair_first(rank, cands, thr, ch);
   if (ch.found && ch.best_step.cls == "undeclared variable") give_aliases(rank, cands, given, thr, ch);
   ++round;
   if (!ch.found) {
@@ -355,15 +369,14 @@ std::vector<std::string> LoopSearch::give_forms(const std::vector<CandidateResul
   return given;
 }
 
-// Candidate c given every form; the best kept form over the candidates wins.
-void LoopSearch::consider(const CandidateResult& c, const Candidate& cand, bool screened, double thr,
-                          RoundChoice& ch) {
+// Candidate c given every form.
+Considered LoopSearch::evaluate(const CandidateResult& c, const Candidate& cand, double thr) {
   const auto prog = [&](const std::string& m) { progress(o, m); };
-  const auto trials =
-      try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by, c.cell_group,
-                &trials_done, c.probe_input);
-  const int keep = choose_form(trials, res.folds);
-  Step s;
+  Considered r;
+  r.trials = try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by,
+                       c.cell_group, &trials_done, c.probe_input);
+  r.keep = choose_form(r.trials, res.folds);
+  Step& s = r.s;
   s.variable = c.name;
   s.p_permutation = c.p_value;
   s.threshold = thr;
@@ -375,32 +388,84 @@ void LoopSearch::consider(const CandidateResult& c, const Candidate& cand, bool 
     s.columns = cand.pair;
     s.meaning_note = "two columns together: the product of the centred " + cand.pair[0] + " and " + cand.pair[1];
   }
-  for (const auto& t : trials)
+  for (size_t k = 0; k < r.trials.size(); ++k) {
+    const FormTrial& t = r.trials[k];
     s.tried.push_back({t.name + " (F-test p " + fmt(t.p_value, 3) + ", " + std::to_string(t.q) + " parameters" +
                            (t.passed ? "" : ", failed a gate") + ")",
                        t.cv.rms});
-  if (keep < 0) {
+    if (t.passed && (r.best < 0 || t.cv.rms < r.trials[r.best].cv.rms)) r.best = static_cast<int>(k);
+  }
+  return r;
+}
+
+// Candidate c given every form; the best kept form over the candidates wins.
+void LoopSearch::consider(const CandidateResult& c, const Candidate& cand, bool screened, double thr,
+                          RoundChoice& ch) {
+  Considered r = evaluate(c, cand, thr);
+  if (r.keep < 0) {
     if (screened)
       res.screened.push_back(c.name + " (round " + std::to_string(round + 1) + ", p_perm " + fmt(c.p_value, 3) +
                              ", probe " + c.probe + "; no form passed the F test, lowered the held-out error and "
                              "reached the minimum effect " + fmt(o.min_effect) + " sigma)");
     return;
   }
-  if (s.cls == "undeclared variable") ch.kept.push_back({c.name, trials[keep].cv});
+  if (r.s.cls == "undeclared variable") ch.kept.push_back({c.name, r.trials[r.keep].cv});
   // Candidates compete by their best form's held-out error, not by the kept
   // (simplest within one standard error) form's: the one-SE rule chooses a
   // form within a variable, and must not hand the step to another variable
   // whose few-parameter form is only nearly as good.
-  double best_rms = INFINITY;
-  for (const auto& t : trials)
-    if (t.passed) best_rms = std::min(best_rms, t.cv.rms);
+  const double best_rms = r.trials[r.best].cv.rms;
   const bool better = !ch.found || best_rms < ch.best_form_rms;
   if (better) {
-    ch.best_form = trials[keep];
+    ch.best_form = r.trials[r.keep];
     ch.best_form_rms = best_rms;
-    ch.best_step = s;
+    ch.best_cv = r.trials[r.best].cv;
+    ch.best_step = std::move(r.s);
     ch.found = true;
   }
+}
+
+// A pair step must beat its own columns (pair_first.hpp): each column of the
+// round's best pair is given the single-column forms, and a column whose best
+// form is within one standard error of the pair's takes the step.  The
+// decision, either way, is noted on the step.
+void LoopSearch::pair_first(const std::vector<CandidateResult>& rank, const std::vector<Candidate>& cands, double thr,
+                            RoundChoice& ch) {
+  if (!ch.found || ch.best_step.columns.size() != 2 || !ch.best_step.pair_note.empty()) return;
+  std::vector<PairMember> members;
+  std::vector<Considered> tried;
+  for (const auto& name : ch.best_step.columns) {
+    CandidateResult cr;
+    cr.name = name;
+    for (const auto& k : rank)
+      if (k.name == name) cr = k;
+    for (const auto& k : cands)
+      if (k.name == name) {
+        progress(o, "pair " + ch.best_step.variable + ": its column " + name + " alone");
+        tried.push_back(evaluate(cr, k, thr));
+        PairMember m;
+        m.name = name;
+        m.significant = cr.significant;
+        m.passed = tried.back().best >= 0;
+        if (m.passed) m.best = tried.back().trials[tried.back().best].cv;
+        members.push_back(std::move(m));
+        break;
+      }
+  }
+  const PairVerdict v = pair_or_member(ch.best_step.variable, ch.best_cv, members, res.folds);
+  if (v.member < 0) {
+    ch.best_step.pair_note = v.note;
+    return;
+  }
+  Considered& r = tried[v.member];
+  r.s.pair_note = v.note;
+  bool listed = false;
+  for (const auto& [name, cv] : ch.kept) listed = listed || name == r.s.variable;
+  if (!listed && r.s.cls == "undeclared variable") ch.kept.push_back({r.s.variable, r.trials[r.keep].cv});
+  ch.best_form = r.trials[r.keep];
+  ch.best_form_rms = r.trials[r.best].cv.rms;
+  ch.best_cv = r.trials[r.best].cv;
+  ch.best_step = std::move(r.s);
 }
 
 // Collinear naming (aliases.hpp): the columns explaining the same
@@ -420,6 +485,7 @@ void LoopSearch::give_aliases(const std::vector<CandidateResult>& rank, const st
     for (const auto& k : cands)
       if (k.name == a.name) consider(cr, k, false, thr, ch);
   }
+  pair_first(rank, cands, thr, ch);  // an alias that is a pair must beat its own columns too
   // Columns whose kept form the held-out data cannot tell from the winner's.
   for (const auto& [name, cv] : ch.kept)
     if (name != ch.best_step.variable &&

@@ -24,6 +24,10 @@
 //              run-order alias (test_order, operator) does not name a step
 //              that a row-level column explains better on held-out data;
 //              columns the held-out data cannot tell apart are reported;
+//   pairs      a pair of columns (screen_pairs.cpp) that is the round's best
+//              step must beat its own columns: each is given the
+//              single-column forms, and one whose best form is within one
+//              standard error of the pair's takes the step (pair_first.hpp);
 //   channels   an effect acts on mu, on the bending force (F_B + c_pin z,
 //              fitted with the bending lines on the rotating-pin rows), or
 //              both; which, is decided by the held-out data through the forms;
@@ -106,6 +110,9 @@ struct Step {
   std::vector<std::string> aliased_with;
   /// A pair step (screen_pairs.cpp): its two columns (empty: one variable).
   std::vector<std::string> columns;
+  /// A pair was the round's best step (pair_first.hpp): why it kept the step
+  /// over its own columns, or why one of them took it (empty: no pair).
+  std::string pair_note;
   double contribution = 0;  ///< held-out MSE lost when this effect alone is removed [N^2]
   std::vector<Effect> added;  ///< the effects of the step (bending_tension: the flag)
 };

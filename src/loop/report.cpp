@@ -234,6 +234,10 @@ void steps_section(std::ostringstream& m, const LoopResult& r) {
         << r.steps[k].columns[1] << " (" << r.steps[k].effect << " of the product of the two centred columns; "
         << "found by the pairwise probes).\n";
   for (size_t k = 0; k < r.steps.size(); ++k)
+    if (!r.steps[k].pair_note.empty())
+      m << "\nStep " << k + 1 << " (a pair must beat its own columns, the simpler explanation): "
+        << r.steps[k].pair_note << ".\n";
+  for (size_t k = 0; k < r.steps.size(); ++k)
     if (!r.steps[k].aliased_with.empty()) {
       m << "\nStep " << k + 1 << ": " << r.steps[k].variable << " (held-out RMS " << fmt(r.steps[k].rms_after, 4)
         << " N) cannot be told apart on held-out data from ";

@@ -41,6 +41,7 @@ std::string summary_json(const LoopResult& r) {
       << ", \"contribution_N2\": " << jnum(s.contribution) << ", \"probe\": " << jstr(s.probe)
       << (s.meaning_note.empty() ? "" : ", \"note\": " + jstr(s.meaning_note))
       << (s.columns.empty() ? "" : ", \"columns\": " + jlist(s.columns))
+      << (s.pair_note.empty() ? "" : ", \"pair_decision\": " + jstr(s.pair_note))
       << ", \"aliased_with\": " << jlist(s.aliased_with) << ", \"parameters\": {";
     for (size_t k = 0; k < s.params.size(); ++k)
       o << (k ? ", " : "") << jstr(s.params[k].name) << ": {\"value\": " << jnum(s.params[k].value)
