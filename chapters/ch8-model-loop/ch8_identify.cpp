@@ -59,7 +59,7 @@ std::string verdict(std::size_t n, double lo, double hi, int within, const std::
   const std::string goal = fmt_fixed(100 * kGoal, 0);
   if (hi - lo > kGoal && within > 0)
     return "supported: the " + std::to_string(n) + " members that fit the " + fit_pin + " mm pin equally well spread over " +
-           spread + " points on this pin (more than the goal's " + goal + "), and " + std::to_string(within) +
+           spread + " percentage points on this pin (more than the goal's " + goal + "), and " + std::to_string(within) +
            " of them lie within " + goal + " % of the measurement: that pin's one force leaves the choice among them "
            "open, and the choice decides whether this pin meets the goal";
   if (lo > kGoal || hi < -kGoal)
@@ -68,7 +68,7 @@ std::string verdict(std::size_t n, double lo, double hi, int within, const std::
            " side, so no choice among them would meet the goal; what remains is the back-stress form itself (one "
            "Armstrong-Frederick term carved out of the flow curve) or the level of the FE on this pin";
   return "neither rule holds: the " + std::to_string(n) + " members that fit the " + fit_pin +
-         " mm pin equally well spread over " + spread + " points on this pin (the goal's width is " + goal + "), " +
+         " mm pin equally well spread over " + spread + " percentage points on this pin (the goal's tolerance is " + goal + "), " +
          std::to_string(within) + " of them within " + goal + " % of the measurement" +
          (within > 0 ? ": they agree on this pin, so the choice among them does not decide it" : "");
 }
@@ -113,16 +113,21 @@ void identification(Chapter& c, const Inputs& in, const BeamTrace& t, const mode
     if (!eq.empty()) lo = err(eq.front()->fb[kl], kl), hi = err(eq.back()->fb[kl], kl);
     // The fold's member among them.
     std::string fm = "no back stress", fm_fit, fm_beam, place = "not a grid member";
+    std::optional<double> fm_err;  // the fold's member in beam theory on the left-out pin
     if (const auto xs = back_stress_of(f.model)) {
       fm = member_label(xs->first, xs->second);
       for (const auto& m : t.grid)
         if (study::same(m.x_sat, xs->first) && study::same(m.gamma, xs->second)) {
           fm_fit = pct(err(m.fb[kf], kf));
-          fm_beam = pct(err(m.fb[kl], kl));
+          fm_err = err(m.fb[kl], kl);
+          fm_beam = pct(*fm_err);
           const auto at = std::find(eq.begin(), eq.end(), &m);
+          const std::size_t r = static_cast<std::size_t>(at - eq.begin()), n = eq.size();
           place = at == eq.end() ? "outside the band (" + fm_fit + " % on the " + fit + " mm pin)"
-                                 : std::to_string(at - eq.begin() + 1) + " of " + std::to_string(eq.size()) +
-                                       " from the lowest";
+                  : n == 1       ? "the only one in the band"
+                  : r == 0       ? "the lowest of the " + std::to_string(n)
+                  : r + 1 == n   ? "the highest of the " + std::to_string(n)
+                                 : std::to_string(r + 1) + " of " + std::to_string(n) + " from the lowest";
         }
     }
     const double fe_blind = f.final_model.empty() ? 0.0 : f.final_model.front().rel_error();
@@ -140,6 +145,8 @@ void identification(Chapter& c, const Inputs& in, const BeamTrace& t, const mode
     c.value("ident_fold_member_d" + d, fm);
     c.value("ident_fold_beam_d" + d, fm_beam.empty() ? "not on the grid" : fm_beam, fm_beam.empty() ? "" : "%");
     c.value("ident_fold_place_d" + d, place);
+    // How well beam theory stands in for the FE on the member the fold chose.
+    c.value("ident_proxy_d" + d, fm_err ? pct(*fm_err - fe_blind) : "not on the grid", fm_err ? "points" : "");
     c.value("ident_verdict_d" + d, v);
   }
   c.save(tab, "fb_identification");
