@@ -95,6 +95,7 @@ BeamTrace beam_trace(Chapter&, const Inputs& in, const Config& cfg) {
   const auto& range = *fit.range;  // Table 5.3's F_back range
   double slope_lo = e_fit, slope_hi = -e_fit;
   int members = 0;
+  std::vector<GridMember> grid;
   // The member each pin alone would choose (the leave-one-pin-out folds fit
   // on a pin other than the fit pin, and choose their grid point there).
   std::vector<double> e_on(in.pins.size(), e_fit);
@@ -110,6 +111,7 @@ BeamTrace beam_trace(Chapter&, const Inputs& in, const Config& cfg) {
       ++members;
       m.label = "X_sat " + fmt(x) + " MPa, gamma " + fmt(g);
       all_pins(m);
+      grid.push_back({x, g, m.fb});
       const double ef = std::abs(err(m.fb[fit_k], fit_k));
       double ea = 0;
       for (std::size_t k = 0; k < in.pins.size(); ++k) ea = std::max(ea, std::abs(err(m.fb[k], k)));
@@ -132,6 +134,7 @@ BeamTrace beam_trace(Chapter&, const Inputs& in, const Config& cfg) {
   t.chosen_gamma = best_fit.mat.gamma;
   t.af_on_pin = af_on;
   t.members = members;
+  t.grid = grid;
   t.best_slow = best_slow;
   t.slope_lo = slope_lo, t.slope_hi = slope_hi;
   t.slope_meas = fit.slope.value;

@@ -242,6 +242,7 @@ modelloop::ModelLoopResult bending_force_loop(Chapter& c, const Inputs& in, cons
   const modelloop::BlindLoopResult blind = run_blind_loop(c, in, cfg, trace, pts);
   const modelloop::ModelLoopResult& r = blind.in_sample;
   save_blind(c, in, pts, blind);
+  identification(c, in, trace, blind);  // 4b: does the fit pin's one force identify the back stress?
   save_steps(c, r);
   save_per_pin(c, in, trace, pts, r);
   loop_values(c, blind);

@@ -69,6 +69,11 @@ struct BeamModel {
   std::vector<double> fb;
   bool thinning = false;  ///< the section thins as the strip stretches (BendCase::thinning)
 };
+/// One member of the Armstrong-Frederick grid and its F_B per pin.
+struct GridMember {
+  double x_sat = 0, gamma = 0;  ///< MPa, -
+  std::vector<double> fb;       ///< beam theory, plane strain, per pin of Inputs::pins (full strip, N)
+};
 /// Beam theory's trace of the residual (ch8_beam_trace.cpp).
 struct BeamTrace {
   std::vector<BeamModel> models;  ///< isotropic plane strain, plane stress, Hosford 8, isotropic plane strain thinning, AF chosen, AF in-sample
@@ -80,6 +85,7 @@ struct BeamTrace {
   double slope_meas = 0;                  ///< Table 5.3's slope on the fit pin
   double slope_lo = 0, slope_hi = 0;      ///< the members' range of dF_B/dF_back on the fit pin over Table 5.3's range
   int members = 0;
+  std::vector<GridMember> grid;           ///< every member of the grid (those with an elastic range left)
 };
 
 Inputs load_inputs(Chapter& c, const Config& cfg);
@@ -99,6 +105,12 @@ BeamTrace beam_trace(Chapter& c, const Inputs& in, const Config& cfg);
 void save_beam_trace(Chapter& c, const Inputs& in, const BeamTrace& t, const drawbend::modelloop::ModelLoopResult* loop);
 /// F_B against back tension on the fit pin (slope check).
 void tension_slope(Chapter& c, const Inputs& in, const Config& cfg, const drawbend::modelloop::ModelLoopResult& loop);
+/// Issue 51 item 4: whether one force on a fold's fit pin identifies the back
+/// stress.  Per fold, the grid members that fit its fit pin as well as the
+/// beam can tell (band: the FE-vs-beam difference there), their range on the
+/// pin the fold left out, where the fold's member sits, and the verdict
+/// (ch8_identify.cpp).
+void identification(Chapter& c, const Inputs& in, const BeamTrace& t, const drawbend::modelloop::BlindLoopResult& b);
 /// Full tier: mass scaling on every pin, elements across on the 25.4 and 42 mm pins.
 void numerical_convergence(Chapter& c, const Inputs& in, const Config& cfg);
 /// The cup (Sec. 6.6): punch-force loop and the 2 x 2 attribution at 21 mm.

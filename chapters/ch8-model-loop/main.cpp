@@ -16,7 +16,8 @@
 //   4. The loop: isotropic baseline; candidates fitted on the 12.7 mm pin,
 //      and leave one pin out (fit and choice inside the other two pins, each
 //      pin's error from the fold that never saw it); before/after table,
-//      figure, F_B checks per pin.
+//      figure, F_B checks per pin.  4b: per fold, whether its fit pin's one
+//      force identifies the back stress (beam grid; ch8_identify.cpp).
 //   5. F_B against back tension on the 12.7 mm pin (slope check).
 //   6. The cup (Sec. 6.6): why the punch force is high (tool radii, flow
 //      curve, combined hardening, Hill'48), and the 2 x 2 attribution of the
