@@ -24,13 +24,17 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <unistd.h>
 
 #include "loop/blind_synth.hpp"
 
 using namespace drawbend::loop;
 
 static std::string write_text(const Dataset& d, const std::string& name) {
-  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  // One file per process: two runs of this test at once (the sanitizer suite
+  // beside the main one) must not read each other's rows.
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("drawbend_" + std::to_string(::getpid()) + "_" + name)).string();
   write_measured(path, d);
   std::ifstream in(path, std::ios::binary);
   std::stringstream s;
