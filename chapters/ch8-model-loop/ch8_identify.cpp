@@ -84,14 +84,19 @@ void identification(Chapter& c, const Inputs& in, const BeamTrace& t, const mode
   };
   auto tab = c.table({"pin_mm", "fold_fit_pin_mm", "band_pct", "members_in_band", "left_out_min_pct",
                       "left_out_max_pct", "spread_points", "within_goal", "fold_member", "fold_member_fit_pct",
-                      "fold_member_beam_pct", "fold_member_place", "fe_blind_pct", "verdict", "members"},
+                      "fold_member_beam_pct", "fold_member_place", "fe_blind_pct", "verdict"},
                      "does one force identify the back stress? Per leave-one-pin-out fold: the Armstrong-Frederick "
                      "grid members (beam theory, plane strain, step 2) whose F_B on the fold's fit pin lies within "
                      "the band (the isotropic FE-vs-beam difference on that pin) of the measured fit; their error "
                      "on the pin the fold left out (min, max, in %); how many lie within the 10 % goal; the fold's "
                      "own member (its FE choice) in beam theory on the fit pin and the left-out pin, its place among "
-                     "them, and the fold's FE blind error; the verdict of the rule fixed before the run; members: "
-                     "X_sat/gamma (error on the fit pin; on the left-out pin), in %");
+                     "them, and the fold's FE blind error; the verdict of the rule fixed before the run (the members "
+                     "one by one: fb_identification_members)");
+  auto each = c.table({"pin_mm", "fold_fit_pin_mm", "x_sat_MPa", "gamma", "fit_pin_err_pct", "left_out_err_pct",
+                       "within_goal"},
+                      "the members of fb_identification one by one: per fold (the pin it left out, its fit pin), "
+                      "each Armstrong-Frederick grid member within the band on the fit pin, its beam-theory F_B "
+                      "error there and on the left-out pin (in %), and whether that is within the 10 % goal");
   c.value("ident_goal", fmt_fixed(100 * kGoal, 0));  // quoted as "{{ident_goal}} %" and "... percentage points"
   for (const auto& f : b.folds) {
     const std::size_t kl = pin_index(in, f.pin_mm), kf = pin_index(in, f.fit_pin_mm);
@@ -103,12 +108,11 @@ void identification(Chapter& c, const Inputs& in, const BeamTrace& t, const mode
     std::sort(eq.begin(), eq.end(), [&](const GridMember* a, const GridMember* z) { return a->fb[kl] < z->fb[kl]; });
     double lo = 0, hi = 0;
     int within = 0;
-    std::string members;
     for (const GridMember* m : eq) {
       const double e = err(m->fb[kl], kl);
       within += std::abs(e) <= kGoal;
-      members += (members.empty() ? "" : "; ") + fmt(m->x_sat) + "/" + fmt(m->gamma) + " (" + pct(err(m->fb[kf], kf)) +
-                 "; " + pct(e) + ")";
+      each.row({d, fit, fmt(m->x_sat), fmt(m->gamma), pct(err(m->fb[kf], kf)), pct(e),
+                std::abs(e) <= kGoal ? "yes" : "no"});
     }
     if (!eq.empty()) lo = err(eq.front()->fb[kl], kl), hi = err(eq.back()->fb[kl], kl);
     // The fold's member among them.
@@ -135,7 +139,7 @@ void identification(Chapter& c, const Inputs& in, const BeamTrace& t, const mode
     const std::string n = std::to_string(eq.size());
     tab.row({d, fit, fmt_fixed(100 * band, 1), n, eq.empty() ? "" : pct(lo), eq.empty() ? "" : pct(hi),
              eq.empty() ? "" : fmt_fixed(100 * (hi - lo), 1), std::to_string(within), fm, fm_fit, fm_beam, place,
-             pct(fe_blind), v.substr(0, v.find(':')), members});
+             pct(fe_blind), v.substr(0, v.find(':'))});
     c.value("ident_band_d" + d, fmt_fixed(100 * band, 1), "%");
     c.value("ident_n_d" + d, n);
     c.value("ident_lo_d" + d, eq.empty() ? "none" : pct(lo), eq.empty() ? "" : "%");
@@ -150,6 +154,7 @@ void identification(Chapter& c, const Inputs& in, const BeamTrace& t, const mode
     c.value("ident_verdict_d" + d, v);
   }
   c.save(tab, "fb_identification");
+  c.save(each, "fb_identification_members");
 }
 
 }  // namespace ch8
