@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <stdexcept>
 
 #include "ch8_steps.hpp"
 
@@ -134,7 +135,9 @@ void identification(Chapter& c, const Inputs& in, const BeamTrace& t, const mode
                                  : std::to_string(r + 1) + " of " + std::to_string(n) + " from the lowest";
         }
     }
-    const double fe_blind = f.final_model.empty() ? 0.0 : f.final_model.front().rel_error();
+    if (f.final_model.empty())
+      throw std::logic_error("identification: the fold without the " + d + " mm pin has no blind point on it");
+    const double fe_blind = f.final_model.front().rel_error();
     const std::string v = verdict(eq.size(), lo, hi, within, fit);
     const std::string n = std::to_string(eq.size());
     tab.row({d, fit, fmt_fixed(100 * band, 1), n, eq.empty() ? "" : pct(lo), eq.empty() ? "" : pct(hi),

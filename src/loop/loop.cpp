@@ -11,6 +11,8 @@
 
 #include "core/csv.hpp"
 #include "loop/aliases.hpp"
+#include "loop/conclusion.hpp"
+#include "loop/fit_memo.hpp"
 #include "loop/forms.hpp"
 #include "loop/pair_first.hpp"
 #include "loop/response_columns.hpp"
@@ -42,82 +44,6 @@ std::string sign_text(const Step& s, const std::string& var) {
   const double t = p.se > 0 ? std::abs(p.value) / p.se : 0;
   return std::string("mu ") + (p.value > 0 ? "increases" : "decreases") + " with " + var + " (" + fmt(t, 3) +
          " SE from zero)";
-}
-
-// Why noise_ratio = 1.25: under grouped cross-validation even the true model
-// predicts a held-out row with its own parameter error, so its held-out RMS is
-// sigma sqrt(1 + p_eff/n_train) and more for a held-out back-tension block
-// (extrapolation of the bending line); the null synthetic sets of Chapter 7
-// (true model = base model) show the ratio a correct model reaches.
-void conclude(LoopResult& r, const LoopOptions& o, const std::vector<CandidateResult>& rank) {
-  const double rms = r.cv.back().rms;
-  std::ostringstream c;
-  if (!r.bending.empty() && r.bending.find("NO rotating") != std::string::npos)
-    c << "This data set has no rotating-pin rows for some pin(s); the bending force there is assumed (" << r.bending
-      << "), so every friction coefficient below depends on that choice. ";
-  if (r.steps.empty()) c << "The loop added no effect to the base model. ";
-  else {
-    int nu = 0;
-    for (const auto& s : r.steps) nu += s.cls == "undeclared variable";
-    c << "The loop added " << r.steps.size() << " effect(s) (" << nu << " of undeclared variables, "
-      << r.steps.size() - nu << " adjusting the base model's own terms): ";
-    for (size_t k = 0; k < r.steps.size(); ++k)
-      c << (k ? "; " : "") << r.steps[k].variable << " (" << r.steps[k].effect << ", " << r.steps[k].channel << ")";
-    c << ". ";
-    for (const auto& s : r.steps)
-      if (s.cls != "undeclared variable") r.base_terms.push_back(s.variable + " -> " + s.effect);
-    r.undeclared = nu;
-    if (!r.base_terms.empty())
-      c << "The " << r.base_terms.size() << " term(s) on the model's own inputs are base-model mismatch (the base "
-        << "model misfits in its own terms), not undeclared effects. ";
-  }
-  const NoiseFloor& n = r.noise;
-  if (!std::isfinite(n.sigma_N)) {
-    c << "The replicate noise could not be estimated (no test with 4 or more rows), so whether the remaining "
-         "held-out error of " << fmt(rms, 4) << " N is noise is unknown.";
-    r.at_noise = false;
-  } else if (n.exact) {
-    c << "The rows lie exactly on lines within each test (no replicate noise: sampled fits, not measurements), so the "
-         "remaining held-out error of " << fmt(rms, 4) << " N is model error, not noise.";
-    r.at_noise = false;
-  } else {
-    r.ratio = rms / n.sigma_N;
-    r.at_noise = r.ratio <= o.noise_ratio;
-    c << "The remaining held-out error is " << fmt(rms, 4) << " N against a replicate noise of " << fmt(n.sigma_N, 4)
-      << " N (ratio " << fmt(r.ratio, 3) << "; at the noise level means <= " << fmt(o.noise_ratio) << "): ";
-    if (r.at_noise) c << "the model explains the data to the noise level.";
-  }
-  // Remaining structure: in columns of the data (undeclared variables) or only
-  // in the model's own inputs and the between-test scatter (base-model mismatch).
-  bool column_left = false;
-  for (const auto& k : rank)
-    if (k.significant || k.decision == "undecided" || k.decision.rfind("significant", 0) == 0) {
-      if (k.kind == "column" || k.kind == "pair") column_left = true;
-      else r.base_mismatch.push_back(k.name + " (" + k.decision + ", p " + fmt(k.p_value, 3) + ")");
-    }
-  if (std::isfinite(r.ratio) && !r.at_noise) {
-    if (column_left) c << "structure remains unexplained.";
-    else if (!r.base_mismatch.empty())
-      c << "the rest is base-model mismatch (the model's own inputs or the scatter between tests), not an undeclared "
-           "variable: no column of the data remains significant.";
-    else c << "no candidate remains significant; the rest is base-model mismatch the screen cannot localise.";
-  }
-  if (!r.at_noise) {
-    for (const auto& k : rank)
-      if (k.significant || k.decision == "undecided" || k.decision.rfind("significant", 0) == 0)
-        r.remaining.push_back(k.name + " (" + k.decision + ", p " + fmt(k.p_value, 3) +
-                              (is_identity(k.name) ? ", between-test sd " + fmt(k.sd_between, 3) + " N"
-                                                   : ", CV reduction " + fmt(k.cv_reduction, 3)) + ")");
-    if (r.remaining.empty())
-      for (size_t k = 0; k < rank.size() && k < 3; ++k)
-        r.remaining.push_back(rank[k].name + " (" + rank[k].decision + ", p " + fmt(rank[k].p_value, 3) + ")");
-    if (!r.remaining.empty()) {
-      c << " Strongest remaining candidates: ";
-      for (size_t k = 0; k < r.remaining.size() && k < 4; ++k) c << (k ? "; " : "") << r.remaining[k];
-      c << ".";
-    }
-  }
-  r.conclusion = c.str();
 }
 
 void progress(const LoopOptions& o, const std::string& msg) {
@@ -169,59 +95,6 @@ ModelSpec without(const ModelSpec& spec, const Step& s, bool bending_linear) {
   return t;
 }
 
-
-// The fits are deterministic, so a model's cross-validation, joint fit and
-// full fit on the same data and folds are computed once per run and reused
-// (the base model was cross-validated three times and jointly fitted three
-// times in a run with one step; issue 50 item 6).  Keyed by everything that
-// defines the model: the bending option and each effect in order, with its
-// parameters (lambda to the last bit).
-std::string spec_key(const ModelSpec& s) {
-  std::ostringstream k;
-  k << s.bending_linear;
-  for (const auto& e : s.effects) {
-    char lam[40];
-    std::snprintf(lam, sizeof lam, "%a", e.lambda_mm);
-    k << '|' << static_cast<int>(e.kind) << ',' << e.variable.size() << ':' << e.variable << ',' << lam << ','
-      << e.n_levels << ',' << e.by.size() << ':' << e.by << ',' << e.n_groups << ',' << e.n_basis << ',' << e.cell << ',' << e.bend_scaled;
-  }
-  return k.str();
-}
-
-class FitMemo {
- public:
-  FitMemo(const Design& d, const Folds& f) : d_(d), f_(f) {}
-  CvResult cv(const ModelSpec& s) {
-    const std::string k = spec_key(s);
-    auto it = cv_.find(k);
-    if (it == cv_.end()) it = cv_.emplace(k, cross_validate(d_, s, f_)).first;
-    return it->second;
-  }
-  JointFit joint(const ModelSpec& s) {
-    const std::string k = spec_key(s);
-    auto it = joint_.find(k);
-    if (it == joint_.end()) it = joint_.emplace(k, fit_joint(d_, s)).first;
-    return it->second;
-  }
-  Fit fit(const ModelSpec& s) {
-    const std::string k = spec_key(s);
-    auto it = fit_.find(k);
-    if (it == fit_.end()) it = fit_.emplace(k, fit_model(d_, s)).first;
-    return it->second;
-  }
-  /// Results computed elsewhere (a form's trial) for model s.
-  void remember(const ModelSpec& s, const CvResult& cv, const JointFit& j) {
-    cv_.emplace(spec_key(s), cv);
-    joint_.emplace(spec_key(s), j);
-  }
-
- private:
-  const Design& d_;
-  const Folds& f_;
-  std::map<std::string, CvResult> cv_;
-  std::map<std::string, JointFit> joint_;
-  std::map<std::string, Fit> fit_;
-};
 
 // The strongest few significant candidates of a round, each given its best
 // form: the one whose form predicts held-out data best so far, and the kept

@@ -1,0 +1,21 @@
+// The loop's memo of model fits; see fit_memo.hpp.
+#include "loop/fit_memo.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+namespace drawbend::loop {
+
+std::string spec_key(const ModelSpec& s) {
+  std::ostringstream k;
+  k << s.bending_linear;
+  for (const auto& e : s.effects) {
+    char lam[40];
+    std::snprintf(lam, sizeof lam, "%a", e.lambda_mm);
+    k << '|' << static_cast<int>(e.kind) << ',' << e.variable.size() << ':' << e.variable << ',' << lam << ','
+      << e.n_levels << ',' << e.by.size() << ':' << e.by << ',' << e.n_groups << ',' << e.n_basis << ',' << e.cell << ',' << e.bend_scaled;
+  }
+  return k.str();
+}
+
+}  // namespace drawbend::loop
