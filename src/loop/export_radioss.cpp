@@ -17,6 +17,7 @@
 // The engine (engine/source/interfaces/int07/i7for3.F, MFROT = 1) evaluates
 //   mu = Fric + (C1 + C4 P) P + (C2 + C3 P) V + C5 V^2,  mu = max(mu, 1e-30),
 // with P = -F_N / (area of the main segment) and V the tangential speed.
+#include <iostream>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -281,6 +282,12 @@ ExportResult export_openradioss(const ExportModel& m, const ExportOptions& o) {
   else dirs = {direction_surface(m, o.direction)};
   const double v0 = o.band_v_min != 0 || o.band_v_max != 0 ? o.band_v_min : m.rd.v_min;
   const double v1 = o.band_v_min != 0 || o.band_v_max != 0 ? o.band_v_max : m.rd.v_max;
+  // A band outside the model's measured speeds fits the surface where the
+  // solver clamps it to its edge: a valid polynomial, but not from data.
+  if (v0 < m.rd.v_min || v1 > m.rd.v_max)
+    std::cerr << "warning: --speed-band " << fmt_shortest(v0) << "," << fmt_shortest(v1)
+              << " mm/s reaches outside the model's measured speeds (" << fmt_shortest(m.rd.v_min) << " to "
+              << fmt_shortest(m.rd.v_max) << " mm/s); there mu is the surface's edge value, not a measurement\n";
   const Bands b = fit_bands(m, o, dirs, v0, v1);
   r.bands = static_cast<int>(b.coef.size());
   r.max_error = b.worst;
