@@ -17,9 +17,9 @@
 // The engine (engine/source/interfaces/int07/i7for3.F, MFROT = 1) evaluates
 //   mu = Fric + (C1 + C4 P) P + (C2 + C3 P) V + C5 V^2,  mu = max(mu, 1e-30),
 // with P = -F_N / (area of the main segment) and V the tangential speed.
-#include <iostream>
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
