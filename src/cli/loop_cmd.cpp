@@ -106,8 +106,9 @@ void add_loop_options(Options& opt, LoopArgs& a) {
   // minimum) up to 100 steps and 100 noise sd.
   opt.range("folds", 2, 100).range("permutations", 19, 1e6).range("alpha", 0, 1, "", true, true);
   opt.range("max-steps", 0, 100).range("min-effect", 0, 100, "replicate noise sd");
-  // A seed is a non-negative int: a negative one would wrap to 2^64 - k.
-  opt.range("seed", 0, 2147483647);
+  // A seed is a whole number from 0 to 1e9 (the studies' seeds are below 7e7;
+  // a negative one wrapped to 2^64 - k and ran, and 1e9 keeps the message plain).
+  opt.range("seed", 0, 1e9);
   opt.add(a.bending, "bending",
           "bending force: linear (b0 + b1 F_back) or constant, from the rotating-pin rows; for pins without "
           "rotating-pin rows: swift (Eq. 2.1), fe (the FE map's bending_force_N) or none (F_B = 0)");
@@ -281,7 +282,7 @@ void add_synth_options(Options& opt, SynthArgs& a) {
   opt.example("drawbend synth --from-thesis --out my-thesis");
   opt.add(a.points, "points", "rows per thesis fit for --from-thesis");
   opt.range("points", 2, 10000);
-  opt.range("seed", 0, 2147483647);  // non-negative: a negative seed would wrap to 2^64 - k
+  opt.range("seed", 0, 1e9);  // as loop's --seed: a negative seed wrapped to 2^64 - k
   // A hidden law's amplitude (N or a fraction, by law) above 1e6 gives forces
   // beyond a strip test (core/strip_limits.hpp) whatever the law.
   opt.range("amplitude", -kMaxStripForceN, kMaxStripForceN);

@@ -119,6 +119,14 @@ ex v_rev 'p_min = 0.0\np_max = 80.0\nv_min = 101.6\nv_max = 6.35\n' '' 2 "fricti
 ex p_neg 'p_min = -3.0\np_max = 80.0\nv_min = 6.35\nv_max = 101.6\n' '' 2 "friction: expected 0 <= p_min < p_max" "p_min < 0"
 ex v_zero 'p_min = 0.0\np_max = 80.0\nv_min = 0.0\nv_max = 101.6\n' '' 2 "friction: expected 0 < v_min < v_max" "v_min = 0"
 ex p_nan 'p_min = nan\np_max = 80.0\nv_min = 6.35\nv_max = 101.6\n' '' 2 "friction.p_min: expected a finite number, found nan" "p_min = nan"
+# An OpenRadioss speed band outside the model's measured speeds fits the
+# surface's clamped edge: a valid polynomial, written with a warning.
+mkdir -p ex_band
+printf '[friction]\nlaw = "surface"\nnodes = "nodes.csv"\n%b' "$good" >ex_band/friction_model.toml
+cp model/nodes.csv ex_band/nodes.csv
+expect export "a speed band beyond the measured speeds (warning)" 0 \
+  "warning: --speed-band 1000,2000 mm/s reaches outside the model's measured speeds \\(6.35 to 101.6 mm/s\\)" \
+  "$drawbend" export ex_band/friction_model.toml --to openradioss --parts 1,2 --speed-band 1000,2000 --out ex_band/out.rad
 
 # drawbend plan on nothing to plan.
 mkdir -p empty
