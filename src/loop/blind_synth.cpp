@@ -408,6 +408,9 @@ double effect_size(Rng& r, const BlindOptions& o, const std::string& cls, const 
       sgn = -sgn;  // mu driven to the floor or a row made impossible: the effect the other way
     }
     t.effect_rms_N = rms_of(a);
+    std::vector<int> test_of_row(N);
+    for (size_t i = 0; i < N; ++i) test_of_row[i] = forces.rows[i].test;
+    t.support_tests = effect_support(forces(a), y0, test_of_row);
   }
   return a;
 }
@@ -529,8 +532,26 @@ std::string blind_truth_json(const BlindTruth& t) {
   for (size_t i = 0; i < t.aliases.size(); ++i) o << (i ? ", " : "") << q(t.aliases[i]);
   o << "],\n  \"shape\": " << q(t.shape) << ",\n  \"channel\": " << q(t.channel) << ",\n  \"cell\": " << q(t.cell)
     << ",\n  \"law\": " << q(t.law) << ",\n  \"k\": " << fmt(t.k, 4) << ",\n  \"effect_rms_N\": " << fmt(t.effect_rms_N, 5)
+    << ",\n  \"support_tests\": " << t.support_tests
     << ",\n  \"noise_N\": " << fmt(t.noise_N) << ",\n  \"seed\": " << t.seed << "\n}\n";
   return o.str();
+}
+
+int effect_support(const std::vector<double>& y, const std::vector<double>& y0, const std::vector<int>& test_of_row,
+                   double share) {
+  int nt = 0;
+  for (int t : test_of_row) nt = std::max(nt, t + 1);
+  std::vector<double> ss(nt, 0.0);
+  double total = 0;
+  for (size_t i = 0; i < y.size(); ++i) {
+    const double e = y[i] - y0[i];
+    ss[test_of_row[i]] += e * e, total += e * e;
+  }
+  std::sort(ss.rbegin(), ss.rend());
+  double carried = 0;
+  int k = 0;
+  while (k < nt && carried < share * total) carried += ss[k++];
+  return k;
 }
 
 }  // namespace drawbend::loop

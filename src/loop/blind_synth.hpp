@@ -59,9 +59,19 @@ struct BlindTruth {
   std::vector<std::string> aliases;  ///< columns the design confounds exactly with the variable
   double k = 0;             ///< drawn effect RMS / noise sd
   double effect_rms_N = 0;  ///< the effect's RMS on the outlet force, all rows (N)
+  /// The fewest tests that carry 90 % of the planted effect's sum of squares
+  /// on the outlet force (effect_support): an effect carried by one test
+  /// cannot be told from the data to belong to any one column, since every
+  /// numeric test-level column singles that test out.
+  int support_tests = 0;
   double noise_N = 0;
   std::uint64_t seed = 0;
 };
+
+/// The fewest tests whose rows carry `share` of the sum of squares of y - y0
+/// (the planted effect per row; test_of_row: each row's test index).
+int effect_support(const std::vector<double>& y, const std::vector<double>& y0, const std::vector<int>& test_of_row,
+                   double share = 0.9);
 
 /// level, smooth, interaction, bending, test-level, null.
 const std::vector<std::string>& blind_classes();

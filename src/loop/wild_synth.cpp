@@ -368,6 +368,9 @@ double plant(Rng& r, const Set& s, const std::string& cls, const WildOptions& o,
     if (!ok) continue;  // neither way: draw the effect again
     t = d;
     t.effect_rms_N = rms_of(a);
+    std::vector<int> test_of_row(N);
+    for (size_t i = 0; i < N; ++i) test_of_row[i] = s.rows[i].test;
+    t.support_tests = effect_support(forces(a), y0, test_of_row);
     break;
   }
   return a;

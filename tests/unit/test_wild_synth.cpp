@@ -21,6 +21,10 @@
 //    seeds of each class every channel of the
 //    family (mu_mult, mu_add, offset, bend, bt_gain, mu_pslope, mu_vslope) is
 //    drawn at least once (the family is really wide, not a few kinds).
+//  - effect_support: effects 3, 0, 0, 4 N on rows of tests 0, 1, 1, 2 carry
+//    sums of squares 9, 0, 16 (total 25); 90 % (22.5) needs tests 2 and 0: 2;
+//    50 % needs test 2 alone: 1; no effect: 0 tests.  A planted effect's
+//    support is at least 1 and at most the number of tests.
 #define BOOST_TEST_MODULE wild_synth
 #include <unistd.h>
 #include <boost/test/unit_test.hpp>
@@ -80,6 +84,23 @@ BOOST_AUTO_TEST_CASE(valid_data_of_the_stated_size) {
         }
       }
     }
+}
+
+BOOST_AUTO_TEST_CASE(effect_support_counts_the_tests_that_carry_the_effect) {
+  const std::vector<double> y0 = {10, 10, 10, 10}, y = {13, 10, 10, 14};
+  const std::vector<int> test = {0, 1, 1, 2};
+  BOOST_TEST(effect_support(y, y0, test) == 2);
+  BOOST_TEST(effect_support(y, y0, test, 0.5) == 1);
+  BOOST_TEST(effect_support(y0, y0, test) == 0);
+  for (const std::string cls : {"interaction", "level"}) {
+    BlindTruth t;
+    const Dataset d = synthesize_wild({cls, 3.0, kDev + 7}, t);
+    std::set<std::string> tests;
+    for (const auto& r : d.rows) tests.insert(r.test_id);
+    BOOST_TEST(t.support_tests >= 1);
+    BOOST_TEST(t.support_tests <= static_cast<int>(tests.size()));
+    BOOST_TEST(wild_truth_json(t).find("\"support_tests\": " + std::to_string(t.support_tests)) != std::string::npos);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(same_seed_same_file) {

@@ -58,6 +58,6 @@ else:
   named = bool(st) and st[0]['variable'] in t['aliases']
   out = 'detected' if named and fin<=2 else 'named_high' if named else 'no_step' if not st else 'wrong_first'
 steps='; '.join(s['variable']+'->'+s['effect'] for s in st)
-print(i,cls,noise,out,'%.2f'%fin,tm+'s','|',t.get('variable'),t.get('shape'),t.get('channel'),t.get('cell'),'k=%.1f'%t.get('k',0),'|',steps)
+print(i,cls,noise,out,'%.2f'%fin,tm+'s','|',t.get('variable'),t.get('shape'),t.get('channel'),t.get('cell'),'k=%.1f'%t.get('k',0),'sup=%s'%t.get('support_tests','-'),'|',steps)
 PY
 done
