@@ -163,6 +163,7 @@ struct CandidateResult {
   int n_perm = 0;        ///< permutations used (sequential)
   double sd_between = 0; ///< identity variables: between-test standard deviation [N]
   std::string probe;     ///< the probe of the family with the largest statistic
+  int probe_dof = 0;     ///< that probe's own dof (dof above is the family's largest; 0: not a probe family)
   std::string cv_probe;  ///< the probe with the largest held-out gain
   /// When the strongest probe is a per-input one: the input and the group of
   /// its strongest one-group sub-probe (the cell an effect may be confined

@@ -18,9 +18,10 @@ namespace fs = std::filesystem;
 
 CsvWriter candidates_table(const LoopResult& r) {
   CsvWriter w({"round", "rank", "candidate", "kind", "dof", "permuted", "ess_N2", "p_value", "permutations",
-               "decision", "cv_reduction", "significant", "probe", "cv_probe"});
+               "decision", "cv_reduction", "significant", "probe", "probe_dof", "cv_probe"});
   w.comment(" candidates ranked on held-out residuals (N); p from the blocked permutation test of the probe "
-            "family's maximum (probe: the family member with the largest statistic, dof its largest dof); "
+            "family's maximum (dof: the family's largest dof; probe: the family member with the largest statistic, "
+            "probe_dof its own dof); "
             "cv_reduction = fractional SSE reduction of the best probe (cv_probe) under grouped cross-validation (" +
             r.cv_mode + ")");
   for (size_t k = 0; k < r.rankings.size(); ++k)
@@ -28,7 +29,7 @@ CsvWriter candidates_table(const LoopResult& r) {
       const auto& c = r.rankings[k][i];
       w.row({std::to_string(k + 1), std::to_string(i + 1), c.name, c.kind, std::to_string(c.dof), c.permuted,
              fmt(c.stat, 6), fmt(c.p_value, 4), std::to_string(c.n_perm), c.decision, fmt(c.cv_reduction, 4),
-             c.significant ? "yes" : "no", c.probe, c.cv_probe});
+             c.significant ? "yes" : "no", c.probe, c.probe_dof > 0 ? std::to_string(c.probe_dof) : "", c.cv_probe});
     }
   return w;
 }
@@ -285,12 +286,13 @@ void effects_and_candidates(std::ostringstream& m, const LoopResult& r) {
         << fmt(p.value, 4) << " ± " << fmt(p.se, 2) << " |\n";
   m << "\n## Candidates, first round\n\nSequential permutation p-values (stopped when the decision against the "
        "threshold was clear at 99.9 % confidence; at the cap, significant when p <= the threshold, else undecided); test_id as a random effect (F test).\n\n"
-       "| rank | candidate | kind | dof | permuted | p | permutations | decision | CV reduction |\n"
+       "| rank | candidate | kind | dof (family's largest / strongest probe) | permuted | p | permutations | decision | CV reduction |\n"
        "|---|---|---|---|---|---|---|---|---|\n";
   if (!r.rankings.empty())
     for (size_t i = 0; i < r.rankings[0].size(); ++i) {
       const auto& c = r.rankings[0][i];
-      m << "| " << i + 1 << " | " << c.name << " | " << c.kind << " | " << c.dof << " | " << c.permuted << " | "
+      m << "| " << i + 1 << " | " << c.name << " | " << c.kind << " | " << c.dof
+        << (c.probe_dof > 0 ? " / " + std::to_string(c.probe_dof) : std::string()) << " | " << c.permuted << " | "
         << fmt(c.p_value, 3) << " | " << c.n_perm << " | " << c.decision << " | " << fmt(c.cv_reduction, 3) << " |\n";
     }
 }

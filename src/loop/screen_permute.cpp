@@ -199,6 +199,7 @@ double CandidateScreen::observed(CandidateResult& res) {
   const double T = stat(xz, xl, &best, &best_sub);
   res.stat = vals[off[best] + best_sub];
   res.probe = probes[best].sub_label(best_sub);
+  res.probe_dof = probes[best].dof[best_sub];
   res.probe_input = probes[best].input;
   if (probes[best].cells) {
     double zb = -INFINITY;
