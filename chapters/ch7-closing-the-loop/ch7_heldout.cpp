@@ -49,8 +49,9 @@ struct ClassSum {
   /// (90 % of its sum of squares; BlindTruth::support_tests), and their detections.
   int wide = 0, wide_detected = 0;
 };
-// An effect that fewer tests carry cannot be named from the data: one test is
-// singled out by every numeric test-level column (heldout_record.md, h50-cvperm).
+// An effect that fewer tests carry can hardly be named from the data: every
+// numeric test-level column singles out one test, and many of them two
+// (heldout_record.md, h50-cvperm).
 constexpr int kSupportMin = 3;
 }  // namespace
 
