@@ -75,6 +75,21 @@ struct LoopOptions {
   bool progress = false;  ///< print progress to stderr
   /// Significant candidates given their best form per round (the best of them is added).
   int contenders = 3;
+  /// When a round gives no step and the held-out RMS is above far_ratio x the
+  /// measured replicate noise (never when the noise is not measured), the
+  /// `contenders` candidates with the largest positive held-out gain are given
+  /// their forms, significant or not, and the best is added as any step (its
+  /// forms' gates unchanged; Step::far_note says so).  The data then show that
+  /// something is missing; the permutation screen, there to keep a null data
+  /// set without a step, can lack the power to say which column when the
+  /// effect lives in a cell of a dozen tests (heldout_record.md, h50-far).
+  /// 2: the goal's own line (detected = held-out RMS within 2 x the noise).
+  /// 0: off.  Without the screen's family-wise protection such a step must
+  /// also explain the main part of what is missing: its held-out MSE gain at
+  /// least far_share of the excess MSE over the noise, rms^2 - sigma^2 (a
+  /// decoy picking up a little structure takes a few per cent of it).
+  double far_ratio = 2.0;
+  double far_share = 0.5;
   /// Opt-in (--cell-probes; development, not yet scored on enough data): the
   /// screen's one-cell sub-probes and the forms confined to one cell.
   bool cell_probes = false;
@@ -113,6 +128,8 @@ struct Step {
   /// A pair was the round's best step (pair_first.hpp): why it kept the step
   /// over its own columns, or why one of them took it (empty: no pair).
   std::string pair_note;
+  /// Taken by the far-from-noise rule (LoopOptions::far_ratio): why (empty: by the screen).
+  std::string far_note;
   double contribution = 0;  ///< held-out MSE lost when this effect alone is removed [N^2]
   std::vector<Effect> added;  ///< the effects of the step (bending_tension: the flag)
 };

@@ -235,6 +235,9 @@ void steps_section(std::ostringstream& m, const LoopResult& r) {
         << r.steps[k].columns[1] << " (" << r.steps[k].effect << " of the product of the two centred columns; "
         << "found by the pairwise probes).\n";
   for (size_t k = 0; k < r.steps.size(); ++k)
+    if (!r.steps[k].far_note.empty())
+      m << "\nStep " << k + 1 << " (taken by the far-from-noise rule, `--far-ratio`): " << r.steps[k].far_note << ".\n";
+  for (size_t k = 0; k < r.steps.size(); ++k)
     if (!r.steps[k].pair_note.empty())
       m << "\nStep " << k + 1 << " (a pair must beat its own columns, the simpler explanation): "
         << r.steps[k].pair_note << ".\n";
