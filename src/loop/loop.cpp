@@ -263,7 +263,7 @@ std::vector<std::string> LoopSearch::give_forms(const std::vector<CandidateResul
 }
 
 // The far-from-noise rule (LoopOptions::far_ratio): the candidates with the
-// largest positive held-out gain, up to o.contenders, significant or not
+// largest positive held-out gain, up to o.far_contenders, significant or not
 // (identities and pair families excluded, a column left to a significant model
 // input it is a function of, as in give_forms), given their forms; the names given.
 std::vector<std::string> LoopSearch::give_forms_by_gain(const std::vector<CandidateResult>& rank,
@@ -276,7 +276,7 @@ std::vector<std::string> LoopSearch::give_forms_by_gain(const std::vector<Candid
                    [](const CandidateResult* a, const CandidateResult* b) { return a->cv_reduction > b->cv_reduction; });
   std::vector<std::string> given;
   for (const CandidateResult* c : by_gain) {
-    if (static_cast<int>(given.size()) >= o.contenders) break;
+    if (static_cast<int>(given.size()) >= o.far_contenders) break;
     const Candidate* cand = nullptr;
     for (const auto& k : cands)
       if (k.name == c->name) cand = &k;

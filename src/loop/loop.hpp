@@ -19,6 +19,12 @@
 //              a lower held-out error and the minimum effect; the simplest
 //              form within one standard error of the best is kept (forms.hpp);
 //              the candidate whose form predicts held-out data best is added;
+//   far        a round with no step while the held-out RMS is above
+//              far_ratio x the measured replicate noise gives the candidate
+//              with the largest held-out gain its forms, significant or not;
+//              its step must take at least far_share of the excess MSE over
+//              the noise (the data show something is missing; the screen may
+//              lack the power to say which column in a cell of few tests);
 //   aliases    the columns that explain the same structure as the chosen
 //              column's effect (aliases.hpp) are given their forms too, so a
 //              run-order alias (test_order, operator) does not name a step
@@ -77,7 +83,7 @@ struct LoopOptions {
   int contenders = 3;
   /// When a round gives no step and the held-out RMS is above far_ratio x the
   /// measured replicate noise (never when the noise is not measured), the
-  /// `contenders` candidates with the largest positive held-out gain are given
+  /// `far_contenders` candidates with the largest positive held-out gain are given
   /// their forms, significant or not, and the best is added as any step (its
   /// forms' gates unchanged; Step::far_note says so).  The data then show that
   /// something is missing; the permutation screen, there to keep a null data
@@ -90,6 +96,10 @@ struct LoopOptions {
   /// decoy picking up a little structure takes a few per cent of it).
   double far_ratio = 2.0;
   double far_share = 0.5;
+  /// Candidates the rule gives their forms, by held-out gain (each costs its
+  /// forms: 0.5-1.9 s a form on an 889-row set; three made the rule's check
+  /// run 1.40 x main's CPU, heldout_record.md h50-far).
+  int far_contenders = 1;
   /// Opt-in (--cell-probes; development, not yet scored on enough data): the
   /// screen's one-cell sub-probes and the forms confined to one cell.
   bool cell_probes = false;
