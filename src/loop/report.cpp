@@ -117,7 +117,9 @@ std::string engineer_summary(const Design& d, const LoopResult& r, const Frictio
     for (std::size_t k = 0; k < r.steps.size(); ++k) {
       const Step& s = r.steps[k];
       m << (k ? "; " : "") << s.variable << " (" << (s.meaning.empty() ? s.effect : s.meaning)
-        << "): held-out error " << fmt(s.rms_before, 3) << " N → " << fmt(s.rms_after, 3) << " N";
+        << "): held-out error " << fmt(s.rms_before, 3) << " N → " << fmt(s.rms_after, 3) << " N"
+        << (s.far_note.empty() ? "" : " (named by its held-out gain, not by the permutation screen: see step " +
+                                          std::to_string(k + 1) + ")");
     }
     m << ".";
   }
