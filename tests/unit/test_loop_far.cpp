@@ -1,7 +1,8 @@
 // The far-from-noise rule (LoopOptions::far_ratio, far_share; loop.cpp
 // forward_round), on wild development sets (spent seeds, heldout_record.md
 // h50-cvperm and h50-far), written as a lab file and read back as the CLI
-// reads it, stand-in maps, the loop's defaults otherwise.  Expected answers:
+// reads it, stand-in maps, the loop's defaults otherwise (the rule is opt-in:
+// far_ratio 2 is set here, the default is 0).  Expected answers:
 //  - set 57600044 (wild interaction: mu + 0.1 a g of ra_strip_um at speed 10
 //    mm/s only, k 5.7, noise 8 N): the permutation screen passes no column
 //    (ra_strip_um p 0.003 against 0.05 / 31), so with far_ratio 0 the loop adds
@@ -12,7 +13,8 @@
 //  - set 57600002 (ra_strip_um on the bending force in one direction, noise
 //    3 N; 90 % of its effect in two tests): the rule's first step takes more
 //    than half of the excess MSE over the noise; every later candidate takes
-//    less, so the rule adds exactly one step (six without the share gate).
+//    less, so the rule adds exactly one step (three contenders and no share
+//    gate took six, five of them decoys: heldout_record.md, h50-far).
 //  - null set 57600005 (noise 3 N): the base model's held-out RMS is within
 //    1.25 x the noise, so the rule cannot fire: no step with a far note.
 #define BOOST_TEST_MODULE loop_far
