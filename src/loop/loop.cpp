@@ -151,6 +151,8 @@ struct LoopSearch {
   void consider(const CandidateResult& c, const Candidate& cand, bool screened, double thr, RoundChoice& ch);
   void pair_first(const std::vector<CandidateResult>& rank, const std::vector<Candidate>& cands, double thr,
                   RoundChoice& ch);
+  std::vector<std::string> give_forms_by_gain(const std::vector<CandidateResult>& rank,
+                                             const std::vector<Candidate>& cands, double thr, RoundChoice& ch);
   void give_aliases(const std::vector<CandidateResult>& rank, const std::vector<Candidate>& cands,
                     const std::vector<std::string>& given, double thr, RoundChoice& ch);
   std::string no_step_reason(const std::vector<CandidateResult>& rank, double thr) const;
@@ -195,6 +197,24 @@ bool LoopSearch::forward_round() {
   const std::vector<std::string> given = give_forms(rank, cands, thr, ch);
   pair_first(rank, cands, thr, ch);
   if (ch.found && ch.best_step.cls == "undeclared variable") give_aliases(rank, cands, given, thr, ch);
+  // Far from the noise with no step: the strongest candidates by held-out gain.
+  if (!ch.found && o.far_ratio > 0 && sigma > 0 && cur.rms > o.far_ratio * sigma) {
+    const std::vector<std::string> far = give_forms_by_gain(rank, cands, thr, ch);
+    if (ch.found && ch.best_step.cls == "undeclared variable") give_aliases(rank, cands, far, thr, ch);
+    const double excess = cur.rms * cur.rms - sigma * sigma,
+                 gain = ch.found ? cur.rms * cur.rms - ch.best_form.cv.rms * ch.best_form.cv.rms : 0.0;
+    if (ch.found && gain >= o.far_share * excess)
+      ch.best_step.far_note = "no candidate passed the permutation screen and its forms, while the held-out RMS " +
+                              fmt(cur.rms, 4) + " N was " + fmt(cur.rms / sigma, 3) + " x the replicate noise (above " +
+                              fmt(o.far_ratio) + " x): the candidates with the largest held-out gain were given their "
+                              "forms; this one's passed the F test, lowered the held-out error, reached the minimum "
+                              "effect, and took " + fmt(100 * gain / excess, 3) + " % of the excess MSE over the noise "
+                              "(at least " + fmt(100 * o.far_share) + " % asked)";
+    else if (ch.found)
+      progress(o, "far-from-noise rule: " + ch.best_step.variable + " takes " + fmt(100 * gain / excess, 3) +
+                      " % of the excess over the noise, below " + fmt(100 * o.far_share) + " %: no step"),
+          ch = RoundChoice{};
+  }
   ++round;
   if (!ch.found) {
     res.stopped_because = no_step_reason(rank, thr);
@@ -238,6 +258,32 @@ std::vector<std::string> LoopSearch::give_forms(const std::vector<CandidateResul
     ++tried;
     given.push_back(c.name);
     consider(c, *cand, true, thr, ch);
+  }
+  return given;
+}
+
+// The far-from-noise rule (LoopOptions::far_ratio): the candidates with the
+// largest positive held-out gain, up to o.far_contenders, significant or not
+// (identities and pair families excluded, a column left to a significant model
+// input it is a function of, as in give_forms), given their forms; the names given.
+std::vector<std::string> LoopSearch::give_forms_by_gain(const std::vector<CandidateResult>& rank,
+                                                        const std::vector<Candidate>& cands, double thr,
+                                                        RoundChoice& ch) {
+  std::vector<const CandidateResult*> by_gain;
+  for (const auto& c : rank)
+    if (!is_identity(c.name) && c.kind != "pair" && c.cv_reduction > 0) by_gain.push_back(&c);
+  std::stable_sort(by_gain.begin(), by_gain.end(),
+                   [](const CandidateResult* a, const CandidateResult* b) { return a->cv_reduction > b->cv_reduction; });
+  std::vector<std::string> given;
+  for (const CandidateResult* c : by_gain) {
+    if (static_cast<int>(given.size()) >= o.far_contenders) break;
+    const Candidate* cand = nullptr;
+    for (const auto& k : cands)
+      if (k.name == c->name) cand = &k;
+    if (!cand || cand->kind == "pair") continue;
+    if (!cand->confounded_with.empty() && input_significant(rank, cand->confounded_with)) continue;
+    given.push_back(c->name);
+    consider(*c, *cand, false, thr, ch);
   }
   return given;
 }

@@ -117,7 +117,9 @@ std::string engineer_summary(const Design& d, const LoopResult& r, const Frictio
     for (std::size_t k = 0; k < r.steps.size(); ++k) {
       const Step& s = r.steps[k];
       m << (k ? "; " : "") << s.variable << " (" << (s.meaning.empty() ? s.effect : s.meaning)
-        << "): held-out error " << fmt(s.rms_before, 3) << " N → " << fmt(s.rms_after, 3) << " N";
+        << "): held-out error " << fmt(s.rms_before, 3) << " N → " << fmt(s.rms_after, 3) << " N"
+        << (s.far_note.empty() ? "" : " (named by its held-out gain, not by the permutation screen: see step " +
+                                          std::to_string(k + 1) + ")");
     }
     m << ".";
   }
@@ -234,6 +236,9 @@ void steps_section(std::ostringstream& m, const LoopResult& r) {
       m << "\nStep " << k + 1 << ": an effect of two columns together, " << r.steps[k].columns[0] << " and "
         << r.steps[k].columns[1] << " (" << r.steps[k].effect << " of the product of the two centred columns; "
         << "found by the pairwise probes).\n";
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    if (!r.steps[k].far_note.empty())
+      m << "\nStep " << k + 1 << " (taken by the far-from-noise rule, `--far-ratio`): " << r.steps[k].far_note << ".\n";
   for (size_t k = 0; k < r.steps.size(); ++k)
     if (!r.steps[k].pair_note.empty())
       m << "\nStep " << k + 1 << " (a pair must beat its own columns, the simpler explanation): "

@@ -42,6 +42,7 @@ std::string summary_json(const LoopResult& r) {
       << (s.meaning_note.empty() ? "" : ", \"note\": " + jstr(s.meaning_note))
       << (s.columns.empty() ? "" : ", \"columns\": " + jlist(s.columns))
       << (s.pair_note.empty() ? "" : ", \"pair_decision\": " + jstr(s.pair_note))
+      << (s.far_note.empty() ? "" : ", \"far_rule\": " + jstr(s.far_note))
       << ", \"aliased_with\": " << jlist(s.aliased_with) << ", \"parameters\": {";
     for (size_t k = 0; k < s.params.size(); ++k)
       o << (k ? ", " : "") << jstr(s.params[k].name) << ": {\"value\": " << jnum(s.params[k].value)
