@@ -33,9 +33,11 @@ std::function<void(const std::string&)> numeric_setter(T& var, const std::string
     } catch (const std::exception&) {
       used = 0;
     }
-    if (s.empty() || used != s.size() || !std::isfinite(static_cast<double>(v)))
+    // Hexadecimal (0x10) is read by std::stod but meant by no one: refused as
+    // the integers' std::stoi refuses it.
+    if (s.empty() || used != s.size() || hex_number(s) || !std::isfinite(static_cast<double>(v)))
       throw std::invalid_argument("--" + name + ": expected " + what + ", found '" + clip_for_message(s) + "'");
-    var = v;
+    var = v == 0 ? T{} : v;  // -0 as 0 (echoed and compared as the user means it)
   };
 }
 }  // namespace

@@ -219,4 +219,25 @@ for case in "drawbend-deck --across 1 --through 4" "block-deck --elements 1 --ou
     failed=1
   fi
 done
+# Fuzz pass (2026-12-04): hexadecimal numbers (std::stod reads 0x10 as 16; every real-valued
+# option and every table cell took it before), option relations named by their options
+# (the builders' spec fields were named), a choice option named, a checkpoint interval
+# far below the time step (a hang that SIGTERM could not stop), a Stribeck table's
+# parameter given twice or missing.
+expect drawbend-deck "hexadecimal option" 2 "--back-tension: expected a number, found '0x10'" "$drawbend" drawbend-deck --back-tension 0x10
+awk -F, -v OFS=, '$1=="uniaxial" && $2==45 {$4="0x10"} 1' "$root/data/materials/aa6016_t4_esaform2021.csv" >cal_hex.csv
+expect calibrate "hexadecimal cell" 2 "cal_hex.csv:[0-9]+: column 'r_value': expected a number, found '0x10'" "$drawbend" calibrate cal_hex.csv --out c9
+awk -F, -v OFS=, 'NR==8 {$2="0x10"} 1' "$root/data/measured/thesis_drawbend.csv" >loop_hex.csv
+expect loop "hexadecimal cell" 0 "data problem: .*loop_hex.csv:8: column 'pin_diameter_mm': '0x10' is not a number" "$drawbend" loop loop_hex.csv --out l6 --permutations 19 --figures= --export none
+expect drawbend-deck "back tension 0" 2 "--back-tension: expected a value in \\(0, " "$drawbend" drawbend-deck --back-tension 0
+expect drawbend-deck "unknown strip direction" 2 "--strip-direction: expected rd or td, found 'xx'" "$drawbend" drawbend-deck --strip-direction xx
+expect block-deck "ramp longer than its step" 2 "--press-ramp: expected a ramp shorter than --press-time \\(0.002 s\\), found 0.005 s" "$drawbend" block-deck --press-ramp 0.005 --out b7.toml
+expect block-deck "ramp as long as its step" 2 "--speed-ramp: expected a ramp shorter than --slide-time \\(0.003 s\\), found 0.003 s" "$drawbend" block-deck --speed-ramp 0.003 --out b8.toml
+expect strip-deck "ramp longer than its step" 2 "--force-ramp: expected a ramp no longer than --press-time \\(0.05 s\\), found 1 s" "$drawbend" strip-deck --force-ramp 1 --out s2.toml
+expect run "--checkpoint-every 1e-300s" 0 "halted after cycle 3 " "$drawbend" run "$deck" --out o14 --quiet --checkpoint-every 1e-300s --halt-after-cycles 3
+grep -v '^#' "$root/data/thesis/table_3_1.csv" >strib_twice.csv
+printf 'mu_BL,0.2,-\n' >>strib_twice.csv
+expect strip-deck "Stribeck parameter twice" 2 "--stribeck-table: strib_twice.csv:8: column 'parameter': Stribeck parameter 'mu_BL' given twice \\(first on line 2\\)" "$drawbend" strip-deck --stribeck-table strib_twice.csv --out s3.toml
+grep -v '^#' "$root/data/thesis/table_3_1.csv" | grep -v '^eta' >strib_short.csv
+expect strip-deck "Stribeck parameter missing" 2 "--stribeck-table: strib_short.csv: missing Stribeck parameter 'eta'" "$drawbend" strip-deck --stribeck-table strib_short.csv --out s4.toml
 exit $failed
