@@ -240,4 +240,12 @@ printf 'mu_BL,0.2,-\n' >>strib_twice.csv
 expect strip-deck "Stribeck parameter twice" 2 "--stribeck-table: strib_twice.csv:8: column 'parameter': Stribeck parameter 'mu_BL' given twice \\(first on line 2\\)" "$drawbend" strip-deck --stribeck-table strib_twice.csv --out s3.toml
 grep -v '^#' "$root/data/thesis/table_3_1.csv" | grep -v '^eta' >strib_short.csv
 expect strip-deck "Stribeck parameter missing" 2 "--stribeck-table: strib_short.csv: missing Stribeck parameter 'eta'" "$drawbend" strip-deck --stribeck-table strib_short.csv --out s4.toml
+# A history signal of a tool or node set the deck does not have: before, an unknown
+# tool ended the run with "no tool named 'nope'" (no file, no line) and `plan` took
+# the deck; an unknown node set wrote a column of zeros with exit 0.
+sed 's/kind = "tool_force", target = "floor", component = 2/kind = "tool_force", target = "nope", component = 2/' "$deck" >hist_tool.toml
+expect run "history of an unknown tool" 2 "hist_tool.toml:[0-9]+: output.history.target: expected the name of a \\[\\[tool\\]\\], found 'nope'" "$drawbend" run hist_tool.toml --out o15 --quiet
+expect plan "history of an unknown tool" 2 "hist_tool.toml:[0-9]+: output.history.target: expected the name of a \\[\\[tool\\]\\]" "$drawbend" plan hist_tool.toml
+sed 's/kind = "tool_force", target = "floor", component = 2/kind = "reaction", target = "nope", component = 2/' "$deck" >hist_set.toml
+expect run "history of an unknown node set" 2 "hist_set.toml:[0-9]+: output.history.target: expected a node set \\(.*\\), found 'nope'" "$drawbend" run hist_set.toml --out o16 --quiet
 exit $failed
