@@ -248,4 +248,20 @@ expect run "history of an unknown tool" 2 "hist_tool.toml:[0-9]+: output.history
 expect plan "history of an unknown tool" 2 "hist_tool.toml:[0-9]+: output.history.target: expected the name of a \\[\\[tool\\]\\]" "$drawbend" plan hist_tool.toml
 sed 's/kind = "tool_force", target = "floor", component = 2/kind = "reaction", target = "nope", component = 2/' "$deck" >hist_set.toml
 expect run "history of an unknown node set" 2 "hist_set.toml:[0-9]+: output.history.target: expected a node set \\(.*\\), found 'nope'" "$drawbend" run hist_set.toml --out o16 --quiet
+# loop --maps: an FE map's numbers (before: "input error: stod" for a word, "error: stod"
+# and exit 3 for 1e999, and a pressure of 1e300 MPa ran with exit 0 and an "inf %" export).
+"$drawbend" synth --effect none --seed 1 --tests-per-pin 2 --rows-per-test 5 --out maps_data >/dev/null 2>&1
+map_dir() {  # DIR COMMENT PRESSURE: one five-node map per pin of the synthetic data
+  mkdir -p "$1"
+  for d in 12.7 25.4 42; do
+    { printf '%s\n' "$2" "node,x_mm,y_mm,z_mm,x0_mm,y0_mm,z0_mm,surface,u_tool,v_tool_mm,pressure_MPa,area_mm2,normal_force_N,tangential_force_N,slip_speed_mm_s,penetration_mm"
+      for i in 1 2 3 4 5; do echo "$i,0,0,0,0,0,0,0,0,0,$3,0.5,0,0,0,0"; done; } >"$1/pin_${d}mm.csv"
+  done
+}
+map_dir maps_word '# reference_back_tension_N: abc' 20
+expect loop "--maps: a word as the reference tension" 2 "maps_word/pin_12.7mm.csv: reference_back_tension_N: expected a number, found 'abc'" "$drawbend" loop maps_data/data.csv --maps maps_word --out l7 --figures= --permutations 19
+map_dir maps_big '# reference_back_tension_N: 1e999' 20
+expect loop "--maps: 1e999 as the reference tension" 2 "maps_big/pin_12.7mm.csv: reference_back_tension_N: expected a number, found '1e999'" "$drawbend" loop maps_data/data.csv --maps maps_big --out l8 --figures= --permutations 19
+map_dir maps_huge '# reference_back_tension_N: 1000' 1e300
+expect loop "--maps: a pressure of 1e300 MPa" 2 "maps_huge/pin_12.7mm.csv:3: expected a contact pressure up to 100000 MPa" "$drawbend" loop maps_data/data.csv --maps maps_huge --out l9 --figures= --permutations 19
 exit $failed
