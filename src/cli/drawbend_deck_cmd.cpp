@@ -91,6 +91,7 @@ int drawbend_deck_command(int argc, char** argv) {
   opt.range("mass-scaling", 1, kMassScaling, "", false, false, true).range("penalty", 0, kPenalty, "", true);
   opt.range("frames", 1, 1000).range("bending-force", 0, kForceN, "N").range("yield-stress", 0, 1e4, "MPa");
   if (!opt.parse(argc, argv)) return 0;
+  opt.not_empty({"hardening"});  // a file option given as '' names the option
   name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
   // A regular file of a stated size, named by its option, before the deck is built (a FIFO or a
   // folder was named by the generated deck's line, with "cannot open").

@@ -148,6 +148,13 @@ void Options::only_when(bool applies, const std::vector<std::string>& names, con
     if (given(n)) throw std::invalid_argument("--" + n + ": applies only " + when + " (given here, it would be ignored)");
 }
 
+void Options::not_empty(const std::vector<std::string>& names) const {
+  for (const auto& n : names)
+    for (const auto& o : opts_)
+      if (o.name == n && given(n) && o.get().empty())
+        throw std::invalid_argument("--" + n + ": expected a file name, found an empty one");
+}
+
 std::vector<std::string> Options::echo() const {
   std::vector<std::string> lines;
   for (const auto& o : opts_) lines.push_back(o.name + " = " + o.get());

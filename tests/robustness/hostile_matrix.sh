@@ -264,4 +264,17 @@ map_dir maps_big '# reference_back_tension_N: 1e999' 20
 expect loop "--maps: 1e999 as the reference tension" 2 "maps_big/pin_12.7mm.csv: reference_back_tension_N: expected a number, found '1e999'" "$drawbend" loop maps_data/data.csv --maps maps_big --out l8 --figures= --permutations 19
 map_dir maps_huge '# reference_back_tension_N: 1000' 1e300
 expect loop "--maps: a pressure of 1e300 MPa" 2 "maps_huge/pin_12.7mm.csv:3: expected a contact pressure up to 100000 MPa" "$drawbend" loop maps_data/data.csv --maps maps_huge --out l9 --figures= --permutations 19
+# A file option given as '' (before: "draw-bend spec: no hardening curve", or
+# ": expected a file name, found an empty one" naming no option).
+while read -r cmd opt extra; do
+  expect "$cmd" "empty --$opt" 2 "input error: --$opt: expected a file name, found an empty one" "$drawbend" $cmd $extra --$opt ""
+done <<LIST
+drawbend-deck hardening
+block-deck hardening --out b9.toml
+block-deck surface-nodes --out b9.toml
+strip-deck hardening --out s5.toml
+strip-deck stribeck-table --out s5.toml
+cup-deck base
+model-loop hardening ml_crlf.csv --out m6
+LIST
 exit $failed
