@@ -277,4 +277,12 @@ strip-deck stribeck-table --out s5.toml
 cup-deck base
 model-loop hardening ml_crlf.csv --out m6
 LIST
+# A checkpoint with one byte changed (format 2 carries a checksum; before, a
+# damaged checkpoint restarted with exit 0 from the damaged state).
+"$drawbend" run "$deck" --out ck --quiet --checkpoint-every 200 --halt-after-cycles 200 >/dev/null 2>&1
+cp ck/checkpoint.bin ck_damaged.bin
+byte=$(od -An -tx1 -j 5000 -N 1 ck_damaged.bin | tr -d ' ')
+if [ "$byte" = 5a ]; then printf 'Y' | dd of=ck_damaged.bin bs=1 seek=5000 conv=notrunc 2>/dev/null
+else printf 'Z' | dd of=ck_damaged.bin bs=1 seek=5000 conv=notrunc 2>/dev/null; fi
+expect run "a damaged checkpoint" 2 "ck_damaged.bin: checkpoint is damaged \\(its checksum does not match its contents\\)" "$drawbend" run "$deck" --out ck --quiet --restart ck_damaged.bin
 exit $failed
