@@ -57,6 +57,10 @@ int block_deck_command(int argc, char** argv) {
   opt.range("press-ramp", 0, kTimeS, "s", true).range("slide-time", 0, kTimeS, "s", true);
   opt.range("speed-ramp", 0, kTimeS, "s", true);
   if (!opt.parse(argc, argv)) return 0;
+  opt.not_empty({"hardening", "surface-nodes"});  // a file option given as '' names the option
+  // The ramps against their steps, naming the options (the builder's check named its spec fields).
+  ramp_within("press-ramp", s.press_ramp, "press-time", s.press_time, true);
+  ramp_within("speed-ramp", s.speed_ramp, "slide-time", s.slide_time, true);
   name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
   // A regular file of a stated size, named by its option, before the deck is built (a FIFO or a
   // folder was named by the generated deck's line, with "cannot open").

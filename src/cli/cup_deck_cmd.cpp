@@ -48,6 +48,7 @@ int cup_deck_command(int argc, char** argv) {
   opt.range("cycles", 100, 1e8).range("refine", 1, 8);
   opt.range("punch-radius", kMinLengthMM, kLengthMM, "mm", false, false, true).range("die-radius", kMinLengthMM, kLengthMM, "mm", false, false, true);
   if (!opt.parse(argc, argv)) return 0;
+  opt.not_empty({"base"});  // a file option given as '' names the option
   name_input(s.deck, "--base");  // the file gate names the option (core/file_gate.hpp)
   name_input(s.material, "--material");
   name_input(s.friction, "--friction");

@@ -20,6 +20,7 @@
 #include "cli/option_bounds.hpp"
 #include "cli/threads.hpp"
 #include "core/csv.hpp"
+#include "core/file_gate.hpp"
 #include "core/options.hpp"
 #include "io/case_spec.hpp"
 #include "io/portable_paths.hpp"
@@ -84,12 +85,13 @@ int drawbend_deck_command(int argc, char** argv) {
               "--bending-force 348 --run my-case    # F_B of my-free");
   using namespace bounds;  // every number range-checked as it is parsed (cli/option_bounds.hpp)
   opt.range("pin-diameter", kMinLengthMM, kLengthMM, "mm", false).range("thickness", kMinThicknessMM, kThicknessMM, "mm", false);
-  opt.range("width", kMinLengthMM, kLengthMM, "mm", false).range("back-tension", 0, kForceN, "N");
+  opt.range("width", kMinLengthMM, kLengthMM, "mm", false).range("back-tension", 0, kForceN, "N", true);
   opt.range("speed", kMinSpeedMMs, kSpeedMMs, "mm/s", false).range("draw-length", kMinLengthMM, kLengthMM, "mm", false, false, true);
   opt.range("element-length", kMinLengthMM, kLengthMM, "mm", false).range("across", 1, kElements).range("through", 1, kElements);
   opt.range("mass-scaling", 1, kMassScaling, "", false, false, true).range("penalty", 0, kPenalty, "", true);
   opt.range("frames", 1, 1000).range("bending-force", 0, kForceN, "N").range("yield-stress", 0, 1e4, "MPa");
   if (!opt.parse(argc, argv)) return 0;
+  opt.not_empty({"hardening"});  // a file option given as '' names the option
   name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
   // A regular file of a stated size, named by its option, before the deck is built (a FIFO or a
   // folder was named by the generated deck's line, with "cannot open").
@@ -101,6 +103,8 @@ int drawbend_deck_command(int argc, char** argv) {
   if (!s.hardening.empty()) s.hardening = std::filesystem::absolute(s.hardening).lexically_normal().string();
   if (basis != "full" && basis != "half")
     throw std::invalid_argument("--basis: expected full or half, found '" + basis + "'");
+  if (s.strip_direction != "rd" && s.strip_direction != "td")
+    throw std::invalid_argument("--strip-direction: expected rd or td, found '" + clip_for_message(s.strip_direction) + "'");
   if (s.snapshots < 1) throw std::invalid_argument("--frames: expected at least 1");
   if (!(s.speed > 0)) throw std::invalid_argument("--speed: expected a number > 0 mm/s, found " + fmt(s.speed));
   if (s.mass_scaling < 0) throw std::invalid_argument("--mass-scaling: expected 0 (the quick tier's rule) or > 0");

@@ -247,6 +247,7 @@ int model_loop_command(int argc, char** argv, const char* name) {
   }
   a.data = argv[1];
   if (!opt.parse(argc - 1, argv + 1)) return 0;
+  opt.not_empty({"hardening"});  // a file option given as '' names the option
   if (a.out.empty()) throw InputError(me + ": --out DIR is required");
   // Every input is checked before the first FE run (runs take minutes).
   const auto points = modelloop::read_fb_points(a.data);  // file:line: column for every bad cell

@@ -5,6 +5,11 @@
 // writing a deck that `drawbend run` refuses or running for hours.  They
 // bound laboratory strip, block and cup tests generously; the deck reader's
 // own checks and [limits] (cost) still apply to what is written.
+#include <stdexcept>
+#include <string>
+
+#include "core/csv.hpp"
+
 namespace drawbend::cli::bounds {
 
 inline constexpr double kLengthMM = 1000;    ///< tool and strip dimensions [mm] (the largest test rig: 300 mm)
@@ -28,3 +33,17 @@ inline constexpr double kMinSpeedMMs = 1e-3;     ///< [mm/s] 1 um/s (the thesis'
 inline constexpr double kMinPressureMPa = 1e-3;  ///< [MPa] 1 kPa (less than a die's own weight on the strip)
 
 }  // namespace drawbend::cli::bounds
+
+namespace drawbend::cli {
+
+/// A ramp option against its step's duration, checked after parsing (each is
+/// range-checked alone as it is parsed): std::invalid_argument "--ramp:
+/// expected a ramp shorter than --step (T s), found R s" (`strict`: shorter;
+/// else not longer), so the message names the options, not the builder's spec.
+inline void ramp_within(const std::string& ramp, double r, const std::string& step, double t, bool strict) {
+  if (strict ? r < t : r <= t) return;
+  throw std::invalid_argument("--" + ramp + ": expected a ramp " + (strict ? "shorter than" : "no longer than") +
+                              " --" + step + " (" + fmt(t) + " s), found " + fmt(r) + " s");
+}
+
+}  // namespace drawbend::cli

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "analysis/stribeck.hpp"
 #include "cli/deck_out.hpp"
 #include "core/install_paths.hpp"
 #include "cli/option_bounds.hpp"
@@ -60,6 +61,9 @@ int strip_deck_command(int argc, char** argv) {
   opt.range("die-mass", 0, 1e3, "t", true, false, true).range("press-time", 0, kTimeS, "s", true);
   opt.range("force-ramp", 0, kTimeS, "s", true).range("speed-ramp", 0, kTimeS, "s", true);
   if (!opt.parse(argc, argv)) return 0;
+  opt.not_empty({"hardening", "stribeck-table"});  // a file option given as '' names the option
+  // The force ramp against the press step, naming the options (the builder's check named its spec fields).
+  ramp_within("force-ramp", s.force_ramp, "press-time", s.press_time, false);
   name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
   name_input(s.stribeck_table, "--stribeck-table");
   // A regular file of a stated size, named by its option, before the deck is built (a FIFO or a
@@ -68,6 +72,14 @@ int strip_deck_command(int argc, char** argv) {
   if (!s.stribeck_table.empty()) (void)read_input(s.stribeck_table);
   // --friction checked on its own (io/portable_paths.hpp): a problem names the option, not the generated deck.
   s.friction = io::friction_argument(friction, std::filesystem::current_path().string());
+  // --stribeck-table checked on its own, so that a problem names the option and
+  // the table's file:line, not the generated deck (as block-deck's --surface-nodes).
+  if (!s.friction && !s.stribeck_table.empty()) try {
+      (void)analysis::load_stribeck(s.stribeck_table);
+    } catch (const std::exception& e) {
+      const std::string what = e.what();
+      throw InputError((what.rfind("--stribeck-table", 0) == 0 ? "" : "--stribeck-table: ") + what);
+    }
   check_threads(threads);
   io::CaseSpec deck = sim::strip_draw_case(s);
   io::set_threads(deck, threads);  // the deck's numerics.threads

@@ -176,8 +176,11 @@ std::string CsvTable::where(const CsvRow& r, const std::string& name) const {
   return path + ":" + std::to_string(r.line) + ": column '" + name + "'";
 }
 
+bool hex_number(const std::string& text) { return text.find_first_of("xX") != std::string::npos; }
+
 double CsvTable::number(const CsvRow& r, const std::string& name) const {
   const std::string& s = text(r, name);
+  if (hex_number(s)) throw InputError(where(r, name) + ": expected a number, found '" + s + "'");
   std::size_t used = 0;
   double v = 0.0;
   try {

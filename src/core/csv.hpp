@@ -79,6 +79,11 @@ class CsvWriter {
   std::vector<std::vector<std::string>> rows_;
 };
 
+/// Whether `text` is written in hexadecimal (0x10, 0x1p3): std::stod and
+/// std::strtod read it (0x10 as 16), but no data file or option means it, so
+/// every reader of a decimal number refuses it as "not a number".
+bool hex_number(const std::string& text);
+
 /// Format a number with a fixed count of significant digits (no trailing noise).
 std::string fmt(double v, int significant = 6);
 /// The shortest text that reads back as the same double (for messages: 0.1, not 0.10000000000000001).

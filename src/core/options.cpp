@@ -33,9 +33,11 @@ std::function<void(const std::string&)> numeric_setter(T& var, const std::string
     } catch (const std::exception&) {
       used = 0;
     }
-    if (s.empty() || used != s.size() || !std::isfinite(static_cast<double>(v)))
+    // Hexadecimal (0x10) is read by std::stod but meant by no one: refused as
+    // the integers' std::stoi refuses it.
+    if (s.empty() || used != s.size() || hex_number(s) || !std::isfinite(static_cast<double>(v)))
       throw std::invalid_argument("--" + name + ": expected " + what + ", found '" + clip_for_message(s) + "'");
-    var = v;
+    var = v == 0 ? T{} : v;  // -0 as 0 (echoed and compared as the user means it)
   };
 }
 }  // namespace
@@ -144,6 +146,13 @@ void Options::only_when(bool applies, const std::vector<std::string>& names, con
   if (applies) return;
   for (const auto& n : names)
     if (given(n)) throw std::invalid_argument("--" + n + ": applies only " + when + " (given here, it would be ignored)");
+}
+
+void Options::not_empty(const std::vector<std::string>& names) const {
+  for (const auto& n : names)
+    for (const auto& o : opts_)
+      if (o.name == n && given(n) && o.get().empty())
+        throw std::invalid_argument("--" + n + ": expected a file name, found an empty one");
 }
 
 std::vector<std::string> Options::echo() const {

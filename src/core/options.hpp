@@ -40,6 +40,10 @@ class Options {
   /// be ignored)" for the first one (an option that does nothing is a typing
   /// error, not a silent default).
   void only_when(bool applies, const std::vector<std::string>& names, const std::string& when) const;
+  /// Refuse the options of `names` (file names) given with an empty value:
+  /// std::invalid_argument "--name: expected a file name, found an empty one"
+  /// (without it the message came from the builder's spec, or named no option).
+  void not_empty(const std::vector<std::string>& names) const;
   std::string usage() const;
   /// An example command line, shown at the end of --help under "Examples".
   /// Each must run as written from the source folder after a build, with

@@ -23,6 +23,19 @@ inline constexpr double kMaxStripForceN = 1e6;
 /// 1e300 mm ran past every time limit before issue 53).
 inline constexpr double kMaxPinDiameterMM = 1000;
 
+/// The largest sliding speed of a draw-bend test [mm/s]: 10 m/s, above any
+/// press and any strip-draw rig (the thesis's tests run 2.5 to 101.6 mm/s;
+/// cli/option_bounds.hpp's kSpeedMMs).  Beyond it a value is a unit or typing
+/// error (a speed of 1e300 mm/s was read as a valid speed level before).
+inline constexpr double kMaxSlidingSpeedMMs = 1e4;
+
+/// The largest friction coefficient a deck, a Stribeck table, a nodal
+/// surface or an exported friction model may hold: lubricated sheet metal runs 0.02 to 0.3, dry metal on
+/// metal reaches about 1 and clean metals in vacuum a few; sticking is reached
+/// well below 10.  Above it a value is a typing error (a Coulomb mu of 1e300
+/// ran with exit 0 before), refused naming the file, line and key.
+inline constexpr double kMaxFrictionCoefficient = 10;
+
 /// Below this, a data set whose every force is smaller is in the wrong unit
 /// [N]: a strip draw-bend test pulls a sheet near its yield stress (a
 /// 25.4 mm x 1.04 mm AA5754-O strip yields near 2.6 kN; even a 10 mm x

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/csv.hpp"
+#include "core/strip_limits.hpp"
 
 namespace drawbend::friction {
 
@@ -113,6 +114,9 @@ std::pair<analysis::FrictionSurface, analysis::FrictionSurface> load_surface_nod
     for (const auto& [col, s] : {std::pair{"mu_RD", &rd}, std::pair{"mu_TD", &td}}) {
       const double m = t.number(r, col);
       if (!(m >= 0.0)) throw InputError(t.where(r, col) + ": friction coefficient must be >= 0");
+      if (m > kMaxFrictionCoefficient)
+        throw InputError(t.where(r, col) + ": friction coefficient must be at most " + fmt(kMaxFrictionCoefficient) +
+                         " (sticking is reached far below), found " + fmt_shortest(m));
       s->mu[k] = m;
     }
   }

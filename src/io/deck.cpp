@@ -195,7 +195,7 @@ void read_numerics(const DeckContext& c, const toml::table& t, Deck& d) {
   }
 }
 
-void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out) {
+void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out, const fe::Model& m, bool mesh_ok) {
   c.allowed(t, "output", {"history_interval", "fields_per_step", "vtk_format", "history", "reduce"});
   if (const auto* rt = c.table(t, "reduce", "output", false)) {
     c.allowed(*rt, "output.reduce", {"kind", "tool", "step", "ramp", "holder", "every", "stroke"});
@@ -234,6 +234,19 @@ void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out) {
         c.bad(ht, "output.history.kind",
               "expected reaction, applied, displacement, strain, tool_force or tool_offset, found \"" + sig.kind + "\"");
       if (sig.component > 2) c.bad(ht, "output.history.component", "expected 0, 1 or 2, found " + std::to_string(sig.component));
+      // The target exists (an unknown node set wrote a column of zeros with exit 0; an
+      // unknown tool ended the run with "no tool named", without the deck's line).
+      if (const auto* target = ht.get("target"); target && kind != "strain") {
+        if (sig.kind == "tool_force" || sig.kind == "tool_offset") {
+          bool found = false;
+          for (const auto& tool : m.tools) found = found || tool.name == sig.target;
+          if (!found) c.bad(*target, "output.history.target", "expected the name of a [[tool]], found '" + sig.target + "'");
+        } else if (mesh_ok && !m.mesh.node_sets.count(sig.target)) {
+          std::string sets;
+          for (const auto& [name, nodes] : m.mesh.node_sets) sets += (sets.empty() ? "" : ", ") + name;
+          c.bad(*target, "output.history.target", "expected a node set (" + sets + "), found '" + sig.target + "'");
+        }
+      }
       // Each name is a column of history.csv: unique, and none of the run's own
       // columns (a name twice ended the run with exit 3 from the CSV writer).
       const auto own = run_output::run_history_columns();
@@ -302,7 +315,7 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
   read_contacts(c, root, m, dir, mesh_ok, sheet_rd);
   read_steps(c, root, m, mesh_ok);
   problems.attempt([&] {
-    if (const auto* t = c.table(root, "output", "deck", false)) read_output(c, *t, d.output);
+    if (const auto* t = c.table(root, "output", "deck", false)) read_output(c, *t, d.output, m, mesh_ok);
   });
   if (problems.empty())
     problems.attempt([&] { m.validate(); });

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/csv.hpp"
+#include "core/strip_limits.hpp"
 #include "friction/stribeck_law.hpp"
 #include "friction/surface_law.hpp"
 
@@ -53,6 +54,9 @@ std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const
     c.allowed(t, w, {"law", "mu"});
     const double mu = c.num(t, "mu", w);
     if (!std::isnan(mu) && !(mu >= 0)) c.bad(*t.get("mu"), w + ".mu", "expected a friction coefficient >= 0, found " + fmt_shortest(mu));
+    else if (mu > kMaxFrictionCoefficient)
+      c.bad(*t.get("mu"), w + ".mu", "expected a friction coefficient up to " + fmt(kMaxFrictionCoefficient) +
+                                         " (sticking is reached far below), found " + fmt_shortest(mu));
     if (c.count() > before) return nullptr;
     return std::make_shared<friction::Coulomb>(mu);
   }
@@ -69,8 +73,8 @@ std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const
     if (!readable_file(deck_relative(dir, file))) c.fail(*t.get("table"), w + ".table", missing_file(file, dir));
     p = analysis::load_stribeck(deck_relative(dir, file));
   } else {
-    p.mu_BL = c.in_range(t, "mu_BL", w, NAN, 0.0);
-    p.mu_EHL = c.in_range(t, "mu_EHL", w, NAN, 0.0);
+    p.mu_BL = c.in_range(t, "mu_BL", w, NAN, 0.0, kMaxFrictionCoefficient);
+    p.mu_EHL = c.in_range(t, "mu_EHL", w, NAN, 0.0, kMaxFrictionCoefficient);
     p.L_BL = c.positive(t, "L_BL", w);
     p.L_EHL = c.positive(t, "L_EHL", w);
     p.Ra_um = c.positive(t, "Ra_um", w);

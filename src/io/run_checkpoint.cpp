@@ -10,7 +10,11 @@ namespace drawbend::io {
 
 namespace {
 
-constexpr const char* kMagic = "drawbend-checkpoint 1\n";
+// Format 2 ends with the FNV-1a hash of every byte before it: a checkpoint
+// damaged on disk or in transfer (a flipped byte) is refused, where format 1
+// restarted from the damaged state with exit 0.
+constexpr const char* kMagic = "drawbend-checkpoint 2\n";
+constexpr const char* kMagicV1 = "drawbend-checkpoint 1\n";
 
 void put_u64(std::string& o, std::uint64_t v) { o.append(reinterpret_cast<const char*>(&v), 8); }
 void put_f64(std::string& o, double v) { o.append(reinterpret_cast<const char*>(&v), 8); }
@@ -71,13 +75,22 @@ void write_checkpoint(const std::string& path, std::uint64_t deck_hash, const fe
     put_f64(o, t);
     put_str(o, name);
   }
+  put_u64(o, fnv1a64(o));
   write_file_atomic(path, o);
 }
 
 RunState read_checkpoint(const std::string& path, std::uint64_t deck_hash, fe::Solver& s) {
-  const std::string d = read_input(path, kMaxCheckpointBytes);  // core/file_gate.hpp
+  std::string d = read_input(path, kMaxCheckpointBytes);  // core/file_gate.hpp
+  if (d.compare(0, std::strlen(kMagicV1), kMagicV1) == 0)
+    throw InputError(path + ": checkpoint of an older drawbend (format 1, without a checksum): run the deck from the start");
   if (d.compare(0, std::strlen(kMagic), kMagic) != 0)
-    throw InputError(path + ": not a drawbend checkpoint (expected the header 'drawbend-checkpoint 1')");
+    throw InputError(path + ": not a drawbend checkpoint (expected the header 'drawbend-checkpoint 2')");
+  std::uint64_t sum = 0;
+  if (d.size() < std::strlen(kMagic) + 8) throw InputError(path + ": checkpoint is truncated (at byte " + std::to_string(d.size()) + ")");
+  std::memcpy(&sum, d.data() + d.size() - 8, 8);
+  d.resize(d.size() - 8);
+  if (sum != fnv1a64(d))
+    throw InputError(path + ": checkpoint is damaged (its checksum does not match its contents): run the deck from the start");
   In in{d, path, std::strlen(kMagic)};
   const std::uint64_t h = in.u64();
   if (h != deck_hash)

@@ -173,8 +173,20 @@ void Checkpoints::operator()(const History& history, const fe::Progress& p) {
   const bool by_cycles = opt.checkpoint_every_cycles > 0 && p.cycle % opt.checkpoint_every_cycles == 0;
   const bool by_time = opt.checkpoint_every_s > 0 && p.time >= next_time_;
   if (!by_cycles && !by_time) return;
-  if (by_time)
-    while (next_time_ <= p.time) next_time_ += opt.checkpoint_every_s;
+  if (by_time) {
+    // The next time after p.time.  An interval far below the time's spacing
+    // of doubles (--checkpoint-every 1e-300s at t = 1e-7 s) adds nothing to
+    // next_time_, and the loop of additions never ended (a hang that SIGTERM
+    // could not stop); after a few additions, jump straight past p.time.
+    for (int adds = 0; next_time_ <= p.time; ++adds) {
+      const double next = next_time_ + opt.checkpoint_every_s;
+      if (adds >= 64 || !(next > next_time_)) {
+        next_time_ = std::nextafter(p.time, HUGE_VAL);
+        break;
+      }
+      next_time_ = next;
+    }
+  }
   write_checkpoint_now(run_, history);
   if (opt.halt_after_cycles > 0 && p.cycle >= opt.halt_after_cycles) throw Halt{};
 }

@@ -9,12 +9,42 @@
 
 #include "core/csv.hpp"
 #include "core/run_output.hpp"
+#include "core/strip_limits.hpp"
 
 namespace drawbend::loop {
 
 namespace fs = std::filesystem;
 
 namespace {
+
+// The largest contact pressure [MPa] and nodal area [mm^2] of an FE map: 100
+// GPa is above the elastic modulus of any sheet and 1 m^2 above any strip's
+// contact patch; beyond them a value is a unit or typing error.
+constexpr double kMaxMapPressureMPa = 1e5;
+constexpr double kMaxMapAreaMM2 = 1e6;
+
+// A number of a map file (a comment's value or a .ref file), in (lo, hi] ([lo, hi] with `closed`):
+// InputError naming the file and the value's key (a bare std::stod ended with
+// "input error: stod", or "error: stod" and exit 3 for 1e999).
+double map_number(const std::string& text, const std::string& file, const std::string& key, double lo, double hi,
+                  bool closed = false) {
+  std::size_t b = text.find_first_not_of(" \t\r\n"), e = text.find_last_not_of(" \t\r\n");
+  const std::string t = b == std::string::npos ? "" : text.substr(b, e - b + 1);
+  double v = NAN;
+  std::size_t used = 0;
+  try {
+    v = std::stod(t, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (t.empty() || used != t.size() || hex_number(t) || !std::isfinite(v))
+    throw InputError(file + ": " + key + " expected a number, found '" + t + "'");
+  if (!((closed ? v >= lo : v > lo) && v <= hi))
+    throw InputError(file + ": " + key + " expected a value in " + (closed ? "[" : "(") + fmt(lo) + ", " + fmt(hi) +
+                     "] N, found " + t);
+  return v;
+}
+
 void finish(PinMap& m) {
   m.map.validate();
   m.S1 = m.map.moment(1);
@@ -71,17 +101,23 @@ MapLibrary MapLibrary::load_dir(const std::string& dir) {
     const std::string kref = run_output::kReferenceBackTension, kbend = run_output::kBendingForce;
     for (const auto& c : t.comments) {
       const auto k = c.find(kref);
-      if (k != std::string::npos) pm.fref_N = std::stod(c.substr(k + kref.size()));
+      if (k != std::string::npos) pm.fref_N = map_number(c.substr(k + kref.size()), f.string(), kref, 0, kMaxStripForceN);
       const auto b = c.find(kbend);
-      if (b != std::string::npos) pm.fbend_N = std::stod(c.substr(b + kbend.size()));
+      if (b != std::string::npos)
+        pm.fbend_N = map_number(c.substr(b + kbend.size()), f.string(), kbend, 0, kMaxStripForceN, true);
     }
     fs::path side = f;
     side.replace_extension(".ref");
-    if (pm.fref_N <= 0 && fs::exists(side)) pm.fref_N = std::stod(read_file(side.string()));
+    if (pm.fref_N <= 0 && fs::exists(side))
+      pm.fref_N = map_number(read_file(side.string()), side.string(), "reference back tension:", 0, kMaxStripForceN);
     if (!(pm.fref_N > 0))
       throw InputError(f.string() + ": no reference back tension (comment '# reference_back_tension_N: N' or " +
                        side.filename().string() + ")");
     for (std::size_t r = 0; r < t.pressure.size(); ++r) {
+      if (t.pressure[r] > kMaxMapPressureMPa || t.area[r] > kMaxMapAreaMM2)
+        throw InputError(f.string() + ":" + std::to_string(t.line[r]) + ": expected a contact pressure up to " +
+                         fmt(kMaxMapPressureMPa) + " MPa and a nodal area up to " + fmt(kMaxMapAreaMM2) +
+                         " mm^2 (check the units), found " + fmt(t.pressure[r]) + " MPa and " + fmt(t.area[r]) + " mm^2");
       if (t.pressure[r] <= 0) continue;  // out of contact
       pm.map.p_MPa.push_back(t.pressure[r]);
       pm.map.area_mm2.push_back(2.0 * t.area[r]);  // half model -> full strip

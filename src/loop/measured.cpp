@@ -41,7 +41,7 @@ std::optional<std::vector<double>> numeric_extra(const Dataset& d, size_t e) {
     if (v.empty()) continue;
     char* end = nullptr;
     x[i] = std::strtod(v.c_str(), &end);  // as std::stod, without a throw per text cell
-    if (end != v.c_str() + v.size() || !std::isfinite(x[i])) return std::nullopt;
+    if (end != v.c_str() + v.size() || hex_number(v) || !std::isfinite(x[i])) return std::nullopt;
   }
   return x;
 }
@@ -64,7 +64,7 @@ bool parse_number(const std::string& text, double& v, std::string& why) {
   try {
     size_t used = 0;
     v = std::stod(t, &used);
-    if (used != t.size()) {
+    if (used != t.size() || hex_number(t)) {
       why = "'" + t + "' is not a number";
       return false;
     }
@@ -109,7 +109,7 @@ void nonfinite_extras(Dataset& d) {
       } catch (const std::exception&) {
         used = 0;
       }
-      if (used != t.size() || used == 0) numeric = false;
+      if (used != t.size() || used == 0 || hex_number(t)) numeric = false;
       else if (!std::isfinite(v)) nonfinite = true;
     }
     if (!numeric || !nonfinite) continue;
@@ -263,6 +263,9 @@ struct MeasuredReader {
     if (s.speed_mm_s <= 0)
       problem(lineno, "speed_mm_s", "expected a sliding speed > 0 mm/s, found " + fmt(s.speed_mm_s) +
                                         " (a test without sliding measures no friction)");
+    if (s.speed_mm_s > kMaxSlidingSpeedMMs)
+      problem(lineno, "speed_mm_s", "expected a sliding speed up to " + fmt(kMaxSlidingSpeedMMs) +
+                                        " mm/s (a draw-bend test; check the units), found " + fmt(s.speed_mm_s) + " mm/s");
     for (const char* f : {"back_tension_N", "outlet_force_N"}) {
       const double v = std::string(f) == "back_tension_N" ? s.back_tension_N : s.outlet_force_N;
       if (v > kMaxStripForceN)

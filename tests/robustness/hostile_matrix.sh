@@ -219,4 +219,70 @@ for case in "drawbend-deck --across 1 --through 4" "block-deck --elements 1 --ou
     failed=1
   fi
 done
+# Fuzz pass (2026-12-04): hexadecimal numbers (std::stod reads 0x10 as 16; every real-valued
+# option and every table cell took it before), option relations named by their options
+# (the builders' spec fields were named), a choice option named, a checkpoint interval
+# far below the time step (a hang that SIGTERM could not stop), a Stribeck table's
+# parameter given twice or missing.
+expect drawbend-deck "hexadecimal option" 2 "--back-tension: expected a number, found '0x10'" "$drawbend" drawbend-deck --back-tension 0x10
+awk -F, -v OFS=, '$1=="uniaxial" && $2==45 {$4="0x10"} 1' "$root/data/materials/aa6016_t4_esaform2021.csv" >cal_hex.csv
+expect calibrate "hexadecimal cell" 2 "cal_hex.csv:[0-9]+: column 'r_value': expected a number, found '0x10'" "$drawbend" calibrate cal_hex.csv --out c9
+awk -F, -v OFS=, 'NR==8 {$2="0x10"} 1' "$root/data/measured/thesis_drawbend.csv" >loop_hex.csv
+expect loop "hexadecimal cell" 0 "data problem: .*loop_hex.csv:8: column 'pin_diameter_mm': '0x10' is not a number" "$drawbend" loop loop_hex.csv --out l6 --permutations 19 --figures= --export none
+expect drawbend-deck "back tension 0" 2 "--back-tension: expected a value in \\(0, " "$drawbend" drawbend-deck --back-tension 0
+expect drawbend-deck "unknown strip direction" 2 "--strip-direction: expected rd or td, found 'xx'" "$drawbend" drawbend-deck --strip-direction xx
+expect block-deck "ramp longer than its step" 2 "--press-ramp: expected a ramp shorter than --press-time \\(0.002 s\\), found 0.005 s" "$drawbend" block-deck --press-ramp 0.005 --out b7.toml
+expect block-deck "ramp as long as its step" 2 "--speed-ramp: expected a ramp shorter than --slide-time \\(0.003 s\\), found 0.003 s" "$drawbend" block-deck --speed-ramp 0.003 --out b8.toml
+expect strip-deck "ramp longer than its step" 2 "--force-ramp: expected a ramp no longer than --press-time \\(0.05 s\\), found 1 s" "$drawbend" strip-deck --force-ramp 1 --out s2.toml
+expect run "--checkpoint-every 1e-300s" 0 "halted after cycle 3 " "$drawbend" run "$deck" --out o14 --quiet --checkpoint-every 1e-300s --halt-after-cycles 3
+grep -v '^#' "$root/data/thesis/table_3_1.csv" >strib_twice.csv
+printf 'mu_BL,0.2,-\n' >>strib_twice.csv
+expect strip-deck "Stribeck parameter twice" 2 "--stribeck-table: strib_twice.csv:8: column 'parameter': Stribeck parameter 'mu_BL' given twice \\(first on line 2\\)" "$drawbend" strip-deck --stribeck-table strib_twice.csv --out s3.toml
+grep -v '^#' "$root/data/thesis/table_3_1.csv" | grep -v '^eta' >strib_short.csv
+expect strip-deck "Stribeck parameter missing" 2 "--stribeck-table: strib_short.csv: missing Stribeck parameter 'eta'" "$drawbend" strip-deck --stribeck-table strib_short.csv --out s4.toml
+# A history signal of a tool or node set the deck does not have: before, an unknown
+# tool ended the run with "no tool named 'nope'" (no file, no line) and `plan` took
+# the deck; an unknown node set wrote a column of zeros with exit 0.
+sed 's/kind = "tool_force", target = "floor", component = 2/kind = "tool_force", target = "nope", component = 2/' "$deck" >hist_tool.toml
+expect run "history of an unknown tool" 2 "hist_tool.toml:[0-9]+: output.history.target: expected the name of a \\[\\[tool\\]\\], found 'nope'" "$drawbend" run hist_tool.toml --out o15 --quiet
+expect plan "history of an unknown tool" 2 "hist_tool.toml:[0-9]+: output.history.target: expected the name of a \\[\\[tool\\]\\]" "$drawbend" plan hist_tool.toml
+sed 's/kind = "tool_force", target = "floor", component = 2/kind = "reaction", target = "nope", component = 2/' "$deck" >hist_set.toml
+expect run "history of an unknown node set" 2 "hist_set.toml:[0-9]+: output.history.target: expected a node set \\(.*\\), found 'nope'" "$drawbend" run hist_set.toml --out o16 --quiet
+# loop --maps: an FE map's numbers (before: "input error: stod" for a word, "error: stod"
+# and exit 3 for 1e999, and a pressure of 1e300 MPa ran with exit 0 and an "inf %" export).
+"$drawbend" synth --effect none --seed 1 --tests-per-pin 2 --rows-per-test 5 --out maps_data >/dev/null 2>&1
+map_dir() {  # DIR COMMENT PRESSURE: one five-node map per pin of the synthetic data
+  mkdir -p "$1"
+  for d in 12.7 25.4 42; do
+    { printf '%s\n' "$2" "node,x_mm,y_mm,z_mm,x0_mm,y0_mm,z0_mm,surface,u_tool,v_tool_mm,pressure_MPa,area_mm2,normal_force_N,tangential_force_N,slip_speed_mm_s,penetration_mm"
+      for i in 1 2 3 4 5; do echo "$i,0,0,0,0,0,0,0,0,0,$3,0.5,0,0,0,0"; done; } >"$1/pin_${d}mm.csv"
+  done
+}
+map_dir maps_word '# reference_back_tension_N: abc' 20
+expect loop "--maps: a word as the reference tension" 2 "maps_word/pin_12.7mm.csv: reference_back_tension_N: expected a number, found 'abc'" "$drawbend" loop maps_data/data.csv --maps maps_word --out l7 --figures= --permutations 19
+map_dir maps_big '# reference_back_tension_N: 1e999' 20
+expect loop "--maps: 1e999 as the reference tension" 2 "maps_big/pin_12.7mm.csv: reference_back_tension_N: expected a number, found '1e999'" "$drawbend" loop maps_data/data.csv --maps maps_big --out l8 --figures= --permutations 19
+map_dir maps_huge '# reference_back_tension_N: 1000' 1e300
+expect loop "--maps: a pressure of 1e300 MPa" 2 "maps_huge/pin_12.7mm.csv:3: expected a contact pressure up to 100000 MPa" "$drawbend" loop maps_data/data.csv --maps maps_huge --out l9 --figures= --permutations 19
+# A file option given as '' (before: "draw-bend spec: no hardening curve", or
+# ": expected a file name, found an empty one" naming no option).
+while read -r cmd opt extra; do
+  expect "$cmd" "empty --$opt" 2 "input error: --$opt: expected a file name, found an empty one" "$drawbend" $cmd $extra --$opt ""
+done <<LIST
+drawbend-deck hardening
+block-deck hardening --out b9.toml
+block-deck surface-nodes --out b9.toml
+strip-deck hardening --out s5.toml
+strip-deck stribeck-table --out s5.toml
+cup-deck base
+model-loop hardening ml_crlf.csv --out m6
+LIST
+# A checkpoint with one byte changed (format 2 carries a checksum; before, a
+# damaged checkpoint restarted with exit 0 from the damaged state).
+"$drawbend" run "$deck" --out ck --quiet --checkpoint-every 200 --halt-after-cycles 200 >/dev/null 2>&1
+cp ck/checkpoint.bin ck_damaged.bin
+byte=$(od -An -tx1 -j 5000 -N 1 ck_damaged.bin | tr -d ' ')
+if [ "$byte" = 5a ]; then printf 'Y' | dd of=ck_damaged.bin bs=1 seek=5000 conv=notrunc 2>/dev/null
+else printf 'Z' | dd of=ck_damaged.bin bs=1 seek=5000 conv=notrunc 2>/dev/null; fi
+expect run "a damaged checkpoint" 2 "ck_damaged.bin: checkpoint is damaged \\(its checksum does not match its contents\\)" "$drawbend" run "$deck" --out ck --quiet --restart ck_damaged.bin
 exit $failed

@@ -137,4 +137,16 @@ expect plan "a deck with n = 0 elements along x" 2 "deck.toml:[0-9]+: mesh.x.n: 
 "$drawbend" block-deck --out flat/deck.toml >/dev/null 2>&1
 sed -i 's/^x = { from = 0.0, n = 4, to = 1.0 }/x = { from = 0.0, n = 4, to = 0.0 }/' flat/deck.toml
 expect plan "a deck of zero length along x" 2 "deck.toml:[0-9]+: mesh.x: expected 'to' > 'from'" "$drawbend" plan flat/deck.toml
+# Friction coefficients and speeds no test has (fuzz pass, 2026-12-04: each ran or
+# was written with exit 0 before; core/strip_limits.hpp's kMaxFrictionCoefficient
+# and kMaxSlidingSpeedMMs).
+lp speed_huge 'NR==10{$5=1e300}1' 0 "speed_huge.csv:10: column 'speed_mm_s': expected a sliding speed up to 10000 mm/s" "a speed of 1e300 mm/s (one row)"
+ex mu_huge "$good" 's/^1,0.0142,/1,1e300,/' 2 "ex_mu_huge/nodes.csv:2: column 'mu_RD': friction coefficient must be at most 10" "mu = 1e300 at a node"
+sed 's/mu = 0.1 }/mu = 1e300 }/' "$here/decks/restart_block.toml" >mu_huge.toml
+expect run "a Coulomb mu of 1e300 in a deck" 2 "mu_huge.toml:[0-9]+: contact.friction.mu: expected a friction coefficient up to 10" "$drawbend" run mu_huge.toml --out o_mu_huge --quiet
+expect block-deck "a Coulomb mu of 1e300 in --friction" 2 "--friction:1: friction.mu: expected a friction coefficient up to 10" "$drawbend" block-deck --friction '{ law = "coulomb", mu = 1e300 }' --out b_mu.toml
+grep -v '^#' "$root/data/thesis/table_6_1.csv" | sed 's/^5,0.0583,/5,1e300,/' >nodes_huge.csv
+expect block-deck "a nodal mu of 1e300" 2 "--surface-nodes: nodes_huge.csv:6: column 'mu_RD': friction coefficient must be at most 10" "$drawbend" block-deck --surface-nodes nodes_huge.csv --out b_nodes.toml
+grep -v '^#' "$root/data/thesis/table_3_1.csv" | sed 's/^mu_BL,0.1,/mu_BL,1e300,/' >strib_huge.csv
+expect strip-deck "a Stribeck mu_BL of 1e300" 2 "--stribeck-table: strib_huge.csv:2: column 'value': mu_BL: expected a friction coefficient in \\[0, 10\\], found 1e\\+300" "$drawbend" strip-deck --stribeck-table strib_huge.csv --out s_huge.toml
 exit $failed

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Issue 53: every numeric option of every command (read from its --help: the
-# options whose default is a number) given 0, -1, nan, 1e300 and a word.
+# options whose default is a number) given 0, -1, nan, inf, 1e300, 0x10 (hexadecimal,
+# which std::stod reads as 16: accepted as 16 by every real-valued option before) and a word.
 # Prints one table row per case:  | command | --option value | exit | first line |
 # With --check, every case not listed in option_valid.txt (values a command
 # accepts, such as --threads 0) must end with exit 2 and a first message line
@@ -55,7 +56,7 @@ for cmd in run drawbend-deck block-deck strip-deck cup-deck loop model-loop synt
     /\(default: / && name != "" { d = $0; sub(/.*\(default: /, "", d); sub(/\)$/, "", d);
       if (takes && d ~ /^-?[0-9.]+(e[-+]?[0-9]+)?$/) print name; name = "" }')
   for o in $opts; do
-    for v in 0 -1 nan 1e300 word; do
+    for v in 0 -1 nan inf 1e300 0x10 word; do
       if [ -n "$check" ] && grep -qxF "$cmd $o $v" "$valid"; then continue; fi
       out=$( (cap_memory; timeout -k 5 "$limit" "$drawbend" $(base_args $cmd) "$o" "$v") 2>&1 </dev/null)
       rc=$?
