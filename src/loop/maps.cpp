@@ -29,7 +29,14 @@ constexpr double kMaxMapAreaMM2 = 1e6;
 double map_number(const std::string& text, const std::string& file, const std::string& key, double lo, double hi,
                   bool closed = false) {
   std::size_t b = text.find_first_not_of(" \t\r\n"), e = text.find_last_not_of(" \t\r\n");
-  const std::string t = b == std::string::npos ? "" : text.substr(b, e - b + 1);
+  std::string t = b == std::string::npos ? "" : text.substr(b, e - b + 1);
+  // The number may carry a note in brackets after it, as our own maps write it
+  // ("1512.4 (full strip; the map is the half model's, ...)").
+  const std::size_t sp = t.find_first_of(" \t");
+  if (sp != std::string::npos) {
+    const std::size_t rest = t.find_first_not_of(" \t", sp);
+    if (rest != std::string::npos && t[rest] == '(') t = t.substr(0, sp);
+  }
   double v = NAN;
   std::size_t used = 0;
   try {
