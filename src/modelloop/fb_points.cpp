@@ -39,6 +39,14 @@ std::vector<FbPoint> read_fb_points(const std::string& csv_path) {
       if (v > kMaxStripForceN)
         problems.push_back(t.where(r, col) + ": expected a force below " + fmt(kMaxStripForceN) +
                            " N (a strip test; check the units), found " + fmt(v) + " N");
+    // An exact copy of an earlier point (a pasted row) would count twice in the
+    // fit and the choice; `drawbend loop` drops its duplicate rows as data
+    // problems, and model-loop, which stops on any problem, refuses it.
+    for (std::size_t k = 0; k < out.size(); ++k)
+      if (out[k].pin_mm == p.pin_mm && out[k].back_tension_N == p.back_tension_N && out[k].bending_N == p.bending_N) {
+        problems.push_back(p.where + ": duplicate of " + out[k].where + " (the same pin, back tension and bending force)");
+        break;
+      }
     out.push_back(p);
   }
   if (out.empty() && problems.empty()) problems.push_back(t.path + ": no data rows");

@@ -160,6 +160,8 @@ expect calibrate "stress ratio 1e300" 2 "cal_huge.csv:3: column 'stress_ratio': 
 expect calibrate "RD test only" 2 "missing: sigma\\(45\\) r\\(45\\)" "$drawbend" calibrate cal_rd_only.csv --out c7
 expect calibrate "r-values weighted 0" 2 "weights of the uniaxial stress ratios and r-values must be > 0" "$drawbend" calibrate cal_crlf.csv --out c8 --w-r 0
 printf 'pin_diameter_mm,back_tension_N,bending_force_N\n1e300,1000,200\n25.4,1000,150\n' >ml_pin.csv
+printf 'pin_diameter_mm,back_tension_N,bending_force_N\n25.4,1000,150\n12.7,1000,300\n25.4,1000,150\n' >ml_dup.csv
+expect model-loop "a duplicated point" 2 "ml_dup.csv:4: duplicate of .*ml_dup.csv:2 \\(the same pin, back tension and bending force\\)" "$drawbend" model-loop ml_dup.csv --out m7
 expect model-loop "pin diameter 1e300 mm" 2 "ml_pin.csv:2: column 'pin_diameter_mm': expected a pin diameter up to 1000 mm" "$drawbend" model-loop ml_pin.csv --out m3
 expect plan "wall time 1e-300 s" 0 "warning: .*summary.csv: wall_time 1e-300 s is not a run's wall time" "$drawbend" plan runs
 # Unwritable output folders: exit 2 before any work (calibrate: exit 3, a file-system error, before).
