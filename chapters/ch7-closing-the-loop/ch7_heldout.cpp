@@ -46,7 +46,7 @@ struct ClassSum {
   int sets = 0, detected = 0, named_rms_high = 0, wrong_first = 0, no_step = 0;
   int base_only = 0;  ///< null sets with steps on the model's own inputs only (base-model mismatch)
   /// Effect sets whose planted effect is carried by at least kSupportMin tests
-  /// (90 % of its sum of squares; BlindTruth::support_tests), and their detections.
+  /// (kSupportShare of its sum of squares; BlindTruth::support_tests), and their detections.
   int wide = 0, wide_detected = 0;
 };
 // An effect that fewer tests carry can hardly be named from the data: every
@@ -89,7 +89,7 @@ Tally run_sets(Chapter& c, const Config& cfg, const Study& st, const std::vector
   auto w = c.table({"set", "seed", "class", "noise_N", "rows", "variable", "aliases", "shape", "channel", "cell",
                     "k_effect_over_noise", "support_tests", "steps", "outcome", "base_over_noise", "final_over_noise"},
                    st.demo + ": every " + st.generator + " set; k = planted effect RMS / noise sd; support_tests = the "
-                   "fewest tests that carry 90 % of the planted effect's sum of squares; the RMS ratios "
+                   "fewest tests that carry " + fmt(100 * kSupportShare) + " % of the planted effect's sum of squares; the RMS ratios "
                    "are held-out RMS of the outlet force over the true noise sd");
   Tally tally;
   std::map<std::string, ClassSum>& sum = tally.sum;
@@ -187,6 +187,7 @@ void summary_table(Chapter& c, const Study& st, const std::vector<std::string>& 
   c.value(st.value + "_effect_sets", std::to_string(eff_sets));
   c.value(st.value + "_detected", std::to_string(eff_det));
   c.value(st.value + "_detection_rate", fmt(100 * rate, 3), "%");
+  c.value(st.value + "_support_share", fmt(100 * kSupportShare), "%");
   c.value(st.value + "_wide_sets", std::to_string(wide));
   c.value(st.value + "_wide_detected", std::to_string(wide_det));
   c.value(st.value + "_narrow_sets", std::to_string(eff_sets - wide));

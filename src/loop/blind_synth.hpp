@@ -68,10 +68,13 @@ struct BlindTruth {
   std::uint64_t seed = 0;
 };
 
+/// The share of the planted effect's sum of squares that BlindTruth::support_tests counts.
+inline constexpr double kSupportShare = 0.9;
+
 /// The fewest tests whose rows carry `share` of the sum of squares of y - y0
 /// (the planted effect per row; test_of_row: each row's test index).
 int effect_support(const std::vector<double>& y, const std::vector<double>& y0, const std::vector<int>& test_of_row,
-                   double share = 0.9);
+                   double share = kSupportShare);
 
 /// level, smooth, interaction, bending, test-level, null.
 const std::vector<std::string>& blind_classes();

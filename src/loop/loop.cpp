@@ -206,14 +206,16 @@ bool LoopSearch::forward_round() {
     if (ch.found && gain >= o.far_share * excess)
       ch.best_step.far_note = "no candidate passed the permutation screen and its forms, while the held-out RMS " +
                               fmt(cur.rms, 4) + " N was " + fmt(cur.rms / sigma, 3) + " x the replicate noise (above " +
-                              fmt(o.far_ratio) + " x): the candidates with the largest held-out gain were given their "
-                              "forms; this one's passed the F test, lowered the held-out error, reached the minimum "
-                              "effect, and took " + fmt(100 * gain / excess, 3) + " % of the excess MSE over the noise "
-                              "(at least " + fmt(100 * o.far_share) + " % asked)";
-    else if (ch.found)
+                              fmt(o.far_ratio) + " x): the " + std::to_string(o.far_contenders) + " candidate(s) "
+                              "with the largest held-out gain were given their forms; this one's passed the F test, "
+                              "lowered the held-out error, reached the minimum effect, and took " +
+                              fmt(100 * gain / excess, 3) + " % of the excess MSE over the noise (at least " +
+                              fmt(100 * o.far_share) + " % asked)";
+    else if (ch.found) {
       progress(o, "far-from-noise rule: " + ch.best_step.variable + " takes " + fmt(100 * gain / excess, 3) +
-                      " % of the excess over the noise, below " + fmt(100 * o.far_share) + " %: no step"),
-          ch = RoundChoice{};
+                      " % of the excess over the noise, below " + fmt(100 * o.far_share) + " %: no step");
+      ch = RoundChoice{};
+    }
   }
   ++round;
   if (!ch.found) {
@@ -280,7 +282,7 @@ std::vector<std::string> LoopSearch::give_forms_by_gain(const std::vector<Candid
     const Candidate* cand = nullptr;
     for (const auto& k : cands)
       if (k.name == c->name) cand = &k;
-    if (!cand || cand->kind == "pair") continue;
+    if (!cand) continue;
     if (!cand->confounded_with.empty() && input_significant(rank, cand->confounded_with)) continue;
     given.push_back(c->name);
     consider(*c, *cand, false, thr, ch);
