@@ -131,6 +131,15 @@ expect export "a speed band beyond the measured speeds (warning)" 0 \
 # drawbend plan on nothing to plan.
 mkdir -p empty
 expect plan "an empty folder" 2 "drawbend plan: no deck.toml under .*empty" "$drawbend" plan empty
+# A folder is searched three levels down, never the whole file system (before 2026-12-04
+# `plan /` walked every folder of the machine): a deck four levels down is not planned, and
+# /proc (tens of thousands of entries three levels down, no deck) ends at once.
+mkdir -p deep/a/b/c/d
+cp "$here/decks/restart_block.toml" deep/a/b/c/d/deck.toml
+expect plan "a deck four levels down" 2 "drawbend plan: no deck.toml under deep \\(a folder is searched 3 levels down\\)" "$drawbend" plan deep
+cp "$here/decks/restart_block.toml" deep/a/b/c/deck.toml
+expect plan "a deck three levels down" 0 "^deep/a/b/c/deck.toml,64," "$drawbend" plan deep
+expect plan "the whole of /proc" 2 "drawbend plan: no deck.toml under /proc" "$drawbend" plan /proc
 "$drawbend" block-deck --out zero/deck.toml >/dev/null 2>&1
 sed -i 's/^x = { from = 0.0, n = 4, to = 1.0 }/x = { from = 0.0, n = 0, to = 1.0 }/' zero/deck.toml
 expect plan "a deck with n = 0 elements along x" 2 "deck.toml:[0-9]+: mesh.x.n: expected a whole number >= 1" "$drawbend" plan zero/deck.toml
