@@ -21,6 +21,7 @@
 #include <sstream>
 
 #include "core/csv.hpp"
+#include "core/list_option.hpp"
 #include "core/quote.hpp"
 #include "core/install_paths.hpp"
 #include "core/file_gate.hpp"
@@ -120,9 +121,13 @@ std::vector<modelloop::ModelCandidate> checked_candidates(Args& a) {
   p.need(a.cfg.min_gain >= 0, "--min-gain: expected a number >= 0, found " + fmt(a.cfg.min_gain));
   p.need(good_threads(a.threads), bad_threads(a.threads));
   std::vector<modelloop::ModelCandidate> cands;
-  std::stringstream ss(a.candidates);
-  for (std::string tok; std::getline(ss, tok, ',');) {
-    if (tok.empty()) continue;
+  std::vector<std::string> names;
+  try {
+    if (!a.candidates.empty()) names = list_items(a.candidates, "--candidates");  // empty: the baseline alone
+  } catch (const std::invalid_argument& e) {
+    p.need(false, e.what());
+  }
+  for (const std::string& tok : names) {
     try {
       cands.push_back(modelloop::named_candidate(tok, drawbend::data_dir()));
     } catch (const InputError& e) {

@@ -71,6 +71,7 @@
 
 #include "core/file_gate.hpp"
 #include "core/csv.hpp"
+#include "core/list_option.hpp"
 #include "core/input_problems.hpp"
 #include "core/toml_read.hpp"
 #include "io/deck_context.hpp"
@@ -216,24 +217,12 @@ void ExportOptions::validate(const std::string& format) const {
 
 namespace {
 std::vector<double> numbers(const std::string& text, const std::string& opt, size_t n, bool integers) {
-  std::vector<double> v;
-  std::stringstream ss(text);
-  for (std::string item; std::getline(ss, item, ',');) {
-    size_t used = 0;
-    double x = NAN;
-    try {
-      x = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    while (used < item.size() && item[used] == ' ') ++used;
-    if (item.empty() || used != item.size() || !std::isfinite(x) || (integers && x != std::floor(x)))
-      throw std::invalid_argument(opt + ": expected " + std::to_string(n) + (integers ? " integers" : " finite numbers") +
-                                  " separated by commas, found '" + text + "'");
-    v.push_back(x);
-  }
+  const std::vector<double> v = list_numbers(text, opt, ',', false);  // empty items, spaces, NaN: named
   if (v.size() != n)
     throw std::invalid_argument(opt + ": expected " + std::to_string(n) + " values separated by commas, found '" + text + "'");
+  for (double x : v)
+    if (integers && x != std::floor(x))
+      throw std::invalid_argument(opt + ": expected " + std::to_string(n) + " integers separated by commas, found '" + text + "'");
   return v;
 }
 }  // namespace
@@ -530,8 +519,7 @@ std::string export_path(const std::string& toml_path, const std::string& format)
 std::string write_exports(const std::vector<std::string>& tomls, const std::string& formats, const ExportOptions& o) {
   std::vector<std::string> list;
   if (formats != "none") {
-    std::stringstream ss(formats);
-    for (std::string f; std::getline(ss, f, ',');) {
+    for (const std::string& f : list_items(formats, "--export")) {
       if (f != "lsdyna" && f != "openradioss" && f != "abaqus")
         throw std::invalid_argument("--export: expected none or a list of lsdyna, openradioss, abaqus; found '" + f + "'");
       list.push_back(f);

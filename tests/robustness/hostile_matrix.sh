@@ -12,7 +12,6 @@
 # With --check, exits 1 unless every case matched.
 # Usage: hostile_matrix.sh DRAWBEND WORKDIR [--check]
 set -u
-cap_memory() { [ -n "${ASAN_OPTIONS:-}" ] || ulimit -v 2000000; }
 drawbend=$1 work=$2 check=${3:-}
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -22,26 +21,7 @@ mkdir -p "$work"
 cd "$work" || exit 1
 deck=$here/decks/restart_block.toml
 failed=0
-# expect LABEL CLASS RC PATTERN CMD...: the exit code must be RC and PATTERN
-# (grep -E) must match a line of the output (the table shows the first line
-# that starts with input error / error / warning / numerical fault).
-expect() {
-  local label=$1 class=$2 want=$3 pattern=$4
-  shift 4
-  local out rc first
-  out=$( (cap_memory; timeout -k 5 "$limit" "$@") 2>&1 </dev/null)
-  rc=$?
-  first=$(printf '%s\n' "$out" | grep -a -m1 -E '^(input error|numerical fault|error|data problem|warning)' | cut -c1-300)
-  [ -z "$first" ] && first=$(printf '%s\n' "$out" | grep -a -m1 . | cut -c1-300)
-  printf '| %s | %s | %s | %s |\n' "$label" "$class" "$rc" "${first//|/\\|}"
-  if [ -n "$check" ]; then
-    local hay=$out  # a file with several problems: "N problems in FILE:" first, then each
-    if [ "$rc" != "$want" ] || ! printf '%s\n' "$hay" | grep -a -qE -- "$pattern"; then
-      echo "FAILED: $label ($class): exit $rc, expected $want and a message matching: $pattern"
-      failed=1
-    fi
-  fi
-}
+. "$here/matrix_lib.sh"  # expect LABEL CLASS RC PATTERN CMD...
 
 # The inputs.
 sed 's/$/\r/' "$deck" >deck_crlf.toml

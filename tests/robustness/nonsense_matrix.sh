@@ -22,20 +22,7 @@ rm -rf "$work"
 mkdir -p "$work"
 cd "$work" || exit 1
 failed=0
-expect() {  # LABEL CASE RC PATTERN CMD...: as hostile_matrix.sh's
-  local label=$1 class=$2 want=$3 pattern=$4
-  shift 4
-  local out rc first
-  out=$(timeout -k 5 "$limit" "$@" 2>&1 </dev/null)
-  rc=$?
-  first=$(printf '%s\n' "$out" | grep -a -m1 -E '^(input error|numerical fault|error|data problem|warning)' | cut -c1-300)
-  [ -z "$first" ] && first=$(printf '%s\n' "$out" | grep -a -m1 . | cut -c1-300)
-  printf '| %s | %s | %s | %s |\n' "$label" "$class" "$rc" "${first//|/\\|}"
-  if [ -n "$check" ] && { [ "$rc" != "$want" ] || ! printf '%s\n' "$out" | grep -a -qE -- "$pattern"; }; then
-    echo "FAILED: $label ($class): exit $rc, expected $want and a message matching: $pattern"
-    failed=1
-  fi
-}
+. "$here/matrix_lib.sh"  # expect LABEL CASE RC PATTERN CMD... (a 2 GB cap on each run)
 
 # drawbend loop on the thesis data (5 comment lines, the header on line 6;
 # columns 2 pin_diameter_mm 3 pin 4 direction_deg 5 speed_mm_s 7 back_tension_N
