@@ -36,15 +36,6 @@ namespace {
 /// The fraction of the element size normal to the face a node may start inside a tool (see above).
 constexpr double kOverlapFraction = 0.1;
 
-/// The [[tool]] table named `name` (for its line), or nullptr.
-const toml::table* tool_table(const toml::table& root, const std::string& name) {
-  const auto* tools = root.get_as<toml::array>("tool");
-  if (!tools) return nullptr;
-  for (const auto& t : *tools)
-    if (const auto* tt = t.as_table(); tt && tt->get("name") && tt->get("name")->value<std::string>() == name) return tt;
-  return nullptr;
-}
-
 const char* kind_name(contact::Surface::Kind k) {
   switch (k) {
     case contact::Surface::Kind::plane: return "plane";

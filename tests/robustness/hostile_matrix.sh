@@ -160,9 +160,23 @@ expect cup-deck "--friction missing nodes file" 2 "--friction 'nope.csv': cannot
 expect cup-deck "--friction short nodes file" 2 "--friction: nodes_short.csv: nodal friction values: expected 9 rows" "$drawbend" cup-deck --friction nodes_short.csv
 expect strip-deck "--friction wrong type" 2 "--friction:1: friction.mu: expected a finite number, found the string \"0.1\"" "$drawbend" strip-deck --friction '{ law = "coulomb", mu = "0.1" }' --out s1.toml
 expect drawbend-deck "--friction wrong type" 2 "--friction:1: friction.mu: expected a finite number" "$drawbend" drawbend-deck --friction '{ law = "coulomb", mu = "0.1" }'
+# A builder's deck refused as a whole (its cost, its tool masses, the base deck's radii): the
+# options named, not a line of a deck the user never saw (before 2026-12-04:
+# "drawbend-deck.toml:26: numerics.mass_scaling", "block-deck.toml:18: mesh", a cup deck's
+# "cup_draw.toml:23: numerics.target_dt" for --material, and strip-deck --time-step 1e-12
+# wrote a deck whose die `run` then refused without a line).
+expect drawbend-deck "cost of --speed 0.001" 2 "input error: --speed or --mass-scaling \\(numerics.mass_scaling of the deck drawbend-deck writes\\): mass scaling multiplies" "$drawbend" drawbend-deck --speed 0.001
+expect drawbend-deck "cost of --speed 0.001 with --run" 2 "input error: --speed or --mass-scaling \\(numerics.mass_scaling of the deck" "$drawbend" drawbend-deck --speed 0.001 --run r_slow
+expect block-deck "memory of --size and --elements" 2 "input error: --size or --elements \\(mesh of the deck block-deck writes\\): the mesh of" "$drawbend" block-deck --size 1000 --elements 200 --out b10.toml
+expect cup-deck "mass scaling of a stiff --material" 2 "  --cycles, --stroke, --speed or --material \\(numerics.target_dt of the deck cup-deck writes\\)" "$drawbend" cup-deck --material '{ type = "j2", E = 1e9 }'
+expect cup-deck "--punch-radius beyond the punch wall" 2 "input error: --punch-radius: punch radius 50 mm must lie in \\(0, 24\\)" "$drawbend" cup-deck --punch-radius 50
+expect strip-deck "a die too light for --time-step" 2 "input error: --die-mass or --time-step \\(tool 'die'.mass of the deck strip-deck writes\\): 8.446e-19 t is too small" "$drawbend" strip-deck --time-step 1e-12 --out s6.toml
+"$drawbend" strip-deck --out s7.toml >/dev/null 2>&1
+sed -i 's/^mass = .*/mass = 1e-20/' s7.toml
+expect run "a force-driven tool too light" 2 "input error: .*s7.toml:[0-9]+: tool 'die'.mass: 1e-20 t is too small for the stable time step" "$drawbend" run s7.toml --out o17 --quiet
 # One element through the thickness of a bending case: a warning of the deck
 # (every builder and `run`), not only of drawbend-deck's option.
-expect drawbend-deck "one element through the thickness" 0 "warning: drawbend-deck \\(the deck it writes\\): mesh: one element through the thickness under the face set 'zmin', and the sheet bends over the curved surface of tool 'pin'" \
+expect drawbend-deck "one element through the thickness" 0 "warning: --element-length, --across, --through, --width or --draw-length \\(mesh of the deck drawbend-deck writes\\): one element through the thickness under the face set 'zmin', and the sheet bends over the curved surface of tool 'pin'" \
   "$drawbend" drawbend-deck --through 1
 "$drawbend" drawbend-deck --through 1 --element-length 2 --draw-length 2 >one_layer.toml 2>/dev/null
 expect run "one element through the thickness" 0 "warning: .*one_layer.toml:[0-9]+: mesh: one element through the thickness" \
