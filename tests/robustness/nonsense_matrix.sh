@@ -106,6 +106,13 @@ ex v_rev 'p_min = 0.0\np_max = 80.0\nv_min = 101.6\nv_max = 6.35\n' '' 2 "fricti
 ex p_neg 'p_min = -3.0\np_max = 80.0\nv_min = 6.35\nv_max = 101.6\n' '' 2 "friction: expected 0 <= p_min < p_max" "p_min < 0"
 ex v_zero 'p_min = 0.0\np_max = 80.0\nv_min = 0.0\nv_max = 101.6\n' '' 2 "friction: expected 0 < v_min < v_max" "v_min = 0"
 ex p_nan 'p_min = nan\np_max = 80.0\nv_min = 6.35\nv_max = 101.6\n' '' 2 "friction.p_min: expected a finite number, found nan" "p_min = nan"
+# A frictionless model (mu = 0 at every node) is a valid law: written with Fric = C1..C5 = 0
+# (before 2026-12-04 the OpenRadioss fit aimed at mu = 1e-4, missed 0 by "100 %" and refused it).
+mkdir -p ex_mu0
+printf '[friction]\nlaw = "surface"\nnodes = "nodes.csv"\n%b' "$good" >ex_mu0/friction_model.toml
+awk -F, -v OFS=, 'NR > 1 { $2 = 0; $3 = 0 } 1' model/nodes.csv >ex_mu0/nodes.csv
+expect export "mu = 0 at every node (frictionless) to OpenRadioss" 0 "wrote ex_mu0/out.rad \\(openradioss; max relative error 0 % in 1 speed band" \
+  "$drawbend" export ex_mu0/friction_model.toml --to openradioss --parts 1,2 --out ex_mu0/out.rad
 # An OpenRadioss speed band outside the model's measured speeds fits the
 # surface's clamped edge: a valid polynomial, written with a warning.
 mkdir -p ex_band
