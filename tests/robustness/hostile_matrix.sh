@@ -264,6 +264,9 @@ map_dir maps_big '# reference_back_tension_N: 1e999' 20
 expect loop "--maps: 1e999 as the reference tension" 2 "maps_big/pin_12.7mm.csv: reference_back_tension_N: expected a number, found '1e999'" "$drawbend" loop maps_data/data.csv --maps maps_big --out l8 --figures= --permutations 19
 map_dir maps_huge '# reference_back_tension_N: 1000' 1e300
 expect loop "--maps: a pressure of 1e300 MPa" 2 "maps_huge/pin_12.7mm.csv:3: expected a contact pressure up to 100000 MPa" "$drawbend" loop maps_data/data.csv --maps maps_huge --out l9 --figures= --permutations 19
+# A 100,000-character cell: named, clipped (the message echoed it whole before 2026-12-04).
+{ printf 'test,angle_deg,stress_ratio,r_value\nuniaxial,0,1,'; head -c 100000 /dev/zero | tr '\0' 9; printf '\n'; } >cal_long.csv
+expect calibrate "a 100,000-character cell" 2 "cal_long.csv:2: column 'r_value': expected a number, found '9{80}\\.\\.\\. \\(100000 bytes\\)'" "$drawbend" calibrate cal_long.csv --out c10
 # A file option given as '' (before: "draw-bend spec: no hardening curve", or
 # ": expected a file name, found an empty one" naming no option).
 while read -r cmd opt extra; do

@@ -50,6 +50,8 @@ lp speed_m 'NR>6{$5=$5/1000}1' 0 "warning: .*speed_m.csv: column 'speed_mm_s': e
 lp dir_200 'NR==10{$4=200}1' 0 "dir_200.csv:10: column 'direction_deg': direction must lie in 0..90 deg" "a direction of 200 deg (one row)"
 lp all_rot 'NR>6{$3="rotating"}1' 2 "input error: .*all_rot.csv: column 'pin': every usable row is 'rotating'" "every row on a rotating pin (no friction to measure)"
 lp all_fixed 'NR>6&&$3=="rotating"{next}1' 2 "input error: .*all_fixed.csv: no rotating-pin rows for the 12.7 mm, 25.4 mm, 42 mm pin" "no rotating-pin rows (bending unknown)"
+lp one_test 'NR>6{$1="T1"}1' 2 "one_test.csv:[0-9]+: column 'pin_diameter_mm': test 'T1' has 25.4 mm here and 12.7 mm on line 7; a test is one strip drawn over one pin" "one test_id in every row (exit 0 before 2026-12-04: the replicate noise from rows on three pins)"
+lp dir_rad 'NR>6{$4=$4*3.14159265/180}1' 0 "warning: .*dir_rad.csv: column 'direction_deg': every direction is below 2 deg \\(largest 1.5708\\)" "every direction in radians (warning)"
 lp thick_neg 'NR==6{$0=$0",thickness_mm"} NR>6{$0=$0",-1.04"}1' 0 "thick_neg.csv: 156 rows read, 156 used" "an extra column thickness_mm = -1.04 (valid: an extra column is a candidate variable, constant here, so never chosen)"
 
 # drawbend model-loop on its sample points (header then rows; columns
