@@ -69,6 +69,7 @@ ml neg_bt 'NR==h+1{$2=-500}1' "ml_neg_bt.csv:[0-9]+: column 'back_tension_N': mu
 ml nan 'NR==h+1{$3="nan"}1' "ml_nan.csv:[0-9]+: column 'bending_force_N': expected a finite number, found 'nan'" "a NaN bending force"
 ml dup_col 'NR==h{$3="back_tension_N"}1' "ml_dup_col.csv:[0-9]+: header cell 3: expected unique column names" "a duplicate column name"
 ml kN 'NR>h{$2=$2/1000;$3=$3/1000}1' "input error: .*ml_kN.csv: columns 'back_tension_N', 'bending_force_N': every force is below 10 N" "every force in kN"
+ml fb_x1000 'NR>h{$3=$3*1000}1' "ml_fb_x1000.csv:[0-9]+: column 'bending_force_N': back tension \\+ bending force = 3.046e\\+05 N, above what the strip can carry" "every bending force x 1000 (before 2026-12-04 the FE runs started on them)"
 ml pin_m 'NR>h{$1=$1/1000}1' "input error: .*ml_pin_m.csv: column 'pin_diameter_mm': every pin diameter is below 1 mm" "every pin diameter in m"
 
 # drawbend calibrate on the AA6016-T4 tests (test, angle_deg, stress_ratio, r_value).
