@@ -255,6 +255,8 @@ namespace {
 // m/s, above any press), the bounds of the builders' options (cli/option_bounds.hpp).
 constexpr double kMaxPressureMPa = 1e4;
 constexpr double kMaxSpeedMMs = 1e4;
+constexpr double kMinSpeedMMs = 1e-3;         ///< 1 um/s, the builders' slowest speed option
+constexpr double kMinPressureSpanMPa = 1e-3;  ///< 1 kPa, the builders' smallest pressure option
 }  // namespace
 
 ExportModel read_friction_model(const std::string& path) {
@@ -289,6 +291,15 @@ ExportModel read_friction_model(const std::string& path) {
   if (read && !(d.v_min > 0 && d.v_min < d.v_max && d.v_max <= kMaxSpeedMMs))
     c.bad(*f, w, "expected 0 < v_min < v_max <= " + fmt_shortest(kMaxSpeedMMs) + " [mm/s], found " +
                      fmt_shortest(d.v_min) + " and " + fmt_shortest(d.v_max));
+  // A domain narrower than any test measures (v_max 1e-299 mm/s was written to LS-DYNA and
+  // Abaqus with exit 0, and OpenRadioss's fit ended in "inf %", 2026-12-04): the speeds from
+  // 1 um/s, the pressures over at least 1 kPa, as the builders' options (cli/option_bounds.hpp).
+  if (read && d.v_min > 0 && d.v_min < d.v_max && d.v_min < kMinSpeedMMs)
+    c.bad(*f->get("v_min"), w + ".v_min", "expected a sliding speed of at least " + fmt_shortest(kMinSpeedMMs) +
+                                              " mm/s (1 um/s; a unit error?), found " + fmt_shortest(d.v_min));
+  if (read && d.p_min >= 0 && d.p_min < d.p_max && d.p_max - d.p_min < kMinPressureSpanMPa)
+    c.bad(*f, w, "expected p_max - p_min of at least " + fmt_shortest(kMinPressureSpanMPa) + " MPa (1 kPa), found " +
+                     fmt_shortest(d.p_min) + " and " + fmt_shortest(d.p_max));
   const std::string nodes = c.str(*f, "nodes", w);
   ExportModel m;
   if (const auto* mt = c.table(t, "model", "model", false)) {

@@ -108,6 +108,8 @@ ex p_eq 'p_min = 40.0\np_max = 40.0\nv_min = 6.35\nv_max = 101.6\n' '' 2 "fricti
 ex v_rev 'p_min = 0.0\np_max = 80.0\nv_min = 101.6\nv_max = 6.35\n' '' 2 "friction: expected 0 < v_min < v_max <= 10000 \\[mm/s\\], found 101.6 and 6.35" "v grid reversed"
 ex p_neg 'p_min = -3.0\np_max = 80.0\nv_min = 6.35\nv_max = 101.6\n' '' 2 "friction: expected 0 <= p_min < p_max" "p_min < 0"
 ex v_zero 'p_min = 0.0\np_max = 80.0\nv_min = 0.0\nv_max = 101.6\n' '' 2 "friction: expected 0 < v_min < v_max" "v_min = 0"
+ex v_tiny 'p_min = 0.0\np_max = 80.0\nv_min = 1e-300\nv_max = 1e-299\n' '' 2 "friction.v_min: expected a sliding speed of at least 0.001 mm/s" "v grid of 1e-300 mm/s (exit 0 to LS-DYNA before 2026-12-04)"
+ex p_tiny 'p_min = 0.0\np_max = 1e-9\nv_min = 6.35\nv_max = 101.6\n' '' 2 "friction: expected p_max - p_min of at least 0.001 MPa" "p grid 1e-9 MPa wide"
 ex p_nan 'p_min = nan\np_max = 80.0\nv_min = 6.35\nv_max = 101.6\n' '' 2 "friction.p_min: expected a finite number, found nan" "p_min = nan"
 # A frictionless model (mu = 0 at every node) is a valid law: written with Fric = C1..C5 = 0
 # (before 2026-12-04 the OpenRadioss fit aimed at mu = 1e-4, missed 0 by "100 %" and refused it).
