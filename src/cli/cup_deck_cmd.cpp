@@ -74,12 +74,14 @@ int cup_deck_command(int argc, char** argv) {
   // The builder reads the base deck's spec back through the deck reader under the base deck's
   // name, with line numbers of the spec it wrote, not of any file the user has: its messages,
   // as the written deck's, name the options.
-  const std::vector<KeyOptions> keys = {{"numerics", "--cycles, --stroke, --speed or --material"},
-                                        {"mesh", "--refine"},
-                                        {"material", "--material"},
-                                        {"contact", "--friction"},
-                                        {"output", "--cycles or --stroke"},
-                                        {"tool", "--material or --cycles"}};
+  std::vector<KeyOptions> keys = {{"numerics", "--cycles, --stroke, --speed or --material"},
+                                  {"mesh", "--refine"},
+                                  {"material", "--material"},
+                                  {"contact", "--friction"},
+                                  {"output", "--cycles or --stroke"},
+                                  {"tool", "--material or --cycles"}};
+  if (opt.given("base"))  // the user's base deck sets every key the options leave
+    for (auto& k : keys) k.options += " (or the --base deck's " + k.key + ")";
   std::string text;
   try {
     text = sim::cup_deck_text(s);

@@ -155,6 +155,22 @@ int plan_command(int argc, char** argv) {
   if (paths.empty()) throw InputError("drawbend plan: name a deck or a folder of run folders (--help)");
   std::vector<fs::path> decks;
   for (const auto& p : paths) collect(p, decks);
+  {  // a deck named twice (a path given twice, or a deck and its folder) is one case, not two
+    std::vector<fs::path> once;
+    std::vector<std::string> seen;
+    for (const auto& d : decks) {
+      std::error_code ec;
+      const std::string key = fs::weakly_canonical(d, ec).string();
+      if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
+        std::cerr << "warning: " << d.string() << " is named twice (the same deck from two of the paths given); "
+                  << "planned once\n";
+        continue;
+      }
+      seen.push_back(key);
+      once.push_back(d);
+    }
+    decks = std::move(once);
+  }
   if (decks.empty())
     throw InputError("drawbend plan: no deck.toml under " + paths.front() + " (a folder is searched " +
                      std::to_string(kMaxDepth) + " levels down)");

@@ -138,6 +138,7 @@ cp "$here/decks/restart_block.toml" deep/a/b/c/d/deck.toml
 expect plan "a deck four levels down" 2 "drawbend plan: no deck.toml under deep \\(a folder is searched 3 levels down\\)" "$drawbend" plan deep
 cp "$here/decks/restart_block.toml" deep/a/b/c/deck.toml
 expect plan "a deck three levels down" 0 "^deep/a/b/c/deck.toml,64," "$drawbend" plan deep
+expect plan "the same deck named twice" 0 "warning: deep/a/b/c/deck.toml is named twice .*planned once" "$drawbend" plan deep deep/a/b/c/deck.toml
 expect plan "the whole of /proc" 2 "drawbend plan: no deck.toml under /proc" "$drawbend" plan /proc
 "$drawbend" block-deck --out zero/deck.toml >/dev/null 2>&1
 sed -i 's/^x = { from = 0.0, n = 4, to = 1.0 }/x = { from = 0.0, n = 0, to = 1.0 }/' zero/deck.toml
