@@ -191,6 +191,7 @@ expect synth "option with --from-thesis" 2 "--seed: applies only without --from-
 expect loop "option without exports" 2 "--parts: applies only with exports" "$drawbend" loop "$root/data/measured/thesis_drawbend.csv" --out l3 --export none --parts 3,4
 expect export "option of another format" 2 "--rd-vector: applies only with --to openradioss" "$drawbend" export model/good.toml --to lsdyna --rd-vector 0,1,0 --out e8.k
 expect export "option of another format" 2 "--abaqus: applies only with --to abaqus" "$drawbend" export model/good.toml --to lsdyna --abaqus explicit --out e9.k
+expect loop "--cv test where a pin has one rotating-pin test" 2 "input error: --cv test: the rotating-pin rows of the 12.7 mm pin are one test only" "$drawbend" loop "$root/data/measured/thesis_drawbend.csv" --out l11 --cv test --figures= --export none
 expect loop "unknown name" 2 "input error: --cv: expected auto, test or bt-block, found 'word'" "$drawbend" loop "$root/data/measured/thesis_drawbend.csv" --out l4 --cv word
 # A binary file where CSV text belongs (a program's first 4 kB; an .xlsx is a zip): named as binary, not
 # as UTF-16 (NUL bytes between the characters of UTF-16 text sit on every other byte).
