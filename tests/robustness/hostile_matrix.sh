@@ -186,6 +186,7 @@ expect run "one element through the thickness" 0 "warning: .*one_layer.toml:[0-9
 # --export none were accepted and ignored with exit 0 before).
 expect synth "option of another generator" 2 "--class: applies only with --generator blind or wild" "$drawbend" synth --class word --out y1
 expect synth "option of another generator" 2 "--effect: applies only with --generator library" "$drawbend" synth --generator blind --effect speed --out y2
+expect synth "--noise alone too large" 2 "input error: --noise 1e\\+06 \\(with --effect none's default amplitude\\): an outlet force of" "$drawbend" synth --noise 1e6 --out y5
 expect synth "option without --from-thesis" 2 "--data: applies only with --from-thesis" "$drawbend" synth --data word --out y3
 expect synth "option with --from-thesis" 2 "--seed: applies only without --from-thesis" "$drawbend" synth --from-thesis --seed 3 --out y4
 expect loop "option without exports" 2 "--parts: applies only with exports" "$drawbend" loop "$root/data/measured/thesis_drawbend.csv" --out l3 --export none --parts 3,4
