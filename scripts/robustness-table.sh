@@ -4,7 +4,7 @@
 # binaries side by side (before and after a change), written as Markdown.
 #   [BEFORE_LABEL=...] [AFTER_LABEL=...] scripts/robustness-table.sh BEFORE_DRAWBEND AFTER_DRAWBEND OUT.md [WORK_DIR]
 # (the labels name the two binaries in the page, e.g. their commits).
-# It runs the three matrices of tests/robustness (without --check, so every
+# It runs the four matrices of tests/robustness (without --check, so every
 # case is run and shown, also the values a command accepts):
 #   entry_matrix.sh   every path a command reads: missing file, folder, device, FIFO;
 #                     every file it writes pointed at a FIFO or a folder
@@ -12,6 +12,7 @@
 #   hostile_matrix.sh the other classes: options twice or without a value, units in
 #                     values, CRLF, duplicated keys, absurd table values, options
 #                     that do nothing in the mode chosen, unwritable folders, ...
+#   option_lists.sh   every list-valued option: empty items, spaces, an item twice, NaN
 # and joins each matrix's rows of the two binaries by (entry point, input).
 # A case only one binary's matrix has shows "-" for the other.  Takes about
 # 5 minutes on 2 cores (the accepted values of option_matrix run for real, up
@@ -26,7 +27,7 @@ before=$(realpath "$1") after=$(realpath "$2") out=$3 work=${4:-$(mktemp -d)}
 here=$(cd "$(dirname "$0")/../tests/robustness" && pwd)
 export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=PASSIVE
 mkdir -p "$work"
-for m in entry_matrix option_matrix hostile_matrix; do
+for m in entry_matrix option_matrix hostile_matrix option_lists; do
   for side in before after; do
     bin=$before
     [ $side = after ] && bin=$after
@@ -63,6 +64,7 @@ titles = {
     "entry_matrix": "Paths: every file a command reads or writes, given a missing file, a folder, a device (/dev/zero) or a FIFO",
     "option_matrix": "Numbers: every numeric option of every command, given 0, -1, nan, 1e300 and a word",
     "hostile_matrix": "Other classes: a careless user and a hostile script",
+    "option_lists": "Lists: every list-valued option, given empty items, spaces, an item twice, NaN and hexadecimal",
 }
 md = ["# Robustness: entry point x bad input, before and after", "",
       "Written by `scripts/robustness-table.sh` (do not edit by hand). Each row is one run of `drawbend` "
@@ -70,7 +72,7 @@ md = ["# Robustness: entry point x bad input, before and after", "",
       "time limit, 134/136/139 a crash. The message is the first line starting with `input error`, `error`, "
       "`numerical fault`, `data problem` or `warning` (else the first line); WORK is the scratch folder. "
       "`make test` holds the same cases with their expected answers: `robustness.entry_points_bad_paths`, "
-      "`robustness.numeric_options` and `robustness.hostile_inputs` (the CSV dialects: "
+      "`robustness.numeric_options`, `robustness.hostile_inputs` and `robustness.option_lists` (the CSV dialects: "
       "`robustness.csv_dialects_and_encoding`). Values a command accepts on purpose "
       "(`tests/robustness/option_valid.txt`, e.g. `--threads 0`) are marked *valid*; they start real "
       "work, so 124 there is the table's 20 s limit, not a hang. Rows in bold changed their exit code. "
@@ -81,7 +83,7 @@ md = ["# Robustness: entry point x bad input, before and after", "",
       "| matrix | cases | before: exit 2 or 3 | before: exit 0 | before: other | after: exit 2 or 3 | after: exit 0 | after: other |",
       "|---|---|---|---|---|---|---|---|"]
 sections = []
-for m in ("entry_matrix", "option_matrix", "hostile_matrix"):
+for m in ("entry_matrix", "option_matrix", "hostile_matrix", "option_lists"):
     b = {k: (e, f) for k, e, f in rows(m, "before")}
     a = rows(m, "after")
     body, count = [], {"before": collections.Counter(), "after": collections.Counter()}
@@ -100,8 +102,9 @@ for m in ("entry_matrix", "option_matrix", "hostile_matrix"):
     sections += [f"## {titles[m]}", "",
                  "| entry point | input | exit before | first line before | exit after | first line after |",
                  "|---|---|---|---|---|---|"] + body + [""]
-md += ["", "Exit 0 among bad inputs after: the hostile matrix's valid cases (CRLF files, a warning that "
-       "lets the run finish, `help help`), which expect exit 0; every other bad input ends with exit 2.", ""]
+md += ["", "Exit 0 among bad inputs after: the hostile and list matrices' valid cases (CRLF files, a warning "
+       "that lets the run finish, `help help`, a valid list), which expect exit 0; every other bad input ends "
+       "with exit 2.", ""]
 open(out, "w", encoding="utf-8").write("\n".join(md + sections))
 print(f"wrote {out}")
 PY

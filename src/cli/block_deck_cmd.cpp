@@ -78,7 +78,13 @@ int block_deck_command(int argc, char** argv) {
   check_threads(threads);
   io::CaseSpec deck = sim::block_case(s);
   io::set_threads(deck, threads);  // the deck's numerics.threads
-  return write_deck_out(io::to_toml(deck), out, "block-deck");
+  return write_deck_out(io::to_toml(deck), out, "block-deck",
+                        {{"numerics", "--mass-scaling"},
+                         {"mesh", "--size or --elements"},
+                         {"material", "--hardening"},
+                         {"output", "--interval"},
+                         {"contact", "--friction, --surface-nodes or --penalty"},
+                         {"step", "--pressure, --speed, --press-time or --slide-time"}});
 }
 
 }  // namespace drawbend::cli

@@ -71,7 +71,30 @@ int cup_deck_command(int argc, char** argv) {
   if (punch_radius > 0) s.punch_radius = punch_radius;
   if (die_radius > 0) s.die_radius = die_radius;
   s.threads = threads;  // set in the deck's [numerics] by the builder
-  std::cout << checked_deck(sim::cup_deck_text(s), "cup-deck");
+  // The builder reads the base deck's spec back through the deck reader under the base deck's
+  // name, with line numbers of the spec it wrote, not of any file the user has: its messages,
+  // as the written deck's, name the options.
+  std::vector<KeyOptions> keys = {{"numerics", "--cycles, --stroke, --speed or --material"},
+                                  {"mesh", "--refine"},
+                                  {"material", "--material"},
+                                  {"contact", "--friction"},
+                                  {"output", "--cycles or --stroke"},
+                                  {"tool", "--material or --cycles"}};
+  if (opt.given("base"))  // the user's base deck sets every key the options leave
+    for (auto& k : keys) k.options += " (or the --base deck's " + k.key + ")";
+  std::string text;
+  try {
+    text = sim::cup_deck_text(s);
+  } catch (const InputError& e) {
+    std::string what = user_words(e.what(), s.deck, "cup-deck", keys);
+    // The tool radii the builder checks against the base deck's punch wall and die hole.
+    if (const std::size_t at = what.find(s.deck + ": punch radius "); at == 0 && punch_radius > 0)
+      what = "--punch-radius: " + what.substr(s.deck.size() + 2) + " (the punch wall radius of " + s.deck + ")";
+    else if (const std::size_t dt = what.find(s.deck + ": die radius "); dt == 0 && die_radius > 0)
+      what = "--die-radius: " + what.substr(s.deck.size() + 2);
+    throw InputError(what);
+  }
+  std::cout << checked_deck(text, "cup-deck", keys);
   return 0;
 }
 

@@ -30,6 +30,17 @@
 
 namespace drawbend::cli {
 
+namespace {
+/// The options behind each key of the deck (cli/deck_out.hpp's user_words).
+const std::vector<KeyOptions> kDeckKeys = {{"numerics.mass_scaling", "--speed or --mass-scaling"},
+                                           {"numerics", "--speed, --mass-scaling or --element-length"},
+                                           {"mesh", "--element-length, --across, --through, --width or --draw-length"},
+                                           {"material", "--material or --hardening"},
+                                           {"output", "--frames or --draw-length"},
+                                           {"contact", "--friction or --penalty"},
+                                           {"step", "--speed, --draw-length or --back-tension"}};
+}  // namespace
+
 int drawbend_deck_command(int argc, char** argv) {
   sim::DrawBendSpec s = sim::quick_deck_spec();  // the chapters' quick tier (sim/fe_options.hpp)
   s.mass_scaling = 0;  // 0: the quick tier's rule at --speed (set after parsing)
@@ -121,10 +132,12 @@ int drawbend_deck_command(int argc, char** argv) {
     io::set_threads(deck, threads);  // the deck's numerics.threads (a run's deck keeps none)
     std::cout << "# back_tension in this deck is on the half model: " << fmt(s.back_tension, 6) << " N ("
               << fmt(back_tension, 6) << " N on the " << tag << ")\n"
-              << checked_deck(io::to_toml(deck), "drawbend-deck");
+              << checked_deck(io::to_toml(deck), "drawbend-deck", kDeckKeys);
     return 0;
   }
   ensure_writable_dir(run_dir, "--run");  // before any work: exit 2, not a file-system error
+  // The deck checked as without --run, so that a refusal names the options, not the run's deck.toml line.
+  (void)checked_deck(io::to_toml(sim::drawbend_case(s)), "drawbend-deck", kDeckKeys, false);
   apply_threads(threads);
   // The run prints its answer (forces, F_B, mu by Eq. (2.3)) on --basis and writes it to
   // <run>/result.toml on both bases (io/run_result.hpp); `drawbend run` prints the same lines.

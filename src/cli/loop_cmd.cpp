@@ -363,9 +363,13 @@ void write_library_set(SynthArgs& a) {
   // The hidden law's amplitude is the law's own unit: check what it made.
   for (const auto& r : d.rows)
     if (!(std::isfinite(r.outlet_force_N) && std::abs(r.outlet_force_N) <= kMaxStripForceN))
-      throw InputError("--amplitude " + fmt(so.amplitude) + " with --noise " + fmt(so.noise_N) + ": an outlet force of " +
-                       fmt(r.outlet_force_N) + " N, beyond a strip test (" + fmt(kMaxStripForceN) +
-                       " N); choose a smaller amplitude");
+      // Named as given: a negative --amplitude is the law's default (it read "--amplitude -1"
+      // for `--noise 1e6` alone, 2026-12-04).
+      throw InputError((so.amplitude < 0 ? std::string("--noise ") + fmt(so.noise_N) + " (with --effect " + so.effect +
+                                               "'s default amplitude)"
+                                         : "--amplitude " + fmt(so.amplitude) + " with --noise " + fmt(so.noise_N)) +
+                       ": an outlet force of " + fmt(r.outlet_force_N) + " N, beyond a strip test (" +
+                       fmt(kMaxStripForceN) + " N); choose a smaller " + (so.amplitude < 0 ? "noise" : "amplitude or noise"));
   write_measured(a.out + "/data.csv", d);
   write_file_atomic(a.out + "/truth.json", truth_json(truth));
   std::cout << "wrote " << a.out << "/data.csv (" << d.rows.size() << " rows) and " << a.out << "/truth.json\n";

@@ -21,6 +21,7 @@
 #include <sstream>
 
 #include "core/csv.hpp"
+#include "core/list_option.hpp"
 #include "core/quote.hpp"
 #include "core/install_paths.hpp"
 #include "core/file_gate.hpp"
@@ -34,6 +35,7 @@
 #include "sim/fe_options.hpp"
 #include "sim/material_choice.hpp"
 #include "modelloop/model_loop.hpp"
+#include "material/hardening_curve.hpp"
 #include "cli/model_loop_report.hpp"
 
 namespace drawbend::cli {
@@ -47,6 +49,7 @@ struct Args {
   std::string data, out, candidates = "split:0.3/0.6", executor_spec;
   bool reuse = true, blind = true;
   int threads = 0;
+  std::vector<modelloop::FbPoint> points;  ///< the data, read first
 };
 
 void add_options(Options& opt, Args& a) {
@@ -117,12 +120,35 @@ std::vector<modelloop::ModelCandidate> checked_candidates(Args& a) {
   } catch (const InputError& e) {
     p.need(false, e.what());
   }
+  // The strip cannot carry more than its largest flow stress over its full section: a point whose
+  // outlet force F_X + F_B is above that is not a draw-bend test of this strip (bending forces in
+  // N x 1000 started the FE runs before 2026-12-04).
+  if (p.text.empty()) try {
+      const auto curve = material::HardeningCurve::load(s.hardening);
+      const double sigma = *std::max_element(curve.stresses().begin(), curve.stresses().end());
+      const double capacity = sigma * 2 * s.width * s.thickness;  // full strip: --width is the half width
+      for (const auto& pt : a.points)
+        if (pt.back_tension_N + pt.bending_N > capacity) {
+          p.need(false, pt.where + ": column 'bending_force_N': back tension + bending force = " +
+                            fmt(pt.back_tension_N + pt.bending_N, 4) + " N, above what the strip can carry, " +
+                            fmt(capacity, 4) + " N (the largest flow stress of --hardening, " + fmt(sigma, 4) +
+                            " MPa, over the full strip's " + fmt(2 * s.width, 4) + " x " + fmt(s.thickness, 4) +
+                            " mm section): forces in another unit, or another strip (--width, --thickness)?");
+          break;
+        }
+    } catch (const InputError& e) {
+      p.need(false, std::string("--hardening: ") + e.what());
+    }
   p.need(a.cfg.min_gain >= 0, "--min-gain: expected a number >= 0, found " + fmt(a.cfg.min_gain));
   p.need(good_threads(a.threads), bad_threads(a.threads));
   std::vector<modelloop::ModelCandidate> cands;
-  std::stringstream ss(a.candidates);
-  for (std::string tok; std::getline(ss, tok, ',');) {
-    if (tok.empty()) continue;
+  std::vector<std::string> names;
+  try {
+    if (!a.candidates.empty()) names = list_items(a.candidates, "--candidates");  // empty: the baseline alone
+  } catch (const std::invalid_argument& e) {
+    p.need(false, e.what());
+  }
+  for (const std::string& tok : names) {
     try {
       cands.push_back(modelloop::named_candidate(tok, drawbend::data_dir()));
     } catch (const InputError& e) {
@@ -250,7 +276,8 @@ int model_loop_command(int argc, char** argv, const char* name) {
   opt.not_empty({"hardening"});  // a file option given as '' names the option
   if (a.out.empty()) throw InputError(me + ": --out DIR is required");
   // Every input is checked before the first FE run (runs take minutes).
-  const auto points = modelloop::read_fb_points(a.data);  // file:line: column for every bad cell
+  a.points = modelloop::read_fb_points(a.data);  // file:line: column for every bad cell
+  const auto& points = a.points;
   const auto cands = checked_candidates(a);
   check_decks(a, points, cands);
   ensure_writable_dir(a.out, "--out");

@@ -1,6 +1,6 @@
 // `drawbend plan DECK_OR_FOLDER... [--nodes N] [--cores C]`: what the cases
 // will cost before they run (sim/cost_model.hpp).  Every deck.toml found (a
-// deck file, or the run folders under a folder, searched recursively) is read
+// deck file, or the run folders under a folder, up to three levels down) is read
 // with the deck reader and listed with its elements, predicted cycles, CPU
 // time and memory; then the total CPU-hours and the makespan on N nodes of C
 // cores by the largest-first schedule of the case pool.  Where a folder holds
@@ -70,6 +70,17 @@ double measured_cpu(const fs::path& dir) {
   return wall * static_cast<double>(threads);
 }
 
+// A folder is searched to a bounded depth and size (`drawbend plan /` walked the
+// whole file system): the deck.toml files at most kMaxDepth folders below it
+// (build/chapters/<chapter>/runs/<case>/deck.toml is three below
+// build/chapters; a model loop's --out/runs/<case>/deck.toml two), level by
+// level, links to folders not followed, at most kMaxEntries entries looked at:
+// past that, an input error asks for a narrower folder instead of a long walk.
+// A sub-folder that cannot be listed (no permission, gone meanwhile) is passed
+// over; the named folder itself must be listable.
+constexpr int kMaxDepth = 3;
+constexpr long kMaxEntries = 200000;
+
 void collect(const fs::path& p, std::vector<fs::path>& decks) {
   std::error_code ec;
   if (fs::is_regular_file(p, ec)) {
@@ -77,9 +88,29 @@ void collect(const fs::path& p, std::vector<fs::path>& decks) {
     return;
   }
   if (!fs::is_directory(p, ec)) throw InputError(p.string() + ": not a deck file or a folder");
-  for (fs::recursive_directory_iterator it(p, fs::directory_options::skip_permission_denied, ec), end;
-       !ec && it != end; it.increment(ec))
-    if (it->path().filename() == "deck.toml" && it->is_regular_file(ec)) decks.push_back(it->path());
+  long seen = 0;
+  std::vector<fs::path> level{p};
+  for (int depth = 0; depth <= kMaxDepth && !level.empty(); ++depth) {
+    std::vector<fs::path> next;
+    for (const auto& dir : level) {
+      fs::directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end;
+      if (ec && depth == 0) throw InputError(p.string() + ": cannot list the folder (" + ec.message() + ")");
+      for (; !ec && it != end; it.increment(ec)) {
+        if (++seen > kMaxEntries)
+          throw InputError(p.string() + ": more than " + std::to_string(kMaxEntries) + " files and folders within " +
+                           std::to_string(kMaxDepth) + " levels of it; name the folder of the runs (e.g. "
+                           "build/chapters, or one chapter's runs/) or the deck files");
+        std::error_code e2;
+        if (it->is_directory(e2) && !it->is_symlink(e2)) {
+          if (depth < kMaxDepth) next.push_back(it->path());
+        } else if (it->path().filename() == "deck.toml" && it->is_regular_file(e2)) {
+          decks.push_back(it->path());
+        }
+      }
+      ec.clear();
+    }
+    level = std::move(next);
+  }
   std::sort(decks.begin(), decks.end());
 }
 
@@ -99,7 +130,8 @@ void ratio_line(const std::string& what, std::vector<double> ratio) {
 int plan_command(int argc, char** argv) {
   int nodes = 1, cores = 2;
   Options opt("drawbend plan DECK_OR_FOLDER...",
-              "Predicted CPU time and memory of every deck (a deck file, or every deck.toml under a folder), the "
+              "Predicted CPU time and memory of every deck (a deck file, or every deck.toml in a folder and its "
+              "sub-folders up to three levels down, e.g. build/chapters/<chapter>/runs/<case>/), the "
               "total CPU-hours and the makespan on N nodes of C cores (largest case first, one case per node on "
               "all its cores); measured against finished runs where a folder holds one (e.g. build/chapters).");
   opt.add(nodes, "nodes", "nodes of the cluster (>= 1)");
@@ -123,7 +155,25 @@ int plan_command(int argc, char** argv) {
   if (paths.empty()) throw InputError("drawbend plan: name a deck or a folder of run folders (--help)");
   std::vector<fs::path> decks;
   for (const auto& p : paths) collect(p, decks);
-  if (decks.empty()) throw InputError("drawbend plan: no deck.toml under " + paths.front());
+  {  // a deck named twice (a path given twice, or a deck and its folder) is one case, not two
+    std::vector<fs::path> once;
+    std::vector<std::string> seen;
+    for (const auto& d : decks) {
+      std::error_code ec;
+      const std::string key = fs::weakly_canonical(d, ec).string();
+      if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
+        std::cerr << "warning: " << d.string() << " is named twice (the same deck from two of the paths given); "
+                  << "planned once\n";
+        continue;
+      }
+      seen.push_back(key);
+      once.push_back(d);
+    }
+    decks = std::move(once);
+  }
+  if (decks.empty())
+    throw InputError("drawbend plan: no deck.toml under " + paths.front() + " (a folder is searched " +
+                     std::to_string(kMaxDepth) + " levels down)");
   std::vector<Row> rows;
   for (const auto& d : decks) {
     Row r;

@@ -83,7 +83,14 @@ int strip_deck_command(int argc, char** argv) {
   check_threads(threads);
   io::CaseSpec deck = sim::strip_draw_case(s);
   io::set_threads(deck, threads);  // the deck's numerics.threads
-  return write_deck_out(io::to_toml(deck), out, "strip-deck");
+  return write_deck_out(io::to_toml(deck), out, "strip-deck",
+                        {{"numerics", "--time-step"},
+                         {"mesh", "--length, --width, --thickness, --nx, --ny or --nz"},
+                         {"material", "--hardening"},
+                         {"output", "--interval"},
+                         {"contact", "--friction or --stribeck-table"},
+                         {"tool", "--die-mass or --time-step"},
+                         {"step", "--press-time, --force-ramp, --speed-ramp, --slide or --speed"}});
 }
 
 }  // namespace drawbend::cli

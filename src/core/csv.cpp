@@ -180,16 +180,18 @@ bool hex_number(const std::string& text) { return text.find_first_of("xX") != st
 
 double CsvTable::number(const CsvRow& r, const std::string& name) const {
   const std::string& s = text(r, name);
-  if (hex_number(s)) throw InputError(where(r, name) + ": expected a number, found '" + s + "'");
+  // The cell shown clipped (a 100,000-character cell was echoed whole, 2026-12-04).
+  const std::string found = "found '" + clip_for_message(s) + "'";
+  if (hex_number(s)) throw InputError(where(r, name) + ": expected a number, " + found);
   std::size_t used = 0;
   double v = 0.0;
   try {
     v = std::stod(s, &used);
   } catch (const std::exception&) {
-    throw InputError(where(r, name) + ": expected a number, found '" + s + "'");
+    throw InputError(where(r, name) + ": expected a number, " + found);
   }
-  if (used != s.size()) throw InputError(where(r, name) + ": expected a number, found '" + s + "'");
-  if (!std::isfinite(v)) throw InputError(where(r, name) + ": expected a finite number, found '" + s + "'");
+  if (used != s.size()) throw InputError(where(r, name) + ": expected a number, " + found);
+  if (!std::isfinite(v)) throw InputError(where(r, name) + ": expected a finite number, " + found);
   return v;
 }
 

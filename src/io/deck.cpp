@@ -18,6 +18,7 @@
 #include "io/deck_context.hpp"
 #include "io/deck_limits.hpp"
 #include "io/deck_friction.hpp"
+#include "io/deck_overlap.hpp"
 #include "io/deck_sections.hpp"
 #include "io/material_spec.hpp"
 #include "core/toml_read.hpp"
@@ -321,6 +322,7 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
     problems.attempt([&] { m.validate(); });
   if (problems.empty() && !d.output.reduce.kind.empty())  // its tool and step exist
     problems.attempt([&] { check_reduction(d.output.reduce, m); });
+  if (problems.empty()) problems.attempt([&] { check_initial_overlap(c, root, m); });
   if (problems.empty()) {
     problems.attempt([&] { check_cost(c, root, d); });
     if (const auto* mt = root.get_as<toml::table>("material")) material_warnings(c, *mt, d.warnings);

@@ -247,4 +247,12 @@ std::string missing_file(const std::string& file, const std::string& dir) {
          ")";
 }
 
+const toml::table* tool_table(const toml::table& root, const std::string& name) {
+  const auto* tools = root.get_as<toml::array>("tool");
+  if (!tools) return nullptr;
+  for (const auto& t : *tools)
+    if (const auto* tt = t.as_table(); tt && tt->get("name") && tt->get("name")->value<std::string>() == name) return tt;
+  return nullptr;
+}
+
 }  // namespace drawbend::io

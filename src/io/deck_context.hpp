@@ -67,6 +67,9 @@ class DeckContext {
   InputProblems& problems_;
 };
 
+/// The [[tool]] table of `root` named `name` (for its line), or nullptr.
+const toml::table* tool_table(const toml::table& root, const std::string& name);
+
 /// A file a deck names: a relative path is taken from the deck's folder `dir`.
 std::string deck_relative(const std::string& dir, const std::string& file);
 /// Whether `path` is a regular file (not a folder, FIFO or device).

@@ -1,6 +1,8 @@
 // The up-front cost of a deck and the plausibility warnings; see deck_limits.hpp.
 #include "io/deck_limits.hpp"
 
+#include "fe/contact_springs.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -158,6 +160,23 @@ void check_cost(const DeckContext& c, const toml::table& root, Deck& d) {
       d.warnings.push_back(c.where(*n, key) + ": " + what + ", above 1 % of [limits] max_mass_factor = " +
                            fmt_shortest(d.limits.max_mass_factor) + ": inertia acts as if loaded " +
                            fmt(std::sqrt(mf), 2) + " times faster; check the kinetic energy");
+  }
+  // A force-driven tool rides on its contact springs: explicit integration is
+  // stable for omega dt <= 2 dt_safety (fe::Solver::check_force_driven_tools,
+  // which refused it at set-up, without the deck's line, after a builder had
+  // written the deck: strip-deck --time-step 1e-12 sized its die at 8e-19 t).
+  for (const auto& tool : m.tools) {
+    if (tool.drive != fe::Tool::Drive::force || !(tool.mass > 0)) continue;
+    const double k = fe::tool_contact_stiffness(m, tool.name);
+    const double lim = 2.0 * m.dt_safety;
+    if (k > 0 && std::sqrt(k / tool.mass) * dt_min > lim) {
+      const toml::table* t = tool_table(root, tool.name);
+      const toml::node* n = t && t->get("mass") ? t->get("mass") : t ? static_cast<const toml::node*>(t) : &root;
+      c.bad(*n, "tool '" + tool.name + "'.mass",
+            fmt(tool.mass, 4) + " t is too small for the stable time step " + fmt(dt_min, 4) +
+                " s on its contact stiffness " + fmt(k, 4) + " N/mm; it needs at least " +
+                fmt(k * (dt_min / lim) * (dt_min / lim), 4) + " t");
+    }
   }
   if (d.cost.cycles > d.limits.max_cycles) {
     const toml::node* n = at(root, "limits", "max_cycles");

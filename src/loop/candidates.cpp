@@ -37,6 +37,20 @@ Folds make_folds(const Design& d, const std::string& mode_in, int k) {
   for (size_t i = 0; i < n; ++i)
     if (!seen[f.test[i]]++) bp[{f.block[i], d.rows[i].pin}].push_back(f.test[i]);
   std::string mode = mode_in;
+  // Test folds need two tests in every group (the rotating-pin rows of a pin, a fixed-pin
+  // cell): a group in one test leaves a fold with nothing to fit it on, and every held-out
+  // error came out NaN, exit 3 (2026-12-04: --cv test on the thesis data).  Named, exit 2.
+  if (mode == "test")
+    for (const auto& [key, tests] : bp)
+      if (tests.size() < 2) {
+        size_t i = 0;
+        while (i < n && !(f.block[i] == key.first && d.rows[i].pin == key.second)) ++i;
+        throw std::invalid_argument(
+            "--cv test: the " + std::string(key.first == 0 ? "rotating-pin rows" : "fixed-pin rows") + " of the " +
+            fmt(rows[i].pin_d_mm) + " mm pin" + (key.first == 0 ? "" : " in the cell of test '" + rows[i].test_id + "'") +
+            " are one test only, so leaving it out leaves nothing to fit them on; use --cv bt-block (or auto, "
+            "which chooses it)");
+      }
   if (mode == "auto") {
     mode = "test";
     for (const auto& [key, tests] : bp)

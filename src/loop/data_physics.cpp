@@ -2,6 +2,7 @@
 #include "loop/data_physics.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include "core/csv.hpp"
 #include "core/strip_limits.hpp"
@@ -35,6 +36,40 @@ std::vector<Problem> check_data_physics(const Dataset& d) {
                      " N while the back tension goes from " + fmt(bt_lo) + " to " + fmt(bt_hi) + " N" + rows +
                      "; the outlet force is the back tension plus friction and bending, so it rises with the back "
                      "tension (a value filled down the column?)");
+  // One test is one strip drawn over one pin: its rows share the pin, the pin's
+  // kind, the direction and the lubricant (a test_id filled down the column made
+  // every row one "test", and the replicate noise came from rows on different pins,
+  // 2026-12-04: "the model explains the data to the noise level", exit 0).
+  std::map<std::string, const Sample*> first;
+  for (const auto& s : d.rows) {
+    const Sample*& f = first[s.test_id];
+    if (!f) {
+      f = &s;
+      continue;
+    }
+    const char* col = s.pin_d_mm != f->pin_d_mm ? "pin_diameter_mm"
+                      : s.rotating != f->rotating ? "pin"
+                      : s.direction_deg != f->direction_deg ? "direction_deg"
+                      : s.lubricant != f->lubricant ? "lubricant" : nullptr;
+    if (!col) continue;
+    auto said = [&](const Sample& r) {
+      const std::string c = col;
+      return c == "pin_diameter_mm" ? fmt(r.pin_d_mm) + " mm"
+             : c == "pin"           ? std::string(r.rotating ? "rotating" : "fixed")
+             : c == "direction_deg" ? fmt(r.direction_deg) + " deg"
+                                    : "'" + r.lubricant + "'";
+    };
+    throw InputError(d.path + ":" + std::to_string(s.line) + ": column '" + col + "': test '" + s.test_id + "' has " +
+                     said(s) + " here and " + said(*f) + " on line " + std::to_string(f->line) +
+                     "; a test is one strip drawn over one pin (one pin, pin kind, direction and lubricant): give "
+                     "each strip its own test_id");
+  }
+  double max_dir = 0;
+  for (const auto& s : d.rows) max_dir = std::max(max_dir, s.direction_deg);
+  if (max_dir > 0 && max_dir < 2)
+    warnings.push_back({d.path, 0, "direction_deg",
+                        "every direction is below 2 deg (largest " + fmt(max_dir) +
+                            "); directions to RD are 0 to 90 deg: check the unit (radians? 90 deg is 1.5708 rad)"});
   if (max_speed < 1)
     warnings.push_back({d.path, 0, "speed_mm_s",
                         "every speed is below 1 mm/s (largest " + fmt(max_speed) +

@@ -2,7 +2,8 @@
 // Whole-data-set plausibility of measured draw-bend data (`drawbend loop`):
 // what no single row shows but the rows together do: every force or pin
 // in the wrong unit, no fixed-pin rows to measure friction on, an outlet
-// force pasted down the column.  Row-level checks are loop/measured.cpp's.
+// force pasted down the column, one test_id over several pins or directions,
+// directions in radians (a warning).  Row-level checks are loop/measured.cpp's.
 #include <vector>
 
 #include "loop/measured.hpp"

@@ -71,6 +71,7 @@
 
 #include "core/file_gate.hpp"
 #include "core/csv.hpp"
+#include "core/list_option.hpp"
 #include "core/input_problems.hpp"
 #include "core/toml_read.hpp"
 #include "io/deck_context.hpp"
@@ -216,24 +217,12 @@ void ExportOptions::validate(const std::string& format) const {
 
 namespace {
 std::vector<double> numbers(const std::string& text, const std::string& opt, size_t n, bool integers) {
-  std::vector<double> v;
-  std::stringstream ss(text);
-  for (std::string item; std::getline(ss, item, ',');) {
-    size_t used = 0;
-    double x = NAN;
-    try {
-      x = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    while (used < item.size() && item[used] == ' ') ++used;
-    if (item.empty() || used != item.size() || !std::isfinite(x) || (integers && x != std::floor(x)))
-      throw std::invalid_argument(opt + ": expected " + std::to_string(n) + (integers ? " integers" : " finite numbers") +
-                                  " separated by commas, found '" + text + "'");
-    v.push_back(x);
-  }
+  const std::vector<double> v = list_numbers(text, opt, ',', false);  // empty items, spaces, NaN: named
   if (v.size() != n)
     throw std::invalid_argument(opt + ": expected " + std::to_string(n) + " values separated by commas, found '" + text + "'");
+  for (double x : v)
+    if (integers && x != std::floor(x))
+      throw std::invalid_argument(opt + ": expected " + std::to_string(n) + " integers separated by commas, found '" + text + "'");
   return v;
 }
 }  // namespace
@@ -266,6 +255,8 @@ namespace {
 // m/s, above any press), the bounds of the builders' options (cli/option_bounds.hpp).
 constexpr double kMaxPressureMPa = 1e4;
 constexpr double kMaxSpeedMMs = 1e4;
+constexpr double kMinSpeedMMs = 1e-3;         ///< 1 um/s, the builders' slowest speed option
+constexpr double kMinPressureSpanMPa = 1e-3;  ///< 1 kPa, the builders' smallest pressure option
 }  // namespace
 
 ExportModel read_friction_model(const std::string& path) {
@@ -300,6 +291,15 @@ ExportModel read_friction_model(const std::string& path) {
   if (read && !(d.v_min > 0 && d.v_min < d.v_max && d.v_max <= kMaxSpeedMMs))
     c.bad(*f, w, "expected 0 < v_min < v_max <= " + fmt_shortest(kMaxSpeedMMs) + " [mm/s], found " +
                      fmt_shortest(d.v_min) + " and " + fmt_shortest(d.v_max));
+  // A domain narrower than any test measures (v_max 1e-299 mm/s was written to LS-DYNA and
+  // Abaqus with exit 0, and OpenRadioss's fit ended in "inf %", 2026-12-04): the speeds from
+  // 1 um/s, the pressures over at least 1 kPa, as the builders' options (cli/option_bounds.hpp).
+  if (read && d.v_min > 0 && d.v_min < d.v_max && d.v_min < kMinSpeedMMs)
+    c.bad(*f->get("v_min"), w + ".v_min", "expected a sliding speed of at least " + fmt_shortest(kMinSpeedMMs) +
+                                              " mm/s (1 um/s; a unit error?), found " + fmt_shortest(d.v_min));
+  if (read && d.p_min >= 0 && d.p_min < d.p_max && d.p_max - d.p_min < kMinPressureSpanMPa)
+    c.bad(*f, w, "expected p_max - p_min of at least " + fmt_shortest(kMinPressureSpanMPa) + " MPa (1 kPa), found " +
+                     fmt_shortest(d.p_min) + " and " + fmt_shortest(d.p_max));
   const std::string nodes = c.str(*f, "nodes", w);
   ExportModel m;
   if (const auto* mt = c.table(t, "model", "model", false)) {
@@ -530,8 +530,7 @@ std::string export_path(const std::string& toml_path, const std::string& format)
 std::string write_exports(const std::vector<std::string>& tomls, const std::string& formats, const ExportOptions& o) {
   std::vector<std::string> list;
   if (formats != "none") {
-    std::stringstream ss(formats);
-    for (std::string f; std::getline(ss, f, ',');) {
+    for (const std::string& f : list_items(formats, "--export")) {
       if (f != "lsdyna" && f != "openradioss" && f != "abaqus")
         throw std::invalid_argument("--export: expected none or a list of lsdyna, openradioss, abaqus; found '" + f + "'");
       list.push_back(f);

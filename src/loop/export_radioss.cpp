@@ -78,9 +78,12 @@ std::vector<double> radioss_fit(const analysis::FrictionSurface& s, double v0, d
     for (int j = 0; j < n; ++j) {
       const double x = -1 + 2.0 * i / (n - 1), y = -1 + 2.0 * j / (n - 1);
       const double p = (x - b) / a, v = (y - d) / c;
-      const double law = std::max(law_mu(s, p, v), 1e-4);
+      // Residuals relative to the law, the law floored at 1e-4 as rel_error floors it: where
+      // mu < 1e-4 (a frictionless model, mu = 0) the fit aims at mu itself, not at 1e-4 (which
+      // missed mu = 0 by "100 %" and refused it); elsewhere the target is 1, bit for bit as before.
+      const double mu = law_mu(s, p, v), law = std::max(mu, 1e-4);
       A.row(i * n + j) << 1 / law, x / law, y / law, x * y / law, x * x / law, y * y / law;
-      rhs[i * n + j] = 1;
+      rhs[i * n + j] = mu / law;
     }
   Eigen::VectorXd best;
   double best_err = INFINITY;

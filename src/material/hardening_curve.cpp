@@ -23,7 +23,7 @@ void validate(const std::vector<double>& x, const std::vector<double>& y,
     if (!std::isfinite(x[i]) || !std::isfinite(y[i]))
       throw InputError(where(i) + ": plastic strain and stress must be finite numbers");
     if (i == 0 && x[i] != 0.0)
-      throw InputError(where(i) + ": the first plastic strain must be 0 (initial yield), found " + fmt(x[i], 17));
+      throw InputError(where(i) + ": the first plastic strain must be 0 (initial yield), found " + fmt_shortest(x[i]));
     if (i > 0 && !(x[i] > x[i - 1]))
       throw InputError(where(i) + ": plastic strain must increase strictly, found " + fmt(x[i], 17) +
                        " after " + fmt(x[i - 1], 17));

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "core/csv.hpp"
+#include "core/list_option.hpp"
 #include "material/swift_fit.hpp"
 #include "modelloop/material_edits.hpp"
 #include "modelloop/model_loop.hpp"
@@ -13,22 +14,13 @@ namespace drawbend::modelloop {
 
 namespace {
 
-/// "a/b/c" as numbers (InputError naming the candidate for a bad one).
+/// "a/b/c" as numbers, each member once (InputError naming the candidate for a bad one).
 std::vector<double> values_of(const std::string& name, const std::string& a) {
-  std::vector<double> v;
-  std::size_t pos = 0;
-  while (pos <= a.size()) {
-    const auto slash = a.find('/', pos);
-    const std::string tok = a.substr(pos, slash == std::string::npos ? std::string::npos : slash - pos);
-    char* end = nullptr;
-    const double x = std::strtod(tok.c_str(), &end);
-    if (tok.empty() || *end != '\0' || !std::isfinite(x))
-      throw InputError("candidate '" + name + "': '" + tok + "' is not a number");
-    v.push_back(x);
-    if (slash == std::string::npos) break;
-    pos = slash + 1;
+  try {
+    return list_numbers(a, "candidate '" + name + "'", '/');
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
   }
-  return v;
 }
 
 using Maker = void (*)(ModelCandidate& c, const std::string& arg, const std::string& data_dir);

@@ -22,20 +22,7 @@ rm -rf "$work"
 mkdir -p "$work"
 cd "$work" || exit 1
 failed=0
-expect() {  # LABEL CASE RC PATTERN CMD...: as hostile_matrix.sh's
-  local label=$1 class=$2 want=$3 pattern=$4
-  shift 4
-  local out rc first
-  out=$(timeout -k 5 "$limit" "$@" 2>&1 </dev/null)
-  rc=$?
-  first=$(printf '%s\n' "$out" | grep -a -m1 -E '^(input error|numerical fault|error|data problem|warning)' | cut -c1-300)
-  [ -z "$first" ] && first=$(printf '%s\n' "$out" | grep -a -m1 . | cut -c1-300)
-  printf '| %s | %s | %s | %s |\n' "$label" "$class" "$rc" "${first//|/\\|}"
-  if [ -n "$check" ] && { [ "$rc" != "$want" ] || ! printf '%s\n' "$out" | grep -a -qE -- "$pattern"; }; then
-    echo "FAILED: $label ($class): exit $rc, expected $want and a message matching: $pattern"
-    failed=1
-  fi
-}
+. "$here/matrix_lib.sh"  # expect LABEL CASE RC PATTERN CMD... (a 2 GB cap on each run)
 
 # drawbend loop on the thesis data (5 comment lines, the header on line 6;
 # columns 2 pin_diameter_mm 3 pin 4 direction_deg 5 speed_mm_s 7 back_tension_N
@@ -63,6 +50,8 @@ lp speed_m 'NR>6{$5=$5/1000}1' 0 "warning: .*speed_m.csv: column 'speed_mm_s': e
 lp dir_200 'NR==10{$4=200}1' 0 "dir_200.csv:10: column 'direction_deg': direction must lie in 0..90 deg" "a direction of 200 deg (one row)"
 lp all_rot 'NR>6{$3="rotating"}1' 2 "input error: .*all_rot.csv: column 'pin': every usable row is 'rotating'" "every row on a rotating pin (no friction to measure)"
 lp all_fixed 'NR>6&&$3=="rotating"{next}1' 2 "input error: .*all_fixed.csv: no rotating-pin rows for the 12.7 mm, 25.4 mm, 42 mm pin" "no rotating-pin rows (bending unknown)"
+lp one_test 'NR>6{$1="T1"}1' 2 "one_test.csv:[0-9]+: column 'pin_diameter_mm': test 'T1' has 25.4 mm here and 12.7 mm on line 7; a test is one strip drawn over one pin" "one test_id in every row (exit 0 before 2026-12-04: the replicate noise from rows on three pins)"
+lp dir_rad 'NR>6{$4=$4*3.14159265/180}1' 0 "warning: .*dir_rad.csv: column 'direction_deg': every direction is below 2 deg \\(largest 1.5708\\)" "every direction in radians (warning)"
 lp thick_neg 'NR==6{$0=$0",thickness_mm"} NR>6{$0=$0",-1.04"}1' 0 "thick_neg.csv: 156 rows read, 156 used" "an extra column thickness_mm = -1.04 (valid: an extra column is a candidate variable, constant here, so never chosen)"
 
 # drawbend model-loop on its sample points (header then rows; columns
@@ -80,6 +69,7 @@ ml neg_bt 'NR==h+1{$2=-500}1' "ml_neg_bt.csv:[0-9]+: column 'back_tension_N': mu
 ml nan 'NR==h+1{$3="nan"}1' "ml_nan.csv:[0-9]+: column 'bending_force_N': expected a finite number, found 'nan'" "a NaN bending force"
 ml dup_col 'NR==h{$3="back_tension_N"}1' "ml_dup_col.csv:[0-9]+: header cell 3: expected unique column names" "a duplicate column name"
 ml kN 'NR>h{$2=$2/1000;$3=$3/1000}1' "input error: .*ml_kN.csv: columns 'back_tension_N', 'bending_force_N': every force is below 10 N" "every force in kN"
+ml fb_x1000 'NR>h{$3=$3*1000}1' "ml_fb_x1000.csv:[0-9]+: column 'bending_force_N': back tension \\+ bending force = 3.046e\\+05 N, above what the strip can carry" "every bending force x 1000 (before 2026-12-04 the FE runs started on them)"
 ml pin_m 'NR>h{$1=$1/1000}1' "input error: .*ml_pin_m.csv: column 'pin_diameter_mm': every pin diameter is below 1 mm" "every pin diameter in m"
 
 # drawbend calibrate on the AA6016-T4 tests (test, angle_deg, stress_ratio, r_value).
@@ -118,7 +108,16 @@ ex p_eq 'p_min = 40.0\np_max = 40.0\nv_min = 6.35\nv_max = 101.6\n' '' 2 "fricti
 ex v_rev 'p_min = 0.0\np_max = 80.0\nv_min = 101.6\nv_max = 6.35\n' '' 2 "friction: expected 0 < v_min < v_max <= 10000 \\[mm/s\\], found 101.6 and 6.35" "v grid reversed"
 ex p_neg 'p_min = -3.0\np_max = 80.0\nv_min = 6.35\nv_max = 101.6\n' '' 2 "friction: expected 0 <= p_min < p_max" "p_min < 0"
 ex v_zero 'p_min = 0.0\np_max = 80.0\nv_min = 0.0\nv_max = 101.6\n' '' 2 "friction: expected 0 < v_min < v_max" "v_min = 0"
+ex v_tiny 'p_min = 0.0\np_max = 80.0\nv_min = 1e-300\nv_max = 1e-299\n' '' 2 "friction.v_min: expected a sliding speed of at least 0.001 mm/s" "v grid of 1e-300 mm/s (exit 0 to LS-DYNA before 2026-12-04)"
+ex p_tiny 'p_min = 0.0\np_max = 1e-9\nv_min = 6.35\nv_max = 101.6\n' '' 2 "friction: expected p_max - p_min of at least 0.001 MPa" "p grid 1e-9 MPa wide"
 ex p_nan 'p_min = nan\np_max = 80.0\nv_min = 6.35\nv_max = 101.6\n' '' 2 "friction.p_min: expected a finite number, found nan" "p_min = nan"
+# A frictionless model (mu = 0 at every node) is a valid law: written with Fric = C1..C5 = 0
+# (before 2026-12-04 the OpenRadioss fit aimed at mu = 1e-4, missed 0 by "100 %" and refused it).
+mkdir -p ex_mu0
+printf '[friction]\nlaw = "surface"\nnodes = "nodes.csv"\n%b' "$good" >ex_mu0/friction_model.toml
+awk -F, -v OFS=, 'NR > 1 { $2 = 0; $3 = 0 } 1' model/nodes.csv >ex_mu0/nodes.csv
+expect export "mu = 0 at every node (frictionless) to OpenRadioss" 0 "wrote ex_mu0/out.rad \\(openradioss; max relative error 0 % in 1 speed band" \
+  "$drawbend" export ex_mu0/friction_model.toml --to openradioss --parts 1,2 --out ex_mu0/out.rad
 # An OpenRadioss speed band outside the model's measured speeds fits the
 # surface's clamped edge: a valid polynomial, written with a warning.
 mkdir -p ex_band
@@ -131,6 +130,16 @@ expect export "a speed band beyond the measured speeds (warning)" 0 \
 # drawbend plan on nothing to plan.
 mkdir -p empty
 expect plan "an empty folder" 2 "drawbend plan: no deck.toml under .*empty" "$drawbend" plan empty
+# A folder is searched three levels down, never the whole file system (before 2026-12-04
+# `plan /` walked every folder of the machine): a deck four levels down is not planned, and
+# /proc (tens of thousands of entries three levels down, no deck) ends at once.
+mkdir -p deep/a/b/c/d
+cp "$here/decks/restart_block.toml" deep/a/b/c/d/deck.toml
+expect plan "a deck four levels down" 2 "drawbend plan: no deck.toml under deep \\(a folder is searched 3 levels down\\)" "$drawbend" plan deep
+cp "$here/decks/restart_block.toml" deep/a/b/c/deck.toml
+expect plan "a deck three levels down" 0 "^deep/a/b/c/deck.toml,64," "$drawbend" plan deep
+expect plan "the same deck named twice" 0 "warning: deep/a/b/c/deck.toml is named twice .*planned once" "$drawbend" plan deep deep/a/b/c/deck.toml
+expect plan "the whole of /proc" 2 "drawbend plan: no deck.toml under /proc" "$drawbend" plan /proc
 "$drawbend" block-deck --out zero/deck.toml >/dev/null 2>&1
 sed -i 's/^x = { from = 0.0, n = 4, to = 1.0 }/x = { from = 0.0, n = 0, to = 1.0 }/' zero/deck.toml
 expect plan "a deck with n = 0 elements along x" 2 "deck.toml:[0-9]+: mesh.x.n: expected a whole number >= 1" "$drawbend" plan zero/deck.toml
