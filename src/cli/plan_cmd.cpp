@@ -12,6 +12,7 @@
 //   drawbend plan build/chapters --nodes 4 --cores 2
 //   drawbend plan my.toml
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -157,16 +158,14 @@ int plan_command(int argc, char** argv) {
   for (const auto& p : paths) collect(p, decks);
   {  // a deck named twice (a path given twice, or a deck and its folder) is one case, not two
     std::vector<fs::path> once;
-    std::vector<std::string> seen;
+    std::set<std::string> seen;
     for (const auto& d : decks) {
       std::error_code ec;
-      const std::string key = fs::weakly_canonical(d, ec).string();
-      if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
+      if (!seen.insert(fs::weakly_canonical(d, ec).string()).second) {
         std::cerr << "warning: " << d.string() << " is named twice (the same deck from two of the paths given); "
                   << "planned once\n";
         continue;
       }
-      seen.push_back(key);
       once.push_back(d);
     }
     decks = std::move(once);
