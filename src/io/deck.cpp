@@ -223,7 +223,7 @@ void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out, co
       c.allowed(ht, "output.history", {"name", "kind", "target", "component", "point", "scale"});
       const std::string kind = c.str(ht, "kind", "output.history");
       // kind "strain" names a point (the nearest element), the others a node set or tool.
-      HistorySignal sig{c.str(ht, "name", "output.history"), kind,
+      HistorySignal sig{c.name(ht, "output.history"), kind,
                         kind == "strain" ? std::string() : c.str(ht, "target", "output.history"),
                         c.count_of(ht, "component", "output.history", 0, 0)};
       if (kind == "strain") sig.point = c.vec(ht, "point", "output.history");
@@ -251,7 +251,6 @@ void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out, co
       // Each name is a column of history.csv: unique, and none of the run's own
       // columns (a name twice ended the run with exit 3 from the CSV writer).
       const auto own = run_output::run_history_columns();
-      if (ht.get("name") && sig.name.empty()) c.bad(*ht.get("name"), "output.history.name", "expected a column name, found an empty one");
       for (const auto& o : out.history)
         if (!sig.name.empty() && o.name == sig.name)
           c.bad(*ht.get("name"), "output.history.name", "expected a unique column name, found '" + sig.name + "' twice");
@@ -282,7 +281,7 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
   problems.attempt([&] {
     if (const auto* cs = c.table(root, "case", "deck", false)) {
       c.allowed(*cs, "case", {"name", "description"});
-      m.name = c.str(*cs, "name", "case", std::string("case"));
+      m.name = c.name(*cs, "case", std::string("case"), true);
       c.str(*cs, "description", "case", std::string());
     }
   });
