@@ -55,13 +55,22 @@ std::vector<double> lines(const DeckContext& c, const toml::table& mesh, const s
       c.bad(t, w, "expected both 'breaks' (array of numbers) and 'counts' (array of whole numbers)");
       return {0.0, 1.0};
     }
+    // { from, to, n } beside { breaks, counts } was ignored with exit 0 before 2026-12-04.
+    for (const char* key : {"from", "to", "n"})
+      if (const auto* u = t.get(key))
+        c.bad(*u, w + "." + key, "not used with 'breaks' and 'counts' (give either { from, to, n } or { breaks, counts })");
     std::vector<double> bv;
     std::vector<int> kv;
     for (const auto& e : *b) {
       const auto v = e.value<double>();
       if (!v || !std::isfinite(*v)) c.bad(e, w + ".breaks", "expected finite numbers");
+      else if (!bv.empty() && !(*v > bv.back()))  // named here, not by fe::piecewise_lines's "uniform_lines: need ..."
+        c.bad(e, w + ".breaks", "expected increasing coordinates, found " + fmt_shortest(*v) + " after " + fmt_shortest(bv.back()));
       bv.push_back(v.value_or(0.0));
     }
+    if (b->size() < 2 || k->size() + 1 != b->size())
+      c.bad(*t.get("counts"), w + ".counts", "expected at least 2 breaks and one count per segment between them, found " +
+                                                 std::to_string(b->size()) + " breaks and " + std::to_string(k->size()) + " counts");
     for (const auto& e : *k) {
       const auto v = e.value<int64_t>();
       if (!v || *v < 1 || *v > 100000000) c.bad(e, w + ".counts", "expected whole numbers of elements >= 1");
