@@ -328,4 +328,7 @@ mkdir -p runs_word/a
 cp "$deck" runs_word/a/deck.toml
 printf 'quantity,value\nwall_time,abc\n' >runs_word/a/summary.csv
 expect plan "wall time not a number" 0 "warning: runs_word/a/summary.csv:2: column 'value': expected a number, found 'abc'; that run's measurement is left out" "$drawbend" plan runs_word
+# Two choice options said in another style than the house's "--name: expected ..., found '...'".
+expect loop "unknown --bending" 2 "input error: --bending: expected linear, constant, swift, fe or none, found 'quadratic'" "$drawbend" loop "$root/data/measured/thesis_drawbend.csv" --out l12 --bending quadratic
+expect export "unknown --to" 2 "input error: --to: expected lsdyna, openradioss or abaqus, found 'nastran'" "$drawbend" export model/good.toml --to nastran --out e10.k
 exit $failed
