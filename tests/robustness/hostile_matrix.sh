@@ -331,4 +331,7 @@ expect plan "wall time not a number" 0 "warning: runs_word/a/summary.csv:2: colu
 # Two choice options said in another style than the house's "--name: expected ..., found '...'".
 expect loop "unknown --bending" 2 "input error: --bending: expected linear, constant, swift, fe or none, found 'quadratic'" "$drawbend" loop "$root/data/measured/thesis_drawbend.csv" --out l12 --bending quadratic
 expect export "unknown --to" 2 "input error: --to: expected lsdyna, openradioss or abaqus, found 'nastran'" "$drawbend" export model/good.toml --to nastran --out e10.k
+# run's draw-bend options on a deck without a draw-bend answer (ignored with exit 0 before).
+expect run "--bending-force on a block deck" 2 "input error: --bending-force: applies only with a draw-bend deck" "$drawbend" run "$deck" --out o23 --quiet --bending-force 300
+expect run "--basis on a block deck" 2 "input error: --basis: applies only with a draw-bend deck" "$drawbend" run "$deck" --out o24 --quiet --basis half
 exit $failed
