@@ -334,4 +334,6 @@ expect export "unknown --to" 2 "input error: --to: expected lsdyna, openradioss 
 # run's draw-bend options on a deck without a draw-bend answer (ignored with exit 0 before).
 expect run "--bending-force on a block deck" 2 "input error: --bending-force: applies only with a draw-bend deck" "$drawbend" run "$deck" --out o23 --quiet --bending-force 300
 expect run "--basis on a block deck" 2 "input error: --basis: applies only with a draw-bend deck" "$drawbend" run "$deck" --out o24 --quiet --basis half
+# synth --from-thesis --data of a missing folder: named by its option (a derived table path before).
+expect synth "--data of a missing folder" 2 "input error: --data 'no_such_data': expected the repository's data folder \\(holding thesis/\\), found nothing there" "$drawbend" synth --from-thesis --data no_such_data --out y6
 exit $failed
