@@ -58,6 +58,8 @@ int block_deck_command(int argc, char** argv) {
   opt.range("speed-ramp", 0, kTimeS, "s", true);
   if (!opt.parse(argc, argv)) return 0;
   opt.not_empty({"hardening", "surface-nodes"});  // a file option given as '' names the option
+  // The default law's options with --friction: refused, not ignored (exit 0 before 2026-12-04).
+  opt.only_when(friction.empty(), {"surface-nodes", "interval"}, "without --friction, which replaces the default surface law");
   // The ramps against their steps, naming the options (the builder's check named its spec fields).
   ramp_within("press-ramp", s.press_ramp, "press-time", s.press_time, true);
   ramp_within("speed-ramp", s.speed_ramp, "slide-time", s.slide_time, true);

@@ -96,6 +96,10 @@ int calibrate_command(int argc, char** argv) {
     for (std::size_t i = 0; i < r.size(); ++i) csv << (i ? "," : "") << r[i];
     csv << "\n";
   }
+  for (const char* f : {"/calibration.csv", "/material.toml"}) {  // TESTS.csv or --compare as an output, before either is written
+    name_input(out + f, "--out");
+    refuse_input_as_output(out + f);
+  }
   write_file_atomic(out + "/calibration.csv", csv.str());
   std::ostringstream toml;
   toml << "# Yld2004-18p fitted by `drawbend calibrate " << path << "` (weighted least squares on relative residuals;\n"

@@ -83,6 +83,7 @@ inline int write_deck_out(const std::string& text, const std::string& out, const
   // The tables the deck reads are copied beside it and named by file name (io/portable_paths.hpp).
   const std::string dir = p.has_parent_path() ? p.parent_path().string() : std::string(".");
   name_input(out, "--out");
+  refuse_input_as_output(out);  // --out naming --hardening or another table read replaced it
   write_output(out, io::portable_deck(text, dir));  // never replaces a folder, FIFO or device (core/file_gate.hpp)
   std::cout << command << ": wrote " << out << " (run it with: drawbend run " << out << " --out DIR)\n";
   return 0;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <variant>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -26,6 +27,7 @@
 #include "io/portable_paths.hpp"
 #include "io/run_result.hpp"
 #include "sim/drawbend_case.hpp"
+#include "sim/material_choice.hpp"
 #include "sim/fe_options.hpp"
 
 namespace drawbend::cli {
@@ -112,6 +114,16 @@ int drawbend_deck_command(int argc, char** argv) {
   // Relative files are the user's, from the current folder (io/portable_paths.hpp).
   s.friction = io::friction_argument(friction, std::filesystem::current_path().string());
   if (!s.hardening.empty()) s.hardening = std::filesystem::absolute(s.hardening).lexically_normal().string();
+  // --hardening is the flow curve of a --material without one; with a --material that has its own
+  // (or is elastic) it was ignored with exit 0 before 2026-12-04: refused, naming both options.
+  if (opt.given("hardening") && !s.material.empty()) {
+    const io::MaterialSpec m = sim::material_choice(s.material, s.hardening);
+    const auto* f = m.curve ? std::get_if<io::CurveFile>(&*m.curve) : nullptr;
+    if (!f || f->path != s.hardening)
+      throw std::invalid_argument(std::string("--hardening: applies only with a --material that has no flow curve of its own (") +
+                                  (m.curve ? "this --material names one" : "this --material is elastic") +
+                                  "; given here, it would be ignored)");
+  }
   if (basis != "full" && basis != "half")
     throw std::invalid_argument("--basis: expected full or half, found '" + basis + "'");
   if (s.strip_direction != "rd" && s.strip_direction != "td")

@@ -60,6 +60,7 @@ int export_main(int argc, char** argv) {
     const loop::ExportResult r = loop::export_to(to, m, eo);
     if (out.empty()) out = loop::export_path(path, to);
     name_input(out, "--out");  // never replaces a folder, FIFO or device (core/file_gate.hpp)
+    refuse_input_as_output(out);  // nor the model or its nodes file
     write_file_atomic(out, r.text);
     std::cout << "wrote " << out << " (" << to << "; "
               << (to == "openradioss" ? "max relative error " + fmt(100 * r.max_error, 3) + " % in " +

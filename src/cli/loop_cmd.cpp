@@ -386,6 +386,12 @@ int synth_main(int argc, char** argv) {
     check_synth_options(opt, a);
     ensure_writable_dir(a.out, "--out");
     if (a.from_thesis) {
+      // Named by its option (before 2026-12-04: "/nonexistent/thesis/table_5_3.csv: cannot open file").
+      if (std::error_code ec; !std::filesystem::is_directory(a.data_dir + "/thesis", ec))
+        throw InputError("--data '" + a.data_dir + "': expected the repository's data folder (holding thesis/), found " +
+                         (std::filesystem::is_directory(a.data_dir, ec) ? "a folder without thesis/"
+                          : std::filesystem::exists(a.data_dir, ec)    ? "a file"
+                                                                       : "nothing there"));
       const Dataset d = thesis_dataset(a.data_dir + "/thesis", a.points);
       write_measured(a.out + "/thesis_drawbend.csv", d);
       std::cout << "wrote " << a.out << "/thesis_drawbend.csv (" << d.rows.size() << " rows)\n";

@@ -48,7 +48,8 @@ double measured_cpu(const fs::path& dir) {
     const CsvTable t = read_csv((dir / "summary.csv").string());
     for (const auto& row : t.rows)
       if (t.text(row, "quantity") == "wall_time") wall = t.number(row, "value");
-  } catch (const std::exception&) {
+  } catch (const std::exception& e) {  // said, as a wall time out of range is (silent before 2026-12-04)
+    std::cerr << "warning: " << e.what() << "; that run's measurement is left out\n";
     return NAN;
   }
   // A wall time that no run can have (not a number, <= 1 ms, above a year) is

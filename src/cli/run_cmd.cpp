@@ -18,6 +18,7 @@
 #include "cli/option_bounds.hpp"
 #include "core/file_gate.hpp"
 #include "io/run_case.hpp"
+#include "io/run_result.hpp"
 
 namespace {
 // SIGINT/SIGTERM during `drawbend run`: the run checkpoints at the next cycle
@@ -94,6 +95,9 @@ int run_main(int argc, char** argv) {
     watch_stop_signals();
     ro.stop = &g_stop;
     io::Deck deck = io::read_deck(deck_path);
+    // The draw-bend answer's options on another deck were ignored with exit 0 before 2026-12-04.
+    opt.only_when(io::is_drawbend_deck(deck), {"basis", "bending-force", "yield-stress"},
+                  "with a draw-bend deck (history signals outlet_force_N and back_tension_N, a step 'draw')");
     const io::RunSummary r = io::run_case(deck, ro, std::cout);
     return r.interrupted ? 128 + r.interrupted : 0;
   });

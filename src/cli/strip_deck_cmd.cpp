@@ -62,6 +62,8 @@ int strip_deck_command(int argc, char** argv) {
   opt.range("force-ramp", 0, kTimeS, "s", true).range("speed-ramp", 0, kTimeS, "s", true);
   if (!opt.parse(argc, argv)) return 0;
   opt.not_empty({"hardening", "stribeck-table"});  // a file option given as '' names the option
+  // The default law's options with --friction: refused, not ignored (exit 0 before 2026-12-04).
+  opt.only_when(friction.empty(), {"stribeck-table", "interval"}, "without --friction, which replaces the default Stribeck law");
   // The force ramp against the press step, naming the options (the builder's check named its spec fields).
   ramp_within("force-ramp", s.force_ramp, "press-time", s.press_time, false);
   name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)

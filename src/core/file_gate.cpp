@@ -147,6 +147,19 @@ void write_output(const std::string& path, const std::string& text_in) {
   }
 }
 
+void refuse_input_as_output(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path target = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  if (ec) return;  // write_output names what is wrong with the path
+  for (const std::string& in : inputs_read()) {
+    std::error_code ec2;
+    if (fs::path(in) == target || (fs::exists(target, ec2) && fs::equivalent(fs::path(in), target, ec2)))
+      throw InputError(describe_path(path) + ": is also an input of this command (read as '" + in +
+                       "'); writing there would replace it: choose another file");
+  }
+}
+
 std::string valid_utf8(const std::string& s) {
   bool ascii = true;  // the common case, one fast pass and no copy
   for (const char c : s) ascii = ascii && static_cast<unsigned char>(c) < 0x80;

@@ -48,6 +48,13 @@ std::string read_input(const std::string& path, std::uintmax_t max_bytes = kMaxI
 /// the target is not a regular file or the write fails (nothing left behind).
 void write_output(const std::string& path, const std::string& text);
 
+/// Refuse an output file that this command has read as an input (core/provenance.hpp's
+/// inputs_read: the same file by its canonical path): InputError "ORIGIN 'path': is also
+/// an input of this command (...)" before anything is written (before 2026-12-04
+/// `export m.toml --out m.toml` and `block-deck --hardening h.csv --out h.csv` replaced
+/// the input with the output, exit 0).
+void refuse_input_as_output(const std::string& path);
+
 /// Text with every byte sequence that is not valid UTF-8 replaced by U+FFFD
 /// (a Windows-1252 'µ' in a column name becomes '\uFFFD'): outputs are UTF-8.
 std::string valid_utf8(const std::string& text);

@@ -55,13 +55,22 @@ std::vector<double> lines(const DeckContext& c, const toml::table& mesh, const s
       c.bad(t, w, "expected both 'breaks' (array of numbers) and 'counts' (array of whole numbers)");
       return {0.0, 1.0};
     }
+    // { from, to, n } beside { breaks, counts } was ignored with exit 0 before 2026-12-04.
+    for (const char* key : {"from", "to", "n"})
+      if (const auto* u = t.get(key))
+        c.bad(*u, w + "." + key, "not used with 'breaks' and 'counts' (give either { from, to, n } or { breaks, counts })");
     std::vector<double> bv;
     std::vector<int> kv;
     for (const auto& e : *b) {
       const auto v = e.value<double>();
       if (!v || !std::isfinite(*v)) c.bad(e, w + ".breaks", "expected finite numbers");
+      else if (!bv.empty() && !(*v > bv.back()))  // named here, not by fe::piecewise_lines's "uniform_lines: need ..."
+        c.bad(e, w + ".breaks", "expected increasing coordinates, found " + fmt_shortest(*v) + " after " + fmt_shortest(bv.back()));
       bv.push_back(v.value_or(0.0));
     }
+    if (b->size() < 2 || k->size() + 1 != b->size())
+      c.bad(*t.get("counts"), w + ".counts", "expected at least 2 breaks and one count per segment between them, found " +
+                                                 std::to_string(b->size()) + " breaks and " + std::to_string(k->size()) + " counts");
     for (const auto& e : *k) {
       const auto v = e.value<int64_t>();
       if (!v || *v < 1 || *v > 100000000) c.bad(e, w + ".counts", "expected whole numbers of elements >= 1");
@@ -223,7 +232,7 @@ void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out, co
       c.allowed(ht, "output.history", {"name", "kind", "target", "component", "point", "scale"});
       const std::string kind = c.str(ht, "kind", "output.history");
       // kind "strain" names a point (the nearest element), the others a node set or tool.
-      HistorySignal sig{c.str(ht, "name", "output.history"), kind,
+      HistorySignal sig{c.name(ht, "output.history"), kind,
                         kind == "strain" ? std::string() : c.str(ht, "target", "output.history"),
                         c.count_of(ht, "component", "output.history", 0, 0)};
       if (kind == "strain") sig.point = c.vec(ht, "point", "output.history");
@@ -251,7 +260,6 @@ void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out, co
       // Each name is a column of history.csv: unique, and none of the run's own
       // columns (a name twice ended the run with exit 3 from the CSV writer).
       const auto own = run_output::run_history_columns();
-      if (ht.get("name") && sig.name.empty()) c.bad(*ht.get("name"), "output.history.name", "expected a column name, found an empty one");
       for (const auto& o : out.history)
         if (!sig.name.empty() && o.name == sig.name)
           c.bad(*ht.get("name"), "output.history.name", "expected a unique column name, found '" + sig.name + "' twice");
@@ -282,7 +290,7 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
   problems.attempt([&] {
     if (const auto* cs = c.table(root, "case", "deck", false)) {
       c.allowed(*cs, "case", {"name", "description"});
-      m.name = c.str(*cs, "name", "case", std::string("case"));
+      m.name = c.name(*cs, "case", std::string("case"), true);
       c.str(*cs, "description", "case", std::string());
     }
   });

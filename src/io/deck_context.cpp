@@ -1,5 +1,6 @@
 #include "io/deck_context.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -122,6 +123,27 @@ std::string DeckContext::str(const toml::table& t, const std::string& key, const
   if (auto v = n->value<std::string>(); v && n->is_string()) return *v;
   bad(*n, what + "." + key, "expected a string, found " + found(*n));
   return def.value_or("");
+}
+
+std::string DeckContext::name(const toml::table& t, const std::string& what, std::optional<std::string> def,
+                              bool empty_ok) const {
+  const std::string v = str(t, "name", what, std::move(def));
+  const auto* n = t.get("name");
+  if (!n || !n->is_string()) return v;
+  if (v.empty() && !empty_ok) bad(*n, what + ".name", "expected a name, found an empty one");
+  auto control = [](char ch) { return static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f; };
+  if (std::none_of(v.begin(), v.end(), control)) return v;
+  std::string shown;  // the name with its control characters escaped, so the message stays one line
+  for (const char ch : clip_for_message(v)) {
+    const auto u = static_cast<unsigned char>(ch);
+    static const char* hex = "0123456789abcdef";
+    shown += !control(ch) ? std::string(1, ch)
+             : ch == '\n' ? std::string("\\n")
+             : ch == '\t' ? std::string("\\t")
+                          : std::string("\\x") + hex[u >> 4] + hex[u & 15];
+  }
+  bad(*n, what + ".name", "expected a name without control characters (line breaks, tabs), found \"" + shown + "\"");
+  return v;
 }
 
 bool DeckContext::boolean(const toml::table& t, const std::string& key, const std::string& what, bool def) const {

@@ -54,6 +54,11 @@ class DeckContext {
   std::string str(const toml::table& t, const std::string& key, const std::string& what,
                   std::optional<std::string> def = {}) const;
   bool boolean(const toml::table& t, const std::string& key, const std::string& what, bool def) const;
+  /// t's "name" (a case, tool, step or history column): a string without control characters
+  /// (a line break in a name broke history.csv's comment lines and columns), and not empty unless
+  /// `empty_ok` (an empty tool name ended a finished run with an error about fields_0.vtm).
+  std::string name(const toml::table& t, const std::string& what, std::optional<std::string> def = {},
+                   bool empty_ok = false) const;
   /// An array of 3 numbers; `unit`: normalised, and zero is a problem.
   fe::Vec3 vec(const toml::table& t, const std::string& key, const std::string& what, std::optional<fe::Vec3> def = {},
                bool unit = false) const;

@@ -98,7 +98,7 @@ void read_tools(const DeckContext& c, const toml::table& root, fe::Model& m) {
     c.problems().attempt([&] {
       const auto& t = *tn.as_table();
       fe::Tool tool;
-      tool.name = c.str(t, "name", "tool");
+      tool.name = c.name(t, "tool");
       const std::string w = "tool '" + tool.name + "'";
       c.allowed(t, w, {"name", "drive", "direction", "speed", "force", "mass", "stop", "surface"});
       for (const auto& other : m.tools)
@@ -225,7 +225,7 @@ void read_steps(const DeckContext& c, const toml::table& root, fe::Model& m, boo
     c.problems().attempt([&] {
       const auto& t = *sn.as_table();
       fe::Step s;
-      s.name = c.str(t, "name", "step", std::string("step") + std::to_string(m.steps.size() + 1));
+      s.name = c.name(t, "step", std::string("step") + std::to_string(m.steps.size() + 1));
       const std::string w = "step '" + s.name + "'";
       c.allowed(t, w, {"name", "duration", "damping", "friction", "quasi_static", "fixed", "velocity", "rotation",
                        "force", "tool_drive"});

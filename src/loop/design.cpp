@@ -32,7 +32,7 @@ BendingSource bending_source(const std::string& b) {
   if (b == "swift") return BendingSource::swift;
   if (b == "fe") return BendingSource::fe;
   if (b == "none") return BendingSource::none;
-  throw std::invalid_argument("--bending must be linear, constant, swift, fe or none, not '" + b + "'");
+  throw std::invalid_argument("--bending: expected linear, constant, swift, fe or none, found '" + b + "'");
 }
 
 std::string bending_source_name(BendingSource b) {

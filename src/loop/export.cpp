@@ -515,7 +515,7 @@ ExportResult export_to(const std::string& format, const ExportModel& m, const Ex
   if (format == "lsdyna") return export_lsdyna(m, o);
   if (format == "openradioss") return export_openradioss(m, o);
   if (format == "abaqus") return export_abaqus(m, o);
-  throw std::invalid_argument("--to must be lsdyna, openradioss or abaqus, not '" + format + "'");
+  throw std::invalid_argument("--to: expected lsdyna, openradioss or abaqus, found '" + format + "'");
 }
 
 std::string export_path(const std::string& toml_path, const std::string& format) {
