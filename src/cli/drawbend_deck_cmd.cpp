@@ -41,6 +41,22 @@ const std::vector<KeyOptions> kDeckKeys = {{"numerics.mass_scaling", "--speed or
                                            {"output", "--frames or --draw-length"},
                                            {"contact", "--friction or --penalty"},
                                            {"step", "--speed, --draw-length or --back-tension"}};
+// A back tension the strip cannot carry: above its flow stress at 100 % plastic strain
+// (beyond any strip's necking strain, so a generous bound) over the modelled section.
+// Such a deck was written with exit 0 and its run ended in exit 3 (an element
+// inverted) before 2026-12-04.  An elastic material has no bound here.
+void check_back_tension(const sim::DrawBendSpec& s, double given, const std::string& tag) {
+  const io::MaterialSpec m = sim::material_choice(s.material, s.hardening);
+  if (!m.curve) return;
+  const double sigma = io::make_flow_curve(*m.curve, "").stress(1.0);
+  const double capacity = sigma * s.width * s.thickness;  // the half model's section
+  if (s.back_tension > capacity)
+    throw InputError("--back-tension: " + fmt(given, 6) + " N on the " + tag + " is above what the strip can carry, " +
+                     fmt(capacity * given / s.back_tension, 6) + " N (the material's flow stress at 100 % plastic strain, " +
+                     fmt(sigma, 4) + " MPa, over the " + fmt(s.thickness, 4) + " mm thick strip's section): forces in " +
+                     "another unit, or another strip (--width, --thickness)?");
+}
+
 }  // namespace
 
 int drawbend_deck_command(int argc, char** argv) {
@@ -139,6 +155,7 @@ int drawbend_deck_command(int argc, char** argv) {
   const double to_half = full ? 0.5 : 1.0;  // given forces -> half model
   const std::string tag = full ? "full strip" : "half model";
   s.back_tension = back_tension * to_half;
+  check_back_tension(s, back_tension, tag);
   if (run_dir.empty()) {
     io::CaseSpec deck = sim::drawbend_case(s);
     io::set_threads(deck, threads);  // the deck's numerics.threads (a run's deck keeps none)

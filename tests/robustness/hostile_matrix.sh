@@ -323,6 +323,12 @@ expect strip-deck "--stribeck-table with --friction" 2 "--stribeck-table: applie
 expect drawbend-deck "--hardening with a --material curve" 2 "--hardening: applies only with a --material that has no flow curve of its own \\(this --material names one" "$drawbend" drawbend-deck --material '{ type = "j2", yield = 100.0 }' --hardening own_curve.csv
 expect drawbend-deck "--hardening with an elastic --material" 2 "--hardening: applies only with a --material .*this --material is elastic" "$drawbend" drawbend-deck --material '{ type = "elastic" }' --hardening own_curve.csv
 expect drawbend-deck "--hardening with a --material without a curve" 0 "back_tension in this deck" "$drawbend" drawbend-deck --material '{ type = "j2_combined", kinematic = { beta = 0.5 } }' --hardening own_curve.csv
+# A back tension the strip cannot carry (above the flow stress at 100 % plastic strain over the section):
+# the deck was written with exit 0 and its run ended in exit 3, an element inverted (before 2026-12-04).
+expect drawbend-deck "back tension above the strip's capacity" 2 "--back-tension: 1e\\+06 N on the full strip is above what the strip can carry" "$drawbend" drawbend-deck --back-tension 1e6
+expect drawbend-deck "back tension above a Swift strip's capacity" 2 "--back-tension: 20000 N on the full strip is above what the strip can carry, .* 401 MPa" "$drawbend" drawbend-deck --back-tension 20000 --material '{ swift = { K = 400, e0 = 0.01, n = 0.25 } }'
+expect drawbend-deck "back tension within the capacity, half basis" 0 "back_tension in this deck is on the half model: 5000 N" "$drawbend" drawbend-deck --back-tension 5000 --basis half
+expect drawbend-deck "an elastic strip has no bound" 0 "back_tension in this deck" "$drawbend" drawbend-deck --back-tension 9000 --material '{ type = "elastic" }'
 # plan: a finished run's wall time that is not a number was left out without a word (a range error warned).
 mkdir -p runs_word/a
 cp "$deck" runs_word/a/deck.toml
