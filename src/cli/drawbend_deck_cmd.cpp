@@ -45,10 +45,9 @@ const std::vector<KeyOptions> kDeckKeys = {{"numerics.mass_scaling", "--speed or
 // (beyond any strip's necking strain, so a generous bound) over the modelled section.
 // Such a deck was written with exit 0 and its run ended in exit 3 (an element
 // inverted) before 2026-12-04.  An elastic material has no bound here.
-void check_back_tension(const sim::DrawBendSpec& s, double given, const std::string& tag) {
-  const io::MaterialSpec m = sim::material_choice(s.material, s.hardening);
+void check_back_tension(const sim::DrawBendSpec& s, const io::MaterialSpec& m, double given, const std::string& tag) {
   if (!m.curve) return;
-  const double sigma = io::make_flow_curve(*m.curve, "").stress(1.0);
+  const double sigma = io::make_flow_curve(*m.curve, "").tension_bound();
   const double capacity = sigma * s.width * s.thickness;  // the half model's section
   if (s.back_tension > capacity)
     throw InputError("--back-tension: " + fmt(given, 6) + " N on the " + tag + " is above what the strip can carry, " +
@@ -132,12 +131,12 @@ int drawbend_deck_command(int argc, char** argv) {
   if (!s.hardening.empty()) s.hardening = std::filesystem::absolute(s.hardening).lexically_normal().string();
   // --hardening is the flow curve of a --material without one; with a --material that has its own
   // (or is elastic) it was ignored with exit 0 before 2026-12-04: refused, naming both options.
+  const io::MaterialSpec material = sim::material_choice(s.material, s.hardening);
   if (opt.given("hardening") && !s.material.empty()) {
-    const io::MaterialSpec m = sim::material_choice(s.material, s.hardening);
-    const auto* f = m.curve ? std::get_if<io::CurveFile>(&*m.curve) : nullptr;
+    const auto* f = material.curve ? std::get_if<io::CurveFile>(&*material.curve) : nullptr;
     if (!f || f->path != s.hardening)
       throw std::invalid_argument(std::string("--hardening: applies only with a --material that has no flow curve of its own (") +
-                                  (m.curve ? "this --material names one" : "this --material is elastic") +
+                                  (material.curve ? "this --material names one" : "this --material is elastic") +
                                   "; given here, it would be ignored)");
   }
   if (basis != "full" && basis != "half")
@@ -155,7 +154,7 @@ int drawbend_deck_command(int argc, char** argv) {
   const double to_half = full ? 0.5 : 1.0;  // given forces -> half model
   const std::string tag = full ? "full strip" : "half model";
   s.back_tension = back_tension * to_half;
-  check_back_tension(s, back_tension, tag);
+  check_back_tension(s, material, back_tension, tag);
   if (run_dir.empty()) {
     io::CaseSpec deck = sim::drawbend_case(s);
     io::set_threads(deck, threads);  // the deck's numerics.threads (a run's deck keeps none)

@@ -120,18 +120,17 @@ std::vector<modelloop::ModelCandidate> checked_candidates(Args& a) {
   } catch (const InputError& e) {
     p.need(false, e.what());
   }
-  // The strip cannot carry more than its largest flow stress over its full section: a point whose
+  // The strip cannot carry more than its flow-stress bound over its full section: a point whose
   // outlet force F_X + F_B is above that is not a draw-bend test of this strip (bending forces in
   // N x 1000 started the FE runs before 2026-12-04).
   if (p.text.empty()) try {
-      const auto curve = material::HardeningCurve::load(s.hardening);
-      const double sigma = *std::max_element(curve.stresses().begin(), curve.stresses().end());
+      const double sigma = material::HardeningCurve::load(s.hardening).tension_bound();
       const double capacity = sigma * 2 * s.width * s.thickness;  // full strip: --width is the half width
       for (const auto& pt : a.points)
         if (pt.back_tension_N + pt.bending_N > capacity) {
           p.need(false, pt.where + ": column 'bending_force_N': back tension + bending force = " +
                             fmt(pt.back_tension_N + pt.bending_N, 4) + " N, above what the strip can carry, " +
-                            fmt(capacity, 4) + " N (the largest flow stress of --hardening, " + fmt(sigma, 4) +
+                            fmt(capacity, 4) + " N (the flow stress of --hardening at 100 % plastic strain, " + fmt(sigma, 4) +
                             " MPa, over the full strip's " + fmt(2 * s.width, 4) + " x " + fmt(s.thickness, 4) +
                             " mm section): forces in another unit, or another strip (--width, --thickness)?");
           break;

@@ -40,6 +40,10 @@ class HardeningCurve {
   const std::vector<double>& plastic_strains() const { return x_; }
   const std::vector<double>& stresses() const { return y_; }
   double initial_yield() const { return y_.front(); }
+  /// The flow stress at 100 % plastic strain, beyond any sheet's necking strain in
+  /// tension: a generous bound of the stress a strip carries, so its section times it
+  /// bounds a force on the strip (drawbend-deck's --back-tension, model-loop's points).
+  double tension_bound() const { return stress(1.0); }
 
   /// Segment containing ep (0 for ep <= 0, size()-1 for ep >= the last point).
   int segment(double ep) const noexcept {

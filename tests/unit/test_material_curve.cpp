@@ -2,6 +2,7 @@
 // Closed-form answers:
 //  - Curve (0, 100), (0.1, 200), (0.3, 300): slopes 1000 and 500 MPa; sigma(0.05) = 150,
 //    sigma(0.2) = 250, sigma(0.5) = 300 + 500*0.2 = 400 (last slope continued), sigma(0.3) = 300.
+//    tension_bound() = sigma(1.0) = 300 + 500*0.7 = 650 (the flow stress at 100 % plastic strain).
 //  - One-point curve (0, 150): perfectly plastic, sigma = 150 and slope 0 at every strain.
 //  - Swift fit: K eps0^n = YS and K n^n exp(eps0 - n) = UTS (Considere point eps0 + eps_p = n,
 //    engineering stress = true stress * exp(-(n - eps0))).  For Table 5-1 RD (99.71, 227.98, 0.32):
@@ -69,11 +70,13 @@ BOOST_AUTO_TEST_CASE(interpolation_and_extrapolation) {
   BOOST_TEST(c.segment(0.1) == 1);
   BOOST_TEST(c.segment(0.3) == 2);
   BOOST_TEST(std::isinf(c.segment_end(2)));
+  BOOST_TEST(c.tension_bound() == 650.0, tt::tolerance(1e-14));
 
   const HardeningCurve flat({0.0}, {150.0});
   BOOST_TEST(flat.stress(0.0) == 150.0);
   BOOST_TEST(flat.stress(2.0) == 150.0);
   BOOST_TEST(flat.slope(2.0) == 0.0);
+  BOOST_TEST(flat.tension_bound() == 150.0);
 }
 
 BOOST_AUTO_TEST_CASE(segment_lookup_matches_linear_search) {
