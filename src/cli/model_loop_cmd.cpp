@@ -57,7 +57,7 @@ void add_options(Options& opt, Args& a) {
   opt.add(a.out, "out", "output directory (runs cached in OUT/runs)");
   opt.add(a.cfg.fit_pin, "fit-pin", "pin diameter whose points train [mm]; the others choose the model");
   opt.add(a.cfg.min_gain, "min-gain", "accept a candidate if the choice pins' RMS relative error falls by more than this");
-  opt.add(a.candidates, "candidates", "comma-separated: split:B1/B2..., chaboche:X1/X2...[@G1/G2...], voce, hill48, offset, ms:X, across:N");
+  opt.add(a.candidates, "candidates", "comma-separated: split:B1/B2..., chaboche:X1/X2...[@G1/G2...], voce, hill48, offset, ms:X, across:N (empty: the baseline alone)");
   opt.add(a.blind, "blind",
           "with points on 3 or more pins, also run the whole loop once per pin with that pin left out and report "
           "each pin's blind error (true, the default); false: the in-sample loop only (its choice pins' error is not "
