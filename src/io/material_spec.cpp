@@ -394,6 +394,9 @@ std::shared_ptr<const material::Material> make_material(const DeckContext& c, co
     }
   } catch (const std::invalid_argument& e) {
     c.fail(t, "material", e.what());
+  } catch (const InputError& e) {  // the curve file's own problem (file:line), with the deck line that named it
+    if (!t.get("hardening")) throw;  // (before 2026-12-05 "curve.csv: missing required column" without the deck)
+    c.fail(*t.get("hardening"), "material.hardening", e.what());
   }
 }
 
