@@ -40,7 +40,12 @@ int export_main(int argc, char** argv) {
     std::cout << opt.usage();
     return 0;
   }
-  if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
+  if (argc >= 2 && std::string(argv[1]).rfind("-", 0) == 0) {  // as `run`: the option is named
+    std::cerr << "input error: drawbend export: expected FRICTION_MODEL.toml first, found the option '"
+              << clip_for_message(argv[1]) << "' (drawbend export MODEL.toml --to lsdyna; --help lists the options)\n";
+    return 2;
+  }
+  if (argc < 2) {
     std::cerr << "usage: drawbend export friction_model.toml --to lsdyna|openradioss|abaqus [--out FILE] [--threads N]"
                  " (drawbend export --help: options and examples)\n";
     return 2;

@@ -229,8 +229,13 @@ int loop_main(int argc, char** argv) {
     opt.parse(2, const_cast<char**>(argv_help));
     return 0;
   }
-  if (data_path.empty() || data_path.rfind("--", 0) == 0) {
-    std::cerr << "drawbend loop: missing DATA.csv (drawbend loop --help lists the options)\n";
+  if (data_path.rfind("--", 0) == 0) {  // as `run`: the option that stands where DATA.csv belongs is named
+    std::cerr << "input error: drawbend loop: expected DATA.csv first, found the option '" << clip_for_message(data_path)
+              << "' (drawbend loop DATA.csv --out DIR; --help lists the options)\n";
+    return 2;
+  }
+  if (data_path.empty()) {
+    std::cerr << "input error: drawbend loop: missing DATA.csv (drawbend loop --help lists the options)\n";
     return 2;
   }
   return with_exit_codes([&] {
