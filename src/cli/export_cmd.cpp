@@ -58,6 +58,11 @@ int export_main(int argc, char** argv) {
     // The options of one format given for another: refused, not ignored.
     opt.only_when(to == "openradioss", {"rd-vector", "speed-band", "max-rel-error"}, "with --to openradioss");
     opt.only_when(to == "abaqus", {"abaqus"}, "with --to abaqus");
+    // Abaqus's *FRICTION has no part or contact IDs, and Abaqus/Standard's anisotropic table
+    // always holds both directions: these options were ignored with exit 0 (before 2026-12-05).
+    opt.only_when(to != "abaqus", {"parts", "id"}, "with --to lsdyna or openradioss (Abaqus's *FRICTION has no IDs)");
+    opt.only_when(to != "abaqus" || eo.abaqus_product == "explicit", {"direction"},
+                  "with --to lsdyna, openradioss or --abaqus explicit (Abaqus/Standard writes both directions)");
     loop::set_list_options(eo, parts, rd_vector, band);
     eo.contact_id = eo.friction_id;
     eo.validate(to == "lsdyna" || to == "openradioss" || to == "abaqus" ? to : "lsdyna");
