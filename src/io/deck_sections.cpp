@@ -44,8 +44,9 @@ contact::Surface surface(const DeckContext& c, const toml::table& t, const std::
   }
   if (c.count() == before) try {
       s.validate(w);
-    } catch (const std::invalid_argument& e) {
-      c.bad(t, w, e.what());
+    } catch (const std::invalid_argument& e) {  // its message starts with w: said once
+      const std::string m = e.what();
+      c.bad(t, w, m.rfind(w + ": ", 0) == 0 ? m.substr(w.size() + 2) : m);
     }
   return s;
 }

@@ -95,6 +95,13 @@ expect plan "deck's Stribeck table of another table" 2 "table.toml:$n: contact.f
 sed "s/table = 'table_3_1.csv'/table = 'table_3_1.csv', mu_BL = 0.1/" strip/strip.toml >strip/both.toml
 n=$(line_of strip/both.toml "mu_BL = 0.1")
 expect run "Stribeck table and a parameter" 2 "both.toml:$n: contact.friction.mu_BL: not used with 'table'" "$drawbend" run strip/both.toml --out o6 --quiet
+# A tool surface's bounds reversed: "empty bounds" without which, and a history's key said twice
+# ("step 'bend'.force.magnitude: step 'bend'.force.magnitude: history times must increase").
+sed '0,/angle_max = 1.5707963/s//angle_max = -1.0/' cup.toml >cup_angle.toml
+expect plan "tool surface angles reversed" 2 "cup_angle.toml:[0-9]+: tool 'punch' surface: empty bounds: expected angle_min < angle_max, found angle_min = 0 and angle_max = -1" "$drawbend" plan cup_angle.toml
+sed 's/magnitude = { t = \[ 0.0, 0.075 \]/magnitude = { t = [ 0.075, 0.0 ]/' db.toml >db_times.toml
+n=$(line_of db_times.toml 't = \[ 0.075, 0.0 \]')
+expect run "load history times reversed" 2 "db_times.toml:$n: step 'bend'.force.magnitude: history times must increase" "$drawbend" run db_times.toml --out o7 --quiet
 # drawbend-deck --hardening with the wrong columns: the file named without its option.
 printf 'a,b\n1,2\n' >cols.csv
 expect drawbend-deck "--hardening with the wrong columns" 2 "input error: --hardening: .*cols.csv: missing required column 'plastic_strain'" "$drawbend" drawbend-deck --hardening cols.csv
