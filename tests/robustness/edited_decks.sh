@@ -47,6 +47,10 @@ expect export "--direction with Abaqus/Standard" 2 "input error: --direction: ap
 expect export "--direction with Abaqus/Explicit (valid)" 0 "wrote e4.inp" "$drawbend" export model/fm.toml --to abaqus --abaqus explicit --direction td --out e4.inp
 expect export "--parts, --id, --direction with LS-DYNA (valid)" 0 "wrote e5.k" "$drawbend" export model/fm.toml --to lsdyna --parts 1,2 --id 3 --direction td --out e5.k
 
+# calibrate --compare with yld2004 of another type: the file named without the key's line.
+printf '[material]\nyld2004 = 5\n' >yld_number.toml
+expect calibrate "--compare: yld2004 a number" 2 "yld_number.toml:2: material.yld2004: expected a table \\{ a, c1 = \\[9 numbers\\], c2 = \\[9 numbers\\] \\}, found a number" \
+  "$drawbend" calibrate "$root/data/materials/aa6016_t4_esaform2021.csv" --out c1 --compare yld_number.toml
 # plan: a run's summary.csv with wall_time twice (the last was taken without a word), or a
 # folder named summary.csv (skipped without a word).
 deck=$here/decks/restart_block.toml
