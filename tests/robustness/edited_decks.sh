@@ -43,6 +43,13 @@ grep -v '^#' "$root/data/thesis/table_6_1.csv" >model/nodes.csv
 printf '[friction]\nlaw = "surface"\nnodes = "nodes.csv"\n' >model/fm.toml
 expect export "--parts with --to abaqus" 2 "input error: --parts: applies only with --to lsdyna or openradioss" "$drawbend" export model/fm.toml --to abaqus --parts 1,2 --out e1.inp
 expect export "--id with --to abaqus" 2 "input error: --id: applies only with --to lsdyna or openradioss" "$drawbend" export model/fm.toml --to abaqus --id 7 --out e2.inp
+# A ragged nodes file: its rows named without the model's friction.nodes line; each direction said to be a
+# copy of the other: exported with exit 0 as "TD copied from RD".
+printf 'node,mu_RD,mu_TD\n1,0.1,0.1\n2,0.1\n' >model/ragged.csv
+printf '[friction]\nlaw = "surface"\nnodes = "ragged.csv"\n' >model/ragged.toml
+expect export "ragged nodes file" 2 "input error: model/ragged.toml:3: friction.nodes: .*model/ragged.csv:3: expected 3 cells" "$drawbend" export model/ragged.toml --to lsdyna --out e6.k
+printf '[friction]\nlaw = "surface"\nnodes = "nodes.csv"\n[model]\ntd_copied_from_rd = true\nrd_copied_from_td = true\n' >model/copies.toml
+expect export "each direction a copy of the other" 2 "input error: model/copies.toml:6: model.rd_copied_from_td: td_copied_from_rd and rd_copied_from_td are both true" "$drawbend" export model/copies.toml --to abaqus --out e7.inp
 expect export "--direction with Abaqus/Standard" 2 "input error: --direction: applies only with --to lsdyna, openradioss or --abaqus explicit" "$drawbend" export model/fm.toml --to abaqus --direction td --out e3.inp
 expect export "--direction with Abaqus/Explicit (valid)" 0 "wrote e4.inp" "$drawbend" export model/fm.toml --to abaqus --abaqus explicit --direction td --out e4.inp
 expect export "--parts, --id, --direction with LS-DYNA (valid)" 0 "wrote e5.k" "$drawbend" export model/fm.toml --to lsdyna --parts 1,2 --id 3 --direction td --out e5.k
