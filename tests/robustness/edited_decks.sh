@@ -58,6 +58,13 @@ expect export "--parts, --id, --direction with LS-DYNA (valid)" 0 "wrote e5.k" "
 printf '[material]\nyld2004 = 5\n' >yld_number.toml
 expect calibrate "--compare: yld2004 a number" 2 "yld_number.toml:2: material.yld2004: expected a table \\{ a, c1 = \\[9 numbers\\], c2 = \\[9 numbers\\] \\}, found a number" \
   "$drawbend" calibrate "$root/data/materials/aa6016_t4_esaform2021.csv" --out c1 --compare yld_number.toml
+# An --out file name that ends in '/': the folder was made (with block-deck's tables copied into it),
+# then "cannot replace the file (Not a directory)" or "it is a folder".
+expect export "--out ending in /" 2 "input error: --out 'ex_dir/': expected a file name, found a folder's" "$drawbend" export model/fm.toml --to lsdyna --out ex_dir/
+expect block-deck "--out ending in /" 2 "input error: --out 'bd_dir/': expected a file name, found a folder's" "$drawbend" block-deck --out bd_dir/
+for d in ex_dir bd_dir; do
+  if [ -n "$check" ] && [ -e "$d" ]; then echo "FAILED: --out $d/ left the folder $d behind"; failed=1; fi
+done
 # plan: a run's summary.csv with wall_time twice (the last was taken without a word), or a
 # folder named summary.csv (skipped without a word).
 deck=$here/decks/restart_block.toml
