@@ -25,6 +25,7 @@ echo "|---|---|---|---|"
 for cmd in run drawbend-deck block-deck strip-deck cup-deck loop model-loop synth export calibrate plan help version; do
   expect "$cmd" "--help" 0 "[Uu]sage" "$drawbend" $cmd --help
 done
+expect help "help version" 0 "^Usage: drawbend version" "$drawbend" help version  # printed the version before
 # An unknown option first names the option (loop said "missing DATA.csv", export and calibrate
 # printed their usage line).
 for cmd in run drawbend-deck block-deck strip-deck cup-deck loop model-loop synth export calibrate plan; do
