@@ -53,7 +53,12 @@ int calibrate_command(int argc, char** argv) {
     std::cout << opt.usage();
     return 0;
   }
-  if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
+  if (argc >= 2 && std::string(argv[1]).rfind("-", 0) == 0) {  // as `run`: the option is named
+    std::cerr << "input error: drawbend calibrate: expected TESTS.csv first, found the option '"
+              << clip_for_message(argv[1]) << "' (drawbend calibrate TESTS.csv --out DIR; --help lists the options)\n";
+    return 2;
+  }
+  if (argc < 2) {
     std::cerr << "usage: drawbend calibrate TESTS.csv --out DIR [--a 8] [--w-stress 1] [--w-r 1] [--w-biaxial 1] "
                  "[--w-plane-strain 1] [--compare PUBLISHED.toml] (drawbend calibrate --help: options and examples)\n";
     return 2;

@@ -82,10 +82,23 @@ int cup_deck_command(int argc, char** argv) {
                                   {"tool", "--material or --cycles"}};
   if (opt.given("base"))  // the user's base deck sets every key the options leave
     for (auto& k : keys) k.options += " (or the --base deck's " + k.key + ")";
+  // A --base deck the builder or the deck it writes refuses: when the base deck is itself refused
+  // by the deck reader, its own file:line: key is said (before 2026-12-05 a hand-edited base deck's
+  // bad value was named only as "--material or --cycles (or the --base deck's tool)").
+  const auto base_problem = [&]() -> std::string {
+    if (!opt.given("base")) return {};
+    try {
+      (void)io::read_deck(s.deck);
+    } catch (const std::exception& e) {
+      return std::string("--base: ") + e.what();
+    }
+    return {};
+  };
   std::string text;
   try {
     text = sim::cup_deck_text(s);
   } catch (const InputError& e) {
+    if (const std::string b = base_problem(); !b.empty()) throw InputError(b);
     std::string what = user_words(e.what(), s.deck, "cup-deck", keys);
     // The tool radii the builder checks against the base deck's punch wall and die hole.
     if (const std::size_t at = what.find(s.deck + ": punch radius "); at == 0 && punch_radius > 0)
@@ -94,7 +107,13 @@ int cup_deck_command(int argc, char** argv) {
       what = "--die-radius: " + what.substr(s.deck.size() + 2);
     throw InputError(what);
   }
-  std::cout << checked_deck(text, "cup-deck", keys);
+  try {
+    checked_deck(text, "cup-deck", keys);
+  } catch (const InputError&) {
+    if (const std::string b = base_problem(); !b.empty()) throw InputError(b);
+    throw;
+  }
+  std::cout << text;
   return 0;
 }
 

@@ -78,6 +78,8 @@ inline int write_deck_out(const std::string& text, const std::string& out, const
     std::cout << text;
     return 0;
   }
+  // "dir/" names a folder: refused before the folder is made and the tables copied into it.
+  if (out.back() == '/') throw InputError("--out '" + out + "': expected a file name, found a folder's (it ends in '/')");
   const std::filesystem::path p(out);
   if (p.has_parent_path()) ensure_writable_dir(p.parent_path().string(), "--out");
   // The tables the deck reads are copied beside it and named by file name (io/portable_paths.hpp).

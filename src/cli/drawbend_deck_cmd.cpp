@@ -154,7 +154,13 @@ int drawbend_deck_command(int argc, char** argv) {
   const double to_half = full ? 0.5 : 1.0;  // given forces -> half model
   const std::string tag = full ? "full strip" : "half model";
   s.back_tension = back_tension * to_half;
-  check_back_tension(s, material, back_tension, tag);
+  try {
+    check_back_tension(s, material, back_tension, tag);  // reads the flow curve
+  } catch (const InputError& e) {  // the curve file's own problem, named with its option (the file alone before 2026-12-05)
+    const std::string what = e.what();
+    if (!s.hardening.empty() && what.rfind(s.hardening, 0) == 0) throw InputError("--hardening: " + what);
+    throw;
+  }
   if (run_dir.empty()) {
     io::CaseSpec deck = sim::drawbend_case(s);
     io::set_threads(deck, threads);  // the deck's numerics.threads (a run's deck keeps none)

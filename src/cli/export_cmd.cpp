@@ -40,7 +40,12 @@ int export_main(int argc, char** argv) {
     std::cout << opt.usage();
     return 0;
   }
-  if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
+  if (argc >= 2 && std::string(argv[1]).rfind("-", 0) == 0) {  // as `run`: the option is named
+    std::cerr << "input error: drawbend export: expected FRICTION_MODEL.toml first, found the option '"
+              << clip_for_message(argv[1]) << "' (drawbend export MODEL.toml --to lsdyna; --help lists the options)\n";
+    return 2;
+  }
+  if (argc < 2) {
     std::cerr << "usage: drawbend export friction_model.toml --to lsdyna|openradioss|abaqus [--out FILE] [--threads N]"
                  " (drawbend export --help: options and examples)\n";
     return 2;
@@ -53,6 +58,11 @@ int export_main(int argc, char** argv) {
     // The options of one format given for another: refused, not ignored.
     opt.only_when(to == "openradioss", {"rd-vector", "speed-band", "max-rel-error"}, "with --to openradioss");
     opt.only_when(to == "abaqus", {"abaqus"}, "with --to abaqus");
+    // Abaqus's *FRICTION has no part or contact IDs, and Abaqus/Standard's anisotropic table
+    // always holds both directions: these options were ignored with exit 0 (before 2026-12-05).
+    opt.only_when(to != "abaqus", {"parts", "id"}, "with --to lsdyna or openradioss (Abaqus's *FRICTION has no IDs)");
+    opt.only_when(to != "abaqus" || eo.abaqus_product == "explicit", {"direction"},
+                  "with --to lsdyna, openradioss or --abaqus explicit (Abaqus/Standard writes both directions)");
     loop::set_list_options(eo, parts, rd_vector, band);
     eo.contact_id = eo.friction_id;
     eo.validate(to == "lsdyna" || to == "openradioss" || to == "abaqus" ? to : "lsdyna");

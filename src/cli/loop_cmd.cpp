@@ -229,8 +229,13 @@ int loop_main(int argc, char** argv) {
     opt.parse(2, const_cast<char**>(argv_help));
     return 0;
   }
-  if (data_path.empty() || data_path.rfind("--", 0) == 0) {
-    std::cerr << "drawbend loop: missing DATA.csv (drawbend loop --help lists the options)\n";
+  if (data_path.rfind("--", 0) == 0) {  // as `run`: the option that stands where DATA.csv belongs is named
+    std::cerr << "input error: drawbend loop: expected DATA.csv first, found the option '" << clip_for_message(data_path)
+              << "' (drawbend loop DATA.csv --out DIR; --help lists the options)\n";
+    return 2;
+  }
+  if (data_path.empty()) {
+    std::cerr << "input error: drawbend loop: missing DATA.csv (drawbend loop --help lists the options)\n";
     return 2;
   }
   return with_exit_codes([&] {
@@ -312,6 +317,8 @@ void check_synth_options(const Options& opt, const SynthArgs& a) {
   opt.only_when(held_out, {"class"}, "with --generator blind or wild");
   opt.only_when(!held_out, {"effect", "amplitude", "tests-per-pin", "rows-per-test", "maps"},
                 "with --generator library (blind and wild read --class, --noise and --seed only)");
+  // --effect none has no hidden law: an amplitude was written into truth.json beside it (exit 0, before 2026-12-05).
+  opt.only_when(so.effect != "none", {"amplitude"}, "with an --effect other than none (none has no hidden law)");
   // Sizes and noise a draw-bend data set can have (before 2026-11-29,
   // --rows-per-test -5 ended in "cannot create std::vector larger than
   // max_size()" with exit 3, 1e8 ran for minutes, and --noise -1 wrote data).

@@ -29,6 +29,14 @@ int main(int argc, char** argv) {
   const std::string first = argc >= 2 ? argv[1] : "";
   const bool bare = first == "version" || first == "--version" || first == "--help" || first == "-h" ||
                     (first == "help" && argc >= 3 && (std::string(argv[2]) == "help" || std::string(argv[2]) == "version"));
+  // `drawbend version --help` (and `help version`) as every command's --help: its usage, exit 0 (exit 2
+  // before 2026-12-05; `help version` printed the version).
+  if ((first == "version" && argc == 3 && (std::string(argv[2]) == "--help" || std::string(argv[2]) == "-h")) ||
+      (first == "help" && argc == 3 && std::string(argv[2]) == "version")) {
+    std::cout << "Usage: drawbend version\nPrint the version and the commit it was built from (also drawbend --version); "
+                 "takes no options.\n";
+    return 0;
+  }
   if (bare && argc > (first == "help" ? 3 : 2)) {
     std::cerr << "input error: drawbend " << first << (first == "help" ? std::string(" ") + argv[2] : "")
               << ": unexpected argument '" << argv[first == "help" ? 3 : 2] << "' (it takes none; see drawbend --help)\n";

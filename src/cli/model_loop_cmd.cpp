@@ -117,6 +117,9 @@ std::vector<modelloop::ModelCandidate> checked_candidates(Args& a) {
   name_input(s.hardening, "--hardening");  // the file gate names the option (core/file_gate.hpp)
   try {
     (void)read_input(s.hardening);  // a regular file of a stated size, never a FIFO or device
+    // Absolute, as drawbend-deck's: the FE decks live in OUT/runs/*/, where a relative path was
+    // resolved against the deck's folder and every run stopped with exit 2 (before 2026-12-05).
+    s.hardening = std::filesystem::absolute(s.hardening).lexically_normal().string();
   } catch (const InputError& e) {
     p.need(false, e.what());
   }

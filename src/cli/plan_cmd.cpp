@@ -42,12 +42,25 @@ struct Row {
 /// (which counts the waits of a machine shared with other work).
 double measured_cpu(const fs::path& dir) {
   std::error_code ec;
-  if (!fs::is_regular_file(dir / "summary.csv", ec)) return NAN;
+  if (!fs::is_regular_file(dir / "summary.csv", ec)) {
+    if (fs::exists(dir / "summary.csv", ec))  // a folder or a device where a run writes its summary: said, as a bad file
+      std::cerr << "warning: " << (dir / "summary.csv").string()
+                << ": expected a run's summary file, found no regular file; that run's measurement is left out\n";
+    return NAN;
+  }
   double wall = NAN;
   try {
     const CsvTable t = read_csv((dir / "summary.csv").string());
+    const CsvRow* first = nullptr;
     for (const auto& row : t.rows)
-      if (t.text(row, "quantity") == "wall_time") wall = t.number(row, "value");
+      if (t.text(row, "quantity") == "wall_time") {
+        // Two wall times (an edited or concatenated file): the last one was taken without a word.
+        if (first)
+          throw InputError(t.where(row, "quantity") + ": wall_time given twice (also on line " +
+                           std::to_string(first->line) + ")");
+        first = &row;
+        wall = t.number(row, "value");
+      }
   } catch (const std::exception& e) {  // said, as a wall time out of range is (silent before 2026-12-04)
     std::cerr << "warning: " << e.what() << "; that run's measurement is left out\n";
     return NAN;

@@ -1,6 +1,8 @@
 #include "contact/surface.hpp"
 
 #include <cmath>
+#include <sstream>
+#include <tuple>
 #include <stdexcept>
 
 namespace drawbend::contact {
@@ -16,7 +18,14 @@ void Surface::validate(const std::string& where) const {
   if (kind == Kind::cylinder && !(R > 0)) throw std::invalid_argument(where + ": cylinder radius must be > 0 mm");
   if (kind == Kind::torus && (!(r > 0) || !(R >= 0)))
     throw std::invalid_argument(where + ": torus radii must satisfy r > 0 and R >= 0 mm");
-  if (!(r_max > r_min) || !(z_max > z_min) || !(a_max > a_min)) throw std::invalid_argument(where + ": empty bounds");
+  // Which bounds are empty, with their values (said only "empty bounds" before 2026-12-05).
+  for (const auto& [lo, hi, name] : {std::tuple{r_min, r_max, "r"}, std::tuple{z_min, z_max, "z"}, std::tuple{a_min, a_max, "angle"}})
+    if (!(hi > lo)) {
+      std::ostringstream m;
+      m << where << ": empty bounds: expected " << name << "_min < " << name << "_max, found " << name << "_min = " << lo
+        << " and " << name << "_max = " << hi;
+      throw std::invalid_argument(m.str());
+    }
 }
 
 bool penetration(const Surface& s, const Vec3& offset, const Vec3& x, double search, double& depth, Vec3& n,

@@ -104,6 +104,9 @@ void write_output(const std::string& path, const std::string& text_in) {
   const std::string text = text_output(path) ? valid_utf8(text_in) : text_in;
   const std::string who = describe_path(path);
   if (path.empty()) throw InputError("expected an output file name, found an empty one");
+  // "dir/": a folder's name, not a file's (the folder was made, then "cannot replace the file (Not a
+  // directory)", before 2026-12-05).
+  if (path.back() == '/') throw InputError(who + ": expected a file name, found a folder's (it ends in '/')");
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
     throw InputError(who + ": cannot write the output there: it is " + kind_of(st.st_mode) +

@@ -121,6 +121,11 @@ bool Options::parse(int argc, char** argv) {
     if (std::find(seen.begin(), seen.end(), name) != seen.end())
       throw std::invalid_argument("option '--" + name + "' given twice (give each option once)");
     seen.push_back(name);
+    // A flag takes no value: --from-thesis=false set the flag (exit 0 with the opposite of what was asked,
+    // before 2026-12-05), so any value written after '=' is refused.
+    if (opt->flag && eq != std::string::npos)
+      throw std::invalid_argument("--" + name + ": a flag takes no value (write --" + name + " alone, or leave it out), found '" +
+                                  clip_for_message(value) + "'");
     if (!opt->flag && eq == std::string::npos) {
       if (i + 1 >= argc) throw std::invalid_argument("option '--" + name + "' needs a value");
       // "--out --quiet": the next word is an option, not this one's value

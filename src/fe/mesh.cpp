@@ -86,6 +86,27 @@ std::uint64_t mesh_fingerprint(const Mesh& m) {
   return h;
 }
 
+int nearest_element(const Mesh& m, double px, double py, double pz, double* dist, double* size) {
+  int best = -1;
+  double bd = INFINITY;
+  for (int e = 0; e < m.num_elements(); ++e) {
+    double c[3] = {0, 0, 0};
+    for (int a : m.hex[e]) c[0] += m.x[a] / 8, c[1] += m.y[a] / 8, c[2] += m.z[a] / 8;
+    const double d = (c[0] - px) * (c[0] - px) + (c[1] - py) * (c[1] - py) + (c[2] - pz) * (c[2] - pz);
+    if (d < bd) bd = d, best = e;
+  }
+  if (dist) *dist = best < 0 ? INFINITY : std::sqrt(bd);
+  if (size && best >= 0) {
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int a : m.hex[best]) {
+      const double q[3] = {m.x[a], m.y[a], m.z[a]};
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], q[k]), hi[k] = std::max(hi[k], q[k]);
+    }
+    *size = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  }
+  return best;
+}
+
 NodeCorners NodeCorners::build(const Mesh& m) {
   NodeCorners nc;
   nc.start.assign(m.num_nodes() + 1, 0);

@@ -35,6 +35,11 @@ struct Mesh {
 /// so that a state is never restored onto another numbering (fe/checkpoint.cpp).
 std::uint64_t mesh_fingerprint(const Mesh& m);
 
+/// The element whose reference centroid is nearest (px, py, pz) (lowest index on
+/// ties; -1 for a mesh without elements), and in `dist` that centroid's distance
+/// and in `size` the element's size (the diagonal of its nodes' bounding box) [mm].
+int nearest_element(const Mesh& m, double px, double py, double pz, double* dist = nullptr, double* size = nullptr);
+
 /// Node-to-element-corner adjacency in CSR form, sorted by (element, corner),
 /// so that nodal sums run in a fixed order whatever the thread count.
 struct NodeCorners {

@@ -236,6 +236,20 @@ void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out, co
                         kind == "strain" ? std::string() : c.str(ht, "target", "output.history"),
                         c.count_of(ht, "component", "output.history", 0, 0)};
       if (kind == "strain") sig.point = c.vec(ht, "point", "output.history");
+      // The point lies in the sheet: the strain is that of the element whose centre is nearest,
+      // so a point far outside the mesh (a typing or unit error) wrote some edge element's
+      // strain under its name with exit 0 (before 2026-12-05).
+      if (kind == "strain" && mesh_ok && ht.get("point") &&
+          std::isfinite(sig.point[0] + sig.point[1] + sig.point[2])) {
+        double dist = 0, size = 0;
+        const int e = fe::nearest_element(m.mesh, sig.point[0], sig.point[1], sig.point[2], &dist, &size);
+        if (e >= 0 && dist > size)
+          c.bad(*ht.get("point"), "output.history.point",
+                "expected a point in the sheet, found [" + fmt_shortest(sig.point[0]) + ", " +
+                    fmt_shortest(sig.point[1]) + ", " + fmt_shortest(sig.point[2]) + "], " + fmt(dist) +
+                    " mm from the centre of the nearest element (element " + std::to_string(e) + ", " + fmt(size) +
+                    " mm across)");
+      }
       sig.scale = c.num(ht, "scale", "output.history", 1.0);
       if (!(std::isfinite(sig.scale) && sig.scale != 0))
         c.bad(ht, "output.history.scale", "expected a finite nonzero factor, found " + fmt_shortest(sig.scale));
@@ -267,6 +281,35 @@ void read_output(const DeckContext& c, const toml::table& t, OutputSpec& out, co
         c.bad(*ht.get("name"), "output.history.name", "'" + sig.name + "' is a column every run writes; choose another name");
       out.history.push_back(sig);
     }
+}
+
+/// The reduction's step, tool and holder exist, said at their lines (before
+/// 2026-12-05 "output.reduce.step: no step named" without the deck's line, and an
+/// unknown holder passed `plan` and `cup-deck --base` and stopped `run`).
+void check_reduction_names(const DeckContext& c, const toml::table& root, const ReductionSpec& r,
+                           const fe::Model& m) {
+  const toml::table* rt = nullptr;
+  if (const auto* o = root.get_as<toml::table>("output")) rt = o->get_as<toml::table>("reduce");
+  if (!rt) return check_reduction(r, m);
+  const auto at = [&](const char* key) -> const toml::node& { return rt->get(key) ? *rt->get(key) : *rt; };
+  std::string steps, tools, contact_tools;
+  bool step = false, contact = false, holder = false;
+  for (const auto& s : m.steps) steps += (steps.empty() ? "" : ", ") + s.name, step = step || s.name == r.step;
+  for (const auto& t : m.tools) tools += (tools.empty() ? "" : ", ") + t.name, holder = holder || t.name == r.holder;
+  for (const auto& p : m.contacts) {
+    if (contact_tools.find("'" + p.tool + "'") == std::string::npos)
+      contact_tools += (contact_tools.empty() ? "'" : ", '") + p.tool + "'";
+    contact = contact || p.tool == r.tool;
+  }
+  if (!step) c.bad(at("step"), "output.reduce.step", "expected the name of a [[step]] (" + steps + "), found '" + r.step + "'");
+  if (!contact)
+    c.bad(at("tool"), "output.reduce.tool",
+          "expected a tool with a [[contact]] (" + (contact_tools.empty() ? "none here" : contact_tools) + "), found '" +
+              r.tool + "'");
+  if ((r.kind == "cup_draw" || rt->get("holder")) && !holder)
+    c.bad(at("holder"), "output.reduce.holder",
+          "expected the name of a [[tool]] (" + tools + "), found '" + r.holder + "'" +
+              (r.holder.empty() && !rt->get("holder") ? " (kind cup_draw reads the blank holder's force)" : ""));
 }
 
 }  // namespace
@@ -329,7 +372,7 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
   if (problems.empty())
     problems.attempt([&] { m.validate(); });
   if (problems.empty() && !d.output.reduce.kind.empty())  // its tool and step exist
-    problems.attempt([&] { check_reduction(d.output.reduce, m); });
+    problems.attempt([&] { check_reduction_names(c, root, d.output.reduce, m); });
   if (problems.empty()) problems.attempt([&] { check_initial_overlap(c, root, m); });
   if (problems.empty()) {
     problems.attempt([&] { check_cost(c, root, d); });

@@ -226,8 +226,9 @@ fe::History DeckContext::history(const toml::table& t, const std::string& key, c
   if (count() > before) return fallback;
   try {
     out.validate((what + "." + key).c_str());
-  } catch (const std::invalid_argument& e) {
-    bad(*n, what + "." + key, e.what());
+  } catch (const std::invalid_argument& e) {  // its message starts with the key: said once
+    const std::string m = e.what(), w = what + "." + key + ": ";
+    bad(*n, what + "." + key, m.rfind(w, 0) == 0 ? m.substr(w.size()) : m);
     return fallback;
   }
   return out;

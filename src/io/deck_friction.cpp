@@ -71,7 +71,15 @@ std::shared_ptr<friction::FrictionLaw> make_friction(const DeckContext& c, const
     const std::string file = c.str(t, "table", w);
     if (c.count() > before) return nullptr;
     if (!readable_file(deck_relative(dir, file))) c.fail(*t.get("table"), w + ".table", missing_file(file, dir));
-    p = analysis::load_stribeck(deck_relative(dir, file));
+    // The table gives all six parameters: one given beside it was ignored (exit 0, before 2026-12-05).
+    for (const char* k : {"mu_BL", "mu_EHL", "L_BL", "L_EHL", "Ra_um", "eta_Pa_s"})
+      if (t.get(k)) c.bad(*t.get(k), w + "." + k, "not used with 'table' (the table gives every Stribeck parameter; give one or the other)");
+    if (c.count() > before) return nullptr;
+    try {
+      p = analysis::load_stribeck(deck_relative(dir, file));
+    } catch (const InputError& e) {  // the table's own file:line, with the deck line that named it
+      c.fail(*t.get("table"), w + ".table", e.what());
+    }
   } else {
     p.mu_BL = c.in_range(t, "mu_BL", w, NAN, 0.0, kMaxFrictionCoefficient);
     p.mu_EHL = c.in_range(t, "mu_EHL", w, NAN, 0.0, kMaxFrictionCoefficient);

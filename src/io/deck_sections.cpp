@@ -44,8 +44,9 @@ contact::Surface surface(const DeckContext& c, const toml::table& t, const std::
   }
   if (c.count() == before) try {
       s.validate(w);
-    } catch (const std::invalid_argument& e) {
-      c.bad(t, w, e.what());
+    } catch (const std::invalid_argument& e) {  // its message starts with w: said once
+      const std::string m = e.what();
+      c.bad(t, w, m.rfind(w + ": ", 0) == 0 ? m.substr(w.size() + 2) : m);
     }
   return s;
 }
@@ -175,6 +176,12 @@ void read_contacts(const DeckContext& c, const toml::table& root, fe::Model& m, 
       cp.faces = c.str(t, "faces", "contact");
       cp.tool = c.str(t, "tool", "contact");
       cp.penalty = c.positive(t, "penalty", "contact", 0.1);
+      // The builders' --penalty bound (kPenalty, cli/option_bounds.hpp): a scale of 1e300 ran and ended
+      // in exit 3, an element inverted at cycle 7, without the deck's line (before 2026-12-05).
+      if (constexpr double kMaxPenalty = 1e6; cp.penalty > kMaxPenalty && t.get("penalty"))
+        c.bad(*t.get("penalty"), "contact.penalty",
+              "expected a penalty scale in (0, " + fmt(kMaxPenalty) + "] (0.1 by default; k = penalty x K x A / L), found " +
+                  fmt_shortest(cp.penalty));
       cp.damping = c.in_range(t, "damping", "contact", 0.2, 0.0, 1.0);
       if (const auto* ax = t.get("texture_axis")) {
         const Vec3 rd = c.vec(t, "texture_axis", "contact", Vec3{1, 0, 0}, true);

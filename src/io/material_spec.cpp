@@ -394,6 +394,9 @@ std::shared_ptr<const material::Material> make_material(const DeckContext& c, co
     }
   } catch (const std::invalid_argument& e) {
     c.fail(t, "material", e.what());
+  } catch (const InputError& e) {  // the curve file's own problem (file:line), with the deck line that named it
+    if (!t.get("hardening")) throw;  // (before 2026-12-05 "curve.csv: missing required column" without the deck)
+    c.fail(*t.get("hardening"), "material.hardening", e.what());
   }
 }
 
@@ -430,8 +433,16 @@ material::Yld2004 load_yld2004_toml(const std::string& path) {
   // yield-function set alone (yld2004 = {...} at the top: no elasticity or flow curve, so no material).
   const bool in_material = root["material"]["yld2004"].as_table() != nullptr;
   const auto* y = in_material ? root["material"]["yld2004"].as_table() : root["yld2004"].as_table();
-  if (!y)
+  if (!y) {  // a yld2004 key of another type is named at its line (the file alone before 2026-12-05)
+    const toml::node* n = root["material"]["yld2004"].node();
+    const bool nested = n != nullptr;
+    if (!n) n = root["yld2004"].node();
+    if (n)
+      throw InputError(path + ":" + std::to_string(n->source().begin.line) + (nested ? ": material.yld2004" : ": yld2004") +
+                       ": expected a table { a, c1 = [9 numbers], c2 = [9 numbers] }, found " +
+                       (n->is_array() ? "an array" : n->is_string() ? "a string" : "a " + std::string(n->is_boolean() ? "boolean" : "number")));
     throw InputError(path + ": expected yld2004 = { a, c1 = [9 numbers], c2 = [9 numbers] }, at the top or in [material]");
+  }
   const std::string at = path + ":" + std::to_string(y->source().begin.line) + (in_material ? ": material.yld2004" : ": yld2004");
   material::Yld2004 out;
   out.a = (*y)["a"].value_or(std::numeric_limits<double>::quiet_NaN());  // a double default: NAN is a float

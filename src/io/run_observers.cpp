@@ -16,19 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The element whose reference centroid is nearest p (lowest index on ties).
-int nearest_element(const fe::Mesh& m, const fe::Vec3& p) {
-  int best = 0;
-  double bd = INFINITY;
-  for (int e = 0; e < m.num_elements(); ++e) {
-    double c[3] = {0, 0, 0};
-    for (int a : m.hex[e]) c[0] += m.x[a] / 8, c[1] += m.y[a] / 8, c[2] += m.z[a] / 8;
-    const double d = (c[0] - p[0]) * (c[0] - p[0]) + (c[1] - p[1]) * (c[1] - p[1]) + (c[2] - p[2]) * (c[2] - p[2]);
-    if (d < bd) bd = d, best = e;
-  }
-  return best;
-}
-
 /// Log strain along the element's reference x edges: ln of the mean current
 /// length of its four x-edges (node pairs 0-1, 3-2, 4-5, 7-6) over the reference.
 double edge_strain(const fe::Solver& s, int e) {
@@ -90,7 +77,7 @@ void follow_step(Run& run, const fe::Progress& p) {
 
 History::History(Run& run) : run_(run), table_(history_header(run.deck)) {
   for (const auto& h : run.deck.output.history)
-    elements_.push_back(h.kind == "strain" ? nearest_element(run.deck.model.mesh, h.point) : -1);
+    elements_.push_back(h.kind == "strain" ? std::max(0, fe::nearest_element(run.deck.model.mesh, h.point[0], h.point[1], h.point[2])) : -1);
   table_.comment("time histories of " + run.deck.path + " (energies in mJ = N mm)");
   for (const auto& note : history_notes(run.deck)) table_.comment(note);  // basis and signs (io/run_result.hpp)
   for (const auto& row : run.rs.history_rows) table_.row(row);  // a restart's rows so far

@@ -308,6 +308,10 @@ ExportModel read_friction_model(const std::string& path) {
     m.lubricant = c.str(*mt, "lubricant", "model", std::string());
     m.td_copied = c.boolean(*mt, "td_copied_from_rd", "model", false);
     m.rd_copied = c.boolean(*mt, "rd_copied_from_td", "model", false);
+    // Each direction a copy of the other: no direction measured (exported as "TD copied from RD", exit 0, before 2026-12-05).
+    if (m.td_copied && m.rd_copied)
+      c.bad(*mt->get("rd_copied_from_td"), "model.rd_copied_from_td",
+            "td_copied_from_rd and rd_copied_from_td are both true: one direction must be measured");
   }
   problems.throw_if_any();
   if (nodes.empty()) c.fail(*f->get("nodes"), w + ".nodes", "expected the name of the nodes CSV, found an empty string");
@@ -319,6 +323,8 @@ ExportModel read_friction_model(const std::string& path) {
     m.rd.validate();
     m.td.validate();
   } catch (const std::invalid_argument& e) {
+    throw InputError(key + ": " + e.what());
+  } catch (const InputError& e) {  // the CSV's own problems (ragged rows, a header), with the model's line that names it
     throw InputError(key + ": " + e.what());
   }
   // Legal but suspicious: a lubricated sheet slides at mu ~ 0.02 to 0.3, dry
