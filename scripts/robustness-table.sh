@@ -4,7 +4,7 @@
 # binaries side by side (before and after a change), written as Markdown.
 #   [BEFORE_LABEL=...] [AFTER_LABEL=...] scripts/robustness-table.sh BEFORE_DRAWBEND AFTER_DRAWBEND OUT.md [WORK_DIR]
 # (the labels name the two binaries in the page, e.g. their commits).
-# It runs the four matrices of tests/robustness (without --check, so every
+# It runs the five matrices of tests/robustness (without --check, so every
 # case is run and shown, also the values a command accepts):
 #   entry_matrix.sh   every path a command reads: missing file, folder, device, FIFO;
 #                     every file it writes pointed at a FIFO or a folder
@@ -13,6 +13,8 @@
 #                     values, CRLF, duplicated keys, absurd table values, options
 #                     that do nothing in the mode chosen, unwritable folders, ...
 #   option_lists.sh   every list-valued option: empty items, spaces, an item twice, NaN
+#   edited_decks.sh   a builder's deck with one key edited by hand; the commands swept
+#                     least (calibrate, plan, export, synth, model-loop, cup-deck --base)
 # and joins each matrix's rows of the two binaries by (entry point, input).
 # A case only one binary's matrix has shows "-" for the other.  Takes about
 # 5 minutes on 2 cores (the accepted values of option_matrix run for real, up
@@ -27,7 +29,7 @@ before=$(realpath "$1") after=$(realpath "$2") out=$3 work=${4:-$(mktemp -d)}
 here=$(cd "$(dirname "$0")/../tests/robustness" && pwd)
 export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=PASSIVE
 mkdir -p "$work"
-for m in entry_matrix option_matrix hostile_matrix option_lists; do
+for m in entry_matrix option_matrix hostile_matrix option_lists edited_decks; do
   for side in before after; do
     bin=$before
     [ $side = after ] && bin=$after
@@ -65,6 +67,7 @@ titles = {
     "option_matrix": "Numbers: every numeric option of every command, given 0, -1, nan, 1e300 and a word",
     "hostile_matrix": "Other classes: a careless user and a hostile script",
     "option_lists": "Lists: every list-valued option, given empty items, spaces, an item twice, NaN and hexadecimal",
+    "edited_decks": "Edited decks and the least-swept commands: a builder's deck with one key changed by hand, calibrate, plan, export, synth, model-loop, cup-deck --base, --help and an unknown option first",
 }
 md = ["# Robustness: entry point x bad input, before and after", "",
       "Written by `scripts/robustness-table.sh` (do not edit by hand). Each row is one run of `drawbend` "
@@ -72,7 +75,7 @@ md = ["# Robustness: entry point x bad input, before and after", "",
       "time limit, 134/136/139 a crash. The message is the first line starting with `input error`, `error`, "
       "`numerical fault`, `data problem` or `warning` (else the first line); WORK is the scratch folder. "
       "`make test` holds the same cases with their expected answers: `robustness.entry_points_bad_paths`, "
-      "`robustness.numeric_options`, `robustness.hostile_inputs` and `robustness.option_lists` (the CSV dialects: "
+      "`robustness.numeric_options`, `robustness.hostile_inputs`, `robustness.option_lists` and `robustness.edited_decks` (the CSV dialects: "
       "`robustness.csv_dialects_and_encoding`). Values a command accepts on purpose "
       "(`tests/robustness/option_valid.txt`, e.g. `--threads 0`) are marked *valid*; they start real "
       "work, so 124 there is the table's 20 s limit, not a hang. Rows in bold changed their exit code. "
@@ -83,7 +86,7 @@ md = ["# Robustness: entry point x bad input, before and after", "",
       "| matrix | cases | before: exit 2 or 3 | before: exit 0 | before: other | after: exit 2 or 3 | after: exit 0 | after: other |",
       "|---|---|---|---|---|---|---|---|"]
 sections = []
-for m in ("entry_matrix", "option_matrix", "hostile_matrix", "option_lists"):
+for m in ("entry_matrix", "option_matrix", "hostile_matrix", "option_lists", "edited_decks"):
     b = {k: (e, f) for k, e, f in rows(m, "before")}
     a = rows(m, "after")
     body, count = [], {"before": collections.Counter(), "after": collections.Counter()}
