@@ -99,8 +99,12 @@ struct Run {
   CsvTable history;
 };
 
-/// The narrow strip's deck: pin [mm], F_X on the full 1 mm strip [N], element length along [mm].
-Run make_run(const std::string& name, bool plane_strain, double pin = 42.0, double fx_full = 74.8, double el = 1.0) {
+/// The narrow strip's deck: pin [mm], F_X on the full 1 mm strip [N], element length along [mm]; probes:
+/// the inlet leg's strain probes (kProbes, read by inlet_leg_elastic on the 42 mm pin only: on the
+/// 12.7 mm pin's shorter mesh the point at -50 mm lies 16.5 mm outside the sheet, which the deck reader
+/// refuses since 2026-12-05; before, it read the nearest edge element's strain under the probe's name).
+Run make_run(const std::string& name, bool plane_strain, double pin = 42.0, double fx_full = 74.8, double el = 1.0,
+             bool probes = true) {
   {
     Run r;
     sim::DrawBendSpec& s = r.spec;
@@ -122,6 +126,7 @@ Run make_run(const std::string& name, bool plane_strain, double pin = 42.0, doub
     toml::array* history = c.output["history"].as_array();
     BOOST_REQUIRE(history);
     for (double x : kProbes) {
+      if (!probes) break;
       toml::table probe{{"name", probe_name(x)}, {"kind", "strain"},
                         {"point", toml::array{x, 0.25, s.pin_diameter / 2 + 0.625 * s.thickness}}, {"component", 1}};
       probe.is_inline(true);
@@ -154,8 +159,8 @@ const Run& plane_strain_run() {
 
 /// Case 4's runs: the 12.7 mm pin, plane strain, 0.5 mm along, at 59.06 N and 20 N.
 const Run& small_pin_run(bool high) {
-  static const Run hi = make_run("thinning_12p7_59", true, 12.7, 59.06, 0.5);
-  static const Run lo = make_run("thinning_12p7_20", true, 12.7, 20.0, 0.5);
+  static const Run hi = make_run("thinning_12p7_59", true, 12.7, 59.06, 0.5, false);
+  static const Run lo = make_run("thinning_12p7_20", true, 12.7, 20.0, 0.5, false);
   return high ? hi : lo;
 }
 
