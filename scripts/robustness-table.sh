@@ -105,9 +105,9 @@ for m in ("entry_matrix", "option_matrix", "hostile_matrix", "option_lists", "ed
     sections += [f"## {titles[m]}", "",
                  "| entry point | input | exit before | first line before | exit after | first line after |",
                  "|---|---|---|---|---|---|"] + body + [""]
-md += ["", "Exit 0 among bad inputs after: the hostile and list matrices' valid cases (CRLF files, a warning "
-       "that lets the run finish, `help help`, a valid list), which expect exit 0; every other bad input ends "
-       "with exit 2.", ""]
+md += ["", "Exit 0 among bad inputs after: the hostile, list and edited-deck matrices' valid cases (CRLF files, a "
+       "warning that lets the run finish, `help help`, a valid list, `--help` of every command, `plan` warning "
+       "of a summary.csv it leaves out), which expect exit 0; every other bad input ends with exit 2.", ""]
 open(out, "w", encoding="utf-8").write("\n".join(md + sections))
 print(f"wrote {out}")
 PY
