@@ -45,6 +45,12 @@ struct Effect {
   /// the effect to that one group of `by` (one cell: a pin, speed, direction or
   /// lubricant), with one group's parameters; -1: every group its own.
   int cell = -1;
+  /// One-cell forms (cell >= 0): the cell's own factor as well, mu (1 + c0 +
+  /// ...) on its rows, when the cell is not a union of the model's cells (a
+  /// pin, or a group of an input that is not a cell level): there no mu of the
+  /// base model carries the cell's mean, and without it the form would assume
+  /// the effect zero at the column's first level (levels) or at its mean.
+  bool cell_offset = false;
   int n_basis = 0;       ///< generic_smooth: spline basis functions (dof of the shape, constant excluded)
   /// force_offset: the term times the row's pin's bending force relative to
   /// the pins' mean (Fit::bend_scale): a change of the bending force itself
