@@ -45,6 +45,15 @@ struct Effect {
   /// the effect to that one group of `by` (one cell: a pin, speed, direction or
   /// lubricant), with one group's parameters; -1: every group its own.
   int cell = -1;
+  /// One-cell forms (cell >= 0): the cell's own factor as well, mu (1 + c0 +
+  /// ...) on its rows, when the cell is not a union of the model's cells (a
+  /// pin, or a group of an input that is not a cell level): there no mu of the
+  /// base model carries the cell's mean, and without it the levels form would
+  /// assume the effect zero at the column's first level in the file (its fit
+  /// would depend on the file's row order).  forms.cpp sets it for the
+  /// one-cell levels form only; the slope and smooth rules read it too, but a
+  /// slope or smooth is zero at the column's mean whatever the order.
+  bool cell_offset = false;
   int n_basis = 0;       ///< generic_smooth: spline basis functions (dof of the shape, constant excluded)
   /// force_offset: the term times the row's pin's bending force relative to
   /// the pins' mean (Fit::bend_scale): a change of the bending force itself

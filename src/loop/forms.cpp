@@ -78,11 +78,28 @@ std::string fits_key(const ModelSpec& s) {
     const bool own_column = generic_kind(e.kind);
     const EffectKind kind = e.kind == EffectKind::drift ? EffectKind::generic_linear : e.kind;
     char num[96];
-    std::snprintf(num, sizeof num, "|%d,%a,%d,%d,%d,%d,%d,", static_cast<int>(kind), e.lambda_mm, e.n_levels,
-                  e.n_groups, e.cell, e.n_basis, e.bend_scaled ? 1 : 0);
+    std::snprintf(num, sizeof num, "|%d,%a,%d,%d,%d,%d,%d,%d,", static_cast<int>(kind), e.lambda_mm, e.n_levels,
+                  e.n_groups, e.cell, e.n_basis, e.bend_scaled ? 1 : 0, e.cell_offset ? 1 : 0);
     k += num + std::to_string(e.by.size()) + ":" + e.by + "," + (own_column ? e.variable : "");
   }
   return k;
+}
+
+// Is group g of model input `by` a union of the model's cells (every cell's
+// fixed-pin rows all in it or none)?  Then each cell's mu carries the group's
+// mean, and a one-cell form needs no factor of its own.
+bool union_of_cells(const Design& d, const std::string& by, int g) {
+  int n = 0;
+  const std::vector<int> grp = d.groups(by, &n);
+  std::vector<int> state(d.cells.size(), -1);  // per cell: -1 no row yet, 0 outside, 1 inside
+  for (size_t i = 0; i < d.rows.size(); ++i) {
+    if (d.rows[i].rotating || d.rows[i].cell < 0) continue;
+    const int in = grp[i] == g ? 1 : 0;
+    int& s = state[static_cast<size_t>(d.rows[i].cell)];
+    if (s < 0) s = in;
+    else if (s != in) return false;
+  }
+  return true;
 }
 
 // A form to try: its effects (one, or several together).
@@ -93,6 +110,7 @@ struct Part {
   int cell = -1;  // >= 0: confined to that group of `by`
   bool scaled = false;  // force_offset: times the pin's relative bending force
   std::string var;      // the column of the effect ("": the candidate's own)
+  bool offset = false;  // one-cell forms: the cell's own factor too (Effect::cell_offset)
 };
 struct Plan {
   std::vector<Part> parts;
@@ -216,8 +234,13 @@ void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb) 
   for (double v : c.x)
     if (std::isfinite(v)) distinct.insert(v);
   const bool levels = c.categorical ? replicated(c.levels.size()) : some_levels(distinct);
+  // The cell's own factor when no mu of the base model carries the cell's mean.
+  const bool offset = !union_of_cells(d, cell_by, cell_group);
   if (levels && d.data->extra_index(c.name) >= 0 && applicable(d, spec, EffectKind::categorical_by, c.name))
-    plans.push_back({{{EffectKind::categorical_by, cell_by, 0, cell_group}}});
+    plans.push_back({{{EffectKind::categorical_by, cell_by, 0, cell_group, false, "", offset}}});
+  // A slope or smooth in the cell is zero at the column's mean, whatever the
+  // file's order: no factor of its own (h50-celloffset tried both and was
+  // 98 x slower on one development set: heldout_record.md).
   if (!c.categorical && applicable(d, spec, EffectKind::generic_linear_by, c.name))
     plans.push_back({{{EffectKind::generic_linear_by, cell_by, 0, cell_group}}});
   if (!c.categorical && applicable(d, spec, EffectKind::generic_smooth, c.name))
@@ -268,15 +291,17 @@ FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c
   FormTrial t;
   t.spec = spec;
   bool bend = false, fric = false;
-  for (const auto& [k, by, nb, cell, scaled, var] : p.parts) {
+  for (const auto& [k, by, nb, cell, scaled, var, offset] : p.parts) {
     // A pair's main effect (a column of its own) only when the model has none yet.
     if (!var.empty() && !applicable(d, t.spec, k, var)) continue;
     t.spec = with_effect(d, t.spec, k, var.empty() ? c.name : var, by);
     if (nb > 0) t.spec.effects.back().n_basis = nb;
     t.spec.effects.back().cell = cell;
     t.spec.effects.back().bend_scaled = scaled;
+    t.spec.effects.back().cell_offset = offset && cell >= 0;
     t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (var.empty() ? "" : " of " + var) + (nb > 0 ? " " + std::to_string(nb) + " dof" : "") +
-              (by.empty() ? "" : " (" + by + (cell >= 0 ? " group " + std::to_string(cell + 1) + " only" : "") + ")") +
+              (by.empty() ? "" : " (" + by + (cell >= 0 ? " group " + std::to_string(cell + 1) + " only" : "") +
+                                  (cell >= 0 && offset ? ", with its own factor" : "") + ")") +
               (scaled ? " (scaled with the pin's bending force)" : "");
     if (t.meaning.find(effect_meaning(k)) == std::string::npos)  // a pair's mains: the same meaning once
       t.meaning += (t.meaning.empty() ? "" : "; ") + effect_meaning(k);

@@ -86,7 +86,7 @@ ModelSpec without(const ModelSpec& spec, const Step& s, bool bending_linear) {
   t.effects.clear();
   for (const auto& e : spec.effects) {
     bool mine = false;
-    for (const auto& m : s.added) mine = mine || (m.kind == e.kind && m.variable == e.variable && m.by == e.by && m.cell == e.cell &&
+    for (const auto& m : s.added) mine = mine || (m.kind == e.kind && m.variable == e.variable && m.by == e.by && m.cell == e.cell && m.cell_offset == e.cell_offset &&
                             m.bend_scaled == e.bend_scaled);
     if (!mine) t.effects.push_back(e);
   }
