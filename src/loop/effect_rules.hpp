@@ -82,7 +82,7 @@ inline int group_slot(const EffectArgs& a) {
   const int g = a.f.group[a.k][a.i];
   return a.e.cell < 0 ? g : g == a.e.cell ? 0 : -1;
 }
-/// The one-cell forms' own factor (Effect::cell_offset): 1 parameter, after the others.
+/// The one-cell levels form's own factor (Effect::cell_offset): 1 parameter, after the levels.
 inline int cell_extra(const Effect& e) { return e.cell >= 0 && e.cell_offset ? 1 : 0; }
 inline std::string group_text(const Effect& e, int g) {
   return e.by + " group " + std::to_string((e.cell >= 0 ? e.cell : g) + 1) + (e.cell >= 0 ? " only" : "");
@@ -90,22 +90,17 @@ inline std::string group_text(const Effect& e, int g) {
 
 /// mu (1 + beta_g z): one slope per group g of the effect's `by` input (or in one group only).
 struct LinearBy {
-  static int count(const Design&, const Effect& e) { return own_groups(e) + cell_extra(e); }
+  static int count(const Design&, const Effect& e) { return own_groups(e); }
   static void apply(const EffectArgs& a, Terms& t) {
     const int g = group_slot(a);
     if (g >= 0) t.factor += a.th[g] * a.f.drift_z[a.k][a.i];
-    if (g >= 0 && cell_extra(a.e)) t.factor += a.th[1];
   }
   static int reads(const EffectArgs& a, int* o) {
     const int g = group_slot(a);
-    if (g < 0) return 0;
-    o[0] = g;
-    if (cell_extra(a.e)) o[1] = 1;
-    return 1 + cell_extra(a.e);
+    return g >= 0 ? (o[0] = g, 1) : 0;
   }
   static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
     for (int g = 0; g < own_groups(e); ++g) n[s + g] = "beta per SD of " + e.variable + " [" + group_text(e, g) + "]";
-    if (cell_extra(e)) n[s + 1] = "c0, the cell's own factor [" + group_text(e, 0) + "]";
   }
 };
 
@@ -136,22 +131,18 @@ struct CategoricalBy {
 
 /// mu (1 + sum_j beta_j B_j(x)): natural cubic spline basis (fit_model: f.basis), per group of `by` when set.
 struct Smooth {
-  static int count(const Design&, const Effect& e) {
-    return e.n_basis * (e.by.empty() ? 1 : own_groups(e)) + (e.by.empty() ? 0 : cell_extra(e));
-  }
+  static int count(const Design&, const Effect& e) { return e.n_basis * (e.by.empty() ? 1 : own_groups(e)); }
   static void apply(const EffectArgs& a, Terms& t) {
     const auto& B = a.f.basis[a.k];
     const int g = a.e.by.empty() ? 0 : group_slot(a);
     if (g < 0) return;
     const double* th = a.th + static_cast<size_t>(g) * a.e.n_basis;
     for (int j = 0; j < a.e.n_basis; ++j) t.factor += th[j] * B[static_cast<size_t>(j)][a.i];
-    if (!a.e.by.empty() && cell_extra(a.e)) t.factor += a.th[a.e.n_basis];
   }
   static int reads(const EffectArgs& a, int* o) {
     const int g = a.e.by.empty() ? 0 : group_slot(a);  // the rule's own slot (one-cell forms: 0, or none)
     if (g < 0) return 0;
     for (int j = 0; j < a.e.n_basis; ++j) o[j] = g * a.e.n_basis + j;
-    if (!a.e.by.empty() && cell_extra(a.e)) return o[a.e.n_basis] = a.e.n_basis, a.e.n_basis + 1;
     return a.e.n_basis;
   }
   static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
@@ -160,7 +151,6 @@ struct Smooth {
       for (int j = 0; j < e.n_basis; ++j)
         n[s + g * e.n_basis + j] = "beta spline " + std::to_string(j + 1) + " of " + e.variable +
                                    (e.by.empty() ? "" : " [" + group_text(e, g) + "]");
-    if (!e.by.empty() && cell_extra(e)) n[s + e.n_basis] = "c0, the cell's own factor [" + group_text(e, 0) + "]";
   }
 };
 

@@ -50,9 +50,9 @@ struct Effect {
   /// pin, or a group of an input that is not a cell level): there no mu of the
   /// base model carries the cell's mean, and without it the levels form would
   /// assume the effect zero at the column's first level in the file (its fit
-  /// would depend on the file's row order).  forms.cpp sets it for the
-  /// one-cell levels form only; the slope and smooth rules read it too, but a
-  /// slope or smooth is zero at the column's mean whatever the order.
+  /// would depend on the file's row order).  Read by the levels rule
+  /// (categorical_by) only: a slope or smooth in one cell is zero at the
+  /// column's mean whatever the order (forms.cpp in_cell).
   bool cell_offset = false;
   int n_basis = 0;       ///< generic_smooth: spline basis functions (dof of the shape, constant excluded)
   /// force_offset: the term times the row's pin's bending force relative to
