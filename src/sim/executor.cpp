@@ -67,6 +67,13 @@ std::string tail(const fs::path& p, int lines = 6) {
 
 bool complete(const std::string& dir) { return fs::exists(fs::path(dir) / "summary.csv"); }
 
+/// A failed job's summary.csv (if it wrote one) is removed: a rerun reads a
+/// case with a summary.csv as finished and would reuse it.
+void discard_summary(const std::string& dir) {
+  std::error_code ec;
+  fs::remove(fs::path(dir) / "summary.csv", ec);
+}
+
 /// The job's command line: the same run the local path makes (run.log is its
 /// standard output; stderr, the job's own log, goes to job.log).
 /// The deck is named by the same path the local path gives the solver (the
@@ -141,6 +148,7 @@ void run_slurm(const ExecutorConfig& e, const std::string& name, const std::stri
         << " --job-name=" << quote("drawbend-" + name) << " " << e.slurm_args << " sh -c "
         << quote(job_line(e, dir, n.cores, args));
     const auto [out, code] = shell(cmd.str());
+    if (code != 0) discard_summary(dir);
     if (code != 0 || !complete(dir))
       throw JobFailed("case " + name + ": srun job step ended with exit " + std::to_string(code) + " in " +
                       fs::absolute(dir).string() + ": " + trim(out) + tail(log));
@@ -153,11 +161,14 @@ void run_slurm(const ExecutorConfig& e, const std::string& name, const std::stri
                                         state == "TIMEOUT" || state == "OUT_OF_MEMORY");
     const std::string what = "case " + name + ": Slurm job " + id + " ended " + state + " without a complete run in " +
                              fs::absolute(dir).string();
+    // A job that did not end COMPLETED may still have written its summary.csv
+    // (cancelled or killed after the solver finished, before the job ended):
+    // it is not trusted, so that a later run does not read the case as done.
+    discard_summary(dir);
     if (!again) throw JobFailed(what + (attempt > 1 ? " (after one retry)" : "") + tail(log));
     if (state == "TIMEOUT") n.minutes *= 2;
     if (state == "OUT_OF_MEMORY") n.memory_mb *= 2;
     std::fprintf(stderr, "  executor: %s; retrying once\n", what.c_str());
-    fs::remove(fs::path(dir) / "summary.csv");
   }
 }
 
@@ -177,6 +188,7 @@ void run_command(const ExecutorConfig& e, const std::string& name, const std::st
   sub("{memory_mb}", std::to_string(static_cast<long>(std::ceil(n.memory_mb))));
   sub("{minutes}", std::to_string(minutes_of(n.minutes)));
   const auto [out, code] = shell(cmd);
+  if (code != 0) discard_summary(dir);
   if (code != 0 || !complete(dir))
     throw JobFailed("case " + name + ": the executor command ended with exit " + std::to_string(code) +
                     (code == 0 ? " but left no summary.csv" : "") + " in " + d + ": " + trim(out).substr(0, 2000));
@@ -250,7 +262,7 @@ void set_executor(const ExecutorConfig& e) {
 
 void run_deck_external(const ExecutorConfig& e, const std::string& name, const std::string& dir, const JobNeeds& n,
                        const std::string& run_args) {
-  fs::remove(fs::path(dir) / "summary.csv");
+  discard_summary(dir);
   if (e.kind == ExecutorKind::slurm) return run_slurm(e, name, dir, n, run_args);
   if (e.kind == ExecutorKind::command) return run_command(e, name, dir, n, run_args);
   throw std::logic_error("run_deck_external: the local executor runs in process");

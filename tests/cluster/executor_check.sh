@@ -4,9 +4,10 @@
 #     process (DRAWBEND_EXECUTOR=local);
 #  2. the same through a command template (a shell wrapper that runs the job);
 #  3. the same through a single-node Slurm started here (tests/cluster/local_slurm.sh);
-#  4. Slurm again, one job cancelled (scancel) while it runs: the driver must
-#     fail naming the case, the job id and CANCELLED, leave that case without a
-#     summary.csv, and a rerun must complete with the same results.
+#  4. Slurm again, one job cancelled (scancel) while it runs, after its solver
+#     wrote summary.csv: the driver must fail naming the case, the job id and
+#     CANCELLED, leave that case without a summary.csv, and a rerun must
+#     complete with the same results.
 # Every run's cases.csv, kinds.csv and cups.csv and every run folder's deck, reduction.csv, history, contact maps and
 # ParaView files must equal the local run's byte for byte (summary.csv too,
 # less its wall_time row; history.csv and summary.csv less their first line,
@@ -71,9 +72,18 @@ same_runs "$tmp/local" "$tmp/slurm"
 echo "slurm executor: byte-identical to local ($(( $(date +%s) - t0 )) s; $(ls "$tmp"/slurm/runs/*/slurm.log | wc -l) jobs)"
 
 # Cancel one job while it runs.  Jobs are submitted held, so that the test
-# decides when each starts: the first is released, cancelled once RUNNING,
-# then the others are released.
-DRAWBEND_EXECUTOR=slurm DRAWBEND_SLURM_ARGS=--hold "$cases" --out "$tmp/cancel" > "$tmp/cancel.log" 2>&1 &
+# decides when each starts.  The cancel run's jobs run drawbend through a
+# wrapper that, after the solver ends, waits while $tmp/hold exists (60 s at
+# most): the first job is released and cancelled after its solver has written
+# summary.csv but before the job has ended, the moment at which a cancelled job
+# could leave a summary.csv behind (CI, 2026-12-05, when the cancel came late
+# by chance).  Then the others are released, with the wrapper not waiting.
+printf '#!/bin/sh\n"%s" "$@"; rc=$?\ni=0; while [ -e "%s" ] && [ $i -lt 600 ]; do sleep 0.1; i=$((i + 1)); done\nexit $rc\n' \
+  "$drawbend" "$tmp/hold" > "$tmp/held_drawbend"
+chmod +x "$tmp/held_drawbend"
+touch "$tmp/hold"
+DRAWBEND_BIN="$tmp/held_drawbend" DRAWBEND_EXECUTOR=slurm DRAWBEND_SLURM_ARGS=--hold \
+  "$cases" --out "$tmp/cancel" > "$tmp/cancel.log" 2>&1 &
 pid=$!
 ids=""
 for i in $(seq 1 300); do
@@ -83,19 +93,28 @@ for i in $(seq 1 300); do
 done
 [ "$(echo $ids | wc -w)" -ge 3 ] || { kill $pid; fail "the held jobs never appeared: $ids"; }
 victim=$(echo $ids | cut -d' ' -f1)
+vname=$(squeue -h -j "$victim" -o %j)
+vcase=${vname#drawbend-}
 scontrol release "$victim"
-for i in $(seq 1 300); do
-  [ "$(squeue -h -j "$victim" -o %T)" = RUNNING ] && break
+for i in $(seq 1 600); do
+  [ -e "$tmp/cancel/runs/$vcase/summary.csv" ] && break
   sleep 0.1
 done
+[ -e "$tmp/cancel/runs/$vcase/summary.csv" ] || { kill $pid; fail "job $victim ($vcase) wrote no summary.csv in 60 s"; }
+[ "$(squeue -h -j "$victim" -o %T)" = RUNNING ] || { kill $pid; fail "job $victim ($vcase) was not running after its solver ended"; }
 scancel "$victim"
+for i in $(seq 1 300); do
+  [ -z "$(squeue -h -j "$victim" -o %T 2>/dev/null)" ] && break
+  sleep 0.1
+done
+rm -f "$tmp/hold"
 for id in $ids; do [ "$id" != "$victim" ] && scontrol release "$id"; done
 wait $pid; rc=$?
 [ $rc -ne 0 ] || { cat "$tmp/cancel.log"; fail "a cancelled job ended with exit 0"; }
 grep -q "Slurm job $victim ended CANCELLED" "$tmp/cancel.log" || { cat "$tmp/cancel.log"; fail "the cancelled job is not reported"; }
-vcase=$(grep -o "case case[0-9]: Slurm job $victim" "$tmp/cancel.log" | cut -d' ' -f2 | tr -d :)
+grep -q "case $vcase: Slurm job $victim" "$tmp/cancel.log" || { cat "$tmp/cancel.log"; fail "the cancelled job is not named with its case $vcase"; }
 [ ! -e "$tmp/cancel/runs/$vcase/summary.csv" ] || fail "the cancelled case left a summary.csv (a later run would reuse it)"
-echo "slurm: job $victim ($vcase) cancelled while running; reported: $(grep -m1 -o "case $vcase: Slurm job $victim ended CANCELLED" "$tmp/cancel.log"), exit $rc"
+echo "slurm: job $victim ($vcase) cancelled while running, after its solver wrote summary.csv; reported: $(grep -m1 -o "case $vcase: Slurm job $victim ended CANCELLED" "$tmp/cancel.log"), exit $rc"
 DRAWBEND_EXECUTOR=slurm "$cases" --out "$tmp/cancel" > "$tmp/rerun.log" 2>&1 || { cat "$tmp/rerun.log"; fail "the rerun after the cancel"; }
 same_runs "$tmp/local" "$tmp/cancel"
 echo "slurm: the rerun completed (the finished cases read back, $vcase run again), byte-identical to local"
