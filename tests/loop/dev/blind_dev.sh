@@ -9,7 +9,8 @@
 # 52000000..52999999, 53100000..53100143; wild 54200000..54200143 and
 # 55000000+; heldout_protocol_v4.md adds 57100000..57100143 and
 # 57200000..57200143); never on held-out seeds in 58000000..60999999 that no recorded run has
-# spent (the guard below; heldout_protocol_v7.md).
+# spent (the guard below; heldout_protocol_v7.md), nor in 62900000..62999999
+# (heldout_protocol_v11.md).
 # usage: blind_dev.sh BIN SEED0 N OUTDIR [PERM] [FIRST] [GEN]
 #   LOOP_ARGS (environment): extra loop options, e.g. "--cell-probes true"
 #   PERM: permutation cap, default 20000 as the loop (with 2000 no candidate
@@ -32,7 +33,7 @@ released() {  # is seed $1 spent by a recorded held-out run?
 }
 for ((i=FIRST;i<N;i++)); do
   s=$((S0+i))
-  if (( s >= 58000000 && s < 61000000 )) && ! released $s; then
+  if (( (s >= 58000000 && s < 61000000) || (s >= 62900000 && s < 63000000) )) && ! released $s; then
     echo "seed $s is held out (heldout_protocol_v7.md and the ranges no run has spent): not for development" >&2; exit 2; fi
 done
 classes=(level smooth interaction bending test-level null)
