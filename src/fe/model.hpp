@@ -95,6 +95,7 @@ struct Step {
   std::string name = "step";
   double duration = 1.0;        ///< [s]
   double damping = 0.0;         ///< dynamic relaxation: velocity damping rate [1/s] (0 = none)
+  std::string damping_where;    ///< "file:line: key" of damping in a deck, for messages (empty: set in code)
   bool friction = true;         ///< false: contact is frictionless during this step
   bool quasi_static = false;    ///< the kinetic-energy guard applies (fe/guards.hpp)
   std::vector<FixedBC> fixed;

@@ -169,7 +169,9 @@ void Solver::check_damping(const Step& step) const {
   // about 1e-4), and the step only shrinks, so checking at the step's start suffices.
   if (step.damping * dt_ >= 2.0) {
     std::ostringstream os;
-    os << "step '" << step.name << "': damping = " << step.damping << " 1/s with the stable time step " << dt_
+    if (step.damping_where.empty()) os << "step '" << step.name << "': damping = ";
+    else os << step.damping_where << ": ";  // the deck's line (the solver finds the time step, the deck reader cannot)
+    os << step.damping << " 1/s with the stable time step " << dt_
        << " s gives c dt = " << step.damping * dt_ << ", at or above 2, where the damped central difference stops "
        << "or reverses every velocity each cycle; use damping below " << 2.0 / dt_ << " 1/s (dynamic relaxation "
        << "damps near twice the lowest eigenfrequency)";

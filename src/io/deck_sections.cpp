@@ -242,6 +242,7 @@ void read_steps(const DeckContext& c, const toml::table& root, fe::Model& m, boo
                 "expected a unique step name, found it twice");
       s.duration = c.positive(t, "duration", w);
       s.damping = c.in_range(t, "damping", w, 0.0, 0.0);
+      if (const toml::node* dn = t.get("damping")) s.damping_where = c.where(*dn, w + ".damping");
       s.friction = c.boolean(t, "friction", w, true);
       s.quasi_static = c.boolean(t, "quasi_static", w, false);
       auto set_of = [&](const toml::table& b, const std::string& ww) {

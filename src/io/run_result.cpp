@@ -107,6 +107,20 @@ bool is_drawbend_deck(const Deck& deck) {
   return false;
 }
 
+std::string drawbend_step_missing(const Deck& deck) {
+  if (!has_signal(deck, Signal::outlet_force) || !has_signal(deck, Signal::back_tension) || pin_pair(deck.model) < 0)
+    return "";
+  std::string names;
+  for (const auto& s : deck.model.steps) {
+    if (s.name == "draw") return "";
+    names += (names.empty() ? "'" : ", '") + s.name + "'";
+  }
+  return "the deck records outlet_force_N and back_tension_N over a pin, as a draw-bend case, but has no step "
+         "named 'draw' (its steps: " + (names.empty() ? std::string("none") : names) +
+         "): F_X, F_Y and mu are read from the step named 'draw', so result.toml gets no [drawbend] answer; "
+         "name the drawing step 'draw' to have them";
+}
+
 double full_strip_factor(const fe::Model& m) {
   if (m.steps.empty()) return 1;
   for (const auto& s : m.steps) {
