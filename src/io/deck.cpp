@@ -21,7 +21,6 @@
 #include "io/deck_overlap.hpp"
 #include "io/deck_sections.hpp"
 #include "io/material_spec.hpp"
-#include "io/run_result.hpp"
 #include "core/toml_read.hpp"
 
 namespace drawbend::io {
@@ -379,10 +378,7 @@ Deck parse_deck(const std::string& text_in, const std::string& path) {
     problems.attempt([&] { check_cost(c, root, d); });
     if (const auto* mt = root.get_as<toml::table>("material")) material_warnings(c, *mt, d.warnings);
     mesh_warnings(c, root, d);
-    if (const std::string w = drawbend_step_missing(d); !w.empty()) {
-      const toml::node* n = root.get("step");
-      d.warnings.push_back((n ? c.where(*n, "step") : c.path + ": step") + ": " + w);
-    }
+    drawbend_step_warning(c, root, d);
   }
   problems.throw_if_any();
   return d;

@@ -239,6 +239,48 @@ bool one_layer_under(const fe::Mesh& m, const std::vector<fe::Quad>& faces) {
 }
 }  // namespace
 
+// The first contact pair on a tool with a cylinder surface (the pin); -1 if none.
+int pin_pair(const fe::Model& m) {
+  for (std::size_t p = 0; p < m.contacts.size(); ++p)
+    for (const auto& t : m.tools)
+      if (t.name == m.contacts[p].tool)
+        for (const auto& sf : t.surfaces)
+          if (sf.kind == contact::Surface::Kind::cylinder) return static_cast<int>(p);
+  return -1;
+}
+
+bool has_signal(const Deck& d, run_output::Signal s) {
+  for (const auto& h : d.output.history)
+    if (h.name == run_output::signal_name(s)) return true;
+  return false;
+}
+
+namespace {
+
+std::string drawbend_step_missing(const Deck& deck) {
+  if (!has_signal(deck, run_output::Signal::outlet_force) || !has_signal(deck, run_output::Signal::back_tension) ||
+      pin_pair(deck.model) < 0)
+    return "";
+  std::string names;
+  for (const auto& s : deck.model.steps) {
+    if (s.name == "draw") return "";
+    names += (names.empty() ? "'" : ", '") + s.name + "'";
+  }
+  return "the deck records outlet_force_N and back_tension_N over a pin, as a draw-bend case, but has no step "
+         "named 'draw' (its steps: " + (names.empty() ? std::string("none") : names) +
+         "): F_X, F_Y and mu are read from the step named 'draw', so result.toml gets no [drawbend] answer; "
+         "name the drawing step 'draw' to have them";
+}
+
+}  // namespace
+
+void drawbend_step_warning(const DeckContext& c, const toml::table& root, Deck& d) {
+  if (const std::string w = drawbend_step_missing(d); !w.empty()) {
+    const toml::node* n = root.get("step");
+    d.warnings.push_back((n ? c.where(*n, "step") : c.path + ": step") + ": " + w);
+  }
+}
+
 void mesh_warnings(const DeckContext& c, const toml::table& root, Deck& d) {
   const fe::Model& m = d.model;
   if (m.mesh.num_elements() > 2000000) return;

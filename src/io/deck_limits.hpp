@@ -7,6 +7,7 @@
 // data/cases/README.md, section "Limits".
 #include <toml++/toml.h>
 
+#include "core/run_output.hpp"
 #include "io/deck.hpp"
 #include "io/deck_context.hpp"
 
@@ -38,5 +39,15 @@ void check_cost(const DeckContext& c, const toml::table& root, Deck& d);
 /// or punch radius) that the sheet bends over.  Meshes above 2e6 elements are
 /// not examined (the face count needs 48 bytes per element).
 void mesh_warnings(const DeckContext& c, const toml::table& root, Deck& d);
+
+/// The first contact pair on a tool with a cylinder surface (the pin); -1 if none.
+int pin_pair(const fe::Model& m);
+/// Whether the deck records the history signal s (core/run_output.hpp).
+bool has_signal(const Deck& d, run_output::Signal s);
+/// A deck that records outlet_force_N and back_tension_N over a pin but has
+/// no step named "draw" gets no [drawbend] answer (F_X, F_Y, mu; run_result.hpp):
+/// a warning at its [[step]] line naming its steps (a renamed draw step had
+/// dropped the answer without a word).
+void drawbend_step_warning(const DeckContext& c, const toml::table& root, Deck& d);
 
 }  // namespace drawbend::io

@@ -12,6 +12,7 @@
 #include "analysis/rope.hpp"
 #include "core/quote.hpp"
 #include "core/run_output.hpp"
+#include "io/deck_limits.hpp"
 #include "friction/surface_law.hpp"
 
 namespace drawbend::io {
@@ -40,16 +41,6 @@ std::string num(double v) {
   return t;
 }
 
-/// The first contact pair on a tool with a cylinder surface (the pin); -1 if none.
-int pin_pair(const fe::Model& m) {
-  for (std::size_t p = 0; p < m.contacts.size(); ++p)
-    for (const auto& t : m.tools)
-      if (t.name == m.contacts[p].tool)
-        for (const auto& sf : t.surfaces)
-          if (sf.kind == contact::Surface::Kind::cylinder) return static_cast<int>(p);
-  return -1;
-}
-
 double pin_radius(const fe::Model& m, int pair) {
   for (const auto& t : m.tools)
     if (t.name == m.contacts[pair].tool)
@@ -62,12 +53,6 @@ double extent(const std::vector<double>& v) {
   if (v.empty()) return 0;
   const auto [a, b] = std::minmax_element(v.begin(), v.end());
   return *b - *a;
-}
-
-bool has_signal(const Deck& d, Signal s) {
-  for (const auto& h : d.output.history)
-    if (h.name == signal_name(s)) return true;
-  return false;
 }
 
 }  // namespace
@@ -105,20 +90,6 @@ bool is_drawbend_deck(const Deck& deck) {
   for (const auto& s : deck.model.steps)
     if (s.name == "draw") return pin_pair(deck.model) >= 0;
   return false;
-}
-
-std::string drawbend_step_missing(const Deck& deck) {
-  if (!has_signal(deck, Signal::outlet_force) || !has_signal(deck, Signal::back_tension) || pin_pair(deck.model) < 0)
-    return "";
-  std::string names;
-  for (const auto& s : deck.model.steps) {
-    if (s.name == "draw") return "";
-    names += (names.empty() ? "'" : ", '") + s.name + "'";
-  }
-  return "the deck records outlet_force_N and back_tension_N over a pin, as a draw-bend case, but has no step "
-         "named 'draw' (its steps: " + (names.empty() ? std::string("none") : names) +
-         "): F_X, F_Y and mu are read from the step named 'draw', so result.toml gets no [drawbend] answer; "
-         "name the drawing step 'draw' to have them";
 }
 
 double full_strip_factor(const fe::Model& m) {

@@ -66,12 +66,6 @@ DrawForces draw_forces(const CsvTable& history);
 /// True when `deck` records outlet_force_N and back_tension_N and has a "draw" step.
 bool is_drawbend_deck(const Deck& deck);
 
-/// For a deck that records outlet_force_N and back_tension_N and has a pin
-/// (a cylinder tool in contact) but no step named "draw": why it gets no
-/// [drawbend] answer (F_X, F_Y, mu), naming its steps; empty otherwise.  The
-/// deck reader adds it to Deck::warnings (a renamed draw step had dropped the
-/// answer without a word).
-std::string drawbend_step_missing(const Deck& deck);
 /// 2 when the deck models half the strip (the "ymin" set held in y in every step), else 1.
 double full_strip_factor(const fe::Model& m);
 
