@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The sanitizer build: AddressSanitizer + UndefinedBehaviorSanitizer, the
-# libraries at -O0; the element kernel, the bending work, the loop and the
-# tests, where the tests spend their time, at -O1 (CMakeLists.txt says why).
+# The sanitizer build: AddressSanitizer + UndefinedBehaviorSanitizer, -O0
+# (CMakeLists.txt says why not -O1; the element kernel and the bending work,
+# where the tests spend their time, are at -O1: src/CMakeLists.txt).
 # Configures BUILD_DIR (normally build-asan beside build) with
 # DRAWBEND_SANITIZE=ON and DRAWBEND_TESTS_ONLY=ON, builds only what the tests
 # need (target sanitize_tests) and runs the unit tests, the cheap verification
