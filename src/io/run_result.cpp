@@ -12,8 +12,8 @@
 #include "analysis/rope.hpp"
 #include "core/quote.hpp"
 #include "core/run_output.hpp"
-#include "io/deck_limits.hpp"
 #include "friction/surface_law.hpp"
+#include "io/deck_limits.hpp"
 
 namespace drawbend::io {
 

@@ -65,7 +65,6 @@ DrawForces draw_forces(const CsvTable& history);
 
 /// True when `deck` records outlet_force_N and back_tension_N and has a "draw" step.
 bool is_drawbend_deck(const Deck& deck);
-
 /// 2 when the deck models half the strip (the "ymin" set held in y in every step), else 1.
 double full_strip_factor(const fe::Model& m);
 
