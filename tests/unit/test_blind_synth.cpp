@@ -20,28 +20,12 @@
 #include <boost/test/unit_test.hpp>
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
-#include <unistd.h>
 
 #include "loop/blind_synth.hpp"
+#include "lab_file.hpp"
 
 using namespace drawbend::loop;
-
-static std::string write_text(const Dataset& d, const std::string& name) {
-  // One file per process: two runs of this test at once (the sanitizer suite
-  // beside the main one) must not read each other's rows.
-  const std::string path =
-      (std::filesystem::temp_directory_path() / ("drawbend_" + std::to_string(::getpid()) + "_" + name)).string();
-  write_measured(path, d);
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  std::filesystem::remove(path);
-  return s.str();
-}
 
 static bool has_column(const Dataset& d, const std::string& c) {
   return d.extra_index(c) >= 0 || c == "time_s" || c == "sliding_distance_mm" || c == "speed_mm_s" ||
@@ -54,7 +38,7 @@ BOOST_AUTO_TEST_CASE(valid_data_of_the_stated_size) {
       BlindTruth t;
       const double noise = seed % 2 ? 3 : 8;
       const Dataset d = synthesize_blind({cls, noise, seed}, t);
-      const Dataset back = parse_measured(write_text(d, "blind_synth_test.csv"), "dev");
+      const Dataset back = parse_measured(drawbend::test::lab_text(d, "blind_synth_test.csv"), "dev");
       BOOST_TEST_CONTEXT(cls << " seed " << seed) {
         BOOST_TEST(back.problems.empty());
         BOOST_TEST(back.rows.size() == d.rows.size());
@@ -78,7 +62,7 @@ BOOST_AUTO_TEST_CASE(bending_effect_keeps_every_row_possible) {
   for (std::uint64_t seed = 1; seed <= 400; ++seed) {
     BlindTruth t;
     const Dataset d = synthesize_blind({"bending", 8.0, seed}, t);
-    const Dataset back = parse_measured(write_text(d, "blind_synth_bend.csv"), "dev");
+    const Dataset back = parse_measured(drawbend::test::lab_text(d, "blind_synth_bend.csv"), "dev");
     if (!back.problems.empty() || back.rows.size() != d.rows.size()) ++bad, BOOST_TEST_MESSAGE("seed " << seed << " " << back.problems.size() << " k " << t.k);
   }
   BOOST_TEST(bad == 0);
@@ -87,14 +71,14 @@ BOOST_AUTO_TEST_CASE(bending_effect_keeps_every_row_possible) {
 BOOST_AUTO_TEST_CASE(same_seed_same_file) {
   BlindTruth t1, t2;
   const Dataset a = synthesize_blind({"interaction", 3, 17}, t1), b = synthesize_blind({"interaction", 3, 17}, t2);
-  BOOST_TEST(write_text(a, "blind_a.csv") == write_text(b, "blind_b.csv"));
+  BOOST_TEST(drawbend::test::lab_text(a, "blind_a.csv") == drawbend::test::lab_text(b, "blind_b.csv"));
   BOOST_TEST(blind_truth_json(t1) == blind_truth_json(t2));
 }
 
 BOOST_AUTO_TEST_CASE(null_is_the_base_model) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     BlindTruth t;
-    const Dataset d = parse_measured(write_text(synthesize_blind({"null", 0, seed}, t), "blind_null.csv"), "dev");
+    const Dataset d = parse_measured(drawbend::test::lab_text(synthesize_blind({"null", 0, seed}, t), "blind_null.csv"), "dev");
     std::map<double, std::vector<std::pair<double, double>>> rot;
     for (const auto& s : d.rows)
       if (s.rotating) rot[s.pin_d_mm].push_back({s.back_tension_N, s.outlet_force_N});

@@ -22,39 +22,19 @@
 #include <boost/test/unit_test.hpp>
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <set>
-#include <sstream>
 
 #include "loop/loop.hpp"
 #include "loop/maps.hpp"
 #include "loop/measured.hpp"
 #include "loop/model.hpp"
 #include "loop/wild_synth.hpp"
+#include "lab_file.hpp"
 
 using namespace drawbend::loop;
 
 namespace {
 
 const std::uint64_t kSeed = 51600044;
-
-Dataset lab_file(const Dataset& gen) {
-  const std::string path =
-      (std::filesystem::temp_directory_path() / ("drawbend_cell_offset_" + std::to_string(kSeed) + ".csv")).string();
-  write_measured(path, gen);
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::filesystem::remove(path);
-  return parse_measured(text.str(), path);
-}
-
-MapLibrary maps_for(const Dataset& d) {
-  std::set<double> pins;
-  for (const auto& s : d.rows) pins.insert(s.pin_d_mm);
-  return MapLibrary::stand_in(std::vector<double>(pins.begin(), pins.end()));
-}
 
 // The rows of the first test whose pre_strain_pct differs from the first row's, moved to the top.
 Dataset another_level_first(const Dataset& d) {
@@ -74,7 +54,7 @@ Dataset another_level_first(const Dataset& d) {
 
 // The residual sum of squares of the base model with pre_strain_pct's levels in the 12.7 mm pin only.
 double rss_in_cell(const Dataset& ds, bool own_factor) {
-  const Design d = make_design(ds, maps_for(ds));
+  const Design d = make_design(ds, drawbend::test::stand_in_maps(ds));
   int n = 0;
   const std::vector<int> g = d.groups("pin", &n);
   int cell = -1;
@@ -101,7 +81,7 @@ double rss_in_cell(const Dataset& ds, bool own_factor) {
 
 BOOST_AUTO_TEST_CASE(own_factor_makes_the_fit_independent_of_the_first_level) {
   BlindTruth t;
-  const Dataset ds = lab_file(synthesize_wild({"interaction", 8.0, kSeed}, t));
+  const Dataset ds = drawbend::test::lab_file(synthesize_wild({"interaction", 8.0, kSeed}, t), "cell_offset_" + std::to_string(kSeed) + ".csv");
   const Dataset moved = another_level_first(ds);
   const double a = rss_in_cell(ds, true), b = rss_in_cell(moved, true);
   BOOST_TEST_MESSAGE("own factor: RSS " << a << " and " << b << " N^2");
@@ -114,8 +94,8 @@ BOOST_AUTO_TEST_CASE(own_factor_makes_the_fit_independent_of_the_first_level) {
 
 BOOST_AUTO_TEST_CASE(the_loop_finds_the_one_pin_effect) {
   BlindTruth t;
-  const Dataset ds = lab_file(synthesize_wild({"interaction", 8.0, kSeed}, t));
-  const LoopResult r = run_loop(make_design(ds, maps_for(ds)), LoopOptions{});
+  const Dataset ds = drawbend::test::lab_file(synthesize_wild({"interaction", 8.0, kSeed}, t), "cell_offset_" + std::to_string(kSeed) + ".csv");
+  const LoopResult r = run_loop(make_design(ds, drawbend::test::stand_in_maps(ds)), LoopOptions{});
   BOOST_REQUIRE(!r.steps.empty());
   BOOST_TEST_MESSAGE("first step " << r.steps[0].variable << ", held-out RMS " << r.cv.back().rms / 8.0 << " x the noise");
   BOOST_TEST(r.steps[0].variable == "pre_strain_pct");

@@ -19,15 +19,12 @@
 //    1.25 x the noise, so the rule cannot fire: no step with a far note.
 #define BOOST_TEST_MODULE loop_far
 #include <boost/test/unit_test.hpp>
-#include <filesystem>
-#include <fstream>
-#include <set>
-#include <sstream>
 
 #include "loop/loop.hpp"
 #include "loop/maps.hpp"
 #include "loop/measured.hpp"
 #include "loop/wild_synth.hpp"
+#include "lab_file.hpp"
 
 using namespace drawbend::loop;
 
@@ -40,18 +37,8 @@ struct Run {
 
 Run loop_on_wild(const std::string& cls, double noise, std::uint64_t seed, double far_ratio) {
   BlindTruth t;
-  const Dataset gen = synthesize_wild({cls, noise, seed}, t);
-  const std::string path =
-      (std::filesystem::temp_directory_path() / ("drawbend_far_" + std::to_string(seed) + ".csv")).string();
-  write_measured(path, gen);
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::filesystem::remove(path);
-  const Dataset d = parse_measured(text.str(), path);
-  std::set<double> pins;
-  for (const auto& s : d.rows) pins.insert(s.pin_d_mm);
-  const MapLibrary maps = MapLibrary::stand_in(std::vector<double>(pins.begin(), pins.end()));
+  const Dataset d = drawbend::test::lab_file(synthesize_wild({cls, noise, seed}, t), "far_" + std::to_string(seed) + ".csv");
+  const MapLibrary maps = drawbend::test::stand_in_maps(d);
   LoopOptions o;
   o.far_ratio = far_ratio;
   return {run_loop(make_design(d, maps), o), noise};

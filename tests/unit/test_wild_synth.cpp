@@ -26,31 +26,17 @@
 //    50 % needs test 2 alone: 1; no effect: 0 tests.  A planted effect's
 //    support is at least 1 and at most the number of tests.
 #define BOOST_TEST_MODULE wild_synth
-#include <unistd.h>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include "loop/wild_synth.hpp"
+#include "lab_file.hpp"
 
 using namespace drawbend::loop;
 
 static constexpr std::uint64_t kDev = 55000000;  // heldout_protocol_v2.md: wild development seeds
-
-static std::string write_text(const Dataset& d, const std::string& name) {
-  const std::string path =  // per process: another checkout's tests may run at the same time
-      (std::filesystem::temp_directory_path() / (std::to_string(::getpid()) + "_" + name)).string();
-  write_measured(path, d);
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  std::filesystem::remove(path);
-  return s.str();
-}
 
 static bool known_name(const Dataset& d, const std::string& c) {
   static const std::set<std::string> std_cols = {"time_s",  "sliding_distance_mm", "speed_mm_s", "direction_deg",
@@ -65,7 +51,7 @@ BOOST_AUTO_TEST_CASE(valid_data_of_the_stated_size) {
       BlindTruth t;
       const double noise = i % 2 ? 3 : 8;
       const Dataset d = synthesize_wild({cls, noise, kDev + i}, t);
-      const Dataset back = parse_measured(write_text(d, "wild_synth_test.csv"), "dev");
+      const Dataset back = parse_measured(drawbend::test::lab_text(d, "wild_synth_test.csv"), "dev");
       BOOST_TEST_CONTEXT(cls << " seed " << kDev + i) {
         BOOST_TEST(back.problems.empty());
         BOOST_TEST(back.rows.size() == d.rows.size());
@@ -107,10 +93,10 @@ BOOST_AUTO_TEST_CASE(same_seed_same_file) {
   BlindTruth t1, t2, t3;
   const Dataset a = synthesize_wild({"channel", 3, kDev + 7}, t1), b = synthesize_wild({"channel", 3, kDev + 7}, t2);
   const Dataset c = synthesize_wild({"channel", 3, kDev + 8}, t3);
-  BOOST_TEST(write_text(a, "wild_a.csv") == write_text(b, "wild_b.csv"));
+  BOOST_TEST(drawbend::test::lab_text(a, "wild_a.csv") == drawbend::test::lab_text(b, "wild_b.csv"));
   BOOST_TEST(wild_truth_json(t1) == wild_truth_json(t2));
   BOOST_TEST(wild_truth_json(t1).find("\"generator\": \"wild\"") != std::string::npos);
-  BOOST_TEST(write_text(a, "wild_a.csv") != write_text(c, "wild_c.csv"));
+  BOOST_TEST(drawbend::test::lab_text(a, "wild_a.csv") != drawbend::test::lab_text(c, "wild_c.csv"));
 }
 
 BOOST_AUTO_TEST_CASE(design_does_not_depend_on_the_class) {
@@ -137,7 +123,7 @@ BOOST_AUTO_TEST_CASE(design_does_not_depend_on_the_class) {
 BOOST_AUTO_TEST_CASE(null_is_the_base_model) {
   for (std::uint64_t i = 0; i < 10; ++i) {
     BlindTruth t;
-    const Dataset d = parse_measured(write_text(synthesize_wild({"null", 0, kDev + i}, t), "wild_null.csv"), "dev");
+    const Dataset d = parse_measured(drawbend::test::lab_text(synthesize_wild({"null", 0, kDev + i}, t), "wild_null.csv"), "dev");
     std::map<double, std::vector<std::pair<double, double>>> rot;
     for (const auto& s : d.rows)
       if (s.rotating) rot[s.pin_d_mm].push_back({s.back_tension_N, s.outlet_force_N});

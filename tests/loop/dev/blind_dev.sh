@@ -35,7 +35,8 @@ released() {  # is seed $1 spent by a recorded held-out run?
 for ((i=FIRST;i<N;i++)); do
   s=$((S0+i))
   if (( (s >= 58000000 && s < 61000000) || (s >= 62900000 && s < 63000000) )) && ! released $s; then
-    echo "seed $s is held out (heldout_protocol_v7.md and the ranges no run has spent): not for development" >&2; exit 2; fi
+    if (( s >= 62900000 )); then why=heldout_protocol_v11.md; else why="heldout_protocol_v7.md: 58000000-60999999, unless a recorded run spent it"; fi
+    echo "seed $s is held out ($why): not for development" >&2; exit 2; fi
 done
 classes=(level smooth interaction bending test-level null)
 if [ "$GEN" = wild ]; then classes=(level smooth interaction channel test-level null); fi
