@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The sanitizer build: AddressSanitizer + UndefinedBehaviorSanitizer, -O0
-# (CMakeLists.txt says why not -O1; the element kernel and the bending work,
-# where the tests spend their time, are at -O1: src/CMakeLists.txt).
+# (CMakeLists.txt says why not -O1; where the tests spend their time is at
+# -O1: the element kernel and the bending work, src/CMakeLists.txt; the loop's
+# fits and screen, src/loop/CMakeLists.txt; two tests, tests/CMakeLists.txt).
 # Configures BUILD_DIR (normally build-asan beside build) with
 # DRAWBEND_SANITIZE=ON and DRAWBEND_TESTS_ONLY=ON, builds only what the tests
 # need (target sanitize_tests) and runs the unit tests, the cheap verification
