@@ -30,6 +30,9 @@ cmake --build "$bld" --target sanitize_tests -j "$jobs" 2>&1 | grep -E "error|wa
 cmake --build "$bld" --target sanitize_tests -j "$jobs" >/dev/null  # fails the test if the build failed
 t1=$(date +%s)
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
+# The tests that repeat one path over many seeds or sizes run a share of them
+# here (tests/common/sanitizer_run.hpp; the option matrix: option_matrix.sh).
+export DRAWBEND_SANITIZER_RUN=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$src/tests/sanitize/ubsan.supp
 cd "$bld"
 # Not here: the cluster tests (their driver is not in sanitize_tests, and they

@@ -7,7 +7,8 @@
 //    for the pressure law, one of the loop's pressure names); a planted
 //    effect's RMS on the outlet force is k x noise sd, k in [2.5, 6], to 1e-6
 //    relative (the size is iterated to its target); a null set's effect is 0;
-//    the cell is named for interactions and only for them.
+//    the cell is named for interactions and only for them.  In the sanitizer
+//    step (tests/common/sanitizer_run.hpp) 5 seeds per class.
 //  - the same seed writes the same file and truth, byte for byte; another
 //    seed another file.
 //  - the design does not depend on the class: for one seed every class writes
@@ -33,6 +34,7 @@
 
 #include "loop/wild_synth.hpp"
 #include "lab_file.hpp"
+#include "sanitizer_run.hpp"
 
 using namespace drawbend::loop;
 
@@ -47,7 +49,7 @@ static bool known_name(const Dataset& d, const std::string& c) {
 
 BOOST_AUTO_TEST_CASE(valid_data_of_the_stated_size) {
   for (const auto& cls : wild_classes())
-    for (std::uint64_t i = 0; i < 25; ++i) {
+    for (std::uint64_t i = 0; i < static_cast<std::uint64_t>(drawbend::test::repetitions(25, 5)); ++i) {
       BlindTruth t;
       const double noise = i % 2 ? 3 : 8;
       const Dataset d = synthesize_wild({cls, noise, kDev + i}, t);
