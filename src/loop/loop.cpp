@@ -207,7 +207,8 @@ bool LoopSearch::forward_round() {
       ch.best_step.far_note = "no candidate passed the permutation screen and its forms, while the held-out RMS " +
                               fmt(cur.rms, 4) + " N was " + fmt(cur.rms / sigma, 3) + " x the replicate noise (above " +
                               fmt(o.far_ratio) + " x): the " + std::to_string(o.far_contenders) + " candidate(s) "
-                              "with the largest held-out gain were given their forms; this one's passed the F test, "
+                              "with the largest held-out gain (after the first, those with at least " + fmt(100 * o.far_gain_share) +
+                              " % of its gain) were given their forms; this one's passed the F test, "
                               "lowered the held-out error, reached the minimum effect, and took " +
                               fmt(100 * gain / excess, 3) + " % of the excess MSE over the noise (at least " +
                               fmt(100 * o.far_share) + " % asked)";
@@ -265,7 +266,8 @@ std::vector<std::string> LoopSearch::give_forms(const std::vector<CandidateResul
 }
 
 // The far-from-noise rule (LoopOptions::far_ratio): the candidates with the
-// largest positive held-out gain, up to o.far_contenders, significant or not
+// largest positive held-out gain, up to o.far_contenders (after the first, only
+// those with at least o.far_gain_share of its gain), significant or not
 // (identities and pair families excluded, a column left to a significant model
 // input it is a function of, as in give_forms), given their forms; the names given.
 std::vector<std::string> LoopSearch::give_forms_by_gain(const std::vector<CandidateResult>& rank,
@@ -277,13 +279,16 @@ std::vector<std::string> LoopSearch::give_forms_by_gain(const std::vector<Candid
   std::stable_sort(by_gain.begin(), by_gain.end(),
                    [](const CandidateResult* a, const CandidateResult* b) { return a->cv_reduction > b->cv_reduction; });
   std::vector<std::string> given;
+  double first_gain = 0;  // the gain of the first candidate given its forms
   for (const CandidateResult* c : by_gain) {
     if (static_cast<int>(given.size()) >= o.far_contenders) break;
+    if (!given.empty() && c->cv_reduction < o.far_gain_share * first_gain) break;
     const Candidate* cand = nullptr;
     for (const auto& k : cands)
       if (k.name == c->name) cand = &k;
     if (!cand) continue;
     if (!cand->confounded_with.empty() && input_significant(rank, cand->confounded_with)) continue;
+    if (given.empty()) first_gain = c->cv_reduction;
     given.push_back(c->name);
     consider(*c, *cand, false, thr, ch);
   }
