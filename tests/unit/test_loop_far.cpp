@@ -1,8 +1,9 @@
 // The far-from-noise rule (LoopOptions::far_ratio, far_share; loop.cpp
 // forward_round), on wild development sets (spent seeds, heldout_record.md
 // h50-cvperm and h50-far), written as a lab file and read back as the CLI
-// reads it, stand-in maps, the loop's defaults otherwise (the rule is opt-in:
-// far_ratio 2 is set here, the default is 0).  Expected answers:
+// reads it, stand-in maps, the loop's defaults otherwise (far_ratio 2, three
+// contenders gated by half the first's gain, since h50-fardefault; the cases
+// set far_ratio themselves, -1 keeps the default).  Expected answers:
 //  - set 57600044 (wild interaction: mu + 0.1 a g of ra_strip_um at speed 10
 //    mm/s only, k 5.7, noise 8 N): the permutation screen passes no column
 //    (ra_strip_um p 0.003 against 0.05 / 31), so with far_ratio 0 the loop adds
@@ -15,6 +16,9 @@
 //    than half of the excess MSE over the noise; every later candidate takes
 //    less, so the rule adds exactly one step (three contenders and no share
 //    gate took six, five of them decoys: heldout_record.md, h50-far).
+//  - the default options are the rule on (far_ratio 2): set 57600044 with
+//    LoopOptions{} untouched gives ra_strip_um as above (main before
+//    h50-fardefault: no step).
 //  - null set 57600005 (noise 3 N): the base model's held-out RMS is within
 //    1.25 x the noise, so the rule cannot fire: no step with a far note.
 #define BOOST_TEST_MODULE loop_far
@@ -40,7 +44,7 @@ Run loop_on_wild(const std::string& cls, double noise, std::uint64_t seed, doubl
   const Dataset d = drawbend::test::lab_file(synthesize_wild({cls, noise, seed}, t), "far_" + std::to_string(seed) + ".csv");
   const MapLibrary maps = drawbend::test::stand_in_maps(d);
   LoopOptions o;
-  o.far_ratio = far_ratio;
+  if (far_ratio >= 0) o.far_ratio = far_ratio;
   return {run_loop(make_design(d, maps), o), noise};
 }
 
@@ -61,6 +65,15 @@ BOOST_AUTO_TEST_CASE(one_cell_effect_found_by_the_rule) {
   BOOST_TEST(on.r.steps[0].variable == "ra_strip_um");
   BOOST_TEST(!on.r.steps[0].far_note.empty());
   BOOST_TEST(on.r.cv.back().rms / on.noise <= 2.0);
+}
+
+BOOST_AUTO_TEST_CASE(the_rule_is_the_default) {
+  BOOST_TEST(LoopOptions{}.far_ratio == 2.0);
+  const Run def = loop_on_wild("interaction", 8.0, 57600044, -1.0);
+  BOOST_REQUIRE(!def.r.steps.empty());
+  BOOST_TEST(def.r.steps[0].variable == "ra_strip_um");
+  BOOST_TEST(!def.r.steps[0].far_note.empty());
+  BOOST_TEST(def.r.cv.back().rms / def.noise <= 2.0);
 }
 
 BOOST_AUTO_TEST_CASE(the_share_gate_stops_decoys) {
