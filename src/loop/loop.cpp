@@ -141,6 +141,7 @@ struct LoopSearch {
   std::vector<Step> steps;
   std::vector<ResponseColumn> excluded;  // columns computed from the measured forces: not screened
   int round = 0, backfits = 0;
+  bool far_mode = false;  // forms given by the far rule (LoopOptions::far_max_params)
 
   void forward();
   bool forward_round();
@@ -199,8 +200,10 @@ bool LoopSearch::forward_round() {
   if (ch.found && ch.best_step.cls == "undeclared variable") give_aliases(rank, cands, given, thr, ch);
   // Far from the noise with no step: the strongest candidates by held-out gain.
   if (!ch.found && o.far_ratio > 0 && sigma > 0 && cur.rms > o.far_ratio * sigma) {
+    far_mode = true;
     const std::vector<std::string> far = give_forms_by_gain(rank, cands, thr, ch);
     if (ch.found && ch.best_step.cls == "undeclared variable") give_aliases(rank, cands, far, thr, ch);
+    far_mode = false;
     const double excess = cur.rms * cur.rms - sigma * sigma,
                  gain = ch.found ? cur.rms * cur.rms - ch.best_form.cv.rms * ch.best_form.cv.rms : 0.0;
     if (ch.found && gain >= o.far_share * excess)
@@ -209,7 +212,8 @@ bool LoopSearch::forward_round() {
                               fmt(o.far_ratio) + " x): the " + std::to_string(o.far_contenders) + " candidate(s) "
                               "with the largest held-out gain (after the first, those with at least " + fmt(100 * o.far_gain_share) +
                               " % of its gain) were given their forms; this one's passed the F test, "
-                              "lowered the held-out error, reached the minimum effect, and took " +
+                              "lowered the held-out error, reached the minimum effect, has at most " + std::to_string(o.far_max_params) +
+                              " parameters, and took " +
                               fmt(100 * gain / excess, 3) + " % of the excess MSE over the noise (at least " +
                               fmt(100 * o.far_share) + " % asked)";
     else if (ch.found) {
@@ -301,6 +305,9 @@ Considered LoopSearch::evaluate(const CandidateResult& c, const Candidate& cand,
   Considered r;
   r.trials = try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by,
                        c.cell_group, &trials_done, c.probe_input);
+  if (far_mode)  // the far rule's steps: simple forms only (LoopOptions::far_max_params)
+    for (auto& t : r.trials)
+      if (t.q > o.far_max_params) t.passed = false;
   r.keep = choose_form(r.trials, res.folds);
   Step& s = r.s;
   s.variable = c.name;

@@ -109,6 +109,14 @@ struct LoopOptions {
   /// contender for the same structure).
   int far_contenders = 3;
   double far_gain_share = 0.5;
+  /// The far rule's step has at most this many parameters (its forms with
+  /// more fail a gate).  The screen has not vouched for the column, and a
+  /// many-parameter form (a 5-dof smooth per direction: 25) absorbs structure
+  /// that is not the column's: on the development sets 4 of the 6 far steps
+  /// above 9 parameters were decoys, and each made every later form slower
+  /// (one check set 262 s against 0.5 s; heldout_record.md, h50-farsimple).
+  /// 9: a 3-dof smooth per group of a three-group input (pin, speed).
+  int far_max_params = 9;
   /// Opt-in (--cell-probes; development, not yet scored on enough data): the
   /// screen's one-cell sub-probes and the forms confined to one cell.
   bool cell_probes = false;
