@@ -304,7 +304,7 @@ Considered LoopSearch::evaluate(const CandidateResult& c, const Candidate& cand,
   const auto prog = [&](const std::string& m) { progress(o, m); };
   Considered r;
   r.trials = try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by,
-                       c.cell_group, &trials_done, c.probe_input);
+                       c.cell_group, &trials_done, c.probe_input, far_mode ? o.far_max_params : -1);
   if (far_mode)  // the far rule's steps: simple forms only (LoopOptions::far_max_params)
     for (auto& t : r.trials)
       if (t.q > o.far_max_params) t.passed = false;
