@@ -10,6 +10,7 @@
 #include <boost/math/distributions/fisher_f.hpp>
 
 #include "core/csv.hpp"
+#include "loop/model_parts.hpp"
 
 namespace drawbend::loop {
 
@@ -428,7 +429,7 @@ double mse_diff_se(const CvResult& a, const CvResult& b, const Folds& f) {
 std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
                                  const CvResult& cur, const JointFit& cur_joint, double thr, double min_gain_N,
                                  const std::function<void(const std::string&)>& progress, const std::string& cell_by,
-                                 int cell_group, TrialCache* cache, const std::string& probe_input) {
+                                 int cell_group, TrialCache* cache, const std::string& probe_input, int max_q) {
   FormPlans fp{d, spec, c, {}};
   std::vector<Plan>& plans = fp.plans;
   for (EffectKind k : effects_for(c.name))
@@ -450,8 +451,10 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
     }
   }
   std::vector<FormTrial> out;
+  const int p0 = max_q >= 0 ? detail::layout(d, spec).n : 0;
   for (const Plan& p : plans) {
     FormTrial t = named_trial(d, spec, c, p);
+    if (max_q >= 0 && detail::layout(d, t.spec).n - p0 > max_q) continue;
     if (progress) progress("  " + c.name + ": trying " + t.name);
     fit_trial(d, folds, t, cache);
     t.q = t.joint.p - cur_joint.p;

@@ -141,6 +141,7 @@ struct LoopSearch {
   std::vector<Step> steps;
   std::vector<ResponseColumn> excluded;  // columns computed from the measured forces: not screened
   int round = 0, backfits = 0;
+  bool far_mode = false;  // forms given by the far rule (LoopOptions::far_max_params)
 
   void forward();
   bool forward_round();
@@ -199,16 +200,20 @@ bool LoopSearch::forward_round() {
   if (ch.found && ch.best_step.cls == "undeclared variable") give_aliases(rank, cands, given, thr, ch);
   // Far from the noise with no step: the strongest candidates by held-out gain.
   if (!ch.found && o.far_ratio > 0 && sigma > 0 && cur.rms > o.far_ratio * sigma) {
+    far_mode = true;
     const std::vector<std::string> far = give_forms_by_gain(rank, cands, thr, ch);
     if (ch.found && ch.best_step.cls == "undeclared variable") give_aliases(rank, cands, far, thr, ch);
+    far_mode = false;
     const double excess = cur.rms * cur.rms - sigma * sigma,
                  gain = ch.found ? cur.rms * cur.rms - ch.best_form.cv.rms * ch.best_form.cv.rms : 0.0;
     if (ch.found && gain >= o.far_share * excess)
       ch.best_step.far_note = "no candidate passed the permutation screen and its forms, while the held-out RMS " +
                               fmt(cur.rms, 4) + " N was " + fmt(cur.rms / sigma, 3) + " x the replicate noise (above " +
                               fmt(o.far_ratio) + " x): the " + std::to_string(o.far_contenders) + " candidate(s) "
-                              "with the largest held-out gain were given their forms; this one's passed the F test, "
-                              "lowered the held-out error, reached the minimum effect, and took " +
+                              "with the largest held-out gain (after the first, those with at least " + fmt(100 * o.far_gain_share) +
+                              " % of its gain) were given their forms; this one's passed the F test, "
+                              "lowered the held-out error, reached the minimum effect, has at most " + std::to_string(o.far_max_params) +
+                              " parameters, and took " +
                               fmt(100 * gain / excess, 3) + " % of the excess MSE over the noise (at least " +
                               fmt(100 * o.far_share) + " % asked)";
     else if (ch.found) {
@@ -265,7 +270,8 @@ std::vector<std::string> LoopSearch::give_forms(const std::vector<CandidateResul
 }
 
 // The far-from-noise rule (LoopOptions::far_ratio): the candidates with the
-// largest positive held-out gain, up to o.far_contenders, significant or not
+// largest positive held-out gain, up to o.far_contenders (after the first, only
+// those with at least o.far_gain_share of its gain), significant or not
 // (identities and pair families excluded, a column left to a significant model
 // input it is a function of, as in give_forms), given their forms; the names given.
 std::vector<std::string> LoopSearch::give_forms_by_gain(const std::vector<CandidateResult>& rank,
@@ -277,13 +283,16 @@ std::vector<std::string> LoopSearch::give_forms_by_gain(const std::vector<Candid
   std::stable_sort(by_gain.begin(), by_gain.end(),
                    [](const CandidateResult* a, const CandidateResult* b) { return a->cv_reduction > b->cv_reduction; });
   std::vector<std::string> given;
+  double first_gain = 0;  // the gain of the first candidate given its forms
   for (const CandidateResult* c : by_gain) {
     if (static_cast<int>(given.size()) >= o.far_contenders) break;
+    if (!given.empty() && c->cv_reduction < o.far_gain_share * first_gain) break;
     const Candidate* cand = nullptr;
     for (const auto& k : cands)
       if (k.name == c->name) cand = &k;
     if (!cand) continue;
     if (!cand->confounded_with.empty() && input_significant(rank, cand->confounded_with)) continue;
+    if (given.empty()) first_gain = c->cv_reduction;
     given.push_back(c->name);
     consider(*c, *cand, false, thr, ch);
   }
@@ -295,7 +304,10 @@ Considered LoopSearch::evaluate(const CandidateResult& c, const Candidate& cand,
   const auto prog = [&](const std::string& m) { progress(o, m); };
   Considered r;
   r.trials = try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by,
-                       c.cell_group, &trials_done, c.probe_input);
+                       c.cell_group, &trials_done, c.probe_input, far_mode ? o.far_max_params : -1);
+  if (far_mode)  // the far rule's steps: simple forms only (LoopOptions::far_max_params)
+    for (auto& t : r.trials)
+      if (t.q > o.far_max_params) t.passed = false;
   r.keep = choose_form(r.trials, res.folds);
   Step& s = r.s;
   s.variable = c.name;

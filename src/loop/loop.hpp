@@ -19,9 +19,10 @@
 //              a lower held-out error and the minimum effect; the simplest
 //              form within one standard error of the best is kept (forms.hpp);
 //              the candidate whose form predicts held-out data best is added;
-//   far        (opt-in, --far-ratio) a round with no step while the held-out RMS is above
-//              far_ratio x the measured replicate noise gives the candidate
-//              with the largest held-out gain its forms, significant or not;
+//   far        (--far-ratio, default 2) a round with no step while the held-out RMS is above
+//              far_ratio x the measured replicate noise gives the candidates
+//              with the largest held-out gain (up to 3; after the first, those
+//              with at least half its gain) their forms, significant or not;
 //              its step must take at least far_share of the excess MSE over
 //              the noise (the data show something is missing; the screen may
 //              lack the power to say which column in a cell of few tests);
@@ -89,20 +90,33 @@ struct LoopOptions {
   /// something is missing; the permutation screen, there to keep a null data
   /// set without a step, can lack the power to say which column when the
   /// effect lives in a cell of a dozen tests (heldout_record.md, h50-far).
-  /// Opt-in (`--far-ratio 2`: the goal's own line, detected = held-out RMS
-  /// within 2 x the noise); 0, the default, is off.  Measured against the
-  /// house bar twice and not made the default: three contenders +4 of 80 at
-  /// 1.40 x CPU, one contender +1 of 80 at 1.07 x, no set lost and no alarm in
-  /// 352 sets (heldout_record.md, h50-far).  Without the screen's family-wise protection such a step must
+  /// On by default (`--far-ratio 2`: the goal's own line, detected = held-out
+  /// RMS within 2 x the noise; 0 turns it off).  Measured against the house
+  /// bar three times (heldout_record.md h50-far, h50-fardefault): three
+  /// contenders +4 of 80 at 1.40 x CPU, one contender +1 of 80 at 1.07 x; no
+  /// set lost and no alarm in 400 sets.  Without the screen's family-wise
+  /// protection such a step must
   /// also explain the main part of what is missing: its held-out MSE gain at
   /// least far_share of the excess MSE over the noise, rms^2 - sigma^2 (a
   /// decoy picking up a little structure takes a few per cent of it).
-  double far_ratio = 0.0;
+  double far_ratio = 2.0;
   double far_share = 0.5;
-  /// Candidates the rule gives their forms, by held-out gain (each costs its
-  /// forms: 0.5-1.9 s a form on an 889-row set; three made the rule's check
-  /// run 1.40 x main's CPU, heldout_record.md h50-far).
-  int far_contenders = 1;
+  /// Candidates the rule gives their forms, by held-out gain, at most
+  /// far_contenders; one after the first only when its gain is at least
+  /// far_gain_share x the first's (each costs its forms, 0.5-1.9 s a form on
+  /// an 889-row set: three for every round made the rule's check run 1.40 x
+  /// main's CPU, heldout_record.md h50-far; a gain half the best's is not a
+  /// contender for the same structure).
+  int far_contenders = 3;
+  double far_gain_share = 0.5;
+  /// The far rule's step has at most this many parameters (its forms with
+  /// more fail a gate).  The screen has not vouched for the column, and a
+  /// many-parameter form (a 5-dof smooth per direction: 25) absorbs structure
+  /// that is not the column's: on the development sets 4 of the 6 far steps
+  /// above 9 parameters were decoys, and each made every later form slower
+  /// (one check set 262 s against 0.5 s; heldout_record.md, h50-farsimple).
+  /// 9: a 3-dof smooth per group of a three-group input (pin, speed).
+  int far_max_params = 9;
   /// Opt-in (--cell-probes; development, not yet scored on enough data): the
   /// screen's one-cell sub-probes and the forms confined to one cell.
   bool cell_probes = false;

@@ -1,8 +1,9 @@
 // The far-from-noise rule (LoopOptions::far_ratio, far_share; loop.cpp
 // forward_round), on wild development sets (spent seeds, heldout_record.md
 // h50-cvperm and h50-far), written as a lab file and read back as the CLI
-// reads it, stand-in maps, the loop's defaults otherwise (the rule is opt-in:
-// far_ratio 2 is set here, the default is 0).  Expected answers:
+// reads it, stand-in maps, the loop's defaults otherwise (far_ratio 2, three
+// contenders gated by half the first's gain, since h50-fardefault; the cases
+// set far_ratio themselves, -1 keeps the default).  Expected answers:
 //  - set 57600044 (wild interaction: mu + 0.1 a g of ra_strip_um at speed 10
 //    mm/s only, k 5.7, noise 8 N): the permutation screen passes no column
 //    (ra_strip_um p 0.003 against 0.05 / 31), so with far_ratio 0 the loop adds
@@ -15,6 +16,14 @@
 //    than half of the excess MSE over the noise; every later candidate takes
 //    less, so the rule adds exactly one step (three contenders and no share
 //    gate took six, five of them decoys: heldout_record.md, h50-far).
+//  - the default options are the rule on (far_ratio 2): set 57600044 with
+//    LoopOptions{} untouched gives ra_strip_um as above (main before
+//    h50-fardefault: no step).
+//  - set 51400034 (wild test-level, one supporting test, noise 8 N; a
+//    development set of h50-farsimple): with far_max_params 100 the rule's
+//    step is a 25-parameter smooth per direction of a decoy column
+//    (oil_age_days); with the default 9, no step the rule takes has more
+//    than 9 parameters.
 //  - null set 57600005 (noise 3 N): the base model's held-out RMS is within
 //    1.25 x the noise, so the rule cannot fire: no step with a far note.
 #define BOOST_TEST_MODULE loop_far
@@ -35,12 +44,13 @@ struct Run {
   double noise = 0;
 };
 
-Run loop_on_wild(const std::string& cls, double noise, std::uint64_t seed, double far_ratio) {
+Run loop_on_wild(const std::string& cls, double noise, std::uint64_t seed, double far_ratio, int far_max_params = -1) {
   BlindTruth t;
   const Dataset d = drawbend::test::lab_file(synthesize_wild({cls, noise, seed}, t), "far_" + std::to_string(seed) + ".csv");
   const MapLibrary maps = drawbend::test::stand_in_maps(d);
   LoopOptions o;
-  o.far_ratio = far_ratio;
+  if (far_ratio >= 0) o.far_ratio = far_ratio;
+  if (far_max_params >= 0) o.far_max_params = far_max_params;
   return {run_loop(make_design(d, maps), o), noise};
 }
 
@@ -63,12 +73,34 @@ BOOST_AUTO_TEST_CASE(one_cell_effect_found_by_the_rule) {
   BOOST_TEST(on.r.cv.back().rms / on.noise <= 2.0);
 }
 
+BOOST_AUTO_TEST_CASE(the_rule_is_the_default) {
+  BOOST_TEST(LoopOptions{}.far_ratio == 2.0);
+  const Run def = loop_on_wild("interaction", 8.0, 57600044, -1.0);
+  BOOST_REQUIRE(!def.r.steps.empty());
+  BOOST_TEST(def.r.steps[0].variable == "ra_strip_um");
+  BOOST_TEST(!def.r.steps[0].far_note.empty());
+  BOOST_TEST(def.r.cv.back().rms / def.noise <= 2.0);
+}
+
 BOOST_AUTO_TEST_CASE(the_share_gate_stops_decoys) {
   const Run on = loop_on_wild("interaction", 3.0, 57600002, 2.0);
   BOOST_REQUIRE(!on.r.steps.empty());
   BOOST_TEST(on.r.steps[0].variable == "ra_strip_um");
   BOOST_TEST(far_steps(on.r) == 1);
   BOOST_TEST(on.r.steps.size() == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(the_rule_takes_simple_forms_only) {
+  BOOST_TEST(LoopOptions{}.far_max_params == 9);
+  const Run wide = loop_on_wild("test-level", 8.0, 51400034, -1.0, 100);
+  int widest = 0;
+  for (const auto& s : wide.r.steps)
+    if (!s.far_note.empty()) widest = std::max(widest, static_cast<int>(s.params.size()));
+  BOOST_TEST(widest == 25);
+  const Run simple = loop_on_wild("test-level", 8.0, 51400034, -1.0);
+  BOOST_TEST(far_steps(simple.r) >= 1);
+  for (const auto& s : simple.r.steps)
+    if (!s.far_note.empty()) BOOST_TEST(s.params.size() <= 9u);
 }
 
 BOOST_AUTO_TEST_CASE(null_set_never_fires) {
