@@ -91,10 +91,12 @@ struct LoopOptions {
   /// set without a step, can lack the power to say which column when the
   /// effect lives in a cell of a dozen tests (heldout_record.md, h50-far).
   /// On by default (`--far-ratio 2`: the goal's own line, detected = held-out
-  /// RMS within 2 x the noise; 0 turns it off).  Measured against the house
-  /// bar three times (heldout_record.md h50-far, h50-fardefault): three
-  /// contenders +4 of 80 at 1.40 x CPU, one contender +1 of 80 at 1.07 x; no
-  /// set lost and no alarm in 400 sets.  Without the screen's family-wise
+  /// RMS within 2 x the noise; 0 turns it off).  Checked in this form on 240
+  /// fresh sets against a paired bar written before the run (heldout_record.md,
+  /// h50-fardef2): 9 effect sets gained and none lost of 200 (wild 95 -> 104
+  /// of 120, generator 1 unchanged), 0 alarms of 40 null sets, 1.17 x elapsed;
+  /// earlier forms: +4, +1, +3 and +1 of 80 (h50-far, h50-fardefault,
+  /// h50-farsimple), never a set lost or an alarm.  Without the screen's family-wise
   /// protection such a step must
   /// also explain the main part of what is missing: its held-out MSE gain at
   /// least far_share of the excess MSE over the noise, rms^2 - sigma^2 (a
