@@ -209,7 +209,7 @@ bool LoopSearch::forward_round() {
     if (ch.found && gain >= o.far_share * excess)
       ch.best_step.far_note = "no candidate passed the permutation screen and its forms, while the held-out RMS " +
                               fmt(cur.rms, 4) + " N was " + fmt(cur.rms / sigma, 3) + " x the replicate noise (above " +
-                              fmt(o.far_ratio) + " x): the " + std::to_string(o.far_contenders) + " candidate(s) "
+                              fmt(o.far_ratio) + " x): the " + std::to_string(far.size()) + (far.size() == 1 ? " candidate" : " candidates") + " "
                               "with the largest held-out gain (after the first, those with at least " + fmt(100 * o.far_gain_share) +
                               " % of its gain) were given their forms; this one's passed the F test, "
                               "lowered the held-out error, reached the minimum effect, has at most " + std::to_string(o.far_max_params) +
@@ -305,7 +305,11 @@ Considered LoopSearch::evaluate(const CandidateResult& c, const Candidate& cand,
   Considered r;
   r.trials = try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by,
                        c.cell_group, &trials_done, c.probe_input, far_mode ? o.far_max_params : -1);
-  if (far_mode)  // the far rule's steps: simple forms only (LoopOptions::far_max_params)
+  // The far rule's steps: simple forms only (LoopOptions::far_max_params).
+  // try_forms skips a plan before fitting by the friction parameters it adds;
+  // the joint fit's own parameters (a bending channel's) are known only after
+  // it, in q: so the cap is applied again here.
+  if (far_mode)
     for (auto& t : r.trials)
       if (t.q > o.far_max_params) t.passed = false;
   r.keep = choose_form(r.trials, res.folds);
