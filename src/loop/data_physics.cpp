@@ -40,8 +40,15 @@ std::vector<Problem> check_data_physics(const Dataset& d) {
   // kind, the direction and the lubricant (a test_id filled down the column made
   // every row one "test", and the replicate noise came from rows on different pins,
   // 2026-12-04: "the model explains the data to the noise level", exit 0).
+  // In file order (the rows come in canonical order, measured.hpp): the
+  // message names a test's first line in the file and its first line that
+  // disagrees with it.
+  std::vector<const Sample*> by_line;
+  for (const auto& s : d.rows) by_line.push_back(&s);
+  std::stable_sort(by_line.begin(), by_line.end(), [](const Sample* a, const Sample* b) { return a->line < b->line; });
   std::map<std::string, const Sample*> first;
-  for (const auto& s : d.rows) {
+  for (const Sample* sp : by_line) {
+    const Sample& s = *sp;
     const Sample*& f = first[s.test_id];
     if (!f) {
       f = &s;

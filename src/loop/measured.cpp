@@ -1,6 +1,7 @@
 // Reading and writing the measured-data format; see measured.hpp.
 #include "loop/measured.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -306,6 +307,58 @@ struct MeasuredReader {
 
 }  // namespace
 
+namespace {
+
+// Natural order of ids: runs of digits compare as numbers (leading zeros
+// aside), other runs as text; equal so far, plain text order decides.
+int natural_compare(const std::string& a, const std::string& b) {
+  size_t i = 0, j = 0;
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  while (i < a.size() && j < b.size()) {
+    if (digit(a[i]) && digit(b[j])) {
+      size_t i1 = i, j1 = j;
+      while (i1 < a.size() && digit(a[i1])) ++i1;
+      while (j1 < b.size() && digit(b[j1])) ++j1;
+      size_t i0 = i, j0 = j;  // leading zeros
+      while (i0 + 1 < i1 && a[i0] == '0') ++i0;
+      while (j0 + 1 < j1 && b[j0] == '0') ++j0;
+      if (i1 - i0 != j1 - j0) return i1 - i0 < j1 - j0 ? -1 : 1;
+      if (const int c = a.compare(i0, i1 - i0, b, j0, j1 - j0)) return c < 0 ? -1 : 1;
+      i = i1, j = j1;
+    } else {
+      if (a[i] != b[j]) return static_cast<unsigned char>(a[i]) < static_cast<unsigned char>(b[j]) ? -1 : 1;
+      ++i, ++j;
+    }
+  }
+  if (i < a.size() || j < b.size()) return i < a.size() ? 1 : -1;
+  const int c = a.compare(b);
+  return c < 0 ? -1 : c > 0 ? 1 : 0;
+}
+
+// Numbers in a total order: NaN (a column the file lacks) before every number.
+int number_compare(double a, double b) {
+  const bool na = std::isnan(a), nb = std::isnan(b);
+  if (na || nb) return na == nb ? 0 : na ? -1 : 1;
+  return a < b ? -1 : a > b ? 1 : 0;
+}
+
+}  // namespace
+
+void canonical_row_order(Dataset& d) {
+  const auto less = [](const Sample& a, const Sample& b) {
+    if (const int c = natural_compare(a.test_id, b.test_id)) return c < 0;
+    for (const auto& [x, y] : {std::pair{a.time_s, b.time_s}, std::pair{a.sliding_mm, b.sliding_mm},
+                               std::pair{a.back_tension_N, b.back_tension_N}, std::pair{a.pin_d_mm, b.pin_d_mm},
+                               std::pair{a.direction_deg, b.direction_deg}, std::pair{a.speed_mm_s, b.speed_mm_s},
+                               std::pair{a.outlet_force_N, b.outlet_force_N}})
+      if (const int c = number_compare(x, y)) return c < 0;
+    if (a.rotating != b.rotating) return !a.rotating;
+    if (a.lubricant != b.lubricant) return a.lubricant < b.lubricant;
+    return a.extra < b.extra;  // rows equal in every cell are dropped as duplicates
+  };
+  std::stable_sort(d.rows.begin(), d.rows.end(), less);
+}
+
 Dataset read_measured(const std::string& path) { return parse_measured(read_file(path), path); }
 
 Dataset parse_measured(const std::string& text, const std::string& path) {
@@ -326,6 +379,7 @@ Dataset parse_measured(const std::string& text, const std::string& path) {
   }
   if (r.header.empty()) r.problem(0, "", "no header row (file empty or only comments)");
   nonfinite_extras(r.d);
+  canonical_row_order(r.d);
   return std::move(r.d);
 }
 

@@ -64,10 +64,24 @@ extern const std::vector<std::string> kRequiredColumns;
 std::optional<std::vector<double>> numeric_extra(const Dataset& d, size_t e);
 
 /// Read a data file.  Only an unreadable file throws (InputError); everything
-/// else becomes a Problem.
+/// else becomes a Problem.  The usable rows come in canonical order
+/// (canonical_row_order), not the file's.
 Dataset read_measured(const std::string& path);
 /// The same from text already read (`path` names it in messages).
 Dataset parse_measured(const std::string& text, const std::string& path);
+
+/// The rows in an order set by their content alone, so that a result is the
+/// same whatever order the file's rows came in (the loop's folds, its
+/// permutation draws, its cells and levels and every sum follow the row
+/// order): by test_id in natural order ("T2" before "T10": digit runs compared
+/// as numbers), then within a test by time_s, sliding_distance_mm and
+/// back_tension_N, then by the other cells.  A file already in that order
+/// (a lab's tests in id order, each in time order) keeps its order.
+/// Sample::line still names each row's file line; where the file's order is
+/// itself information, the line is read: the run position within a test for
+/// the replicate noise when the file has neither time_s nor
+/// sliding_distance_mm (noise.hpp), and the lines a message names.
+void canonical_row_order(Dataset& d);
 
 /// Write rows in the same format (comments first, then header, then rows).
 void write_measured(const std::string& path, const Dataset& d);

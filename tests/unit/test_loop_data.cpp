@@ -3,7 +3,12 @@
 //  - tests/loop/bad_rows.csv has 10 data rows; lines 6-12 each carry one kind of
 //    bad data (unparseable, NaN, duplicate of line 5, outlet < back tension on a
 //    fixed pin, negative force, ragged, unknown pin kind): 7 problems, each
-//    naming file:line and (where it applies) the column; 3 rows kept.
+//    naming file:line and (where it applies) the column; 3 rows kept, in
+//    canonical order (test_id in natural order, then time, sliding, back
+//    tension): f2 (line 14), r1 at 1500 N (line 5), r1 at 1700 N (line 13).
+//  - canonical order: the same rows in any file order parse to the same
+//    sequence; ids "T2" < "T10" < "t10b" (digit runs as numbers, "T" < "t");
+//    within a test by time_s.
 //  - a file without outlet_force_N: one "required column missing" problem, 0 rows.
 //  - FE map directory with pin_12.7mm.csv, pressures 1 and 2 MPa, half-model
 //    areas 1 mm^2, reference 1000 N: full-strip S1 = 2(1+2) = 6 N,
@@ -14,6 +19,8 @@
 #include <boost/test/unit_test.hpp>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "core/csv.hpp"
 #include "loop/maps.hpp"
@@ -47,7 +54,32 @@ BOOST_AUTO_TEST_CASE(bad_rows_reported_in_one_pass) {
   BOOST_TEST(d.problems[0].str().find("bad_rows.csv:6: column 'outlet_force_N'") != std::string::npos);
   BOOST_TEST(d.extra_columns.size() == 1u);
   BOOST_TEST(d.extra_columns[0] == "test_order");
-  BOOST_TEST(d.rows[2].line == 14);
+  BOOST_TEST(d.rows[0].line == 14);
+  BOOST_TEST(d.rows[1].line == 5);
+  BOOST_TEST(d.rows[2].line == 13);
+}
+
+BOOST_AUTO_TEST_CASE(rows_in_canonical_order_whatever_the_file_order) {
+  const std::string head = "test_id,pin_diameter_mm,pin,direction_deg,speed_mm_s,lubricant,back_tension_N,outlet_force_N,time_s,coil\n";
+  const std::vector<std::string> rows = {
+      "T10,12.7,fixed,0,25.4,oil,1500,1800,2.0,A\n", "T2,12.7,fixed,0,25.4,oil,1600,1900,1.0,B\n",
+      "T10,12.7,fixed,0,25.4,oil,1400,1750,1.0,A\n", "t10b,12.7,fixed,0,25.4,oil,1500,1850,0.5,C\n",
+      "T2,12.7,fixed,0,25.4,oil,1500,1810,2.0,B\n"};
+  std::string forward = head, backward = head;
+  for (size_t i = 0; i < rows.size(); ++i) forward += rows[i], backward += rows[rows.size() - 1 - i];
+  const Dataset a = parse_measured(forward, "forward.csv"), b = parse_measured(backward, "backward.csv");
+  BOOST_REQUIRE(a.rows.size() == 5u);
+  BOOST_REQUIRE(b.rows.size() == 5u);
+  const std::vector<std::pair<std::string, double>> expect = {
+      {"T2", 1.0}, {"T2", 2.0}, {"T10", 1.0}, {"T10", 2.0}, {"t10b", 0.5}};
+  for (size_t i = 0; i < 5; ++i) {
+    BOOST_TEST(a.rows[i].test_id == expect[i].first);
+    BOOST_TEST(a.rows[i].time_s == expect[i].second);
+    BOOST_TEST(b.rows[i].test_id == a.rows[i].test_id);
+    BOOST_TEST(b.rows[i].back_tension_N == a.rows[i].back_tension_N);
+    BOOST_TEST(b.rows[i].extra == a.rows[i].extra);
+    BOOST_TEST(b.rows[i].line == 8 - a.rows[i].line);  // each row keeps its own file line (2-6)
+  }
 }
 
 BOOST_AUTO_TEST_CASE(missing_required_column) {
