@@ -26,6 +26,10 @@
 //    than 9 parameters.
 //  - null set 57600005 (noise 3 N): the base model's held-out RMS is within
 //    1.25 x the noise, so the rule cannot fire: no step with a far note.
+// The sanitizer step (main_run_only.hpp) runs the first and the last case:
+// the rule's path, on and off, and a set where it cannot fire.  The other
+// three run the same path on other sets and options (166 of the 208 s this
+// test took there, 2026-12-05); the main run checks their answers.
 #define BOOST_TEST_MODULE loop_far
 #include <boost/test/unit_test.hpp>
 
@@ -34,6 +38,7 @@
 #include "loop/measured.hpp"
 #include "loop/wild_synth.hpp"
 #include "lab_file.hpp"
+#include "main_run_only.hpp"
 
 using namespace drawbend::loop;
 
@@ -73,7 +78,7 @@ BOOST_AUTO_TEST_CASE(one_cell_effect_found_by_the_rule) {
   BOOST_TEST(on.r.cv.back().rms / on.noise <= 2.0);
 }
 
-BOOST_AUTO_TEST_CASE(the_rule_is_the_default) {
+BOOST_AUTO_TEST_CASE(the_rule_is_the_default, *drawbend::test::main_run_only()) {
   BOOST_TEST(LoopOptions{}.far_ratio == 2.0);
   const Run def = loop_on_wild("interaction", 8.0, 57600044, -1.0);
   BOOST_REQUIRE(!def.r.steps.empty());
@@ -82,7 +87,7 @@ BOOST_AUTO_TEST_CASE(the_rule_is_the_default) {
   BOOST_TEST(def.r.cv.back().rms / def.noise <= 2.0);
 }
 
-BOOST_AUTO_TEST_CASE(the_share_gate_stops_decoys) {
+BOOST_AUTO_TEST_CASE(the_share_gate_stops_decoys, *drawbend::test::main_run_only()) {
   const Run on = loop_on_wild("interaction", 3.0, 57600002, 2.0);
   BOOST_REQUIRE(!on.r.steps.empty());
   BOOST_TEST(on.r.steps[0].variable == "ra_strip_um");
@@ -90,7 +95,7 @@ BOOST_AUTO_TEST_CASE(the_share_gate_stops_decoys) {
   BOOST_TEST(on.r.steps.size() == 1u);
 }
 
-BOOST_AUTO_TEST_CASE(the_rule_takes_simple_forms_only) {
+BOOST_AUTO_TEST_CASE(the_rule_takes_simple_forms_only, *drawbend::test::main_run_only()) {
   BOOST_TEST(LoopOptions{}.far_max_params == 9);
   const Run wide = loop_on_wild("test-level", 8.0, 51400034, -1.0, 100);
   int widest = 0;
