@@ -7,8 +7,9 @@ set -euo pipefail
 print_only=0
 for a in "$@"; do if [ "$a" = "--print" ]; then print_only=1; fi; done
 # clang and libclang-rt-dev: libFuzzer for the parser fuzzers (tests/fuzz); with
-# libomp-dev (OpenMP for clang) also the sanitizer build (tests/sanitize/run.sh).
-PKGS=(cmake g++ make libeigen3-dev libboost-test-dev libtomlplusplus-dev gnuplot-nox pandoc clang libclang-rt-dev libomp-dev)
+# libomp-dev (OpenMP for clang) also the sanitizer build (tests/sanitize/run.sh);
+# lld links both (a sixth less CPU for the sanitizer build; without it GNU ld does).
+PKGS=(cmake g++ make libeigen3-dev libboost-test-dev libtomlplusplus-dev gnuplot-nox pandoc clang libclang-rt-dev libomp-dev lld)
 # slurmctld, slurmd, slurm-client and munge: the test cluster.executors starts
 # a single-node Slurm on this machine to run cases through the slurm executor
 # (tests/cluster/; never started outside that test).

@@ -11,7 +11,10 @@ if ! command -v clang++ >/dev/null; then
   echo "fuzz: SKIPPED: clang++ not found (scripts/install-deps.sh installs clang)"
   exit 77
 fi
-cmake -S "$src/tests/fuzz" -B "$bld" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug >/dev/null
+ldflags=""  # lld when installed, as tests/sanitize/run.sh
+command -v ld.lld >/dev/null && ldflags="-fuse-ld=lld"
+cmake -S "$src/tests/fuzz" -B "$bld" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug \
+  -DCMAKE_EXE_LINKER_FLAGS="$ldflags" >/dev/null
 cmake --build "$bld" -j "$(nproc 2>/dev/null || echo 2)" >/dev/null
 # fuzz_loop writes its outputs under the temporary folder: keep them in the
 # build folder (emptied each time), not one /tmp/fuzz_loop_PID per run.

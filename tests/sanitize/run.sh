@@ -24,8 +24,14 @@ if [ -f "$bld/CMakeCache.txt" ] && ! grep -qx "CMAKE_CXX_COMPILER:[A-Z]*=$cxx" "
 fi
 echo "sanitize: compiler $cxx"
 t0=$(date +%s)
+# Linked by lld when installed: GNU ld spent about 155 of the 575 task-seconds
+# of this build in linking the instrumented tests; with lld the whole build took
+# 7.9 CPU-min against 9.5 (4.05 min against 4.9 on 2 cores, 2026-12-05, AMD EPYC,
+# nothing else running).
+ldflags=""
+command -v ld.lld >/dev/null && ldflags="-fuse-ld=lld"
 cmake -S "$src" -B "$bld" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Debug -DDRAWBEND_SANITIZE=ON \
-  -DDRAWBEND_TESTS_ONLY=ON >/dev/null
+  -DDRAWBEND_TESTS_ONLY=ON -DCMAKE_EXE_LINKER_FLAGS="$ldflags" >/dev/null
 cmake --build "$bld" --target sanitize_tests -j "$jobs" 2>&1 | grep -E "error|warning|Error" || true
 cmake --build "$bld" --target sanitize_tests -j "$jobs" >/dev/null  # fails the test if the build failed
 t1=$(date +%s)
