@@ -65,4 +65,4 @@ install: build
 	@cmake --install $(BUILD) --prefix $(PREFIX)
 
 clean:
-	@rm -rf $(BUILD) build-full build-asan build-fuzz
+	@rm -rf $(BUILD) build-full build-asan build-fuzz build-fuzz-loop

@@ -41,6 +41,7 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export DRAWBEND_SANITIZER_RUN=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$src/tests/sanitize/ubsan.supp
 cd "$bld"
+rm -rf tests/fuzz_replay_tmp/*  # the corpus replays' scratch folders (fuzz_replay.*, one per process)
 # Not here: the cluster tests (their driver is not in sanitize_tests, and they
 # start Slurm daemons) and the user-level example tests that run whole FE cases
 # (help examples and the model_loop.md check that reads their output, result.toml,
