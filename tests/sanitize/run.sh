@@ -6,7 +6,8 @@
 # Configures BUILD_DIR (normally build-asan beside build) with
 # DRAWBEND_SANITIZE=ON and DRAWBEND_TESTS_ONLY=ON, builds only what the tests
 # need (target sanitize_tests) and runs the unit tests, the cheap verification
-# problems (label asan) and the robustness tests (drawbend on broken decks).
+# problems and the fuzz corpora's replays (label asan) and the robustness tests
+# (drawbend on broken decks).
 # Any sanitizer report fails the run (-fno-sanitize-recover=all, ASan aborts;
 # halt_on_error for the one check that recovers, float-cast-overflow, so that
 # ubsan.supp can name a library's known case).
