@@ -76,9 +76,11 @@ struct TrialCache {
 double f_test(const JointFit& a, const JointFit& b);
 
 /// The model s with effect k on `variable` added (depletion and the saturating
-/// exponential get their length on a grid by the full-data fit).
+/// exponential get their length on a grid by the full-data fit), its shape
+/// times the centred model-input quantity `times` when that is not empty
+/// (Effect::times; the grid is searched with the multiplier on).
 ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const std::string& variable,
-                      const std::string& by = "");
+                      const std::string& by = "", const std::string& times = "");
 
 /// Every applicable form for candidate c, each cross-validated and tested.
 /// cell_by / cell_group (the screen's strongest one-group probe, -1: none)

@@ -87,7 +87,7 @@ ModelSpec without(const ModelSpec& spec, const Step& s, bool bending_linear) {
   for (const auto& e : spec.effects) {
     bool mine = false;
     for (const auto& m : s.added) mine = mine || (m.kind == e.kind && m.variable == e.variable && m.by == e.by && m.cell == e.cell && m.cell_offset == e.cell_offset &&
-                            m.bend_scaled == e.bend_scaled);
+                            m.bend_scaled == e.bend_scaled && m.times == e.times && m.level_basis == e.level_basis);
     if (!mine) t.effects.push_back(e);
   }
   for (const auto& m : s.added)
