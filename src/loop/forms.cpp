@@ -207,8 +207,9 @@ void FormPlans::numeric(const std::vector<std::string>& bys) {
 // rougher or warmer surface changes mu's sensitivity, not mu itself): the
 // column's shape times the centred nominal pressure (Eq. 2.2 at the back
 // tension: fixed by the design, not by the measured force) or the centred
-// log speed (Effect::times).  The shape: a slope and a 3-dof smooth of a
-// numeric column; its levels (one slope change per level but the first) for
+// log speed (Effect::times).  The shape: a slope, a step (its threshold on
+// generic_step's grid, the multiplier on) and a 3-dof smooth of a numeric
+// column; its levels (one slope change per level but the first) for
 // a categorical column or a numeric one of 3 to 8 replicated values
 // (`levels`).  Held-out error and the one-standard-error rule choose among
 // them and the other forms.
@@ -231,7 +232,9 @@ void FormPlans::products(bool levels) {
     for (size_t i = 0; i < m.size(); ++i)
       if (!d.rows[i].rotating) seen.insert(m[i]);
     if (seen.size() < 2) continue;  // the quantity does not vary on the fixed-pin rows
-    if (numeric) plans.push_back({{{EffectKind::generic_linear, "", 0, -1, false, "", false, input}}});
+    if (numeric)
+      for (EffectKind k : {EffectKind::generic_linear, EffectKind::generic_step})
+        if (applicable(d, spec, k, c.name)) plans.push_back({{{k, "", 0, -1, false, "", false, input}}});
     if (numeric && applicable(d, spec, EffectKind::generic_smooth, c.name))
       plans.push_back({{{EffectKind::generic_smooth, "", 3, -1, false, "", false, input}}});
     if (levels)
