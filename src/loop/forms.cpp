@@ -203,6 +203,18 @@ void FormPlans::numeric(const std::vector<std::string>& bys) {
   force_and_bending(distinct);
 }
 
+// What a product form (Effect::times) means, for the report.
+std::string product_meaning(EffectKind k, bool levels, const std::string& times) {
+  const std::string g = levels ? "one value per level of x but the first"
+                        : k == EffectKind::generic_linear ? "a slope in x"
+                        : k == EffectKind::generic_step  ? "a step in x at a threshold chosen on a grid"
+                                                         : "a natural cubic spline of x";
+  const std::string q = times == kNominalPressure ? "q the nominal pressure F_back / (R w) (MPa, Eq. 2.2 at the back tension)"
+                                                  : times == kLnSpeed ? "q = ln of the speed (mm/s)" : "q = " + times;
+  return "x changes mu's slope in q: mu (1 + g(x) (q - q_mean)), g " + g + " (centred), " + q +
+         "; a rougher or warmer surface changes how mu depends on pressure or speed; no physics claimed for g";
+}
+
 // A column that changes how mu depends on the pressure or on the speed (a
 // rougher or warmer surface changes mu's sensitivity, not mu itself): the
 // column's shape times the centred nominal pressure (Eq. 2.2 at the back
@@ -352,8 +364,9 @@ FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c
                                   (cell >= 0 && offset ? ", with its own factor" : "") + ")") +
               (scaled ? " (scaled with the pin's bending force)" : "") +
               (times.empty() ? "" : " (times the centred " + times + ")");
-    if (t.meaning.find(effect_meaning(k)) == std::string::npos)  // a pair's mains: the same meaning once
-      t.meaning += (t.meaning.empty() ? "" : "; ") + effect_meaning(k);
+    const std::string meaning = times.empty() ? effect_meaning(k) : product_meaning(k, levels, times);
+    if (t.meaning.find(meaning) == std::string::npos)  // a pair's mains: the same meaning once
+      t.meaning += (t.meaning.empty() ? "" : "; ") + meaning;
     (acts_on_bending(k) ? bend : fric) = true;
   }
   t.channel = bend && fric ? "both" : bend ? "bending" : "friction";
