@@ -127,6 +127,7 @@ struct FormPlans {
   const ModelSpec& spec;
   const Candidate& c;
   std::vector<Plan> plans;
+  bool with_products = false;  // LoopOptions::product_forms: products() plans its forms
   void add(EffectKind k, const std::string& by = "") {
     if (applicable(d, spec, k, c.name)) plans.push_back({{{k, by}}});
   }
@@ -226,6 +227,7 @@ std::string product_meaning(EffectKind k, bool levels, const std::string& times)
 // (`levels`).  Held-out error and the one-standard-error rule choose among
 // them and the other forms.
 void FormPlans::products(bool levels) {
+  if (!with_products) return;
   const bool numeric = c.kind == "column" && applicable(d, spec, EffectKind::generic_linear, c.name);
   std::vector<std::string> names;
   if (levels) d.levels(c.name, &names);
@@ -491,8 +493,9 @@ double mse_diff_se(const CvResult& a, const CvResult& b, const Folds& f) {
 std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
                                  const CvResult& cur, const JointFit& cur_joint, double thr, double min_gain_N,
                                  const std::function<void(const std::string&)>& progress, const std::string& cell_by,
-                                 int cell_group, TrialCache* cache, const std::string& probe_input, int max_q) {
-  FormPlans fp{d, spec, c, {}};
+                                 int cell_group, TrialCache* cache, const std::string& probe_input, int max_q,
+                                 bool products) {
+  FormPlans fp{d, spec, c, {}, products};
   std::vector<Plan>& plans = fp.plans;
   for (EffectKind k : effects_for(c.name))
     if (applicable(d, spec, k, c.name)) plans.push_back({{{k, ""}}});
