@@ -148,11 +148,15 @@ std::vector<double> Design::values(const std::string& column) const {
   }
   std::vector<double> x(rows.size(), 0.0);
   // Which column, decided once (not per row).
-  enum class C { time, sliding, back, speed, direction, pin_d, inv_r, extra };
+  // nominal_pressure_MPa: Eq. 2.2 at the back tension (F_x = F_y, no friction),
+  // fixed by the test's design, not by the measured force; ln_speed_mm_s: the
+  // log of the speed (the products of forms.cpp's FormPlans::products).
+  enum class C { time, sliding, back, speed, direction, pin_d, inv_r, nominal_p, ln_speed, extra };
   const C c = column == "time_s" ? C::time : column == "sliding_distance_mm" ? C::sliding
             : column == "back_tension_N" ? C::back : column == "speed_mm_s" ? C::speed
             : column == "direction_deg" ? C::direction : column == "pin_diameter_mm" ? C::pin_d
-            : column == "inv_R_per_mm" ? C::inv_r : C::extra;
+            : column == "inv_R_per_mm" ? C::inv_r : column == kNominalPressure ? C::nominal_p
+            : column == kLnSpeed ? C::ln_speed : C::extra;
   const int k = c == C::extra ? data->extra_index(column) : -1;
   if (c == C::extra && k < 0 && !rows.empty()) throw InputError("no numeric column '" + column + "' for a linear term");
   std::vector<size_t> empty;  // rows with an empty cell in the column (missing values)
@@ -167,6 +171,14 @@ std::vector<double> Design::values(const std::string& column) const {
       case C::direction: v = s.direction_deg; break;
       case C::pin_d: v = s.pin_d_mm; break;
       case C::inv_r: v = 2 / s.pin_d_mm; break;
+      case C::nominal_p:
+        v = analysis::average_pressure(s.back_tension_N, s.back_tension_N, s.pin_d_mm / 2, kStripWidthMm,
+                                       analysis::ForceBasis::full_strip);
+        break;
+      case C::ln_speed:
+        if (!(s.speed_mm_s > 0)) throw InputError("column 'speed_mm_s' is not positive: no log-speed term");
+        v = std::log(s.speed_mm_s);
+        break;
       default:
         if (s.extra[k].empty()) {
           empty.push_back(i);

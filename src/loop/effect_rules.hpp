@@ -145,12 +145,16 @@ struct Smooth {
     for (int j = 0; j < a.e.n_basis; ++j) o[j] = g * a.e.n_basis + j;
     return a.e.n_basis;
   }
-  static void name(const Design&, const Effect& e, const Names&, int s, Names& n) {
+  static void name(const Design&, const Effect& e, const Names& level_names, int s, Names& n) {
     const int G = e.by.empty() ? 1 : own_groups(e);
     for (int g = 0; g < G; ++g)
       for (int j = 0; j < e.n_basis; ++j)
-        n[s + g * e.n_basis + j] = "beta spline " + std::to_string(j + 1) + " of " + e.variable +
-                                   (e.by.empty() ? "" : " [" + group_text(e, g) + "]");
+        n[s + g * e.n_basis + j] =
+            (e.level_basis && static_cast<size_t>(j + 1) < level_names.size()
+                 ? "beta [" + e.variable + " = " + level_names[static_cast<size_t>(j + 1)] + "]"
+                 : "beta spline " + std::to_string(j + 1) + " of " + e.variable) +
+            (e.times.empty() ? "" : " times the centred " + e.times) +
+            (e.by.empty() ? "" : " [" + group_text(e, g) + "]");
   }
 };
 

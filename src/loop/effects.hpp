@@ -59,6 +59,16 @@ struct Effect {
   /// the pins' mean (Fit::bend_scale): a change of the bending force itself
   /// (thickness, yield stress) is as many per cent on every pin, not as many newtons.
   bool bend_scaled = false;
+  /// generic_linear / generic_step / generic_smooth: the shape times the
+  /// centred value of this model-input quantity (Design::values: e.g.
+  /// kNominalPressure or kLnSpeed), so the column changes mu's slope in it
+  /// (empty: no multiplier).
+  std::string times;
+  /// generic_smooth with `times`: the basis is the column's levels (an
+  /// indicator per level but the first, centred; n_basis = levels - 1), not a
+  /// spline: a categorical or few-level column that changes mu's slope in the
+  /// model input, one slope change per level.
+  bool level_basis = false;
 };
 
 std::string effect_name(EffectKind k);

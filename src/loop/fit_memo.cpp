@@ -13,7 +13,8 @@ std::string spec_key(const ModelSpec& s) {
     char lam[40];
     std::snprintf(lam, sizeof lam, "%a", e.lambda_mm);
     k << '|' << static_cast<int>(e.kind) << ',' << e.variable.size() << ':' << e.variable << ',' << lam << ','
-      << e.n_levels << ',' << e.by.size() << ':' << e.by << ',' << e.n_groups << ',' << e.n_basis << ',' << e.cell << ',' << e.bend_scaled << ',' << e.cell_offset;
+      << e.n_levels << ',' << e.by.size() << ':' << e.by << ',' << e.n_groups << ',' << e.n_basis << ',' << e.cell << ',' << e.bend_scaled << ',' << e.cell_offset
+      << ',' << e.times.size() << ':' << e.times << ',' << e.level_basis;
   }
   return k.str();
 }

@@ -81,7 +81,8 @@ std::string fits_key(const ModelSpec& s) {
     char num[96];
     std::snprintf(num, sizeof num, "|%d,%a,%d,%d,%d,%d,%d,%d,", static_cast<int>(kind), e.lambda_mm, e.n_levels,
                   e.n_groups, e.cell, e.n_basis, e.bend_scaled ? 1 : 0, e.cell_offset ? 1 : 0);
-    k += num + std::to_string(e.by.size()) + ":" + e.by + "," + (own_column ? e.variable : "");
+    k += num + std::to_string(e.by.size()) + ":" + e.by + "," + (own_column ? e.variable : "") +
+         (e.times.empty() ? "" : "," + std::to_string(e.times.size()) + "x" + e.times);
   }
   return k;
 }
@@ -112,6 +113,8 @@ struct Part {
   bool scaled = false;  // force_offset: times the pin's relative bending force
   std::string var;      // the column of the effect ("": the candidate's own)
   bool offset = false;  // one-cell forms: the cell's own factor too (Effect::cell_offset)
+  std::string times;    // Effect::times: the shape times this centred model-input quantity
+  bool levels = false;  // generic_smooth with times: the column's levels as the basis (Effect::level_basis)
 };
 struct Plan {
   std::vector<Part> parts;
@@ -124,6 +127,7 @@ struct FormPlans {
   const ModelSpec& spec;
   const Candidate& c;
   std::vector<Plan> plans;
+  bool with_products = false;  // LoopOptions::product_forms: products() plans its forms
   void add(EffectKind k, const std::string& by = "") {
     if (applicable(d, spec, k, c.name)) plans.push_back({{{k, by}}});
   }
@@ -149,6 +153,7 @@ struct FormPlans {
   void force_and_bending(const std::set<double>& distinct);
   void in_cell(const std::string& cell_by, int cell_group, int max_nb = 5);
   void split_cells(const std::string& input);
+  void products(bool levels);
 };
 
 // A categorical column: its levels, per group of a model input, on the force channel.
@@ -161,6 +166,7 @@ void FormPlans::categorical(const std::vector<std::string>& bys) {
   if (applicable(d, spec, EffectKind::force_offset, c.name))  // as many per cent of each pin's bending force
     plans.push_back({{{EffectKind::force_offset, "", 0, -1, true}}});
   if (c.levels.size() <= 4) add(EffectKind::force_offset, "pin");
+  products(c.levels.size() <= 8);
 }
 
 // A numeric column: the generic shapes, its levels (3 to 8 values), a slope
@@ -194,7 +200,61 @@ void FormPlans::numeric(const std::vector<std::string>& bys) {
     for (const auto& by : bys)
       for (int nb : {3, 5}) plans.push_back({{{EffectKind::generic_smooth, by, nb}}});
   }
+  products(some_levels(distinct));
   force_and_bending(distinct);
+}
+
+// What a product form (Effect::times) means, for the report.
+std::string product_meaning(EffectKind k, bool levels, const std::string& times) {
+  const std::string g = levels ? "one value per level of x but the first"
+                        : k == EffectKind::generic_linear ? "a slope in x"
+                        : k == EffectKind::generic_step  ? "a step in x at a threshold chosen on a grid"
+                                                         : "a natural cubic spline of x";
+  const std::string q = times == kNominalPressure ? "q the nominal pressure F_back / (R w) (MPa, Eq. 2.2 at the back tension)"
+                                                  : times == kLnSpeed ? "q = ln of the speed (mm/s)" : "q = " + times;
+  return "x changes mu's slope in q: mu (1 + g(x) (q - q_mean)), g " + g + " (centred), " + q +
+         "; a rougher or warmer surface changes how mu depends on pressure or speed; no physics claimed for g";
+}
+
+// A column that changes how mu depends on the pressure or on the speed (a
+// rougher or warmer surface changes mu's sensitivity, not mu itself): the
+// column's shape times the centred nominal pressure (Eq. 2.2 at the back
+// tension: fixed by the design, not by the measured force) or the centred
+// log speed (Effect::times).  The shape: a slope, a step (its threshold on
+// generic_step's grid, the multiplier on) and a 3-dof smooth of a numeric
+// column; its levels (one slope change per level but the first) for
+// a categorical column or a numeric one of 3 to 8 replicated values
+// (`levels`).  Held-out error and the one-standard-error rule choose among
+// them and the other forms.
+void FormPlans::products(bool levels) {
+  if (!with_products) return;
+  const bool numeric = c.kind == "column" && applicable(d, spec, EffectKind::generic_linear, c.name);
+  std::vector<std::string> names;
+  if (levels) d.levels(c.name, &names);
+  levels = levels && names.size() >= 2 && names.size() <= 9;
+  for (const auto& e : spec.effects)  // one generic_smooth per column (applicable)
+    levels = levels && !(e.kind == EffectKind::generic_smooth && e.variable == c.name);
+  if (!numeric && !levels) return;
+  for (const std::string input : {kNominalPressure, kLnSpeed}) {
+    std::vector<double> m;
+    try {
+      m = d.values(input);
+    } catch (const InputError&) {
+      continue;  // e.g. a speed that is not positive: no log
+    }
+    std::set<double> seen;
+    for (size_t i = 0; i < m.size(); ++i)
+      if (!d.rows[i].rotating) seen.insert(m[i]);
+    if (seen.size() < 2) continue;  // the quantity does not vary on the fixed-pin rows
+    if (numeric)
+      for (EffectKind k : {EffectKind::generic_linear, EffectKind::generic_step})
+        if (applicable(d, spec, k, c.name)) plans.push_back({{{k, "", 0, -1, false, "", false, input}}});
+    if (numeric && applicable(d, spec, EffectKind::generic_smooth, c.name))
+      plans.push_back({{{EffectKind::generic_smooth, "", 3, -1, false, "", false, input}}});
+    if (levels)
+      plans.push_back({{{EffectKind::generic_smooth, "", static_cast<int>(names.size()) - 1, -1, false, "", false,
+                         input, true}}});
+  }
 }
 
 // The force channel (rotating rows too): linear per pin, a smooth, a smooth per pin.
@@ -292,20 +352,23 @@ FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c
   FormTrial t;
   t.spec = spec;
   bool bend = false, fric = false;
-  for (const auto& [k, by, nb, cell, scaled, var, offset] : p.parts) {
+  for (const auto& [k, by, nb, cell, scaled, var, offset, times, levels] : p.parts) {
     // A pair's main effect (a column of its own) only when the model has none yet.
     if (!var.empty() && !applicable(d, t.spec, k, var)) continue;
-    t.spec = with_effect(d, t.spec, k, var.empty() ? c.name : var, by);
+    t.spec = with_effect(d, t.spec, k, var.empty() ? c.name : var, by, times);
     if (nb > 0) t.spec.effects.back().n_basis = nb;
     t.spec.effects.back().cell = cell;
     t.spec.effects.back().bend_scaled = scaled;
     t.spec.effects.back().cell_offset = offset && cell >= 0;
-    t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (var.empty() ? "" : " of " + var) + (nb > 0 ? " " + std::to_string(nb) + " dof" : "") +
+    t.spec.effects.back().level_basis = levels;
+    t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (var.empty() ? "" : " of " + var) + (levels ? " levels" : nb > 0 ? " " + std::to_string(nb) + " dof" : "") +
               (by.empty() ? "" : " (" + by + (cell >= 0 ? " group " + std::to_string(cell + 1) + " only" : "") +
                                   (cell >= 0 && offset ? ", with its own factor" : "") + ")") +
-              (scaled ? " (scaled with the pin's bending force)" : "");
-    if (t.meaning.find(effect_meaning(k)) == std::string::npos)  // a pair's mains: the same meaning once
-      t.meaning += (t.meaning.empty() ? "" : "; ") + effect_meaning(k);
+              (scaled ? " (scaled with the pin's bending force)" : "") +
+              (times.empty() ? "" : " (times the centred " + times + ")");
+    const std::string meaning = times.empty() ? effect_meaning(k) : product_meaning(k, levels, times);
+    if (t.meaning.find(meaning) == std::string::npos)  // a pair's mains: the same meaning once
+      t.meaning += (t.meaning.empty() ? "" : "; ") + meaning;
     (acts_on_bending(k) ? bend : fric) = true;
   }
   t.channel = bend && fric ? "both" : bend ? "bending" : "friction";
@@ -337,12 +400,13 @@ double f_test(const JointFit& a, const JointFit& b) {
 }
 
 ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const std::string& variable,
-                      const std::string& by) {
+                      const std::string& by, const std::string& times) {
   ModelSpec t = s;
   Effect e;
   e.kind = k;
   e.variable = variable;
   e.by = by;
+  e.times = times;
   if (k == EffectKind::bending_tension) t.bending_linear = true;
   if (k == EffectKind::categorical || k == EffectKind::categorical_by ||
       (k == EffectKind::force_offset && d.data->extra_index(variable) >= 0)) {
@@ -429,8 +493,9 @@ double mse_diff_se(const CvResult& a, const CvResult& b, const Folds& f) {
 std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
                                  const CvResult& cur, const JointFit& cur_joint, double thr, double min_gain_N,
                                  const std::function<void(const std::string&)>& progress, const std::string& cell_by,
-                                 int cell_group, TrialCache* cache, const std::string& probe_input, int max_q) {
-  FormPlans fp{d, spec, c, {}};
+                                 int cell_group, TrialCache* cache, const std::string& probe_input, int max_q,
+                                 bool products) {
+  FormPlans fp{d, spec, c, {}, products};
   std::vector<Plan>& plans = fp.plans;
   for (EffectKind k : effects_for(c.name))
     if (applicable(d, spec, k, c.name)) plans.push_back({{{k, ""}}});

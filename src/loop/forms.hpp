@@ -76,21 +76,25 @@ struct TrialCache {
 double f_test(const JointFit& a, const JointFit& b);
 
 /// The model s with effect k on `variable` added (depletion and the saturating
-/// exponential get their length on a grid by the full-data fit).
+/// exponential get their length on a grid by the full-data fit), its shape
+/// times the centred model-input quantity `times` when that is not empty
+/// (Effect::times; the grid is searched with the multiplier on).
 ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const std::string& variable,
-                      const std::string& by = "");
+                      const std::string& by = "", const std::string& times = "");
 
 /// Every applicable form for candidate c, each cross-validated and tested.
 /// cell_by / cell_group (the screen's strongest one-group probe, -1: none)
 /// add the forms confined to that one group of a model input.  cache (may be
 /// null): the results of earlier calls on the same data and folds.  max_q >=
 /// 0: forms adding more friction parameters than that are not fitted (the
-/// far rule's simple forms, LoopOptions::far_max_params).
+/// far rule's simple forms, LoopOptions::far_max_params).  products: the
+/// forms of a column that changes mu's pressure or speed slope
+/// (LoopOptions::product_forms).
 std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
                                  const CvResult& cur, const JointFit& cur_joint, double threshold, double min_gain_N,
                                  const std::function<void(const std::string&)>& progress,
                                  const std::string& cell_by = "", int cell_group = -1, TrialCache* cache = nullptr,
-                                 const std::string& probe_input = "", int max_q = -1);
+                                 const std::string& probe_input = "", int max_q = -1, bool products = false);
 
 /// Index of the form kept (simplest within one standard error of the best
 /// among those passed), -1 when none passed.

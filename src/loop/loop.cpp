@@ -87,7 +87,7 @@ ModelSpec without(const ModelSpec& spec, const Step& s, bool bending_linear) {
   for (const auto& e : spec.effects) {
     bool mine = false;
     for (const auto& m : s.added) mine = mine || (m.kind == e.kind && m.variable == e.variable && m.by == e.by && m.cell == e.cell && m.cell_offset == e.cell_offset &&
-                            m.bend_scaled == e.bend_scaled);
+                            m.bend_scaled == e.bend_scaled && m.times == e.times && m.level_basis == e.level_basis);
     if (!mine) t.effects.push_back(e);
   }
   for (const auto& m : s.added)
@@ -304,7 +304,8 @@ Considered LoopSearch::evaluate(const CandidateResult& c, const Candidate& cand,
   const auto prog = [&](const std::string& m) { progress(o, m); };
   Considered r;
   r.trials = try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by,
-                       c.cell_group, &trials_done, c.probe_input, far_mode ? o.far_max_params : -1);
+                       c.cell_group, &trials_done, c.probe_input, far_mode ? o.far_max_params : -1,
+                       o.product_forms);
   // The far rule's steps: simple forms only (LoopOptions::far_max_params).
   // try_forms skips a plan before fitting by the friction parameters it adds;
   // the joint fit's own parameters (a bending channel's) are known only after

@@ -212,8 +212,21 @@ void effect_values(const Design& d, const Effect& e, size_t k, Fit& f) {
   }
   if (kk == EffectKind::categorical || kk == EffectKind::categorical_by)
     f.level[k] = d.levels(e.variable, &f.level_names[k]);
-  if ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && e.n_basis > 0)
+  if (kk == EffectKind::generic_smooth && e.level_basis) {
+    // An indicator per level but the first, centred: the span is the same
+    // whichever level comes first in the file.
+    const std::vector<int> lv = d.levels(e.variable, &f.level_names[k]);
+    f.basis[k].assign(static_cast<size_t>(std::max(0, e.n_basis)), std::vector<double>(lv.size(), 0.0));
+    for (int j = 0; j < e.n_basis; ++j) {
+      auto& col = f.basis[k][static_cast<size_t>(j)];
+      double mean = 0;
+      for (size_t i = 0; i < lv.size(); ++i) mean += col[i] = lv[i] == j + 1 ? 1.0 : 0.0;
+      mean /= static_cast<double>(std::max<size_t>(1, lv.size()));
+      for (double& v : col) v -= mean;
+    }
+  } else if ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && e.n_basis > 0) {
     f.basis[k] = spline_basis(d.values(e.variable), e.n_basis);
+  }
   if (kk == EffectKind::force_offset) {
     f.has_force = true;
     if (e.n_basis == 0) f.level[k] = d.levels(e.variable, &f.level_names[k]);
@@ -222,6 +235,26 @@ void effect_values(const Design& d, const Effect& e, size_t k, Fit& f) {
       ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && !e.by.empty())) {
     int n = 0;
     f.group[k] = d.groups(e.by, &n);
+  }
+  if (!e.times.empty()) {  // the shape times the centred model-input quantity (Effect::times)
+    if (kk != EffectKind::generic_linear && kk != EffectKind::generic_step && kk != EffectKind::generic_smooth)
+      throw std::logic_error("effect_values: a multiplier on " + effect_name(kk));
+    std::vector<double> m = d.values(e.times);
+    double mean = 0;
+    for (double v : m) mean += v;
+    mean /= static_cast<double>(std::max<size_t>(1, m.size()));
+    for (double& v : m) v -= mean;
+    // The shape centred too (a product of centred quantities, as a pair's in
+    // Design::values): its mean times the multiplier would be a slope in the
+    // model input alone, not the column's.
+    auto times_centred = [&](std::vector<double>& col) {
+      double c = 0;
+      for (double v : col) c += v;
+      c /= static_cast<double>(std::max<size_t>(1, col.size()));
+      for (size_t i = 0; i < m.size() && i < col.size(); ++i) col[i] = (col[i] - c) * m[i];
+    };
+    if (!f.drift_z[k].empty()) times_centred(f.drift_z[k]);
+    for (auto& col : f.basis[k]) times_centred(col);
   }
 }
 

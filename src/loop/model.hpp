@@ -34,6 +34,10 @@ double ellipse_cs(double a, double b, double c, double s);
 
 constexpr double kWrapRad = 1.5707963267948966;  ///< 90 deg wrap (Sec. 5.6)
 constexpr double kStripWidthMm = 25.4;           ///< Sec. 5.2
+/// Design::values names of two model-input quantities that are not columns:
+/// Eq. 2.2's pressure at the back tension (MPa) and ln of the speed (mm/s).
+inline constexpr const char* kNominalPressure = "nominal_pressure_MPa";
+inline constexpr const char* kLnSpeed = "ln_speed_mm_s";
 
 /// Per-row quantities the model needs, precomputed from the data and maps.
 struct Row {
