@@ -36,22 +36,6 @@ namespace {
 
 const std::uint64_t kSeed = 51600044;
 
-// The rows of the first test whose pre_strain_pct differs from the first row's, moved to the top.
-Dataset another_level_first(const Dataset& d) {
-  const int k = d.extra_index("pre_strain_pct");
-  BOOST_REQUIRE(k >= 0);
-  std::string test;
-  for (const auto& s : d.rows)
-    if (s.extra[k] != d.rows[0].extra[k]) {
-      test = s.test_id;
-      break;
-    }
-  BOOST_REQUIRE(!test.empty());
-  Dataset out = d;
-  std::stable_partition(out.rows.begin(), out.rows.end(), [&](const Sample& s) { return s.test_id == test; });
-  return out;
-}
-
 // The residual sum of squares of the base model with pre_strain_pct's levels in the 12.7 mm pin only.
 double rss_in_cell(const Dataset& ds, bool own_factor) {
   const Design d = make_design(ds, drawbend::test::stand_in_maps(ds));
@@ -82,7 +66,7 @@ double rss_in_cell(const Dataset& ds, bool own_factor) {
 BOOST_AUTO_TEST_CASE(own_factor_makes_the_fit_independent_of_the_first_level) {
   BlindTruth t;
   const Dataset ds = drawbend::test::lab_file(synthesize_wild({"interaction", 8.0, kSeed}, t), "cell_offset_" + std::to_string(kSeed) + ".csv");
-  const Dataset moved = another_level_first(ds);
+  const Dataset moved = drawbend::test::another_level_first(ds, "pre_strain_pct");
   const double a = rss_in_cell(ds, true), b = rss_in_cell(moved, true);
   BOOST_TEST_MESSAGE("own factor: RSS " << a << " and " << b << " N^2");
   BOOST_TEST(std::abs(a - b) <= 1e-6 * a);

@@ -76,22 +76,6 @@ bool levels_times(const LoopResult& r, const std::string& column, const std::str
   return false;
 }
 
-// The rows of the first test whose `column` differs from the first row's, moved to the top.
-Dataset another_level_first(const Dataset& d, const std::string& column) {
-  const int k = d.extra_index(column);
-  BOOST_REQUIRE(k >= 0);
-  std::string test;
-  for (const auto& s : d.rows)
-    if (s.extra[k] != d.rows[0].extra[k]) {
-      test = s.test_id;
-      break;
-    }
-  BOOST_REQUIRE(!test.empty());
-  Dataset out = d;
-  std::stable_partition(out.rows.begin(), out.rows.end(), [&](const Sample& s) { return s.test_id == test; });
-  return out;
-}
-
 double rss_levels_times_pressure(const Dataset& ds, const std::string& column) {
   const Design d = make_design(ds, drawbend::test::stand_in_maps(ds));
   std::vector<std::string> names;
@@ -125,7 +109,7 @@ BOOST_AUTO_TEST_CASE(the_multipliers_closed_form) {
 BOOST_AUTO_TEST_CASE(level_basis_does_not_depend_on_the_first_level) {
   const Dataset d = wild_lab("channel", 3.0, 66200003);
   const double a = rss_levels_times_pressure(d, "surface_grade");
-  const double b = rss_levels_times_pressure(another_level_first(d, "surface_grade"), "surface_grade");
+  const double b = rss_levels_times_pressure(drawbend::test::another_level_first(d, "surface_grade"), "surface_grade");
   BOOST_TEST(std::isfinite(a));
   BOOST_TEST(a == b, boost::test_tools::tolerance(1e-6));
 }
