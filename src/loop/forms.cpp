@@ -82,7 +82,7 @@ std::string fits_key(const ModelSpec& s) {
     std::snprintf(num, sizeof num, "|%d,%a,%d,%d,%d,%d,%d,%d,", static_cast<int>(kind), e.lambda_mm, e.n_levels,
                   e.n_groups, e.cell, e.n_basis, e.bend_scaled ? 1 : 0, e.cell_offset ? 1 : 0);
     k += num + std::to_string(e.by.size()) + ":" + e.by + "," + (own_column ? e.variable : "") +
-         (e.times.empty() ? "" : "," + std::to_string(e.times.size()) + "x" + e.times);
+         (e.times.empty() ? "" : "," + std::to_string(e.times.size()) + "x" + e.times + (e.level_basis ? "L" : ""));
   }
   return k;
 }
