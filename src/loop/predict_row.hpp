@@ -17,6 +17,12 @@ namespace drawbend::loop {
 
 namespace detail {
 
+/// Does a fixed-pin row read its cell's mu_RD (mu_TD) through the ellipse?
+/// Every row off 90 deg (off 0 deg) does; the ellipse at 0 deg is mu_RD
+/// whatever mu_TD is, and at 90 deg mu_TD (cos 90 deg is 6e-17, not 0).
+inline bool reads_rd(const Row& r) { return r.cos_phi > 1e-9; }
+inline bool reads_td(const Row& r) { return r.sin_phi > 1e-9; }
+
 inline double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th, int i,
                           double* mu_out, const Row* override_row, double* p_out) {
   const Row& r = override_row ? *override_row : d.rows[i];
@@ -37,7 +43,12 @@ inline double predict_row(const Design& d, const Fit& f, const Layout& L, const 
   double mu0;
   if (ir >= 0 && it >= 0) mu0 = analysis::ellipse_mu(th[ir], th[it], r.cos_phi, r.sin_phi);
   else mu0 = th[ir >= 0 ? ir : it];
-  if (!f.seen.empty() && ((ir >= 0 && !f.seen[ir]) || (it >= 0 && !f.seen[it]))) return std::nan("");
+  // A row reading a parameter no training row reads is not predictable (NaN:
+  // left out of a fit's rows and of the held-out error); a row that does not
+  // read it (0 deg for mu_TD, 90 deg for mu_RD) is.
+  if (!f.seen.empty() && ((ir >= 0 && !f.seen[ir] && (it < 0 || reads_rd(r))) ||
+                          (it >= 0 && !f.seen[it] && (ir < 0 || reads_td(r)))))
+    return std::nan("");
   Terms t;
   for (size_t k = 0; k < f.spec.effects.size(); ++k) {
     const Effect& e = f.spec.effects[k];
