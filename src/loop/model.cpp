@@ -312,8 +312,8 @@ Eigen::VectorXd initial_mu(const Design& d, const Layout& L, const std::vector<i
     cnt[k] += 1;
     cell_sum[r.cell] += mu, cell_cnt[r.cell] += 1;
     const int ir = L.mu_rd[r.cell], it = L.mu_td[r.cell];
-    if (ir >= 0 && (it < 0 || detail::reads_rd(r))) reads[ir] += 1;
-    if (it >= 0 && (ir < 0 || detail::reads_td(r))) reads[it] += 1;
+    if (ir >= 0 && detail::reads_rd(r, it)) reads[ir] += 1;
+    if (it >= 0 && detail::reads_td(r, ir)) reads[it] += 1;
   }
   for (size_t c = 0; c < d.cells.size(); ++c)
     for (int k : {L.mu_rd[c], L.mu_td[c]})

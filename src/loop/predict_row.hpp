@@ -17,11 +17,12 @@ namespace drawbend::loop {
 
 namespace detail {
 
-/// Does a fixed-pin row read its cell's mu_RD (mu_TD) through the ellipse?
-/// Every row off 90 deg (off 0 deg) does; the ellipse at 0 deg is mu_RD
-/// whatever mu_TD is, and at 90 deg mu_TD (cos 90 deg is 6e-17, not 0).
-inline bool reads_rd(const Row& r) { return r.cos_phi > 1e-9; }
-inline bool reads_td(const Row& r) { return r.sin_phi > 1e-9; }
+/// Does a fixed-pin row read its cell's mu_RD (mu_TD)?  A cell with one of
+/// the two (ir or it < 0) reads it alone; with both, the ellipse: every row
+/// off 90 deg reads mu_RD and every row off 0 deg mu_TD (at 0 deg it is mu_RD
+/// whatever mu_TD is; cos 90 deg is 6e-17, not 0).
+inline bool reads_rd(const Row& r, int it) { return it < 0 || r.cos_phi > 1e-9; }
+inline bool reads_td(const Row& r, int ir) { return ir < 0 || r.sin_phi > 1e-9; }
 
 inline double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th, int i,
                           double* mu_out, const Row* override_row, double* p_out) {
@@ -46,8 +47,7 @@ inline double predict_row(const Design& d, const Fit& f, const Layout& L, const 
   // A row reading a parameter no training row reads is not predictable (NaN:
   // left out of a fit's rows and of the held-out error); a row that does not
   // read it (0 deg for mu_TD, 90 deg for mu_RD) is.
-  if (!f.seen.empty() && ((ir >= 0 && !f.seen[ir] && (it < 0 || reads_rd(r))) ||
-                          (it >= 0 && !f.seen[it] && (ir < 0 || reads_td(r)))))
+  if (!f.seen.empty() && ((ir >= 0 && !f.seen[ir] && reads_rd(r, it)) || (it >= 0 && !f.seen[it] && reads_td(r, ir))))
     return std::nan("");
   Terms t;
   for (size_t k = 0; k < f.spec.effects.size(); ++k) {
