@@ -61,8 +61,11 @@ int cell_with_0_15_90(const Design& d) {
   return -1;
 }
 
-// The set's design, its cell with rows at 0, 15 and 90 deg, and the base model.
-struct Setup {
+}  // namespace
+
+// The set's design, its cell with rows at 0, 15 and 90 deg, and the base model
+// (outside the anonymous namespace: a Boost fixture is the test case's base).
+struct EllipseFoldSetup {
   Dataset ds = the_set();
   Design d = make_design(ds, drawbend::test::stand_in_maps(ds));
   int c = cell_with_0_15_90(d);
@@ -73,9 +76,7 @@ struct Setup {
   }();
 };
 
-}  // namespace
-
-BOOST_FIXTURE_TEST_CASE(a_fold_without_the_cells_td_rows_is_fitted, Setup) {
+BOOST_FIXTURE_TEST_CASE(a_fold_without_the_cells_td_rows_is_fitted, EllipseFoldSetup) {
   BOOST_REQUIRE(c >= 0);
   // Every row but the cell's fixed-pin rows at or above 45 deg.
   std::vector<int> train;
@@ -121,7 +122,7 @@ BOOST_FIXTURE_TEST_CASE(a_fold_without_the_cells_td_rows_is_fitted, Setup) {
     }
 }
 
-BOOST_FIXTURE_TEST_CASE(a_cell_with_only_rd_rows_leaves_mu_td_unseen, Setup) {
+BOOST_FIXTURE_TEST_CASE(a_cell_with_only_rd_rows_leaves_mu_td_unseen, EllipseFoldSetup) {
   BOOST_REQUIRE(c >= 0);
   std::vector<int> train;
   int at90 = -1;
