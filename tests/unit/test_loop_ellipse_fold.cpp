@@ -10,7 +10,8 @@
 //    mu_TD.  So with the cell's rows at or above 45 deg left out of a fit, its
 //    15 deg rows still see mu_TD, and every training row is predictable (a
 //    finite prediction) and fitted: the sum of squares is finite and a
-//    minimum (moving any friction parameter 1 % either way raises it).  With the cell's 0 deg rows only, mu_TD is
+//    minimum (moving any friction parameter 1 % either way raises it).
+//    With the cell's 0 deg rows only, mu_TD is
 //    unseen: those rows are still predictable (they do not read it), and a
 //    90 deg row of that cell is not (NaN).  Main before 2026-12-06 counted only
 //    the rows on mu_TD's own side of 45 deg: the cell's 15 deg rows were NaN,
