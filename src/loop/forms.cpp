@@ -151,7 +151,8 @@ struct FormPlans {
   void categorical(const std::vector<std::string>& bys);
   void numeric(const std::vector<std::string>& bys);
   void force_and_bending(const std::set<double>& distinct);
-  void in_cell(const std::string& cell_by, int cell_group, int max_nb = 5);
+  void in_cell(const std::string& cell_by, int cell_group, int max_nb = 5, bool force = true);
+  void force_in_cell(const std::string& cell_by, int cell_group, bool levels, const std::set<double>& distinct);
   void split_cells(const std::string& input);
   void products(bool levels);
 };
@@ -288,9 +289,10 @@ void FormPlans::force_and_bending(const std::set<double>& distinct) {
 // An effect confined to one cell (the group of a model input the screen's
 // strongest one-group probe points at, or the worst-fitted group of the
 // strongest probe's input): a slope, a smooth of 3 (up to max_nb: 5) dof or
-// the levels in that cell only, none elsewhere.  Held-out error and the
+// the levels in that cell only, none elsewhere; with `force`, on the force
+// channel as well (force_in_cell).  Held-out error and the
 // one-standard-error rule choose between it and the global forms.
-void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb) {
+void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb, bool force) {
   std::set<double> distinct;
   for (double v : c.x)
     if (std::isfinite(v)) distinct.insert(v);
@@ -307,6 +309,33 @@ void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb) 
   if (!c.categorical && applicable(d, spec, EffectKind::generic_smooth, c.name))
     for (int nb : {3, 5})
       if (nb <= max_nb) plans.push_back({{{EffectKind::generic_smooth, cell_by, nb, cell_group}}});
+  if (force) force_in_cell(cell_by, cell_group, levels, distinct);
+}
+
+// The force channel confined to one cell: a column that changes the bending
+// or outlet force in one pin, speed, direction or lubricant only (a coating
+// or a thickness that matters at one bend, a lubricant that changes how the
+// strip wraps) has no friction signature there, and the global force forms
+// spread it over every cell.  The column's levels, a slope and (more than 8
+// values) a 3-dof smooth of a numeric column, in the cell only, each as
+// newtons and as a share of each pin's bending force (the same with one pin:
+// then only newtons).  Held-out error and the one-standard-error rule choose
+// among them and the friction forms.
+void FormPlans::force_in_cell(const std::string& cell_by, int cell_group, bool levels,
+                              const std::set<double>& distinct) {
+  if (d.data->extra_index(c.name) < 0 || !applicable(d, spec, EffectKind::force_offset, c.name)) return;
+  bool numeric = !c.categorical;
+  try {
+    if (numeric) d.values(c.name);
+  } catch (const InputError&) {
+    numeric = false;  // a number on every row (missing: the column's mean) or no slope
+  }
+  for (bool scaled : {false, true}) {
+    if (scaled && cell_by == "pin") break;
+    if (levels) plans.push_back({{{EffectKind::force_offset, cell_by, 0, cell_group, scaled}}});
+    if (numeric) plans.push_back({{{EffectKind::force_offset, cell_by, 1, cell_group, scaled}}});
+    if (numeric && distinct.size() > 8) plans.push_back({{{EffectKind::force_offset, cell_by, 3, cell_group, scaled}}});
+  }
 }
 
 // An effect on one side of a threshold of a continuous model input (speed or
@@ -328,7 +357,7 @@ void FormPlans::split_cells(const std::string& input) {
     const size_t at = v.size() * q / 4;
     char by[64];
     std::snprintf(by, sizeof by, "%s>=%.6g", input.c_str(), 0.5 * (v[at - 1] + v[at]));
-    for (int side = 0; side < 2; ++side) in_cell(by, side, 3);  // 3 dof: six cells already
+    for (int side = 0; side < 2; ++side) in_cell(by, side, 3, false);  // 3 dof, friction only: six cells already
   }
 }
 
