@@ -165,6 +165,7 @@ struct CandidateResult {
   std::string probe;     ///< the probe of the family with the largest statistic
   int probe_dof = 0;     ///< that probe's own dof (dof above is the family's largest; 0: not a probe family)
   std::string cv_probe;  ///< the probe with the largest held-out gain
+  std::string cv_probe_input;  ///< that probe's model input when it is a per-input one ("": an overall probe)
   /// When the strongest probe is a per-input one: the input and the group of
   /// its strongest one-group sub-probe (the cell an effect may be confined
   /// to; -1: none).

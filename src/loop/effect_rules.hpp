@@ -159,12 +159,16 @@ struct Smooth {
 };
 
 /// outlet force + c_{g,j} B_j (numeric: spline basis, f.basis) or + c_{g,level} (levels but the first),
-/// g the pin with by = "pin" (else one group).
+/// g the group of `by` (else one group), or the one group e.cell only (none elsewhere: a force
+/// channel confined to one pin, speed, direction or lubricant, as the one-cell friction forms are).
 struct ForceOffset {
   static int per_group(const Effect& e) { return e.n_basis > 0 ? e.n_basis : std::max(0, e.n_levels - 1); }
-  static int count(const Design&, const Effect& e) { return per_group(e) * (e.by.empty() ? 1 : e.n_groups); }
+  static int groups(const Effect& e) { return e.by.empty() ? 1 : own_groups(e); }
+  static int slot(const EffectArgs& a) { return a.e.by.empty() ? 0 : group_slot(a); }
+  static int count(const Design&, const Effect& e) { return per_group(e) * groups(e); }
   static void apply(const EffectArgs& a, Terms& t) {
-    const int g = a.e.by.empty() ? 0 : a.f.group[a.k][a.i];
+    const int g = slot(a);
+    if (g < 0) return;
     const double* th = a.th + static_cast<size_t>(g) * per_group(a.e);
     const double s = a.e.bend_scaled ? a.f.bend_scale[a.r.pin] : 1.0;
     if (a.e.n_basis > 0) {
@@ -176,7 +180,8 @@ struct ForceOffset {
     }
   }
   static int reads(const EffectArgs& a, int* o) {
-    const int g = a.e.by.empty() ? 0 : a.f.group[a.k][a.i], P = per_group(a.e);
+    const int g = slot(a), P = per_group(a.e);
+    if (g < 0) return 0;
     if (a.e.n_basis > 0) {
       for (int j = 0; j < a.e.n_basis; ++j) o[j] = g * P + j;
       return a.e.n_basis;
@@ -185,12 +190,12 @@ struct ForceOffset {
     return l > 0 ? (o[0] = g * P + l - 1, 1) : 0;
   }
   static void name(const Design&, const Effect& e, const Names& level_names, int s, Names& n) {
-    const int G = e.by.empty() ? 1 : e.n_groups, P = per_group(e);
+    const int G = groups(e), P = per_group(e);
     for (int g = 0; g < G; ++g)
       for (int j = 0; j < P; ++j)
         n[s + g * P + j] = "force c " + (e.n_basis > 0 ? "spline " + std::to_string(j + 1) + " of " + e.variable + " (N per SD)"
                                                        : "[" + e.variable + " = " + level_names[j + 1] + "] (N)") +
-                           (e.by.empty() ? "" : " [" + e.by + " group " + std::to_string(g + 1) + "]") +
+                           (e.by.empty() ? "" : " [" + group_text(e, g) + "]") +
                            (e.bend_scaled ? " x the pin's relative bending force" : "");
   }
 };

@@ -85,7 +85,8 @@ std::string effect_meaning(EffectKind k) {
              "model input; its dof chosen by held-out error; no physics claimed";
     case EffectKind::force_offset:
       return "force channel: an extra force on the outlet force of every row, fixed and rotating pin (F_out + "
-             "sum_j c_j B_j(x), levels or a spline of x, optionally per pin), fitted jointly with friction and the "
+             "sum_j c_j B_j(x), levels or a spline of x, optionally per group of a model input or in one group only), "
+             "fitted jointly with friction and the "
              "bending lines: a drag, a bending-force change (thickness, yield stress) or an offset of the load cell";
   }
   return "";

@@ -151,7 +151,9 @@ struct FormPlans {
   void categorical(const std::vector<std::string>& bys);
   void numeric(const std::vector<std::string>& bys);
   void force_and_bending(const std::set<double>& distinct);
-  void in_cell(const std::string& cell_by, int cell_group, int max_nb = 5);
+  void in_cell(const std::string& cell_by, int cell_group, int max_nb = 5, bool force = true);
+  void force_in_cell(const std::string& cell_by, int cell_group, bool levels, const std::set<double>& distinct,
+                     int max_nb);
   void split_cells(const std::string& input);
   void products(bool levels);
 };
@@ -287,10 +289,12 @@ void FormPlans::force_and_bending(const std::set<double>& distinct) {
 
 // An effect confined to one cell (the group of a model input the screen's
 // strongest one-group probe points at, or the worst-fitted group of the
-// strongest probe's input): a slope, a smooth of 3 (up to max_nb: 5) dof or
-// the levels in that cell only, none elsewhere.  Held-out error and the
+// strongest probe's input, or of the probe with the largest held-out gain):
+// a slope, a smooth of 3 (up to max_nb: 5) dof or
+// the levels in that cell only, none elsewhere; with `force`, on the force
+// channel as well (force_in_cell).  Held-out error and the
 // one-standard-error rule choose between it and the global forms.
-void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb) {
+void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb, bool force) {
   std::set<double> distinct;
   for (double v : c.x)
     if (std::isfinite(v)) distinct.insert(v);
@@ -307,6 +311,35 @@ void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb) 
   if (!c.categorical && applicable(d, spec, EffectKind::generic_smooth, c.name))
     for (int nb : {3, 5})
       if (nb <= max_nb) plans.push_back({{{EffectKind::generic_smooth, cell_by, nb, cell_group}}});
+  if (force) force_in_cell(cell_by, cell_group, levels, distinct, max_nb);
+}
+
+// The force channel confined to one cell: a column that changes the bending
+// or outlet force in one pin, speed, direction or lubricant only (a coating
+// or a thickness that matters at one bend, a lubricant that changes how the
+// strip wraps) has no friction signature there, and the global force forms
+// spread it over every cell.  The column's levels, a slope and (more than 8
+// values) a smooth of 3 and up to max_nb dof of a numeric column, in the cell only, each as
+// newtons and as a share of each pin's bending force (the same with one pin:
+// then only newtons).  Held-out error and the one-standard-error rule choose
+// among them and the friction forms.
+void FormPlans::force_in_cell(const std::string& cell_by, int cell_group, bool levels,
+                              const std::set<double>& distinct, int max_nb) {
+  if (d.data->extra_index(c.name) < 0 || !applicable(d, spec, EffectKind::force_offset, c.name)) return;
+  bool numeric = !c.categorical;
+  try {
+    if (numeric) d.values(c.name);
+  } catch (const InputError&) {
+    numeric = false;  // a number on every row (missing: the column's mean) or no slope
+  }
+  for (bool scaled : {false, true}) {
+    if (scaled && cell_by == "pin") break;
+    if (levels) plans.push_back({{{EffectKind::force_offset, cell_by, 0, cell_group, scaled}}});
+    if (numeric) plans.push_back({{{EffectKind::force_offset, cell_by, 1, cell_group, scaled}}});
+    if (numeric && distinct.size() > 8)
+      for (int nb : {3, 5})
+        if (nb <= max_nb) plans.push_back({{{EffectKind::force_offset, cell_by, nb, cell_group, scaled}}});
+  }
 }
 
 // An effect on one side of a threshold of a continuous model input (speed or
@@ -328,7 +361,7 @@ void FormPlans::split_cells(const std::string& input) {
     const size_t at = v.size() * q / 4;
     char by[64];
     std::snprintf(by, sizeof by, "%s>=%.6g", input.c_str(), 0.5 * (v[at - 1] + v[at]));
-    for (int side = 0; side < 2; ++side) in_cell(by, side, 3);  // 3 dof: six cells already
+    for (int side = 0; side < 2; ++side) in_cell(by, side, 3, false);  // 3 dof, friction only: six cells already
   }
 }
 
@@ -494,7 +527,7 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
                                  const CvResult& cur, const JointFit& cur_joint, double thr, double min_gain_N,
                                  const std::function<void(const std::string&)>& progress, const std::string& cell_by,
                                  int cell_group, TrialCache* cache, const std::string& probe_input, int max_q,
-                                 bool products) {
+                                 bool products, const std::string& cv_input) {
   FormPlans fp{d, spec, c, {}, products};
   std::vector<Plan>& plans = fp.plans;
   for (EffectKind k : effects_for(c.name))
@@ -513,6 +546,11 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
       // mean squared held-out residual of the current model.
       if (cell_group < 0) fp.in_cell(probe_input, worst_group(d, cur, probe_input));
       fp.split_cells(probe_input);
+    } else if (probe_input.empty() && cell_group < 0 && !cv_input.empty() && cv_input != c.name) {
+      // The strongest probe is an overall one, but the probe with the largest
+      // held-out gain is per a model input: the one-cell forms in that
+      // input's worst-fitted group too (not its split cells).
+      fp.in_cell(cv_input, worst_group(d, cur, cv_input));
     }
   }
   std::vector<FormTrial> out;

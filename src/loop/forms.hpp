@@ -89,12 +89,17 @@ ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const s
 /// 0: forms adding more friction parameters than that are not fitted (the
 /// far rule's simple forms, LoopOptions::far_max_params).  products: the
 /// forms of a column that changes mu's pressure or speed slope
-/// (LoopOptions::product_forms).
+/// (LoopOptions::product_forms).  probe_input: the model input of the
+/// screen's strongest probe when it is a per-input one (the one-cell forms in
+/// its worst-fitted group and its split cells); cv_input, used when
+/// probe_input is empty: that of the probe with the largest held-out gain
+/// (the one-cell forms in its worst-fitted group).
 std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const ModelSpec& spec, const Candidate& c,
                                  const CvResult& cur, const JointFit& cur_joint, double threshold, double min_gain_N,
                                  const std::function<void(const std::string&)>& progress,
                                  const std::string& cell_by = "", int cell_group = -1, TrialCache* cache = nullptr,
-                                 const std::string& probe_input = "", int max_q = -1, bool products = false);
+                                 const std::string& probe_input = "", int max_q = -1, bool products = false,
+                                 const std::string& cv_input = "");
 
 /// Index of the form kept (simplest within one standard error of the best
 /// among those passed), -1 when none passed.

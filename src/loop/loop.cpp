@@ -305,7 +305,7 @@ Considered LoopSearch::evaluate(const CandidateResult& c, const Candidate& cand,
   Considered r;
   r.trials = try_forms(d, res.folds, spec, cand, cur, cur_joint, thr, o.min_effect * sigma, prog, c.cell_by,
                        c.cell_group, &trials_done, c.probe_input, far_mode ? o.far_max_params : -1,
-                       o.product_forms);
+                       o.product_forms, c.cv_probe_input);
   // The far rule's steps: simple forms only (LoopOptions::far_max_params).
   // try_forms skips a plan before fitting by the friction parameters it adds;
   // the joint fit's own parameters (a bending channel's) are known only after

@@ -224,7 +224,7 @@ void CandidateScreen::held_out_gain(CandidateResult& res) const {
     const ProbeDef& p = probes[j];
     if (p.dof[0] > 0) {
       const double cv = probe_cv(p, rows, z, lv, wrow, p.rpre.empty() ? resid : p.rpre, f);
-      if (cv > res.cv_reduction) res.cv_reduction = cv, res.cv_probe = p.label;
+      if (cv > res.cv_reduction) res.cv_reduction = cv, res.cv_probe = p.label, res.cv_probe_input = p.input;
     }
     if (!p.cells) continue;
     int kb = 0;
@@ -236,7 +236,7 @@ void CandidateScreen::held_out_gain(CandidateResult& res) const {
       }
     if (kb > 0) {
       const double cv = probe_cv(p, rows, z, lv, wrow, resid, f, kb - 1);
-      if (cv > res.cv_reduction) res.cv_reduction = cv, res.cv_probe = p.sub_label(kb);
+      if (cv > res.cv_reduction) res.cv_reduction = cv, res.cv_probe = p.sub_label(kb), res.cv_probe_input = p.input;
     }
   }
 }
