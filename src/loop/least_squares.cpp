@@ -136,7 +136,7 @@ double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::
       lambda *= 10;
     }
     if (!improved || converged) {
-      converged = true;
+      converged = std::isfinite(sse);  // a NaN start is never improved on: not a solution
       break;
     }
   }

@@ -5,7 +5,10 @@
 //    leaves J = d(prediction)/d(theta) = -dr/dtheta (forward differences,
 //    step 1e-7 max(1, |theta_j|)) at the solution, for standard errors;
 //  - `converged` is set when a step gains less than 1e-12 of the SSE or no
-//    step (up to 20 damping increases) lowers it; at most 100 iterations;
+//    step (up to 20 damping increases) lowers it, and the SSE is finite (a
+//    start whose SSE is NaN or infinite is never lowered, since no step
+//    compares below it: theta stays at the start and `converged` is false);
+//    at most 100 iterations (at the cap `converged` is false);
 //  - with `row` (the residual of one row, bitwise the same as resid(theta)[k]),
 //    the Jacobian is sparse after the first iteration: column j is evaluated
 //    only on the rows where the first, dense Jacobian had a nonzero entry (a

@@ -15,6 +15,11 @@
 //    checks) + 2 n (first and last Jacobian) + 100 n rows; with a wrong claim
 //    (row k said to read theta_(g(k)+1)) the check fails and the fit still
 //    equals the dense one bit for bit.
+//  - the convergence flag: r_k = y_k - t0 (a mean, y_k = k) from t0 = 0
+//    converges to t0 = (n - 1) / 2 with `converged` true; with one y_k NaN the
+//    SSE is NaN at the start, no step compares below it, theta stays 0 and
+//    `converged` is false (before 2026-12-06 it was set true, by the same
+//    rule as a finite SSE no step can lower).
 #define BOOST_TEST_MODULE lm_sparse
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -102,4 +107,23 @@ BOOST_AUTO_TEST_CASE(structural_reads_are_exact_and_checked) {
   BOOST_TEST(cd == cr);
   BOOST_TEST(c1 - c0 <= 4LL * n + 100LL * n);
   BOOST_TEST_MESSAGE("row evaluations with reads: " << c1 - c0);
+}
+
+BOOST_AUTO_TEST_CASE(a_nan_start_is_not_converged) {
+  const int n = 11;
+  Eigen::VectorXd y(n);
+  for (int k = 0; k < n; ++k) y[k] = k;
+  auto resid = [&](const Eigen::VectorXd& t) { return Eigen::VectorXd((y.array() - t[0]).matrix()); };
+  Eigen::VectorXd th = Eigen::VectorXd::Zero(1);
+  Eigen::MatrixXd J;
+  bool converged = false;
+  levenberg_marquardt(th, resid, J, converged);
+  BOOST_TEST(converged);
+  BOOST_TEST(std::abs(th[0] - 0.5 * (n - 1)) <= 1e-6);
+  y[3] = std::nan("");
+  th[0] = 0;
+  const double sse = levenberg_marquardt(th, resid, J, converged);
+  BOOST_TEST(!converged);
+  BOOST_TEST(th[0] == 0.0);
+  BOOST_TEST(std::isnan(sse));
 }
