@@ -125,10 +125,11 @@ struct LoopOptions {
   /// The forms of a column that changes how mu depends on the pressure or
   /// the speed (--product-forms): its slope, step, 3-dof smooth or levels
   /// times the centred nominal pressure or log speed (forms.cpp
-  /// FormPlans::products).  On by default since h50-prodtie (2026-12-06,
-  /// heldout_record.md): with the centred features they gained 12
-  /// development sets and lost none; an opt-in before (h50-products: three
-  /// paired checks, 7 gained and 1 lost, none met its bar).
+  /// FormPlans::products), never kept by the one-SE rule in place of a
+  /// better form that is not a product (choose_form).  On by default since
+  /// h50-ssguard (heldout_record.md); an opt-in before (h50-products and
+  /// h50-prodtie: their checks gained more sets than they lost, but none met
+  /// its bar).
   bool product_forms = true;
   /// Per-input probes of test-level variables pooled over the cells as well
   /// (screen_probe.hpp: centred_by).  On by default since 2026-12-02 (turn 8):
