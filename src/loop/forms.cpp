@@ -232,6 +232,9 @@ std::string product_meaning(EffectKind k, bool levels, const std::string& times)
 void FormPlans::products(bool levels) {
   if (!with_products) return;
   const bool numeric = c.kind == "column" && applicable(d, spec, EffectKind::generic_linear, c.name);
+  // Levels of a column of the file only (a numeric model input with few
+  // values, such as a sliding distance, has no levels in Design::levels).
+  levels = levels && d.data->extra_index(c.name) >= 0;
   std::vector<std::string> names;
   if (levels) d.levels(c.name, &names);
   levels = levels && names.size() >= 2 && names.size() <= 9;
