@@ -97,7 +97,7 @@ void add_loop_options(Options& opt, LoopArgs& a) {
   opt.add(lo.pair_probes, "pair-probes", "pairs of numeric columns probed together (the product of the centred columns; one permutation family)");
   opt.add(lo.far_ratio, "far-ratio", "with no significant step while the held-out RMS is above this x the measured replicate noise, the candidates with the largest held-out gain (up to 3; after the first, those with at least half its gain) are given their forms, and a step must be a form of at most 9 parameters and take half the excess over the noise (0: off)");
   opt.add(lo.cell_probes, "cell-probes", "opt-in (development): screen and forms for effects confined to one pin, speed, direction or lubricant");
-  opt.add(lo.product_forms, "product-forms", "opt-in: forms for a column that changes mu's pressure or speed slope (its slope, step, smooth or levels times the centred nominal pressure or log speed)");
+  opt.add(lo.product_forms, "product-forms", "forms for a column that changes mu's pressure or speed slope (its slope, step, smooth or levels times the centred nominal pressure or log speed); false: without them");
   opt.add(a.threads, "threads", "threads of the screen, candidates screened at once (0: one, the default; results identical for any count; the fits run on one thread)");
   // Every number range-checked as it is parsed (issue 53: --folds 0 ended on a
   // floating-point exception, --folds 1, negative permutations and alpha

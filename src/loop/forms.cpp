@@ -155,6 +155,7 @@ struct FormPlans {
   void force_in_cell(const std::string& cell_by, int cell_group, bool levels, const std::set<double>& distinct,
                      int max_nb);
   void split_cells(const std::string& input);
+  void scanned_split(const std::string& input, const CvResult& cur);
   void products(bool levels);
 };
 
@@ -231,6 +232,9 @@ std::string product_meaning(EffectKind k, bool levels, const std::string& times)
 void FormPlans::products(bool levels) {
   if (!with_products) return;
   const bool numeric = c.kind == "column" && applicable(d, spec, EffectKind::generic_linear, c.name);
+  // Levels of a column of the file only (a numeric model input with few
+  // values, such as a sliding distance, has no levels in Design::levels).
+  levels = levels && d.data->extra_index(c.name) >= 0;
   std::vector<std::string> names;
   if (levels) d.levels(c.name, &names);
   levels = levels && names.size() >= 2 && names.size() <= 9;
@@ -365,6 +369,71 @@ void FormPlans::split_cells(const std::string& input) {
   }
 }
 
+// An effect on one side of a threshold of a continuous model input, the
+// threshold and side scanned: of every midpoint between two distinct values
+// of the input with at least a tenth of the rows on each side, and either
+// side, the one where the candidate's column explains the largest sum of
+// squares of the current model's held-out residual (numeric: the slope's
+// (sum (x - x_mean)(r - r_mean))^2 / sum (x - x_mean)^2 on that side;
+// categorical: the between-level sum of squares), its one-cell forms
+// (in_cell, 3 dof, friction only).  The quartile splits (split_cells) cut
+// the input where the data's speeds lie, not where the effect changes.
+void FormPlans::scanned_split(const std::string& input, const CvResult& cur) {
+  if (input != "speed_mm_s" && input != "direction_deg") return;
+  struct Pt {
+    double v, x, r;
+  };
+  std::vector<Pt> pts;  // fixed-pin rows with a residual and a value, in row order
+  for (size_t i = 0; i < d.rows.size() && i < cur.resid.size() && i < c.x.size(); ++i)
+    if (!d.rows[i].rotating && std::isfinite(cur.resid[i]) && std::isfinite(c.x[i]))
+      pts.push_back({input == "speed_mm_s" ? d.data->rows[i].speed_mm_s : d.data->rows[i].direction_deg, c.x[i],
+                     cur.resid[i]});
+  std::stable_sort(pts.begin(), pts.end(), [](const Pt& a, const Pt& b) { return a.v < b.v; });
+  const size_t n = pts.size(), edge = std::max<size_t>(10, n / 10);
+  std::set<double> distinct;
+  for (const Pt& p : pts) distinct.insert(p.v);
+  if (distinct.size() <= 6 || n < 2 * edge) return;
+  // Running sums below the threshold (rows [0, k) in v order); above = all - below.
+  // Numeric: sums of 1, x, r, x^2, x r; categorical: per level, sum r and count.
+  struct Sums {
+    double m = 0, x = 0, r = 0, xx = 0, xr = 0;
+    std::map<double, std::pair<double, double>> lv;
+    void add(const Pt& p, double s) {
+      m += s, x += s * p.x, r += s * p.r, xx += s * p.x * p.x, xr += s * p.x * p.r;
+      auto& l = lv[p.x];
+      l.first += s * p.r, l.second += s;
+    }
+  };
+  // The sum of squares x explains of r on one side (numeric: the slope's; categorical: between levels).
+  auto explained = [&](const Sums& q) {
+    if (!(q.m > 1)) return 0.0;
+    if (c.categorical) {
+      double ss = 0;
+      for (const auto& [l, sc] : q.lv)
+        if (sc.second > 0.5) ss += sc.first * sc.first / sc.second;
+      return ss - q.r * q.r / q.m;
+    }
+    const double sxx = q.xx - q.x * q.x / q.m, sxr = q.xr - q.x * q.r / q.m;
+    return sxx > 1e-12 * std::max(1.0, q.xx) ? sxr * sxr / sxx : 0.0;
+  };
+  Sums below, above;
+  for (const Pt& p : pts) above.add(p, 1.0);
+  double best = 0, t_best = std::nan("");
+  int side_best = 0;
+  for (size_t k = 0; k + edge <= n; ++k) {
+    if (k >= edge && pts[k].v > pts[k - 1].v) {  // a threshold between two distinct values
+      const double e0 = explained(below), e1 = explained(above);
+      if (e0 > best) best = e0, t_best = 0.5 * (pts[k - 1].v + pts[k].v), side_best = 0;
+      if (e1 > best) best = e1, t_best = 0.5 * (pts[k - 1].v + pts[k].v), side_best = 1;
+    }
+    below.add(pts[k], 1.0), above.add(pts[k], -1.0);
+  }
+  if (std::isnan(t_best)) return;
+  char by[64];
+  std::snprintf(by, sizeof by, "%s>=%.6g", input.c_str(), t_best);
+  in_cell(by, side_best, 3, false);
+}
+
 // The group of model input `by` whose fixed-pin rows have the largest mean
 // squared held-out residual under the current model (ties: the first).
 int worst_group(const Design& d, const CvResult& cur, const std::string& by) {
@@ -403,6 +472,7 @@ FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c
     if (t.meaning.find(meaning) == std::string::npos)  // a pair's mains: the same meaning once
       t.meaning += (t.meaning.empty() ? "" : "; ") + meaning;
     (acts_on_bending(k) ? bend : fric) = true;
+    t.product = t.product || !times.empty();
   }
   t.channel = bend && fric ? "both" : bend ? "bending" : "friction";
   return t;
@@ -546,11 +616,14 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
       // mean squared held-out residual of the current model.
       if (cell_group < 0) fp.in_cell(probe_input, worst_group(d, cur, probe_input));
       fp.split_cells(probe_input);
+      fp.scanned_split(probe_input, cur);
     } else if (probe_input.empty() && cell_group < 0 && !cv_input.empty() && cv_input != c.name) {
       // The strongest probe is an overall one, but the probe with the largest
       // held-out gain is per a model input: the one-cell forms in that
-      // input's worst-fitted group too (not its split cells).
+      // input's worst-fitted group too, and its scanned split (not the
+      // quartile splits).
       fp.in_cell(cv_input, worst_group(d, cur, cv_input));
+      fp.scanned_split(cv_input, cur);
     }
   }
   std::vector<FormTrial> out;
@@ -578,6 +651,11 @@ int choose_form(const std::vector<FormTrial>& t, const Folds& f) {
   const double mse_best = t[best].cv.rms * t[best].cv.rms;
   for (size_t i = 0; i < t.size(); ++i) {
     if (!t[i].passed || static_cast<int>(i) == best) continue;
+    // The one-SE rule does not hand the step from a better form to a product
+    // form: a product's parameters understate what was searched for it (the
+    // quantity it multiplies, pressure or log speed, and a step's threshold),
+    // so its count is not comparable with the other forms'.
+    if (t[i].product && !t[best].product) continue;
     const double mse = t[i].cv.rms * t[i].cv.rms;
     if (mse - mse_best > mse_diff_se(t[i].cv, t[best].cv, f)) continue;
     if (t[i].q < t[keep].q || (t[i].q == t[keep].q && t[i].cv.rms < t[keep].cv.rms)) keep = static_cast<int>(i);

@@ -60,6 +60,7 @@ struct FormTrial {
   int q = 0;           ///< parameters added
   std::string name, meaning, channel;  ///< channel: friction, bending or both
   bool passed = false;
+  bool product = false;  ///< a product form (Effect::times): choose_form's guard
 };
 
 /// Cross-validations and joint fits already made by try_forms in one run of
@@ -102,7 +103,9 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
                                  const std::string& cv_input = "");
 
 /// Index of the form kept (simplest within one standard error of the best
-/// among those passed), -1 when none passed.
+/// among those passed; a product form only when the best is a product too:
+/// its parameter count understates what was searched for it), -1 when none
+/// passed.
 int choose_form(const std::vector<FormTrial>& t, const Folds& f);
 
 /// Standard error of the difference of two held-out mean squared errors, from

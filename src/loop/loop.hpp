@@ -122,14 +122,15 @@ struct LoopOptions {
   /// Opt-in (--cell-probes; development, not yet scored on enough data): the
   /// screen's one-cell sub-probes and the forms confined to one cell.
   bool cell_probes = false;
-  /// Opt-in (--product-forms): the forms of a column that changes how mu
-  /// depends on the pressure or the speed, its slope, step, 3-dof smooth or
-  /// levels times the centred nominal pressure or log speed (forms.cpp
-  /// FormPlans::products).  Off by default: three paired checks of 600
-  /// effect sets gained 7 detections and lost 1, and lowered the final error
-  /// of some sets and raised it on others; none met its bar
-  /// (heldout_record.md, h50-products).
-  bool product_forms = false;
+  /// The forms of a column that changes how mu depends on the pressure or
+  /// the speed (--product-forms): its slope, step, 3-dof smooth or levels
+  /// times the centred nominal pressure or log speed (forms.cpp
+  /// FormPlans::products), never kept by the one-SE rule in place of a
+  /// better form that is not a product (choose_form).  On by default since
+  /// h50-ssguard (heldout_record.md); an opt-in before (h50-products and
+  /// h50-prodtie: their checks gained more sets than they lost, but none met
+  /// its bar).
+  bool product_forms = true;
   /// Per-input probes of test-level variables pooled over the cells as well
   /// (screen_probe.hpp: centred_by).  On by default since 2026-12-02 (turn 8):
   /// development seeds 52100000/55100000 (tuning) 30/40 -> 30/40 and 29 -> 30,

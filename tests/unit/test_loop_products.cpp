@@ -2,8 +2,8 @@
 // (forms.cpp FormPlans::products; Effect::times and Effect::level_basis), on
 // wild development sets (spent seeds: heldout_record.md, h50-colorder's check,
 // read after it), written as a lab file and read back as the CLI reads it,
-// stand-in maps, the loop's defaults with the forms on (--product-forms true;
-// opt-in: they met no bar of heldout_record.md, h50-products).  Expected answers:
+// stand-in maps, the loop's defaults (the forms on by default since
+// h50-prodtie, heldout_record.md).  Expected answers:
 //  - Closed form: Design::values of the two multipliers on every row,
 //    nominal_pressure_MPa = Eq. 2.2 at F_x = F_y = F_back, i.e. F_back / (r w)
 //    with r the pin radius and w = 25.4 mm (1000 N on the 12.7 mm pin:
@@ -24,9 +24,10 @@
 //    surface_grade's levels, k 3.6, noise 3 N): the first step names
 //    surface_grade with its levels times the centred log speed, within 2 x the
 //    true noise (main: levels in one speed group, 2.12 x).
-//  - Off by default: LoopOptions{}.product_forms is false, and the loop with
-//    the defaults on set 66200003 adds no product form (its first step a
-//    force offset per pin, 2.30 x, as main before the change).
+//  - On by default, and off when asked: LoopOptions{}.product_forms is true,
+//    and the loop with the forms off (--product-forms false) on set 66200003
+//    adds no product form (its first step names surface_grade in another
+//    form).
 // The sanitizer step (main_run_only.hpp) runs the closed forms and the
 // pressure-slope case (the forms' path with the option on, 1.9 s here): the
 // speed-slope case runs the same path on another set, and the default case
@@ -126,8 +127,8 @@ BOOST_AUTO_TEST_CASE(levels_change_the_speed_slope, *drawbend::test::main_run_on
   BOOST_TEST(on.r.cv.back().rms / on.noise <= 2.0);
 }
 
-BOOST_AUTO_TEST_CASE(off_by_default, *drawbend::test::main_run_only()) {
-  BOOST_TEST(!LoopOptions{}.product_forms);
+BOOST_AUTO_TEST_CASE(on_by_default_and_off_when_asked, *drawbend::test::main_run_only()) {
+  BOOST_TEST(LoopOptions{}.product_forms);
   const Run off = loop_on_wild("channel", 3.0, 66200003, false);
   BOOST_REQUIRE(!off.r.steps.empty());
   BOOST_TEST(off.r.steps[0].variable == "surface_grade");

@@ -14,6 +14,9 @@
 //    held-out MSE by less than one standard error of the difference, the
 //    simpler (q = 1) is kept; when the gap is many standard errors the better
 //    one is kept.  A form that failed a gate is never kept.
+//  - The products' guard: the same pair with the simpler form a product
+//    (Effect::times): the better, non-product form is kept; with both
+//    products, or only the better one a product, the simpler is kept as above.
 //  - Threads: five candidates (row-level and test-level, numeric and
 //    categorical, one carrying a planted slope) with two model inputs as
 //    modifiers, screened on 1, 2 and 3 threads: every result field is
@@ -265,6 +268,40 @@ BOOST_AUTO_TEST_CASE(simplest_within_one_se) {
   BOOST_TEST(choose_form(far, f) == 0);
   far[0].passed = false;
   BOOST_TEST(choose_form(far, f) == -1);
+}
+
+// The guard on products (h50-ssguard): the one-SE rule does not hand the
+// step from a better form to a product form.  The same two trials as `close`
+// above (the simpler within one SE of the better): with the simpler one a
+// product, the better one (index 1) is kept; with both products, or the better
+// one the product, the one-SE rule acts as before (index 0).
+BOOST_AUTO_TEST_CASE(one_se_never_hands_the_step_to_a_product) {
+  Folds f;
+  f.k = 2;
+  const int tests = 40, rows = 5;
+  for (int t = 0; t < tests; ++t)
+    for (int k = 0; k < rows; ++k) f.test.push_back(t), f.block.push_back(0), f.fold.push_back(t % 2);
+  auto trial = [&](int q, double scale, double phase, bool product) {
+    FormTrial t;
+    t.q = q;
+    t.passed = true;
+    t.product = product;
+    double ss = 0;
+    for (int i = 0; i < tests * rows; ++i) {
+      const double e = scale * (1 + 0.3 * std::sin(0.37 * i + phase));
+      t.cv.resid.push_back(e);
+      ss += e * e;
+    }
+    t.cv.rms = std::sqrt(ss / (tests * rows));
+    return t;
+  };
+  std::vector<FormTrial> v = {trial(1, 1.0, 0.0, true), trial(3, 0.995, 1.5, false)};
+  BOOST_TEST(v[0].cv.rms * v[0].cv.rms - v[1].cv.rms * v[1].cv.rms < mse_diff_se(v[0].cv, v[1].cv, f));
+  BOOST_TEST(choose_form(v, f) == 1);  // the product is simpler and within one SE, but not kept
+  v[1].product = true;
+  BOOST_TEST(choose_form(v, f) == 0);  // both products: the simpler
+  v[0].product = false;
+  BOOST_TEST(choose_form(v, f) == 0);  // the better one a product: the simpler non-product
 }
 
 BOOST_AUTO_TEST_CASE(bending_channel_recovers_exact_data) {
