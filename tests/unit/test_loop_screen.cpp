@@ -236,25 +236,36 @@ BOOST_AUTO_TEST_CASE(levels_of_one_row_each_not_probed) {
   BOOST_TEST(b[0].dof > 0);
 }
 
-BOOST_AUTO_TEST_CASE(simplest_within_one_se) {
+// The one-SE cases' folds (40 tests of 5 rows, 2 folds) and a passed trial
+// of q parameters whose held-out residual wobbles about `scale`.
+namespace {
+constexpr int kTests = 40, kRows = 5;
+Folds one_se_folds() {
   Folds f;
   f.k = 2;
-  const int tests = 40, rows = 5;
-  for (int t = 0; t < tests; ++t)
-    for (int k = 0; k < rows; ++k) f.test.push_back(t), f.block.push_back(0), f.fold.push_back(t % 2);
-  auto trial = [&](int q, double scale, double phase) {
-    FormTrial t;
-    t.q = q;
-    t.passed = true;
-    double ss = 0;
-    for (int i = 0; i < tests * rows; ++i) {
-      const double e = scale * (1 + 0.3 * std::sin(0.37 * i + phase));
-      t.cv.resid.push_back(e);
-      ss += e * e;
-    }
-    t.cv.rms = std::sqrt(ss / (tests * rows));
-    return t;
-  };
+  for (int t = 0; t < kTests; ++t)
+    for (int k = 0; k < kRows; ++k) f.test.push_back(t), f.block.push_back(0), f.fold.push_back(t % 2);
+  return f;
+}
+FormTrial one_se_trial(int q, double scale, double phase, bool product = false) {
+  FormTrial t;
+  t.q = q;
+  t.passed = true;
+  t.product = product;
+  double ss = 0;
+  for (int i = 0; i < kTests * kRows; ++i) {
+    const double e = scale * (1 + 0.3 * std::sin(0.37 * i + phase));
+    t.cv.resid.push_back(e);
+    ss += e * e;
+  }
+  t.cv.rms = std::sqrt(ss / (kTests * kRows));
+  return t;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(simplest_within_one_se) {
+  const Folds f = one_se_folds();
+  const auto trial = [](int q, double scale, double phase) { return one_se_trial(q, scale, phase); };
   // richer form: a little better on average, but not by one SE (the difference wobbles)
   std::vector<FormTrial> close = {trial(1, 1.0, 0.0), trial(3, 0.995, 1.5)};
   BOOST_TEST(close[1].cv.rms < close[0].cv.rms);
@@ -276,26 +287,8 @@ BOOST_AUTO_TEST_CASE(simplest_within_one_se) {
 // product, the better one (index 1) is kept; with both products, or the better
 // one the product, the one-SE rule acts as before (index 0).
 BOOST_AUTO_TEST_CASE(one_se_never_hands_the_step_to_a_product) {
-  Folds f;
-  f.k = 2;
-  const int tests = 40, rows = 5;
-  for (int t = 0; t < tests; ++t)
-    for (int k = 0; k < rows; ++k) f.test.push_back(t), f.block.push_back(0), f.fold.push_back(t % 2);
-  auto trial = [&](int q, double scale, double phase, bool product) {
-    FormTrial t;
-    t.q = q;
-    t.passed = true;
-    t.product = product;
-    double ss = 0;
-    for (int i = 0; i < tests * rows; ++i) {
-      const double e = scale * (1 + 0.3 * std::sin(0.37 * i + phase));
-      t.cv.resid.push_back(e);
-      ss += e * e;
-    }
-    t.cv.rms = std::sqrt(ss / (tests * rows));
-    return t;
-  };
-  std::vector<FormTrial> v = {trial(1, 1.0, 0.0, true), trial(3, 0.995, 1.5, false)};
+  const Folds f = one_se_folds();
+  std::vector<FormTrial> v = {one_se_trial(1, 1.0, 0.0, true), one_se_trial(3, 0.995, 1.5, false)};
   BOOST_TEST(v[0].cv.rms * v[0].cv.rms - v[1].cv.rms * v[1].cv.rms < mse_diff_se(v[0].cv, v[1].cv, f));
   BOOST_TEST(choose_form(v, f) == 1);  // the product is simpler and within one SE, but not kept
   v[1].product = true;
