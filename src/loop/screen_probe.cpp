@@ -40,13 +40,24 @@ double probe_cv(const ProbeDef& p, const std::vector<int>& rows, const std::vect
   // pooled index of stratum s: itself, or 0 for the strata of the cell (-1: outside it)
   auto pool = [&](int s) { return cell < 0 ? s : s % p.ngroups == cell ? 0 : -1; };
   double sse0 = 0, sse1 = 0;
-  const int S = p.nstrata, L = p.nlev;
-  for (int k = 0; k < f.k; ++k) {
-    std::vector<double> sm(S, 0), sn(S, 0), sx(S, 0), sxx(S, 0), sxr(S, 0), lm(static_cast<size_t>(S) * L, 0),
-        ln(static_cast<size_t>(S) * L, 0);
+  const int S = p.nstrata, L = p.nlev, K = f.k;
+  // Each fold's training sums per stratum, of every fold in one pass over the
+  // rows (each fold's sums in row order, as a pass per fold made them), and
+  // each fold's held-out rows, in order (a fold outside 0..K-1 holds none).
+  std::vector<double> SM(static_cast<size_t>(K) * S, 0.0), SN(SM.size(), 0.0);
+  std::vector<std::vector<int>> held(static_cast<size_t>(std::max(K, 0)));
+  for (int i : rows) {
+    const int s = p.row_stratum[i], fi = f.fold[i];
+    const double ri = r[i];
+    for (int k = 0; k < K; ++k)
+      if (k != fi) SM[static_cast<size_t>(k) * S + s] += ri, SN[static_cast<size_t>(k) * S + s] += 1;
+    if (fi >= 0 && fi < K) held[fi].push_back(i);
+  }
+  for (int k = 0; k < K; ++k) {
+    std::vector<double> sm(SM.begin() + static_cast<size_t>(k) * S, SM.begin() + static_cast<size_t>(k + 1) * S),
+        sn(SN.begin() + static_cast<size_t>(k) * S, SN.begin() + static_cast<size_t>(k + 1) * S), sx(S, 0), sxx(S, 0),
+        sxr(S, 0), lm(static_cast<size_t>(S) * L, 0), ln(static_cast<size_t>(S) * L, 0);
     double q11 = 0, q12 = 0, q22 = 0, b1 = 0, b2 = 0;
-    for (int i : rows)
-      if (f.fold[i] != k) sm[p.row_stratum[i]] += r[i], sn[p.row_stratum[i]] += 1;
     for (int s = 0; s < S; ++s) sm[s] = sn[s] > 0 ? sm[s] / sn[s] : 0;
     // The stratum means of z (slopes, quad) and z^2 (quad): read by those
     // shapes only, so the other shapes skip their pass (two divisions a row).
@@ -91,8 +102,7 @@ double probe_cv(const ProbeDef& p, const std::vector<int>& rows, const std::vect
       for (size_t q = 0; q < lm.size(); ++q) lm[q] = ln[q] > 0 ? lm[q] / ln[q] : 0;
     if (p.shape == Shape::slopes)
       for (int q = 0; q < S; ++q) sxr[q] = sxr[q] / sx[q];
-    for (int i : rows) {
-      if (f.fold[i] != k) continue;
+    for (int i : held[k]) {
       const int s = p.row_stratum[i], ps = pool(s);
       if (sn[s] <= 0) continue;
       double pr = sm[s];
@@ -128,32 +138,37 @@ inline void ProbeDef::level_sums(const int* xl) const {
   const bool w = shape == Shape::wlevels;
   const size_t K = static_cast<size_t>(nstrata) * nlev;
   const bool sparse = !reach.empty();
-  if (!sparse || s1.size() != K * L) {  // every cell; or (sparse) the reachable ones, the rest still empty
-    s1.assign(K * L, 0.0);
-    s2.assign(K * L, 0.0);
+  // s12: cell k's lane j at (k L + j) 2, its s1 and s2 side by side (one
+  // two-lane addition of (a, b) where the sums are made per unit).
+  if (!sparse || s12.size() != 2 * K * L) {  // every cell; or (sparse) the reachable ones, the rest still empty
+    s12.assign(2 * K * L, 0.0);
   } else {
     for (int k : reach)
-      for (int j = 0; j < L; ++j) s1[static_cast<size_t>(k) * L + j] = 0.0, s2[static_cast<size_t>(k) * L + j] = 0.0;
+      for (int j = 0; j < 2 * L; ++j) s12[static_cast<size_t>(k) * 2 * L + j] = 0.0;
   }
   const double* a = w ? urw.data() : ur.data();
   const double* b = w ? uw2.data() : un.data();
+  double* c = s12.data();
   if (!w && !fixed_counts.empty()) {  // the counts are those of every permutation
     for (size_t u = 0; u < U; ++u) {
       const size_t k0 = static_cast<size_t>(stratum[u]) * nlev;
-      for (int j = 0; j < L; ++j) s1[(k0 + static_cast<size_t>(xl[u * L + j])) * L + j] += a[u];
+      for (int j = 0; j < L; ++j) c[((k0 + static_cast<size_t>(xl[u * L + j])) * L + j) * 2] += a[u];
     }
+    auto counts = [&](size_t k) {
+      for (int j = 0; j < L; ++j) c[(k * L + j) * 2 + 1] = fixed_counts[k];
+    };
     if (sparse)
-      for (int k : reach)
-        for (int j = 0; j < L; ++j) s2[static_cast<size_t>(k) * L + j] = fixed_counts[k];
+      for (int k : reach) counts(static_cast<size_t>(k));
     else
-      for (size_t k = 0; k < K; ++k)
-        for (int j = 0; j < L; ++j) s2[k * L + j] = fixed_counts[k];
+      for (size_t k = 0; k < K; ++k) counts(k);
   } else {
+    using V = Pack<2>;
     for (size_t u = 0; u < U; ++u) {
       const size_t k0 = static_cast<size_t>(stratum[u]) * nlev;
+      const V::T ab = {a[u], b[u]};
       for (int j = 0; j < L; ++j) {
-        const size_t k = (k0 + static_cast<size_t>(xl[u * L + j])) * L + j;
-        s1[k] += a[u], s2[k] += b[u];
+        double* q = c + ((k0 + static_cast<size_t>(xl[u * L + j])) * L + j) * 2;
+        V::store(q, V::load(q) + ab);  // s1 += a[u], s2 += b[u]
       }
     }
   }
@@ -174,10 +189,12 @@ inline void ProbeDef::level_ess(double* out) const {
     else
       for (size_t k = 0; k < K; ++k) fn(k);
   };
+  const double* c = s12.data();  // s1 of cell k, lane j at (k L + j) 2, s2 after it
   for (int j = 0; j < L; ++j) {
     double e = 0;
     each_cell([&](size_t k) {
-      if (s2[k * L + j] > 0) e += s1[k * L + j] * s1[k * L + j] / s2[k * L + j];
+      const double* q = c + (k * L + j) * 2;
+      if (q[1] > 0) e += q[0] * q[0] / q[1];
     });
     out[j] = e;
   }
@@ -185,7 +202,7 @@ inline void ProbeDef::level_ess(double* out) const {
     c1.assign(static_cast<size_t>(G) * nlev * L, 0.0), c2.assign(c1.size(), 0.0);
     each_cell([&](size_t k) {
       const size_t q = static_cast<size_t>((k / nlev) % G) * nlev + k % nlev;
-      for (int j = 0; j < L; ++j) c1[q * L + j] += s1[k * L + j], c2[q * L + j] += s2[k * L + j];
+      for (int j = 0; j < L; ++j) c1[q * L + j] += c[(k * L + j) * 2], c2[q * L + j] += c[(k * L + j) * 2 + 1];
     });
     for (int g = 0; g < G; ++g)
       for (int j = 0; j < L; ++j) {
