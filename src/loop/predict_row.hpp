@@ -24,8 +24,10 @@ namespace detail {
 inline bool reads_rd(const Row& r, int it) { return it < 0 || r.cos_phi > 1e-9; }
 inline bool reads_td(const Row& r, int ir) { return ir < 0 || r.sin_phi > 1e-9; }
 
-inline double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th, int i,
-                          double* mu_out, const Row* override_row, double* p_out) {
+// Flattened: the effects' rules (visit_rule and each rule's apply) inline in
+// it, not a call per effect and row with its arguments through memory.
+[[gnu::flatten]] inline double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th,
+                                           int i, double* mu_out, const Row* override_row, double* p_out) {
   const Row& r = override_row ? *override_row : d.rows[i];
   const double bend_x = f.bend_extra.empty() ? 0.0 : f.bend_extra[i];  // bending-channel effects
   const double bend = f.b0[r.pin] + f.b1[r.pin] * r.fback + bend_x;

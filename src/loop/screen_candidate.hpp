@@ -88,6 +88,7 @@ struct CandidateScreen {
   std::vector<char> run;
   std::vector<int> gfirst, gsize;
   FastMod mod{1};
+  std::vector<double> cutp;  // cutz padded with +inf to 2^m - 1 entries (the bins' halving search)
   // setup_bounds: the permutation test's bounded pass (screen_bound.cpp).
   bool bounded = false;
   std::vector<BoundProbe> bprobes;

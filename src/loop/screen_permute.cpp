@@ -35,6 +35,10 @@ void CandidateScreen::flat_groups() {
   for (const auto& g : groups) kmax = std::max(kmax, g.size());
   for (const auto& bg : bgroups) kmax = std::max(kmax, bg.size());
   mod = FastMod(kmax);  // mod(rng(), k) == rng() % k, without the division
+  size_t m = 1;  // the cuts padded with +inf to 2^m - 1 (fill_unit_values)
+  while (m < cutz.size() + 1) m *= 2;
+  cutp = cutz;
+  cutp.resize(m - 1, INFINITY);
   run.assign(groups.size(), 1);
   gfirst.assign(groups.size(), 0), gsize.assign(groups.size(), 0);
   for (size_t gi = 0; gi < groups.size(); ++gi) {
@@ -71,16 +75,18 @@ inline void CandidateScreen::fill_unit_values(const std::vector<int>& p, std::ve
   }
   for (const auto& bg : bgroups)
     for (size_t k = bg.size(); k > 1; --k) std::swap(tp[bg[k - 1]], tp[bg[mod(r(), k)]]);
-  // The bin: the cuts c with !(v < c), a prefix of the ascending cuts, so
-  // their count is upper_bound's index (without its branches).
-  const double* cut = cutz.data();
-  const int ncut = static_cast<int>(cutz.size());
+  // The bin: the count of the cuts c with !(v < c), a prefix of the ascending
+  // cuts (of all of them for a NaN v), found by halving over the cuts padded
+  // with +inf to 2^m - 1 (cutp: no finite v passes a pad; a NaN passes all, so
+  // the count is capped at the cuts'): m compares per unit, not one per cut.
+  const double* cut = cutp.data();
+  const int ncut = static_cast<int>(cutz.size()), top = static_cast<int>(cutp.size() + 1) / 2;
   for (size_t u = 0; u < U; ++u) {
     const double v = gz[tp[ug[u]]] + (xz[p[u]] - gz[ug[u]]);
     qz[u * kLanes + j] = v;
     int l = 0;
-    for (int k = 0; k < ncut; ++k) l += !(v < cut[k]);
-    ql[u * kLanes + j] = l;
+    for (int h = top; h > 0; h >>= 1) l += !(v < cut[l + h - 1]) ? h : 0;
+    ql[u * kLanes + j] = std::min(l, ncut);
   }
 }
 

@@ -64,6 +64,7 @@ struct ProbeDef {
   // row-level data for the held-out probe
   std::vector<int> row_stratum;
   mutable std::vector<double> s1, s2, s3, s4, c1, c2;
+  mutable std::vector<double> s12;  // levels, wlevels: per (cell, lane) its s1 and s2 side by side
   int nsub() const { return cells ? 1 + ngroups : 1; }
   // s4 = rows per stratum (sum of un in unit order): it does not depend on the
   // permutation, so it is summed once, on the first eval.

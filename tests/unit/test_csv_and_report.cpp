@@ -17,7 +17,10 @@
 //    backslash: once a bare "Hill'48" broke the command line).
 #define BOOST_TEST_MODULE csv_and_report
 #include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <limits>
 
 #include <fstream>
 #include <sstream>
@@ -126,4 +129,23 @@ BOOST_AUTO_TEST_CASE(plot_passes_variables_verbatim) {
   std::getline(in, line);
   BOOST_TEST(line == label);
   std::filesystem::remove_all(root);
+}
+
+// fmt formats with std::to_chars (general, with the precision): printf's
+// "%.*g" by the standard; checked against snprintf on ties, zeros, infinities,
+// subnormals and a sweep of magnitudes at every precision the outputs use.
+BOOST_AUTO_TEST_CASE(fmt_is_printf_g) {
+  std::vector<double> v = {0.0, -0.0, 0.5, 1.5, 2.5, -2.5, 0.125, 0.0625, 999999.5, 9.9999995, 1e100, -1e-300,
+                           5e-324, 1e-5, 1e-4, 123456.0, 1234567.0, 1.0 / 3.0, 2.0 / 3.0, 1e21, 1e22, 0.1,
+                           std::numeric_limits<double>::max(), std::numeric_limits<double>::infinity(),
+                           -std::numeric_limits<double>::infinity()};
+  for (int e = -30; e <= 30; ++e)
+    for (double m : {1.0, 1.25, 3.5, 4.5, 7.0 / 9.0, 9.95, 9.995}) v.push_back(m * std::pow(10.0, e)), v.push_back(-m * std::pow(10.0, e));
+  for (double x : v)
+    for (int p = 0; p <= 17; ++p) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%.*g", p, x);
+      BOOST_TEST(fmt(x, p) == std::string(buf), "x " << x << " precision " << p);
+    }
+  BOOST_TEST(fmt(std::nan(""), 4) == "nan");
 }
