@@ -5,6 +5,7 @@
 # cmp_sides.py. Development seeds only: blind_dev.sh refuses held-out ones.
 # usage: check_sides.sh BIN_MAIN BIN_BRANCH OUT "S0 GEN" ["S0 GEN" ...]
 #   e.g. check_sides.sh main/drawbend branch/drawbend /tmp/chk "76700000 blind" "76800000 wild"
+#   BIN "-": that side is not run (e.g. main's side run earlier)
 #   tags: OUT/main_S0.txt and OUT/branch_S0.txt; sets in OUT/sets/{main,branch}/S0
 set -u
 if [ $# -lt 4 ]; then sed -n 2,9p "$0"; exit 2; fi
@@ -18,6 +19,6 @@ side() {  # TAG BIN blocks...
     bash "$HERE/blind_dev.sh" "$bin" "$1" 48 "$OUT/sets/$tag/$1" 20000 0 "$2" > "$OUT/${tag}_$1.txt" 2> "$OUT/${tag}_$1.err"
   done
 }
-side branch "$BB" "$@" &
-side main "$BM" "$@" &
+[ "$BB" = - ] || side branch "$BB" "$@" &
+[ "$BM" = - ] || side main "$BM" "$@" &
 wait
