@@ -27,6 +27,10 @@ bool union_of_cells(const Design& d, const std::string& by, int g);
 /// What a product form (Effect::times) means, for the report.
 std::string product_meaning(EffectKind k, bool levels, const std::string& times);
 
+/// What a bump form (Effect::bump_width) of kind k (generic_smooth or
+/// force_offset) means, for the report (form_bumps.cpp).
+std::string bump_meaning(EffectKind k);
+
 
 // A form to try: its effects (one, or several together).
 struct Part {
@@ -39,6 +43,7 @@ struct Part {
   bool offset = false;  // one-cell forms: the cell's own factor too (Effect::cell_offset)
   std::string times;    // Effect::times: the shape times this centred model-input quantity
   bool levels = false;  // generic_smooth with times: the column's levels as the basis (Effect::level_basis)
+  double centre = 0, width = 0;  // width > 0: a bump (Effect::bump_centre, bump_width; nb 1)
 };
 struct Plan {
   std::vector<Part> parts;
@@ -52,6 +57,7 @@ struct FormPlans {
   const Candidate& c;
   std::vector<Plan> plans;
   bool with_products = false;  // LoopOptions::product_forms: products() plans its forms
+  const CvResult* cur = nullptr;  // the current model's held-out result (bumps() scans its residual; null: no bumps)
   void add(EffectKind k, const std::string& by = "") {
     if (applicable(d, spec, k, c.name)) plans.push_back({{{k, by}}});
   }
@@ -81,6 +87,7 @@ struct FormPlans {
   void split_cells(const std::string& input);
   void scanned_split(const std::string& input, const CvResult& cur);
   void products(bool levels);
+  void bumps(const std::set<double>& distinct, const std::string& cell_by = "", int cell_group = -1, bool force = true);
 };
 
 }  // namespace drawbend::loop::detail

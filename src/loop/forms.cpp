@@ -122,6 +122,7 @@ void FormPlans::numeric(const std::vector<std::string>& bys) {
   }
   products(some_levels(distinct));
   force_and_bending(distinct);
+  bumps(distinct);  // a local bump of the column, on mu and on the force channel (form_bumps.cpp)
 }
 
 // The force channel (rotating rows too): linear per pin, a smooth, a smooth per pin.
@@ -177,6 +178,7 @@ void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb, 
     for (int nb : {3, 5})
       if (nb <= max_nb) plans.push_back({{{EffectKind::generic_smooth, cell_by, nb, cell_group}}});
   if (force) force_in_cell(cell_by, cell_group, levels, distinct, max_nb);
+  if (max_nb >= 5) bumps(distinct, cell_by, cell_group, force);  // not in the split cells (3 dof)
 }
 
 // The force channel confined to one cell: a column that changes the bending
@@ -278,6 +280,10 @@ std::string fits_key(const ModelSpec& s) {
                   e.n_groups, e.cell, e.n_basis, e.bend_scaled ? 1 : 0, e.cell_offset ? 1 : 0);
     k += num + std::to_string(e.by.size()) + ":" + e.by + "," + (own_column ? e.variable : "") +
          (e.times.empty() ? "" : "," + std::to_string(e.times.size()) + "x" + e.times + (e.level_basis ? "L" : ""));
+    if (e.bump_width > 0) {  // a bump: its centre and width (two bumps never share a key)
+      std::snprintf(num, sizeof num, ",B%a,%a", e.bump_centre, e.bump_width);
+      k += num;
+    }
   }
   return k;
 }
@@ -287,7 +293,7 @@ FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c
   FormTrial t;
   t.spec = spec;
   bool bend = false, fric = false;
-  for (const auto& [k, by, nb, cell, scaled, var, offset, times, levels] : p.parts) {
+  for (const auto& [k, by, nb, cell, scaled, var, offset, times, levels, centre, width] : p.parts) {
     // A pair's main effect (a column of its own) only when the model has none yet.
     if (!var.empty() && !detail::applicable(d, t.spec, k, var)) continue;
     t.spec = with_effect(d, t.spec, k, var.empty() ? c.name : var, by, times);
@@ -296,16 +302,25 @@ FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c
     t.spec.effects.back().bend_scaled = scaled;
     t.spec.effects.back().cell_offset = offset && cell >= 0;
     t.spec.effects.back().level_basis = levels;
-    t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (var.empty() ? "" : " of " + var) + (levels ? " levels" : nb > 0 ? " " + std::to_string(nb) + " dof" : "") +
+    t.spec.effects.back().bump_centre = centre;
+    t.spec.effects.back().bump_width = width;
+    const std::string shape = width > 0 ? " bump at " + fmt(centre, 6) + ", width " + fmt(width, 6)
+                              : levels  ? " levels"
+                              : nb > 0  ? " " + std::to_string(nb) + " dof"
+                                        : "";
+    t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (var.empty() ? "" : " of " + var) + shape +
               (by.empty() ? "" : " (" + by + (cell >= 0 ? " group " + std::to_string(cell + 1) + " only" : "") +
                                   (cell >= 0 && offset ? ", with its own factor" : "") + ")") +
               (scaled ? " (scaled with the pin's bending force)" : "") +
               (times.empty() ? "" : " (times the centred " + times + ")");
-    const std::string meaning = times.empty() ? effect_meaning(k) : detail::product_meaning(k, levels, times);
+    const std::string meaning = width > 0       ? detail::bump_meaning(k)
+                                : times.empty() ? effect_meaning(k)
+                                                : detail::product_meaning(k, levels, times);
     if (t.meaning.find(meaning) == std::string::npos)  // a pair's mains: the same meaning once
       t.meaning += (t.meaning.empty() ? "" : "; ") + meaning;
     (acts_on_bending(k) ? bend : fric) = true;
-    t.product = t.product || !times.empty();
+    t.searched = t.searched || !times.empty() || width > 0;
+    if (width > 0) t.extra_searched += 2;  // the bump's centre and width
   }
   t.channel = bend && fric ? "both" : bend ? "bending" : "friction";
   return t;
@@ -327,8 +342,8 @@ void fit_trial(const Design& d, const Folds& folds, FormTrial& t, TrialCache* ca
 
 }  // namespace
 
-double f_test(const JointFit& a, const JointFit& b) {
-  const int q = b.p - a.p, dof = b.n - b.p;
+double f_test(const JointFit& a, const JointFit& b, int extra_q) {
+  const int q = b.p - a.p + extra_q, dof = b.n - b.p - extra_q;
   if (q <= 0 || dof <= 0 || !(b.rss > 0)) return b.rss < a.rss ? 0.0 : 1.0;
   const double F = ((a.rss - b.rss) / q) / (b.rss / dof);
   if (!(F > 0)) return 1.0;
@@ -431,7 +446,7 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
                                  const std::function<void(const std::string&)>& progress, const std::string& cell_by,
                                  int cell_group, TrialCache* cache, const std::string& probe_input, int max_q,
                                  bool products, const std::string& cv_input) {
-  detail::FormPlans fp{d, spec, c, {}, products};
+  detail::FormPlans fp{d, spec, c, {}, products, &cur};
   std::vector<detail::Plan>& plans = fp.plans;
   for (EffectKind k : effects_for(c.name))
     if (detail::applicable(d, spec, k, c.name)) plans.push_back({{{k, ""}}});
@@ -466,8 +481,8 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
     if (max_q >= 0 && detail::layout(d, t.spec).n - p0 > max_q) continue;
     if (progress) progress("  " + c.name + ": trying " + t.name);
     fit_trial(d, folds, t, cache);
-    t.q = t.joint.p - cur_joint.p;
-    t.p_value = f_test(cur_joint, t.joint);
+    t.q = t.joint.p - cur_joint.p + t.extra_searched;
+    t.p_value = f_test(cur_joint, t.joint, t.extra_searched);
     const double gain = std::sqrt(std::max(0.0, cur.rms * cur.rms - t.cv.rms * t.cv.rms));
     t.passed = t.p_value <= thr && gain >= min_gain_N && t.cv.rms < cur.rms;
     out.push_back(std::move(t));
@@ -488,7 +503,8 @@ int choose_form(const std::vector<FormTrial>& t, const Folds& f) {
     // form: a product's parameters understate what was searched for it (the
     // quantity it multiplies, pressure or log speed, and a step's threshold),
     // so its count is not comparable with the other forms'.
-    if (t[i].product && !t[best].product) continue;
+    // A bump's too (its centre and width searched on a grid, form_bumps.cpp).
+    if (t[i].searched && !t[best].searched) continue;
     const double mse = t[i].cv.rms * t[i].cv.rms;
     if (mse - mse_best > mse_diff_se(t[i].cv, t[best].cv, f)) continue;
     if (t[i].q < t[keep].q || (t[i].q == t[keep].q && t[i].cv.rms < t[keep].cv.rms)) keep = static_cast<int>(i);
