@@ -24,8 +24,12 @@
 //              fitted jointly: linear per pin, levels (3 or 4 values: also
 //              per pin), a 3-dof smooth overall and per pin; levels and the
 //              smooth also times the pin's relative bending force, a change of
-//              the bending force itself), and the bending channel (F_B + c_pin z) alone
-//              or with a linear friction term ("both").  A numeric model input
+//              the bending force itself), the bending channel (F_B + c_pin z) alone
+//              or with a linear friction term ("both"), and (more than 8 values,
+//              form_bumps.cpp) a local Gaussian bump of the column on mu and on the
+//              force channel (newtons and scaled), overall and in the one-cell
+//              forms' cell, its centre and width scanned on the held-out residual
+//              (bump.hpp) and counted by the F test (q + 2).  A numeric model input
 //              the base model does not use (speed when continuous) gets the
 //              generic forms too.
 // A numeric column with empty cells gets these forms with the empty rows at
