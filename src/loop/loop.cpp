@@ -42,6 +42,10 @@ std::string sign_text(const Step& s, const std::string& var) {
   if (s.params.size() != 1) return "";
   const Param& p = s.params[0];
   const double t = p.se > 0 ? std::abs(p.value) / p.se : 0;
+  for (const Effect& e : s.added)  // a bump (form_bumps.cpp): higher or lower near its centre, not a trend
+    if (e.bump_width > 0 && e.kind == EffectKind::generic_smooth)
+      return std::string("mu ") + (p.value > 0 ? "higher" : "lower") + " near " + var + " = " + fmt(e.bump_centre, 6) +
+             " (" + fmt(t, 3) + " SE from zero)";
   return std::string("mu ") + (p.value > 0 ? "increases" : "decreases") + " with " + var + " (" + fmt(t, 3) +
          " SE from zero)";
 }
