@@ -129,7 +129,15 @@ struct CategoricalBy {
   }
 };
 
-/// mu (1 + sum_j beta_j B_j(x)): natural cubic spline basis (fit_model: f.basis), per group of `by` when set.
+/// A bump's parameter name: "bump of x (centre c, width w)" (Effect::bump_width > 0), else "spline j of x".
+inline std::string basis_text(const Effect& e, int j) {
+  return e.bump_width > 0 ? "bump of " + e.variable + " (centre " + fmt(e.bump_centre, 6) + ", width " +
+                                fmt(e.bump_width, 6) + ")"
+                          : "spline " + std::to_string(j + 1) + " of " + e.variable;
+}
+
+/// mu (1 + sum_j beta_j B_j(x)): natural cubic spline basis, or a bump
+/// (fit_model: f.basis), per group of `by` when set.
 struct Smooth {
   static int count(const Design&, const Effect& e) { return e.n_basis * (e.by.empty() ? 1 : own_groups(e)); }
   static void apply(const EffectArgs& a, Terms& t) {
@@ -152,7 +160,7 @@ struct Smooth {
         n[s + g * e.n_basis + j] =
             (e.level_basis && static_cast<size_t>(j + 1) < level_names.size()
                  ? "beta [" + e.variable + " = " + level_names[static_cast<size_t>(j + 1)] + "]"
-                 : "beta spline " + std::to_string(j + 1) + " of " + e.variable) +
+                 : "beta " + basis_text(e, j)) +
             (e.times.empty() ? "" : " times the centred " + e.times) +
             (e.by.empty() ? "" : " [" + group_text(e, g) + "]");
   }
@@ -193,7 +201,7 @@ struct ForceOffset {
     const int G = groups(e), P = per_group(e);
     for (int g = 0; g < G; ++g)
       for (int j = 0; j < P; ++j)
-        n[s + g * P + j] = "force c " + (e.n_basis > 0 ? "spline " + std::to_string(j + 1) + " of " + e.variable + " (N per SD)"
+        n[s + g * P + j] = "force c " + (e.n_basis > 0 ? basis_text(e, j) + " (N per SD)"
                                                        : "[" + e.variable + " = " + level_names[j + 1] + "] (N)") +
                            (e.by.empty() ? "" : " [" + group_text(e, g) + "]") +
                            (e.bend_scaled ? " x the pin's relative bending force" : "");

@@ -26,7 +26,8 @@ enum class EffectKind {
   generic_linear_by,   ///< mu * (1 + beta_g z): one slope per group g of a model input (pin, speed, direction)
   categorical_by,      ///< mu * (1 + g_{group,level}): a group factor per group of a model input
   bending_linear,      ///< bending channel: F_B + c_pin z per pin (fitted with the bending lines), z the z-score
-  generic_smooth,      ///< mu * (1 + sum_j beta_j B_j(x)): natural cubic spline of n_basis dof (per group with `by`)
+  generic_smooth,      ///< mu * (1 + sum_j beta_j B_j(x)): natural cubic spline of n_basis dof (per group with `by`),
+                       ///< or a Gaussian bump of x (Effect::bump_width > 0, n_basis 1)
   force_offset,        ///< outlet force + sum_j c_j B_j(x) on every row, rotating included (levels: one c per level
                        ///< but the first; numeric: spline basis of n_basis dof); per pin with by = "pin"
   generic_step,        ///< mu * (1 + beta [x > c]): a step at the threshold c (Effect::lambda_mm) chosen on a grid
@@ -69,6 +70,11 @@ struct Effect {
   /// spline: a categorical or few-level column that changes mu's slope in the
   /// model input, one slope change per level.
   bool level_basis = false;
+  /// generic_smooth / force_offset with n_basis 1: > 0 makes the basis a
+  /// Gaussian bump of the column, exp(-((x - bump_centre) / bump_width)^2 / 2)
+  /// (bump.hpp; centred and scaled to unit sd, as the spline basis), its
+  /// centre and width (column units) scanned by scan_bump; 0: the spline.
+  double bump_centre = 0, bump_width = 0;
 };
 
 std::string effect_name(EffectKind k);

@@ -11,6 +11,7 @@
 
 #include "core/csv.hpp"
 #include "loop/cells.hpp"
+#include "loop/form_plans.hpp"
 #include "loop/model_parts.hpp"
 
 namespace drawbend::loop {
@@ -23,6 +24,10 @@ bool generic_kind(EffectKind k) {
          k == EffectKind::generic_linear_by || k == EffectKind::categorical_by || k == EffectKind::bending_linear ||
          k == EffectKind::generic_smooth || k == EffectKind::force_offset || k == EffectKind::generic_step;
 }
+
+}  // namespace
+
+namespace detail {
 
 bool applicable(const Design& d, const ModelSpec& s, EffectKind k, const std::string& var) {
   for (const auto& e : s.effects)
@@ -53,41 +58,6 @@ bool applicable(const Design& d, const ModelSpec& s, EffectKind k, const std::st
   return true;
 }
 
-// Groups of a model input with at least two groups among the fixed-pin rows
-// (the inputs the screen's per-input probes use: screen_context in loop.cpp).
-std::vector<std::string> by_inputs(const Design& d) {
-  std::vector<std::string> out;
-  for (const std::string by : {"pin", "speed_mm_s", "direction_deg", "lubricant"}) {
-    int n = 0;
-    const std::vector<int> g = d.groups(by, &n);
-    std::set<int> seen;
-    for (size_t i = 0; i < g.size(); ++i)
-      if (!d.rows[i].rotating) seen.insert(g[i]);
-    if (seen.size() >= 2) out.push_back(by);
-  }
-  return out;
-}
-
-// The fits' arithmetic of model s as a key (TrialCache): two models with the
-// same key give the same cross-validation and joint fit bit for bit.  A library
-// effect whose rule reads no column of its own (effect_rules.hpp: pressure_mu,
-// stribeck, depletion, the direction effects, pin_surface, bending_tension) is
-// the same model whichever candidate named it, and drift is generic_linear
-// (both the rule Linear on the column's z-score, model.cpp).
-std::string fits_key(const ModelSpec& s) {
-  std::string k = s.bending_linear ? "1" : "0";
-  for (const auto& e : s.effects) {
-    const bool own_column = generic_kind(e.kind);
-    const EffectKind kind = e.kind == EffectKind::drift ? EffectKind::generic_linear : e.kind;
-    char num[96];
-    std::snprintf(num, sizeof num, "|%d,%a,%d,%d,%d,%d,%d,%d,", static_cast<int>(kind), e.lambda_mm, e.n_levels,
-                  e.n_groups, e.cell, e.n_basis, e.bend_scaled ? 1 : 0, e.cell_offset ? 1 : 0);
-    k += num + std::to_string(e.by.size()) + ":" + e.by + "," + (own_column ? e.variable : "") +
-         (e.times.empty() ? "" : "," + std::to_string(e.times.size()) + "x" + e.times + (e.level_basis ? "L" : ""));
-  }
-  return k;
-}
-
 // Is group g of model input `by` a union of the model's cells (every cell's
 // fixed-pin rows all in it or none)?  Then each cell's mu carries the group's
 // mean, and a one-cell form needs no factor of its own.
@@ -105,60 +75,6 @@ bool union_of_cells(const Design& d, const std::string& by, int g) {
   return true;
 }
 
-// A form to try: its effects (one, or several together).
-struct Part {
-  EffectKind k;
-  std::string by;
-  int nb = 0;     // generic_smooth: spline dof
-  int cell = -1;  // >= 0: confined to that group of `by`
-  bool scaled = false;  // force_offset: times the pin's relative bending force
-  std::string var;      // the column of the effect ("": the candidate's own)
-  bool offset = false;  // one-cell forms: the cell's own factor too (Effect::cell_offset)
-  std::string times;    // Effect::times: the shape times this centred model-input quantity
-  bool levels = false;  // generic_smooth with times: the column's levels as the basis (Effect::level_basis)
-};
-struct Plan {
-  std::vector<Part> parts;
-};
-
-// The forms to try for candidate c: the library's, and the generic forms of a
-// column (plans, in the order they are tried).
-struct FormPlans {
-  const Design& d;
-  const ModelSpec& spec;
-  const Candidate& c;
-  std::vector<Plan> plans;
-  bool with_products = false;  // LoopOptions::product_forms: products() plans its forms
-  void add(EffectKind k, const std::string& by = "") {
-    if (applicable(d, spec, k, c.name)) plans.push_back({{{k, by}}});
-  }
-  // A column of the data with 3 or 4 distinct numeric values (levels per group, as a categorical one).
-  bool few_levels(const std::set<double>& distinct) const {
-    return distinct.size() >= 3 && distinct.size() <= 4 && d.data->extra_index(c.name) >= 0 &&
-           replicated(distinct.size());
-  }
-  // 3 to 8 distinct numeric values, replicated: the column's levels as a form.
-  bool some_levels(const std::set<double>& distinct) const {
-    return distinct.size() >= 3 && distinct.size() <= 8 && replicated(distinct.size());
-  }
-  // Per-level forms only for levels of at least two rows on average
-  // (levels_replicated, candidates.hpp: a level of one row is fitted exactly
-  // by its own parameter, not identifiable apart from that row's noise).
-  bool replicated(size_t levels) const {
-    size_t rows = 0;
-    for (double v : c.x) rows += std::isfinite(v) ? 1 : 0;
-    return levels_replicated(levels, rows);
-  }
-  void categorical(const std::vector<std::string>& bys);
-  void numeric(const std::vector<std::string>& bys);
-  void force_and_bending(const std::set<double>& distinct);
-  void in_cell(const std::string& cell_by, int cell_group, int max_nb = 5, bool force = true);
-  void force_in_cell(const std::string& cell_by, int cell_group, bool levels, const std::set<double>& distinct,
-                     int max_nb);
-  void split_cells(const std::string& input);
-  void scanned_split(const std::string& input, const CvResult& cur);
-  void products(bool levels);
-};
 
 // A categorical column: its levels, per group of a model input, on the force channel.
 void FormPlans::categorical(const std::vector<std::string>& bys) {
@@ -206,62 +122,7 @@ void FormPlans::numeric(const std::vector<std::string>& bys) {
   }
   products(some_levels(distinct));
   force_and_bending(distinct);
-}
-
-// What a product form (Effect::times) means, for the report.
-std::string product_meaning(EffectKind k, bool levels, const std::string& times) {
-  const std::string g = levels ? "one value per level of x but the first"
-                        : k == EffectKind::generic_linear ? "a slope in x"
-                        : k == EffectKind::generic_step  ? "a step in x at a threshold chosen on a grid"
-                                                         : "a natural cubic spline of x";
-  const std::string q = times == kNominalPressure ? "q the nominal pressure F_back / (R w) (MPa, Eq. 2.2 at the back tension)"
-                                                  : times == kLnSpeed ? "q = ln of the speed (mm/s)" : "q = " + times;
-  return "x changes mu's slope in q: mu (1 + g(x) (q - q_mean)), g " + g + " (centred), " + q +
-         "; a rougher or warmer surface changes how mu depends on pressure or speed; no physics claimed for g";
-}
-
-// A column that changes how mu depends on the pressure or on the speed (a
-// rougher or warmer surface changes mu's sensitivity, not mu itself): the
-// column's shape times the centred nominal pressure (Eq. 2.2 at the back
-// tension: fixed by the design, not by the measured force) or the centred
-// log speed (Effect::times).  The shape: a slope, a step (its threshold on
-// generic_step's grid, the multiplier on) and a 3-dof smooth of a numeric
-// column; its levels (one slope change per level but the first) for
-// a categorical column or a numeric one of 3 to 8 replicated values
-// (`levels`).  Held-out error and the one-standard-error rule choose among
-// them and the other forms.
-void FormPlans::products(bool levels) {
-  if (!with_products) return;
-  const bool numeric = c.kind == "column" && applicable(d, spec, EffectKind::generic_linear, c.name);
-  // Levels of a column of the file only (a numeric model input with few
-  // values, such as a sliding distance, has no levels in Design::levels).
-  levels = levels && d.data->extra_index(c.name) >= 0;
-  std::vector<std::string> names;
-  if (levels) d.levels(c.name, &names);
-  levels = levels && names.size() >= 2 && names.size() <= 9;
-  for (const auto& e : spec.effects)  // one generic_smooth per column (applicable)
-    levels = levels && !(e.kind == EffectKind::generic_smooth && e.variable == c.name);
-  if (!numeric && !levels) return;
-  for (const std::string input : {kNominalPressure, kLnSpeed}) {
-    std::vector<double> m;
-    try {
-      m = d.values(input);
-    } catch (const InputError&) {
-      continue;  // e.g. a speed that is not positive: no log
-    }
-    std::set<double> seen;
-    for (size_t i = 0; i < m.size(); ++i)
-      if (!d.rows[i].rotating) seen.insert(m[i]);
-    if (seen.size() < 2) continue;  // the quantity does not vary on the fixed-pin rows
-    if (numeric)
-      for (EffectKind k : {EffectKind::generic_linear, EffectKind::generic_step})
-        if (applicable(d, spec, k, c.name)) plans.push_back({{{k, "", 0, -1, false, "", false, input}}});
-    if (numeric && applicable(d, spec, EffectKind::generic_smooth, c.name))
-      plans.push_back({{{EffectKind::generic_smooth, "", 3, -1, false, "", false, input}}});
-    if (levels)
-      plans.push_back({{{EffectKind::generic_smooth, "", static_cast<int>(names.size()) - 1, -1, false, "", false,
-                         input, true}}});
-  }
+  bumps(distinct);  // a local bump of the column, on mu and on the force channel (form_bumps.cpp)
 }
 
 // The force channel (rotating rows too): linear per pin, a smooth, a smooth per pin.
@@ -317,6 +178,7 @@ void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb, 
     for (int nb : {3, 5})
       if (nb <= max_nb) plans.push_back({{{EffectKind::generic_smooth, cell_by, nb, cell_group}}});
   if (force) force_in_cell(cell_by, cell_group, levels, distinct, max_nb);
+  if (max_nb >= 5) bumps(distinct, cell_by, cell_group, force);  // not in the split cells (3 dof)
 }
 
 // The force channel confined to one cell: a column that changes the bending
@@ -383,30 +245,82 @@ void FormPlans::scanned_split(const std::string& input, const CvResult& cur) {
   in_cell(by, s->side, 3, false);
 }
 
+}  // namespace detail
+
+namespace {
+
+// Groups of a model input with at least two groups among the fixed-pin rows
+// (the inputs the screen's per-input probes use: screen_context in loop.cpp).
+std::vector<std::string> by_inputs(const Design& d) {
+  std::vector<std::string> out;
+  for (const std::string by : {"pin", "speed_mm_s", "direction_deg", "lubricant"}) {
+    int n = 0;
+    const std::vector<int> g = d.groups(by, &n);
+    std::set<int> seen;
+    for (size_t i = 0; i < g.size(); ++i)
+      if (!d.rows[i].rotating) seen.insert(g[i]);
+    if (seen.size() >= 2) out.push_back(by);
+  }
+  return out;
+}
+
+// The fits' arithmetic of model s as a key (TrialCache): two models with the
+// same key give the same cross-validation and joint fit bit for bit.  A library
+// effect whose rule reads no column of its own (effect_rules.hpp: pressure_mu,
+// stribeck, depletion, the direction effects, pin_surface, bending_tension) is
+// the same model whichever candidate named it, and drift is generic_linear
+// (both the rule Linear on the column's z-score, model.cpp).
+std::string fits_key(const ModelSpec& s) {
+  std::string k = s.bending_linear ? "1" : "0";
+  for (const auto& e : s.effects) {
+    const bool own_column = generic_kind(e.kind);
+    const EffectKind kind = e.kind == EffectKind::drift ? EffectKind::generic_linear : e.kind;
+    char num[96];
+    std::snprintf(num, sizeof num, "|%d,%a,%d,%d,%d,%d,%d,%d,", static_cast<int>(kind), e.lambda_mm, e.n_levels,
+                  e.n_groups, e.cell, e.n_basis, e.bend_scaled ? 1 : 0, e.cell_offset ? 1 : 0);
+    k += num + std::to_string(e.by.size()) + ":" + e.by + "," + (own_column ? e.variable : "") +
+         (e.times.empty() ? "" : "," + std::to_string(e.times.size()) + "x" + e.times + (e.level_basis ? "L" : ""));
+    if (e.bump_width > 0) {  // a bump: its centre and width (two bumps never share a key)
+      std::snprintf(num, sizeof num, ",B%a,%a", e.bump_centre, e.bump_width);
+      k += num;
+    }
+  }
+  return k;
+}
+
 // Trial t of plan p: the model with its effects, and its name, meaning and channel.
-FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c, const Plan& p) {
+FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c, const detail::Plan& p) {
   FormTrial t;
   t.spec = spec;
   bool bend = false, fric = false;
-  for (const auto& [k, by, nb, cell, scaled, var, offset, times, levels] : p.parts) {
+  for (const auto& [k, by, nb, cell, scaled, var, offset, times, levels, centre, width] : p.parts) {
     // A pair's main effect (a column of its own) only when the model has none yet.
-    if (!var.empty() && !applicable(d, t.spec, k, var)) continue;
+    if (!var.empty() && !detail::applicable(d, t.spec, k, var)) continue;
     t.spec = with_effect(d, t.spec, k, var.empty() ? c.name : var, by, times);
     if (nb > 0) t.spec.effects.back().n_basis = nb;
     t.spec.effects.back().cell = cell;
     t.spec.effects.back().bend_scaled = scaled;
     t.spec.effects.back().cell_offset = offset && cell >= 0;
     t.spec.effects.back().level_basis = levels;
-    t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (var.empty() ? "" : " of " + var) + (levels ? " levels" : nb > 0 ? " " + std::to_string(nb) + " dof" : "") +
+    t.spec.effects.back().bump_centre = centre;
+    t.spec.effects.back().bump_width = width;
+    const std::string shape = width > 0 ? " bump at " + fmt(centre, 6) + ", width " + fmt(width, 6)
+                              : levels  ? " levels"
+                              : nb > 0  ? " " + std::to_string(nb) + " dof"
+                                        : "";
+    t.name += (t.name.empty() ? "" : " + ") + effect_name(k) + (var.empty() ? "" : " of " + var) + shape +
               (by.empty() ? "" : " (" + by + (cell >= 0 ? " group " + std::to_string(cell + 1) + " only" : "") +
                                   (cell >= 0 && offset ? ", with its own factor" : "") + ")") +
               (scaled ? " (scaled with the pin's bending force)" : "") +
               (times.empty() ? "" : " (times the centred " + times + ")");
-    const std::string meaning = times.empty() ? effect_meaning(k) : product_meaning(k, levels, times);
+    const std::string meaning = width > 0       ? detail::bump_meaning(k)
+                                : times.empty() ? effect_meaning(k)
+                                                : detail::product_meaning(k, levels, times);
     if (t.meaning.find(meaning) == std::string::npos)  // a pair's mains: the same meaning once
       t.meaning += (t.meaning.empty() ? "" : "; ") + meaning;
     (acts_on_bending(k) ? bend : fric) = true;
-    t.product = t.product || !times.empty();
+    t.searched = t.searched || !times.empty() || width > 0;
+    if (width > 0) t.extra_searched += 2;  // the bump's centre and width
   }
   t.channel = bend && fric ? "both" : bend ? "bending" : "friction";
   return t;
@@ -428,8 +342,8 @@ void fit_trial(const Design& d, const Folds& folds, FormTrial& t, TrialCache* ca
 
 }  // namespace
 
-double f_test(const JointFit& a, const JointFit& b) {
-  const int q = b.p - a.p, dof = b.n - b.p;
+double f_test(const JointFit& a, const JointFit& b, int extra_q) {
+  const int q = b.p - a.p + extra_q, dof = b.n - b.p - extra_q;
   if (q <= 0 || dof <= 0 || !(b.rss > 0)) return b.rss < a.rss ? 0.0 : 1.0;
   const double F = ((a.rss - b.rss) / q) / (b.rss / dof);
   if (!(F > 0)) return 1.0;
@@ -532,10 +446,10 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
                                  const std::function<void(const std::string&)>& progress, const std::string& cell_by,
                                  int cell_group, TrialCache* cache, const std::string& probe_input, int max_q,
                                  bool products, const std::string& cv_input) {
-  FormPlans fp{d, spec, c, {}, products};
-  std::vector<Plan>& plans = fp.plans;
+  detail::FormPlans fp{d, spec, c, {}, products, &cur};
+  std::vector<detail::Plan>& plans = fp.plans;
   for (EffectKind k : effects_for(c.name))
-    if (applicable(d, spec, k, c.name)) plans.push_back({{{k, ""}}});
+    if (detail::applicable(d, spec, k, c.name)) plans.push_back({{{k, ""}}});
   // Generic forms for a column of the data, and for a numeric model input the
   // base model does not use (speed when it is continuous, not a cell level).
   if (c.kind == "column" || c.kind == "pair" || (c.name == "speed_mm_s" && !d.speed_is_level)) {
@@ -562,13 +476,13 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
   }
   std::vector<FormTrial> out;
   const int p0 = max_q >= 0 ? detail::layout(d, spec).n : 0;
-  for (const Plan& p : plans) {
+  for (const detail::Plan& p : plans) {
     FormTrial t = named_trial(d, spec, c, p);
     if (max_q >= 0 && detail::layout(d, t.spec).n - p0 > max_q) continue;
     if (progress) progress("  " + c.name + ": trying " + t.name);
     fit_trial(d, folds, t, cache);
-    t.q = t.joint.p - cur_joint.p;
-    t.p_value = f_test(cur_joint, t.joint);
+    t.q = t.joint.p - cur_joint.p + t.extra_searched;
+    t.p_value = f_test(cur_joint, t.joint, t.extra_searched);
     const double gain = std::sqrt(std::max(0.0, cur.rms * cur.rms - t.cv.rms * t.cv.rms));
     t.passed = t.p_value <= thr && gain >= min_gain_N && t.cv.rms < cur.rms;
     out.push_back(std::move(t));
@@ -589,7 +503,8 @@ int choose_form(const std::vector<FormTrial>& t, const Folds& f) {
     // form: a product's parameters understate what was searched for it (the
     // quantity it multiplies, pressure or log speed, and a step's threshold),
     // so its count is not comparable with the other forms'.
-    if (t[i].product && !t[best].product) continue;
+    // A bump's too (its centre and width searched on a grid, form_bumps.cpp).
+    if (t[i].searched && !t[best].searched) continue;
     const double mse = t[i].cv.rms * t[i].cv.rms;
     if (mse - mse_best > mse_diff_se(t[i].cv, t[best].cv, f)) continue;
     if (t[i].q < t[keep].q || (t[i].q == t[keep].q && t[i].cv.rms < t[keep].cv.rms)) keep = static_cast<int>(i);

@@ -24,8 +24,12 @@
 //              fitted jointly: linear per pin, levels (3 or 4 values: also
 //              per pin), a 3-dof smooth overall and per pin; levels and the
 //              smooth also times the pin's relative bending force, a change of
-//              the bending force itself), and the bending channel (F_B + c_pin z) alone
-//              or with a linear friction term ("both").  A numeric model input
+//              the bending force itself), the bending channel (F_B + c_pin z) alone
+//              or with a linear friction term ("both"), and (more than 8 values,
+//              form_bumps.cpp) a local Gaussian bump of the column on mu and on the
+//              force channel (newtons and scaled), overall and in the one-cell
+//              forms' cell, its centre and width scanned on the held-out residual
+//              (bump.hpp) and counted by the F test (q + 2).  A numeric model input
 //              the base model does not use (speed when continuous) gets the
 //              generic forms too.
 // A numeric column with empty cells gets these forms with the empty rows at
@@ -57,10 +61,13 @@ struct FormTrial {
   CvResult cv;
   JointFit joint;
   double p_value = 1;  ///< nested-model F test against the current model
-  int q = 0;           ///< parameters added
+  int q = 0;           ///< parameters added, extra_searched included
   std::string name, meaning, channel;  ///< channel: friction, bending or both
   bool passed = false;
-  bool product = false;  ///< a product form (Effect::times): choose_form's guard
+  /// A form with parameters searched on a grid beyond those fitted: a
+  /// product (Effect::times) or a bump (Effect::bump_width): choose_form's guard.
+  bool searched = false;
+  int extra_searched = 0;  ///< searched parameters counted by the F test and in q (a bump: its centre and width, 2)
 };
 
 /// Cross-validations and joint fits already made by try_forms in one run of
@@ -73,8 +80,10 @@ struct TrialCache {
   std::map<std::string, std::pair<CvResult, JointFit>> fits;
 };
 
-/// Nested-model F test on the joint fits (bending and friction together).
-double f_test(const JointFit& a, const JointFit& b);
+/// Nested-model F test on the joint fits (bending and friction together);
+/// extra_q: parameters of b searched on a grid (a bump's centre and width),
+/// counted as fitted ones (q = b.p - a.p + extra_q, residual dof n - b.p - extra_q).
+double f_test(const JointFit& a, const JointFit& b, int extra_q = 0);
 
 /// The model s with effect k on `variable` added (depletion and the saturating
 /// exponential get their length on a grid by the full-data fit), its shape
@@ -103,9 +112,9 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
                                  const std::string& cv_input = "");
 
 /// Index of the form kept (simplest within one standard error of the best
-/// among those passed; a product form only when the best is a product too:
-/// its parameter count understates what was searched for it), -1 when none
-/// passed.
+/// among those passed; a searched form, a product or a bump, only when the
+/// best is a searched one too: its parameter count understates what was
+/// searched for it), -1 when none passed.
 int choose_form(const std::vector<FormTrial>& t, const Folds& f);
 
 /// Standard error of the difference of two held-out mean squared errors, from

@@ -42,6 +42,10 @@ std::string sign_text(const Step& s, const std::string& var) {
   if (s.params.size() != 1) return "";
   const Param& p = s.params[0];
   const double t = p.se > 0 ? std::abs(p.value) / p.se : 0;
+  for (const Effect& e : s.added)  // a bump (form_bumps.cpp): higher or lower near its centre, not a trend
+    if (e.bump_width > 0 && e.kind == EffectKind::generic_smooth)
+      return std::string("mu ") + (p.value > 0 ? "higher" : "lower") + " near " + var + " = " + fmt(e.bump_centre, 6) +
+             " (" + fmt(t, 3) + " SE from zero)";
   return std::string("mu ") + (p.value > 0 ? "increases" : "decreases") + " with " + var + " (" + fmt(t, 3) +
          " SE from zero)";
 }
@@ -87,7 +91,8 @@ ModelSpec without(const ModelSpec& spec, const Step& s, bool bending_linear) {
   for (const auto& e : spec.effects) {
     bool mine = false;
     for (const auto& m : s.added) mine = mine || (m.kind == e.kind && m.variable == e.variable && m.by == e.by && m.cell == e.cell && m.cell_offset == e.cell_offset &&
-                            m.bend_scaled == e.bend_scaled && m.times == e.times && m.level_basis == e.level_basis);
+                            m.bend_scaled == e.bend_scaled && m.times == e.times && m.level_basis == e.level_basis &&
+                            m.bump_centre == e.bump_centre && m.bump_width == e.bump_width);
     if (!mine) t.effects.push_back(e);
   }
   for (const auto& m : s.added)
@@ -329,6 +334,7 @@ Considered LoopSearch::evaluate(const CandidateResult& c, const Candidate& cand,
   for (size_t k = 0; k < r.trials.size(); ++k) {
     const FormTrial& t = r.trials[k];
     s.tried.push_back({t.name + " (F-test p " + fmt(t.p_value, 3) + ", " + std::to_string(t.q) + " parameters" +
+                           (t.extra_searched > 0 ? " (" + std::to_string(t.extra_searched) + " of them searched)" : "") +
                            (t.passed ? "" : ", failed a gate") + ")",
                        t.cv.rms});
     if (t.passed && (r.best < 0 || t.cv.rms < r.trials[r.best].cv.rms)) r.best = static_cast<int>(k);

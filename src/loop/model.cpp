@@ -8,6 +8,7 @@
 
 #include "analysis/rope.hpp"
 #include "core/csv.hpp"
+#include "loop/bump.hpp"
 #include "loop/gram.hpp"
 #include "loop/least_squares.hpp"
 #include "loop/predict_row.hpp"
@@ -224,6 +225,9 @@ void effect_values(const Design& d, const Effect& e, size_t k, Fit& f) {
       mean /= static_cast<double>(std::max<size_t>(1, lv.size()));
       for (double& v : col) v -= mean;
     }
+  } else if ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && e.n_basis == 1 &&
+             e.bump_width > 0) {
+    f.basis[k] = {bump_basis(d.values(e.variable), e.bump_centre, e.bump_width)};  // a bump (bump.hpp)
   } else if ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && e.n_basis > 0) {
     f.basis[k] = spline_basis(d.values(e.variable), e.n_basis);
   }

@@ -251,7 +251,7 @@ FormTrial one_se_trial(int q, double scale, double phase, bool product = false) 
   FormTrial t;
   t.q = q;
   t.passed = true;
-  t.product = product;
+  t.searched = product;
   double ss = 0;
   for (int i = 0; i < kTests * kRows; ++i) {
     const double e = scale * (1 + 0.3 * std::sin(0.37 * i + phase));
@@ -291,9 +291,9 @@ BOOST_AUTO_TEST_CASE(one_se_never_hands_the_step_to_a_product) {
   std::vector<FormTrial> v = {one_se_trial(1, 1.0, 0.0, true), one_se_trial(3, 0.995, 1.5, false)};
   BOOST_TEST(v[0].cv.rms * v[0].cv.rms - v[1].cv.rms * v[1].cv.rms < mse_diff_se(v[0].cv, v[1].cv, f));
   BOOST_TEST(choose_form(v, f) == 1);  // the product is simpler and within one SE, but not kept
-  v[1].product = true;
+  v[1].searched = true;
   BOOST_TEST(choose_form(v, f) == 0);  // both products: the simpler
-  v[0].product = false;
+  v[0].searched = false;
   BOOST_TEST(choose_form(v, f) == 0);  // the better one a product: the simpler non-product
 }
 

@@ -1,0 +1,83 @@
+// A local bump of a column as a form; see bump.hpp.
+#include "loop/bump.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace drawbend::loop {
+
+double bump_value(double x, double c, double w) {
+  const double u = (x - c) / w;
+  return std::exp(-0.5 * u * u);
+}
+
+std::vector<double> bump_basis(const std::vector<double>& x, double c, double w) {
+  std::vector<double> b(x.size());
+  const double n = static_cast<double>(std::max<size_t>(1, x.size()));
+  double m = 0;
+  for (size_t i = 0; i < x.size(); ++i) m += (b[i] = bump_value(x[i], c, w)) / n;
+  double q = 0;
+  for (double& v : b) {
+    v -= m;
+    q += v * v / n;
+  }
+  const double sd = q > 1e-24 ? std::sqrt(q) : 0.0;
+  for (double& v : b) v = sd > 0 ? v / sd : 0.0;
+  return b;
+}
+
+bool bump_supported(const std::vector<double>& xs, double c, double w) {
+  std::vector<double> near;
+  for (double v : xs)
+    if (std::abs(v - c) <= kBumpReach * w) near.push_back(v);
+  const size_t need = std::max<size_t>(kBumpMinRows, xs.size() / kBumpRowShare);
+  if (near.size() < need) return false;
+  std::sort(near.begin(), near.end());
+  return std::unique(near.begin(), near.end()) - near.begin() >= kBumpMinValues;
+}
+
+std::optional<Bump> scan_bump(const std::vector<double>& x, const std::vector<double>& r,
+                              const std::vector<char>& use) {
+  // Per distinct value of x: its rows and their sum of r (ascending x).
+  std::map<double, std::pair<double, double>> per;  // x -> (rows, sum of r)
+  double N = 0, R = 0;
+  for (size_t i = 0; i < x.size() && i < r.size(); ++i) {
+    if ((!use.empty() && (i >= use.size() || !use[i])) || !std::isfinite(x[i]) || !std::isfinite(r[i])) continue;
+    auto& p = per[x[i]];
+    p.first += 1, p.second += r[i];
+    N += 1, R += r[i];
+  }
+  if (per.size() < static_cast<size_t>(kBumpMinValues)) return std::nullopt;
+  std::vector<double> v, m, s;
+  for (const auto& [xv, p] : per) v.push_back(xv), m.push_back(p.first), s.push_back(p.second);
+  const double lo = v.front(), hi = v.back(), range = hi - lo;
+  if (!(range > 0)) return std::nullopt;
+  // Support from the cumulative rows and distinct values below a point (v ascending).
+  std::vector<double> cum(v.size() + 1, 0.0);
+  for (size_t j = 0; j < v.size(); ++j) cum[j + 1] = cum[j] + m[j];
+  const double need = std::max<double>(kBumpMinRows, std::floor(N / kBumpRowShare));
+  std::optional<Bump> best;
+  std::vector<double> b(v.size());
+  for (int k = 0; k < kBumpWidths; ++k) {
+    const double w = range * kBumpWidthMin * std::pow(kBumpWidthMax / kBumpWidthMin, k / (kBumpWidths - 1.0));
+    for (int j = 0; j < kBumpCentres; ++j) {
+      const double c = lo + range * j / (kBumpCentres - 1.0);
+      const size_t a = std::lower_bound(v.begin(), v.end(), c - kBumpReach * w) - v.begin();
+      const size_t e = std::upper_bound(v.begin(), v.end(), c + kBumpReach * w) - v.begin();
+      if (e < a + kBumpMinValues || cum[e] - cum[a] < need) continue;  // too few values or rows near c
+      double sb = 0, sbb = 0, sbr = 0;
+      for (size_t t = 0; t < v.size(); ++t) {
+        const double bv = bump_value(v[t], c, w);
+        sb += m[t] * bv, sbb += m[t] * bv * bv, sbr += s[t] * bv;
+      }
+      const double sxx = sbb - sb * sb / N, sxr = sbr - sb * R / N;
+      if (!(sxx > 1e-12 * std::max(1.0, sbb))) continue;
+      const double ex = sxr * sxr / sxx;
+      if (ex > 0 && (!best || ex > best->explained)) best = Bump{c, w, ex};
+    }
+  }
+  return best;
+}
+
+}  // namespace drawbend::loop
