@@ -55,6 +55,7 @@ inline void CandidateScreen::shuffle(std::vector<int>& p, Mt64& r) const {
       for (size_t k = gsize[gi]; k > 1;) {
         const size_t n = std::min(r.available(), k - 1);
         const std::uint64_t* y = r.take(n);
+#pragma GCC unroll 4
         for (size_t t = 0; t < n; ++t, --k) std::swap(q[k - 1], q[mod(y[t], k)]);
       }
     } else {
