@@ -24,6 +24,18 @@ namespace detail {
 inline bool reads_rd(const Row& r, int it) { return it < 0 || r.cos_phi > 1e-9; }
 inline bool reads_td(const Row& r, int ir) { return ir < 0 || r.sin_phi > 1e-9; }
 
+// exp(mu Theta) of friction_from_mu (rope.hpp), the same operations, with the
+// last argument and value kept per thread: the rows of one test usually share
+// mu (same cell, direction and group levels, no pressure term), and a
+// Jacobian's column and a fit's residuals visit them in turn.  exp is a pure
+// function, so a repeated mu gives the same bits (+0 and -0 both give 1; a
+// NaN never compares equal and is computed).
+inline double wrap_exp(double mu) {
+  thread_local double last_mu = std::nan(""), last_e = std::nan("");
+  if (!(mu == last_mu)) last_mu = mu, last_e = std::exp(mu * kWrapRad);
+  return last_e;
+}
+
 // Flattened: the effects' rules (visit_rule and each rule's apply) inline in
 // it, not a call per effect and row with its arguments through memory.
 [[gnu::flatten]] inline double predict_row(const Design& d, const Fit& f, const Layout& L, const Eigen::VectorXd& th,
@@ -67,7 +79,7 @@ inline bool reads_td(const Row& r, int ir) { return ir < 0 || r.sin_phi > 1e-9; 
     // on p's division (p still decides the other cases, as written).
     if (iters == 1 && std::isfinite(p) && mu0 != 0) mu = mu0 * t.factor * t.pinf;
     else mu = (mu0 + t.a1 * p) * t.factor * t.pinf;
-    ff = analysis::friction_from_mu(mu, r.fback, kWrapRad);
+    ff = r.fback * (wrap_exp(mu) - 1);  // analysis::friction_from_mu(mu, r.fback, kWrapRad)
   }
   if (mu_out) *mu_out = mu;
   if (p_out) *p_out = analysis::pressure_at_tension(r.pw_ref, r.fback, bend, ff, r.fref, bend_ref);

@@ -208,6 +208,8 @@ void CandidateScreen::setup_bounds() {
   ka.assign(static_cast<size_t>(nkeys) * nlev * kLanes, 0.0);
   kaw.assign(bwl >= 0 ? static_cast<size_t>(nkeys) * nlev * 2 * kLanes : 0, 0.0);
   kx.assign(static_cast<size_t>(nkeys) * 2 * kLanes, 0.0);
+  xlo.resize(U);
+  for (size_t u = 0; u < U; ++u) xlo[u] = static_cast<long>(xl[u]) * kLanes;
 }
 
 // The quad probe's ESS bound in lane j: b1 = sum x ur, b2 = sum x^2 ur (the
@@ -270,8 +272,9 @@ void CandidateScreen::bounded_max(const std::vector<int>* lp, double* zmax) {
       // lane j's value of unit u: the unit its permutation puts there
       const int v[L] = {p0[u], p1[u], p2[u], p3[u]};
       const v2 x[2] = {{xz[v[0]], xz[v[1]]}, {xz[v[2]], xz[v[3]]}};
-      const int lv[L] = {xl[v[0]], xl[v[1]], xl[v[2]], xl[v[3]]};
-      for (int j = 0; j < L; ++j) A[lv[j] * L + j] += r;
+      // lane j's sums of level l at (l L + j): o[j] = l L, in 64 bits (an address mode, no widening)
+      const long o[L] = {xlo[v[0]], xlo[v[1]], xlo[v[2]], xlo[v[3]]};
+      for (int j = 0; j < L; ++j) A[o[j] + j] += r;
       const v2 rr = {r, r};
       for (int h = 0; h < 2; ++h) x1[h] += x[h] * rr;
       if (quad)
@@ -279,7 +282,7 @@ void CandidateScreen::bounded_max(const std::vector<int>* lp, double* zmax) {
       if (wl2) {
         const v2 w = {wl1[u], wl2[u]};
         for (int j = 0; j < L; ++j) {
-          v2u* a = reinterpret_cast<v2u*>(AW + (static_cast<size_t>(lv[j]) * L + j) * 2);
+          v2u* a = reinterpret_cast<v2u*>(AW + (o[j] + j) * 2);
           *a += w;
         }
       }

@@ -103,6 +103,7 @@ struct CandidateScreen {
   std::vector<int> gkey, kstratum;
   int nkeys = 0;
   std::vector<double> ka, kaw, kx;  // per key: level sums (and wlevels'), and x r, x^2 r; by lane
+  std::vector<long> xlo;  // per unit: xl * kLanes, the lane-0 offset of its level's sums (64-bit: no widening per row)
 
   // screen.cpp
   void select_rows();

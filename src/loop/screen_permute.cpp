@@ -55,7 +55,12 @@ inline void CandidateScreen::shuffle(std::vector<int>& p, Mt64& r) const {
       for (size_t k = gsize[gi]; k > 1;) {
         const size_t n = std::min(r.available(), k - 1);
         const std::uint64_t* y = r.take(n);
-        for (size_t t = 0; t < n; ++t, --k) std::swap(q[k - 1], q[mod(y[t], k)]);
+        size_t t = 0;
+        for (; t + 1 < n; t += 2, k -= 2) {  // two draws a turn (GCC unrolls neither form itself)
+          std::swap(q[k - 1], q[mod(y[t], k)]);
+          std::swap(q[k - 2], q[mod(y[t + 1], k - 1)]);
+        }
+        if (t < n) std::swap(q[k - 1], q[mod(y[t], k)]), --k;
       }
     } else {
       const auto& g = groups[gi];
