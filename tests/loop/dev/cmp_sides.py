@@ -20,13 +20,13 @@ def read(path):
 out = sys.argv[1]
 blocks = sys.argv[2:] or sorted({os.path.basename(p)[5:-4] for p in glob.glob(out + '/main_*.txt')})
 G = L = 0; alarms = {'main': 0, 'branch': 0}; ratios = []; tm = tb = 0.0
-per = {}
+per = {}  # (generator, class) -> [main detected, branch detected, sets]
 changes = []
 for s0 in blocks:
     m = read(f'{out}/main_{s0}.txt'); b = read(f'{out}/branch_{s0}.txt')
     gen = 'wild' if any(v[0] == 'channel' for v in m.values()) else 'blind' if any(v[0] == 'bending' for v in m.values()) else '?'
     for i in sorted(set(m) & set(b)):
-        cm, om, em, fm, _ = m[i]; cb, ob, eb, fb, lb = b[i]
+        cm, om, em, fm, _ = m[i]; cb, ob, eb, fb, _ = b[i]
         seed = int(s0) + i
         tm += em; tb += eb
         if em > 0: ratios.append(eb / em)
@@ -34,8 +34,7 @@ for s0 in blocks:
             alarms['main'] += om == 'FALSE_ALARM'; alarms['branch'] += ob == 'FALSE_ALARM'
             if om != ob: changes.append(f'  null {seed}: {om} -> {ob}')
             continue
-        key = (gen, cm); pm, pb = per.get(key, (0, 0, 0))[:2], None
-        c = per.setdefault(key, [0, 0, 0]); c[0] += om == 'detected'; c[1] += ob == 'detected'; c[2] += 1
+        c = per.setdefault((gen, cm), [0, 0, 0]); c[0] += om == 'detected'; c[1] += ob == 'detected'; c[2] += 1
         dm, db = om == 'detected', ob == 'detected'
         if db and not dm: G += 1; changes.append(f'  GAIN {seed} {cm}: {om} {fm} -> {ob} {fb}')
         elif dm and not db: L += 1; changes.append(f'  LOSS {seed} {cm}: {om} {fm} -> {ob} {fb}')
