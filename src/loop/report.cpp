@@ -192,7 +192,8 @@ void evidence_header(std::ostringstream& m, const Design& d, const LoopResult& r
   if (std::isfinite(r.noise.sigma_N))
     m << "- Replicate noise (the scatter of repeated samples within one test, about a line in the back tension): "
     << fmt(r.noise.sigma_N, 4) << " N from " << r.noise.tests << " tests (" << r.noise.rows
-    << " rows; successive differences in " << r.noise.order << " order)"
+    << " rows; residuals of polynomials in the back tension and the run position, rows in " << r.noise.order
+    << " order)"
     << (r.noise.sigma_N < 1e-6 ? ": none at all, the rows lie exactly on lines (data sampled from fits)" : "")
     << ".\n";
   else
