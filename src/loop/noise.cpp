@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
+#include <string>
 
 #include <Eigen/Dense>
 
@@ -14,6 +16,9 @@ NoiseFloor replicate_noise(const Design& d, const std::vector<double>* values) {
   const auto& R = d.data->rows;
   nf.order = d.data->has_time ? "time_s" : d.data->has_sliding ? "sliding_distance_mm" : "file";
   std::map<std::string, std::vector<int>> tests;
+  if (values && values->size() != R.size())
+    throw std::logic_error("replicate_noise: " + std::to_string(values->size()) + " values for " +
+                           std::to_string(R.size()) + " rows");
   const auto y_of = [&](size_t i) { return values ? (*values)[i] : R[i].outlet_force_N; };
   for (size_t i = 0; i < R.size(); ++i)
     if (!values || std::isfinite(y_of(i))) tests[R[i].test_id].push_back(static_cast<int>(i));
