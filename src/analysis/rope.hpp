@@ -38,8 +38,12 @@ double mu_from_friction(double Ffric_N, double Fback_N, double theta_rad);
 /// the capstan law of Eq. 2.3 without bending): F_fric = F_back (exp(mu Theta) - 1).
 /// Computed as exp(...) - 1, not expm1, so that the loop's fits keep their bits.
 /// Inline: the loop's Levenberg-Marquardt fits call it per row and iteration.
+/// Split in two for callers that keep exp(mu Theta) (the loop's predict_row
+/// memoises it): wrap_factor = exp(mu Theta), friction_from_wrap = F_back (e - 1).
+inline double wrap_factor(double mu, double theta_rad) { return std::exp(mu * theta_rad); }
+inline double friction_from_wrap(double wrap, double Fback_N) { return Fback_N * (wrap - 1); }
 inline double friction_from_mu(double mu, double Fback_N, double theta_rad) {
-  return Fback_N * (std::exp(mu * theta_rad) - 1);
+  return friction_from_wrap(wrap_factor(mu, theta_rad), Fback_N);
 }
 
 }  // namespace drawbend::analysis

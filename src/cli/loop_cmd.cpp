@@ -79,6 +79,7 @@ struct LoopArgs {
   std::string exports = "lsdyna,openradioss,abaqus", export_parts;
   loop::ExportOptions eo;
   std::string model_help = "empirical";  // --model, read by take_model before the parse; listed by --help
+  std::string noise_floor = "data";
 };
 
 /// `drawbend loop`'s options, with their ranges and examples, in --help's order.
@@ -96,6 +97,7 @@ void add_loop_options(Options& opt, LoopArgs& a) {
   opt.add(lo.pooled_inputs, "pooled-inputs", "per-input probes of test-level variables also pooled over cells (compares the tests of one pin, direction or lubricant across cells)");
   opt.add(lo.pair_probes, "pair-probes", "pairs of numeric columns probed together (the product of the centred columns; one permutation family)");
   opt.add(lo.far_ratio, "far-ratio", "with no significant step while the held-out RMS is above this x the measured replicate noise, the candidates with the largest held-out gain (up to 3; after the first, those with at least half its gain) are given their forms, and a step must be a form of at most 9 parameters and take half the excess over the noise (0: off)");
+  opt.add(a.noise_floor, "noise-floor", "opt-in (development): data (the replicate noise of the measured forces) or model (after every step, the smaller of that and the same scatter of the current model's held-out residual)");
   opt.add(lo.cell_probes, "cell-probes", "opt-in (development): screen and forms for effects confined to one pin, speed, direction or lubricant");
   opt.add(lo.product_forms, "product-forms", "forms for a column that changes mu's pressure or speed slope (its slope, step, smooth or levels times the centred nominal pressure or log speed); false: without them");
   opt.add(a.threads, "threads", "threads of the screen, candidates screened at once (0: one, the default; results identical for any count; the fits run on one thread)");
@@ -152,6 +154,9 @@ BendingSource apply_loop_options(const Options& opt, LoopArgs& a) {
                      "scripts (with loop_residual.gp: figures/ of the source tree; '' for no figures), found " +
                      (std::filesystem::is_directory(a.figures) ? "a folder without them"
                       : std::filesystem::exists(a.figures) ? "a path that is not a folder" : "nothing there"));
+  if (a.noise_floor != "data" && a.noise_floor != "model")
+    throw InputError("--noise-floor: expected data or model, found '" + clip_for_message(a.noise_floor) + "'");
+  a.lo.model_noise = a.noise_floor == "model";
   if (a.lo.cv != "auto" && a.lo.cv != "test" && a.lo.cv != "bt-block")  // before the data are read, named
     throw InputError("--cv: expected auto, test or bt-block, found '" + clip_for_message(a.lo.cv) + "'");
   a.lo.bending_linear = a.bending != "constant";

@@ -27,16 +27,6 @@ std::vector<double> bump_basis(const std::vector<double>& x, double c, double w)
   return b;
 }
 
-bool bump_supported(const std::vector<double>& xs, double c, double w) {
-  std::vector<double> near;
-  for (double v : xs)
-    if (std::abs(v - c) <= kBumpReach * w) near.push_back(v);
-  const size_t need = std::max<size_t>(kBumpMinRows, xs.size() / kBumpRowShare);
-  if (near.size() < need) return false;
-  std::sort(near.begin(), near.end());
-  return std::unique(near.begin(), near.end()) - near.begin() >= kBumpMinValues;
-}
-
 std::optional<Bump> scan_bump(const std::vector<double>& x, const std::vector<double>& r,
                               const std::vector<char>& use) {
   // Per distinct value of x: its rows and their sum of r (ascending x).

@@ -45,11 +45,6 @@ struct Bump {
   double centre = 0, width = 0, explained = 0;
 };
 
-/// Does the bump at (c, w) have support among the values xs (the scanned
-/// rows' x): at least kBumpMinValues distinct values and max(kBumpMinRows,
-/// n / kBumpRowShare) rows with |x - c| <= kBumpReach w?
-bool bump_supported(const std::vector<double>& xs, double c, double w);
-
 /// Over the grid above (the range of x over the rows with use[i] != 0 and
 /// x and r finite; use empty: every such row), the supported bump whose
 /// slope explains the largest sum of squares of r: (sum (b - b_mean)(r -

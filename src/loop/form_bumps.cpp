@@ -21,7 +21,7 @@ std::string bump_meaning(EffectKind k) {
              : "generic local effect: mu (1 + beta b(x)), " + b + "; an effect local in x, no physics claimed";
 }
 
-// A numeric column of the file with more than 8 distinct values: a bump of it
+// A numeric column of the file (FormPlans::measured_column) with more than 8 distinct values: a bump of it
 // on mu (1 dof: its height), and on the force channel in newtons and as a
 // share of each pin's bending force (scaled), overall (cell_group < 0) or in
 // the one group cell_group of cell_by only (friction, and with `force` the
@@ -31,7 +31,7 @@ std::string bump_meaning(EffectKind k) {
 // one-cell form.  Held-out error, the F test (q + 2) and the one-SE rule
 // (never handed the step from a better form) choose among it and the others.
 void FormPlans::bumps(const std::set<double>& distinct, const std::string& cell_by, int cell_group, bool force) {
-  if (!cur || c.kind != "column" || c.categorical || d.data->extra_index(c.name) < 0 || distinct.size() <= 8) return;
+  if (!cur || c.kind != "column" || c.categorical || !measured_column() || distinct.size() <= 8) return;
   std::vector<double> x;
   try {
     x = d.values(c.name);  // what the basis reads (an empty cell at the column's mean)

@@ -70,6 +70,14 @@ struct FormPlans {
   bool some_levels(const std::set<double>& distinct) const {
     return distinct.size() >= 3 && distinct.size() <= 8 && replicated(distinct.size());
   }
+  // A column the file measures that is no model input: an extra column, or
+  // the run's own time or sliding distance (row-level columns: a bump or a
+  // one-cell force form of them was never tried, so an effect local in the
+  // sliding distance was left to a spline of too few dof).
+  bool measured_column() const {
+    return d.data->extra_index(c.name) >= 0 || (c.name == "time_s" && d.data->has_time) ||
+           (c.name == "sliding_distance_mm" && d.data->has_sliding);
+  }
   // Per-level forms only for levels of at least two rows on average
   // (levels_replicated, candidates.hpp: a level of one row is fitted exactly
   // by its own parameter, not identifiable apart from that row's noise).
@@ -81,7 +89,7 @@ struct FormPlans {
   void categorical(const std::vector<std::string>& bys);
   void numeric(const std::vector<std::string>& bys);
   void force_and_bending(const std::set<double>& distinct);
-  void in_cell(const std::string& cell_by, int cell_group, int max_nb = 5, bool force = true);
+  void in_cell(const std::string& cell_by, int cell_group, int max_nb = 8, bool force = true);
   void force_in_cell(const std::string& cell_by, int cell_group, bool levels, const std::set<double>& distinct,
                      int max_nb);
   void split_cells(const std::string& input);

@@ -156,7 +156,8 @@ void FormPlans::force_and_bending(const std::set<double>& distinct) {
 // An effect confined to one cell (the group of a model input the screen's
 // strongest one-group probe points at, or the worst-fitted group of the
 // strongest probe's input, or of the probe with the largest held-out gain):
-// a slope, a smooth of 3 (up to max_nb: 5) dof or
+// a slope, a smooth of 3, 5 or 8 dof (up to max_nb; 8 with more than 8
+// values: a narrow bump, a step or two periods in the cell) or
 // the levels in that cell only, none elsewhere; with `force`, on the force
 // channel as well (force_in_cell).  Held-out error and the
 // one-standard-error rule choose between it and the global forms.
@@ -175,8 +176,9 @@ void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb, 
   if (!c.categorical && applicable(d, spec, EffectKind::generic_linear_by, c.name))
     plans.push_back({{{EffectKind::generic_linear_by, cell_by, 0, cell_group}}});
   if (!c.categorical && applicable(d, spec, EffectKind::generic_smooth, c.name))
-    for (int nb : {3, 5})
-      if (nb <= max_nb) plans.push_back({{{EffectKind::generic_smooth, cell_by, nb, cell_group}}});
+    for (int nb : {3, 5, 8})
+      if (nb <= max_nb && (nb < 8 || distinct.size() > 8))
+        plans.push_back({{{EffectKind::generic_smooth, cell_by, nb, cell_group}}});
   if (force) force_in_cell(cell_by, cell_group, levels, distinct, max_nb);
   if (max_nb >= 5) bumps(distinct, cell_by, cell_group, force);  // not in the split cells (3 dof)
 }
@@ -192,7 +194,7 @@ void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb, 
 // among them and the friction forms.
 void FormPlans::force_in_cell(const std::string& cell_by, int cell_group, bool levels,
                               const std::set<double>& distinct, int max_nb) {
-  if (d.data->extra_index(c.name) < 0 || !applicable(d, spec, EffectKind::force_offset, c.name)) return;
+  if (!measured_column() || !applicable(d, spec, EffectKind::force_offset, c.name)) return;
   bool numeric = !c.categorical;
   try {
     if (numeric) d.values(c.name);
@@ -204,7 +206,7 @@ void FormPlans::force_in_cell(const std::string& cell_by, int cell_group, bool l
     if (levels) plans.push_back({{{EffectKind::force_offset, cell_by, 0, cell_group, scaled}}});
     if (numeric) plans.push_back({{{EffectKind::force_offset, cell_by, 1, cell_group, scaled}}});
     if (numeric && distinct.size() > 8)
-      for (int nb : {3, 5})
+      for (int nb : {3, 5})  // the force channel's smooth: up to 5 dof
         if (nb <= max_nb) plans.push_back({{{EffectKind::force_offset, cell_by, nb, cell_group, scaled}}});
   }
 }

@@ -124,7 +124,7 @@ struct Considered {
 // The search's state: the current model, its fits and the steps found so far.
 struct LoopSearch {
   LoopSearch(const Design& d, const LoopOptions& o, LoopResult& res, double sigma)
-      : d(d), o(o), res(res), sigma(sigma), memo(d, res.folds) {
+      : d(d), o(o), res(res), sigma_data(sigma), sigma(sigma), memo(d, res.folds) {
     spec.bending_linear = o.bending_linear;
     base_cv = memo.cv(spec);
     cur = base_cv;
@@ -135,7 +135,8 @@ struct LoopSearch {
   const Design& d;
   const LoopOptions& o;
   LoopResult& res;
-  const double sigma;
+  const double sigma_data;  // the data's replicate noise (0: none usable)
+  double sigma;             // the floor: sigma_data, or with o.model_noise the smaller of it and refloor()'s
   FitMemo memo;
   TrialCache trials_done;  // the forms' fits, by their arithmetic (forms.hpp)
   ModelSpec spec;
@@ -163,6 +164,7 @@ struct LoopSearch {
                     const std::vector<std::string>& given, double thr, RoundChoice& ch);
   std::string no_step_reason(const std::vector<CandidateResult>& rank, double thr) const;
   void add_step(RoundChoice& ch);
+  void refloor();
   bool backfit();
   void order_steps();
   void cv_by_step();
@@ -473,6 +475,17 @@ void LoopSearch::add_step(RoundChoice& ch) {
   s.rms_after = cur.rms;
   s.max_after = cur.max_abs;
   steps.push_back(s);
+  refloor();
+}
+
+// The model floor (LoopOptions::model_noise): the replicate noise measured
+// again on the current model's held-out residual, the floor the smaller of
+// it and the data's own.  Off, or without a usable data floor: unchanged.
+void LoopSearch::refloor() {
+  if (!o.model_noise || !(sigma_data > 0)) return;
+  const NoiseFloor m = replicate_noise(d, &cur.resid);
+  sigma = std::isfinite(m.sigma_N) && m.sigma_N > 0 ? std::min(sigma_data, m.sigma_N) : sigma_data;
+  progress(o, "noise floor " + fmt(sigma, 4) + " N (the data's " + fmt(sigma_data, 4) + " N)");
 }
 
 // Backfitting: an effect that is no longer needed given the others (its F
@@ -505,6 +518,7 @@ bool LoopSearch::backfit() {
   cur = memo.cv(spec);
   cur_fit = memo.fit(spec);
   cur_joint = memo.joint(spec);
+  refloor();
   return true;
 }
 
@@ -574,6 +588,7 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
   }
   res.steps = s.steps;
   res.final_fit = s.cur_fit;
+  if (s.sigma < s.sigma_data) res.noise_data_N = s.sigma_data, res.noise.sigma_N = s.sigma;  // the model floor
   conclude(res, o, s.last_rank);
   return res;
 }

@@ -79,6 +79,12 @@ struct LoopOptions {
   /// The held-out error is "at the noise level" when RMS / sigma <= this (see
   /// loop.cpp: at_noise_limit for the reason).
   double noise_ratio = 1.25;
+  /// Opt-in (`--noise-floor model`; off until a paired check decides,
+  /// heldout_record.md): after every step the replicate noise is measured again
+  /// on the current model's held-out residual (replicate_noise with values),
+  /// and the floor (the minimum effect, the far-from-noise rule, the
+  /// conclusion) is the smaller of that and the data's own.
+  bool model_noise = false;
   bool progress = false;  ///< print progress to stderr
   /// Significant candidates given their best form per round (the best of them is added).
   int contenders = 3;
@@ -183,6 +189,9 @@ struct LoopResult {
   Fit final_fit;
   Folds folds;
   NoiseFloor noise;
+  /// With LoopOptions::model_noise and a floor lowered by it: the data's own
+  /// replicate noise [N] (noise.sigma_N is then the final floor); else NaN.
+  double noise_data_N = std::nan("");
   double ratio = std::nan("");  ///< final held-out RMS / replicate noise
   bool at_noise = false;
   std::vector<std::string> remaining;  ///< strongest remaining candidates when not at the noise level

@@ -4,17 +4,24 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
+#include <string>
 
 #include <Eigen/Dense>
 
 namespace drawbend::loop {
 
-NoiseFloor replicate_noise(const Design& d) {
+NoiseFloor replicate_noise(const Design& d, const std::vector<double>* values) {
   NoiseFloor nf;
   const auto& R = d.data->rows;
   nf.order = d.data->has_time ? "time_s" : d.data->has_sliding ? "sliding_distance_mm" : "file";
   std::map<std::string, std::vector<int>> tests;
-  for (size_t i = 0; i < R.size(); ++i) tests[R[i].test_id].push_back(static_cast<int>(i));
+  if (values && values->size() != R.size())
+    throw std::logic_error("replicate_noise: " + std::to_string(values->size()) + " values for " +
+                           std::to_string(R.size()) + " rows");
+  const auto y_of = [&](size_t i) { return values ? (*values)[i] : R[i].outlet_force_N; };
+  for (size_t i = 0; i < R.size(); ++i)
+    if (!values || std::isfinite(y_of(i))) tests[R[i].test_id].push_back(static_cast<int>(i));
   double num = 0, den = 0, mean_y = 0;
   for (const auto& s : R) mean_y += std::abs(s.outlet_force_N) / R.size();
   for (auto& [id, ix] : tests) {
@@ -40,7 +47,7 @@ NoiseFloor replicate_noise(const Design& d) {
       X(k, 1) = F;
       if (q >= 4) X(k, 2) = t, X(k, 3) = t * t;
       if (q >= 6) X(k, 4) = F * F, X(k, 5) = t * t * t;
-      y[k] = R[ix[k]].outlet_force_N;
+      y[k] = y_of(static_cast<size_t>(ix[k]));
     }
     const auto qr = X.colPivHouseholderQr();
     const int rank = static_cast<int>(qr.rank());

@@ -11,8 +11,18 @@
 // within-test structure (depletion along the sliding distance, drift) so that
 // it is not mistaken for noise.  Structure that varies between tests (pin,
 // batch, direction, speed) never enters.  Units: N.
+//
+// With `values` (one per row, NaN: the row is skipped) the same scatter is
+// measured on those values in place of the outlet force: the loop's opt-in
+// model floor (LoopOptions::model_noise) measures it on the current model's
+// held-out residual after every step.  A within-test effect of a row-level
+// column (a bump in the sliding distance, a load-cell temperature that changes
+// from row to row) that no polynomial in the run position follows inflates
+// the data's floor (up to 5 x the true noise on development sets,
+// heldout_record.md); what the model explains of it leaves the residual's.
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "loop/model.hpp"
 
@@ -26,6 +36,6 @@ struct NoiseFloor {
   bool exact = false;             ///< rows lie exactly on lines (sigma below 1e-6 of the mean force)
 };
 
-NoiseFloor replicate_noise(const Design& d);
+NoiseFloor replicate_noise(const Design& d, const std::vector<double>* values = nullptr);
 
 }  // namespace drawbend::loop

@@ -24,15 +24,14 @@ namespace detail {
 inline bool reads_rd(const Row& r, int it) { return it < 0 || r.cos_phi > 1e-9; }
 inline bool reads_td(const Row& r, int ir) { return ir < 0 || r.sin_phi > 1e-9; }
 
-// exp(mu Theta) of friction_from_mu (rope.hpp), the same operations, with the
-// last argument and value kept per thread: the rows of one test usually share
+// analysis::wrap_factor(mu, kWrapRad) (rope.hpp) with the last argument and value kept per thread: the rows of one test usually share
 // mu (same cell, direction and group levels, no pressure term), and a
 // Jacobian's column and a fit's residuals visit them in turn.  exp is a pure
 // function, so a repeated mu gives the same bits (+0 and -0 both give 1; a
 // NaN never compares equal and is computed).
 inline double wrap_exp(double mu) {
   thread_local double last_mu = std::nan(""), last_e = std::nan("");
-  if (!(mu == last_mu)) last_mu = mu, last_e = std::exp(mu * kWrapRad);
+  if (!(mu == last_mu)) last_mu = mu, last_e = analysis::wrap_factor(mu, kWrapRad);
   return last_e;
 }
 
@@ -79,7 +78,7 @@ inline double wrap_exp(double mu) {
     // on p's division (p still decides the other cases, as written).
     if (iters == 1 && std::isfinite(p) && mu0 != 0) mu = mu0 * t.factor * t.pinf;
     else mu = (mu0 + t.a1 * p) * t.factor * t.pinf;
-    ff = r.fback * (wrap_exp(mu) - 1);  // analysis::friction_from_mu(mu, r.fback, kWrapRad)
+    ff = analysis::friction_from_wrap(wrap_exp(mu), r.fback);  // friction_from_mu, exp memoised
   }
   if (mu_out) *mu_out = mu;
   if (p_out) *p_out = analysis::pressure_at_tension(r.pw_ref, r.fback, bend, ff, r.fref, bend_ref);

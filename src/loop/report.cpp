@@ -192,7 +192,13 @@ void evidence_header(std::ostringstream& m, const Design& d, const LoopResult& r
   if (std::isfinite(r.noise.sigma_N))
     m << "- Replicate noise (the scatter of repeated samples within one test, about a line in the back tension): "
     << fmt(r.noise.sigma_N, 4) << " N from " << r.noise.tests << " tests (" << r.noise.rows
-    << " rows; successive differences in " << r.noise.order << " order)"
+    << " rows; residuals of polynomials in the back tension and the run position, rows in " << r.noise.order
+    << " order"
+    << (std::isfinite(r.noise_data_N)
+            ? "; measured on the final model's held-out residual (`--noise-floor model`), the data's own being " +
+                  fmt(r.noise_data_N, 4) + " N"
+            : std::string())
+    << ")"
     << (r.noise.sigma_N < 1e-6 ? ": none at all, the rows lie exactly on lines (data sampled from fits)" : "")
     << ".\n";
   else

@@ -9,11 +9,11 @@
 //    proportional to it), its explained sum of squares r's.  With a
 //    constant added to r and x in another row order, the same.
 //  - The support rules.  A bump counts only with at least 5 distinct values
-//    of x and max(10, n/20) rows within 1.5 widths of its centre:
-//    bump_supported refuses a bump over 4 distinct values (however many rows),
-//    and one over 5 values with 9 rows (n = 9..199: 10 needed), accepts 10 rows
-//    over 5 values, and refuses 10 rows of n = 400 (20 needed); scan_bump
-//    returns nothing for a column of 4 distinct values.
+//    of x and max(10, n/20) rows within 1.5 widths of its centre, so
+//    scan_bump returns nothing for a column of 4 distinct values (however
+//    many rows), nothing when the only bumps with 5 values hold 9 rows of
+//    n = 10 (10 needed) or 19 of n = 400 (20 needed), and a bump with 10 of
+//    11 or 20 of 400.
 //  - The F test counts the centre and width (f_test's extra_q): with extra_q
 //    = 2 the p-value is the F distribution's with q + 2 and n - p - 2 degrees
 //    of freedom, ((rss_a - rss_b) / (q + 2)) / (rss_b / (n - p - 2)).
@@ -84,22 +84,31 @@ BOOST_AUTO_TEST_CASE(support_rules_refuse_thin_bumps) {
   std::vector<double> x;
   for (int r = 0; r < 10; ++r)
     for (double v : {1.0, 1.1, 1.2, 1.3}) x.push_back(v);
-  BOOST_TEST(!bump_supported(x, 1.15, 1.0));
   std::vector<double> r(x.size());
   for (size_t i = 0; i < r.size(); ++i) r[i] = std::sin(3.0 * i);
   BOOST_TEST(!scan_bump(x, r).has_value());
-  // 5 values, 9 rows near the centre among 100: 10 needed.
-  std::vector<double> y = {1.0, 1.1, 1.2, 1.3, 1.4, 1.0, 1.1, 1.2, 1.3};
-  for (int i = 0; i < 91; ++i) y.push_back(100.0 + i);
-  BOOST_TEST(!bump_supported(y, 1.2, 0.2));
-  y.push_back(1.4);  // 10 rows near it among 101
-  BOOST_TEST(bump_supported(y, 1.2, 0.2));
-  // Among 400 rows: max(10, 400 / 20) = 20 needed.
-  for (int i = 0; i < 299; ++i) y.push_back(1000.0 + i);
-  BOOST_TEST(y.size() == 400u);
-  BOOST_TEST(!bump_supported(y, 1.2, 0.2));
-  // Rows beyond 1.5 widths do not count.
-  BOOST_TEST(!bump_supported({1.0, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9}, 1.0, 0.1));
+  // The row rules through scan_bump itself: a cluster of 5 values in
+  // [0, 0.004] and the rest of the rows at x = 1 (range 1).  The widest bump
+  // reaches 1.5 x 0.33 = 0.495 of the range from its centre, so no bump
+  // holds the cluster and x = 1 both; a bump of x = 1 alone has 1 value.
+  // Only the cluster's rows can support a bump, and r (1 on the cluster, 0
+  // at x = 1) gives every supported cluster bump something to explain.
+  const auto fixture = [](int cluster_rows, int far_rows, std::vector<double>& xs, std::vector<double>& rs) {
+    xs.clear(), rs.clear();
+    for (int i = 0; i < cluster_rows; ++i) xs.push_back(0.001 * (i % 5)), rs.push_back(1.0);
+    for (int i = 0; i < far_rows; ++i) xs.push_back(1.0), rs.push_back(0.0);
+  };
+  std::vector<double> xs, rs;
+  fixture(9, 1, xs, rs);  // n = 10: 10 rows needed near the centre, 9 there
+  BOOST_TEST(!scan_bump(xs, rs).has_value());
+  fixture(10, 1, xs, rs);  // 10 there
+  const auto b10 = scan_bump(xs, rs);
+  BOOST_REQUIRE(b10.has_value());
+  BOOST_TEST(b10->centre <= 0.5);
+  fixture(19, 381, xs, rs);  // n = 400: max(10, 400 / 20) = 20 needed, 19 there
+  BOOST_TEST(!scan_bump(xs, rs).has_value());
+  fixture(20, 380, xs, rs);  // 20 there
+  BOOST_TEST(scan_bump(xs, rs).has_value());
 }
 
 BOOST_AUTO_TEST_CASE(f_test_counts_the_centre_and_width) {
