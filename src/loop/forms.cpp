@@ -188,7 +188,7 @@ void FormPlans::in_cell(const std::string& cell_by, int cell_group, int max_nb, 
 // or a thickness that matters at one bend, a lubricant that changes how the
 // strip wraps) has no friction signature there, and the global force forms
 // spread it over every cell.  The column's levels, a slope and (more than 8
-// values) a smooth of 3 and up to max_nb dof of a numeric column, in the cell only, each as
+// values) a smooth of 3 and 5 dof (at most max_nb) of a numeric column, in the cell only, each as
 // newtons and as a share of each pin's bending force (the same with one pin:
 // then only newtons).  Held-out error and the one-standard-error rule choose
 // among them and the friction forms.
