@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <numeric>
 #include <random>
 #include <sstream>
@@ -370,6 +371,14 @@ struct Forces {
   }
 };
 
+// Whether an effect of size 1 changes any outlet force.
+bool acts(Forces& forces) {
+  const std::vector<double> y0 = forces(0), y1 = forces(1);
+  for (size_t i = 0; i < y0.size(); ++i)
+    if (y1[i] != y0[i]) return true;
+  return false;
+}
+
 // The effect size a whose RMS on the outlet force is k times the noise sd
 // (k drawn here; 0 for a null set), the other sign if mu hits its floor or
 // the effect makes a row implausible: an outlet force within 4 noise sd of
@@ -511,12 +520,25 @@ Dataset synthesize_blind(const BlindOptions& o, BlindTruth& t) {
   draw_tests(r, design);
   schedule(r, design);
   const std::vector<RowT> rows = draw_rows(r, design);
-  Planter planted{r, design, rows, t};
-  planted.plant(cls);
-  Forces forces{design, rows, planted.g, planted.channel};
-  const double a = effect_size(r, o, cls, planted.channel, forces, t);
+  // The effect, drawn again from the same stream while it has nothing to act
+  // on (an effect confined to a cell where its shape is zero on every row, or
+  // a mu effect on rotating-pin rows only): a set whose first draw acts is the
+  // same as before this rule; one that never acts in 20 draws is refused.
+  const BlindTruth drawn = t;
+  std::unique_ptr<Planter> planted;
+  for (int k = 0; !planted; ++k) {
+    if (k == 20) throw std::logic_error("blind_synth: 20 planted effects of size 0 (seed " + std::to_string(o.seed) + ")");
+    t = drawn;
+    planted.reset(new Planter{r, design, rows, t});
+    planted->plant(cls);
+    if (cls == "null") break;
+    Forces f{design, rows, planted->g, planted->channel};
+    if (!acts(f)) planted.reset();
+  }
+  Forces forces{design, rows, planted->g, planted->channel};
+  const double a = effect_size(r, o, cls, planted->channel, forces, t);
   const std::vector<double> y = forces(a);
-  t.law = law_text(cls, planted.channel, t, a);
+  t.law = law_text(cls, planted->channel, t, a);
 
   OptionalColumns opt{};
   Dataset d = dataset_header(r, o, opt);
