@@ -37,6 +37,8 @@ class Mt64 {
     if (p_ >= kN) refill();
     return kN - p_;
   }
+  /// The most that available() returns (the stream's buffer).
+  static constexpr std::size_t kBlock = 312;
   const std::uint64_t* take(std::size_t n) {
     const std::uint64_t* y = y_ + p_;
     p_ += n;
@@ -45,6 +47,7 @@ class Mt64 {
 
  private:
   static constexpr std::size_t kN = 312;
+  static_assert(kN == kBlock, "available() returns at most kBlock");
   static constexpr std::uint64_t kF = 6364136223846793005ULL;
   void refill() {
     mt64_refill(x_, y_);

@@ -52,15 +52,16 @@ inline void CandidateScreen::shuffle(std::vector<int>& p, Mt64& r) const {
   for (size_t gi = 0; gi < groups.size(); ++gi) {
     if (run[gi]) {  // the draws in blocks of the stream's buffer (the same numbers)
       int* q = p.data() + gfirst[gi];
+      // The block's swap targets first, then its swaps: the reductions (a
+      // multiply chain each) no longer wait on the swaps' loads and stores,
+      // and the swaps' addresses are ready when they run.  The same draws,
+      // the same swaps in the same order.
+      std::uint32_t j[Mt64::kBlock];
       for (size_t k = gsize[gi]; k > 1;) {
         const size_t n = std::min(r.available(), k - 1);
         const std::uint64_t* y = r.take(n);
-        size_t t = 0;
-        for (; t + 1 < n; t += 2, k -= 2) {  // two draws a turn (GCC unrolls neither form itself)
-          std::swap(q[k - 1], q[mod(y[t], k)]);
-          std::swap(q[k - 2], q[mod(y[t + 1], k - 1)]);
-        }
-        if (t < n) std::swap(q[k - 1], q[mod(y[t], k)]), --k;
+        for (size_t t = 0; t < n; ++t) j[t] = static_cast<std::uint32_t>(mod(y[t], k - t));
+        for (size_t t = 0; t < n; ++t, --k) std::swap(q[k - 1], q[j[t]]);
       }
     } else {
       const auto& g = groups[gi];
