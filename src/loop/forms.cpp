@@ -352,6 +352,12 @@ double f_test(const JointFit& a, const JointFit& b, int extra_q) {
   return boost::math::cdf(boost::math::complement(boost::math::fisher_f_distribution<double>(q, dof), F));
 }
 
+int searched_params(const std::vector<Effect>& added) {
+  int q = 0;
+  for (const Effect& e : added) q += e.bump_width > 0 ? 2 : 0;
+  return q;
+}
+
 ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const std::string& variable,
                       const std::string& by, const std::string& times) {
   ModelSpec t = s;

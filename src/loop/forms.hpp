@@ -85,6 +85,11 @@ struct TrialCache {
 /// counted as fitted ones (q = b.p - a.p + extra_q, residual dof n - b.p - extra_q).
 double f_test(const JointFit& a, const JointFit& b, int extra_q = 0);
 
+/// The searched parameters of a step's effects: a bump's centre and width (2
+/// each), which the F test counts (extra_q) as try_forms did when the step was
+/// added (FormTrial::extra_searched): backfitting's and the report's F tests.
+int searched_params(const std::vector<Effect>& added);
+
 /// The model s with effect k on `variable` added (depletion and the saturating
 /// exponential get their length on a grid by the full-data fit), its shape
 /// times the centred model-input quantity `times` when that is not empty

@@ -488,14 +488,6 @@ void LoopSearch::refloor() {
   progress(o, "noise floor " + fmt(sigma, 4) + " N (the data's " + fmt(sigma_data, 4) + " N)");
 }
 
-// The step's searched parameters: a bump's centre and width (2 each), which
-// the F test counts as try_forms did when the step was added (FormTrial::extra_searched).
-int searched_params(const Step& s) {
-  int q = 0;
-  for (const Effect& e : s.added) q += e.bump_width > 0 ? 2 : 0;
-  return q;
-}
-
 // Backfitting: an effect that is no longer needed given the others (its F
 // test given all the others above the threshold, or the held-out error no
 // worse without it) is removed, the weakest first, and the forward search
@@ -508,7 +500,7 @@ bool LoopSearch::backfit() {
   double worst = -1;
   for (size_t j = 0; j < steps.size(); ++j) {
     const ModelSpec t = without(spec, steps[j], o.bending_linear);
-    const double p = f_test(memo.joint(t), cur_joint, searched_params(steps[j]));
+    const double p = f_test(memo.joint(t), cur_joint, searched_params(steps[j].added));
     const CvResult cv = memo.cv(t);
     // Never a removal that costs held-out error beyond one standard error of
     // the difference: the F test is on the joint fit, the held-out error on
@@ -537,7 +529,7 @@ void LoopSearch::order_steps() {
     const ModelSpec t = without(spec, s, o.bending_linear);
     const CvResult cv = memo.cv(t);
     s.contribution = cv.rms * cv.rms - cur.rms * cur.rms;
-    s.p_value = f_test(memo.joint(t), cur_joint, searched_params(s));
+    s.p_value = f_test(memo.joint(t), cur_joint, searched_params(s.added));
     s.params = new_params(memo.fit(t), cur_fit);
     if (s.effect.rfind("generic", 0) == 0)
       s.sign = sign_text(s, s.variable);
