@@ -521,9 +521,10 @@ Dataset synthesize_blind(const BlindOptions& o, BlindTruth& t) {
   schedule(r, design);
   const std::vector<RowT> rows = draw_rows(r, design);
   // The effect, drawn again from the same stream while it has nothing to act
-  // on (an effect confined to a cell where its shape is zero on every row, or
-  // a mu effect on rotating-pin rows only): a set whose first draw acts is the
-  // same as before this rule; one that never acts in 20 draws is refused.
+  // on (seeds 79200020 and 79400020: a threshold of speed_mm_s confined to a
+  // cell whose speeds all lie below the threshold, so g = 0 on every row): a
+  // set whose first draw acts is the same as before this rule; one that never
+  // acts in 20 draws is refused.
   const BlindTruth drawn = t;
   std::unique_ptr<Planter> planted;
   for (int k = 0; !planted; ++k) {
