@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "loop/figure_data.hpp"
 #include "loop/friction_model.hpp"
 
 #include <cmath>
@@ -168,15 +169,34 @@ void write_tables(const Design& d, const LoopResult& r, const std::string& out) 
   write_file_atomic(out + "/loop_summary.json", summary_json(r));
 }
 
-// The residuals against each candidate (gnuplot, figdir/loop_residual.gp).
+// The residuals against each candidate (gnuplot, figdir/loop_residual.gp):
+// every row, or above kFigurePointRows rows each bin's mean and spread
+// (tables/residual_bins.csv, figdir/loop_residual_bins.gp; figure_data.hpp).
 void residual_figures(const LoopResult& r, const std::string& out, const std::string& figdir,
                       const std::string& gnuplot, Figures& figs) {
+  const std::vector<double>&before = r.cv.front().resid, &after = r.cv.back().resid;
+  const bool binned = before.size() > kFigurePointRows;
+  if (binned) {
+    CsvWriter w({"candidate", "x", "rows", "before_mean_N", "before_sd_N", "after_mean_N", "after_sd_N", "name"});
+    w.comment(" held-out residual (N) of the base model (before) and the final model (after) in bins of each "
+              "candidate (numbered as in residuals.csv): one bin per value up to " + std::to_string(kFigureBins) +
+              " values, else " + std::to_string(kFigureBins) + " bins of equal row count; x the bin's mean, sd "
+              "the rows' sample standard deviation");
+    for (size_t k = 0; k < r.candidates.size(); ++k)
+      for (const ResidualBin& b : residual_bins(r.candidates[k].x, before, after))
+        w.row({std::to_string(k + 1), fmt(b.x, 8), std::to_string(b.rows), fmt(b.before_mean, 6),
+               fmt(b.before_sd, 6), fmt(b.after_mean, 6), fmt(b.after_sd, 6), safe(r.candidates[k].name)});
+    w.save(out + "/tables/residual_bins.csv");
+  }
   for (size_t k = 0; k < r.candidates.size(); ++k) {
     const auto& c = r.candidates[k];
     const std::string svg = out + "/figures/resid_" + safe(c.name) + ".svg";
-    std::string e = "outfile='" + svg + "'; datafile='" + out + "/tables/residuals.csv'; figdir='" + figdir +
-                    "'; xcol='" + std::to_string(6 + k) + "'; xname='" + safe(c.name) + "'";
-    const std::string cmd = gnuplot + " -e \"" + e + "\" '" + figdir + "/loop_residual.gp'";
+    std::string e = "outfile='" + svg + "'; figdir='" + figdir + "'; xname='" + safe(c.name) + "'; " +
+                    (binned ? "datafile='" + out + "/tables/residual_bins.csv'; cand='" + std::to_string(k + 1) +
+                                  "'; rows='" + std::to_string(before.size()) + "'"
+                            : "datafile='" + out + "/tables/residuals.csv'; xcol='" + std::to_string(6 + k) + "'");
+    const std::string cmd =
+        gnuplot + " -e \"" + e + "\" '" + figdir + (binned ? "/loop_residual_bins.gp'" : "/loop_residual.gp'");
     figs.add(std::system(cmd.c_str()) == 0, "figures/resid_" + safe(c.name) + ".svg");
   }
 }
@@ -329,9 +349,7 @@ void surface_figure(const Design& d, const LoopResult& r, const FrictionModel& f
   // The data behind the surface, the points identify_friction fits it to: each fixed-pin row of
   // this lubricant whose cell has this direction, at the pressure predict_mu_at gives it.
   const std::string pts = out + "/tables/surface_points" + tag + ".dat";
-  std::ostringstream pt;
-  int n_pts = 0;
-  pt << "# p_MPa v_mm_s: fixed-pin rows, " << dir << ", lubricant " << fm.surfaces[k].lubricant << "\n";
+  std::vector<double> ps, vs;
   const bool rd = dir[0] == 'R';
   for (std::size_t i = 0; i < d.rows.size(); ++i) {
     const Row& row = d.rows[i];
@@ -340,10 +358,19 @@ void surface_figure(const Design& d, const LoopResult& r, const FrictionModel& f
       continue;
     double p = 0;
     const double mu = predict_mu_at(d, r.final_fit, static_cast<int>(i), rd ? 0.0 : M_PI / 2, &p);
-    if (std::isfinite(mu) && std::isfinite(p))
-      pt << fmt(p, 6) << " " << fmt(d.data->rows[i].speed_mm_s, 6) << "\n", ++n_pts;
+    if (std::isfinite(mu) && std::isfinite(p)) ps.push_back(p), vs.push_back(d.data->rows[i].speed_mm_s);
   }
+  // Each distinct point at the figure's resolution once, with its count of rows (figure_data.hpp).
+  const std::vector<PlotPoint> drawn = distinct_points(ps, vs);
+  const std::size_t n_pts = ps.size();
+  std::ostringstream pt;
+  pt << "# p_MPa v_mm_s rows: " << n_pts << " fixed-pin rows, " << dir << ", lubricant " << fm.surfaces[k].lubricant
+     << ", at " << drawn.size() << " distinct points (1/" << kFigureCells
+     << " of each axis's range; a point at its first row's values)\n";
+  for (const PlotPoint& q : drawn) pt << fmt(q.u, 6) << " " << fmt(q.v, 6) << " " << q.rows << "\n";
   write_file_atomic(pts, pt.str());
+  // Markers of about 4 px, or 1.5 px above kFigurePointRows rows, where larger ones cover the surface.
+  const std::string marker = n_pts > kFigurePointRows ? "0.2" : "0.5";
   // A coloured map with its colour bar, the rows on it.
   write_file_atomic(gp, "set terminal svg size 720,520 noenhanced\nset output '" + out + "/" + svg +
                             "'\nset view map\nset xlabel 'p [MPa]'\nset ylabel 'v [mm/s]'\n"
@@ -351,7 +378,7 @@ void surface_figure(const Design& d, const LoopResult& r, const FrictionModel& f
                             "set key outside below\nset title 'fitted mu(p, v), " + std::string(dir) + ", " +
                             safe(fm.surfaces[k].lubricant) + (n_pts ? "" : " (no fixed-pin rows in this direction)") +
                             "'\nsplot '" + dat + "' with pm3d notitle" +
-                            (n_pts ? ", '" + pts + "' using 1:2:(0) with points pt 7 ps 0.5 lc rgb 'black' "
+                            (n_pts ? ", '" + pts + "' using 1:2:(0) with points pt 7 ps " + marker + " lc rgb 'black' "
                                                    "title 'fixed-pin rows'"
                                    : std::string()) +
                             "\n");

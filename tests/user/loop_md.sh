@@ -6,8 +6,9 @@
 #  - the replicate noise is explained where it is printed, and no bullet of the
 #    evidence is printed twice;
 #  - each fitted surface is a coloured map (gnuplot `set view map`, pm3d, a
-#    colour box) with the fixed-pin rows drawn on it (a points file with one
-#    "p v" line per fixed-pin row of that lubricant and direction; a surface
+#    colour box) with the fixed-pin rows drawn on it (a points file of "p v
+#    rows" lines, each distinct point at the figure's resolution once with its
+#    count of fixed-pin rows of that lubricant and direction; a surface
 #    without rows in its direction says so in its title).
 # On the thesis data set (data/measured/thesis_drawbend.csv), with figures.
 # Usage: loop_md.sh DRAWBEND DATA_DIR WORK_DIR
