@@ -86,7 +86,7 @@ CvResult cross_validate(const Design& d, const ModelSpec& spec, const Folds& f) 
     for (size_t i = 0; i < n; ++i)
       if (f.fold[i] != k) train.push_back(static_cast<int>(i));
     if (train.size() == n) continue;
-    const Fit fit = fit_model(d, spec, train);
+    const Fit fit = fit_model(d, spec, train, false);  // theta only: no standard errors
     const detail::Layout L = detail::layout(d, fit.spec);  // predict()'s, made once per fold, not per row
     for (size_t i = 0; i < n; ++i)
       if (f.fold[i] == k) {

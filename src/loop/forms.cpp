@@ -379,7 +379,7 @@ ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const s
     Effect v = e;
     v.lambda_mm = lam;
     u.effects.push_back(v);
-    return fit_model(d, u).rss;
+    return fit_model(d, u, {}, false).rss;
   };
   if (k == EffectKind::depletion) {  // lambda: grid, then golden section in log(lambda), by the full-data fit
     const std::vector<double> grid = {10.0, 25.0, 50.0, 100.0, 200.0, 400.0, 800.0};

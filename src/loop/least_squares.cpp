@@ -39,7 +39,7 @@ bool reads_hold(const Eigen::VectorXd& th, const Eigen::VectorXd& r, const RowRe
 }  // namespace
 
 double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::MatrixXd& J, bool& converged,
-                           const RowResidualFn& row, const RowReads* reads) {
+                           const RowResidualFn& row, const RowReads* reads, bool want_jacobian) {
   const int p = static_cast<int>(th.size());
   const Eigen::VectorXd th_start = th;
   Eigen::VectorXd r = resid(th);
@@ -150,13 +150,41 @@ double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::
     if (use_structure) use_structure = reads_hold(th, r, row, *reads, evals);
     g_row_evals += evals;
   }
+  if (!want_jacobian && was_sparse && use_structure) {
+    // No Jacobian wanted: only the pattern's check below, on the entries it
+    // looks at that the first pattern does not hold (the structure's rows of
+    // column j outside used[j]; the entries in both cannot fail it), each the
+    // same expression as jacobian()'s, so the same decision bit for bit.
+    long long evals = 0;
+    bool holds = true;
+    for (int j = 0; j < p && holds; ++j) {
+      Eigen::VectorXd t2 = th;
+      const double h = 1e-7 * std::max(1.0, std::abs(th[j]));
+      t2[j] += h;
+      auto u = used[j].begin();
+      for (int k : structure[j]) {
+        while (u != used[j].end() && *u < k) ++u;
+        if (u != used[j].end() && *u == k) continue;
+        ++evals;
+        if (!((r[k] - row(t2, k)) / h == 0)) {
+          holds = false;
+          break;
+        }
+      }
+    }
+    g_row_evals += evals;
+    if (holds) return sse;
+    th = th_start;  // as below: the dense fit instead
+    return levenberg_marquardt(th, resid, J, converged, nullptr, nullptr, false);
+  }
+  if (!want_jacobian && !was_sparse) return sse;  // no pattern to check
   jacobian();  // dense (or the structure's entries of it): the one returned for the standard errors
   if (was_sparse) {
     const std::vector<std::vector<int>> now = pattern();
     for (int j = 0; j < p; ++j)
       if (!std::includes(used[j].begin(), used[j].end(), now[j].begin(), now[j].end())) {
         th = th_start;  // a derivative outside the first pattern: the dense fit instead
-        return levenberg_marquardt(th, resid, J, converged);  // no `reads`: dense throughout
+        return levenberg_marquardt(th, resid, J, converged, nullptr, nullptr, want_jacobian);  // dense throughout
       }
   }
   return sse;

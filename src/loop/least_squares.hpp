@@ -28,7 +28,13 @@
 //    bit; if not, the fit runs dense as without `reads`.  A row whose residual
 //    is not finite gets every column (as the dense Jacobian gives it).  So the
 //    Jacobians, the pattern, its check and the fit are those of the dense
-//    first Jacobian bit for bit.
+//    first Jacobian bit for bit;
+//  - with want_jacobian false (a fit whose standard errors nobody reads: a
+//    cross-validation fold, a sum of squares), J is left unspecified and the
+//    last Jacobian is not made; only the entries that the pattern's check
+//    reads and the first pattern does not hold are evaluated (usually none),
+//    so theta, the SSE, `converged` and the check's decision are those of
+//    want_jacobian true bit for bit.
 #pragma once
 
 #include <functional>
@@ -71,7 +77,8 @@ class RowReads {
 };
 
 double levenberg_marquardt(Eigen::VectorXd& th, const ResidualFn& resid, Eigen::MatrixXd& J, bool& converged,
-                           const RowResidualFn& row = nullptr, const RowReads* reads = nullptr);
+                           const RowResidualFn& row = nullptr, const RowReads* reads = nullptr,
+                           bool want_jacobian = true);
 
 /// Row evaluations made by levenberg_marquardt's Jacobians since the program
 /// started (a counter for the complexity test of issue 50, not a timing).

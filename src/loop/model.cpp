@@ -383,7 +383,7 @@ void standard_errors(const Design& d, const ModelSpec& spec, const Layout& L, co
 
 }  // namespace
 
-Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& train_in) {
+Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& train_in, bool want_errors) {
   std::vector<int> train = train_in;
   if (train.empty())
     for (size_t i = 0; i < d.rows.size(); ++i) train.push_back(static_cast<int>(i));
@@ -410,7 +410,7 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   add_row_reads(d, f, L, rows, reads);
   Eigen::MatrixXd J;
   double sse = 0;
-  if (n > 0) sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads);
+  if (n > 0) sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads, want_errors);
   if (n > 0 && f.has_force && bending_effects.empty()) {
     // The bending lines refitted to the rotating rows less the force channel,
     // then the friction and force parameters again, alternated until the sum
@@ -420,7 +420,7 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
       f.params.clear();
       fit_bending(d, train, linear_bending, f, &off);
       const double prev = sse;
-      sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads);
+      sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads, want_errors);
       if (!(sse < prev * (1 - 1e-6))) break;
     }
   }
@@ -428,7 +428,7 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
   f.rss = sse;
   f.n_fixed = n;
   f.n_friction_params = p;
-  if (n > 0 && p > 0) standard_errors(d, spec, L, J, sse, n, p, f);
+  if (want_errors && n > 0 && p > 0) standard_errors(d, spec, L, J, sse, n, p, f);
   return f;
 }
 
@@ -499,7 +499,7 @@ JointFit fit_joint(const Design& d, const ModelSpec& spec) {
   Eigen::MatrixXd J;
   bool conv = false;
   JointFit j;
-  j.rss = levenberg_marquardt(th, resid, J, conv, row, &reads);
+  j.rss = levenberg_marquardt(th, resid, J, conv, row, &reads, false);  // its rss only
   j.n = static_cast<int>(rows.size());
   j.p = static_cast<int>(th.size());
   for (const auto& q : f.params)  // bending-channel coefficients: held at the bending fit, but parameters

@@ -154,8 +154,13 @@ struct Fit {
   std::vector<char> seen;            ///< friction parameter had training rows
 };
 
-/// Fit on the rows whose index is in `train` (all rows when empty).
-Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& train = {});
+/// Fit on the rows whose index is in `train` (all rows when empty).  With
+/// standard_errors false (a cross-validation fold, a sum of squares) the
+/// parameters' standard errors are not computed (f.params holds no friction
+/// entry) and neither is the last Jacobian (least_squares.hpp); theta, the
+/// bending lines and rss are the same bit for bit.
+Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& train = {},
+              bool standard_errors = true);
 /// Bending and friction fitted together on all rows (rotating and fixed), so
 /// that the residual sum of squares of nested models can be compared by an F
 /// test that accounts for the uncertainty of the bending lines.

@@ -15,6 +15,13 @@
 //    checks) + 2 n (first and last Jacobian) + 100 n rows; with a wrong claim
 //    (row k said to read theta_(g(k)+1)) the check fails and the fit still
 //    equals the dense one bit for bit.
+//  - without the Jacobian (want_jacobian false: a cross-validation fold):
+//    the group factor with `reads` gives theta, SSE and `converged` bit for
+//    bit as with it, and evaluates exactly n rows fewer (the last Jacobian's
+//    one entry per row; the pattern's check evaluates none, as every entry of
+//    the structure is nonzero); the changing pattern (a tanh, every row said
+//    to read both parameters) is caught by the check without the Jacobian as
+//    well, and the dense refit gives theta and SSE bit for bit as with it.
 //  - the convergence flag: r_k = y_k - t0 (a mean, y_k = k) from t0 = 0
 //    converges to t0 = (n - 1) / 2 with `converged` true; with one y_k NaN the
 //    SSE is NaN at the start, no step compares below it, theta stays 0 and
@@ -126,4 +133,56 @@ BOOST_AUTO_TEST_CASE(a_nan_start_is_not_converged) {
   BOOST_TEST(!converged);
   BOOST_TEST(th[0] == 0.0);
   BOOST_TEST(std::isnan(sse));
+}
+
+BOOST_AUTO_TEST_CASE(without_the_jacobian_the_same_fit) {
+  const int n = 4000, p = 40;
+  Eigen::VectorXd y(n);
+  for (int k = 0; k < n; ++k) y[k] = std::exp(0.01 * (k % p)) + 1e-3 * std::sin(k);
+  auto row = [&](const Eigen::VectorXd& t, int k) { return y[k] - std::exp(t[k % p]); };
+  auto resid = [&](const Eigen::VectorXd& t) {
+    Eigen::VectorXd r(n);
+    for (int k = 0; k < n; ++k) r[k] = row(t, k);
+    return r;
+  };
+  RowReads reads;
+  for (int k = 0; k < n; ++k) reads.push_row({k % p});
+  Eigen::VectorXd a = Eigen::VectorXd::Constant(p, 0.5), b = a;
+  Eigen::MatrixXd Ja, Jb;
+  bool ca = false, cb = true;
+  const long long c0 = lm_jacobian_row_evaluations();
+  const double sa = levenberg_marquardt(a, resid, Ja, ca, row, &reads);
+  const long long c1 = lm_jacobian_row_evaluations();
+  const double sb = levenberg_marquardt(b, resid, Jb, cb, row, &reads, false);
+  const long long c2 = lm_jacobian_row_evaluations();
+  BOOST_TEST(sa == sb);
+  BOOST_TEST((a.array() == b.array()).all());
+  BOOST_TEST(ca == cb);
+  BOOST_TEST((c1 - c0) - (c2 - c1) == static_cast<long long>(n));
+
+  // The pattern changes between the start and the solution: caught without the Jacobian too.
+  const int m = 200;
+  Eigen::VectorXd x(m), z(m);
+  for (int k = 0; k < m; ++k) x[k] = -1 + 2.0 * k / (m - 1), z[k] = 2 * std::tanh(1.5 * x[k]) + 0.01 * std::cos(7 * k);
+  auto row2 = [&](const Eigen::VectorXd& t, int k) { return z[k] - t[0] * std::tanh(t[1] * x[k]); };
+  auto resid2 = [&](const Eigen::VectorXd& t) {
+    Eigen::VectorXd r(m);
+    for (int k = 0; k < m; ++k) r[k] = row2(t, k);
+    return r;
+  };
+  RowReads both;
+  for (int k = 0; k < m; ++k) both.push_row({0, 1});
+  Eigen::VectorXd u(2), v(2), w(2);
+  u << 0.0, 1.0;
+  v = u, w = u;
+  Eigen::MatrixXd Ju, Jv, Jw;
+  bool cu = false, cv = false, cw = false;
+  const double su = levenberg_marquardt(u, resid2, Ju, cu);  // dense throughout
+  const double sv = levenberg_marquardt(v, resid2, Jv, cv, row2, &both);
+  const double sw = levenberg_marquardt(w, resid2, Jw, cw, row2, &both, false);
+  BOOST_TEST(su == sv);
+  BOOST_TEST(sv == sw);
+  BOOST_TEST((v.array() == w.array()).all());
+  BOOST_TEST((u.array() == w.array()).all());
+  BOOST_TEST(std::abs(w[1] - 1.5) < 0.1);
 }
