@@ -35,16 +35,26 @@
 
 using namespace drawbend::loop;
 
-BOOST_AUTO_TEST_CASE(group_factor_is_sparse_and_exact) {
-  const int n = 4000, p = 40;
-  Eigen::VectorXd y(n);
-  for (int k = 0; k < n; ++k) y[k] = std::exp(0.01 * (k % p)) + 1e-3 * std::sin(k);
-  auto row = [&](const Eigen::VectorXd& t, int k) { return y[k] - std::exp(t[k % p]); };
-  auto resid = [&](const Eigen::VectorXd& t) {
+// The group factor of three cases: n rows in p groups, r_k = y_k - exp(theta_g(k)), g(k) = k mod p.
+struct GroupFactor {
+  int n = 4000, p = 40;
+  Eigen::VectorXd y;
+  GroupFactor() : y(n) {
+    for (int k = 0; k < n; ++k) y[k] = std::exp(0.01 * (k % p)) + 1e-3 * std::sin(k);
+  }
+  double row(const Eigen::VectorXd& t, int k) const { return y[k] - std::exp(t[k % p]); }
+  Eigen::VectorXd resid(const Eigen::VectorXd& t) const {
     Eigen::VectorXd r(n);
     for (int k = 0; k < n; ++k) r[k] = row(t, k);
     return r;
-  };
+  }
+};
+
+BOOST_AUTO_TEST_CASE(group_factor_is_sparse_and_exact) {
+  const GroupFactor g;
+  const int n = g.n, p = g.p;
+  auto row = [&](const Eigen::VectorXd& t, int k) { return g.row(t, k); };
+  auto resid = [&](const Eigen::VectorXd& t) { return g.resid(t); };
   Eigen::VectorXd th_dense = Eigen::VectorXd::Constant(p, 0.5), th_sparse = th_dense;
   Eigen::MatrixXd Jd, Js;
   bool cd = false, cs = false;
@@ -86,15 +96,10 @@ BOOST_AUTO_TEST_CASE(changing_pattern_falls_back_to_dense) {
 }
 
 BOOST_AUTO_TEST_CASE(structural_reads_are_exact_and_checked) {
-  const int n = 4000, p = 40;
-  Eigen::VectorXd y(n);
-  for (int k = 0; k < n; ++k) y[k] = std::exp(0.01 * (k % p)) + 1e-3 * std::sin(k);
-  auto row = [&](const Eigen::VectorXd& t, int k) { return y[k] - std::exp(t[k % p]); };
-  auto resid = [&](const Eigen::VectorXd& t) {
-    Eigen::VectorXd r(n);
-    for (int k = 0; k < n; ++k) r[k] = row(t, k);
-    return r;
-  };
+  const GroupFactor g;
+  const int n = g.n, p = g.p;
+  auto row = [&](const Eigen::VectorXd& t, int k) { return g.row(t, k); };
+  auto resid = [&](const Eigen::VectorXd& t) { return g.resid(t); };
   RowReads right, wrong;
   for (int k = 0; k < n; ++k) right.push_row({k % p}), wrong.push_row({(k + 1) % p});
   Eigen::VectorXd th_dense = Eigen::VectorXd::Constant(p, 0.5), th_right = th_dense, th_wrong = th_dense;
@@ -136,15 +141,10 @@ BOOST_AUTO_TEST_CASE(a_nan_start_is_not_converged) {
 }
 
 BOOST_AUTO_TEST_CASE(without_the_jacobian_the_same_fit) {
-  const int n = 4000, p = 40;
-  Eigen::VectorXd y(n);
-  for (int k = 0; k < n; ++k) y[k] = std::exp(0.01 * (k % p)) + 1e-3 * std::sin(k);
-  auto row = [&](const Eigen::VectorXd& t, int k) { return y[k] - std::exp(t[k % p]); };
-  auto resid = [&](const Eigen::VectorXd& t) {
-    Eigen::VectorXd r(n);
-    for (int k = 0; k < n; ++k) r[k] = row(t, k);
-    return r;
-  };
+  const GroupFactor g;
+  const int n = g.n, p = g.p;
+  auto row = [&](const Eigen::VectorXd& t, int k) { return g.row(t, k); };
+  auto resid = [&](const Eigen::VectorXd& t) { return g.resid(t); };
   RowReads reads;
   for (int k = 0; k < n; ++k) reads.push_row({k % p});
   Eigen::VectorXd a = Eigen::VectorXd::Constant(p, 0.5), b = a;
