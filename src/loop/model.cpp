@@ -433,7 +433,7 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
 }
 
 JointFit fit_joint(const Design& d, const ModelSpec& spec) {
-  Fit f = fit_model(d, spec);
+  Fit f = fit_model(d, spec, {}, false);  // the start: no standard errors (f.params keeps the bending entries)
   const Layout L = layout(d, spec);
   const bool linear = spec.bending_linear || spec.has(EffectKind::bending_tension);
   std::vector<int> pins;  // pins with a bending line
