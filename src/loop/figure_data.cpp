@@ -24,7 +24,7 @@ void mean_sd(const std::vector<double>& v, const std::vector<std::size_t>& idx, 
 }  // namespace
 
 std::vector<ResidualBin> residual_bins(const std::vector<double>& x, const std::vector<double>& before,
-                                       const std::vector<double>& after) {
+                                       const std::vector<double>& after, std::size_t max_values) {
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < x.size(); ++i)
     if (std::isfinite(x[i]) && std::isfinite(before[i]) && std::isfinite(after[i])) order.push_back(i);
@@ -33,7 +33,7 @@ std::vector<ResidualBin> residual_bins(const std::vector<double>& x, const std::
   for (std::size_t k = 0; k < order.size(); ++k) distinct += (k == 0 || x[order[k]] != x[order[k - 1]]);
   // Each bin's rows, in row order within the bin (the sums' order).
   std::vector<std::vector<std::size_t>> bins;
-  if (distinct <= kFigureBins) {
+  if (distinct <= max_values) {
     for (std::size_t k = 0; k < order.size(); ++k) {
       if (k == 0 || x[order[k]] != x[order[k - 1]]) bins.emplace_back();
       bins.back().push_back(order[k]);

@@ -15,8 +15,11 @@ namespace drawbend::loop {
 /// Rows above which a residual figure draws bins, not every row (5,000 rows
 /// draw 10,000 markers, about 1 MB of SVG).
 constexpr std::size_t kFigurePointRows = 5000;
-/// Bins of a column with more distinct values than this.
+/// Bins of a numeric column with more distinct values than this.
 constexpr std::size_t kFigureBins = 40;
+/// A categorical column (levels as index) gets one bin per level up to this
+/// many levels (a coil or a lot is read level by level), else kFigureBins.
+constexpr std::size_t kFigureLevels = 200;
 
 struct ResidualBin {
   double x = 0;            ///< mean of the column over the bin's rows
@@ -28,11 +31,12 @@ struct ResidualBin {
 };
 
 /// Bins of the column x: one per distinct value when it has at most
-/// kFigureBins, else kFigureBins bins of equal row count (up to one row) in
-/// the order of x, ties by row index.  Rows whose x or residuals are not
-/// finite are left out.  Sums run in row order within a bin.
+/// max_values (kFigureBins; kFigureLevels for a categorical column), else
+/// kFigureBins bins of equal row count (up to one row) in the order of x,
+/// ties by row index.  Rows whose x or residuals are not finite are left out.
+/// Sums run in row order within a bin.
 std::vector<ResidualBin> residual_bins(const std::vector<double>& x, const std::vector<double>& before,
-                                       const std::vector<double>& after);
+                                       const std::vector<double>& after, std::size_t max_values = kFigureBins);
 
 struct PlotPoint {
   double u = 0, v = 0;   ///< the first row's values in its pixel cell

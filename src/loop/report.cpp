@@ -180,10 +180,12 @@ void residual_figures(const LoopResult& r, const std::string& out, const std::st
     CsvWriter w({"candidate", "x", "rows", "before_mean_N", "before_sd_N", "after_mean_N", "after_sd_N", "name"});
     w.comment(" held-out residual (N) of the base model (before) and the final model (after) in bins of each "
               "candidate (numbered as in residuals.csv): one bin per value up to " + std::to_string(kFigureBins) +
-              " values, else " + std::to_string(kFigureBins) + " bins of equal row count; x the bin's mean, sd "
-              "the rows' sample standard deviation");
+              " values (per level up to " + std::to_string(kFigureLevels) + " levels of a categorical column), else " +
+              std::to_string(kFigureBins) + " bins of equal row count; x the bin's mean, sd the rows' sample "
+              "standard deviation");
     for (size_t k = 0; k < r.candidates.size(); ++k)
-      for (const ResidualBin& b : residual_bins(r.candidates[k].x, before, after))
+      for (const ResidualBin& b : residual_bins(r.candidates[k].x, before, after,
+                                                r.candidates[k].categorical ? kFigureLevels : kFigureBins))
         w.row({std::to_string(k + 1), fmt(b.x, 8), std::to_string(b.rows), fmt(b.before_mean, 6),
                fmt(b.before_sd, 6), fmt(b.after_mean, 6), fmt(b.after_sd, 6), safe(r.candidates[k].name)});
     w.save(out + "/tables/residual_bins.csv");

@@ -12,6 +12,9 @@
 //    and (0.001, 0) share cell (0, 0) (0.25 rounds to 0), (1, 1) and (0.999, 1)
 //    share the last; (0.5, 0.5) is alone -> 3 points, at their first rows'
 //    values, with counts 2, 2, 1 in first-seen order; a NaN pair is left out.
+//  - A categorical column of 50 levels (x = level index 0..49, two rows each)
+//    with max_values kFigureLevels: 50 bins, one per level (level 7's bin at
+//    x = 7 with 2 rows); with the numeric default: 40 bins.
 //  - One row: one bin with sd 0; an empty column: no bins, no points.
 #define BOOST_TEST_MODULE figure_data
 #include <boost/test/unit_test.hpp>
@@ -72,4 +75,14 @@ BOOST_AUTO_TEST_CASE(one_row_and_none) {
   BOOST_TEST(b[0].before_sd == 0.0);
   BOOST_TEST(residual_bins({}, {}, {}).empty());
   BOOST_TEST(distinct_points({}, {}).empty());
+}
+
+BOOST_AUTO_TEST_CASE(levels_of_a_categorical_column) {
+  std::vector<double> x, r;
+  for (int i = 0; i < 100; ++i) x.push_back(i % 50), r.push_back(i);
+  const auto b = residual_bins(x, r, r, kFigureLevels);
+  BOOST_TEST_REQUIRE(b.size() == 50u);
+  BOOST_TEST(b[7].x == 7.0);
+  BOOST_TEST(b[7].rows == 2u);
+  BOOST_TEST(residual_bins(x, r, r).size() == kFigureBins);
 }

@@ -3,8 +3,9 @@
 # readable (src/loop/figure_data.hpp): the lab-style file (50,040 rows) drew
 # 10 MB of SVG per residual figure and took 8 s of gnuplot.
 #  - each residual figure draws bins (tables/residual_bins.csv, 40 bins or one
-#    per value; bin rows add up to the rows used) and is under 200 kB (the
-#    binned figures are about 60 kB; a scatter of 6,900 rows is about 1.4 MB);
+#    per value, one per level of a categorical column; bin rows add up to the
+#    rows used) and is under 200 kB (the binned figures are about 60 kB; a
+#    scatter of 6,900 rows is about 1.4 MB);
 #  - each surface's points file holds distinct points whose "rows" add up to
 #    the fixed-pin rows its header counts.
 # Data: drawbend synth, 20 fixed-pin tests per pin of 100 rows (6,900 rows).
