@@ -6,6 +6,8 @@
 #include <map>
 
 #include "loop/effects.hpp"
+#include "loop/forms.hpp"
+#include "loop/loop.hpp"
 
 namespace drawbend::loop {
 
@@ -88,6 +90,27 @@ std::vector<AliasColumn> alias_columns(const std::vector<Candidate>& cands, cons
   });
   if (static_cast<int>(out.size()) > max) out.resize(max);
   return out;
+}
+
+double prediction_rms_diff(const std::vector<double>& a, const std::vector<double>& b) {
+  double ss = 0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+    if (std::isfinite(a[i]) && std::isfinite(b[i])) ss += (a[i] - b[i]) * (a[i] - b[i]), ++n;
+  return n ? std::sqrt(ss / static_cast<double>(n)) : std::nan("");
+}
+
+void name_alikes(Step& s, const std::vector<std::pair<std::string, CvResult>>& kept, const CvResult& best,
+                 const Folds& f, double min_effect_N) {
+  for (const auto& [name, cv] : kept) {
+    if (name == s.variable) continue;
+    const double dp = prediction_rms_diff(cv.pred, best.pred);
+    if (cv.rms * cv.rms - best.rms * best.rms <= mse_diff_se(cv, best, f))
+      s.aliased_with.push_back(name + " (held-out RMS " + fmt(cv.rms, 4) + " N)");
+    else if (dp <= min_effect_N)  // false for NaN
+      s.same_effect_as.push_back(name + " (held-out RMS " + fmt(cv.rms, 4) + " N; predictions within " + fmt(dp, 3) +
+                                 " N RMS of the step's, the minimum effect " + fmt(min_effect_N, 3) + " N)");
+  }
 }
 
 }  // namespace drawbend::loop

@@ -17,6 +17,7 @@
 // only decides which column names a step already confirmed, so it cannot add
 // a false alarm on a null set.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "loop/candidates.hpp"
@@ -47,5 +48,25 @@ std::vector<AliasColumn> alias_columns(const std::vector<Candidate>& cands, cons
                                        const std::vector<int>& block, const std::string& x,
                                        const std::vector<std::string>& skip, double min_share = kAliasShare,
                                        int max = kAliasMax);
+
+/// RMS difference of two models' held-out predictions over the rows both
+/// predict [N] (NaN when none), summed in row order.  A column whose step
+/// predicts within LoopOptions::min_effect x the noise (RMS) of the chosen
+/// step's makes the same effect at the loop's own resolution: added after the
+/// chosen step, it could change the held-out predictions by about that much at
+/// most, below the smallest held-out gain a step must reach.  The loop lists
+/// such columns under Step::same_effect_as when the paired test of their
+/// errors still prefers the step (two forms that predict almost alike have a
+/// tiny standard error of their MSE difference).
+double prediction_rms_diff(const std::vector<double>& a, const std::vector<double>& b);
+
+struct Step;
+/// The columns of `kept` (column -> its kept form's held-out result), the
+/// step's own skipped: those within one standard error of the MSE difference
+/// from the step's kept form `best` (mse_diff_se) go to s.aliased_with; the
+/// others whose predictions lie within min_effect_N (RMS) of best's go to
+/// s.same_effect_as (none when min_effect_N is NaN: no usable noise).
+void name_alikes(Step& s, const std::vector<std::pair<std::string, CvResult>>& kept, const CvResult& best,
+                 const Folds& f, double min_effect_N);
 
 }  // namespace drawbend::loop

@@ -432,11 +432,8 @@ void LoopSearch::give_aliases(const std::vector<CandidateResult>& rank, const st
       if (k.name == a.name) consider(cr, k, false, thr, ch);
   }
   pair_first(rank, cands, thr, ch);  // an alias that is a pair must beat its own columns too
-  // Columns whose kept form the held-out data cannot tell from the winner's.
-  for (const auto& [name, cv] : ch.kept)
-    if (name != ch.best_step.variable &&
-        cv.rms * cv.rms - ch.best_form.cv.rms * ch.best_form.cv.rms <= mse_diff_se(cv, ch.best_form.cv, res.folds))
-      ch.best_step.aliased_with.push_back(name + " (held-out RMS " + fmt(cv.rms, 4) + " N)");
+  // Columns the held-out data cannot tell from the winner's, or that make the same effect (aliases.hpp).
+  name_alikes(ch.best_step, ch.kept, ch.best_form.cv, res.folds, sigma > 0 ? o.min_effect * sigma : NAN);
 }
 
 // Why the round added no step.

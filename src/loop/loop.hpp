@@ -167,6 +167,12 @@ struct Step {
   /// step's (within one standard error of the difference): the data cannot
   /// tell them apart (aliases.hpp), "name (held-out RMS x N)".
   std::vector<std::string> aliased_with;
+  /// Other columns whose kept form's held-out predictions lie within
+  /// LoopOptions::min_effect x the noise (RMS) of this step's, though the
+  /// paired test prefers this step's (prediction_rms_diff, aliases.hpp):
+  /// "name (held-out RMS x N; predictions within y N RMS of the step's, the
+  /// minimum effect z N)".
+  std::vector<std::string> same_effect_as;
   /// A pair step (screen_pairs.cpp): its two columns (empty: one variable).
   std::vector<std::string> columns;
   /// A pair was the round's best step (pair_first.hpp): why it kept the step

@@ -121,6 +121,13 @@ std::string engineer_summary(const Design& d, const LoopResult& r, const Frictio
         << "): held-out error " << fmt(s.rms_before, 3) << " N → " << fmt(s.rms_after, 3) << " N"
         << (s.far_note.empty() ? "" : " (named by its held-out gain, not by the permutation screen: see step " +
                                           std::to_string(k + 1) + ")");
+      // Columns the data cannot tell from it, or that make the same effect (names only; the step says more).
+      std::vector<std::string> alike;
+      for (const auto* list : {&s.aliased_with, &s.same_effect_as})
+        for (const auto& a : *list) alike.push_back(a.substr(0, a.find(" (")));
+      for (std::size_t j = 0; j < alike.size(); ++j) m << (j ? ", " : "; ") << alike[j];
+      if (!alike.empty())
+        m << (alike.size() == 1 ? " explains" : " explain") << " it as well (see step " << k + 1 << ")";
     }
     m << ".";
   }
@@ -277,6 +284,14 @@ void steps_section(std::ostringstream& m, const LoopResult& r) {
         << " N) cannot be told apart on held-out data from ";
       for (size_t j = 0; j < r.steps[k].aliased_with.size(); ++j) m << (j ? ", " : "") << r.steps[k].aliased_with[j];
       m << " (each column's own best form, within one standard error): these columns explain the same structure.\n";
+    }
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    if (!r.steps[k].same_effect_as.empty()) {
+      m << "\nStep " << k + 1 << ": " << r.steps[k].variable << " makes the same effect as ";
+      for (size_t j = 0; j < r.steps[k].same_effect_as.size(); ++j) m << (j ? ", " : "") << r.steps[k].same_effect_as[j];
+      m << ": their held-out predictions differ by less than the minimum effect of a step (`--min-effect` x the "
+           "noise), though the held-out data prefer "
+        << r.steps[k].variable << "'s form. Which column is the cause, the data do not say.\n";
     }
   m << "\nStopped because: " << r.stopped_because << ".\n";
 }

@@ -43,7 +43,8 @@ std::string summary_json(const LoopResult& r) {
       << (s.columns.empty() ? "" : ", \"columns\": " + jlist(s.columns))
       << (s.pair_note.empty() ? "" : ", \"pair_decision\": " + jstr(s.pair_note))
       << (s.far_note.empty() ? "" : ", \"far_rule\": " + jstr(s.far_note))
-      << ", \"aliased_with\": " << jlist(s.aliased_with) << ", \"parameters\": {";
+      << ", \"aliased_with\": " << jlist(s.aliased_with)
+      << (s.same_effect_as.empty() ? "" : ", \"same_effect_as\": " + jlist(s.same_effect_as)) << ", \"parameters\": {";
     for (size_t k = 0; k < s.params.size(); ++k)
       o << (k ? ", " : "") << jstr(s.params[k].name) << ": {\"value\": " << jnum(s.params[k].value)
         << ", \"se\": " << jnum(s.params[k].se) << "}";

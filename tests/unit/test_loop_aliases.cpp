@@ -29,11 +29,22 @@
 //    0.8899, scrambled 0.0304.
 //  - Missing values: e NaN on the first test's rows and operator NaN on the
 //    second test's are skipped (the share stays within 0.02 of the above).
+//  - prediction_rms_diff: a = {1, 2, NaN, 4}, b = {1, 0, 5, 1}: the rows
+//    both predict differ by 0, 2, 3, so sqrt(13 / 3) = 2.0817 (1e-12).
+//  - name_alikes: 4 tests of 5 rows, the step's residual -1 on every row.
+//    Column C predicts the same (MSE difference 0, within its SE 0):
+//    aliased_with.  Column A predicts 0.1 N higher on every row: residual
+//    -1.1, MSE difference 0.21 N^2 in every test, so its SE is 0 and the
+//    paired test prefers the step; its predictions are within 0.1 N RMS, under
+//    a minimum effect of 0.5 N: same_effect_as.  Column B predicts 2 N higher:
+//    neither.  The step's own column is skipped.  With no usable noise
+//    (minimum effect NaN) A is not listed.
 #define BOOST_TEST_MODULE loop_aliases
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
 #include "loop/aliases.hpp"
+#include "loop/loop.hpp"
 
 using namespace drawbend::loop;
 
@@ -105,4 +116,39 @@ BOOST_AUTO_TEST_CASE(missing_values_skipped) {
   BOOST_TEST(std::abs(explained_share(d.e, d.block, d.cands[1]) - 0.889) < 0.02);
   const std::vector<double> flat(d.e.size(), 1.0);  // constant e: nothing to explain
   BOOST_TEST(explained_share(flat, d.block, d.cands[0]) == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(prediction_difference_known_answer) {
+  const double d = prediction_rms_diff({1, 2, NAN, 4}, {1, 0, 5, 1});
+  BOOST_TEST(std::abs(d - std::sqrt(13.0 / 3.0)) < 1e-12);
+  BOOST_TEST(std::isnan(prediction_rms_diff({NAN}, {1.0})));
+}
+
+BOOST_AUTO_TEST_CASE(same_effect_listed_apart_from_aliases) {
+  Folds f;
+  for (int t = 0; t < 4; ++t)
+    for (int r = 0; r < 5; ++r) f.test.push_back(t), f.block.push_back(0), f.fold.push_back(t);
+  auto model = [](double shift) {  // predictions 10 + shift, residual -1 - shift (y = 9 on every row)
+    CvResult c;
+    c.pred.assign(20, 10 + shift);
+    c.resid.assign(20, -1 - shift);
+    c.rms = 1 + shift;
+    c.n = 20;
+    return c;
+  };
+  const CvResult best = model(0);
+  const std::vector<std::pair<std::string, CvResult>> kept = {
+      {"x", best}, {"C", model(0)}, {"A", model(0.1)}, {"B", model(2)}};
+  Step s;
+  s.variable = "x";
+  name_alikes(s, kept, best, f, 0.5);
+  BOOST_TEST_REQUIRE(s.aliased_with.size() == 1u);
+  BOOST_TEST(s.aliased_with[0].rfind("C (", 0) == 0);
+  BOOST_TEST_REQUIRE(s.same_effect_as.size() == 1u);
+  BOOST_TEST(s.same_effect_as[0].rfind("A (", 0) == 0);
+  Step none;
+  none.variable = "x";
+  name_alikes(none, kept, best, f, NAN);
+  BOOST_TEST(none.same_effect_as.empty());
+  BOOST_TEST(none.aliased_with.size() == 1u);
 }
