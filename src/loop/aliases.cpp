@@ -102,15 +102,22 @@ double prediction_rms_diff(const std::vector<double>& a, const std::vector<doubl
 
 void name_alikes(Step& s, const std::vector<std::pair<std::string, CvResult>>& kept, const CvResult& best,
                  const Folds& f, double min_effect_N) {
+  std::vector<std::string> same;  // names of same_effect_as, appended after aliased_with's
   for (const auto& [name, cv] : kept) {
     if (name == s.variable) continue;
-    const double dp = prediction_rms_diff(cv.pred, best.pred);
-    if (cv.rms * cv.rms - best.rms * best.rms <= mse_diff_se(cv, best, f))
+    if (cv.rms * cv.rms - best.rms * best.rms <= mse_diff_se(cv, best, f)) {
       s.aliased_with.push_back(name + " (held-out RMS " + fmt(cv.rms, 4) + " N)");
-    else if (dp <= min_effect_N)  // false for NaN
+      s.alike_names.push_back(name);
+      continue;
+    }
+    const double dp = prediction_rms_diff(cv.pred, best.pred);
+    if (dp <= min_effect_N) {  // false for NaN
       s.same_effect_as.push_back(name + " (held-out RMS " + fmt(cv.rms, 4) + " N; predictions within " + fmt(dp, 3) +
                                  " N RMS of the step's, the minimum effect " + fmt(min_effect_N, 3) + " N)");
+      same.push_back(name);
+    }
   }
+  s.alike_names.insert(s.alike_names.end(), same.begin(), same.end());
 }
 
 }  // namespace drawbend::loop

@@ -65,7 +65,8 @@ struct Step;
 /// step's own skipped: those within one standard error of the MSE difference
 /// from the step's kept form `best` (mse_diff_se) go to s.aliased_with; the
 /// others whose predictions lie within min_effect_N (RMS) of best's go to
-/// s.same_effect_as (none when min_effect_N is NaN: no usable noise).
+/// s.same_effect_as (none when min_effect_N is NaN: no usable noise); their
+/// names, in that order, to s.alike_names.
 void name_alikes(Step& s, const std::vector<std::pair<std::string, CvResult>>& kept, const CvResult& best,
                  const Folds& f, double min_effect_N);
 

@@ -173,6 +173,9 @@ struct Step {
   /// "name (held-out RMS x N; predictions within y N RMS of the step's, the
   /// minimum effect z N)".
   std::vector<std::string> same_effect_as;
+  /// The column names of aliased_with, then of same_effect_as, as given (a
+  /// user's column may have " (" in its name, so they are not parsed back).
+  std::vector<std::string> alike_names;
   /// A pair step (screen_pairs.cpp): its two columns (empty: one variable).
   std::vector<std::string> columns;
   /// A pair was the round's best step (pair_first.hpp): why it kept the step

@@ -122,9 +122,7 @@ std::string engineer_summary(const Design& d, const LoopResult& r, const Frictio
         << (s.far_note.empty() ? "" : " (named by its held-out gain, not by the permutation screen: see step " +
                                           std::to_string(k + 1) + ")");
       // Columns the data cannot tell from it, or that make the same effect (names only; the step says more).
-      std::vector<std::string> alike;
-      for (const auto* list : {&s.aliased_with, &s.same_effect_as})
-        for (const auto& a : *list) alike.push_back(a.substr(0, a.find(" (")));
+      const std::vector<std::string>& alike = s.alike_names;
       for (std::size_t j = 0; j < alike.size(); ++j) m << (j ? ", " : "; ") << alike[j];
       if (!alike.empty())
         m << (alike.size() == 1 ? " explains" : " explain") << " it as well (see step " << k + 1 << ")";

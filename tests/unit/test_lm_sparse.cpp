@@ -50,6 +50,22 @@ struct GroupFactor {
   }
 };
 
+// The tanh of two cases: r_k = y_k - a tanh(s x_k), y from a = 2, s = 1.5 plus a
+// small cosine; d/ds is 0 on every row at a = 0.
+struct TanhFit {
+  int n = 200;
+  Eigen::VectorXd x, y;
+  TanhFit() : x(n), y(n) {
+    for (int k = 0; k < n; ++k) x[k] = -1 + 2.0 * k / (n - 1), y[k] = 2 * std::tanh(1.5 * x[k]) + 0.01 * std::cos(7 * k);
+  }
+  double row(const Eigen::VectorXd& t, int k) const { return y[k] - t[0] * std::tanh(t[1] * x[k]); }
+  Eigen::VectorXd resid(const Eigen::VectorXd& t) const {
+    Eigen::VectorXd r(n);
+    for (int k = 0; k < n; ++k) r[k] = row(t, k);
+    return r;
+  }
+};
+
 BOOST_AUTO_TEST_CASE(group_factor_is_sparse_and_exact) {
   const GroupFactor g;
   const int n = g.n, p = g.p;
@@ -73,15 +89,9 @@ BOOST_AUTO_TEST_CASE(group_factor_is_sparse_and_exact) {
 }
 
 BOOST_AUTO_TEST_CASE(changing_pattern_falls_back_to_dense) {
-  const int n = 200;
-  Eigen::VectorXd x(n), y(n);
-  for (int k = 0; k < n; ++k) x[k] = -1 + 2.0 * k / (n - 1), y[k] = 2 * std::tanh(1.5 * x[k]) + 0.01 * std::cos(7 * k);
-  auto row = [&](const Eigen::VectorXd& t, int k) { return y[k] - t[0] * std::tanh(t[1] * x[k]); };
-  auto resid = [&](const Eigen::VectorXd& t) {
-    Eigen::VectorXd r(n);
-    for (int k = 0; k < n; ++k) r[k] = row(t, k);
-    return r;
-  };
+  const TanhFit g;
+  auto row = [&](const Eigen::VectorXd& t, int k) { return g.row(t, k); };
+  auto resid = [&](const Eigen::VectorXd& t) { return g.resid(t); };
   Eigen::VectorXd a(2), b(2);
   a << 0.0, 1.0;
   b = a;
@@ -161,15 +171,10 @@ BOOST_AUTO_TEST_CASE(without_the_jacobian_the_same_fit) {
   BOOST_TEST((c1 - c0) - (c2 - c1) == static_cast<long long>(n));
 
   // The pattern changes between the start and the solution: caught without the Jacobian too.
-  const int m = 200;
-  Eigen::VectorXd x(m), z(m);
-  for (int k = 0; k < m; ++k) x[k] = -1 + 2.0 * k / (m - 1), z[k] = 2 * std::tanh(1.5 * x[k]) + 0.01 * std::cos(7 * k);
-  auto row2 = [&](const Eigen::VectorXd& t, int k) { return z[k] - t[0] * std::tanh(t[1] * x[k]); };
-  auto resid2 = [&](const Eigen::VectorXd& t) {
-    Eigen::VectorXd r(m);
-    for (int k = 0; k < m; ++k) r[k] = row2(t, k);
-    return r;
-  };
+  const TanhFit h;
+  const int m = h.n;
+  auto row2 = [&](const Eigen::VectorXd& t, int k) { return h.row(t, k); };
+  auto resid2 = [&](const Eigen::VectorXd& t) { return h.resid(t); };
   RowReads both;
   for (int k = 0; k < m; ++k) both.push_row({0, 1});
   Eigen::VectorXd u(2), v(2), w(2);

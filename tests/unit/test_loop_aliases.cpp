@@ -38,7 +38,9 @@
 //    paired test prefers the step; its predictions are within 0.1 N RMS, under
 //    a minimum effect of 0.5 N: same_effect_as.  Column B predicts 2 N higher:
 //    neither.  The step's own column is skipped.  With no usable noise
-//    (minimum effect NaN) A is not listed.
+//    (minimum effect NaN) A is not listed.  The names, aliased first, go to
+//    alike_names as given: a column "A (lot)" keeps its " (" (the summary
+//    once cut names there).
 #define BOOST_TEST_MODULE loop_aliases
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -47,6 +49,7 @@
 #include "loop/loop.hpp"
 
 using namespace drawbend::loop;
+namespace tt = boost::test_tools;
 
 namespace {
 
@@ -138,14 +141,15 @@ BOOST_AUTO_TEST_CASE(same_effect_listed_apart_from_aliases) {
   };
   const CvResult best = model(0);
   const std::vector<std::pair<std::string, CvResult>> kept = {
-      {"x", best}, {"C", model(0)}, {"A", model(0.1)}, {"B", model(2)}};
+      {"x", best}, {"A (lot)", model(0.1)}, {"C", model(0)}, {"B", model(2)}};
   Step s;
   s.variable = "x";
   name_alikes(s, kept, best, f, 0.5);
   BOOST_TEST_REQUIRE(s.aliased_with.size() == 1u);
   BOOST_TEST(s.aliased_with[0].rfind("C (", 0) == 0);
   BOOST_TEST_REQUIRE(s.same_effect_as.size() == 1u);
-  BOOST_TEST(s.same_effect_as[0].rfind("A (", 0) == 0);
+  BOOST_TEST(s.same_effect_as[0].rfind("A (lot) (", 0) == 0);
+  BOOST_TEST(s.alike_names == (std::vector<std::string>{"C", "A (lot)"}), tt::per_element());
   Step none;
   none.variable = "x";
   name_alikes(none, kept, best, f, NAN);
