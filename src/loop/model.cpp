@@ -477,18 +477,20 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
     // lines were refitted to the rotating rows less the force channel, in
     // turn with the friction fit, until the sum of squares settled: a pin
     // whose rotating training tests lack one of the channel's levels then
-    // kept the line it started with (any line with that level's force moved
-    // the other way fits those rows alike; only the pin's fixed rows of the
-    // other levels could tell, and the line step did not read them).  A
-    // development set, wild 81700002: the fixed tests of one fixture level
-    // on one pin 30 N off held out, 7.65 N held-out RMS against a noise of
-    // 3.05 N; 3.12 N fitted together.  Then the friction parameters once
+    // barely moved the line it started with (any line with that level's
+    // force moved the other way fits those rows alike; the pin's fixed rows
+    // of the other levels tell them apart, and the line step did not read
+    // them: only the friction parameters, shared with the other pins, carried
+    // their pull, and the turns stopped long before).  A development set,
+    // wild 81700002: the fixed tests of one fixture level on one pin 20-30 N
+    // off held out, 7.65 N held-out RMS against a noise of 3.05 N; 3.12 N
+    // fitted together (unit.test_loop_force_cell).  Then the friction parameters once
     // more with the joint lines, for their Jacobian (the same sum of squares,
     // at its minimum in them).
     int nb = 0;
     fit_lines_and_friction(d, L, linear_bending, rows, f, th, nb, true);
     sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads, want_errors);
-    for (auto& q : f.params)  // the lines' values (their standard errors: the last line step's)
+    for (auto& q : f.params)  // the lines' values (their standard errors: those of the rotating rows' lines)
       for (size_t pin = 0; pin < d.pins.size(); ++pin) {
         const std::string mm = " " + fmt(d.pins[pin]) + " mm";
         if (q.name == "bending b0" + mm || q.name == "bending F_B" + mm) q.value = f.b0[pin];
