@@ -340,7 +340,8 @@ void add_row_reads(const Design& d, const Fit& f, const Layout& L, const std::ve
 // Levenberg-Marquardt to `rows`, from f's lines and th; f's lines and th set
 // to the solution, nb to the number of line parameters; the sum of squares.
 double fit_lines_and_friction(const Design& d, const Layout& L, bool linear, const std::vector<int>& rows, Fit& f,
-                              Eigen::VectorXd& th_fric, int& nb, bool rotating_only = false) {
+                              Eigen::VectorXd& th_fric, int& nb, bool rotating_only = false,
+                              bool* converged = nullptr) {
   std::vector<char> rotating(d.pins.size(), 0);
   for (int i : rows)
     if (d.rows[i].rotating) rotating[d.rows[i].pin] = 1;
@@ -405,6 +406,7 @@ double fit_lines_and_friction(const Design& d, const Layout& L, bool linear, con
   Eigen::MatrixXd J;
   bool conv = false;
   const double rss = levenberg_marquardt(th, resid, J, conv, row, &reads, false);
+  if (converged) *converged = conv;
   at(th);  // the solution's lines (the last residual may have been a rejected step's)
   th_fric = th.tail(L.n);
   return rss;
@@ -486,10 +488,12 @@ Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& tr
     // off held out, 7.65 N held-out RMS against a noise of 3.05 N; 3.12 N
     // fitted together (unit.test_loop_force_cell).  Then the friction parameters once
     // more with the joint lines, for their Jacobian (the same sum of squares,
-    // at its minimum in them).
+    // at its minimum in them), when standard errors are wanted; without them
+    // (a fold, fit_joint's start) the joint fit's parameters and sum of squares.
     int nb = 0;
-    fit_lines_and_friction(d, L, linear_bending, rows, f, th, nb, true);
-    sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads, want_errors);
+    const double joint_sse = fit_lines_and_friction(d, L, linear_bending, rows, f, th, nb, true, &f.converged);
+    if (want_errors) sse = levenberg_marquardt(th, resid, J, f.converged, row, &reads, want_errors);
+    else sse = joint_sse;
     for (auto& q : f.params)  // the lines' values (their standard errors: those of the rotating rows' lines)
       for (size_t pin = 0; pin < d.pins.size(); ++pin) {
         const std::string mm = " " + fmt(d.pins[pin]) + " mm";

@@ -158,7 +158,9 @@ struct Fit {
 /// standard_errors false (a cross-validation fold, a sum of squares) the
 /// parameters' standard errors are not computed (f.params holds no friction
 /// entry) and neither is the last Jacobian (least_squares.hpp); theta, the
-/// bending lines and rss are the same bit for bit.
+/// bending lines and rss are the same bit for bit, except with a force
+/// channel: there they are the joint fit's, without the friction-only refit
+/// from it that gives the Jacobian (the same minimum, to the fit's tolerance).
 Fit fit_model(const Design& d, const ModelSpec& spec, const std::vector<int>& train = {},
               bool standard_errors = true);
 /// Bending and friction fitted together on all rows (rotating and fixed), so
