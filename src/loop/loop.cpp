@@ -585,6 +585,8 @@ LoopResult run_loop(const Design& d, const LoopOptions& o) {
   }
   res.steps = s.steps;
   res.final_fit = s.cur_fit;
+  if (res.final_fit.has_force)  // fit_model: the lines fitted together with the force channel
+    res.bending += "; with the force channel, each line refitted with it and friction to the pin's fixed and rotating rows";
   if (s.sigma < s.sigma_data) res.noise_data_N = s.sigma_data, res.noise.sigma_N = s.sigma;  // the model floor
   conclude(res, o, s.last_rank);
   return res;
