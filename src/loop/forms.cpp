@@ -328,18 +328,29 @@ FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c
   return t;
 }
 
-// The trial's cross-validation and joint fit, or those of the same arithmetic tried before (cache).
-void fit_trial(const Design& d, const Folds& folds, FormTrial& t, TrialCache* cache) {
-  const std::string key = cache ? fits_key(t.spec) : std::string();
-  const auto done = cache ? cache->fits.find(key) : decltype(cache->fits.end()){};
-  if (cache && done != cache->fits.end()) {
-    t.cv = done->second.first;
-    t.joint = done->second.second;
-  } else {
-    t.cv = cross_validate(d, t.spec, folds);
+// The trial's cross-validation, or that of the same arithmetic tried before (cache).
+void cv_trial(const Design& d, const Folds& folds, FormTrial& t, TrialCache* cache) {
+  if (!cache) return void(t.cv = cross_validate(d, t.spec, folds));
+  const std::string key = fits_key(t.spec);
+  const auto done = cache->cv.find(key);
+  if (done != cache->cv.end()) return void(t.cv = done->second);
+  t.cv = cross_validate(d, t.spec, folds);
+  cache->cv.emplace(key, t.cv);
+}
+
+// The trial's joint fit (or the cached one), its F test and q.
+void test_trial(const Design& d, FormTrial& t, const JointFit& cur_joint, TrialCache* cache) {
+  if (!cache) {
     t.joint = fit_joint(d, t.spec);
-    if (cache) cache->fits.emplace(key, std::make_pair(t.cv, t.joint));
+  } else {
+    const std::string key = fits_key(t.spec);
+    const auto done = cache->joint.find(key);
+    if (done != cache->joint.end()) t.joint = done->second;
+    else t.joint = fit_joint(d, t.spec), cache->joint.emplace(key, t.joint);
   }
+  t.q = t.joint.p - cur_joint.p + t.extra_searched;
+  t.p_value = f_test(cur_joint, t.joint, t.extra_searched);
+  t.tested = true;
 }
 
 }  // namespace
@@ -488,14 +499,22 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
     FormTrial t = named_trial(d, spec, c, p);
     if (max_q >= 0 && detail::layout(d, t.spec).n - p0 > max_q) continue;
     if (progress) progress("  " + c.name + ": trying " + t.name);
-    fit_trial(d, folds, t, cache);
-    t.q = t.joint.p - cur_joint.p + t.extra_searched;
-    t.p_value = f_test(cur_joint, t.joint, t.extra_searched);
+    cv_trial(d, folds, t, cache);
     const double gain = std::sqrt(std::max(0.0, cur.rms * cur.rms - t.cv.rms * t.cv.rms));
-    t.passed = t.p_value <= thr && gain >= min_gain_N && t.cv.rms < cur.rms;
+    // The F test only for a form whose held-out error passes its gates (the
+    // other forms cannot pass; complete_trials makes theirs when listed).
+    if (gain >= min_gain_N && t.cv.rms < cur.rms) {
+      test_trial(d, t, cur_joint, cache);
+      t.passed = t.p_value <= thr;
+    }
     out.push_back(std::move(t));
   }
   return out;
+}
+
+void complete_trials(const Design& d, std::vector<FormTrial>& trials, const JointFit& cur_joint, TrialCache* cache) {
+  for (FormTrial& t : trials)
+    if (!t.tested) test_trial(d, t, cur_joint, cache);
 }
 
 int choose_form(const std::vector<FormTrial>& t, const Folds& f) {

@@ -68,6 +68,11 @@ struct FormTrial {
   /// product (Effect::times) or a bump (Effect::bump_width): choose_form's guard.
   bool searched = false;
   int extra_searched = 0;  ///< searched parameters counted by the F test and in q (a bump: its centre and width, 2)
+  /// The joint fit, p_value and q made.  A form whose held-out error alone
+  /// fails its gates cannot pass whatever its F test, so try_forms leaves
+  /// them until complete_trials (a kept form's candidate, whose trials are
+  /// all listed with their F tests): the same values, made only when read.
+  bool tested = false;
 };
 
 /// Cross-validations and joint fits already made by try_forms in one run of
@@ -77,7 +82,8 @@ struct FormTrial {
 /// column of its own, e.g. pressure_mu named by avg_pressure_MPa and again by
 /// inv_R_per_mm; drift and generic_linear of one column).
 struct TrialCache {
-  std::map<std::string, std::pair<CvResult, JointFit>> fits;
+  std::map<std::string, CvResult> cv;
+  std::map<std::string, JointFit> joint;
 };
 
 /// Nested-model F test on the joint fits (bending and friction together);
@@ -97,7 +103,8 @@ int searched_params(const std::vector<Effect>& added);
 ModelSpec with_effect(const Design& d, const ModelSpec& s, EffectKind k, const std::string& variable,
                       const std::string& by = "", const std::string& times = "");
 
-/// Every applicable form for candidate c, each cross-validated and tested.
+/// Every applicable form for candidate c, each cross-validated, and F-tested
+/// when its held-out error passes the gates (the others: FormTrial::tested).
 /// cell_by / cell_group (the screen's strongest one-group probe, -1: none)
 /// add the forms confined to that one group of a model input.  cache (may be
 /// null): the results of earlier calls on the same data and folds.  max_q >=
@@ -115,6 +122,12 @@ std::vector<FormTrial> try_forms(const Design& d, const Folds& folds, const Mode
                                  const std::string& cell_by = "", int cell_group = -1, TrialCache* cache = nullptr,
                                  const std::string& probe_input = "", int max_q = -1, bool products = false,
                                  const std::string& cv_input = "");
+
+/// The trials try_forms left untested (FormTrial::tested) given their joint
+/// fits, F tests and q, as try_forms would have made them (passed unchanged:
+/// their held-out error failed a gate).
+void complete_trials(const Design& d, std::vector<FormTrial>& trials, const JointFit& cur_joint,
+                     TrialCache* cache = nullptr);
 
 /// Index of the form kept (simplest within one standard error of the best
 /// among those passed; a searched form, a product or a bump, only when the

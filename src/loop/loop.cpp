@@ -321,6 +321,7 @@ Considered LoopSearch::evaluate(const CandidateResult& c, const Candidate& cand,
     for (auto& t : r.trials)
       if (t.q > o.far_max_params) t.passed = false;
   r.keep = choose_form(r.trials, res.folds);
+  if (r.keep >= 0) complete_trials(d, r.trials, cur_joint, &trials_done);  // all listed with their F tests
   Step& s = r.s;
   s.variable = c.name;
   s.p_permutation = c.p_value;
