@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/csv.hpp"
 #include "loop/effects.hpp"
 #include "loop/forms.hpp"
 #include "loop/loop.hpp"

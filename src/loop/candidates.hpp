@@ -173,7 +173,19 @@ struct CandidateResult {
   int cell_group = -1;
   /// The model input of the strongest probe when it is a per-input one ("": an overall probe).
   std::string probe_input;
+  /// A candidate with the same information as another (same_information): the
+  /// candidate whose test it shares ("": its own test).
+  std::string same_as;
 };
+
+/// The test a result reports: its own (its name) or the one it shares (same_as).
+inline const std::string& test_of(const CandidateResult& c) { return c.same_as.empty() ? c.name : c.same_as; }
+/// How many tests a ranking holds (the Bonferroni family: each shared test once).
+inline size_t tests_in(const std::vector<CandidateResult>& rank) {
+  size_t n = 0;
+  for (const auto& c : rank) n += c.same_as.empty();
+  return n;
+}
 
 /// What the screen knows of the model: the model's inputs as groups per row
 /// (for the per-input probes) and dF/dmu per row (0 on rotating rows; empty:
@@ -216,9 +228,20 @@ int sequential_decision(int k, int b, double thr, double confidence = 1e-3);
 /// positive held-out gain).
 void permutation_decision(CandidateResult& res, int ge, int b, int dec, double thr);
 
+/// Candidates with the same information (screen_same.cpp): per candidate, the
+/// index of the candidate whose test it shares (itself when none).  Two
+/// candidates share one when their values are their own levels (categorical,
+/// or numeric with at most 8 values) and split the rows with a finite value and
+/// residual into the same groups; the leader is the group's first numeric
+/// member in the candidates' order, else its first.
+std::vector<int> same_information(const std::vector<Candidate>& cands, const std::vector<double>& resid);
+
 /// Rank candidates; results sorted: significant first by CV reduction, then the
-/// rest by p-value.  Significance: p <= alpha / (number of candidates + pair
-/// families); with pairs (pair_candidates), one result per pair family too.
+/// rest by p-value.  Candidates with the same information (same_information)
+/// get one test, their leader's, reported for each with same_as set.
+/// Significance: p <= alpha / (number of tests: candidates counted once per
+/// same-information group, + pair families); with pairs (pair_candidates), one
+/// result per pair family too.
 std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands, const std::vector<double>& resid,
                                              const Folds& f, int permutations, std::uint64_t seed, double alpha,
                                              const ScreenContext* ctx = nullptr,

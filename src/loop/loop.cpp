@@ -197,7 +197,7 @@ bool LoopSearch::forward_round() {
   const std::vector<Candidate> pairs = o.pair_probes ? pair_candidates(cands) : std::vector<Candidate>{};
   const auto rank = screen(cands, pairs);
   cands.insert(cands.end(), pairs.begin(), pairs.end());
-  const double thr = o.alpha / std::max<size_t>(1, rank.size());
+  const double thr = o.alpha / std::max<size_t>(1, tests_in(rank));  // as rank_candidates
   // The strongest few significant candidates are each given their best form;
   // the one whose form predicts held-out data best is added (the rank order
   // of the screen does not decide between them).
@@ -256,11 +256,11 @@ std::vector<CandidateResult> LoopSearch::screen(const std::vector<Candidate>& ca
 // forms; the names given.
 std::vector<std::string> LoopSearch::give_forms(const std::vector<CandidateResult>& rank,
                                                 const std::vector<Candidate>& cands, double thr, RoundChoice& ch) {
-  int tried = 0;
-  std::vector<std::string> given;  // candidates given their forms this round
+  std::vector<std::string> given, tests;  // candidates given their forms this round; their tests (one per contender)
   for (const auto& c : rank) {
-    if (!c.significant || tried >= o.contenders) break;
-    if (is_identity(c.name)) continue;
+    if (!c.significant) break;
+    const bool counted = std::find(tests.begin(), tests.end(), test_of(c)) != tests.end();
+    if (is_identity(c.name) || (!counted && static_cast<int>(tests.size()) >= o.contenders)) continue;
     const Candidate* cand = nullptr;
     for (const auto& k : cands)
       if (k.name == c.name) cand = &k;
@@ -269,7 +269,7 @@ std::vector<std::string> LoopSearch::give_forms(const std::vector<CandidateResul
     // when the input is significant itself: the data cannot tell them apart,
     // and the input needs no undeclared variable.
     if (!cand->confounded_with.empty() && input_significant(rank, cand->confounded_with)) continue;
-    ++tried;
+    if (!counted) tests.push_back(test_of(c));
     given.push_back(c.name);
     consider(c, *cand, true, thr, ch);
   }
@@ -289,10 +289,11 @@ std::vector<std::string> LoopSearch::give_forms_by_gain(const std::vector<Candid
     if (!is_identity(c.name) && c.kind != "pair" && c.cv_reduction > 0) by_gain.push_back(&c);
   std::stable_sort(by_gain.begin(), by_gain.end(),
                    [](const CandidateResult* a, const CandidateResult* b) { return a->cv_reduction > b->cv_reduction; });
-  std::vector<std::string> given;
+  std::vector<std::string> given, tests;  // as in give_forms
   double first_gain = 0;  // the gain of the first candidate given its forms
   for (const CandidateResult* c : by_gain) {
-    if (static_cast<int>(given.size()) >= o.far_contenders) break;
+    const bool counted = std::find(tests.begin(), tests.end(), test_of(*c)) != tests.end();
+    if (!counted && static_cast<int>(tests.size()) >= o.far_contenders) continue;
     if (!given.empty() && c->cv_reduction < o.far_gain_share * first_gain) break;
     const Candidate* cand = nullptr;
     for (const auto& k : cands)
@@ -300,6 +301,7 @@ std::vector<std::string> LoopSearch::give_forms_by_gain(const std::vector<Candid
     if (!cand) continue;
     if (!cand->confounded_with.empty() && input_significant(rank, cand->confounded_with)) continue;
     if (given.empty()) first_gain = c->cv_reduction;
+    if (!counted) tests.push_back(test_of(*c));
     given.push_back(c->name);
     consider(*c, *cand, false, thr, ch);
   }
@@ -444,7 +446,7 @@ std::string LoopSearch::no_step_reason(const std::vector<CandidateResult>& rank,
   std::ostringstream m;
   if (!any_sig) {
     m << "no candidate significant at the Bonferroni threshold p <= " << fmt(thr, 3) << " (alpha "
-      << fmt(o.alpha) << " / " << rank.size() << " candidates) with a positive cross-validated error reduction";
+      << fmt(o.alpha) << " / " << tests_in(rank) << " tests) with a positive cross-validated error reduction";
     if (!rank.empty()) m << "; smallest p: " << rank.front().name << " p = " << fmt(rank.front().p_value, 3);
   } else {
     m << "significant candidates remain, but no effect for them passed the F test at p <= " << fmt(thr, 3)

@@ -19,18 +19,20 @@ namespace fs = std::filesystem;
 
 CsvWriter candidates_table(const LoopResult& r) {
   CsvWriter w({"round", "rank", "candidate", "kind", "dof", "permuted", "ess_N2", "p_value", "permutations",
-               "decision", "cv_reduction", "significant", "probe", "probe_dof", "cv_probe"});
+               "decision", "cv_reduction", "significant", "probe", "probe_dof", "cv_probe", "same_test_as"});
   w.comment(" candidates ranked on held-out residuals (N); p from the blocked permutation test of the probe "
             "family's maximum (dof: the family's largest dof; probe: the family member with the largest statistic, "
             "probe_dof its own dof); "
             "cv_reduction = fractional SSE reduction of the best probe (cv_probe) under grouped cross-validation (" +
-            r.cv_mode + ")");
+            r.cv_mode + "); same_test_as: the candidate whose test this one shares (the same levels on the same "
+            "rows: one test, counted once in the Bonferroni threshold)");
   for (size_t k = 0; k < r.rankings.size(); ++k)
     for (size_t i = 0; i < r.rankings[k].size(); ++i) {
       const auto& c = r.rankings[k][i];
       w.row({std::to_string(k + 1), std::to_string(i + 1), c.name, c.kind, std::to_string(c.dof), c.permuted,
              fmt(c.stat, 6), fmt(c.p_value, 4), std::to_string(c.n_perm), c.decision, fmt(c.cv_reduction, 4),
-             c.significant ? "yes" : "no", c.probe, c.probe_dof > 0 ? std::to_string(c.probe_dof) : "", c.cv_probe});
+             c.significant ? "yes" : "no", c.probe, c.probe_dof > 0 ? std::to_string(c.probe_dof) : "", c.cv_probe,
+             c.same_as});
     }
   return w;
 }
@@ -331,7 +333,8 @@ void effects_and_candidates(std::ostringstream& m, const LoopResult& r) {
       m << "| " << k + 1 << " | " << r.steps[k].effect << " | " << r.steps[k].meaning << " | " << p.name << " | "
         << fmt(p.value, 4) << " ± " << fmt(p.se, 2) << " |\n";
   m << "\n## Candidates, first round\n\nSequential permutation p-values (stopped when the decision against the "
-       "threshold was clear at 99.9 % confidence; at the cap, significant when p <= the threshold, else undecided); test_id as a random effect (F test).\n\n"
+       "threshold was clear at 99.9 % confidence; at the cap, significant when p <= the threshold, else undecided); test_id as a random effect (F test); "
+       "candidates with the same levels on the same rows share one test (\"test of\").\n\n"
        "| rank | candidate | kind | dof (family's largest / strongest probe) | permuted | p | permutations | decision | CV reduction |\n"
        "|---|---|---|---|---|---|---|---|---|\n";
   if (!r.rankings.empty())
@@ -339,7 +342,8 @@ void effects_and_candidates(std::ostringstream& m, const LoopResult& r) {
       const auto& c = r.rankings[0][i];
       m << "| " << i + 1 << " | " << c.name << " | " << c.kind << " | " << c.dof
         << (c.probe_dof > 0 ? " / " + std::to_string(c.probe_dof) : std::string()) << " | " << c.permuted << " | "
-        << fmt(c.p_value, 3) << " | " << c.n_perm << " | " << c.decision << " | " << fmt(c.cv_reduction, 3) << " |\n";
+        << fmt(c.p_value, 3) << " | " << c.n_perm << " | " << c.decision
+        << (c.same_as.empty() ? std::string() : " (test of " + c.same_as + ")") << " | " << fmt(c.cv_reduction, 3) << " |\n";
     }
 }
 

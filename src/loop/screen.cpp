@@ -300,14 +300,27 @@ std::vector<CandidateResult> rank_candidates(const std::vector<Candidate>& cands
   // One result per candidate, in the candidates' order whatever thread screens
   // it (each candidate has its own random streams): the same for any count.
   std::vector<CandidateResult> out(cands.size());
+  // Candidates with the same information: one test each group (screen_same.cpp).
+  const std::vector<int> leader = same_information(cands, resid);
+  size_t tests = 0;
+  for (size_t ci = 0; ci < cands.size(); ++ci) tests += leader[ci] == static_cast<int>(ci);
   const int nfam = pairs ? pair_families(*pairs) : 0;  // each pair family counts as one candidate
-  const double thr = alpha / std::max<size_t>(1, cands.size() + nfam);
+  const double thr = alpha / std::max<size_t>(1, tests + nfam);
   int nblocks = 0;
   for (int b : f.block) nblocks = std::max(nblocks, b + 1);
   const int nth = ctx ? std::max(1, ctx->threads) : 1;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nth) if (nth > 1 && cands.size() > 1)
   for (size_t ci = 0; ci < cands.size(); ++ci)
-    out[ci] = screen_candidate(cands[ci], ci, resid, f, ctx, nblocks, permutations, seed, thr);
+    if (leader[ci] == static_cast<int>(ci))
+      out[ci] = screen_candidate(cands[ci], ci, resid, f, ctx, nblocks, permutations, seed, thr);
+  for (size_t ci = 0; ci < cands.size(); ++ci) {
+    const size_t l = static_cast<size_t>(leader[ci]);
+    if (l == ci) continue;
+    out[ci] = out[l];
+    out[ci].name = cands[ci].name;
+    out[ci].kind = cands[ci].kind;
+    out[ci].same_as = cands[l].name;
+  }
   if (nfam > 0)  // their own streams, after every candidate's (screen_pairs.cpp)
     for (auto& r : rank_pairs(*pairs, cands, resid, f, permutations, seed + 7919ULL * cands.size(), thr, ctx))
       out.push_back(std::move(r));
