@@ -56,7 +56,7 @@
 // The candidate's statistic is the family's largest probe on a common scale:
 // each probe's explained sum of squares over its calibration scale (the mean
 // ESS under the pilot permutations, on their own random stream, divided by its
-// dof; 200 pilot permutations) is about chi^2(dof), mapped to a normal deviate by the Wilson-Hilferty
+// dof; 100 pilot permutations) is about chi^2(dof), mapped to a normal deviate by the Wilson-Hilferty
 // cube root, so probes of 1 and of 20 dof compete by how surprising each is;
 // probes whose ESS does not change under permutation are dropped.  The
 // permutation test permutes the variable (all probes at once) within blocks:

@@ -58,4 +58,41 @@ class Mt64 {
   std::size_t p_;
 };
 
+/// 32-bit draws from Mt64: each 64-bit output gives two, its low half and
+/// then its high half (the permutation test's shuffles: a Fisher-Yates draw
+/// modulo a group of at most a few thousand units needs no more than 32 bits,
+/// the modulo bias k / 2^32 is below 1e-6, and each refill serves twice the
+/// draws).  The same interface as Mt64: operator(), available(), take().
+class Mt64Halves {
+ public:
+  using result_type = std::uint32_t;
+  explicit Mt64Halves(std::uint64_t seed) : g_(seed) {}
+  std::uint32_t operator()() {
+    if (p_ >= kBlock) refill();
+    return y_[p_++];
+  }
+  std::size_t available() {
+    if (p_ >= kBlock) refill();
+    return kBlock - p_;
+  }
+  static constexpr std::size_t kBlock = 2 * Mt64::kBlock;
+  const std::uint32_t* take(std::size_t n) {
+    const std::uint32_t* y = y_ + p_;
+    p_ += n;
+    return y;
+  }
+
+ private:
+  void refill() {  // g_ is read only here, a whole block at a time (available() is kBlock / 2 after a refill)
+    const std::size_t n = g_.available();
+    const std::uint64_t* x = g_.take(n);
+    for (std::size_t i = 0; i < n; ++i)
+      y_[2 * i] = static_cast<std::uint32_t>(x[i]), y_[2 * i + 1] = static_cast<std::uint32_t>(x[i] >> 32);
+    p_ = 0;
+  }
+  Mt64 g_;
+  std::uint32_t y_[kBlock];
+  std::size_t p_ = kBlock;
+};
+
 }  // namespace drawbend::loop

@@ -87,7 +87,7 @@ struct CandidateScreen {
   // flat_groups: the groups as runs of consecutive units, and the shuffle's modulus.
   std::vector<char> run;
   std::vector<int> gfirst, gsize;
-  FastMod mod{1};
+  FastMod32 mod{1};
   std::vector<double> cutp;  // cutz padded with +inf to 2^m - 1 entries (the bins' halving search)
   // setup_bounds: the permutation test's bounded pass (screen_bound.cpp).
   bool bounded = false;
@@ -131,9 +131,9 @@ struct CandidateScreen {
   double observed(CandidateResult& res);
   void permutation_test(CandidateResult& res, double T, std::uint64_t seed, size_t ci, int permutations, double thr);
   // the inner loops of the permutations (inline, defined and used in screen_permute.cpp only)
-  inline void shuffle(std::vector<int>& p, Mt64& r) const;
+  inline void shuffle(std::vector<int>& p, Mt64Halves& r) const;
   inline void fill_unit_values(const std::vector<int>& p, std::vector<double>& qz, std::vector<int>& ql, int j,
-                               Mt64& r);
+                               Mt64Halves& r);
   inline void fill_lanes(std::vector<double>& a, std::vector<int>& b, int used) const;
   inline void eval_lanes(const std::vector<double>& a, const std::vector<int>& b, int which = -1);
   inline double lane_stat(int i, bool bounded_too = true) const;

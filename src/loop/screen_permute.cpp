@@ -12,8 +12,14 @@ namespace drawbend::loop::detail {
 
 namespace {
 
-// Pilot permutations per candidate for the probes' calibration scales.
-constexpr int kPilot = 200;
+// Pilot permutations per candidate for the probes' calibration scales: the
+// mean explained sum of squares of each probe (its scale, to 1 / sqrt(dof
+// kPilot / 2) relative, 14 % at one dof) and, for a one-group sub-probe, its
+// variance (the moment-matched dof).  The test is exact for any scales (they
+// only share the family's power among its probes).  200 until 2026-12-07;
+// 100 halves the pilot, which was a sixth of a 50,000-row file's time (issue
+// 50 item 6; heldout_record.md, h50-pilot).
+constexpr int kPilot = 100;
 
 }  // namespace
 
@@ -28,13 +34,15 @@ void CandidateScreen::set_offsets() {
 
 // A group of consecutive units (rows of a test, in file order) is shuffled
 // in place without reading its unit list: the same draws, the same swaps.
+// The draws are 32 bits (Mt64Halves: two per number of the 64-bit stream;
+// 64-bit draws until 2026-12-07), reduced by FastMod32.
 // Its first unit and size in flat arrays (read for every permutation; the
 // groups' own lists are scattered over the heap and missed the cache).
 void CandidateScreen::flat_groups() {
   size_t kmax = 1;
   for (const auto& g : groups) kmax = std::max(kmax, g.size());
   for (const auto& bg : bgroups) kmax = std::max(kmax, bg.size());
-  mod = FastMod(kmax);  // mod(rng(), k) == rng() % k, without the division
+  mod = FastMod32(kmax);  // mod(rng(), k) == rng() % k, without the division
   size_t m = 1;  // the cuts padded with +inf to 2^m - 1 (fill_unit_values)
   while (m < cutz.size() + 1) m *= 2;
   cutp = cutz;
@@ -48,7 +56,7 @@ void CandidateScreen::flat_groups() {
 }
 
 // Fisher-Yates within each permutation group.
-inline void CandidateScreen::shuffle(std::vector<int>& p, Mt64& r) const {
+inline void CandidateScreen::shuffle(std::vector<int>& p, Mt64Halves& r) const {
   for (size_t gi = 0; gi < groups.size(); ++gi) {
     if (run[gi]) {  // the draws in blocks of the stream's buffer (the same numbers)
       int* q = p.data() + gfirst[gi];
@@ -56,10 +64,10 @@ inline void CandidateScreen::shuffle(std::vector<int>& p, Mt64& r) const {
       // multiply chain each) no longer wait on the swaps' loads and stores,
       // and the swaps' addresses are ready when they run.  The same draws,
       // the same swaps in the same order.
-      std::uint32_t j[Mt64::kBlock];
+      std::uint32_t j[Mt64Halves::kBlock];
       for (size_t k = gsize[gi]; k > 1;) {
         const size_t n = std::min(r.available(), k - 1);
-        const std::uint64_t* y = r.take(n);
+        const std::uint32_t* y = r.take(n);
         for (size_t t = 0; t < n; ++t) j[t] = static_cast<std::uint32_t>(mod(y[t], k - t));
         for (size_t t = 0; t < n; ++t, --k) std::swap(q[k - 1], q[j[t]]);
       }
@@ -74,7 +82,7 @@ inline void CandidateScreen::shuffle(std::vector<int>& p, Mt64& r) const {
 // within tests); two-level, the test means are permuted as well (tp, drawn
 // from r after the within-test shuffle) and the bin recomputed.
 inline void CandidateScreen::fill_unit_values(const std::vector<int>& p, std::vector<double>& qz,
-                                              std::vector<int>& ql, int j, Mt64& r) {
+                                              std::vector<int>& ql, int j, Mt64Halves& r) {
   if (!two_level) {
     for (size_t u = 0; u < U; ++u) qz[u * kLanes + j] = xz[p[u]], ql[u * kLanes + j] = xl[p[u]];
     return;
@@ -157,7 +165,7 @@ double CandidateScreen::stat(const std::vector<double>& a, const std::vector<int
 // permutation (a variable constant within every permutation group) is
 // dropped (a sub-probe so: its dof set to 0).
 void CandidateScreen::calibrate(std::uint64_t seed, size_t ci) {
-  Mt64 prng(seed + 7919 * ci + 104729);
+  Mt64Halves prng(seed + 7919 * ci + 104729);
   std::vector<int> pp(U);
   for (size_t u = 0; u < U; ++u) pp[u] = static_cast<int>(u);
   std::vector<double> qz(U * kLanes);
@@ -228,7 +236,7 @@ double CandidateScreen::observed(CandidateResult& res) {
 // until the Clopper-Pearson decision is made or the cap is reached.
 void CandidateScreen::permutation_test(CandidateResult& res, double T, std::uint64_t seed, size_t ci,
                                        int permutations, double thr) {
-  Mt64 rng(seed + 7919 * ci);
+  Mt64Halves rng(seed + 7919 * ci);
   int ge = 0, b = 0, dec = 0;
   std::vector<int> perm(U);
   for (size_t u = 0; u < U; ++u) perm[u] = static_cast<int>(u);
