@@ -77,11 +77,12 @@
 // two families, each one permutation test of its maximum (all columns
 // permuted jointly): the rows of each test (pairs with a row-level column) and
 // the tests of each block (every pair, the product's test mean).  Each family
-// counts as one candidate in the threshold alpha / (candidates + families).
+// counts as one test in the threshold alpha / (tests + families), a group of
+// candidates with the same information being one test (screen_same.cpp).
 
 // Sequential decisions (seed-independent): permutations run in batches; after
 // each batch the Clopper-Pearson interval of p at confidence 1 - 1e-3 is
-// compared with the threshold alpha / (number of candidates): wholly below ->
+// compared with the threshold alpha / (number of tests): wholly below ->
 // significant, wholly above -> not significant; at `permutations` (the cap)
 // still straddling -> decided by the Monte Carlo p-value (1 + k) / (1 + b),
 // valid at any b: p <= thr significant, else "undecided".  So a decision

@@ -3,7 +3,8 @@
 // residuals against every candidate variable, give the strongest significant
 // candidates their best form, add the best, re-screen, and iterate until no
 // candidate is significant at the Bonferroni threshold alpha / (number of
-// candidates).  In detail (issue 50):
+// tests: candidates with the same levels on the same rows share one,
+// screen_same.cpp; each pair family is one).  In detail (issue 50):
 //   screen     every candidate is probed by a family of probes (its levels, a
 //              step or smooth shape, a term scaled with dF/dmu, and its effect
 //              within each group of the model's inputs: pin, speed, direction,
@@ -154,7 +155,7 @@ struct Step {
   std::string variable, effect, meaning;
   double p_value = 1;        ///< nested-model F test of the effect given all the others (joint fit)
   double p_permutation = 1;  ///< the candidate's blocked permutation test
-  double threshold = 0;      ///< alpha / number of candidates (Bonferroni), for both
+  double threshold = 0;      ///< alpha / number of tests (Bonferroni; tests_in), for both
   double rms_before = 0, rms_after = 0, max_before = 0, max_after = 0;
   std::vector<Param> params;                 ///< of the effect, from the full-data refit
   std::vector<std::pair<std::string, double>> tried;  ///< effect -> held-out RMS
