@@ -136,6 +136,12 @@ CvResult cross_validate(const Design& d, const ModelSpec& spec, const Folds& f);
 /// parameter apart from its own row's noise, not a value fitted to a data set.
 inline bool levels_replicated(size_t levels, size_t rows) { return 2 * levels <= rows; }
 
+/// A numeric column with at most this many distinct values is probed per value
+/// (its values are its levels, like a categorical column's); with more, by a
+/// line, a quadratic and quantile bins (screen.cpp, screen_family.cpp; the
+/// same-information groups of screen_same.cpp follow the same rule).
+constexpr size_t kOwnLevelsMax = 8;
+
 struct Candidate {
   std::string name, kind;  ///< kind: column, derived, group
   bool categorical = false, test_level = false;

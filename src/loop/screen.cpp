@@ -130,7 +130,7 @@ void CandidateScreen::random_effect(CandidateResult& res) const {
 }
 
 // Row values: z-score (numeric) and level index (categorical; numeric with
-// at most 8 distinct values: one level each; else 5 quantile bins).
+// at most kOwnLevelsMax distinct values: one level each; else quantile bins).
 void CandidateScreen::row_values() {
   z.assign(n, 0.0);
   lv.assign(n, 0);
@@ -144,7 +144,7 @@ void CandidateScreen::row_values() {
     const double sd = std::sqrt(q / rows.size());
     for (int i : rows) z[i] = sd > 0 ? (c.x[i] - m) / sd : 0;
     const std::vector<double>& dv = distinct;
-    if (dv.size() <= 8) {
+    if (dv.size() <= kOwnLevelsMax) {
       for (int i : rows) lv[i] = static_cast<int>(std::lower_bound(dv.begin(), dv.end(), c.x[i]) - dv.begin());
       nlev = static_cast<int>(dv.size());
     } else {

@@ -107,7 +107,7 @@ void CandidateScreen::build_family() {
   // average): such a probe's dof nears the rows', it explains nearly the whole
   // residual under every permutation and no form of it is identifiable.  A
   // categorical column is then not probed at all (every probe of it is per level).
-  const bool own_levels = c.categorical || distinct.size() <= 8;
+  const bool own_levels = c.categorical || distinct.size() <= kOwnLevelsMax;
   if (own_levels && !levels_replicated(distinct.size(), rows.size())) {
     if (c.categorical) return;
     add(Shape::quad, distinct.size() >= 4 ? "linear + quadratic" : "linear", none, 1);
@@ -117,11 +117,11 @@ void CandidateScreen::build_family() {
   if (c.categorical) add(Shape::levels, "levels", none, 1);
   else {
     add(Shape::quad, distinct.size() >= 4 ? "linear + quadratic" : "linear", none, 1);
-    if (nlev > 2) add(Shape::levels, distinct.size() <= 8 ? "levels" : std::to_string(nlev) + " quantile bins", none, 1);
+    if (nlev > 2) add(Shape::levels, distinct.size() <= kOwnLevelsMax ? "levels" : std::to_string(nlev) + " quantile bins", none, 1);
   }
   if (weighted) add(c.categorical ? Shape::wlevels : Shape::wslope, "scaled with dF/dmu", none, 1);
   if (weighted && !c.categorical && nlev > 2)  // a multiplicative effect of any shape
-    add(Shape::wlevels, (distinct.size() <= 8 ? "levels" : std::to_string(nlev) + " quantile bins") +
+    add(Shape::wlevels, (distinct.size() <= kOwnLevelsMax ? "levels" : std::to_string(nlev) + " quantile bins") +
                             std::string(" scaled with dF/dmu"), none, 1);
   if (ctx)
     for (const auto& [input, g] : ctx->modifiers) {
@@ -129,16 +129,16 @@ void CandidateScreen::build_family() {
       int ng = 0;
       for (int i : rows) ng = std::max(ng, g[i] + 1);
       if (count_distinct(g, rows) < 2) continue;
-      add(c.categorical || distinct.size() <= 8 ? Shape::levels : Shape::slopes, "per " + input, g, ng, input);
-      if (!c.categorical && distinct.size() > 8) add(Shape::levels, "bins per " + input, g, ng, input);
+      add(c.categorical || distinct.size() <= kOwnLevelsMax ? Shape::levels : Shape::slopes, "per " + input, g, ng, input);
+      if (!c.categorical && distinct.size() > kOwnLevelsMax) add(Shape::levels, "bins per " + input, g, ng, input);
       if (c.test_level && pooled_inputs)  // see centred_by
-        add(c.categorical || distinct.size() <= 8 ? Shape::levels : Shape::slopes, "per " + input + ", pooled over cells",
+        add(c.categorical || distinct.size() <= kOwnLevelsMax ? Shape::levels : Shape::slopes, "per " + input + ", pooled over cells",
             g, ng, input, true);
       // A shape of any kind in one group of the input, pooled over the cells: with
       // a few tests per block, bins per block x group explain every test's mean
       // whatever the permutation (each test its own bin), so a curved effect
       // confined to one group is seen only with bins shared over the blocks.
-      if (pooled_inputs && !c.categorical && distinct.size() > 8)
+      if (pooled_inputs && !c.categorical && distinct.size() > kOwnLevelsMax)
         add(Shape::levels, "bins per " + input + ", pooled over cells", g, ng, input, true);
     }
 }

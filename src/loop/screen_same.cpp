@@ -10,7 +10,7 @@
 // three times.
 //
 // Same information: two candidates whose values are their own levels
-// (categorical, or numeric with at most 8 distinct values, where the screen's
+// (categorical, or numeric with at most kOwnLevelsMax distinct values, where the screen's
 // probe family is built on the levels; screen_family.cpp) and that split the
 // screened rows (a finite value and a finite residual) into the same groups,
 // with the same test_level flag.  Identities (random effects, F test) and
@@ -31,8 +31,6 @@ namespace drawbend::loop {
 
 namespace {
 
-constexpr size_t kMaxOwnLevels = 8;  // numeric columns with at most this many values are probed per level
-
 struct CodeHash {
   size_t operator()(const std::vector<int>& v) const noexcept {
     size_t h = 1469598103934665603ULL;
@@ -42,7 +40,8 @@ struct CodeHash {
 };
 
 // Each row's level by first appearance (-1: not screened), or empty when the
-// candidate is not probed per level (a numeric column with more than 8 values).
+// candidate is not probed per level (a numeric column with more than
+// kOwnLevelsMax values).
 std::vector<int> level_codes(const Candidate& c, const std::vector<double>& resid) {
   std::vector<int> code(resid.size(), -1);
   std::unordered_map<double, int> seen;
@@ -50,7 +49,7 @@ std::vector<int> level_codes(const Candidate& c, const std::vector<double>& resi
     if (!std::isfinite(c.x[i]) || !std::isfinite(resid[i])) continue;
     const double v = c.x[i] == 0 ? 0.0 : c.x[i];  // -0 and +0 are one value
     auto [it, fresh] = seen.try_emplace(v, static_cast<int>(seen.size()));
-    if (fresh && !c.categorical && seen.size() > kMaxOwnLevels) return {};
+    if (fresh && !c.categorical && seen.size() > kOwnLevelsMax) return {};
     code[i] = it->second;
   }
   if (seen.size() < 2) return {};  // constant: p = 1 whatever its group
