@@ -42,10 +42,10 @@ std::string sign_text(const Step& s, const std::string& var) {
   if (s.params.size() != 1) return "";
   const Param& p = s.params[0];
   const double t = p.se > 0 ? std::abs(p.value) / p.se : 0;
-  for (const Effect& e : s.added)  // a bump (form_bumps.cpp): higher or lower near its centre, not a trend
-    if (e.bump_width > 0 && e.kind == EffectKind::generic_smooth)
-      return std::string("mu ") + (p.value > 0 ? "higher" : "lower") + " near " + var + " = " + fmt(e.bump_centre, 6) +
-             " (" + fmt(t, 3) + " SE from zero)";
+  for (const Effect& e : s.added)  // a bump or step (form_bumps.cpp): higher or lower near or above it, not a trend
+    if ((e.bump_width > 0 || e.step) && e.kind == EffectKind::generic_smooth)
+      return std::string("mu ") + (p.value > 0 ? "higher" : "lower") + (e.step ? " above " : " near ") + var + " = " +
+             fmt(e.step ? e.step_at : e.bump_centre, 6) + " (" + fmt(t, 3) + " SE from zero)";
   return std::string("mu ") + (p.value > 0 ? "increases" : "decreases") + " with " + var + " (" + fmt(t, 3) +
          " SE from zero)";
 }
@@ -92,7 +92,8 @@ ModelSpec without(const ModelSpec& spec, const Step& s, bool bending_linear) {
     bool mine = false;
     for (const auto& m : s.added) mine = mine || (m.kind == e.kind && m.variable == e.variable && m.by == e.by && m.cell == e.cell && m.cell_offset == e.cell_offset &&
                             m.bend_scaled == e.bend_scaled && m.times == e.times && m.level_basis == e.level_basis &&
-                            m.bump_centre == e.bump_centre && m.bump_width == e.bump_width);
+                            m.bump_centre == e.bump_centre && m.bump_width == e.bump_width && m.step == e.step &&
+                            m.step_at == e.step_at);
     if (!mine) t.effects.push_back(e);
   }
   for (const auto& m : s.added)
