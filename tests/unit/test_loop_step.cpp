@@ -16,11 +16,18 @@
 //  - The F test counts the threshold: searched_params of a step effect is 1
 //    (a bump's 2), and two models with steps at other thresholds have
 //    different spec_key (their fits never alias).
+//  - The same model named by its simpler description (takes_the_step,
+//    aliases.hpp): a form whose held-out predictions equal the held one's
+//    (within 1e-6 x its RMS) takes the step only with fewer parameters (2 vs
+//    1: no; 1 vs 2: yes; 1 vs 1: no, the one held), whatever the rounding of
+//    the RMS; forms that predict differently compare by held-out RMS only
+//    (lower takes it, even with more parameters).
 #define BOOST_TEST_MODULE loop_step
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <vector>
 
+#include "loop/aliases.hpp"
 #include "loop/bump.hpp"
 #include "loop/fit_memo.hpp"
 #include "loop/forms.hpp"
@@ -114,4 +121,27 @@ BOOST_AUTO_TEST_CASE(the_threshold_is_counted_and_keyed) {
   BOOST_TEST(spec_key(s) != spec_key(t));
   BOOST_TEST(spec_key(s) != spec_key(u));
   BOOST_TEST(spec_key(s) == spec_key(ModelSpec(s)));
+}
+
+BOOST_AUTO_TEST_CASE(the_same_model_is_named_by_fewer_parameters) {
+  CvResult held;
+  held.pred = {10.0, 12.0, 14.0, 16.0};
+  held.rms = 3.0;
+  FormTrial a;
+  a.cv.pred = {10.0, 12.0, 14.0 + 1e-9, 16.0};  // the same model: 5e-10 N RMS apart
+  a.cv.rms = 3.0 - 1e-9;                         // lower by rounding
+  a.q = 2;
+  BOOST_TEST(!takes_the_step(a, held, 1));  // more parameters: not taken despite the lower RMS
+  a.cv.rms = 3.0 + 1e-9;
+  a.q = 1;
+  BOOST_TEST(takes_the_step(a, held, 2));   // fewer parameters: taken despite the higher RMS
+  BOOST_TEST(!takes_the_step(a, held, 1));  // as many: the one held
+  FormTrial b;
+  b.cv.pred = {10.0, 12.5, 14.0, 16.0};  // another model: 0.25 N RMS apart
+  b.cv.rms = 2.9;
+  b.q = 5;
+  BOOST_TEST(takes_the_step(b, held, 1));  // lower RMS takes it
+  b.cv.rms = 3.1;
+  b.q = 0;
+  BOOST_TEST(!takes_the_step(b, held, 1));  // higher RMS does not, however few its parameters
 }
