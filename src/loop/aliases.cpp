@@ -101,6 +101,12 @@ double prediction_rms_diff(const std::vector<double>& a, const std::vector<doubl
   return n ? std::sqrt(ss / static_cast<double>(n)) : std::nan("");
 }
 
+bool takes_the_step(const FormTrial& a, const CvResult& held, int held_q) {
+  const double dp = prediction_rms_diff(a.cv.pred, held.pred);
+  if (dp <= kSameModelShare * held.rms) return a.q < held_q;  // false for NaN: compared by RMS below
+  return a.cv.rms < held.rms;
+}
+
 void name_alikes(Step& s, const std::vector<std::pair<std::string, CvResult>>& kept, const CvResult& best,
                  const Folds& f, double min_effect_N) {
   std::vector<std::string> same;  // names of same_effect_as, appended after aliased_with's

@@ -60,6 +60,22 @@ std::vector<AliasColumn> alias_columns(const std::vector<Candidate>& cands, cons
 /// tiny standard error of their MSE difference).
 double prediction_rms_diff(const std::vector<double>& a, const std::vector<double>& b);
 
+/// A model's held-out predictions within kSameModelShare x the RMS of
+/// another's (prediction_rms_diff) are the same model in another coding: a
+/// step of a run-order column at a shift change and a categorical column of
+/// the shifts, or a column and its renamed copy.  Their held-out errors
+/// differ by rounding only.
+constexpr double kSameModelShare = 1e-6;
+
+struct FormTrial;
+/// Does candidate form `a` (a candidate's best passed form) take the round's
+/// step from the best so far, `held` (its held-out result) with `held_q`
+/// parameters (FormTrial::q: searched ones counted)?  By the lower held-out
+/// RMS; but when the two are the same model (kSameModelShare), by fewer
+/// parameters, a threshold or bump searched for it counted (the simpler
+/// description of the same fit), and on a tie of those the one held.
+bool takes_the_step(const FormTrial& a, const CvResult& held, int held_q);
+
 struct Step;
 /// The columns of `kept` (column -> its kept form's held-out result), the
 /// step's own skipped: those within one standard error of the MSE difference

@@ -27,17 +27,66 @@ std::vector<double> bump_basis(const std::vector<double>& x, double c, double w)
   return b;
 }
 
-std::optional<Bump> scan_bump(const std::vector<double>& x, const std::vector<double>& r,
-                              const std::vector<char>& use) {
-  // Per distinct value of x: its rows and their sum of r (ascending x).
+namespace {
+
+// Per distinct value of x: its rows and their sum of r (ascending x), over
+// the rows scan_bump and scan_step read; N and R: all of them.
+std::map<double, std::pair<double, double>> per_value(const std::vector<double>& x, const std::vector<double>& r,
+                                                      const std::vector<char>& use, double& N, double& R) {
   std::map<double, std::pair<double, double>> per;  // x -> (rows, sum of r)
-  double N = 0, R = 0;
+  N = 0, R = 0;
   for (size_t i = 0; i < x.size() && i < r.size(); ++i) {
     if ((!use.empty() && (i >= use.size() || !use[i])) || !std::isfinite(x[i]) || !std::isfinite(r[i])) continue;
     auto& p = per[x[i]];
     p.first += 1, p.second += r[i];
     N += 1, R += r[i];
   }
+  return per;
+}
+
+}  // namespace
+
+std::vector<double> step_basis(const std::vector<double>& x, double c) {
+  std::vector<double> b(x.size());
+  const double n = static_cast<double>(std::max<size_t>(1, x.size()));
+  double m = 0;
+  for (size_t i = 0; i < x.size(); ++i) m += (b[i] = x[i] > c ? 1.0 : 0.0) / n;
+  double q = 0;
+  for (double& v : b) {
+    v -= m;
+    q += v * v / n;
+  }
+  const double sd = q > 1e-24 ? std::sqrt(q) : 0.0;
+  for (double& v : b) v = sd > 0 ? v / sd : 0.0;
+  return b;
+}
+
+std::optional<Step1> scan_step(const std::vector<double>& x, const std::vector<double>& r,
+                               const std::vector<char>& use) {
+  double N = 0, R = 0;
+  const auto per = per_value(x, r, use, N, R);
+  if (per.size() < static_cast<size_t>(kBumpMinValues)) return std::nullopt;
+  std::vector<double> v, m, s;
+  for (const auto& [xv, p] : per) v.push_back(xv), m.push_back(p.first), s.push_back(p.second);
+  const double need = std::max<double>(kBumpMinRows, std::floor(N / kBumpRowShare));
+  std::optional<Step1> best;
+  double below = 0, sum_below = 0;  // rows and sum of r at or below v[j]
+  for (size_t j = 0; j + 1 < v.size(); ++j) {
+    below += m[j], sum_below += s[j];
+    const double n1 = N - below, s1 = R - sum_below;  // above the threshold
+    if (j < 1 || j + 2 >= v.size() || below < need || n1 < need) continue;  // 2 values, `need` rows a side
+    const double sxx = n1 * (1 - n1 / N), sxr = s1 - n1 * R / N;
+    if (!(sxx > 1e-12)) continue;
+    const double ex = sxr * sxr / sxx;
+    if (ex > 0 && (!best || ex > best->explained)) best = Step1{0.5 * (v[j] + v[j + 1]), ex};
+  }
+  return best;
+}
+
+std::optional<Bump> scan_bump(const std::vector<double>& x, const std::vector<double>& r,
+                              const std::vector<char>& use) {
+  double N = 0, R = 0;
+  const auto per = per_value(x, r, use, N, R);  // per distinct value of x: its rows and their sum of r
   if (per.size() < static_cast<size_t>(kBumpMinValues)) return std::nullopt;
   std::vector<double> v, m, s;
   for (const auto& [xv, p] : per) v.push_back(xv), m.push_back(p.first), s.push_back(p.second);

@@ -56,4 +56,32 @@ struct Bump {
 std::optional<Bump> scan_bump(const std::vector<double>& x, const std::vector<double>& r,
                               const std::vector<char>& use = {});
 
+/// A step of a column as a form (h50-step, heldout_record.md): s(x) = [x >
+/// c], its threshold c scanned where the step explains the most of the
+/// current model's held-out residual, on mu (generic_smooth) or on the force
+/// channel (force_offset), overall or in one cell; one fitted parameter, its
+/// height, with c counted as one searched parameter by the F test.  The
+/// overall step on mu is generic_step (its threshold fitted by forms.cpp).
+
+/// [x > c] as a basis column, centred and scaled to unit standard deviation
+/// over the rows (as bump_basis); all zeros when it does not vary.
+std::vector<double> step_basis(const std::vector<double>& x, double c);
+
+/// A step's threshold (column units), and the sum of squares of the residual
+/// its slope explains.
+struct Step1 {
+  double at = 0, explained = 0;
+};
+
+/// Over the thresholds midway between consecutive distinct values of x (over
+/// the rows with use[i] != 0 and x and r finite; use empty: every such row),
+/// the step with at least 2 distinct values and max(kBumpMinRows, n /
+/// kBumpRowShare) of the n rows on each side whose slope explains the largest
+/// sum of squares of r, (S_above - n_above R / n)^2 / (n_above (1 - n_above /
+/// n)), from the count and sum of r per distinct value.  Ties: the lower
+/// threshold.  Empty with fewer than kBumpMinValues distinct values or no
+/// supported step that explains anything.
+std::optional<Step1> scan_step(const std::vector<double>& x, const std::vector<double>& r,
+                               const std::vector<char>& use = {});
+
 }  // namespace drawbend::loop

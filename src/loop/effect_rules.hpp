@@ -129,11 +129,13 @@ struct CategoricalBy {
   }
 };
 
-/// A bump's parameter name: "bump of x (centre c, width w)" (Effect::bump_width > 0), else "spline j of x".
+/// A bump's parameter name: "bump of x (centre c, width w)" (Effect::bump_width > 0), a step's "step of x
+/// at c" (Effect::step), else "spline j of x".
 inline std::string basis_text(const Effect& e, int j) {
   return e.bump_width > 0 ? "bump of " + e.variable + " (centre " + fmt(e.bump_centre, 6) + ", width " +
                                 fmt(e.bump_width, 6) + ")"
-                          : "spline " + std::to_string(j + 1) + " of " + e.variable;
+         : e.step ? "step of " + e.variable + " at " + fmt(e.step_at, 6)
+                  : "spline " + std::to_string(j + 1) + " of " + e.variable;
 }
 
 /// mu (1 + sum_j beta_j B_j(x)): natural cubic spline basis, or a bump

@@ -27,7 +27,7 @@ enum class EffectKind {
   categorical_by,      ///< mu * (1 + g_{group,level}): a group factor per group of a model input
   bending_linear,      ///< bending channel: F_B + c_pin z per pin (fitted with the bending lines), z the z-score
   generic_smooth,      ///< mu * (1 + sum_j beta_j B_j(x)): natural cubic spline of n_basis dof (per group with `by`),
-                       ///< or a Gaussian bump of x (Effect::bump_width > 0, n_basis 1)
+                       ///< or a Gaussian bump of x (Effect::bump_width > 0, n_basis 1), or a step of x (Effect::step)
   force_offset,        ///< outlet force + sum_j c_j B_j(x) on every row, rotating included (levels: one c per level
                        ///< but the first; numeric: spline basis of n_basis dof); per pin with by = "pin"
   generic_step,        ///< mu * (1 + beta [x > c]): a step at the threshold c (Effect::lambda_mm) chosen on a grid
@@ -75,6 +75,12 @@ struct Effect {
   /// (bump.hpp; centred and scaled to unit sd, as the spline basis), its
   /// centre and width (column units) scanned by scan_bump; 0: the spline.
   double bump_centre = 0, bump_width = 0;
+  /// generic_smooth / force_offset with n_basis 1: true makes the basis a step
+  /// of the column, [x > step_at] (bump.hpp; centred and scaled to unit sd, as
+  /// the bump), its threshold (column units) scanned by scan_step; an effect
+  /// that switches on above a value in one cell, or on the force channel.
+  bool step = false;
+  double step_at = 0;
 };
 
 std::string effect_name(EffectKind k);

@@ -17,6 +17,10 @@ std::string spec_key(const ModelSpec& s) {
     k << '|' << static_cast<int>(e.kind) << ',' << e.variable.size() << ':' << e.variable << ',' << lam << ','
       << e.n_levels << ',' << e.by.size() << ':' << e.by << ',' << e.n_groups << ',' << e.n_basis << ',' << e.cell << ',' << e.bend_scaled << ',' << e.cell_offset
       << ',' << e.times.size() << ':' << e.times << ',' << e.level_basis << ',' << bump;
+    if (e.step) {  // a step: its threshold (two steps never share a key)
+      std::snprintf(bump, sizeof bump, ",S%a", e.step_at);
+      k << bump;
+    }
   }
   return k.str();
 }

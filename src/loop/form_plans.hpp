@@ -31,6 +31,10 @@ std::string product_meaning(EffectKind k, bool levels, const std::string& times)
 /// force_offset) means, for the report (form_bumps.cpp).
 std::string bump_meaning(EffectKind k);
 
+/// What a step form (Effect::step) of kind k (generic_smooth or force_offset)
+/// means, for the report (form_bumps.cpp).
+std::string step_meaning(EffectKind k);
+
 
 // A form to try: its effects (one, or several together).
 struct Part {
@@ -44,6 +48,7 @@ struct Part {
   std::string times;    // Effect::times: the shape times this centred model-input quantity
   bool levels = false;  // generic_smooth with times: the column's levels as the basis (Effect::level_basis)
   double centre = 0, width = 0;  // width > 0: a bump (Effect::bump_centre, bump_width; nb 1)
+  bool step = false;             // a step at centre (Effect::step, step_at; nb 1, width 0)
 };
 struct Plan {
   std::vector<Part> parts;

@@ -286,6 +286,10 @@ std::string fits_key(const ModelSpec& s) {
       std::snprintf(num, sizeof num, ",B%a,%a", e.bump_centre, e.bump_width);
       k += num;
     }
+    if (e.step) {  // a step: its threshold
+      std::snprintf(num, sizeof num, ",S%a", e.step_at);
+      k += num;
+    }
   }
   return k;
 }
@@ -295,7 +299,7 @@ FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c
   FormTrial t;
   t.spec = spec;
   bool bend = false, fric = false;
-  for (const auto& [k, by, nb, cell, scaled, var, offset, times, levels, centre, width] : p.parts) {
+  for (const auto& [k, by, nb, cell, scaled, var, offset, times, levels, centre, width, step] : p.parts) {
     // A pair's main effect (a column of its own) only when the model has none yet.
     if (!var.empty() && !detail::applicable(d, t.spec, k, var)) continue;
     t.spec = with_effect(d, t.spec, k, var.empty() ? c.name : var, by, times);
@@ -306,7 +310,10 @@ FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c
     t.spec.effects.back().level_basis = levels;
     t.spec.effects.back().bump_centre = centre;
     t.spec.effects.back().bump_width = width;
+    t.spec.effects.back().step = step;
+    t.spec.effects.back().step_at = step ? centre : 0.0;
     const std::string shape = width > 0 ? " bump at " + fmt(centre, 6) + ", width " + fmt(width, 6)
+                              : step    ? " step at " + fmt(centre, 6)
                               : levels  ? " levels"
                               : nb > 0  ? " " + std::to_string(nb) + " dof"
                                         : "";
@@ -316,13 +323,15 @@ FormTrial named_trial(const Design& d, const ModelSpec& spec, const Candidate& c
               (scaled ? " (scaled with the pin's bending force)" : "") +
               (times.empty() ? "" : " (times the centred " + times + ")");
     const std::string meaning = width > 0       ? detail::bump_meaning(k)
+                                : step          ? detail::step_meaning(k)
                                 : times.empty() ? effect_meaning(k)
                                                 : detail::product_meaning(k, levels, times);
     if (t.meaning.find(meaning) == std::string::npos)  // a pair's mains: the same meaning once
       t.meaning += (t.meaning.empty() ? "" : "; ") + meaning;
     (acts_on_bending(k) ? bend : fric) = true;
-    t.searched = t.searched || !times.empty() || width > 0;
+    t.searched = t.searched || !times.empty() || width > 0 || step;
     if (width > 0) t.extra_searched += 2;  // the bump's centre and width
+    if (step) t.extra_searched += 1;       // the step's threshold
   }
   t.channel = bend && fric ? "both" : bend ? "bending" : "friction";
   return t;
@@ -365,7 +374,7 @@ double f_test(const JointFit& a, const JointFit& b, int extra_q) {
 
 int searched_params(const std::vector<Effect>& added) {
   int q = 0;
-  for (const Effect& e : added) q += e.bump_width > 0 ? 2 : 0;
+  for (const Effect& e : added) q += (e.bump_width > 0 ? 2 : 0) + (e.step ? 1 : 0);
   return q;
 }
 

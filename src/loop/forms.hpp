@@ -65,9 +65,10 @@ struct FormTrial {
   std::string name, meaning, channel;  ///< channel: friction, bending or both
   bool passed = false;
   /// A form with parameters searched on a grid beyond those fitted: a
-  /// product (Effect::times) or a bump (Effect::bump_width): choose_form's guard.
+  /// product (Effect::times), a bump (Effect::bump_width) or a step
+  /// (Effect::step): choose_form's guard.
   bool searched = false;
-  int extra_searched = 0;  ///< searched parameters counted by the F test and in q (a bump: its centre and width, 2)
+  int extra_searched = 0;  ///< searched parameters counted by the F test and in q (a bump: centre and width, 2; a step: 1)
   /// The joint fit, p_value and q made.  A form whose held-out error alone
   /// fails its gates cannot pass whatever its F test, so try_forms leaves
   /// them until complete_trials (a kept form's candidate, whose trials are

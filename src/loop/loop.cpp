@@ -42,10 +42,10 @@ std::string sign_text(const Step& s, const std::string& var) {
   if (s.params.size() != 1) return "";
   const Param& p = s.params[0];
   const double t = p.se > 0 ? std::abs(p.value) / p.se : 0;
-  for (const Effect& e : s.added)  // a bump (form_bumps.cpp): higher or lower near its centre, not a trend
-    if (e.bump_width > 0 && e.kind == EffectKind::generic_smooth)
-      return std::string("mu ") + (p.value > 0 ? "higher" : "lower") + " near " + var + " = " + fmt(e.bump_centre, 6) +
-             " (" + fmt(t, 3) + " SE from zero)";
+  for (const Effect& e : s.added)  // a bump or step (form_bumps.cpp): higher or lower near or above it, not a trend
+    if ((e.bump_width > 0 || e.step) && e.kind == EffectKind::generic_smooth)
+      return std::string("mu ") + (p.value > 0 ? "higher" : "lower") + (e.step ? " above " : " near ") + var + " = " +
+             fmt(e.step ? e.step_at : e.bump_centre, 6) + " (" + fmt(t, 3) + " SE from zero)";
   return std::string("mu ") + (p.value > 0 ? "increases" : "decreases") + " with " + var + " (" + fmt(t, 3) +
          " SE from zero)";
 }
@@ -92,7 +92,8 @@ ModelSpec without(const ModelSpec& spec, const Step& s, bool bending_linear) {
     bool mine = false;
     for (const auto& m : s.added) mine = mine || (m.kind == e.kind && m.variable == e.variable && m.by == e.by && m.cell == e.cell && m.cell_offset == e.cell_offset &&
                             m.bend_scaled == e.bend_scaled && m.times == e.times && m.level_basis == e.level_basis &&
-                            m.bump_centre == e.bump_centre && m.bump_width == e.bump_width);
+                            m.bump_centre == e.bump_centre && m.bump_width == e.bump_width && m.step == e.step &&
+                            m.step_at == e.step_at);
     if (!mine) t.effects.push_back(e);
   }
   for (const auto& m : s.added)
@@ -107,8 +108,8 @@ ModelSpec without(const ModelSpec& spec, const Step& s, bool bending_linear) {
 struct RoundChoice {
   Step best_step;
   FormTrial best_form;
-  double best_form_rms = INFINITY;  // the best passed form's held-out RMS of best_step's variable
-  CvResult best_cv;                 // that best passed form's held-out result
+  CvResult best_cv;  // the best passed form's held-out result (best_step's variable)
+  int best_q = 0;    // that form's parameters, searched ones counted (FormTrial::q)
   bool found = false;
   std::vector<std::pair<std::string, CvResult>> kept;  // column -> its kept form's held-out result
 };
@@ -362,13 +363,12 @@ void LoopSearch::consider(const CandidateResult& c, const Candidate& cand, bool 
   // Candidates compete by their best form's held-out error, not by the kept
   // (simplest within one standard error) form's: the one-SE rule chooses a
   // form within a variable, and must not hand the step to another variable
-  // whose few-parameter form is only nearly as good.
-  const double best_rms = r.trials[r.best].cv.rms;
-  const bool better = !ch.found || best_rms < ch.best_form_rms;
-  if (better) {
+  // whose few-parameter form is only nearly as good (the same model: fewer parameters, takes_the_step).
+  const FormTrial& b = r.trials[r.best];
+  if (!ch.found || takes_the_step(b, ch.best_cv, ch.best_q)) {
     ch.best_form = r.trials[r.keep];
-    ch.best_form_rms = best_rms;
-    ch.best_cv = r.trials[r.best].cv;
+    ch.best_cv = b.cv;
+    ch.best_q = b.q;
     ch.best_step = std::move(r.s);
     ch.found = true;
   }
@@ -412,8 +412,8 @@ void LoopSearch::pair_first(const std::vector<CandidateResult>& rank, const std:
   for (const auto& [name, cv] : ch.kept) listed = listed || name == r.s.variable;
   if (!listed && r.s.cls == "undeclared variable") ch.kept.push_back({r.s.variable, r.trials[r.keep].cv});
   ch.best_form = r.trials[r.keep];
-  ch.best_form_rms = r.trials[r.best].cv.rms;
   ch.best_cv = r.trials[r.best].cv;
+  ch.best_q = r.trials[r.best].q;
   ch.best_step = std::move(r.s);
 }
 

@@ -221,6 +221,8 @@ void effect_values(const Design& d, const Effect& e, size_t k, Fit& f) {
   } else if ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && e.n_basis == 1 &&
              e.bump_width > 0) {
     f.basis[k] = {bump_basis(d.values(e.variable), e.bump_centre, e.bump_width)};  // a bump (bump.hpp)
+  } else if ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && e.n_basis == 1 && e.step) {
+    f.basis[k] = {step_basis(d.values(e.variable), e.step_at)};  // a step (bump.hpp)
   } else if ((kk == EffectKind::generic_smooth || kk == EffectKind::force_offset) && e.n_basis > 0) {
     f.basis[k] = spline_basis(d.values(e.variable), e.n_basis);
   }

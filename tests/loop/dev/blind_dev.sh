@@ -16,7 +16,8 @@
 # nor in 76600000..76699999 (heldout_protocol_v16.md), nor in 79800000..79899999
 # (heldout_protocol_v17.md), nor in 80600000..80699999 (heldout_protocol_v18.md),
 # nor in 82800000..82899999 (heldout_protocol_v19.md), nor in 84000000..84099999
-# (heldout_protocol_v20.md), nor in 85200000..85299999 (heldout_protocol_v21.md).
+# (heldout_protocol_v20.md), nor in 85200000..85299999 (heldout_protocol_v21.md), nor in 88600000..88699999
+# (heldout_protocol_v22.md).
 # usage: blind_dev.sh BIN SEED0 N OUTDIR [PERM] [FIRST] [GEN]
 #   LOOP_ARGS (environment): extra loop options, e.g. "--cell-probes true"
 #   PERM: permutation cap, default 20000 as the loop (with 2000 no candidate
@@ -47,8 +48,8 @@ released() {  # is seed $1 spent by a recorded held-out run?
 }
 for ((i=FIRST;i<N;i++)); do
   s=$((S0+i))
-  if (( (s >= 58000000 && s < 61000000) || (s >= 62900000 && s < 63000000) || (s >= 64900000 && s < 65000000) || (s >= 72000000 && s < 72100000) || (s >= 72200000 && s < 72300000) || (s >= 75500000 && s < 75600000) || (s >= 76600000 && s < 76700000) || (s >= 79800000 && s < 79900000) || (s >= 80600000 && s < 80700000) || (s >= 82800000 && s < 82900000) || (s >= 84000000 && s < 84100000) || (s >= 85200000 && s < 85300000) )) && ! released $s; then
-    if (( s >= 85200000 )); then why=heldout_protocol_v21.md; elif (( s >= 84000000 )); then why=heldout_protocol_v20.md; elif (( s >= 82800000 )); then why=heldout_protocol_v19.md; elif (( s >= 80600000 )); then why=heldout_protocol_v18.md; elif (( s >= 79800000 )); then why=heldout_protocol_v17.md; elif (( s >= 76600000 )); then why=heldout_protocol_v16.md; elif (( s >= 75500000 )); then why=heldout_protocol_v15.md; elif (( s >= 72200000 )); then why=heldout_protocol_v14.md; elif (( s >= 72000000 )); then why=heldout_protocol_v13.md; elif (( s >= 64900000 )); then why=heldout_protocol_v12.md; elif (( s >= 62900000 )); then why=heldout_protocol_v11.md; else why="heldout_protocol_v7.md: 58000000-60999999, unless a recorded run spent it"; fi
+  if (( (s >= 58000000 && s < 61000000) || (s >= 62900000 && s < 63000000) || (s >= 64900000 && s < 65000000) || (s >= 72000000 && s < 72100000) || (s >= 72200000 && s < 72300000) || (s >= 75500000 && s < 75600000) || (s >= 76600000 && s < 76700000) || (s >= 79800000 && s < 79900000) || (s >= 80600000 && s < 80700000) || (s >= 82800000 && s < 82900000) || (s >= 84000000 && s < 84100000) || (s >= 85200000 && s < 85300000) || (s >= 88600000 && s < 88700000) )) && ! released $s; then
+    if (( s >= 88600000 )); then why=heldout_protocol_v22.md; elif (( s >= 85200000 )); then why=heldout_protocol_v21.md; elif (( s >= 84000000 )); then why=heldout_protocol_v20.md; elif (( s >= 82800000 )); then why=heldout_protocol_v19.md; elif (( s >= 80600000 )); then why=heldout_protocol_v18.md; elif (( s >= 79800000 )); then why=heldout_protocol_v17.md; elif (( s >= 76600000 )); then why=heldout_protocol_v16.md; elif (( s >= 75500000 )); then why=heldout_protocol_v15.md; elif (( s >= 72200000 )); then why=heldout_protocol_v14.md; elif (( s >= 72000000 )); then why=heldout_protocol_v13.md; elif (( s >= 64900000 )); then why=heldout_protocol_v12.md; elif (( s >= 62900000 )); then why=heldout_protocol_v11.md; else why="heldout_protocol_v7.md: 58000000-60999999, unless a recorded run spent it"; fi
     echo "seed $s is held out ($why): not for development" >&2; exit 2; fi
 done
 classes=(level smooth interaction bending test-level null)
