@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <utility>
 
 namespace drawbend::loop {
 
@@ -12,11 +13,14 @@ double bump_value(double x, double c, double w) {
   return std::exp(-0.5 * u * u);
 }
 
-std::vector<double> bump_basis(const std::vector<double>& x, double c, double w) {
-  std::vector<double> b(x.size());
-  const double n = static_cast<double>(std::max<size_t>(1, x.size()));
+namespace {
+
+// b centred and scaled to unit standard deviation over the rows (sums in row
+// order), all zeros when it does not vary: bump_basis's and step_basis's.
+std::vector<double> standardised(std::vector<double> b) {
+  const double n = static_cast<double>(std::max<size_t>(1, b.size()));
   double m = 0;
-  for (size_t i = 0; i < x.size(); ++i) m += (b[i] = bump_value(x[i], c, w)) / n;
+  for (double v : b) m += v / n;
   double q = 0;
   for (double& v : b) {
     v -= m;
@@ -26,8 +30,6 @@ std::vector<double> bump_basis(const std::vector<double>& x, double c, double w)
   for (double& v : b) v = sd > 0 ? v / sd : 0.0;
   return b;
 }
-
-namespace {
 
 // Per distinct value of x: its rows and their sum of r (ascending x), over
 // the rows scan_bump and scan_step read; N and R: all of them.
@@ -46,19 +48,16 @@ std::map<double, std::pair<double, double>> per_value(const std::vector<double>&
 
 }  // namespace
 
+std::vector<double> bump_basis(const std::vector<double>& x, double c, double w) {
+  std::vector<double> b(x.size());
+  for (size_t i = 0; i < x.size(); ++i) b[i] = bump_value(x[i], c, w);
+  return standardised(std::move(b));
+}
+
 std::vector<double> step_basis(const std::vector<double>& x, double c) {
   std::vector<double> b(x.size());
-  const double n = static_cast<double>(std::max<size_t>(1, x.size()));
-  double m = 0;
-  for (size_t i = 0; i < x.size(); ++i) m += (b[i] = x[i] > c ? 1.0 : 0.0) / n;
-  double q = 0;
-  for (double& v : b) {
-    v -= m;
-    q += v * v / n;
-  }
-  const double sd = q > 1e-24 ? std::sqrt(q) : 0.0;
-  for (double& v : b) v = sd > 0 ? v / sd : 0.0;
-  return b;
+  for (size_t i = 0; i < x.size(); ++i) b[i] = x[i] > c ? 1.0 : 0.0;
+  return standardised(std::move(b));
 }
 
 std::optional<Step1> scan_step(const std::vector<double>& x, const std::vector<double>& r,
