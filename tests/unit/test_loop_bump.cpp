@@ -31,19 +31,13 @@
 #include "loop/bump.hpp"
 #include "loop/fit_memo.hpp"
 #include "loop/forms.hpp"
+#include "scan_grid.hpp"
 
 using namespace drawbend::loop;
+using drawbend::testing::grid_x;
 namespace tt = boost::test_tools;
 
 namespace {
-
-// x on 61 values from 2 to 14 (range 12), 3 rows each, in row order value by value.
-std::vector<double> grid_x() {
-  std::vector<double> x;
-  for (int r = 0; r < 3; ++r)
-    for (int j = 0; j <= 60; ++j) x.push_back(2.0 + 12.0 * j / 60.0);
-  return x;
-}
 
 double grid_centre(double lo, double range, int j) { return lo + range * j / (kBumpCentres - 1.0); }
 double grid_width(double range, int k) {
